@@ -1,0 +1,222 @@
+#include "catalog.h"
+
+#include <QFile>
+#include <QtGlobal>
+
+static void initCatalogResources() {
+    Q_INIT_RESOURCE(catalog);
+}
+
+namespace tipscope::protocol {
+
+QString valueKindName(ValueKind kind) {
+    switch (kind) {
+    case ValueKind::Number:
+        return QStringLiteral("number");
+    case ValueKind::Delay:
+        return QStringLiteral("delay");
+    case ValueKind::Hex:
+        return QStringLiteral("hex");
+    case ValueKind::Text:
+        return QStringLiteral("text");
+    case ValueKind::Enum:
+        return QStringLiteral("enum");
+    case ValueKind::Flags:
+        return QStringLiteral("flags");
+    case ValueKind::Action:
+        return QStringLiteral("action");
+    }
+    return {};
+}
+
+static QByteArray readResource(const QString &path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return f.readAll();
+}
+
+const Catalog &Catalog::builtin() {
+    static const Catalog catalog = [] {
+        initCatalogResources();
+        QString error;
+        auto c = load(readResource(QStringLiteral(":/tipscope/catalog/families.json")),
+                      readResource(QStringLiteral(":/tipscope/catalog/commands.json")), &error);
+        if (!c)
+            qFatal("embedded command catalog is broken: %s", qPrintable(error));
+        return *c;
+    }();
+    return catalog;
+}
+
+const FamilyInfo *Catalog::family(const QString &name) const {
+    auto it = m_families.constFind(name.toUpper());
+    return it == m_families.constEnd() ? nullptr : &it.value();
+}
+
+QMap<int, QString> Catalog::table(const QString &name, const QString &familyName) const {
+    QString key = name;
+    if (const FamilyInfo *f = family(familyName)) {
+        if (name == QLatin1String("$toolTable"))
+            key = f->toolTable;
+        else if (name == QLatin1String("$portErrors"))
+            key = f->portErrors;
+        else if (name == QLatin1String("$stationErrors"))
+            key = f->stationErrors;
+    }
+    return m_tables.value(key);
+}
+
+const Unit *Catalog::unit(const QString &key) const {
+    auto it = m_units.constFind(key);
+    return it == m_units.constEnd() ? nullptr : &it.value();
+}
+
+QList<DigitField> Catalog::digits(const QString &tableName) const {
+    return m_digits.value(tableName);
+}
+
+int Catalog::resolveToken(const QString &token, const FamilyInfo &family) const {
+    if (token == QLatin1String("$tempMin"))
+        return family.tempMin;
+    if (token == QLatin1String("$tempMax"))
+        return family.tempMax;
+    if (token == QLatin1String("$factoryMat"))
+        return family.factoryMat;
+    if (token == QLatin1String("$factoryMit"))
+        return family.factoryMit;
+    return token.toInt();
+}
+
+static bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+
+std::optional<ResolvedCommand> Catalog::resolveSpec(const CommandSpec &spec,
+                                                    const FamilyInfo &family,
+                                                    const QByteArray &code,
+                                                    Direction direction) const {
+    if (code.size() != 3 || !spec.accepts(direction) || !spec.families.contains(family.name))
+        return std::nullopt;
+    ResolvedCommand r;
+    for (int i = 0; i < 3; ++i) {
+        const char p = spec.pattern.at(i).toLatin1();
+        const char c = code.at(i);
+        if (p == 'x') {
+            if (!isDigit(c) || c - '0' < 1 || c - '0' > family.ports)
+                return std::nullopt;
+            r.port = c - '0';
+        } else if (p == 'y') {
+            if (!isDigit(c) || !family.tools.contains(c - '0'))
+                return std::nullopt;
+            r.tool = c - '0';
+        } else if (p != c) {
+            return std::nullopt;
+        }
+    }
+    r.spec = &spec;
+    r.family = family.name;
+    r.code = code;
+    r.direction = direction;
+    if (spec.kind == ValueKind::Number || spec.kind == ValueKind::Delay) {
+        r.min = resolveToken(spec.minToken, family);
+        r.max = resolveToken(spec.maxToken, family);
+    }
+    if (!spec.defaultToken.isEmpty())
+        r.factoryDefault = resolveToken(spec.defaultToken, family);
+    if (spec.kind == ValueKind::Flags && direction == Direction::Write)
+        r.values = spec.writeValues;
+    else if (!spec.values.isEmpty())
+        r.values = spec.values;
+    else if (!spec.table.isEmpty())
+        r.values = table(spec.table, family.name);
+    return r;
+}
+
+std::optional<ResolvedCommand> Catalog::resolve(const QString &familyName, const QByteArray &code,
+                                                Direction direction) const {
+    const FamilyInfo *f = family(familyName);
+    if (!f)
+        return std::nullopt;
+    for (const CommandSpec &spec : m_commands)
+        if (auto r = resolveSpec(spec, *f, code.toUpper(), direction))
+            return r;
+    return std::nullopt;
+}
+
+QList<ResolvedCommand> Catalog::expand(const QString &familyName, Direction direction) const {
+    QList<ResolvedCommand> out;
+    const FamilyInfo *f = family(familyName);
+    if (!f)
+        return out;
+    for (const CommandSpec &spec : m_commands) {
+        if (!spec.families.contains(f->name) || !spec.accepts(direction))
+            continue;
+        QList<QByteArray> codes{spec.pattern.toLatin1()};
+        if (spec.usesPort()) {
+            QList<QByteArray> next;
+            for (const auto &c : codes)
+                for (int p = 1; p <= f->ports; ++p)
+                    next.append(QByteArray(c).replace('x', QByteArray::number(p)));
+            codes = next;
+        }
+        if (spec.usesTool()) {
+            QList<QByteArray> next;
+            for (const auto &c : codes)
+                for (int t : f->tools)
+                    next.append(QByteArray(c).replace('y', QByteArray::number(t)));
+            codes = next;
+        }
+        for (const auto &c : codes)
+            if (auto r = resolveSpec(spec, *f, c, direction))
+                out.append(*r);
+    }
+    return out;
+}
+
+QString Catalog::familyForModel(const QString &modelName) const {
+    const QString upper = modelName.trimmed().toUpper();
+    for (const QString &name : m_familyOrder)
+        if (upper.startsWith(name))
+            return name;
+    return {};
+}
+
+static QString lookup(const QMap<int, QString> &table, int code, const QString &fallback) {
+    auto it = table.constFind(code);
+    return it == table.constEnd() ? fallback : it.value();
+}
+
+QString Catalog::nakText(int code) const {
+    return lookup(m_tables.value(QStringLiteral("nak")), code,
+                  QStringLiteral("Unknown NAK code %1").arg(code));
+}
+
+QString Catalog::stationErrorText(const QString &familyName, int code) const {
+    return lookup(table(QStringLiteral("$stationErrors"), familyName), code,
+                  QStringLiteral("Unknown station error %1").arg(code));
+}
+
+int Catalog::canonicalPortError(int code) const {
+    return m_portErrorAliases.value(code, code);
+}
+
+QString Catalog::portErrorText(const QString &familyName, int code) const {
+    return lookup(table(QStringLiteral("$portErrors"), familyName), canonicalPortError(code),
+                  QStringLiteral("Unknown port error %1").arg(code));
+}
+
+QString Catalog::feederErrorText(int code) const {
+    return lookup(m_tables.value(QStringLiteral("feederErrors")), code,
+                  QStringLiteral("Feeder error %1 (not listed in the SFR guide; reset it with "
+                                 "W-ECV and see the SFR manual)")
+                      .arg(code));
+}
+
+QString Catalog::severity(const QString &tableName, int code) const {
+    if (code == 0)
+        return QStringLiteral("ok");
+    return m_severity.value(tableName).value(code, QStringLiteral("error"));
+}
+
+} // namespace tipscope::protocol

@@ -1,0 +1,175 @@
+#include "framedecoder.h"
+
+#include <QCoreApplication>
+
+namespace tipscope::protocol {
+
+QString decodeEventKindName(DecodeEvent::Kind kind) {
+    switch (kind) {
+    case DecodeEvent::Kind::Frame:
+        return QStringLiteral("frame");
+    case DecodeEvent::Kind::BccError:
+        return QStringLiteral("BCC error");
+    case DecodeEvent::Kind::FormatError:
+        return QStringLiteral("format error");
+    case DecodeEvent::Kind::Overflow:
+        return QStringLiteral("overflow");
+    case DecodeEvent::Kind::Garbage:
+        return QStringLiteral("garbage");
+    }
+    return {};
+}
+
+static bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+static bool isCommandChar(char c) {
+    return isDigit(c) || (c >= 'A' && c <= 'Z');
+}
+static bool isPrintable(char c) {
+    return c >= 0x20 && c <= 0x7e;
+}
+
+static std::optional<Frame> fail(DecodeEvent::Kind kind, const QString &reason,
+                                 DecodeEvent::Kind *failureKind, QString *why) {
+    if (failureKind)
+        *failureKind = kind;
+    if (why)
+        *why = reason;
+    return std::nullopt;
+}
+
+std::optional<Frame> parseFrame(const QByteArray &raw, DecodeEvent::Kind *failureKind,
+                                QString *why) {
+    using K = DecodeEvent::Kind;
+    const qsizetype n = raw.size();
+    if (n < 7 || raw.at(0) != kStx || raw.at(n - 2) != kEtx)
+        return fail(K::FormatError, QStringLiteral("not STX…ETX BCC or too short"), failureKind,
+                    why);
+    const char expected = blockCheck(raw.left(n - 1));
+    if (expected != raw.at(n - 1))
+        return fail(K::BccError,
+                    QStringLiteral("BCC is %1, expected %2")
+                        .arg(quint8(raw.at(n - 1)), 2, 16, QLatin1Char('0'))
+                        .arg(quint8(expected), 2, 16, QLatin1Char('0')),
+                    failureKind, why);
+
+    const QByteArray body = raw.mid(1, n - 3);
+    Frame f;
+    qsizetype pos = 0;
+    if (isDigit(body.at(0))) {
+        if (body.size() < 8 || !isDigit(body.at(1)) || !isDigit(body.at(2)) || !isDigit(body.at(3)))
+            return fail(K::FormatError, QStringLiteral("malformed addresses"), failureKind, why);
+        f.source = body.mid(0, 2).toInt();
+        f.target = body.mid(2, 2).toInt();
+        pos = 4;
+    }
+    if (body.size() < pos + 4)
+        return fail(K::FormatError, QStringLiteral("too short for header and command"), failureKind,
+                    why);
+    const auto header = headerFromChar(body.at(pos));
+    if (!header)
+        return fail(K::FormatError, QStringLiteral("unknown header"), failureKind, why);
+    f.header = *header;
+    f.command = body.mid(pos + 1, 3);
+    for (char c : f.command)
+        if (!isCommandChar(c))
+            return fail(K::FormatError, QStringLiteral("command is not 3 letters or digits"),
+                        failureKind, why);
+    f.data = body.mid(pos + 4);
+    for (char c : f.data)
+        if (!isPrintable(c))
+            return fail(K::FormatError, QStringLiteral("data field is not printable ASCII"),
+                        failureKind, why);
+    return f;
+}
+
+FrameDecoder::FrameDecoder(int maxFrameSize)
+    : m_maxFrameSize(qMax(maxFrameSize, 8)) {}
+
+void FrameDecoder::reset() {
+    m_state = State::Idle;
+    m_candidate.clear();
+    m_garbage.clear();
+}
+
+std::vector<DecodeEvent> FrameDecoder::feed(QByteArrayView chunk) {
+    std::vector<DecodeEvent> out;
+    for (char byte : chunk) {
+        switch (m_state) {
+        case State::Idle:
+            if (byte == kStx) {
+                flushGarbage(out);
+                m_candidate.append(byte);
+                m_state = State::InFrame;
+            } else {
+                m_garbage.append(byte);
+                if (m_garbage.size() >= m_maxFrameSize)
+                    flushGarbage(out);
+            }
+            break;
+        case State::InFrame:
+            if (byte == kStx) {
+                // A frame cannot contain STX: the candidate was cut short; restart here.
+                emitRejected(out, DecodeEvent::Kind::FormatError,
+                             QStringLiteral("frame interrupted by a new STX"));
+                m_candidate.append(byte);
+                m_state = State::InFrame;
+            } else {
+                m_candidate.append(byte);
+                if (byte == kEtx)
+                    m_state = State::AwaitBcc;
+                else if (m_candidate.size() > m_maxFrameSize - 1)
+                    emitRejected(out, DecodeEvent::Kind::Overflow,
+                                 QStringLiteral("no ETX within %1 bytes").arg(m_maxFrameSize));
+            }
+            break;
+        case State::AwaitBcc:
+            m_candidate.append(byte);
+            finishCandidate(out);
+            break;
+        }
+    }
+    flushGarbage(out);
+    return out;
+}
+
+void FrameDecoder::flushGarbage(std::vector<DecodeEvent> &out) {
+    if (m_garbage.isEmpty())
+        return;
+    DecodeEvent e;
+    e.kind = DecodeEvent::Kind::Garbage;
+    e.raw = m_garbage;
+    e.detail = QStringLiteral("%1 byte(s) outside any frame").arg(m_garbage.size());
+    out.push_back(std::move(e));
+    m_garbage.clear();
+}
+
+void FrameDecoder::finishCandidate(std::vector<DecodeEvent> &out) {
+    DecodeEvent e;
+    QString why;
+    DecodeEvent::Kind failure = DecodeEvent::Kind::FormatError;
+    if (auto frame = parseFrame(m_candidate, &failure, &why)) {
+        e.kind = DecodeEvent::Kind::Frame;
+        e.frame = std::move(*frame);
+        e.raw = m_candidate;
+        out.push_back(std::move(e));
+        m_candidate.clear();
+        m_state = State::Idle;
+        return;
+    }
+    emitRejected(out, failure, why);
+}
+
+void FrameDecoder::emitRejected(std::vector<DecodeEvent> &out, DecodeEvent::Kind kind,
+                                const QString &why) {
+    DecodeEvent e;
+    e.kind = kind;
+    e.raw = m_candidate;
+    e.detail = why;
+    out.push_back(std::move(e));
+    m_candidate.clear();
+    m_state = State::Idle;
+}
+
+} // namespace tipscope::protocol

@@ -1,0 +1,55 @@
+// FrameDecoder: turns an arbitrary stream of byte chunks into frames and decode errors.
+//
+// Feed it whatever the transport delivered (a frame split over several reads, several frames in
+// one read, garbage in between). It never throws and never stalls: every byte ends up in exactly
+// one event, either part of a good frame, part of a rejected candidate, or skipped garbage.
+// The byte after ETX is always taken as the BCC, so a BCC equal to STX or ETX is handled. A
+// candidate longer than maxFrameSize is reported as an overflow and dropped, which bounds memory.
+#pragma once
+
+#include "frame.h"
+
+#include <QByteArrayView>
+#include <vector>
+
+namespace tipscope::protocol {
+
+struct DecodeEvent {
+    enum class Kind { Frame, BccError, FormatError, Overflow, Garbage };
+    Kind kind = Kind::Frame;
+    Frame frame;    // valid when kind == Frame
+    QByteArray raw; // the bytes this event accounts for
+    QString detail; // why a candidate was rejected
+};
+
+[[nodiscard]] QString decodeEventKindName(DecodeEvent::Kind kind);
+
+// Parses the bytes of one complete candidate (STX ... ETX BCC). On failure returns nullopt and,
+// if `why` is given, fills it with the reason and the kind of failure.
+[[nodiscard]] std::optional<Frame>
+parseFrame(const QByteArray &raw, DecodeEvent::Kind *failureKind = nullptr, QString *why = nullptr);
+
+class FrameDecoder {
+public:
+    static constexpr int kDefaultMaxFrameSize = 64;
+
+    explicit FrameDecoder(int maxFrameSize = kDefaultMaxFrameSize);
+
+    [[nodiscard]] std::vector<DecodeEvent> feed(QByteArrayView chunk);
+    void reset();
+    [[nodiscard]] int pendingBytes() const { return int(m_candidate.size() + m_garbage.size()); }
+
+private:
+    enum class State { Idle, InFrame, AwaitBcc };
+
+    void flushGarbage(std::vector<DecodeEvent> &out);
+    void finishCandidate(std::vector<DecodeEvent> &out);
+    void emitRejected(std::vector<DecodeEvent> &out, DecodeEvent::Kind kind, const QString &why);
+
+    int m_maxFrameSize;
+    State m_state = State::Idle;
+    QByteArray m_candidate;
+    QByteArray m_garbage;
+};
+
+} // namespace tipscope::protocol

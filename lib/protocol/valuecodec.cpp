@@ -1,0 +1,214 @@
+#include "valuecodec.h"
+
+#include "datafield.h"
+
+namespace tipscope::protocol {
+
+static QString joinSpecials(const QMap<int, QString> &special) {
+    QStringList names;
+    for (const auto &label : special)
+        names.append(label);
+    return names.join(QLatin1String(", "));
+}
+
+static QString formatNumber(const ResolvedCommand &cmd, qint64 v) {
+    if (cmd.spec->kind == ValueKind::Delay)
+        return QString::number(v / 100.0, 'f', 2);
+    return QString::number(v);
+}
+
+QString wireUnitSymbol(const ResolvedCommand &cmd) {
+    if (cmd.spec->kind == ValueKind::Delay)
+        return QStringLiteral("s");
+    const Unit *u = Catalog::builtin().unit(cmd.spec->unit);
+    return u ? u->symbol : QString();
+}
+
+QString allowedText(const ResolvedCommand &cmd) {
+    const CommandSpec &s = *cmd.spec;
+    switch (s.kind) {
+    case ValueKind::Number:
+    case ValueKind::Delay: {
+        QString unit = wireUnitSymbol(cmd);
+        QString t = QStringLiteral("%1 to %2%3")
+                        .arg(formatNumber(cmd, cmd.min), formatNumber(cmd, cmd.max),
+                             unit.isEmpty() ? QString() : QLatin1Char(' ') + unit);
+        if (s.step > 1)
+            t += QStringLiteral(" in steps of %1").arg(s.step);
+        if (!s.special.isEmpty())
+            t += QStringLiteral(", or ") + joinSpecials(s.special);
+        return t;
+    }
+    case ValueKind::Enum:
+    case ValueKind::Flags: {
+        QStringList items;
+        for (auto it = cmd.values.begin(); it != cmd.values.end(); ++it)
+            items.append(QStringLiteral("%1 (%2)").arg(it.key()).arg(it.value()));
+        return QStringLiteral("one of ") + items.join(QLatin1String(", "));
+    }
+    case ValueKind::Action:
+        return QStringLiteral("no value (the command carries %1)")
+            .arg(QString::fromLatin1(s.fixedData));
+    case ValueKind::Hex:
+    case ValueKind::Text:
+        return QStringLiteral("nothing: it is read-only");
+    }
+    return {};
+}
+
+QString validate(const ResolvedCommand &cmd, qint64 value) {
+    const CommandSpec &s = *cmd.spec;
+    const QString code = QString::fromLatin1(cmd.code);
+    if (cmd.direction != Direction::Write || !s.writable)
+        return QStringLiteral("%1 cannot be written").arg(code);
+    switch (s.kind) {
+    case ValueKind::Action:
+        return {};
+    case ValueKind::Hex:
+    case ValueKind::Text:
+        return QStringLiteral("%1 cannot be written").arg(code);
+    case ValueKind::Enum:
+    case ValueKind::Flags:
+        if (cmd.values.contains(int(value)) && value == qint64(int(value)))
+            return {};
+        break;
+    case ValueKind::Number:
+    case ValueKind::Delay:
+        if (s.special.contains(int(value)) && value == qint64(int(value)))
+            return {};
+        if (value >= cmd.min && value <= cmd.max && (value - cmd.min) % s.step == 0)
+            return {};
+        break;
+    }
+    return QStringLiteral("%1 refused for %2 (%3): allowed is %4")
+        .arg(formatNumber(cmd, value), code, s.name, allowedText(cmd));
+}
+
+std::optional<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value, QString *error) {
+    const QString why = validate(cmd, value);
+    if (!why.isEmpty()) {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    }
+    const CommandSpec &s = *cmd.spec;
+    if (s.kind == ValueKind::Action)
+        return s.fixedData;
+    if (s.kind == ValueKind::Delay && !s.special.contains(int(value)))
+        return encodeDelay(int(value));
+    return encodeNumber(value);
+}
+
+std::optional<Value> decodeAnswer(const ResolvedCommand &cmd, const QByteArray &data) {
+    const CommandSpec &s = *cmd.spec;
+    switch (s.kind) {
+    case ValueKind::Text:
+        if (auto t = parseText(data))
+            return Value::ofText(*t);
+        return std::nullopt;
+    case ValueKind::Hex:
+        if (auto h = parseHex(data))
+            return Value::ofNumber(qint64(*h));
+        return std::nullopt;
+    case ValueKind::Delay:
+        if (auto d = parseDelay(data))
+            return Value::ofNumber(*d);
+        if (auto n = parseNumber(data); n && s.special.contains(*n))
+            return Value::ofNumber(*n);
+        return std::nullopt;
+    case ValueKind::Number:
+    case ValueKind::Enum:
+    case ValueKind::Flags:
+    case ValueKind::Action:
+        if (auto n = parseNumber(data))
+            return Value::ofNumber(*n);
+        return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+static std::optional<qint64> parseDelayText(const QString &t) {
+    if (auto d = parseDelay(t.toLatin1()))
+        return *d;
+    bool ok = false;
+    const double seconds = t.toDouble(&ok);
+    if (!ok || seconds < 0 || seconds > 99.99)
+        return std::nullopt;
+    const qint64 centis = qRound64(seconds * 100);
+    if (qAbs(seconds * 100 - double(centis)) > 1e-6)
+        return std::nullopt; // finer than hundredths cannot be sent
+    return centis;
+}
+
+std::optional<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text,
+                                     QString *error) {
+    const CommandSpec &s = *cmd.spec;
+    const QString t = text.trimmed();
+    auto fail = [&](const QString &why) -> std::optional<qint64> {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+    if (s.kind == ValueKind::Action)
+        return 0;
+    for (auto it = s.special.begin(); it != s.special.end(); ++it)
+        if (t.compare(it.value(), Qt::CaseInsensitive) == 0)
+            return it.key();
+    for (auto it = cmd.values.begin(); it != cmd.values.end(); ++it)
+        if (!it.value().isEmpty() && t.compare(it.value(), Qt::CaseInsensitive) == 0)
+            return it.key();
+    if (s.kind == ValueKind::Delay) {
+        if (auto n = parseNumber(t.toLatin1()); n && s.special.contains(*n))
+            return *n;
+        if (auto d = parseDelayText(t))
+            return *d;
+        return fail(QStringLiteral("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(t));
+    }
+    bool ok = false;
+    const qint64 v = t.toLongLong(&ok);
+    if (!ok)
+        return fail(QStringLiteral("'%1' is not a whole number; %2 takes %3")
+                        .arg(t, QString::fromLatin1(cmd.code), allowedText(cmd)));
+    return v;
+}
+
+QStringList flagLabels(const QList<DigitField> &digits, qint64 value) {
+    QStringList labels;
+    for (const DigitField &d : digits) {
+        qint64 div = 1;
+        for (int i = 0; i < d.digit; ++i)
+            div *= 10;
+        const int digit = int((value / div) % 10);
+        const QString label =
+            d.values.value(digit, QStringLiteral("%1 %2?").arg(d.name).arg(digit));
+        if (!label.isEmpty())
+            labels.append(label);
+    }
+    return labels;
+}
+
+QString describeValue(const ResolvedCommand &cmd, const Value &value) {
+    const CommandSpec &s = *cmd.spec;
+    if (value.isText)
+        return value.text;
+    if (s.special.contains(int(value.number)))
+        return s.special.value(int(value.number));
+    switch (s.kind) {
+    case ValueKind::Delay:
+        return QString::number(value.number / 100.0, 'f', 2);
+    case ValueKind::Enum:
+        if (s.table == QLatin1String("$portErrors"))
+            return Catalog::builtin().portErrorText(cmd.family, int(value.number));
+        return cmd.values.value(int(value.number),
+                                QStringLiteral("unknown (%1)").arg(value.number));
+    case ValueKind::Flags: {
+        const QStringList labels =
+            flagLabels(Catalog::builtin().digits(s.digitsTable), value.number);
+        return labels.isEmpty() ? QStringLiteral("none") : labels.join(QLatin1String(", "));
+    }
+    default:
+        return QString::number(value.number);
+    }
+}
+
+} // namespace tipscope::protocol

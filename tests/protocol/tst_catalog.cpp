@@ -1,0 +1,295 @@
+// The command catalog covers every command of the four guides with complete, consistent data.
+#include "protocol/catalog.h"
+#include "protocol/valuecodec.h"
+
+#include <QSet>
+#include <QtTest>
+
+using namespace tipscope::protocol;
+
+namespace {
+const QStringList kUcrGroup = {"UCR", "ALE", "NAE", "DDE", "DME", "HDE"};
+const QStringList kRobot = {"DDR", "HDR"};
+
+struct Expected {
+    const char *pattern;
+    const char *access;
+    QStringList families;
+};
+
+// Transcribed from the command tables of the four guides (R-TT is on the wire as TT0, see
+// docs/protocol-notes.md).
+QList<Expected> guideCommands() {
+    const QStringList st = kUcrGroup + kRobot;
+    return {
+        {"PSx", "rw", st},
+        {"STx", "rw", st},
+        {"TTx", "r", st},
+        {"PPx", "r", st},
+        {"Axy", "rw", st},
+        {"MAT", "rw", st},
+        {"MIT", "rw", st},
+        {"Sxy", "rw", st},
+        {"Dxy", "rw", st},
+        {"Hxy", "rw", st},
+        {"EDx", "r", st},
+        {"TT0", "r", st},
+        {"QTx", "r", st},
+        {"HAx", "rw", st},
+        {"LAx", "rw", st},
+        {"HDx", "rw", kUcrGroup},
+        {"LDx", "rw", kUcrGroup},
+        {"TAx", "r", st},
+        {"SMN", "r", st},
+        {"CTx", "r", st},
+        {"PEx", "r", st},
+        {"SER", "r", st},
+        {"RST", "w", kUcrGroup},
+        {"RSP", "w", st},
+        {"CPx", "r", st},
+        {"CNx", "r", st},
+        {"CSx", "r", st},
+        {"CHx", "r", st},
+        {"CWx", "r", st},
+        {"CCx", "r", st},
+        {"CDx", "r", st},
+        {"NVS", "w", st},
+        {"SAD", "w", kUcrGroup},
+        {"FST", "r", {"UCR"}},
+        {"SVR", "r", kUcrGroup},
+        {"DCx", "r", {"ALE"}},
+        {"DLx", "r", {"ALE"}},
+        {"IFE", "w", {"UCR"}},
+        {"MOD", "rw", {"ALE", "SFR"}},
+        {"LEN", "rw", {"ALE", "SFR"}},
+        {"FEE", "r", {"ALE"}},
+        {"SPD", "rw", {"ALE", "SFR"}},
+        {"DIA", "rw", {"ALE"}},
+        {"BCK", "rw", {"ALE"}},
+        {"WCD", "rw", {"ALE"}},
+        {"STR", "w", {"ALE"}},
+        {"STP", "w", {"ALE"}},
+        {"PLM", "rw", kRobot},
+        {"SFD", "w", {"SFR"}},
+        {"SSD", "w", {"SFR"}},
+        {"THI", "rw", {"SFR"}},
+        {"TES", "rw", {"SFR"}},
+        {"ECV", "rw", {"SFR"}},
+        {"CPT", "r", {"SFR"}},
+        {"CPP", "rw", {"SFR"}},
+        {"CFT", "r", {"SFR"}},
+        {"CFP", "rw", {"SFR"}},
+        {"CTT", "r", {"SFR"}},
+        {"CTP", "rw", {"SFR"}},
+        {"SLD", "w", {"SFR"}},
+        {"NVS", "w", {"SFR"}},
+        {"SAD", "w", {"SFR"}},
+        {"RSP", "w", {"SFR"}},
+        {"FDS", "r", {"SFR"}},
+        {"SMN", "r", {"SFR"}},
+        {"FDL", "r", {"SFR"}},
+    };
+}
+
+QByteArray concrete(const QString &pattern, const FamilyInfo &f) {
+    QString c = pattern;
+    c.replace(QLatin1Char('x'), QStringLiteral("1"));
+    if (!f.tools.isEmpty())
+        c.replace(QLatin1Char('y'), QString::number(f.tools.first()));
+    return c.toLatin1();
+}
+} // namespace
+
+class TestCatalog : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void everyCommandOfTheGuidesIsPresentForItsFamilies();
+    void everyEntryHasCompleteMetadata();
+    void noFamilyHasTwoEntriesForTheSameCodeAndDirection();
+    void rangesAndStepsAreConsistent();
+    void familiesCarryPortsToolsLimitsAndAddresses();
+    void resolveRejectsPortsAndToolsTheFamilyDoesNotHave();
+    void familyIsFoundFromTheModelName();
+    void errorTablesExplainCodesIncludingTheMisprintedOne();
+    void validationSaysWhatIsAllowed();
+    void malformedCatalogDataIsRefusedWithAReason();
+};
+
+void TestCatalog::everyCommandOfTheGuidesIsPresentForItsFamilies() {
+    const Catalog &cat = Catalog::builtin();
+    int checked = 0;
+    for (const Expected &e : guideCommands()) {
+        for (const QString &fam : e.families) {
+            const FamilyInfo *f = cat.family(fam);
+            QVERIFY(f);
+            const QByteArray code = concrete(QLatin1String(e.pattern), *f);
+            const bool r = QByteArray(e.access).contains('r');
+            const bool w = QByteArray(e.access).contains('w');
+            QVERIFY2(!r || cat.resolve(fam, code, Direction::Read),
+                     qPrintable(QStringLiteral("%1 R-%2 missing").arg(fam, code)));
+            QVERIFY2(!w || cat.resolve(fam, code, Direction::Write),
+                     qPrintable(QStringLiteral("%1 W-%2 missing").arg(fam, code)));
+            ++checked;
+        }
+    }
+    QVERIFY(checked > 250);
+}
+
+void TestCatalog::everyEntryHasCompleteMetadata() {
+    const Catalog &cat = Catalog::builtin();
+    for (const CommandSpec &s : cat.commands()) {
+        const QString id = s.pattern + QLatin1Char(' ') + s.families.join(QLatin1Char(','));
+        QVERIFY2(!s.name.isEmpty() && !s.description.isEmpty(), qPrintable(id));
+        QVERIFY2(!s.group.isEmpty() && !s.poll.isEmpty(), qPrintable(id));
+        QVERIFY2(!s.families.isEmpty(), qPrintable(id));
+        QVERIFY2(cat.unit(s.unit), qPrintable(id));
+        QVERIFY2(!s.dangerous || !s.danger.isEmpty(), qPrintable(id + QStringLiteral(": danger")));
+        if (s.kind == ValueKind::Action)
+            QVERIFY2(s.fixedData.size() == 5, qPrintable(id));
+        if (s.kind == ValueKind::Flags)
+            QVERIFY2(!cat.digits(s.digitsTable).isEmpty(), qPrintable(id));
+        for (const QString &fam : s.families) {
+            const FamilyInfo *f = cat.family(fam);
+            const auto r = cat.resolve(fam, concrete(s.pattern, *f),
+                                       s.readable ? Direction::Read : Direction::Write);
+            QVERIFY2(r, qPrintable(id));
+            if (s.kind == ValueKind::Enum)
+                QVERIFY2(!r->values.isEmpty(), qPrintable(id + QStringLiteral(": values")));
+        }
+    }
+}
+
+void TestCatalog::noFamilyHasTwoEntriesForTheSameCodeAndDirection() {
+    const Catalog &cat = Catalog::builtin();
+    for (const QString &fam : cat.familyNames()) {
+        for (Direction d : {Direction::Read, Direction::Write}) {
+            QSet<QByteArray> seen;
+            int matches = 0;
+            for (const ResolvedCommand &r : cat.expand(fam, d)) {
+                QVERIFY2(!seen.contains(r.code), qPrintable(fam + QLatin1Char(' ') + r.code));
+                seen.insert(r.code);
+                ++matches;
+            }
+            QVERIFY(matches > 0 || (fam == QLatin1String("SFR") && d == Direction::Read));
+        }
+    }
+}
+
+void TestCatalog::rangesAndStepsAreConsistent() {
+    const Catalog &cat = Catalog::builtin();
+    for (const QString &fam : cat.familyNames()) {
+        for (const ResolvedCommand &r : cat.expand(fam, Direction::Write)) {
+            const CommandSpec &s = *r.spec;
+            const QString id = fam + QLatin1Char(' ') + QString::fromLatin1(r.code);
+            if (s.kind != ValueKind::Number && s.kind != ValueKind::Delay)
+                continue;
+            QVERIFY2(r.min < r.max, qPrintable(id));
+            QVERIFY2(s.step >= 1 && (r.max - r.min) % s.step == 0, qPrintable(id));
+            QVERIFY2(validate(r, r.min).isEmpty() && validate(r, r.max).isEmpty(), qPrintable(id));
+            QVERIFY2(!validate(r, r.max + s.step).isEmpty(), qPrintable(id));
+            if (s.step > 1)
+                QVERIFY2(!validate(r, r.min + 1).isEmpty(), qPrintable(id));
+            for (int special : s.special.keys())
+                QVERIFY2(validate(r, special).isEmpty(), qPrintable(id));
+            if (r.factoryDefault)
+                QVERIFY2(validate(r, *r.factoryDefault).isEmpty(), qPrintable(id + " default"));
+        }
+    }
+}
+
+void TestCatalog::familiesCarryPortsToolsLimitsAndAddresses() {
+    const Catalog &cat = Catalog::builtin();
+    QCOMPARE(cat.familyNames(),
+             QStringList({"UCR", "ALE", "NAE", "DDE", "DME", "HDE", "DDR", "HDR", "SFR"}));
+    QCOMPARE(cat.family("DME")->ports, 4);
+    QCOMPARE(cat.family("DDR")->ports, 2);
+    QCOMPARE(cat.family("DDR")->tempMax, 450);
+    QCOMPARE(cat.family("HDR")->maxPowerW, 270);
+    QVERIFY(!cat.family("DDR")->addressedByDefault);
+    QCOMPARE(cat.family("SFR")->defaultAddress, 10);
+    QCOMPARE(cat.address("robot"), 0);
+    QCOMPARE(cat.address("station"), 1);
+    QCOMPARE(cat.address("feeder"), 10);
+    QCOMPARE(cat.address("extractor"), 20);
+    QCOMPARE(cat.table("$toolTable", "UCR").value(9), QStringLiteral("TRA245/TRA470"));
+    QCOMPARE(cat.table("$toolTable", "DDR").value(7), QStringLiteral("NT105"));
+}
+
+void TestCatalog::resolveRejectsPortsAndToolsTheFamilyDoesNotHave() {
+    const Catalog &cat = Catalog::builtin();
+    QVERIFY(cat.resolve("DME", "ST4", Direction::Write));
+    QVERIFY(!cat.resolve("DDR", "ST3", Direction::Write));
+    QVERIFY(!cat.resolve("DME", "ST0", Direction::Write));
+    QVERIFY(cat.resolve("UCR", "A19", Direction::Write));
+    QVERIFY(!cat.resolve("UCR", "A11", Direction::Write));
+    QVERIFY(!cat.resolve("DME", "TTx", Direction::Read));
+    QVERIFY(!cat.resolve("DME", "TT1", Direction::Write));
+    QVERIFY(!cat.resolve("DDR", "SVR", Direction::Read));
+    QVERIFY(!cat.resolve("NOPE", "ST1", Direction::Read));
+    const auto a = cat.resolve("DME", "A32", Direction::Write);
+    QVERIFY(a);
+    QCOMPARE(a->port, 3);
+    QCOMPARE(a->tool, 2);
+    QCOMPARE(cat.resolve("dme", "st1", Direction::Read)->code, QByteArray("ST1"));
+}
+
+void TestCatalog::familyIsFoundFromTheModelName() {
+    const Catalog &cat = Catalog::builtin();
+    QCOMPARE(cat.familyForModel("DDR"), QStringLiteral("DDR"));
+    QCOMPARE(cat.familyForModel(" dme-2c "), QStringLiteral("DME"));
+    QCOMPARE(cat.familyForModel("UCR470"), QStringLiteral("UCR"));
+    QCOMPARE(cat.familyForModel("XYZ"), QString());
+}
+
+void TestCatalog::errorTablesExplainCodesIncludingTheMisprintedOne() {
+    const Catalog &cat = Catalog::builtin();
+    QVERIFY(cat.nakText(5).contains("Robot mode"));
+    QCOMPARE(cat.nakText(9), cat.nakText(99999));
+    QCOMPARE(cat.portErrorText("DME", 80000), cat.portErrorText("DME", 8));
+    QVERIFY(cat.portErrorText("DDR", 8).contains("MOS"));
+    QVERIFY(cat.stationErrorText("UCR", 7).contains("Warning"));
+    QVERIFY(cat.stationErrorText("DDR", 7).contains("Unknown"));
+    QCOMPARE(cat.severity("portErrorsUcrGroup", 9), QStringLiteral("warning"));
+    QCOMPARE(cat.severity("portErrorsUcrGroup", 1), QStringLiteral("error"));
+    QVERIFY(cat.feederErrorText(3).contains("3"));
+}
+
+void TestCatalog::validationSaysWhatIsAllowed() {
+    const Catalog &cat = Catalog::builtin();
+    const auto st = *cat.resolve("DME", "ST1", Direction::Write);
+    QCOMPARE(validate(st, 350), QString());
+    QVERIFY(validate(st, 353).contains("steps of 5"));
+    QVERIFY(validate(st, 505).contains("90 to 500"));
+    const auto d = *cat.resolve("DME", "D12", Direction::Write);
+    QVERIFY(validate(d, 99999).isEmpty());
+    QVERIFY(validate(d, 10).contains("disabled"));
+    const auto ps = *cat.resolve("DDR", "PS1", Direction::Write);
+    QVERIFY(validate(ps, 1).isEmpty());
+    QVERIFY(!validate(ps, 10).isEmpty());
+    const auto read = *cat.resolve("DME", "TT1", Direction::Read);
+    QVERIFY(validate(read, 1).contains("cannot be written"));
+    const auto hd = *cat.resolve("DME", "HD1", Direction::Write);
+    QCOMPARE(encodeWrite(hd, 160).value(), QByteArray("01.60"));
+    QCOMPARE(encodeWrite(hd, 99999).value(), QByteArray("99999"));
+    QCOMPARE(parseUserValue(hd, "1.6").value(), 160);
+    QCOMPARE(parseUserValue(hd, "disabled").value(), 99999);
+    QCOMPARE(parseUserValue(*cat.resolve("DME", "A12", Direction::Write), "-50").value(), -50);
+    QVERIFY(!parseUserValue(st, "hot"));
+}
+
+void TestCatalog::malformedCatalogDataIsRefusedWithAReason() {
+    QString error;
+    QVERIFY(!Catalog::load("{", "{}", &error));
+    QVERIFY(error.contains("families.json"));
+    error.clear();
+    const QByteArray fams = R"({"families":{"X":{"kind":"station"}},"units":{"none":{}}})";
+    QVERIFY(!Catalog::load(
+        fams, R"({"commands":[{"code":"TOOLONG","access":"r","kind":"number"}]})", &error));
+    QVERIFY(error.contains("3 characters"));
+    QVERIFY(!Catalog::load(
+        fams, R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["Y"]}]})",
+        &error));
+}
+
+QTEST_GUILESS_MAIN(TestCatalog)
+#include "tst_catalog.moc"
