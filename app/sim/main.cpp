@@ -1,0 +1,229 @@
+// tipscope-sim: serves simulated JBC devices on a PTY, an existing serial device, or TCP.
+// The first line on standard output is where a client connects; standard input takes the
+// control commands of SimControl plus "unplug" and "plug" for the PTY.
+#include "simendpoints.h"
+
+#include "sim/simcontrol.h"
+#include "sim/simline.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFile>
+#include <QSocketNotifier>
+#include <QTextStream>
+
+#include <cstdio>
+#include <memory>
+#include <unistd.h>
+
+using namespace tipscope::sim;
+using tipscope::protocol::Catalog;
+
+namespace {
+
+struct Options {
+    QString model = QStringLiteral("DME");
+    bool feeder = false;
+    bool noAddr = false;
+    int address = -1;
+    SimFaults faults;
+    int pace = 0;
+    bool robotModeOff = false;
+};
+
+QTextStream &out() {
+    static QTextStream s(stdout);
+    return s;
+}
+
+[[noreturn]] void die(const QString &message, int code = 1) {
+    QTextStream(stderr) << "tipscope-sim: " << message << Qt::endl;
+    std::exit(code);
+}
+
+double shareOption(const QCommandLineParser &p, const QString &name) {
+    bool ok = true;
+    const double v = p.isSet(name) ? p.value(name).toDouble(&ok) : 0.0;
+    if (!ok || v < 0 || v > 1)
+        die(QStringLiteral("--%1 takes a share between 0 and 1").arg(name));
+    return v;
+}
+
+int intOption(const QCommandLineParser &p, const QString &name, int fallback, int lo, int hi) {
+    if (!p.isSet(name))
+        return fallback;
+    bool ok = false;
+    const int v = p.value(name).toInt(&ok);
+    if (!ok || v < lo || v > hi)
+        die(QStringLiteral("--%1 takes a whole number from %2 to %3").arg(name).arg(lo).arg(hi));
+    return v;
+}
+
+std::unique_ptr<SimLine> buildLine(const Options &o) {
+    const Catalog &cat = Catalog::builtin();
+    const auto *family = cat.family(o.model);
+    if (!family)
+        die(QStringLiteral("unknown model '%1'; known: %2")
+                .arg(o.model, cat.familyNames().join(QLatin1String(", "))));
+    auto line = std::make_unique<SimLine>();
+    std::unique_ptr<SimDevice> first;
+    if (family->isFeeder())
+        first = std::make_unique<SimFeeder>(o.address >= 0 ? o.address : family->defaultAddress);
+    else
+        first = std::make_unique<SimStation>(family->name,
+                                             o.address >= 0 ? o.address : family->defaultAddress);
+    if (o.noAddr)
+        first->setAddressed(false);
+    first->setRobotMode(!o.robotModeOff);
+    line->addDevice(std::move(first));
+    if (o.feeder) {
+        if (family->isFeeder())
+            die(QStringLiteral(
+                "--feeder adds a feeder beside a station; the model is already SFR"));
+        auto feeder = std::make_unique<SimFeeder>(cat.address(QStringLiteral("feeder")));
+        if (o.noAddr)
+            die(QStringLiteral("two devices without addresses cannot share one line; drop "
+                               "--no-addr or --feeder"));
+        line->addDevice(std::move(feeder));
+    }
+    line->setFaults(o.faults);
+    line->setBaud(o.pace);
+    line->setClockRunning(true);
+    return line;
+}
+
+} // namespace
+
+int main(int argc, char *argv[]) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("tipscope-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(TIPSCOPE_VERSION));
+    QCommandLineParser p;
+    p.setApplicationDescription(QStringLiteral(
+        "Simulated JBC stations and SFR feeder speaking the robot protocol.\n"
+        "Prints where to connect on the first line of standard output, then reads control\n"
+        "commands (type 'help') from standard input."));
+    p.addHelpOption();
+    p.addVersionOption();
+    p.addOptions({
+        {QStringLiteral("model"),
+         QStringLiteral("Device family: UCR ALE NAE DDE DME HDE DDR HDR SFR."),
+         QStringLiteral("FAMILY"), QStringLiteral("DME")},
+        {QStringLiteral("feeder"), QStringLiteral("Add an SFR feeder at address 10.")},
+        {QStringLiteral("no-addr"), QStringLiteral("Start in the mode without addresses.")},
+        {QStringLiteral("address"), QStringLiteral("The device's own address (default: factory)."),
+         QStringLiteral("N")},
+        {QStringLiteral("pty"), QStringLiteral("Serve on a new PTY (the default).")},
+        {QStringLiteral("link"), QStringLiteral("Keep a symbolic link to the PTY at PATH."),
+         QStringLiteral("PATH")},
+        {QStringLiteral("device"),
+         QStringLiteral("Serve on an existing serial device (e.g. one end of a socat pair)."),
+         QStringLiteral("PATH")},
+        {QStringLiteral("tcp"), QStringLiteral("Serve raw TCP on HOST:PORT (port 0 picks one)."),
+         QStringLiteral("HOST:PORT")},
+        {QStringLiteral("pace"),
+         QStringLiteral("Pace both directions like a wire at BAUD (0: off)."),
+         QStringLiteral("BAUD")},
+        {QStringLiteral("latency"), QStringLiteral("Answer turnaround in ms."),
+         QStringLiteral("MS")},
+        {QStringLiteral("drop"), QStringLiteral("Share of requests left unanswered (0-1)."),
+         QStringLiteral("SHARE")},
+        {QStringLiteral("corrupt"), QStringLiteral("Share of answers corrupted (0-1)."),
+         QStringLiteral("SHARE")},
+        {QStringLiteral("garbage"), QStringLiteral("Share of answers preceded by noise (0-1)."),
+         QStringLiteral("SHARE")},
+        {QStringLiteral("nak"), QStringLiteral("Answer every request with this NAK code."),
+         QStringLiteral("CODE")},
+        {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator."),
+         QStringLiteral("N")},
+        {QStringLiteral("robot-mode-off"),
+         QStringLiteral("Start with robot mode off (stations answer NAK 00005).")},
+        {QStringLiteral("log"),
+         QStringLiteral("Append every received and sent chunk in hex to FILE."),
+         QStringLiteral("FILE")},
+    });
+    p.process(app);
+
+    Options o;
+    o.model = p.value(QStringLiteral("model")).toUpper();
+    o.feeder = p.isSet(QStringLiteral("feeder"));
+    o.noAddr = p.isSet(QStringLiteral("no-addr"));
+    o.address = intOption(p, QStringLiteral("address"), -1, 1, 99);
+    o.pace = intOption(p, QStringLiteral("pace"), 0, 0, 4'000'000);
+    o.faults.latencyMs = intOption(p, QStringLiteral("latency"), 0, 0, 60'000);
+    o.faults.dropShare = shareOption(p, QStringLiteral("drop"));
+    o.faults.corruptShare = shareOption(p, QStringLiteral("corrupt"));
+    o.faults.garbageShare = shareOption(p, QStringLiteral("garbage"));
+    o.faults.nakAllCode = intOption(p, QStringLiteral("nak"), 0, 0, 99999);
+    o.faults.seed = quint32(intOption(p, QStringLiteral("seed"), 1, 0, 1 << 30));
+    o.robotModeOff = p.isSet(QStringLiteral("robot-mode-off"));
+    auto line = buildLine(o);
+
+    QFile log;
+    if (p.isSet(QStringLiteral("log"))) {
+        log.setFileName(p.value(QStringLiteral("log")));
+        if (!log.open(QIODevice::Append | QIODevice::Text | QIODevice::Unbuffered))
+            die(QStringLiteral("cannot write %1: %2").arg(log.fileName(), log.errorString()));
+        QObject::connect(line.get(), &SimLine::transmit, &app,
+                         [&log](const QByteArray &b) { log.write("TX " + b.toHex() + '\n'); });
+    }
+
+    QString error;
+    std::unique_ptr<PtyEndpoint> pty;
+    std::unique_ptr<SerialDeviceEndpoint> serial;
+    std::unique_ptr<TcpEndpoint> tcp;
+    QString where;
+    if (p.isSet(QStringLiteral("tcp"))) {
+        tcp = std::make_unique<TcpEndpoint>(*line);
+        if (!tcp->listen(p.value(QStringLiteral("tcp")), &error))
+            die(error);
+        const QString hp = p.value(QStringLiteral("tcp"));
+        where = hp.left(hp.lastIndexOf(QLatin1Char(':')) + 1) + QString::number(tcp->port());
+    } else if (p.isSet(QStringLiteral("device"))) {
+        serial = std::make_unique<SerialDeviceEndpoint>(*line, p.value(QStringLiteral("device")));
+        if (!serial->open(&error))
+            die(error);
+        where = p.value(QStringLiteral("device"));
+    } else {
+        pty = std::make_unique<PtyEndpoint>(*line, p.value(QStringLiteral("link")));
+        if (!pty->plug(&error))
+            die(error);
+        where = pty->slavePath();
+    }
+    // Log what arrives after the endpoint exists, so the log sees exactly the wire.
+    if (log.isOpen())
+        QObject::connect(line.get(), &SimLine::requestReceived, &app,
+                         [&log](const tipscope::protocol::Frame &f) {
+                             log.write("RX " + f.encode().toHex() + '\n');
+                         });
+    out() << where << Qt::endl;
+    QTextStream(stderr) << "tipscope-sim: " << o.model << (o.feeder ? " + SFR" : "")
+                        << (o.noAddr ? " without addresses" : " with addresses") << " on " << where
+                        << Qt::endl;
+
+    QSocketNotifier input(STDIN_FILENO, QSocketNotifier::Read);
+    QObject::connect(&input, &QSocketNotifier::activated, &app, [&] {
+        char buf[1024];
+        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf - 1);
+        if (n <= 0) {
+            input.setEnabled(false); // end of input: keep serving until killed
+            return;
+        }
+        for (const QByteArray &cmd : QByteArray(buf, int(n)).split('\n')) {
+            const QString c = QString::fromLocal8Bit(cmd).trimmed();
+            if (c.isEmpty())
+                continue;
+            QString reply;
+            if (c == QLatin1String("unplug") && pty) {
+                pty->unplug();
+                reply = QStringLiteral("ok");
+            } else if (c == QLatin1String("plug") && pty) {
+                reply = pty->plug(&error) ? pty->slavePath() : QStringLiteral("error: ") + error;
+            } else {
+                reply = executeSimCommand(*line, c);
+            }
+            out() << reply << Qt::endl;
+        }
+    });
+    return app.exec();
+}

@@ -1,0 +1,152 @@
+#include "simcontrol.h"
+
+#include "simline.h"
+
+#include <QStringList>
+
+namespace tipscope::sim {
+
+namespace {
+
+QString usage() {
+    return QStringLiteral(
+        "commands: port-error PORT CODE | station-error CODE | tool PORT TOOL | alarm PORT FLAGS "
+        "| status PORT STATUS | robot-mode on|off | fuse on|off | feeder-error CODE | drop SHARE "
+        "| corrupt SHARE | garbage SHARE | nak CODE | latency MS | pace BAUD | stats");
+}
+
+QString stats(const SimLine &line) {
+    const SimLineStats &s = line.stats();
+    return QStringLiteral("requests %1 writes %2 answers %3 dropped %4 corrupted %5 garbled %6 "
+                          "bad-requests %7 bytes-in %8 bytes-out %9")
+        .arg(s.requests)
+        .arg(s.writeRequests)
+        .arg(s.answers)
+        .arg(s.dropped)
+        .arg(s.corrupted)
+        .arg(s.garbled)
+        .arg(s.badRequests)
+        .arg(s.bytesReceived)
+        .arg(s.bytesSent);
+}
+
+struct Args {
+    QStringList words;
+    bool ok = true;
+    int integer(int i) {
+        bool good = false;
+        const int v = words.value(i).toInt(&good);
+        ok = ok && good;
+        return v;
+    }
+    double share(int i) {
+        bool good = false;
+        const double v = words.value(i).toDouble(&good);
+        ok = ok && good && v >= 0 && v <= 1;
+        return v;
+    }
+    bool onOff(int i) {
+        const QString w = words.value(i);
+        ok = ok && (w == QLatin1String("on") || w == QLatin1String("off"));
+        return w == QLatin1String("on");
+    }
+};
+
+QString applyStationCommand(SimLine &line, const QString &verb, Args &a) {
+    SimStation *st = line.station();
+    if (!st)
+        return QStringLiteral("error: there is no station on this line");
+    const bool needsPort = verb != QLatin1String("station-error") &&
+                           verb != QLatin1String("robot-mode") && verb != QLatin1String("fuse");
+    const int port = needsPort ? a.integer(1) : 0;
+    if (needsPort && (port < 1 || port > st->portCount()))
+        return QStringLiteral("error: port must be 1 to %1").arg(st->portCount());
+    if (verb == QLatin1String("port-error")) {
+        const int code = a.integer(2);
+        if (a.ok)
+            st->setPortError(port, code);
+    } else if (verb == QLatin1String("tool")) {
+        const int tool = a.integer(2);
+        if (a.ok)
+            st->setTool(port, tool);
+    } else if (verb == QLatin1String("alarm")) {
+        const int flags = a.integer(2);
+        if (a.ok)
+            st->latchAlarm(port, flags);
+    } else if (verb == QLatin1String("status")) {
+        const int status = a.integer(2);
+        a.ok = a.ok && status >= 0 && status <= 3;
+        if (a.ok)
+            st->setStatus(port, status);
+    } else if (verb == QLatin1String("station-error")) {
+        const int code = a.integer(1);
+        if (a.ok)
+            st->setStationError(code);
+    } else if (verb == QLatin1String("robot-mode")) {
+        const bool on = a.onOff(1);
+        if (a.ok)
+            st->setRobotMode(on);
+    } else if (verb == QLatin1String("fuse")) {
+        const bool on = a.onOff(1);
+        if (a.ok)
+            st->setFuse(on);
+    }
+    return a.ok ? QStringLiteral("ok") : QStringLiteral("error: bad arguments; ") + usage();
+}
+
+QString applyLineCommand(SimLine &line, const QString &verb, Args &a) {
+    SimFaults f = line.faults();
+    if (verb == QLatin1String("drop"))
+        f.dropShare = a.share(1);
+    else if (verb == QLatin1String("corrupt"))
+        f.corruptShare = a.share(1);
+    else if (verb == QLatin1String("garbage"))
+        f.garbageShare = a.share(1);
+    else if (verb == QLatin1String("nak"))
+        f.nakAllCode = a.integer(1);
+    else if (verb == QLatin1String("latency"))
+        f.latencyMs = a.integer(1);
+    else if (verb == QLatin1String("pace")) {
+        const int baud = a.integer(1);
+        if (a.ok && baud >= 0)
+            line.setBaud(baud);
+        return a.ok && baud >= 0 ? QStringLiteral("ok") : QStringLiteral("error: bad baud rate");
+    }
+    if (!a.ok)
+        return QStringLiteral("error: bad arguments; ") + usage();
+    line.setFaults(f);
+    return QStringLiteral("ok");
+}
+
+} // namespace
+
+QString executeSimCommand(SimLine &line, const QString &command) {
+    Args a{command.simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts)};
+    const QString verb = a.words.value(0);
+    static const QStringList stationVerbs = {
+        QStringLiteral("port-error"), QStringLiteral("station-error"), QStringLiteral("tool"),
+        QStringLiteral("alarm"),      QStringLiteral("status"),        QStringLiteral("robot-mode"),
+        QStringLiteral("fuse")};
+    static const QStringList lineVerbs = {QStringLiteral("drop"),    QStringLiteral("corrupt"),
+                                          QStringLiteral("garbage"), QStringLiteral("nak"),
+                                          QStringLiteral("latency"), QStringLiteral("pace")};
+    if (verb.isEmpty() || verb == QLatin1String("help"))
+        return usage();
+    if (verb == QLatin1String("stats"))
+        return stats(line);
+    if (stationVerbs.contains(verb))
+        return applyStationCommand(line, verb, a);
+    if (lineVerbs.contains(verb))
+        return applyLineCommand(line, verb, a);
+    if (verb == QLatin1String("feeder-error")) {
+        SimFeeder *f = line.feeder();
+        const int code = a.integer(1);
+        if (!f || !a.ok)
+            return QStringLiteral("error: no feeder on this line, or a bad code");
+        f->setError(code);
+        return QStringLiteral("ok");
+    }
+    return QStringLiteral("error: unknown command '%1'; ").arg(verb) + usage();
+}
+
+} // namespace tipscope::sim

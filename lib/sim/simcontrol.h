@@ -1,0 +1,20 @@
+// SimControl: the text commands that steer a running simulator (tipscope-sim reads them from
+// its standard input; tests and the demo call execute() directly).
+//
+//   port-error PORT CODE    station-error CODE     tool PORT TOOL       alarm PORT FLAGS
+//   status PORT STATUS      robot-mode on|off      fuse on|off          feeder-error CODE
+//   drop SHARE   corrupt SHARE   garbage SHARE   nak CODE   latency MS   pace BAUD
+//   stats                   help
+// execute() returns the reply line; an unknown or malformed command gets a reply that starts
+// with "error:" and changes nothing.
+#pragma once
+
+#include <QString>
+
+namespace tipscope::sim {
+
+class SimLine;
+
+[[nodiscard]] QString executeSimCommand(SimLine &line, const QString &command);
+
+} // namespace tipscope::sim

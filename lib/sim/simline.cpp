@@ -1,0 +1,245 @@
+#include "simline.h"
+
+namespace tipscope::sim {
+
+using namespace tipscope::protocol;
+
+namespace {
+constexpr int kTickMs = 20;
+constexpr qint64 kNsPerMs = 1'000'000;
+
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+} // namespace
+
+SimLine::SimLine(QObject *parent)
+    : QObject(parent)
+    , m_rng(1) {
+    m_clock.start();
+    m_pumpTimer.setSingleShot(true);
+    m_pumpTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_pumpTimer, &QTimer::timeout, this, &SimLine::pump);
+    m_tickTimer.setInterval(kTickMs);
+    connect(&m_tickTimer, &QTimer::timeout, this, &SimLine::tick);
+}
+
+SimLine::~SimLine() = default;
+
+std::unique_ptr<SimLine> SimLine::demo(QObject *parent) {
+    auto line = std::make_unique<SimLine>(parent);
+    line->addDevice(std::make_unique<SimStation>(QStringLiteral("DME"), 1));
+    line->addDevice(std::make_unique<SimFeeder>(10));
+    return line;
+}
+
+SimDevice *SimLine::addDevice(std::unique_ptr<SimDevice> device) {
+    m_devices.push_back(std::move(device));
+    return m_devices.back().get();
+}
+
+QList<SimDevice *> SimLine::devices() const {
+    QList<SimDevice *> out;
+    for (const auto &d : m_devices)
+        out.append(d.get());
+    return out;
+}
+
+SimStation *SimLine::station() const {
+    for (const auto &d : m_devices)
+        if (auto *s = dynamic_cast<SimStation *>(d.get()))
+            return s;
+    return nullptr;
+}
+
+SimFeeder *SimLine::feeder() const {
+    for (const auto &d : m_devices)
+        if (auto *f = dynamic_cast<SimFeeder *>(d.get()))
+            return f;
+    return nullptr;
+}
+
+void SimLine::setFaults(const SimFaults &faults) {
+    m_faults = faults;
+    m_rng.seed(faults.seed);
+}
+
+void SimLine::setClockRunning(bool running) {
+    m_lastTickNs = m_clock.nsecsElapsed();
+    if (running)
+        m_tickTimer.start();
+    else
+        m_tickTimer.stop();
+}
+
+void SimLine::tick() {
+    const qint64 now = m_clock.nsecsElapsed();
+    const int ms = int((now - m_lastTickNs) / kNsPerMs);
+    if (ms <= 0)
+        return;
+    m_lastTickNs += ms * kNsPerMs;
+    advance(ms);
+}
+
+void SimLine::advance(int ms) {
+    for (const auto &d : m_devices)
+        d->advance(ms);
+}
+
+bool SimLine::chance(double share) {
+    return share > 0 && m_rng.generateDouble() < share;
+}
+
+void SimLine::receive(const QByteArray &bytes) {
+    m_stats.bytesReceived += bytes.size();
+    const qint64 now = m_clock.nsecsElapsed();
+    // On a real wire the chunk starts arriving when it was written (about now) and takes its
+    // bytes' time; a chunk cannot start before the previous one has finished.
+    const qint64 chunkStart = qMax(now, m_rxFreeNs);
+    m_rxFreeNs = chunkStart + bytes.size() * byteNs();
+    qint64 offset = 0;
+    for (const DecodeEvent &e : m_decoder.feed(bytes)) {
+        offset += e.raw.size();
+        handleEvent(e, chunkStart + qMin<qint64>(offset, bytes.size()) * byteNs());
+    }
+}
+
+void SimLine::handleEvent(const DecodeEvent &e, qint64 arrivedNs) {
+    if (e.kind == DecodeEvent::Kind::Garbage || e.kind == DecodeEvent::Kind::Overflow)
+        return;
+    if (e.kind != DecodeEvent::Kind::Frame) {
+        ++m_stats.badRequests;
+        answerMalformed(e, arrivedNs);
+        return;
+    }
+    ++m_stats.requests;
+    if (e.frame.header == Header::Write)
+        ++m_stats.writeRequests;
+    Q_EMIT requestReceived(e.frame);
+    SimDevice *device = route(e.frame.target);
+    if (!device || e.frame.source.has_value() != device->isAddressed())
+        return;
+    const int address = device->address(); // a W-SAD answers from the old address
+    Frame answer = m_faults.nakAllCode ? device->nak(e.frame.command, m_faults.nakAllCode)
+                                       : device->handle(e.frame);
+    sendAnswer(device, address, e.frame, std::move(answer), arrivedNs);
+}
+
+void SimLine::answerMalformed(const DecodeEvent &e, qint64 arrivedNs) {
+    const QByteArray &raw = e.raw;
+    if (raw.size() < 7 || raw.at(raw.size() - 2) != kEtx)
+        return; // cut short: a device would not know it was meant for it
+    std::optional<int> target, source;
+    qsizetype pos = 1;
+    if (isDigit(raw.at(1))) {
+        if (raw.size() < 11 || !isDigit(raw.at(2)) || !isDigit(raw.at(3)) || !isDigit(raw.at(4)))
+            return;
+        source = raw.mid(1, 2).toInt();
+        target = raw.mid(3, 2).toInt();
+        pos = 5;
+    }
+    SimDevice *device = route(target);
+    if (!device || device->isAddressed() != target.has_value())
+        return;
+    QByteArray command = raw.mid(pos + 1, 3);
+    for (char c : command)
+        if (!isDigit(c) && (c < 'A' || c > 'Z'))
+            return;
+    const int code = e.kind == DecodeEvent::Kind::BccError ? 1 : 2;
+    Frame request;
+    request.source = source;
+    request.target = target;
+    request.command = command;
+    sendAnswer(device, device->address(), request, device->nak(command, code), arrivedNs);
+}
+
+SimDevice *SimLine::route(std::optional<int> target) const {
+    for (const auto &d : m_devices) {
+        if (target && d->isAddressed() && d->address() == *target)
+            return d.get();
+        if (!target && !d->isAddressed())
+            return d.get();
+    }
+    return nullptr;
+}
+
+void SimLine::sendAnswer(SimDevice *, int deviceAddress, const Frame &request, Frame answer,
+                         qint64 arrivedNs) {
+    if (chance(m_faults.dropShare)) {
+        ++m_stats.dropped;
+        return;
+    }
+    if (request.source) {
+        answer.source = deviceAddress;
+        answer.target = *request.source;
+    }
+    QByteArray bytes = answer.encode();
+    if (chance(m_faults.corruptShare)) {
+        ++m_stats.corrupted;
+        bytes = applyCorruption(bytes);
+    }
+    if (chance(m_faults.garbageShare)) {
+        ++m_stats.garbled;
+        QByteArray noise;
+        for (int i = 0, n = 1 + int(m_rng.bounded(6)); i < n; ++i)
+            noise.append(char(0x20 + m_rng.bounded(0x60)));
+        bytes.prepend(noise);
+    }
+    qint64 delayNs = m_faults.latencyMs * kNsPerMs;
+    if (chance(m_faults.delayShare)) {
+        ++m_stats.delayed;
+        delayNs += m_faults.delayMs * kNsPerMs;
+    }
+    ++m_stats.answers;
+    schedule(bytes, arrivedNs + delayNs);
+}
+
+QByteArray SimLine::applyCorruption(QByteArray bytes) {
+    switch (m_rng.bounded(3)) {
+    case 0: // a bit flipped inside the frame: the BCC no longer matches
+        bytes[1 + m_rng.bounded(int(bytes.size()) - 3)] ^= char(1 << m_rng.bounded(7));
+        break;
+    case 1: // the wrong BCC
+        bytes.back() = char(bytes.back() ^ 0x5A);
+        break;
+    default: // cut short
+        bytes.chop(1 + m_rng.bounded(int(bytes.size()) - 1));
+        break;
+    }
+    return bytes;
+}
+
+void SimLine::schedule(const QByteArray &bytes, qint64 earliestNs) {
+    const qint64 start = qMax(earliestNs, m_txFreeNs);
+    m_txFreeNs = start + bytes.size() * byteNs();
+    m_out.push_back({start, bytes, 0});
+    pump();
+}
+
+void SimLine::pump() {
+    const qint64 now = m_clock.nsecsElapsed();
+    while (!m_out.empty()) {
+        Outgoing &o = m_out.front();
+        if (now < o.startNs)
+            break;
+        qsizetype due = o.bytes.size();
+        if (byteNs() > 0)
+            due = qMin<qsizetype>(o.bytes.size(), (now - o.startNs) / byteNs() + 1);
+        if (due > o.sent) {
+            const QByteArray part = o.bytes.mid(o.sent, due - o.sent);
+            o.sent = due;
+            m_stats.bytesSent += part.size();
+            Q_EMIT transmit(part);
+        }
+        if (o.sent < o.bytes.size())
+            break;
+        m_out.erase(m_out.begin());
+    }
+    if (m_out.empty())
+        return;
+    const Outgoing &next = m_out.front();
+    const qint64 waitNs = next.sent > 0 ? byteNs() : next.startNs - now;
+    m_pumpTimer.start(int(qMax<qint64>(0, (waitNs + kNsPerMs - 1) / kNsPerMs)));
+}
+
+} // namespace tipscope::sim

@@ -1,0 +1,113 @@
+// SimLine: a serial line with simulated devices on it, plus the faults a real line has.
+//
+// Bytes written by the host go to receive(); answers leave through transmit(). The line decodes
+// requests, routes each to the device it addresses (silence for other addresses), answers a
+// request with a bad BCC with NAK 00001 and a malformed one with NAK 00002, and applies the
+// configured faults to answers. With a baud rate set, the line paces both directions like a real
+// wire (10 bits per byte): an answer starts no earlier than the request's last byte would have
+// arrived, and leaves byte by byte at the line rate. Simulated time for the devices advances
+// from a timer while the clock runs, or explicitly through advance().
+#pragma once
+
+#include "simfeeder.h"
+#include "simstation.h"
+
+#include "protocol/framedecoder.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QRandomGenerator>
+#include <QTimer>
+#include <memory>
+#include <vector>
+
+namespace tipscope::sim {
+
+struct SimFaults {
+    int latencyMs = 0;       // device turnaround added to every answer
+    double dropShare = 0;    // requests that get no answer
+    double corruptShare = 0; // answers with a flipped bit, cut short, or a wrong BCC
+    double garbageShare = 0; // answers preceded by noise bytes
+    double delayShare = 0;   // answers held back by delayMs (past a client's timeout)
+    int delayMs = 0;
+    int nakAllCode = 0; // when set, every request is answered with this NAK code
+    quint32 seed = 1;
+};
+
+struct SimLineStats {
+    qint64 bytesReceived = 0;
+    qint64 bytesSent = 0;
+    qint64 requests = 0;
+    qint64 writeRequests = 0;
+    qint64 answers = 0;
+    qint64 dropped = 0;
+    qint64 corrupted = 0;
+    qint64 garbled = 0;
+    qint64 delayed = 0;
+    qint64 badRequests = 0;
+};
+
+class SimLine : public QObject {
+    Q_OBJECT
+public:
+    explicit SimLine(QObject *parent = nullptr);
+    ~SimLine() override;
+
+    // The demo line: a DME station at 01 and an SFR feeder at 10, both addressed.
+    static std::unique_ptr<SimLine> demo(QObject *parent = nullptr);
+
+    SimDevice *addDevice(std::unique_ptr<SimDevice> device);
+    [[nodiscard]] QList<SimDevice *> devices() const;
+    [[nodiscard]] SimStation *station() const;
+    [[nodiscard]] SimFeeder *feeder() const;
+
+    void setFaults(const SimFaults &faults);
+    [[nodiscard]] const SimFaults &faults() const { return m_faults; }
+    void setBaud(int baud) { m_baud = baud; }
+    [[nodiscard]] int baud() const { return m_baud; }
+    void setClockRunning(bool running);
+    void advance(int ms);
+    [[nodiscard]] const SimLineStats &stats() const { return m_stats; }
+
+public Q_SLOTS:
+    void receive(const QByteArray &bytes);
+
+Q_SIGNALS:
+    void transmit(const QByteArray &bytes);
+    void requestReceived(const tipscope::protocol::Frame &request);
+
+private:
+    struct Outgoing {
+        qint64 startNs = 0;
+        QByteArray bytes;
+        qsizetype sent = 0;
+    };
+
+    void handleEvent(const protocol::DecodeEvent &event, qint64 arrivedNs);
+    void answerMalformed(const protocol::DecodeEvent &event, qint64 arrivedNs);
+    SimDevice *route(std::optional<int> target) const;
+    void sendAnswer(SimDevice *device, int deviceAddress, const protocol::Frame &request,
+                    protocol::Frame answer, qint64 arrivedNs);
+    QByteArray applyCorruption(QByteArray bytes);
+    void schedule(const QByteArray &bytes, qint64 earliestNs);
+    void pump();
+    [[nodiscard]] qint64 byteNs() const { return m_baud > 0 ? 10'000'000'000LL / m_baud : 0; }
+    [[nodiscard]] bool chance(double share);
+    void tick();
+
+    std::vector<std::unique_ptr<SimDevice>> m_devices;
+    protocol::FrameDecoder m_decoder;
+    SimFaults m_faults;
+    QRandomGenerator m_rng;
+    int m_baud = 0;
+    QElapsedTimer m_clock;
+    qint64 m_rxFreeNs = 0;
+    qint64 m_txFreeNs = 0;
+    std::vector<Outgoing> m_out;
+    QTimer m_pumpTimer;
+    QTimer m_tickTimer;
+    qint64 m_lastTickNs = 0;
+    SimLineStats m_stats;
+};
+
+} // namespace tipscope::sim

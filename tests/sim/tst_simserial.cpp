@@ -1,0 +1,180 @@
+// Scripted sessions with tipscope-sim through a real QSerialPort on a socat PTY pair, through
+// the simulator's own PTY, and over TCP.
+#include "ptyfixtures.h"
+
+#include "protocol/framedecoder.h"
+
+#include <QDeadlineTimer>
+#include <QSerialPort>
+#include <QTcpSocket>
+#include <QtTest>
+
+using namespace tipscope::protocol;
+using namespace tipscope::testing;
+
+namespace {
+
+struct Step {
+    Frame request;
+    QByteArray expectHeaderAndData; // e.g. "A00350", "N00003"; empty: expect silence
+};
+
+template <typename Device>
+std::optional<Frame> exchange(Device &io, const Frame &request, int timeoutMs) {
+    FrameDecoder decoder;
+    io.write(request.encode());
+    io.waitForBytesWritten(1000);
+    const QDeadlineTimer deadline(timeoutMs);
+    while (!deadline.hasExpired()) {
+        if (!io.bytesAvailable() &&
+            !io.waitForReadyRead(int(qMax<qint64>(1, deadline.remainingTime()))))
+            continue;
+        for (const auto &e : decoder.feed(io.readAll()))
+            if (e.kind == DecodeEvent::Kind::Frame)
+                return e.frame;
+    }
+    return std::nullopt;
+}
+
+Frame rd(const char *c, std::optional<int> target) {
+    const Frame f = Frame::read(c);
+    return target ? f.addressed(0, *target) : f;
+}
+
+Frame wr(const char *c, const char *d, std::optional<int> target) {
+    const Frame f = Frame::write(c, d);
+    return target ? f.addressed(0, *target) : f;
+}
+
+template <typename Device> void runScript(Device &io, const QList<Step> &steps) {
+    for (const Step &s : steps) {
+        const auto answer = exchange(io, s.request, s.expectHeaderAndData.isEmpty() ? 300 : 3000);
+        const QString what = s.request.toString();
+        if (s.expectHeaderAndData.isEmpty()) {
+            QVERIFY2(!answer, qPrintable(what + QStringLiteral(": expected silence")));
+            continue;
+        }
+        QVERIFY2(answer, qPrintable(what + QStringLiteral(": no answer")));
+        QCOMPARE(answer->command, s.request.command);
+        QCOMPARE(answer->source, s.request.target);
+        QCOMPARE(answer->target, s.request.source);
+        const QByteArray got = QByteArray(1, char(answer->header)) + answer->data;
+        if (s.expectHeaderAndData.endsWith('*'))
+            QVERIFY2(got.startsWith(s.expectHeaderAndData.chopped(1)),
+                     qPrintable(what + ": " + got));
+        else
+            QCOMPARE(got, s.expectHeaderAndData);
+    }
+}
+
+} // namespace
+
+class TestSimSerial : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void dmeWithFourPortsAnswersAScriptedSession();
+    void ddrWithoutAddressesAnswersAScriptedSession();
+    void sfrAnswersTheGuidesWorkedFrame();
+    void ownPtyServesAPlainSerialClient();
+    void tcpServesRawFrames();
+
+private:
+    void withSocatSim(const QStringList &simArgs, const QList<Step> &script);
+};
+
+void TestSimSerial::withSocatSim(const QStringList &simArgs, const QList<Step> &script) {
+    SocatPair pair;
+    QString error;
+    if (!pair.start(&error))
+        QSKIP(qPrintable(error));
+    SimProcess sim;
+    QVERIFY2(!sim.start(simArgs + QStringList{QStringLiteral("--device"), pair.deviceEnd()}, &error)
+                  .isEmpty(),
+             qPrintable(error));
+    QSerialPort port(pair.hostEnd());
+    port.setBaudRate(QSerialPort::Baud19200);
+    QVERIFY2(port.open(QIODevice::ReadWrite), qPrintable(port.errorString()));
+    port.clear();
+    runScript(port, script);
+}
+
+void TestSimSerial::dmeWithFourPortsAnswersAScriptedSession() {
+    withSocatSim({QStringLiteral("--model"), QStringLiteral("DME")},
+                 {
+                     {rd("SMN", 1), "ADME-2C"},
+                     {rd("SVR", 1), "A9996780"},
+                     {rd("TT1", 1), "A*"},
+                     {rd("TT4", 1), "A*"},
+                     {rd("ST3", 1), "A00350"},
+                     {wr("ST3", "00300", 1), "A"},
+                     {rd("ST3", 1), "A00300"},
+                     {wr("ST3", "00301", 1), "N00003"},
+                     {rd("ST5", 1), "N00004"},
+                     {wr("A41", "-0050", 1), "A"},
+                     {rd("A41", 1), "A-0050"},
+                     {rd("SMN", 10), ""},
+                     {rd("SMN", std::nullopt), ""},
+                 });
+}
+
+void TestSimSerial::ddrWithoutAddressesAnswersAScriptedSession() {
+    withSocatSim({QStringLiteral("--model"), QStringLiteral("DDR")},
+                 {
+                     {rd("SMN", std::nullopt), "ADDR"},
+                     {rd("PLM", std::nullopt), "A01000"},
+                     {wr("PLM", "00800", std::nullopt), "A"},
+                     {rd("PLM", std::nullopt), "A00800"},
+                     {rd("MAT", std::nullopt), "A00400"},
+                     {wr("ST1", "00455", std::nullopt), "N00003"},
+                     {wr("PS2", "00010", std::nullopt), "N00003"},
+                     {rd("SMN", 1), ""},
+                 });
+}
+
+void TestSimSerial::sfrAnswersTheGuidesWorkedFrame() {
+    const Frame guide = wr("LEN", "00200", 10);
+    QCOMPARE(guide.encode().toHex().toUpper(), QByteArray("0230303130574C454E30303230300322"));
+    withSocatSim({QStringLiteral("--model"), QStringLiteral("SFR")},
+                 {
+                     {rd("SMN", 10), "ASFR-A"},
+                     {guide, "A00200"},
+                     {rd("LEN", 10), "A00200"},
+                     {wr("MOD", "00003", 10), "N00003"},
+                     {wr("SFD", "00001", 10), "A00001"},
+                     {rd("FDS", 10), "A00001"},
+                     {wr("SSD", "00000", 10), "A00000"},
+                     {wr("CTP", "00000", 10), "A00000"},
+                     {rd("CTP", 10), "A00000"},
+                 });
+}
+
+void TestSimSerial::ownPtyServesAPlainSerialClient() {
+    SimProcess sim;
+    QString error;
+    const QString path = sim.start({QStringLiteral("--model"), QStringLiteral("DME"),
+                                    QStringLiteral("--feeder"), QStringLiteral("--pty")},
+                                   &error);
+    QVERIFY2(path.startsWith(QStringLiteral("/dev/pts/")), qPrintable(error + path));
+    QSerialPort port(path);
+    QVERIFY2(port.open(QIODevice::ReadWrite), qPrintable(port.errorString()));
+    port.clear();
+    runScript(port, {{rd("SMN", 1), "ADME-2C"}, {rd("SMN", 10), "ASFR-A"}});
+    QCOMPARE(sim.command(QStringLiteral("port-error 1 3")), QStringLiteral("ok"));
+    runScript(port, {{rd("PE1", 1), "A00003"}});
+}
+
+void TestSimSerial::tcpServesRawFrames() {
+    SimProcess sim;
+    QString error;
+    const QString where = sim.start({QStringLiteral("--model"), QStringLiteral("HDR"),
+                                     QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:0")},
+                                    &error);
+    QVERIFY2(where.startsWith(QStringLiteral("127.0.0.1:")), qPrintable(error + where));
+    QTcpSocket socket;
+    socket.connectToHost(QStringLiteral("127.0.0.1"), quint16(where.section(':', 1).toInt()));
+    QVERIFY(socket.waitForConnected(3000));
+    runScript(socket, {{rd("SMN", std::nullopt), "AHDR-2C"}, {rd("ST2", std::nullopt), "N00004"}});
+}
+
+QTEST_GUILESS_MAIN(TestSimSerial)
+#include "tst_simserial.moc"
