@@ -1,0 +1,408 @@
+#include "requestqueue.h"
+
+#include "transport.h"
+
+#include "protocol/catalog.h"
+#include "protocol/datafield.h"
+
+#include <QtMath>
+
+namespace tipscope::link {
+
+using namespace tipscope::protocol;
+
+namespace {
+constexpr int kLongestAnswerExtra = 16; // a read's answer adds its data field; text may be long
+constexpr int kWriteWatchdogMs = 1000;
+constexpr int kNakBcc = 1;
+} // namespace
+
+Request Request::read(std::optional<int> target, const QByteArray &command, Priority priority)
+{
+    Request r;
+    r.header = Header::Read;
+    r.command = command;
+    r.target = target;
+    r.priority = priority;
+    return r;
+}
+
+Request Request::write(std::optional<int> target, const QByteArray &command,
+                       const QByteArray &data, bool repeatable)
+{
+    Request r;
+    r.header = Header::Write;
+    r.command = command;
+    r.data = data;
+    r.target = target;
+    r.priority = Priority::UserWrite;
+    r.repeatable = repeatable;
+    return r;
+}
+
+bool RequestQueue::Entry::wanted() const
+{
+    for (const auto &r : replies)
+        if (r && !r->isFinished())
+            return true;
+    return false;
+}
+
+RequestQueue::RequestQueue(QObject *parent)
+    : QObject(parent)
+{
+    m_clock.start();
+    m_timer.setSingleShot(true);
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &RequestQueue::onTimer);
+    m_gapTimer.setSingleShot(true);
+    m_gapTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_gapTimer, &QTimer::timeout, this, &RequestQueue::onGapElapsed);
+}
+
+RequestQueue::~RequestQueue()
+{
+    stop(QStringLiteral("the connection was closed"));
+}
+
+void RequestQueue::setTransport(Transport *transport)
+{
+    for (const auto &c : m_transportConnections)
+        disconnect(c);
+    m_transportConnections.clear();
+    m_transport = transport;
+    if (!transport)
+        return;
+    m_transportConnections = {
+        connect(transport, &Transport::bytesWritten, this, &RequestQueue::onBytesWritten),
+        connect(transport, &Transport::received, this, &RequestQueue::onReceived),
+    };
+}
+
+double RequestQueue::wireMs(int bytes) const
+{
+    const int baud = m_transport ? qMax(1, m_transport->baudRate()) : 19200;
+    return bytes * 10.0 * 1000.0 / baud;
+}
+
+int RequestQueue::answerBudgetMs(int requestBytes) const
+{
+    return int(qCeil(wireMs(requestBytes) + wireMs(requestBytes + kLongestAnswerExtra))) +
+           m_settings.turnaroundMs;
+}
+
+void RequestQueue::finishLater(Reply *reply, ReplyError error, const QString &why)
+{
+    // The caller connects to finished() after enqueue() returns; finishing now would be unseen.
+    QTimer::singleShot(0, reply, [reply, error, why] { reply->finish(error, why); });
+}
+
+Reply *RequestQueue::enqueue(const Request &request, QObject *owner)
+{
+    Frame frame;
+    if (request.raw.isEmpty()) {
+        frame.header = request.header;
+        frame.command = request.command;
+        frame.data = request.data;
+        if (request.target) {
+            frame.source = m_settings.robotAddress;
+            frame.target = *request.target;
+        }
+    } else if (auto parsed = parseFrame(request.raw)) {
+        frame = *parsed;
+    }
+    auto *reply = new Reply(frame, owner);
+    if (m_stopped) {
+        finishLater(reply, ReplyError::Cancelled, QStringLiteral("the connection is closing"));
+        return reply;
+    }
+    if (!m_open) {
+        finishLater(reply, ReplyError::NotOpen,
+                    QStringLiteral("not sent: the line is not connected"));
+        return reply;
+    }
+    if (tryCoalesce(request, reply))
+        return reply;
+    Entry e;
+    e.request = request;
+    if (request.header == Header::Write && request.raw.isEmpty())
+        e.request.priority = Priority::UserWrite;
+    e.frame = frame;
+    e.matchAnything = !request.raw.isEmpty() && !parseFrame(request.raw);
+    e.replies.append(reply);
+    m_queues[size_t(e.request.priority)].push_back(std::move(e));
+    if (m_state == State::Idle)
+        sendNext();
+    return reply;
+}
+
+bool RequestQueue::tryCoalesce(const Request &r, Reply *reply)
+{
+    if (r.header != Header::Read || !r.raw.isEmpty())
+        return false;
+    for (size_t p = 0; p < m_queues.size(); ++p) {
+        auto &q = m_queues[p];
+        for (auto it = q.begin(); it != q.end(); ++it) {
+            const Request &o = it->request;
+            if (o.header != Header::Read || !o.raw.isEmpty() || o.command != r.command ||
+                o.target != r.target)
+                continue;
+            it->replies.append(reply);
+            ++m_stats.coalesced;
+            if (size_t(r.priority) < p) { // the more urgent asker decides where it waits
+                Entry moved = std::move(*it);
+                q.erase(it);
+                moved.request.priority = r.priority;
+                m_queues[size_t(r.priority)].push_back(std::move(moved));
+            }
+            return true;
+        }
+    }
+    return false;
+}
+
+int RequestQueue::pendingCount() const
+{
+    int n = m_current ? 1 : 0;
+    for (const auto &q : m_queues)
+        n += int(q.size());
+    return n;
+}
+
+void RequestQueue::sendNext()
+{
+    if (m_state != State::Idle || !m_open || !m_transport || m_current)
+        return;
+    for (auto &q : m_queues) {
+        while (!q.empty()) {
+            Entry e = std::move(q.front());
+            q.pop_front();
+            if (!e.wanted()) {
+                ++m_stats.skipped;
+                continue;
+            }
+            m_current = std::move(e);
+            transmit();
+            return;
+        }
+    }
+}
+
+void RequestQueue::transmit()
+{
+    Entry &e = *m_current;
+    const QByteArray bytes = e.request.raw.isEmpty() ? e.frame.encode() : e.request.raw;
+    if (m_decoder.pendingBytes() > 0) {
+        // Leftovers of an earlier, broken answer must not glue onto this request's answer.
+        m_stats.discardedBytes += m_decoder.pendingBytes();
+        m_decoder.reset();
+    }
+    ++e.attempts;
+    if (e.attempts > 1)
+        ++m_stats.retries;
+    e.lastSentUs = nowUs();
+    if (e.attempts == 1)
+        e.firstSentUs = e.lastSentUs;
+    ++m_stats.sent;
+    m_bytesToConfirm = bytes.size();
+    m_state = State::Writing;
+    m_timer.start(kWriteWatchdogMs + int(2 * wireMs(int(bytes.size()))));
+    m_tap.tx(bytes);
+    m_transport->write(bytes);
+}
+
+void RequestQueue::onBytesWritten(qint64 count)
+{
+    if (m_state != State::Writing)
+        return;
+    m_bytesToConfirm -= count;
+    if (m_bytesToConfirm > 0)
+        return;
+    m_state = State::Waiting;
+    const int requestBytes = int(m_current->request.raw.isEmpty() ? m_current->frame.encode().size()
+                                                                  : m_current->request.raw.size());
+    m_timer.start(answerBudgetMs(requestBytes));
+}
+
+bool RequestQueue::matches(const Entry &e, const Frame &a) const
+{
+    if (e.matchAnything)
+        return true;
+    if (a.header != Header::Answer && a.header != Header::Nak)
+        return false;
+    if (a.command != e.frame.command)
+        return false;
+    if (e.frame.isAddressed())
+        return a.isAddressed() && a.source == e.frame.target && a.target == e.frame.source;
+    return !a.isAddressed();
+}
+
+void RequestQueue::onReceived(const QByteArray &bytes)
+{
+    m_tap.rx(bytes);
+    for (const DecodeEvent &ev : m_decoder.feed(bytes)) {
+        const bool waiting =
+            m_current && (m_state == State::Writing || m_state == State::Waiting);
+        switch (ev.kind) {
+        case DecodeEvent::Kind::Frame:
+            if (waiting && matches(*m_current, ev.frame)) {
+                m_tap.decoded(ev, false);
+                complete(ev.frame);
+            } else {
+                ++m_stats.stray;
+                m_tap.decoded(ev, true);
+            }
+            break;
+        case DecodeEvent::Kind::Garbage:
+            m_stats.discardedBytes += ev.raw.size();
+            m_tap.decoded(ev, false);
+            break;
+        default:
+            ++m_stats.corrupted;
+            m_tap.decoded(ev, false);
+            if (waiting)
+                attemptFailed(ReplyError::Corrupted,
+                              QStringLiteral("the answer was corrupted (%1)").arg(ev.detail));
+            break;
+        }
+    }
+    Q_EMIT statsChanged();
+}
+
+void RequestQueue::onTimer()
+{
+    if (!m_current)
+        return;
+    if (m_state == State::Writing) {
+        attemptFailed(ReplyError::Timeout, QStringLiteral("the request could not be written"));
+        return;
+    }
+    if (m_state == State::Waiting)
+        attemptFailed(ReplyError::Timeout, QStringLiteral("no answer"));
+}
+
+void RequestQueue::complete(const Frame &answer)
+{
+    m_timer.stop();
+    m_timeoutRun = 0;
+    Entry &e = *m_current;
+    const qint64 latency = nowUs() - e.lastSentUs;
+    m_stats.recordAnswer(latency, nowMs());
+    if (answer.header == Header::Nak) {
+        const int code = parseNumber(answer.data).value_or(-1);
+        m_stats.naks[code] += 1;
+        if (code == kNakBcc && canRetry(e)) {
+            m_state = State::Gap;
+            m_gapTimer.start(m_settings.interFrameGapMs);
+            return;
+        }
+        finishCurrent(ReplyError::Nak,
+                      QStringLiteral("NAK %1: %2")
+                          .arg(QString::fromLatin1(answer.data), Catalog::builtin().nakText(code)),
+                      answer);
+        return;
+    }
+    finishCurrent(ReplyError::None, {}, answer);
+}
+
+bool RequestQueue::canRetry(const Entry &e) const
+{
+    const bool safe = e.request.header == Header::Read || e.request.repeatable;
+    return safe && e.attempts <= e.request.retries.value_or(m_settings.retries) && e.wanted();
+}
+
+void RequestQueue::attemptFailed(ReplyError error, const QString &why)
+{
+    m_timer.stop();
+    Entry &e = *m_current;
+    if (error == ReplyError::Timeout) {
+        ++m_stats.timeouts;
+        ++m_timeoutRun;
+        m_tap.note(QStringLiteral("%1: %2 (attempt %3)").arg(e.frame.toString(), why).arg(e.attempts));
+    }
+    const int run = m_timeoutRun;
+    if (canRetry(e)) {
+        m_state = State::Gap;
+        m_gapTimer.start(m_settings.interFrameGapMs);
+    } else {
+        QString text = QStringLiteral("%1 after %2 attempt(s)").arg(why).arg(e.attempts);
+        if (e.request.header == Header::Write && !e.request.repeatable)
+            text += QStringLiteral("; the device may have carried it out: check before repeating");
+        finishCurrent(error, text);
+    }
+    if (error == ReplyError::Timeout)
+        Q_EMIT timeoutStreak(run);
+}
+
+void RequestQueue::finishCurrent(ReplyError error, const QString &why, const Frame &answer)
+{
+    Entry e = std::move(*m_current);
+    m_current.reset();
+    m_state = State::Gap;
+    m_gapTimer.start(m_settings.interFrameGapMs);
+    const int nak = error == ReplyError::Nak ? parseNumber(answer.data).value_or(-1) : 0;
+    for (const QPointer<Reply> &r : e.replies) {
+        if (!r)
+            continue;
+        r->m_answer = answer;
+        r->m_attempts = e.attempts;
+        r->m_nakCode = nak;
+        r->m_latencyUs = nowUs() - e.firstSentUs;
+        r->finish(error, why);
+    }
+}
+
+void RequestQueue::onGapElapsed()
+{
+    if (m_current) {
+        if (m_open && m_transport)
+            transmit();
+        return;
+    }
+    m_state = State::Idle;
+    sendNext();
+}
+
+void RequestQueue::failEverything(ReplyError error, const QString &why)
+{
+    m_timer.stop();
+    m_gapTimer.stop();
+    m_state = State::Idle;
+    m_decoder.reset();
+    m_timeoutRun = 0;
+    QList<QPointer<Reply>> replies;
+    if (m_current)
+        replies += m_current->replies;
+    m_current.reset();
+    for (auto &q : m_queues) {
+        for (const Entry &e : q)
+            replies += e.replies;
+        q.clear();
+    }
+    for (const QPointer<Reply> &r : replies)
+        if (r)
+            r->finish(error, why);
+}
+
+void RequestQueue::lineOpened()
+{
+    m_open = true;
+    m_decoder.reset();
+    sendNext();
+}
+
+void RequestQueue::lineLost(const QString &reason)
+{
+    m_open = false;
+    m_tap.note(QStringLiteral("line lost: ") + reason);
+    failEverything(ReplyError::Disconnected, QStringLiteral("the line was lost: ") + reason);
+}
+
+void RequestQueue::stop(const QString &reason)
+{
+    m_stopped = true;
+    m_open = false;
+    failEverything(ReplyError::Cancelled, reason);
+}
+
+} // namespace tipscope::link

@@ -1,0 +1,142 @@
+// RequestQueue: the one queue every request to a serial line goes through.
+//
+// Contract:
+//  - One request is outstanding at a time. Its answer is the first valid A or N frame with the
+//    same command and the swapped addresses (or none, in the mode without addresses); any other
+//    valid frame is stray: counted, shown on the tap, and dropped, never matched to the wrong
+//    request.
+//  - The answer budget starts when the transport reports the request's last byte written, and is
+//    the wire time of the request and of the longest answer at the line's baud rate (bytesWritten
+//    means "handed to the driver", not "on the wire") plus the device turnaround.
+//  - A timeout, a corrupted answer (BCC or format error) or NAK 00001 (the device saw our frame
+//    garbled) is retried up to `retries` times for reads and for writes marked repeatable; any
+//    other NAK is final and reported with its code and meaning.
+//  - Priorities: writes > user reads > live polling > background. Every write goes into the
+//    write class, first in first out, so writes are never reordered among themselves. A read
+//    identical to one still waiting in the queue joins it instead of being sent twice.
+//  - Deleting a Reply (or the owner it was parented to) before its request is sent withdraws
+//    the request. A lost line fails every pending request with the reason; nothing is dropped
+//    silently. Requests made while the line is closed fail at once with NotOpen.
+#pragma once
+
+#include "frametap.h"
+#include "linkstats.h"
+#include "reply.h"
+
+#include <QElapsedTimer>
+#include <QPointer>
+#include <QTimer>
+#include <array>
+#include <deque>
+#include <optional>
+
+namespace tipscope::link {
+
+class Transport;
+
+enum class Priority { UserWrite = 0, UserRead = 1, LivePoll = 2, Background = 3 };
+
+struct Request {
+    protocol::Header header = protocol::Header::Read;
+    QByteArray command;
+    QByteArray data;
+    std::optional<int> target; // set: addressed frame from the robot address to this device
+    Priority priority = Priority::UserRead;
+    bool repeatable = true; // a write that may be sent again when its answer was lost
+    QByteArray raw;         // when set, sent verbatim (the console's raw frames)
+    std::optional<int> retries; // overrides QueueSettings::retries (discovery probes use fewer)
+
+    [[nodiscard]] static Request read(std::optional<int> target, const QByteArray &command,
+                                      Priority priority = Priority::UserRead);
+    [[nodiscard]] static Request write(std::optional<int> target, const QByteArray &command,
+                                       const QByteArray &data, bool repeatable = true);
+};
+
+struct QueueSettings {
+    int robotAddress = 0;
+    int turnaroundMs = 100;
+    int retries = 2;
+    int interFrameGapMs = 0;
+};
+
+class RequestQueue : public QObject
+{
+    Q_OBJECT
+public:
+    explicit RequestQueue(QObject *parent = nullptr);
+    ~RequestQueue() override;
+
+    void setTransport(Transport *transport); // not owned
+    void setSettings(const QueueSettings &settings) { m_settings = settings; }
+    [[nodiscard]] const QueueSettings &settings() const { return m_settings; }
+
+    // The Reply is parented to `owner` (may be null: then the caller deletes it).
+    Reply *enqueue(const Request &request, QObject *owner);
+
+    void lineOpened();
+    void lineLost(const QString &reason);
+    void stop(const QString &reason);
+
+    [[nodiscard]] int pendingCount() const;
+    [[nodiscard]] bool isOpen() const { return m_open; }
+    [[nodiscard]] const LinkStats &stats() const { return m_stats; }
+    void resetStats() { m_stats = {}; }
+    [[nodiscard]] qint64 nowMs() const { return m_clock.elapsed(); }
+    [[nodiscard]] FrameTap &tap() { return m_tap; }
+    // The answer budget for a frame of `requestBytes`, in ms (exposed for tests and docs).
+    [[nodiscard]] int answerBudgetMs(int requestBytes) const;
+
+Q_SIGNALS:
+    // Consecutive requests that got no answer at all: a hint that the cable is gone.
+    void timeoutStreak(int count);
+    void statsChanged();
+
+private:
+    struct Entry {
+        Request request;
+        protocol::Frame frame; // what the bytes say, for matching
+        bool matchAnything = false;
+        QList<QPointer<Reply>> replies;
+        int attempts = 0;
+        qint64 firstSentUs = 0;
+        qint64 lastSentUs = 0;
+        [[nodiscard]] bool wanted() const;
+    };
+    enum class State { Idle, Writing, Waiting, Gap };
+
+    void sendNext();
+    void transmit();
+    void onBytesWritten(qint64 count);
+    void onReceived(const QByteArray &bytes);
+    void onTimer();
+    void onGapElapsed();
+    void complete(const protocol::Frame &answer);
+    void attemptFailed(ReplyError error, const QString &why);
+    void finishCurrent(ReplyError error, const QString &why, const protocol::Frame &answer = {});
+    void failEverything(ReplyError error, const QString &why);
+    [[nodiscard]] bool canRetry(const Entry &e) const;
+    [[nodiscard]] bool matches(const Entry &e, const protocol::Frame &answer) const;
+    [[nodiscard]] bool tryCoalesce(const Request &r, Reply *reply);
+    static void finishLater(Reply *reply, ReplyError error, const QString &why);
+    [[nodiscard]] qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
+    [[nodiscard]] double wireMs(int bytes) const;
+
+    QPointer<Transport> m_transport;
+    QueueSettings m_settings;
+    std::array<std::deque<Entry>, 4> m_queues;
+    std::optional<Entry> m_current;
+    State m_state = State::Idle;
+    qint64 m_bytesToConfirm = 0;
+    bool m_open = false;
+    bool m_stopped = false;
+    int m_timeoutRun = 0;
+    QTimer m_timer;
+    QTimer m_gapTimer;
+    protocol::FrameDecoder m_decoder;
+    QElapsedTimer m_clock;
+    LinkStats m_stats;
+    FrameTap m_tap;
+    QList<QMetaObject::Connection> m_transportConnections;
+};
+
+} // namespace tipscope::link

@@ -1,0 +1,76 @@
+#include "tcptransport.h"
+
+namespace tipscope::link {
+
+TcpTransport::TcpTransport(const QString &host, quint16 port, int wireBaud, QObject *parent)
+    : Transport(parent)
+    , m_host(host)
+    , m_port(port)
+    , m_baud(wireBaud)
+{
+    m_socket.setSocketOption(QAbstractSocket::LowDelayOption, 1); // short frames, no Nagle delay
+    connect(&m_socket, &QTcpSocket::connected, this, [this] {
+        m_wasConnected = true;
+        Q_EMIT opened();
+    });
+    connect(&m_socket, &QTcpSocket::readyRead, this,
+            [this] { Q_EMIT received(m_socket.readAll()); });
+    connect(&m_socket, &QTcpSocket::bytesWritten, this, &Transport::bytesWritten);
+    connect(&m_socket, &QTcpSocket::errorOccurred, this, [this](QAbstractSocket::SocketError e) {
+        const QString why = m_socket.errorString();
+        if (m_wasConnected) {
+            m_wasConnected = false;
+            m_socket.abort();
+            Q_EMIT disconnected(QStringLiteral("the connection to %1 dropped (%2)")
+                                    .arg(description(), why));
+            return;
+        }
+        const OpenFailure kind =
+            e == QAbstractSocket::HostNotFoundError ? OpenFailure::NotFound : OpenFailure::Other;
+        m_socket.abort();
+        Q_EMIT openFailed(kind, QStringLiteral("cannot connect to %1: %2").arg(description(), why));
+    });
+}
+
+bool TcpTransport::parseHostPort(const QString &text, QString *host, quint16 *port)
+{
+    const int colon = text.lastIndexOf(QLatin1Char(':'));
+    bool ok = false;
+    const int p = text.mid(colon + 1).toInt(&ok);
+    if (colon <= 0 || !ok || p <= 0 || p > 65535)
+        return false;
+    *host = text.left(colon);
+    *port = quint16(p);
+    return true;
+}
+
+void TcpTransport::open()
+{
+    if (m_socket.state() == QAbstractSocket::ConnectedState) {
+        Q_EMIT opened();
+        return;
+    }
+    m_socket.abort();
+    m_socket.connectToHost(m_host, m_port);
+}
+
+void TcpTransport::close()
+{
+    m_wasConnected = false;
+    m_socket.abort();
+}
+
+void TcpTransport::write(const QByteArray &bytes)
+{
+    if (isOpen())
+        m_socket.write(bytes);
+}
+
+bool TcpTransport::isOpen() const { return m_socket.state() == QAbstractSocket::ConnectedState; }
+
+QString TcpTransport::description() const
+{
+    return QStringLiteral("tcp %1:%2").arg(m_host).arg(m_port);
+}
+
+} // namespace tipscope::link
