@@ -1,0 +1,284 @@
+#include "clicommands.h"
+
+#include "protocol/framedecoder.h"
+#include "protocol/hexbytes.h"
+#include "protocol/valuecodec.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace tipscope::cli {
+
+using namespace tipscope::link;
+using namespace tipscope::protocol;
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(CliCommands)
+};
+
+QString unitSuffix(const ResolvedCommand &cmd, const Value &v) {
+    if (v.isText || cmd.spec->special.contains(int(v.number)))
+        return {};
+    const QString unit = wireUnitSymbol(cmd);
+    return unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
+}
+
+QJsonObject deviceJson(const DeviceInfo &d) {
+    return {{QStringLiteral("address"), d.address ? QJsonValue(*d.address) : QJsonValue()},
+            {QStringLiteral("model"), d.model},
+            {QStringLiteral("family"), d.family},
+            {QStringLiteral("softwareVersion"), d.softwareVersion}};
+}
+
+void reportFailure(CliSession &s, const Reply &reply) {
+    s.err() << Tr::tr("tipscope-cli: %1: %2").arg(reply.request().toString(), reply.errorString())
+            << Qt::endl;
+}
+
+} // namespace
+
+QString formatReading(const ResolvedCommand &cmd, const QByteArray &data, bool raw) {
+    const QString code = QString::fromLatin1(cmd.code);
+    if (raw)
+        return code + QLatin1Char(' ') + QString::fromLatin1(data);
+    const auto value = decodeAnswer(cmd, data);
+    if (!value)
+        return Tr::tr("%1 unreadable data field '%2'").arg(code, QString::fromLatin1(data));
+    const QString described = describeValue(cmd, *value);
+    const ValueKind k = cmd.spec->kind;
+    if ((k == ValueKind::Enum || k == ValueKind::Flags) && !value->isText &&
+        !cmd.spec->special.contains(int(value->number)))
+        return QStringLiteral("%1 %2 %3").arg(code).arg(value->number).arg(described);
+    return code + QLatin1Char(' ') + described + unitSuffix(cmd, *value);
+}
+
+int runDetect(CliSession &s) {
+    if (const int rc = s.resolveDevices(); rc != kOk)
+        return rc;
+    if (s.options().flags.contains(QStringLiteral("json"))) {
+        QJsonArray arr;
+        for (const DeviceInfo &d : s.devices())
+            arr.append(deviceJson(d));
+        s.out() << QJsonDocument(arr).toJson(QJsonDocument::Indented);
+        return kOk;
+    }
+    for (const DeviceInfo &d : s.devices())
+        s.out() << d.summary() << Qt::endl;
+    return kOk;
+}
+
+int runRead(CliSession &s) {
+    if (s.options().args.isEmpty()) {
+        s.err() << Tr::tr("tipscope-cli: read needs at least one command code, e.g. read ST1")
+                << Qt::endl;
+        return kUsage;
+    }
+    if (const int rc = s.resolveDevices(); rc != kOk)
+        return rc;
+    int worst = kOk;
+    for (const QString &arg : s.options().args) {
+        const QByteArray code = arg.toUpper().toLatin1();
+        const DeviceInfo *d = s.deviceFor(code, Direction::Read);
+        if (!d) {
+            s.err() << Tr::tr("tipscope-cli: no device here can read '%1'").arg(arg) << Qt::endl;
+            worst = qMax(worst, int(kRefused));
+            continue;
+        }
+        const auto cmd = *Catalog::builtin().resolve(d->family, code, Direction::Read);
+        Reply *reply = s.ask(Request::read(d->address, code));
+        if (!reply->ok()) {
+            reportFailure(s, *reply);
+            worst = qMax(worst, CliSession::exitCodeFor(*reply));
+            continue;
+        }
+        s.out() << formatReading(cmd, reply->answer().data,
+                                 s.options().flags.contains(QStringLiteral("raw")))
+                << Qt::endl;
+    }
+    return worst;
+}
+
+static int verifyWrite(CliSession &s, const DeviceInfo &d, const ResolvedCommand &cmd,
+                       const QByteArray &data) {
+    const auto readCmd = Catalog::builtin().resolve(d.family, cmd.code, Direction::Read);
+    if (!readCmd || cmd.spec->kind == ValueKind::Flags || cmd.spec->kind == ValueKind::Action) {
+        s.out() << Tr::tr("%1 written").arg(QString::fromLatin1(cmd.code)) << Qt::endl;
+        return kOk;
+    }
+    Reply *back = s.ask(Request::read(d.address, cmd.code));
+    if (!back->ok()) {
+        s.err() << Tr::tr("tipscope-cli: %1 was accepted but could not be read back: %2")
+                       .arg(QString::fromLatin1(cmd.code), back->errorString())
+                << Qt::endl;
+        return CliSession::exitCodeFor(*back);
+    }
+    const auto wrote = decodeAnswer(*readCmd, data);
+    const auto now = decodeAnswer(*readCmd, back->answer().data);
+    if (!wrote || !now || !(*wrote == *now)) {
+        s.err() << Tr::tr("tipscope-cli: verification failed: wrote %1, the device reports %2")
+                       .arg(QString::fromLatin1(data), QString::fromLatin1(back->answer().data))
+                << Qt::endl;
+        return kNak;
+    }
+    s.out() << Tr::tr("%1 (verified)").arg(formatReading(*readCmd, back->answer().data, false))
+            << Qt::endl;
+    return kOk;
+}
+
+int runWrite(CliSession &s) {
+    const QStringList &args = s.options().args;
+    const bool raw = s.options().flags.contains(QStringLiteral("raw"));
+    if (args.size() != 2 && !(args.size() == 1 && !raw)) {
+        s.err() << Tr::tr("tipscope-cli: write takes CODE VALUE, e.g. write ST1 350") << Qt::endl;
+        return kUsage;
+    }
+    if (const int rc = s.resolveDevices(); rc != kOk)
+        return rc;
+    const QByteArray code = args.at(0).toUpper().toLatin1();
+    const DeviceInfo *d = s.deviceFor(code, Direction::Write);
+    if (!d) {
+        s.err() << Tr::tr("tipscope-cli: no device here accepts writes of '%1'").arg(args.at(0))
+                << Qt::endl;
+        return kRefused;
+    }
+    const auto cmd = *Catalog::builtin().resolve(d->family, code, Direction::Write);
+    QByteArray data;
+    QString error;
+    if (raw) {
+        data = args.at(1).toLatin1();
+        for (char c : data)
+            if (c < 0x20 || c > 0x7e)
+                error = Tr::tr("the data field must be printable ASCII");
+        if (data.size() > 32)
+            error = Tr::tr("the data field is longer than 32 characters");
+    } else if (cmd.spec->kind == ValueKind::Action && args.size() == 1) {
+        data = cmd.spec->fixedData;
+    } else {
+        const auto value = parseUserValue(cmd, args.value(1), &error);
+        if (value)
+            data = encodeWrite(cmd, *value, &error).value_or(QByteArray());
+    }
+    if (!error.isEmpty()) {
+        s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(error) << Qt::endl;
+        return kRefused;
+    }
+    Reply *reply = s.ask(Request::write(d->address, code, data, !cmd.spec->dangerous));
+    if (!reply->ok()) {
+        reportFailure(s, *reply);
+        return CliSession::exitCodeFor(*reply);
+    }
+    return verifyWrite(s, *d, cmd, data);
+}
+
+int runSend(CliSession &s) {
+    if (s.options().args.isEmpty()) {
+        s.err() << Tr::tr("tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 "
+                          "52 53 4D 4E 03 1E")
+                << Qt::endl;
+        return kUsage;
+    }
+    QString error;
+    const auto bytes = parseHexBytes(s.options().args.join(QLatin1Char(' ')), &error);
+    if (!bytes) {
+        s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(error) << Qt::endl;
+        return kRefused;
+    }
+    Request r;
+    r.raw = *bytes;
+    r.retries = 0;
+    s.out() << "TX " << toHexText(*bytes) << "  " << toAsciiText(*bytes) << Qt::endl;
+    Reply *reply = s.ask(r);
+    if (reply->error() != ReplyError::None && reply->error() != ReplyError::Nak) {
+        reportFailure(s, *reply);
+        return CliSession::exitCodeFor(*reply);
+    }
+    const Frame &a = reply->answer();
+    QString meaning;
+    if (a.header == Header::Nak)
+        meaning = QStringLiteral(" (") + reply->errorString() + QLatin1Char(')');
+    s.out() << "RX " << toHexText(a.encode()) << "  " << a.toString() << meaning << Qt::endl;
+    return CliSession::exitCodeFor(*reply);
+}
+
+int runDump(CliSession &s) {
+    if (const int rc = s.resolveDevices(); rc != kOk)
+        return rc;
+    const bool json = s.options().flags.contains(QStringLiteral("json"));
+    QJsonArray devices;
+    int worst = kOk;
+    for (const DeviceInfo &d : s.devices()) {
+        QJsonArray values;
+        if (!json)
+            s.out() << "# " << d.summary() << Qt::endl;
+        for (const ResolvedCommand &cmd : Catalog::builtin().expand(d.family, Direction::Read)) {
+            Reply *reply = s.ask(Request::read(d.address, cmd.code, Priority::Background));
+            QJsonObject v{{QStringLiteral("code"), QString::fromLatin1(cmd.code)},
+                          {QStringLiteral("name"), cmd.spec->name}};
+            if (reply->ok()) {
+                const QByteArray &data = reply->answer().data;
+                v.insert(QStringLiteral("data"), QString::fromLatin1(data));
+                v.insert(QStringLiteral("text"), formatReading(cmd, data, false));
+                if (!json)
+                    s.out() << qSetFieldWidth(30) << Qt::left << formatReading(cmd, data, false)
+                            << qSetFieldWidth(0) << " # " << cmd.spec->name << Qt::endl;
+            } else {
+                v.insert(QStringLiteral("error"), reply->errorString());
+                worst = qMax(worst, CliSession::exitCodeFor(*reply));
+                if (!json)
+                    s.out() << qSetFieldWidth(30) << Qt::left
+                            << QString::fromLatin1(cmd.code) + QStringLiteral(" ?")
+                            << qSetFieldWidth(0) << " # " << cmd.spec->name << ": "
+                            << reply->errorString() << Qt::endl;
+            }
+            values.append(v);
+        }
+        QJsonObject dev = deviceJson(d);
+        dev.insert(QStringLiteral("values"), values);
+        devices.append(dev);
+    }
+    if (json)
+        s.out() << QJsonDocument(devices).toJson(QJsonDocument::Indented);
+    return worst;
+}
+
+int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err) {
+    const Catalog &cat = Catalog::builtin();
+    const QString family = o.values.value(QStringLiteral("family")).toUpper();
+    if (!family.isEmpty() && !cat.family(family)) {
+        err << Tr::tr("tipscope-cli: unknown family '%1'; known: %2")
+                   .arg(family, cat.familyNames().join(QLatin1String(", ")))
+            << Qt::endl;
+        return kUsage;
+    }
+    for (const CommandSpec &c : cat.commands()) {
+        if (!family.isEmpty() && !c.families.contains(family))
+            continue;
+        const QString access = QString(c.readable ? QStringLiteral("R") : QString()) +
+                               (c.writable ? QStringLiteral("W") : QString());
+        QString range;
+        if (const FamilyInfo *f = cat.family(family.isEmpty() ? c.families.first() : family)) {
+            QByteArray code = c.pattern.toLatin1().replace('x', "1");
+            if (!f->tools.isEmpty())
+                code.replace('y', QByteArray::number(f->tools.first()));
+            if (auto r =
+                    cat.resolve(f->name, code, c.writable ? Direction::Write : Direction::Read);
+                r && c.writable)
+                range = allowedText(*r);
+        }
+        out << qSetFieldWidth(5) << Qt::left << c.pattern << qSetFieldWidth(3) << access
+            << qSetFieldWidth(0) << c.name;
+        if (c.dangerous)
+            out << Tr::tr(" [dangerous]");
+        out << "\n      " << c.description;
+        if (!range.isEmpty())
+            out << "\n      " << Tr::tr("values: %1").arg(range);
+        out << "\n      " << Tr::tr("families: %1").arg(c.families.join(QLatin1Char(' ')))
+            << Qt::endl;
+    }
+    return kOk;
+}
+
+} // namespace tipscope::cli

@@ -1,0 +1,21 @@
+// The commands of tipscope-cli. Each returns the process exit code (see ExitCode) and prints
+// results on standard output, problems on standard error.
+#pragma once
+
+#include "clisession.h"
+
+namespace tipscope::cli {
+
+int runDetect(CliSession &s);
+int runRead(CliSession &s);
+int runWrite(CliSession &s);
+int runSend(CliSession &s);
+int runMonitor(CliSession &s);
+int runDump(CliSession &s);
+int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err);
+
+// "ST1 350 °C", "HD1 1.60 s", "D12 disabled", "CT1 2 T245", "SMN DME-2C".
+[[nodiscard]] QString formatReading(const protocol::ResolvedCommand &cmd, const QByteArray &data,
+                                    bool raw);
+
+} // namespace tipscope::cli

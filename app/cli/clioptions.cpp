@@ -1,0 +1,183 @@
+#include "clioptions.h"
+
+#include "link/tcptransport.h"
+
+namespace tipscope::cli {
+
+namespace {
+
+const QStringList kCommands = {QStringLiteral("detect"),  QStringLiteral("read"),
+                               QStringLiteral("write"),   QStringLiteral("send"),
+                               QStringLiteral("monitor"), QStringLiteral("dump"),
+                               QStringLiteral("commands")};
+// Command options that take a value; all others are flags.
+const QStringList kValueOptions = {QStringLiteral("interval"), QStringLiteral("duration"),
+                                   QStringLiteral("csv"), QStringLiteral("family")};
+const QMap<QString, QStringList> kCommandOptions = {
+    {QStringLiteral("detect"), {QStringLiteral("json"), QStringLiteral("scan")}},
+    {QStringLiteral("read"), {QStringLiteral("raw")}},
+    {QStringLiteral("write"), {QStringLiteral("raw")}},
+    {QStringLiteral("send"), {}},
+    {QStringLiteral("monitor"),
+     {QStringLiteral("interval"), QStringLiteral("duration"), QStringLiteral("csv")}},
+    {QStringLiteral("dump"), {QStringLiteral("json")}},
+    {QStringLiteral("commands"), {QStringLiteral("family")}},
+};
+
+bool parseInt(const QString &text, int lo, int hi, int *out) {
+    bool ok = false;
+    const int v = text.toInt(&ok);
+    if (!ok || v < lo || v > hi)
+        return false;
+    *out = v;
+    return true;
+}
+
+} // namespace
+
+QString CliParser::usage() {
+    return tr("Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]\n"
+              "                    [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | "
+              "--no-addr]\n"
+              "                    [--timeout MS] [--retries N] [--verbose] COMMAND ...\n"
+              "\n"
+              "Commands:\n"
+              "  detect [--json] [--scan]  one line per device: \"<address or --> <model> <family> "
+              "<version>\"\n"
+              "  read CODE... [--raw]      one line per code: \"<CODE> <value> <unit>\"\n"
+              "  write CODE VALUE [--raw]  validate, send, and read back\n"
+              "  send HEX                  send a raw frame; print the answer in hex and decoded\n"
+              "  monitor [--interval MS] [--duration S] [--csv FILE]\n"
+              "                            tip temperature, setpoint, power and status per port\n"
+              "  dump [--json]             every readable parameter, counter and error\n"
+              "  commands [--family F]     the command catalog\n"
+              "\n"
+              "Without --addr or --no-addr the device is found automatically. --demo talks to the\n"
+              "built-in simulated DME station (address 01) and SFR feeder (address 10).\n"
+              "--timeout is the device turnaround added to the wire time of each request.\n"
+              "\n"
+              "Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);\n"
+              "3 the device answered NAK or a read-back differs; 4 no valid answer; 5 transport "
+              "error.\n");
+}
+
+std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString *error) {
+    CliOptions o;
+    o.line.serial.portName.clear();
+    auto fail = [error](const QString &why) -> std::optional<CliOptions> {
+        *error = why;
+        return std::nullopt;
+    };
+    bool haveTransport = false;
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        const QString a = arguments.at(i);
+        const bool isOption = a.startsWith(QLatin1String("--")) && a.size() > 2;
+        if (!isOption) {
+            if (o.command.isEmpty()) {
+                if (!kCommands.contains(a))
+                    return fail(tr("unknown command '%1'").arg(a));
+                o.command = a;
+            } else {
+                o.args.append(a);
+            }
+            continue;
+        }
+        QString name = a.mid(2);
+        QString inlineValue;
+        const bool hasInline = name.contains(QLatin1Char('='));
+        if (hasInline) {
+            inlineValue = name.section(QLatin1Char('='), 1);
+            name = name.section(QLatin1Char('='), 0, 0);
+        }
+        auto takeValue = [&](QString *out) {
+            if (hasInline) {
+                *out = inlineValue;
+                return true;
+            }
+            if (i + 1 >= arguments.size())
+                return false;
+            *out = arguments.at(++i);
+            return true;
+        };
+        QString v;
+        if (name == QLatin1String("help")) {
+            o.showHelp = true;
+        } else if (name == QLatin1String("version")) {
+            o.showVersion = true;
+        } else if (name == QLatin1String("verbose")) {
+            o.verbose = true;
+        } else if (name == QLatin1String("demo")) {
+            if (haveTransport)
+                return fail(tr("give only one of --port, --tcp and --demo"));
+            haveTransport = o.demo = true;
+            o.line.kind = link::LineSettings::Kind::Demo;
+        } else if (name == QLatin1String("port")) {
+            if (haveTransport || !takeValue(&v) || v.isEmpty())
+                return fail(tr("--port takes a device, and only one of --port, --tcp, --demo"));
+            haveTransport = true;
+            o.line.kind = link::LineSettings::Kind::Serial;
+            o.line.serial.portName = v;
+        } else if (name == QLatin1String("tcp")) {
+            if (haveTransport || !takeValue(&v) ||
+                !link::TcpTransport::parseHostPort(v, &o.line.tcpHost, &o.line.tcpPort))
+                return fail(tr("--tcp takes HOST:PORT, and only one of --port, --tcp, --demo"));
+            haveTransport = true;
+            o.line.kind = link::LineSettings::Kind::Tcp;
+        } else if (name == QLatin1String("baud")) {
+            if (!takeValue(&v) || !parseInt(v, 50, 4'000'000, &o.line.serial.baudRate))
+                return fail(tr("--baud takes a rate such as 19200"));
+        } else if (name == QLatin1String("parity")) {
+            static const QMap<QString, QSerialPort::Parity> parities = {
+                {QStringLiteral("none"), QSerialPort::NoParity},
+                {QStringLiteral("even"), QSerialPort::EvenParity},
+                {QStringLiteral("odd"), QSerialPort::OddParity}};
+            if (!takeValue(&v) || !parities.contains(v))
+                return fail(tr("--parity takes none, even or odd"));
+            o.line.serial.parity = parities.value(v);
+        } else if (name == QLatin1String("stop-bits")) {
+            if (!takeValue(&v) || (v != QLatin1String("1") && v != QLatin1String("2")))
+                return fail(tr("--stop-bits takes 1 or 2"));
+            o.line.serial.stopBits =
+                v == QLatin1String("2") ? QSerialPort::TwoStop : QSerialPort::OneStop;
+        } else if (name == QLatin1String("addr")) {
+            int src = 0, tgt = 0;
+            if (!takeValue(&v) || !parseInt(v.section(QLatin1Char(':'), 0, 0), 0, 99, &src) ||
+                !parseInt(v.section(QLatin1Char(':'), 1), 0, 99, &tgt) ||
+                v.count(QLatin1Char(':')) != 1)
+                return fail(tr("--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)"));
+            o.addressing = CliOptions::Addressing::With;
+            o.line.queue.robotAddress = src;
+            o.targetAddress = tgt;
+        } else if (name == QLatin1String("no-addr")) {
+            o.addressing = CliOptions::Addressing::Without;
+        } else if (name == QLatin1String("timeout")) {
+            if (!takeValue(&v) || !parseInt(v, 1, 60'000, &o.line.queue.turnaroundMs))
+                return fail(tr("--timeout takes milliseconds from 1 to 60000"));
+        } else if (name == QLatin1String("retries")) {
+            if (!takeValue(&v) || !parseInt(v, 0, 10, &o.line.queue.retries))
+                return fail(tr("--retries takes a number from 0 to 10"));
+        } else if (!o.command.isEmpty() && kCommandOptions.value(o.command).contains(name)) {
+            if (kValueOptions.contains(name)) {
+                if (!takeValue(&v))
+                    return fail(tr("--%1 needs a value").arg(name));
+                o.values.insert(name, v);
+            } else {
+                if (hasInline)
+                    return fail(tr("--%1 takes no value").arg(name));
+                o.flags.append(name);
+            }
+        } else {
+            return fail(o.command.isEmpty() ? tr("unknown option --%1").arg(name)
+                                            : tr("'%1' has no option --%2").arg(o.command, name));
+        }
+    }
+    if (o.showHelp || o.showVersion)
+        return o;
+    if (o.command.isEmpty())
+        return fail(tr("no command given"));
+    if (!haveTransport && o.command != QLatin1String("commands"))
+        return fail(tr("say where the device is: --port DEVICE, --tcp HOST:PORT or --demo"));
+    return o;
+}
+
+} // namespace tipscope::cli

@@ -1,0 +1,49 @@
+// Command-line parsing for tipscope-cli. Hand-written rather than QCommandLineParser because
+// values are typed the way people write them: `write A12 -50` must not read "-50" as an option,
+// and a command's own options may follow it (`read --raw ST1`, `write LEN --raw 00200`).
+#pragma once
+
+#include "link/line.h"
+
+#include <QCoreApplication>
+#include <QStringList>
+#include <optional>
+
+namespace tipscope::cli {
+
+enum ExitCode {
+    kOk = 0,
+    kUsage = 1,
+    kRefused = 2,
+    kNak = 3,
+    kNoAnswer = 4,
+    kTransport = 5,
+};
+
+struct CliOptions {
+    enum class Addressing { Auto, With, Without };
+
+    link::LineSettings line;
+    bool demo = false;
+    Addressing addressing = Addressing::Auto;
+    int targetAddress = 1;
+    bool verbose = false;
+    bool showHelp = false;
+    bool showVersion = false;
+
+    QString command;
+    QStringList args;              // the command's positional arguments
+    QStringList flags;             // the command's options without values: "raw", "json", "scan"
+    QMap<QString, QString> values; // the command's options with values: interval, csv, ...
+};
+
+class CliParser {
+    Q_DECLARE_TR_FUNCTIONS(CliParser)
+public:
+    // nullopt with `error` set for a usage error.
+    [[nodiscard]] static std::optional<CliOptions> parse(const QStringList &arguments,
+                                                         QString *error);
+    [[nodiscard]] static QString usage();
+};
+
+} // namespace tipscope::cli

@@ -1,0 +1,159 @@
+#include "clisession.h"
+
+#include "sim/simline.h"
+
+#include <QEventLoop>
+#include <cstdio>
+
+namespace tipscope::cli {
+
+using namespace tipscope::link;
+using namespace tipscope::protocol;
+
+CliSession::CliSession(const CliOptions &options)
+    : m_options(options)
+    , m_out(stdout)
+    , m_err(stderr) {
+    LineSettings settings = options.line;
+    if (options.demo) {
+        m_demo = sim::SimLine::demo();
+        m_demo->setClockRunning(true);
+    }
+    auto transport = Line::makeTransport(settings, m_demo.get());
+    m_line = std::make_unique<Line>(std::move(transport), settings);
+    if (options.verbose) {
+        QObject::connect(&m_line->queue().tap(), &FrameTap::event, &m_owner,
+                         [this](const TapEvent &e) {
+                             if (e.kind == TapEvent::Kind::Tx)
+                                 m_err << "TX " << e.bytes.toHex(' ') << Qt::endl;
+                             else if (e.kind == TapEvent::Kind::Rx)
+                                 m_err << "RX " << e.bytes.toHex(' ') << Qt::endl;
+                             else if (e.kind == TapEvent::Kind::Note)
+                                 m_err << "-- " << e.note << Qt::endl;
+                         });
+    }
+}
+
+CliSession::~CliSession() {
+    m_out.flush();
+}
+
+void CliSession::waitForLine() {
+    QEventLoop loop;
+    QObject::connect(m_line.get(), &Line::stateChanged, &loop, [&loop](Line::State s) {
+        if (s != Line::State::Opening)
+            loop.quit();
+    });
+    m_line->open();
+    if (m_line->state() == Line::State::Opening)
+        loop.exec();
+}
+
+int CliSession::open() {
+    waitForLine();
+    if (m_line->state() == Line::State::Open)
+        return kOk;
+    m_err << tr("tipscope-cli: cannot open %1: %2")
+                 .arg(m_line->transport().description(), m_line->lastError())
+          << Qt::endl;
+    return kTransport;
+}
+
+Reply *CliSession::ask(const Request &request) {
+    Reply *reply = m_line->queue().enqueue(request, &m_owner);
+    if (!reply->isFinished()) {
+        QEventLoop loop;
+        QObject::connect(reply, &Reply::finished, &loop, &QEventLoop::quit);
+        loop.exec();
+    }
+    return reply;
+}
+
+int CliSession::exitCodeFor(const Reply &reply) {
+    switch (reply.error()) {
+    case ReplyError::None:
+        return kOk;
+    case ReplyError::Nak:
+        return kNak;
+    case ReplyError::Timeout:
+    case ReplyError::Corrupted:
+        return kNoAnswer;
+    case ReplyError::Disconnected:
+    case ReplyError::NotOpen:
+    case ReplyError::Cancelled:
+        return kTransport;
+    }
+    return kTransport;
+}
+
+int CliSession::identify(std::optional<int> address) {
+    Reply *smn = ask(Request::read(address, "SMN"));
+    if (!smn->ok()) {
+        m_err << tr("tipscope-cli: the device %1 did not identify itself (R-SMN): %2")
+                     .arg(address ? QString::number(*address) : tr("without addresses"),
+                          smn->errorString())
+              << Qt::endl;
+        return exitCodeFor(*smn) == kOk ? kNoAnswer : exitCodeFor(*smn);
+    }
+    DeviceInfo d;
+    d.address = address;
+    d.model = QString::fromLatin1(smn->answer().data).trimmed();
+    d.family = Catalog::builtin().familyForModel(d.model);
+    if (d.family.isEmpty()) {
+        m_err << tr("tipscope-cli: unknown device model '%1'").arg(d.model) << Qt::endl;
+        return kNoAnswer;
+    }
+    if (Catalog::builtin().resolve(d.family, "SVR", Direction::Read)) {
+        Reply *svr = ask(Request::read(address, "SVR"));
+        if (svr->ok())
+            d.softwareVersion = QString::fromLatin1(svr->answer().data).trimmed();
+    }
+    m_devices = {d};
+    return kOk;
+}
+
+int CliSession::resolveDevices() {
+    if (m_options.addressing == CliOptions::Addressing::With)
+        return identify(m_options.targetAddress);
+    if (m_options.addressing == CliOptions::Addressing::Without)
+        return identify(std::nullopt);
+    Discovery discovery(m_line->queue());
+    QEventLoop loop;
+    QObject::connect(&discovery, &Discovery::finished, &loop, &QEventLoop::quit);
+    discovery.setScanAllAddresses(m_options.flags.contains(QStringLiteral("scan")));
+    discovery.start();
+    if (discovery.isRunning())
+        loop.exec();
+    m_devices.clear();
+    for (const DeviceInfo &d : discovery.devices())
+        if (!d.family.isEmpty())
+            m_devices.append(d);
+    if (!m_devices.isEmpty())
+        return kOk;
+    if (m_line->state() != Line::State::Open) {
+        m_err << tr("tipscope-cli: the line was lost: %1").arg(m_line->lastError()) << Qt::endl;
+        return kTransport;
+    }
+    m_err << tr("tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and "
+                "frames without addresses). Check the cable, the baud rate, and that robot mode "
+                "is on.")
+                 .arg(m_line->transport().description())
+          << Qt::endl;
+    return kNoAnswer;
+}
+
+const DeviceInfo *CliSession::deviceFor(const QByteArray &code, Direction direction) const {
+    for (const DeviceInfo &d : m_devices)
+        if (Catalog::builtin().resolve(d.family, code, direction))
+            return &d;
+    return nullptr;
+}
+
+const DeviceInfo *CliSession::firstStation() const {
+    for (const DeviceInfo &d : m_devices)
+        if (const FamilyInfo *f = Catalog::builtin().family(d.family); f && !f->isFeeder())
+            return &d;
+    return nullptr;
+}
+
+} // namespace tipscope::cli

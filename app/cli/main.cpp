@@ -1,0 +1,49 @@
+// tipscope-cli: the command-line face of TipScope, for technicians' scripts and for testing the
+// whole stack without a window.
+#include "clicommands.h"
+
+#include <QCoreApplication>
+
+using namespace tipscope::cli;
+
+int main(int argc, char *argv[]) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("tipscope-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(TIPSCOPE_VERSION));
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    QString error;
+    const auto options = CliParser::parse(app.arguments(), &error);
+    if (!options) {
+        err << "tipscope-cli: " << error << "\n\n" << CliParser::usage();
+        return kUsage;
+    }
+    if (options->showHelp) {
+        out << CliParser::usage();
+        return kOk;
+    }
+    if (options->showVersion) {
+        out << "tipscope-cli " << QCoreApplication::applicationVersion() << Qt::endl;
+        return kOk;
+    }
+    if (options->command == QLatin1String("commands"))
+        return runCommands(*options, out, err);
+
+    CliSession session(*options);
+    if (const int rc = session.open(); rc != kOk)
+        return rc;
+    const QString &c = options->command;
+    if (c == QLatin1String("detect"))
+        return runDetect(session);
+    if (c == QLatin1String("read"))
+        return runRead(session);
+    if (c == QLatin1String("write"))
+        return runWrite(session);
+    if (c == QLatin1String("send"))
+        return runSend(session);
+    if (c == QLatin1String("monitor"))
+        return runMonitor(session);
+    if (c == QLatin1String("dump"))
+        return runDump(session);
+    return kUsage;
+}
