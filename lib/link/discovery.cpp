@@ -9,14 +9,12 @@ namespace tipscope::link {
 
 using namespace tipscope::protocol;
 
-QString DeviceInfo::addressText() const
-{
+QString DeviceInfo::addressText() const {
     return address ? QStringLiteral("%1").arg(*address, 2, 10, QLatin1Char('0'))
                    : QStringLiteral("--");
 }
 
-QString DeviceInfo::summary() const
-{
+QString DeviceInfo::summary() const {
     return QStringLiteral("%1 %2 %3 %4")
         .arg(addressText(), model, family.isEmpty() ? QStringLiteral("unknown") : family,
              softwareVersion.isEmpty() ? QStringLiteral("-") : softwareVersion);
@@ -24,12 +22,9 @@ QString DeviceInfo::summary() const
 
 Discovery::Discovery(RequestQueue &queue, QObject *parent)
     : QObject(parent)
-    , m_queue(queue)
-{
-}
+    , m_queue(queue) {}
 
-void Discovery::start()
-{
+void Discovery::start() {
     const Catalog &cat = Catalog::builtin();
     QList<std::optional<int>> probes;
     if (m_mode != Mode::Unaddressed) {
@@ -53,10 +48,10 @@ void Discovery::start()
         probe(probes[i], i);
 }
 
-void Discovery::probe(std::optional<int> address, int slot)
-{
+void Discovery::probe(std::optional<int> address, int slot) {
     Request r = Request::read(address, "SMN", Priority::UserRead);
     r.retries = 1; // an absent device costs one timeout more, a noisy line still finds devices
+    r.probe = true;
     Reply *reply = m_queue.enqueue(r, this);
     ++m_outstanding;
     connect(reply, &Reply::finished, this, [this, reply, address, slot] {
@@ -81,8 +76,7 @@ void Discovery::probe(std::optional<int> address, int slot)
     });
 }
 
-void Discovery::identify(int slot)
-{
+void Discovery::identify(int slot) {
     Reply *reply = m_queue.enqueue(Request::read(m_found[slot]->address, "SVR"), this);
     ++m_outstanding;
     connect(reply, &Reply::finished, this, [this, reply, slot] {
@@ -93,8 +87,7 @@ void Discovery::identify(int slot)
     });
 }
 
-void Discovery::settle()
-{
+void Discovery::settle() {
     if (--m_outstanding > 0)
         return;
     for (const auto &d : m_found)
@@ -103,8 +96,7 @@ void Discovery::settle()
     Q_EMIT finished();
 }
 
-QList<DeviceInfo> Discovery::devices() const
-{
+QList<DeviceInfo> Discovery::devices() const {
     QList<DeviceInfo> out;
     for (const auto &d : m_found)
         if (d)

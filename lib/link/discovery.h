@@ -27,8 +27,7 @@ struct DeviceInfo {
     [[nodiscard]] QString summary() const;     // "01 DME-2C DME 9996780"
 };
 
-class Discovery : public QObject
-{
+class Discovery : public QObject {
     Q_OBJECT
 public:
     enum class Mode { Auto, Addressed, Unaddressed };

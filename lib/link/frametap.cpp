@@ -6,8 +6,7 @@
 
 namespace tipscope::link {
 
-static qint64 monotonicUs()
-{
+static qint64 monotonicUs() {
     static QElapsedTimer clock = [] {
         QElapsedTimer t;
         t.start();
@@ -16,8 +15,7 @@ static qint64 monotonicUs()
     return clock.nsecsElapsed() / 1000;
 }
 
-void FrameTap::emitEvent(TapEvent e)
-{
+void FrameTap::emitEvent(TapEvent e) {
     if (!isSignalConnected(QMetaMethod::fromSignal(&FrameTap::event)))
         return; // nobody watches: keep the hot path free
     e.wallMs = QDateTime::currentMSecsSinceEpoch();
@@ -25,24 +23,21 @@ void FrameTap::emitEvent(TapEvent e)
     Q_EMIT event(e);
 }
 
-void FrameTap::tx(const QByteArray &bytes)
-{
+void FrameTap::tx(const QByteArray &bytes) {
     TapEvent e;
     e.kind = TapEvent::Kind::Tx;
     e.bytes = bytes;
     emitEvent(std::move(e));
 }
 
-void FrameTap::rx(const QByteArray &bytes)
-{
+void FrameTap::rx(const QByteArray &bytes) {
     TapEvent e;
     e.kind = TapEvent::Kind::Rx;
     e.bytes = bytes;
     emitEvent(std::move(e));
 }
 
-void FrameTap::decoded(const protocol::DecodeEvent &event, bool stray)
-{
+void FrameTap::decoded(const protocol::DecodeEvent &event, bool stray) {
     TapEvent e;
     e.kind = TapEvent::Kind::Decoded;
     e.decoded = event;
@@ -50,8 +45,7 @@ void FrameTap::decoded(const protocol::DecodeEvent &event, bool stray)
     emitEvent(std::move(e));
 }
 
-void FrameTap::note(const QString &text)
-{
+void FrameTap::note(const QString &text) {
     TapEvent e;
     e.kind = TapEvent::Kind::Note;
     e.note = text;

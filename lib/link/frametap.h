@@ -22,8 +22,7 @@ struct TapEvent {
     QString note;       // Note: line state changes, timeouts
 };
 
-class FrameTap : public QObject
-{
+class FrameTap : public QObject {
     Q_OBJECT
 public:
     using QObject::QObject;

@@ -8,8 +8,7 @@ namespace tipscope::link {
 Line::Line(std::unique_ptr<Transport> transport, const LineSettings &settings, QObject *parent)
     : QObject(parent)
     , m_transport(std::move(transport))
-    , m_settings(settings)
-{
+    , m_settings(settings) {
     m_queue.setSettings(settings.queue);
     m_queue.setTransport(m_transport.get());
     m_retryTimer.setSingleShot(true);
@@ -20,14 +19,12 @@ Line::Line(std::unique_ptr<Transport> transport, const LineSettings &settings, Q
     connect(&m_queue, &RequestQueue::timeoutStreak, this, &Line::onTimeoutStreak);
 }
 
-Line::~Line()
-{
+Line::~Line() {
     m_queue.stop(QStringLiteral("the line was closed"));
     m_transport->close();
 }
 
-std::unique_ptr<Transport> Line::makeTransport(const LineSettings &s, sim::SimLine *demoLine)
-{
+std::unique_ptr<Transport> Line::makeTransport(const LineSettings &s, sim::SimLine *demoLine) {
     switch (s.kind) {
     case LineSettings::Kind::Serial:
         return std::make_unique<SerialTransport>(s.serial);
@@ -40,8 +37,7 @@ std::unique_ptr<Transport> Line::makeTransport(const LineSettings &s, sim::SimLi
     return nullptr;
 }
 
-QString Line::stateText() const
-{
+QString Line::stateText() const {
     switch (m_state) {
     case State::Closed:
         return tr("disconnected");
@@ -59,30 +55,26 @@ QString Line::stateText() const
     return {};
 }
 
-void Line::setState(State s, const QString &detail)
-{
+void Line::setState(State s, const QString &detail) {
     m_state = s;
     m_queue.tap().note(stateText());
     Q_EMIT stateChanged(s, detail);
 }
 
-void Line::open()
-{
+void Line::open() {
     m_retryTimer.stop();
     setState(State::Opening, m_transport->description());
     m_transport->open();
 }
 
-void Line::close()
-{
+void Line::close() {
     m_retryTimer.stop();
     m_transport->close();
     m_queue.lineLost(tr("disconnected by the user"));
     setState(State::Closed, {});
 }
 
-void Line::onOpened()
-{
+void Line::onOpened() {
     if (m_everOpened)
         ++m_reconnects;
     m_everOpened = true;
@@ -91,8 +83,7 @@ void Line::onOpened()
     setState(State::Open, m_transport->description());
 }
 
-void Line::onOpenFailed(OpenFailure kind, const QString &reason)
-{
+void Line::onOpenFailed(OpenFailure kind, const QString &reason) {
     m_lastError = reason;
     m_lastFailure = kind;
     if (m_state == State::Closed)
@@ -105,16 +96,14 @@ void Line::onOpenFailed(OpenFailure kind, const QString &reason)
     setState(State::Failed, reason);
 }
 
-void Line::onLost(const QString &reason)
-{
+void Line::onLost(const QString &reason) {
     m_lastError = reason;
     m_queue.lineLost(reason);
     setState(State::Retrying, reason);
     m_retryTimer.start(m_settings.reconnectIntervalMs);
 }
 
-void Line::onTimeoutStreak(int count)
-{
+void Line::onTimeoutStreak(int count) {
     if (m_settings.suspectAfterTimeouts <= 0 || count < m_settings.suspectAfterTimeouts ||
         m_state != State::Open)
         return;

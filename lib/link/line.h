@@ -34,8 +34,7 @@ struct LineSettings {
     bool retryInitialOpen = false;
 };
 
-class Line : public QObject
-{
+class Line : public QObject {
     Q_OBJECT
 public:
     enum class State { Closed, Opening, Open, Retrying, Failed };

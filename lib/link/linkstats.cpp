@@ -9,8 +9,7 @@ namespace {
 constexpr qint64 kRateWindowMs = 5000;
 }
 
-void LinkStats::recordAnswer(qint64 latencyUs, qint64 nowMs)
-{
+void LinkStats::recordAnswer(qint64 latencyUs, qint64 nowMs) {
     ++answered;
     if (recentLatencyUs.empty() && answered == 1) {
         minLatencyUs = maxLatencyUs = latencyUs;
@@ -26,8 +25,7 @@ void LinkStats::recordAnswer(qint64 latencyUs, qint64 nowMs)
         recentAnswerMs.pop_front();
 }
 
-qint64 LinkStats::percentileLatencyUs(double p) const
-{
+qint64 LinkStats::percentileLatencyUs(double p) const {
     if (recentLatencyUs.empty())
         return 0;
     std::vector<qint64> v(recentLatencyUs.begin(), recentLatencyUs.end());
@@ -36,26 +34,25 @@ qint64 LinkStats::percentileLatencyUs(double p) const
     return v[k];
 }
 
-qint64 LinkStats::medianLatencyUs() const { return percentileLatencyUs(0.5); }
+qint64 LinkStats::medianLatencyUs() const {
+    return percentileLatencyUs(0.5);
+}
 
-double LinkStats::transactionsPerSecond(qint64 nowMs) const
-{
+double LinkStats::transactionsPerSecond(qint64 nowMs) const {
     const auto first = std::find_if(recentAnswerMs.begin(), recentAnswerMs.end(),
                                     [nowMs](qint64 t) { return t >= nowMs - kRateWindowMs; });
     const auto n = std::distance(first, recentAnswerMs.end());
     return double(n) * 1000.0 / double(kRateWindowMs);
 }
 
-qint64 LinkStats::nakTotal() const
-{
+qint64 LinkStats::nakTotal() const {
     qint64 n = 0;
     for (qint64 v : naks)
         n += v;
     return n;
 }
 
-QString LinkStats::summary(qint64 nowMs) const
-{
+QString LinkStats::summary(qint64 nowMs) const {
     return QStringLiteral("%1 tx/s, latency %2 ms median (%3-%4), %5 sent, %6 answered, "
                           "%7 timeouts, %8 corrupted, %9 NAKs, %10 stray, %11 retries")
         .arg(transactionsPerSecond(nowMs), 0, 'f', 1)

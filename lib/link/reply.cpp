@@ -2,8 +2,7 @@
 
 namespace tipscope::link {
 
-QString replyErrorName(ReplyError e)
-{
+QString replyErrorName(ReplyError e) {
     switch (e) {
     case ReplyError::None:
         return QStringLiteral("ok");
@@ -25,12 +24,9 @@ QString replyErrorName(ReplyError e)
 
 Reply::Reply(const protocol::Frame &request, QObject *parent)
     : QObject(parent)
-    , m_request(request)
-{
-}
+    , m_request(request) {}
 
-void Reply::finish(ReplyError error, const QString &why)
-{
+void Reply::finish(ReplyError error, const QString &why) {
     if (m_finished)
         return;
     m_finished = true;

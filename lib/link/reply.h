@@ -23,8 +23,7 @@ enum class ReplyError {
 
 [[nodiscard]] QString replyErrorName(ReplyError e);
 
-class Reply : public QObject
-{
+class Reply : public QObject {
     Q_OBJECT
 public:
     explicit Reply(const protocol::Frame &request, QObject *parent = nullptr);

@@ -17,8 +17,7 @@ constexpr int kWriteWatchdogMs = 1000;
 constexpr int kNakBcc = 1;
 } // namespace
 
-Request Request::read(std::optional<int> target, const QByteArray &command, Priority priority)
-{
+Request Request::read(std::optional<int> target, const QByteArray &command, Priority priority) {
     Request r;
     r.header = Header::Read;
     r.command = command;
@@ -27,9 +26,8 @@ Request Request::read(std::optional<int> target, const QByteArray &command, Prio
     return r;
 }
 
-Request Request::write(std::optional<int> target, const QByteArray &command,
-                       const QByteArray &data, bool repeatable)
-{
+Request Request::write(std::optional<int> target, const QByteArray &command, const QByteArray &data,
+                       bool repeatable) {
     Request r;
     r.header = Header::Write;
     r.command = command;
@@ -40,8 +38,7 @@ Request Request::write(std::optional<int> target, const QByteArray &command,
     return r;
 }
 
-bool RequestQueue::Entry::wanted() const
-{
+bool RequestQueue::Entry::wanted() const {
     for (const auto &r : replies)
         if (r && !r->isFinished())
             return true;
@@ -49,8 +46,7 @@ bool RequestQueue::Entry::wanted() const
 }
 
 RequestQueue::RequestQueue(QObject *parent)
-    : QObject(parent)
-{
+    : QObject(parent) {
     m_clock.start();
     m_timer.setSingleShot(true);
     m_timer.setTimerType(Qt::PreciseTimer);
@@ -60,13 +56,11 @@ RequestQueue::RequestQueue(QObject *parent)
     connect(&m_gapTimer, &QTimer::timeout, this, &RequestQueue::onGapElapsed);
 }
 
-RequestQueue::~RequestQueue()
-{
+RequestQueue::~RequestQueue() {
     stop(QStringLiteral("the connection was closed"));
 }
 
-void RequestQueue::setTransport(Transport *transport)
-{
+void RequestQueue::setTransport(Transport *transport) {
     for (const auto &c : m_transportConnections)
         disconnect(c);
     m_transportConnections.clear();
@@ -79,26 +73,22 @@ void RequestQueue::setTransport(Transport *transport)
     };
 }
 
-double RequestQueue::wireMs(int bytes) const
-{
+double RequestQueue::wireMs(int bytes) const {
     const int baud = m_transport ? qMax(1, m_transport->baudRate()) : 19200;
     return bytes * 10.0 * 1000.0 / baud;
 }
 
-int RequestQueue::answerBudgetMs(int requestBytes) const
-{
+int RequestQueue::answerBudgetMs(int requestBytes) const {
     return int(qCeil(wireMs(requestBytes) + wireMs(requestBytes + kLongestAnswerExtra))) +
            m_settings.turnaroundMs;
 }
 
-void RequestQueue::finishLater(Reply *reply, ReplyError error, const QString &why)
-{
+void RequestQueue::finishLater(Reply *reply, ReplyError error, const QString &why) {
     // The caller connects to finished() after enqueue() returns; finishing now would be unseen.
     QTimer::singleShot(0, reply, [reply, error, why] { reply->finish(error, why); });
 }
 
-Reply *RequestQueue::enqueue(const Request &request, QObject *owner)
-{
+Reply *RequestQueue::enqueue(const Request &request, QObject *owner) {
     Frame frame;
     if (request.raw.isEmpty()) {
         frame.header = request.header;
@@ -136,8 +126,7 @@ Reply *RequestQueue::enqueue(const Request &request, QObject *owner)
     return reply;
 }
 
-bool RequestQueue::tryCoalesce(const Request &r, Reply *reply)
-{
+bool RequestQueue::tryCoalesce(const Request &r, Reply *reply) {
     if (r.header != Header::Read || !r.raw.isEmpty())
         return false;
     for (size_t p = 0; p < m_queues.size(); ++p) {
@@ -161,16 +150,14 @@ bool RequestQueue::tryCoalesce(const Request &r, Reply *reply)
     return false;
 }
 
-int RequestQueue::pendingCount() const
-{
+int RequestQueue::pendingCount() const {
     int n = m_current ? 1 : 0;
     for (const auto &q : m_queues)
         n += int(q.size());
     return n;
 }
 
-void RequestQueue::sendNext()
-{
+void RequestQueue::sendNext() {
     if (m_state != State::Idle || !m_open || !m_transport || m_current)
         return;
     for (auto &q : m_queues) {
@@ -188,8 +175,7 @@ void RequestQueue::sendNext()
     }
 }
 
-void RequestQueue::transmit()
-{
+void RequestQueue::transmit() {
     Entry &e = *m_current;
     const QByteArray bytes = e.request.raw.isEmpty() ? e.frame.encode() : e.request.raw;
     if (m_decoder.pendingBytes() > 0) {
@@ -211,8 +197,7 @@ void RequestQueue::transmit()
     m_transport->write(bytes);
 }
 
-void RequestQueue::onBytesWritten(qint64 count)
-{
+void RequestQueue::onBytesWritten(qint64 count) {
     if (m_state != State::Writing)
         return;
     m_bytesToConfirm -= count;
@@ -224,8 +209,7 @@ void RequestQueue::onBytesWritten(qint64 count)
     m_timer.start(answerBudgetMs(requestBytes));
 }
 
-bool RequestQueue::matches(const Entry &e, const Frame &a) const
-{
+bool RequestQueue::matches(const Entry &e, const Frame &a) const {
     if (e.matchAnything)
         return true;
     if (a.header != Header::Answer && a.header != Header::Nak)
@@ -237,12 +221,10 @@ bool RequestQueue::matches(const Entry &e, const Frame &a) const
     return !a.isAddressed();
 }
 
-void RequestQueue::onReceived(const QByteArray &bytes)
-{
+void RequestQueue::onReceived(const QByteArray &bytes) {
     m_tap.rx(bytes);
     for (const DecodeEvent &ev : m_decoder.feed(bytes)) {
-        const bool waiting =
-            m_current && (m_state == State::Writing || m_state == State::Waiting);
+        const bool waiting = m_current && (m_state == State::Writing || m_state == State::Waiting);
         switch (ev.kind) {
         case DecodeEvent::Kind::Frame:
             if (waiting && matches(*m_current, ev.frame)) {
@@ -269,8 +251,7 @@ void RequestQueue::onReceived(const QByteArray &bytes)
     Q_EMIT statsChanged();
 }
 
-void RequestQueue::onTimer()
-{
+void RequestQueue::onTimer() {
     if (!m_current)
         return;
     if (m_state == State::Writing) {
@@ -281,8 +262,7 @@ void RequestQueue::onTimer()
         attemptFailed(ReplyError::Timeout, QStringLiteral("no answer"));
 }
 
-void RequestQueue::complete(const Frame &answer)
-{
+void RequestQueue::complete(const Frame &answer) {
     m_timer.stop();
     m_timeoutRun = 0;
     Entry &e = *m_current;
@@ -305,20 +285,20 @@ void RequestQueue::complete(const Frame &answer)
     finishCurrent(ReplyError::None, {}, answer);
 }
 
-bool RequestQueue::canRetry(const Entry &e) const
-{
+bool RequestQueue::canRetry(const Entry &e) const {
     const bool safe = e.request.header == Header::Read || e.request.repeatable;
     return safe && e.attempts <= e.request.retries.value_or(m_settings.retries) && e.wanted();
 }
 
-void RequestQueue::attemptFailed(ReplyError error, const QString &why)
-{
+void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
     m_timer.stop();
     Entry &e = *m_current;
     if (error == ReplyError::Timeout) {
         ++m_stats.timeouts;
-        ++m_timeoutRun;
-        m_tap.note(QStringLiteral("%1: %2 (attempt %3)").arg(e.frame.toString(), why).arg(e.attempts));
+        if (!e.request.probe)
+            ++m_timeoutRun;
+        m_tap.note(
+            QStringLiteral("%1: %2 (attempt %3)").arg(e.frame.toString(), why).arg(e.attempts));
     }
     const int run = m_timeoutRun;
     if (canRetry(e)) {
@@ -334,8 +314,7 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why)
         Q_EMIT timeoutStreak(run);
 }
 
-void RequestQueue::finishCurrent(ReplyError error, const QString &why, const Frame &answer)
-{
+void RequestQueue::finishCurrent(ReplyError error, const QString &why, const Frame &answer) {
     Entry e = std::move(*m_current);
     m_current.reset();
     m_state = State::Gap;
@@ -352,8 +331,7 @@ void RequestQueue::finishCurrent(ReplyError error, const QString &why, const Fra
     }
 }
 
-void RequestQueue::onGapElapsed()
-{
+void RequestQueue::onGapElapsed() {
     if (m_current) {
         if (m_open && m_transport)
             transmit();
@@ -363,8 +341,7 @@ void RequestQueue::onGapElapsed()
     sendNext();
 }
 
-void RequestQueue::failEverything(ReplyError error, const QString &why)
-{
+void RequestQueue::failEverything(ReplyError error, const QString &why) {
     m_timer.stop();
     m_gapTimer.stop();
     m_state = State::Idle;
@@ -384,22 +361,19 @@ void RequestQueue::failEverything(ReplyError error, const QString &why)
             r->finish(error, why);
 }
 
-void RequestQueue::lineOpened()
-{
+void RequestQueue::lineOpened() {
     m_open = true;
     m_decoder.reset();
     sendNext();
 }
 
-void RequestQueue::lineLost(const QString &reason)
-{
+void RequestQueue::lineLost(const QString &reason) {
     m_open = false;
     m_tap.note(QStringLiteral("line lost: ") + reason);
     failEverything(ReplyError::Disconnected, QStringLiteral("the line was lost: ") + reason);
 }
 
-void RequestQueue::stop(const QString &reason)
-{
+void RequestQueue::stop(const QString &reason) {
     m_stopped = true;
     m_open = false;
     failEverything(ReplyError::Cancelled, reason);

@@ -42,9 +42,10 @@ struct Request {
     QByteArray data;
     std::optional<int> target; // set: addressed frame from the robot address to this device
     Priority priority = Priority::UserRead;
-    bool repeatable = true; // a write that may be sent again when its answer was lost
-    QByteArray raw;         // when set, sent verbatim (the console's raw frames)
+    bool repeatable = true;     // a write that may be sent again when its answer was lost
+    QByteArray raw;             // when set, sent verbatim (the console's raw frames)
     std::optional<int> retries; // overrides QueueSettings::retries (discovery probes use fewer)
+    bool probe = false; // silence is a normal answer (discovery): not counted towards a lost line
 
     [[nodiscard]] static Request read(std::optional<int> target, const QByteArray &command,
                                       Priority priority = Priority::UserRead);
@@ -59,8 +60,7 @@ struct QueueSettings {
     int interFrameGapMs = 0;
 };
 
-class RequestQueue : public QObject
-{
+class RequestQueue : public QObject {
     Q_OBJECT
 public:
     explicit RequestQueue(QObject *parent = nullptr);

@@ -4,8 +4,7 @@
 
 namespace tipscope::link {
 
-QString SerialSettings::frameFormat() const
-{
+QString SerialSettings::frameFormat() const {
     const char parityChar = parity == QSerialPort::EvenParity  ? 'E'
                             : parity == QSerialPort::OddParity ? 'O'
                             : parity == QSerialPort::NoParity  ? 'N'
@@ -18,24 +17,21 @@ QString SerialSettings::frameFormat() const
 
 SerialTransport::SerialTransport(const SerialSettings &settings, QObject *parent)
     : Transport(parent)
-    , m_settings(settings)
-{
+    , m_settings(settings) {
     m_port.setPortName(settings.portName);
     connect(&m_port, &QSerialPort::readyRead, this, [this] { Q_EMIT received(m_port.readAll()); });
     connect(&m_port, &QSerialPort::bytesWritten, this, &Transport::bytesWritten);
     connect(&m_port, &QSerialPort::errorOccurred, this, &SerialTransport::onError);
 }
 
-QString SerialTransport::description() const
-{
+QString SerialTransport::description() const {
     return QStringLiteral("%1 %2 %3")
         .arg(m_settings.portName)
         .arg(m_settings.baudRate)
         .arg(m_settings.frameFormat());
 }
 
-void SerialTransport::open()
-{
+void SerialTransport::open() {
     if (m_port.isOpen()) {
         Q_EMIT opened();
         return;
@@ -60,20 +56,17 @@ void SerialTransport::open()
     Q_EMIT opened();
 }
 
-void SerialTransport::close()
-{
+void SerialTransport::close() {
     if (m_port.isOpen())
         m_port.close();
 }
 
-void SerialTransport::write(const QByteArray &bytes)
-{
+void SerialTransport::write(const QByteArray &bytes) {
     if (m_port.isOpen())
         m_port.write(bytes);
 }
 
-void SerialTransport::onError(QSerialPort::SerialPortError error)
-{
+void SerialTransport::onError(QSerialPort::SerialPortError error) {
     if (!m_port.isOpen())
         return; // open() reports its own failures
     switch (error) {
@@ -90,8 +83,7 @@ void SerialTransport::onError(QSerialPort::SerialPortError error)
     }
 }
 
-void SerialTransport::lose(const QString &reason)
-{
+void SerialTransport::lose(const QString &reason) {
     m_port.clearError();
     m_port.close();
     Q_EMIT disconnected(reason);

@@ -23,8 +23,7 @@ struct SerialSettings {
     [[nodiscard]] QString frameFormat() const; // "8N1"
 };
 
-class SerialTransport : public Transport
-{
+class SerialTransport : public Transport {
     Q_OBJECT
 public:
     explicit SerialTransport(const SerialSettings &settings, QObject *parent = nullptr);

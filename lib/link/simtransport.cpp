@@ -8,8 +8,7 @@ namespace tipscope::link {
 
 SimTransport::SimTransport(sim::SimLine &line, QObject *parent)
     : Transport(parent)
-    , m_line(line)
-{
+    , m_line(line) {
     connect(&m_line, &sim::SimLine::transmit, this, [this](const QByteArray &bytes) {
         if (m_open)
             QTimer::singleShot(0, this, [this, bytes] {
@@ -19,8 +18,7 @@ SimTransport::SimTransport(sim::SimLine &line, QObject *parent)
     });
 }
 
-void SimTransport::open()
-{
+void SimTransport::open() {
     QTimer::singleShot(0, this, [this] {
         if (!m_plugged) {
             Q_EMIT openFailed(OpenFailure::NotFound,
@@ -32,10 +30,11 @@ void SimTransport::open()
     });
 }
 
-void SimTransport::close() { m_open = false; }
+void SimTransport::close() {
+    m_open = false;
+}
 
-void SimTransport::write(const QByteArray &bytes)
-{
+void SimTransport::write(const QByteArray &bytes) {
     if (!m_open)
         return;
     QTimer::singleShot(0, this, [this, bytes] {
@@ -46,18 +45,18 @@ void SimTransport::write(const QByteArray &bytes)
     });
 }
 
-QString SimTransport::description() const
-{
+QString SimTransport::description() const {
     QStringList names;
     for (const auto *d : m_line.devices())
         names.append(d->family().name);
     return QStringLiteral("demo (simulated %1)").arg(names.join(QLatin1String(" + ")));
 }
 
-int SimTransport::baudRate() const { return m_line.baud() > 0 ? m_line.baud() : 19200; }
+int SimTransport::baudRate() const {
+    return m_line.baud() > 0 ? m_line.baud() : 19200;
+}
 
-void SimTransport::setPlugged(bool plugged)
-{
+void SimTransport::setPlugged(bool plugged) {
     m_plugged = plugged;
     if (!plugged && m_open) {
         m_open = false;

@@ -13,8 +13,7 @@ class SimLine;
 
 namespace tipscope::link {
 
-class SimTransport : public Transport
-{
+class SimTransport : public Transport {
     Q_OBJECT
 public:
     // The line must outlive the transport.

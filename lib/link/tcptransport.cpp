@@ -6,8 +6,7 @@ TcpTransport::TcpTransport(const QString &host, quint16 port, int wireBaud, QObj
     : Transport(parent)
     , m_host(host)
     , m_port(port)
-    , m_baud(wireBaud)
-{
+    , m_baud(wireBaud) {
     m_socket.setSocketOption(QAbstractSocket::LowDelayOption, 1); // short frames, no Nagle delay
     connect(&m_socket, &QTcpSocket::connected, this, [this] {
         m_wasConnected = true;
@@ -21,8 +20,8 @@ TcpTransport::TcpTransport(const QString &host, quint16 port, int wireBaud, QObj
         if (m_wasConnected) {
             m_wasConnected = false;
             m_socket.abort();
-            Q_EMIT disconnected(QStringLiteral("the connection to %1 dropped (%2)")
-                                    .arg(description(), why));
+            Q_EMIT disconnected(
+                QStringLiteral("the connection to %1 dropped (%2)").arg(description(), why));
             return;
         }
         const OpenFailure kind =
@@ -32,8 +31,7 @@ TcpTransport::TcpTransport(const QString &host, quint16 port, int wireBaud, QObj
     });
 }
 
-bool TcpTransport::parseHostPort(const QString &text, QString *host, quint16 *port)
-{
+bool TcpTransport::parseHostPort(const QString &text, QString *host, quint16 *port) {
     const int colon = text.lastIndexOf(QLatin1Char(':'));
     bool ok = false;
     const int p = text.mid(colon + 1).toInt(&ok);
@@ -44,8 +42,7 @@ bool TcpTransport::parseHostPort(const QString &text, QString *host, quint16 *po
     return true;
 }
 
-void TcpTransport::open()
-{
+void TcpTransport::open() {
     if (m_socket.state() == QAbstractSocket::ConnectedState) {
         Q_EMIT opened();
         return;
@@ -54,22 +51,21 @@ void TcpTransport::open()
     m_socket.connectToHost(m_host, m_port);
 }
 
-void TcpTransport::close()
-{
+void TcpTransport::close() {
     m_wasConnected = false;
     m_socket.abort();
 }
 
-void TcpTransport::write(const QByteArray &bytes)
-{
+void TcpTransport::write(const QByteArray &bytes) {
     if (isOpen())
         m_socket.write(bytes);
 }
 
-bool TcpTransport::isOpen() const { return m_socket.state() == QAbstractSocket::ConnectedState; }
+bool TcpTransport::isOpen() const {
+    return m_socket.state() == QAbstractSocket::ConnectedState;
+}
 
-QString TcpTransport::description() const
-{
+QString TcpTransport::description() const {
     return QStringLiteral("tcp %1:%2").arg(m_host).arg(m_port);
 }
 

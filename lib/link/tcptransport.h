@@ -9,11 +9,11 @@
 
 namespace tipscope::link {
 
-class TcpTransport : public Transport
-{
+class TcpTransport : public Transport {
     Q_OBJECT
 public:
-    TcpTransport(const QString &host, quint16 port, int wireBaud = 19200, QObject *parent = nullptr);
+    TcpTransport(const QString &host, quint16 port, int wireBaud = 19200,
+                 QObject *parent = nullptr);
 
     void open() override;
     void close() override;

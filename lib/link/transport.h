@@ -15,8 +15,7 @@ namespace tipscope::link {
 
 enum class OpenFailure { NotFound, Permission, Busy, Other };
 
-class Transport : public QObject
-{
+class Transport : public QObject {
     Q_OBJECT
 public:
     using QObject::QObject;

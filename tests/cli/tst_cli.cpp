@@ -1,0 +1,243 @@
+// tipscope-cli end to end: the real binary, a socat PTY pair, and tipscope-sim on the other end.
+#include "ptyfixtures.h"
+
+#include <QFile>
+#include <QRegularExpression>
+#include <QtTest>
+
+using namespace tipscope::testing;
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Run runCli(const QStringList &args, int timeoutMs = 30000) {
+    QProcess p;
+    p.start(binaryPath(QStringLiteral("tipscope-cli")), args);
+    Run r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("timed out");
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+} // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void detectFindsAddressedStationAndFeederOnOneLine();
+    void detectFindsAStationWithoutAddresses();
+    void readPrintsValuesWithUnits();
+    void writeIsReadBackAndTheSimulatorHoldsTheValue();
+    void negativeValuesAndCommandOptionsAfterTheCommandParse();
+    void refusedValueNeverReachesTheWire();
+    void nakIsExitThreeWithTheCodesMeaning();
+    void garbageBeforeAnswersIsSkipped();
+    void corruptedAnswersAreRetried();
+    void silentDeviceIsExitFour();
+    void nonexistentPortIsExitFiveWithAReason();
+    void sendPrintsTheAnswerInHexAndDecoded();
+    void monitorSurvivesAnUnplugAndResumes();
+    void usageErrorsAreExitOne();
+
+private:
+    // Starts the simulator on one end of a fresh socat pair; returns the host end.
+    QString startSim(const QStringList &simArgs);
+    std::unique_ptr<SocatPair> m_pair;
+    std::unique_ptr<SimProcess> m_sim;
+};
+
+QString TestCli::startSim(const QStringList &simArgs) {
+    m_sim.reset();
+    m_pair = std::make_unique<SocatPair>();
+    QString error;
+    if (!m_pair->start(&error))
+        return {};
+    m_sim = std::make_unique<SimProcess>();
+    if (m_sim->start(simArgs + QStringList{QStringLiteral("--device"), m_pair->deviceEnd()}, &error)
+            .isEmpty())
+        return {};
+    return m_pair->hostEnd();
+}
+
+void TestCli::detectFindsAddressedStationAndFeederOnOneLine() {
+    const QString port = startSim({"--model", "DDE", "--feeder"});
+    QVERIFY(!port.isEmpty());
+    const Run r = runCli({"--port", port, "detect"});
+    QCOMPARE(r.exitCode, 0);
+    QCOMPARE(r.out, QStringLiteral("01 DDE-2C DDE 9996780\n10 SFR-A SFR -\n"));
+    const Run j = runCli({"--port", port, "detect", "--json"});
+    QCOMPARE(j.exitCode, 0);
+    QVERIFY(j.out.contains(QStringLiteral("\"family\": \"SFR\"")));
+}
+
+void TestCli::detectFindsAStationWithoutAddresses() {
+    const QString port = startSim({"--model", "DDR"});
+    QVERIFY(!port.isEmpty());
+    const Run r = runCli({"--port", port, "detect"});
+    QCOMPARE(r.exitCode, 0);
+    QCOMPARE(r.out, QStringLiteral("-- DDR DDR -\n"));
+}
+
+void TestCli::readPrintsValuesWithUnits() {
+    const QString port = startSim({"--model", "DME", "--feeder"});
+    QVERIFY(!port.isEmpty());
+    const Run r = runCli({"--port", port, "read", "ST2", "HD1", "D12", "CT1", "LEN", "SMN"});
+    QCOMPARE(r.exitCode, 0);
+    QCOMPARE(r.out.split('\n'), QStringList({"ST2 350 °C", "HD1 disabled", "D12 0 min",
+                                             "CT1 1 T210", "LEN 200 dmm", "SMN DME-2C", ""}));
+    const Run raw = runCli({"--port", port, "--addr", "00:01", "read", "--raw", "ST2"});
+    QCOMPARE(raw.out, QStringLiteral("ST2 00350\n"));
+}
+
+void TestCli::writeIsReadBackAndTheSimulatorHoldsTheValue() {
+    const QString port = startSim({"--model", "DME"});
+    QVERIFY(!port.isEmpty());
+    const Run w = runCli({"--port", port, "write", "ST3", "400"});
+    QCOMPARE(w.exitCode, 0);
+    QCOMPARE(w.out, QStringLiteral("ST3 400 °C (verified)\n"));
+    const Run r = runCli({"--port", port, "--addr", "00:01", "read", "--raw", "ST3"});
+    QCOMPARE(r.out, QStringLiteral("ST3 00400\n"));
+    QVERIFY(m_sim->command("stats").contains(QStringLiteral("writes 1 ")));
+    const Run d = runCli({"--port", port, "write", "HD2", "1.6"});
+    QCOMPARE(d.exitCode, 0);
+    QCOMPARE(d.out, QStringLiteral("HD2 1.60 s (verified)\n"));
+}
+
+void TestCli::negativeValuesAndCommandOptionsAfterTheCommandParse() {
+    const QString port = startSim({"--model", "DME", "--feeder"});
+    QVERIFY(!port.isEmpty());
+    const Run a = runCli({"--port", port, "write", "A12", "-50"});
+    QCOMPARE(a.exitCode, 0);
+    QCOMPARE(a.out, QStringLiteral("A12 -50 °C (verified)\n"));
+    const Run len = runCli({"--port", port, "write", "LEN", "--raw", "00150"});
+    QCOMPARE(len.exitCode, 0);
+    QCOMPARE(len.out, QStringLiteral("LEN 150 dmm (verified)\n"));
+}
+
+void TestCli::refusedValueNeverReachesTheWire() {
+    const QString port = startSim({"--model", "DME"});
+    QVERIFY(!port.isEmpty());
+    for (const QStringList &bad :
+         {QStringList{"ST1", "353"}, QStringList{"ST1", "505"}, QStringList{"A12", "51"},
+          QStringList{"H12", "7"}, QStringList{"D12", "hot"}, QStringList{"TT1", "100"},
+          QStringList{"PS1", "2"}, QStringList{"HD1", "1.234"}}) {
+        const Run r = runCli(QStringList{"--port", port, "write"} + bad);
+        QVERIFY2(r.exitCode == 2, qPrintable(bad.join(' ') + ": " + r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("nothing was sent")) ||
+                     r.err.contains(QStringLiteral("accepts writes")),
+                 qPrintable(r.err));
+    }
+    const QString stats = m_sim->command("stats");
+    QVERIFY2(stats.contains(QStringLiteral("writes 0 ")), qPrintable(stats));
+}
+
+void TestCli::nakIsExitThreeWithTheCodesMeaning() {
+    const QString port = startSim({"--model", "DME", "--nak", "4"});
+    QVERIFY(!port.isEmpty());
+    const Run r = runCli({"--port", port, "--addr", "00:01", "read", "ST1"});
+    QCOMPARE(r.exitCode, 3);
+    QVERIFY2(r.err.contains(QStringLiteral("NAK 00004")) && r.err.contains("Control error"),
+             qPrintable(r.err));
+}
+
+void TestCli::garbageBeforeAnswersIsSkipped() {
+    const QString port = startSim({"--model", "DME", "--garbage", "1"});
+    QVERIFY(!port.isEmpty());
+    const Run r = runCli({"--port", port, "read", "ST1", "ST2", "ST3"});
+    QCOMPARE(r.exitCode, 0);
+    QCOMPARE(r.out.count(QStringLiteral("350 °C")), 3);
+}
+
+void TestCli::corruptedAnswersAreRetried() {
+    const QString port = startSim({"--model", "DME", "--corrupt", "0.4", "--seed", "3"});
+    QVERIFY(!port.isEmpty());
+    const Run r = runCli({"--port", port, "--addr", "00:01", "--retries", "8", "--verbose", "read",
+                          "ST1", "ST2", "ST3", "ST4"});
+    QCOMPARE(r.exitCode, 0);
+    QCOMPARE(r.out.count(QStringLiteral("350 °C")), 4);
+    QVERIFY2(r.err.count(QStringLiteral("TX ")) > 4, "expected at least one retry");
+}
+
+void TestCli::silentDeviceIsExitFour() {
+    const QString port = startSim({"--model", "DME", "--drop", "1"});
+    QVERIFY(!port.isEmpty());
+    const Run r = runCli({"--port", port, "--addr", "00:01", "--timeout", "50", "read", "ST1"});
+    QCOMPARE(r.exitCode, 4);
+    const Run d = runCli({"--port", port, "--timeout", "50", "detect"});
+    QCOMPARE(d.exitCode, 4);
+    QVERIFY(d.err.contains(QStringLiteral("no device answered")));
+}
+
+void TestCli::nonexistentPortIsExitFiveWithAReason() {
+    const Run r = runCli({"--port", "/dev/tipscope-no-such-port", "read", "ST1"});
+    QCOMPARE(r.exitCode, 5);
+    QVERIFY2(r.err.contains(QStringLiteral("no such port"), Qt::CaseInsensitive),
+             qPrintable(r.err));
+}
+
+void TestCli::sendPrintsTheAnswerInHexAndDecoded() {
+    const QString port = startSim({"--model", "DME"});
+    QVERIFY(!port.isEmpty());
+    const Run r = runCli({"--port", port, "send", "02 30 30 30 31 52 53 4D 4E 03 02"});
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY2(r.out.contains(QStringLiteral("RX 02 30 31 30 30 41 53 4D 4E")) &&
+                 r.out.contains(QStringLiteral("01→00 A SMN DME-2C")),
+             qPrintable(r.out));
+    const Run bad = runCli({"--port", port, "send", "02 3G"});
+    QCOMPARE(bad.exitCode, 2);
+}
+
+void TestCli::monitorSurvivesAnUnplugAndResumes() {
+    QTemporaryDir dir;
+    const QString link = dir.filePath(QStringLiteral("station"));
+    SimProcess sim;
+    QString error;
+    QVERIFY2(!sim.start({"--model", "DME", "--pty", "--link", link}, &error).isEmpty(),
+             qPrintable(error));
+    QProcess cli;
+    cli.start(binaryPath(QStringLiteral("tipscope-cli")),
+              {"--port", link, "--addr", "00:01", "--timeout", "50", "monitor", "--interval", "200",
+               "--duration", "7"});
+    QVERIFY(cli.waitForStarted());
+    QTest::qWait(1500);
+    QCOMPARE(sim.command(QStringLiteral("unplug")), QStringLiteral("ok"));
+    QTest::qWait(1500);
+    QVERIFY(sim.command(QStringLiteral("plug")).startsWith(QStringLiteral("/dev/pts/")));
+    QVERIFY(cli.waitForFinished(20000));
+    const QString out = QString::fromUtf8(cli.readAllStandardOutput());
+    const QString err = QString::fromUtf8(cli.readAllStandardError());
+    QCOMPARE(cli.exitCode(), 0);
+    QVERIFY2(err.contains(QStringLiteral("retrying")), qPrintable(err));
+    const QStringList lines = out.split('\n', Qt::SkipEmptyParts);
+    QVERIFY(lines.size() > 10);
+    QVERIFY2(lines.last().contains(QStringLiteral("/350 °C")), qPrintable(lines.last()));
+    QVERIFY2(out.contains(QStringLiteral("P1 --")),
+             "expected cycles without answers while unplugged");
+}
+
+void TestCli::usageErrorsAreExitOne() {
+    QCOMPARE(runCli({"--demo", "frobnicate"}).exitCode, 1);
+    QCOMPARE(runCli({"--demo", "read", "--json"}).exitCode, 1);
+    QCOMPARE(runCli({"--port", "a", "--tcp", "b:1", "read", "ST1"}).exitCode, 1);
+    QCOMPARE(runCli({"--addr", "00:100", "--demo", "read", "ST1"}).exitCode, 1);
+    QCOMPARE(runCli({"read", "ST1"}).exitCode, 1);
+    const Run v = runCli({"--version"});
+    QCOMPARE(v.exitCode, 0);
+    QVERIFY(v.out.startsWith(QStringLiteral("tipscope-cli ")));
+    QVERIFY(runCli({"--help"}).out.contains(QStringLiteral("Exit codes")));
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"
