@@ -1,0 +1,108 @@
+#include "devicemodel.h"
+
+#include "eventlog.h"
+
+#include <QCoreApplication>
+
+namespace tipscope::model {
+
+using namespace tipscope::link;
+using namespace tipscope::protocol;
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(DeviceModel)
+};
+} // namespace
+
+DeviceModel::DeviceModel(RequestQueue &queue, const DeviceInfo &info, QObject *parent)
+    : QObject(parent)
+    , m_queue(queue)
+    , m_info(info) {
+    const Catalog &cat = Catalog::builtin();
+    QMap<QByteArray, std::optional<ResolvedCommand>> reads, writes;
+    QList<QByteArray> order;
+    for (const ResolvedCommand &r : cat.expand(info.family, Direction::Read)) {
+        reads[r.code] = r;
+        order.append(r.code);
+    }
+    for (const ResolvedCommand &w : cat.expand(info.family, Direction::Write)) {
+        const bool isAction = w.spec->kind == ValueKind::Action || !w.spec->readable;
+        if (isAction) {
+            auto *a = new Action(*this, w, this);
+            m_actions.append(a);
+            m_actionByCode.insert(w.code, a);
+            continue;
+        }
+        writes[w.code] = w;
+        if (!order.contains(w.code))
+            order.append(w.code);
+    }
+    for (const QByteArray &code : order) {
+        auto *p = new Parameter(*this, reads.value(code), writes.value(code), this);
+        m_parameters.append(p);
+        m_byCode.insert(code, p);
+    }
+    for (Parameter *p : m_parameters) {
+        const CommandSpec &s = p->meta();
+        if (!s.limitMin.isEmpty() || !s.limitMax.isEmpty())
+            p->setLimitParameters(parameter(s.limitMin.toLatin1()),
+                                  parameter(s.limitMax.toLatin1()));
+    }
+    connect(this, &DeviceModel::parameterChanged, this,
+            [this](Parameter *p) { onParameterChanged(p); });
+}
+
+const FamilyInfo &DeviceModel::familyInfo() const {
+    return *Catalog::builtin().family(m_info.family);
+}
+
+QString DeviceModel::displayName() const {
+    return m_info.address ? Tr::tr("%1 at %2").arg(m_info.model, m_info.addressText())
+                          : Tr::tr("%1 (no address)").arg(m_info.model);
+}
+
+QString DeviceModel::sourceName(int port) const {
+    return port > 0 ? Tr::tr("%1, port %2").arg(displayName()).arg(port) : displayName();
+}
+
+Parameter *DeviceModel::parameter(const QByteArray &code) const {
+    return m_byCode.value(code);
+}
+
+Action *DeviceModel::action(const QByteArray &code) const {
+    return m_actionByCode.value(code);
+}
+
+void DeviceModel::setTemperatureUnit(TemperatureUnit unit) {
+    if (unit == m_unit)
+        return;
+    m_unit = unit;
+    Q_EMIT temperatureUnitChanged();
+}
+
+void DeviceModel::setWritesBlocked(bool blocked) {
+    if (blocked == m_writesBlocked)
+        return;
+    m_writesBlocked = blocked;
+    Q_EMIT writesBlockedChanged(blocked);
+}
+
+void DeviceModel::refreshAll(Priority priority) {
+    for (Parameter *p : m_parameters)
+        if (p->isReadable())
+            p->refresh(priority);
+}
+
+void DeviceModel::logCommunication(const QString &what, const QString &reason) {
+    if (m_log)
+        m_log->add(Event::Kind::Communication, Event::Severity::Warning, displayName(),
+                   Tr::tr("%1: %2").arg(what, reason));
+}
+
+void DeviceModel::logWrite(const QString &what) {
+    if (m_log)
+        m_log->add(Event::Kind::Write, Event::Severity::Info, displayName(), what);
+}
+
+} // namespace tipscope::model

@@ -1,0 +1,75 @@
+// DeviceModel: one device on a line, as the widgets see it: identity, every Parameter and Action
+// its family has (built from the catalog), and the shared settings that shape them (temperature
+// unit, monitor-only). StationModel and FeederModel add the structure of their families.
+//
+// Requests go through the line's RequestQueue with this model as the owner of every Reply, so
+// deleting the model withdraws whatever it still had queued. Communication failures of its
+// requests and changes of errors, alarms and status are written to the EventLog if one is set.
+#pragma once
+
+#include "action.h"
+#include "displayunits.h"
+#include "eventlog.h"
+#include "parameter.h"
+
+#include "link/discovery.h"
+
+#include <QMap>
+#include <QObject>
+#include <QPointer>
+
+namespace tipscope::model {
+
+class DeviceModel : public QObject {
+    Q_OBJECT
+public:
+    DeviceModel(link::RequestQueue &queue, const link::DeviceInfo &info, QObject *parent = nullptr);
+
+    [[nodiscard]] const link::DeviceInfo &info() const { return m_info; }
+    [[nodiscard]] QString family() const { return m_info.family; }
+    [[nodiscard]] const protocol::FamilyInfo &familyInfo() const;
+    [[nodiscard]] std::optional<int> address() const { return m_info.address; }
+    [[nodiscard]] QString displayName() const; // "DME-2C at 01"
+    [[nodiscard]] link::RequestQueue &queue() const { return m_queue; }
+
+    [[nodiscard]] const QList<Parameter *> &parameters() const { return m_parameters; }
+    [[nodiscard]] Parameter *parameter(const QByteArray &code) const;
+    [[nodiscard]] const QList<Action *> &actions() const { return m_actions; }
+    [[nodiscard]] Action *action(const QByteArray &code) const;
+
+    [[nodiscard]] TemperatureUnit temperatureUnit() const { return m_unit; }
+    void setTemperatureUnit(TemperatureUnit unit);
+    [[nodiscard]] bool writesBlocked() const { return m_writesBlocked; }
+    void setWritesBlocked(bool blocked);
+    void setEventLog(EventLog *log) { m_log = log; }
+    [[nodiscard]] EventLog *eventLog() const { return m_log; }
+
+    // Reads every readable parameter once (settings pages, profiles, the support report).
+    void refreshAll(link::Priority priority = link::Priority::Background);
+    // Called by parameters and actions when a request of theirs failed or a write was done.
+    void logCommunication(const QString &what, const QString &reason);
+    void logWrite(const QString &what);
+
+Q_SIGNALS:
+    void temperatureUnitChanged();
+    void writesBlockedChanged(bool blocked);
+    void parameterChanged(tipscope::model::Parameter *parameter);
+
+protected:
+    // Hook for subclasses: a parameter's value changed (errors, alarms, status to log).
+    virtual void onParameterChanged(Parameter *) {}
+    [[nodiscard]] QString sourceName(int port = 0) const;
+
+private:
+    link::RequestQueue &m_queue;
+    link::DeviceInfo m_info;
+    QList<Parameter *> m_parameters;
+    QMap<QByteArray, Parameter *> m_byCode;
+    QList<Action *> m_actions;
+    QMap<QByteArray, Action *> m_actionByCode;
+    TemperatureUnit m_unit = TemperatureUnit::Celsius;
+    bool m_writesBlocked = false;
+    QPointer<EventLog> m_log;
+};
+
+} // namespace tipscope::model

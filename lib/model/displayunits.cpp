@@ -1,0 +1,95 @@
+#include "displayunits.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+#include <cmath>
+
+namespace tipscope::model {
+
+using namespace tipscope::protocol;
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(DisplayUnits)
+};
+} // namespace
+
+DisplayFormat displayFormat(const ResolvedCommand &cmd, TemperatureUnit t) {
+    const QString &key = cmd.spec->unit;
+    const bool fahrenheit = t == TemperatureUnit::Fahrenheit;
+    if (key == QLatin1String("degC"))
+        return fahrenheit ? DisplayFormat{1.8, 32, 0, QStringLiteral("°F")}
+                          : DisplayFormat{1, 0, 0, QStringLiteral("°C")};
+    if (key == QLatin1String("degCDelta"))
+        return fahrenheit ? DisplayFormat{1.8, 0, 0, QStringLiteral("°F")}
+                          : DisplayFormat{1, 0, 0, QStringLiteral("°C")};
+    if (cmd.spec->kind == ValueKind::Delay)
+        return {0.01, 0, 2, QStringLiteral("s")};
+    if (const Unit *u = Catalog::builtin().unit(key))
+        return {u->scale, 0, u->decimals, u->display};
+    return {};
+}
+
+double toDisplay(const ResolvedCommand &cmd, qint64 wire, TemperatureUnit t) {
+    const DisplayFormat f = displayFormat(cmd, t);
+    return double(wire) * f.scale + f.offset;
+}
+
+qint64 fromDisplay(const ResolvedCommand &cmd, double display, TemperatureUnit t) {
+    const DisplayFormat f = displayFormat(cmd, t);
+    return qint64(std::llround((display - f.offset) / f.scale));
+}
+
+QString formatNumber(const ResolvedCommand &cmd, qint64 wire, TemperatureUnit t) {
+    const DisplayFormat f = displayFormat(cmd, t);
+    const QString number = QLocale().toString(toDisplay(cmd, wire, t), 'f', f.decimals);
+    return f.unit.isEmpty() ? number : number + QLatin1Char(' ') + f.unit;
+}
+
+QString formatValue(const ResolvedCommand &cmd, const Value &v, TemperatureUnit t) {
+    if (v.isText)
+        return v.text;
+    if (cmd.spec->special.contains(int(v.number)))
+        return cmd.spec->special.value(int(v.number));
+    switch (cmd.spec->kind) {
+    case ValueKind::Enum:
+    case ValueKind::Flags:
+    case ValueKind::Text:
+        return describeValue(cmd, v);
+    default:
+        return formatNumber(cmd, v.number, t);
+    }
+}
+
+std::optional<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text,
+                                       TemperatureUnit t, QString *error) {
+    const QString s = text.trimmed();
+    for (auto it = cmd.spec->special.begin(); it != cmd.spec->special.end(); ++it)
+        if (s.compare(it.value(), Qt::CaseInsensitive) == 0)
+            return it.key();
+    if (cmd.spec->kind == ValueKind::Enum || cmd.spec->kind == ValueKind::Flags ||
+        cmd.spec->kind == ValueKind::Action)
+        return parseUserValue(cmd, s, error);
+    const DisplayFormat f = displayFormat(cmd, t);
+    QString number = s;
+    if (!f.unit.isEmpty() && number.endsWith(f.unit))
+        number.chop(f.unit.size());
+    bool ok = false;
+    double d = QLocale().toDouble(number.trimmed(), &ok);
+    if (!ok)
+        d = number.trimmed().toDouble(&ok); // a script may use the C locale's decimal point
+    if (!ok || !std::isfinite(d)) {
+        if (error)
+            *error = Tr::tr("'%1' is not a number").arg(s);
+        return std::nullopt;
+    }
+    const qint64 wire = fromDisplay(cmd, d, t);
+    if (std::fabs(toDisplay(cmd, wire, t) - d) > std::pow(10.0, -f.decimals) / 2 + 1e-9) {
+        if (error)
+            *error = Tr::tr("%1 has more decimals than %2 can take").arg(s, cmd.spec->name);
+        return std::nullopt;
+    }
+    return wire;
+}
+
+} // namespace tipscope::model

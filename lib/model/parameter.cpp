@@ -1,0 +1,281 @@
+#include "parameter.h"
+
+#include "devicemodel.h"
+
+#include <QCoreApplication>
+
+namespace tipscope::model {
+
+using namespace tipscope::link;
+using namespace tipscope::protocol;
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(Parameter)
+};
+constexpr double kRateSmoothing = 0.2;
+
+// Whether a read-back proves a write. Flags are compared digit by digit, and a port sent to the
+// stand may already have moved on to sleep or hibernation by the time it is read back.
+bool confirms(const ResolvedCommand &cmd, const Value &written, const Value &read) {
+    if (cmd.spec->kind != ValueKind::Flags || written.isText || read.isText)
+        return written == read;
+    const qint64 w = written.number, r = read.number;
+    const bool modeOk = (w % 10 == 0) ? r % 10 == 0 : r % 10 >= w % 10;
+    return modeOk && (w / 10) % 10 == (r / 10) % 10;
+}
+} // namespace
+
+Parameter::Parameter(DeviceModel &device, std::optional<ResolvedCommand> read,
+                     std::optional<ResolvedCommand> write, QObject *parent)
+    : QObject(parent)
+    , m_device(device)
+    , m_read(std::move(read))
+    , m_write(std::move(write)) {
+    Q_ASSERT(m_read || m_write);
+}
+
+const ResolvedCommand &Parameter::spec() const {
+    return m_write ? *m_write : *m_read;
+}
+
+std::optional<qint64> Parameter::number() const {
+    if (!m_value || m_value->isText)
+        return std::nullopt;
+    return m_value->number;
+}
+
+qint64 Parameter::minimum() const {
+    qint64 lo = spec().min;
+    if (m_lower && m_lower->number())
+        lo = qMax(lo, *m_lower->number());
+    return lo;
+}
+
+qint64 Parameter::maximum() const {
+    qint64 hi = spec().max;
+    if (m_upper && m_upper->number())
+        hi = qMin(hi, *m_upper->number());
+    return hi;
+}
+
+void Parameter::setLimitParameters(Parameter *lower, Parameter *upper) {
+    m_lower = lower;
+    m_upper = upper;
+}
+
+QString Parameter::allowedText() const {
+    if (!m_write)
+        return Tr::tr("read-only");
+    const ResolvedCommand &c = *m_write;
+    if (c.spec->kind != ValueKind::Number && c.spec->kind != ValueKind::Delay)
+        return protocol::allowedText(c);
+    const TemperatureUnit t = m_device.temperatureUnit();
+    QString text =
+        Tr::tr("%1 to %2").arg(formatNumber(c, minimum(), t), formatNumber(c, maximum(), t));
+    if (c.spec->step > 1) {
+        const DisplayFormat f = displayFormat(c, t);
+        text += Tr::tr(" in steps of %1 %2")
+                    .arg(QLocale().toString(c.spec->step * f.scale, 'f', f.decimals), f.unit);
+    }
+    QStringList specials;
+    for (const QString &s : c.spec->special)
+        specials.append(s);
+    if (!specials.isEmpty())
+        text += Tr::tr(", or %1").arg(specials.join(QLatin1String(", ")));
+    return text;
+}
+
+QString Parameter::validate(qint64 wire) const {
+    if (!m_write)
+        return Tr::tr("%1 cannot be written").arg(meta().name);
+    const ResolvedCommand &c = *m_write;
+    const bool special = c.spec->special.contains(int(wire));
+    const bool numeric = c.spec->kind == ValueKind::Number || c.spec->kind == ValueKind::Delay;
+    const bool inside = !numeric || special || (wire >= minimum() && wire <= maximum());
+    if (protocol::validate(c, wire).isEmpty() && inside)
+        return {};
+    const QString shown = numeric && !special ? formatNumber(c, wire, m_device.temperatureUnit())
+                                              : QString::number(wire);
+    return Tr::tr("%1 is not allowed for %2: allowed is %3").arg(shown, meta().name, allowedText());
+}
+
+QString Parameter::displayText() const {
+    if (!m_value)
+        return Tr::tr("—");
+    return formatValue(spec(), *m_value, m_device.temperatureUnit());
+}
+
+QString Parameter::displayEditText() const {
+    if (!m_edit)
+        return displayText();
+    return formatValue(spec(), Value::ofNumber(*m_edit), m_device.temperatureUnit());
+}
+
+QString Parameter::setEdit(qint64 wire) {
+    if (m_device.writesBlocked())
+        return Tr::tr("monitor-only mode is on: nothing is written");
+    const QString why = validate(wire);
+    if (!why.isEmpty())
+        return why;
+    m_edit = wire;
+    Q_EMIT editChanged();
+    setState(m_value && m_value->number == wire && !m_value->isText ? State::InSync
+                                                                    : State::Edited);
+    if (m_state == State::InSync)
+        m_edit.reset();
+    return {};
+}
+
+QString Parameter::setEditText(const QString &text) {
+    if (!m_write)
+        return Tr::tr("%1 cannot be written").arg(meta().name);
+    QString error;
+    const auto wire = parseDisplayText(*m_write, text, m_device.temperatureUnit(), &error);
+    if (!wire)
+        return Tr::tr("%1: %2; allowed is %3").arg(meta().name, error, allowedText());
+    return setEdit(*wire);
+}
+
+void Parameter::revert() {
+    if (!m_edit)
+        return;
+    m_edit.reset();
+    Q_EMIT editChanged();
+    setState(m_value ? State::InSync : State::Unknown);
+}
+
+void Parameter::setState(State s, const QString &failure) {
+    if (s == m_state && failure == m_failure)
+        return;
+    m_state = s;
+    m_failure = failure;
+    Q_EMIT stateChanged();
+}
+
+Reply *Parameter::refresh(Priority priority) {
+    if (!m_read)
+        return nullptr;
+    if (m_state == State::Unknown || m_state == State::Failed)
+        setState(State::Reading);
+    Reply *reply =
+        m_device.queue().enqueue(Request::read(m_device.address(), code(), priority), this);
+    connect(reply, &Reply::finished, this, [this, reply] {
+        reply->deleteLater();
+        if (reply->ok()) {
+            deviceReported(reply->answer().data);
+            return;
+        }
+        if (m_state == State::Reading)
+            setState(m_value ? State::InSync : State::Unknown);
+        m_device.logCommunication(
+            Tr::tr("reading %1 (%2)").arg(meta().name, QString::fromLatin1(code())),
+            reply->errorString());
+    });
+    return reply;
+}
+
+void Parameter::deviceReported(const QByteArray &data) {
+    if (!m_read)
+        return;
+    const auto v = decodeAnswer(*m_read, data);
+    if (!v) {
+        m_device.logCommunication(
+            Tr::tr("reading %1").arg(meta().name),
+            Tr::tr("unreadable data field '%1'").arg(QString::fromLatin1(data)));
+        return;
+    }
+    const QDateTime now = QDateTime::currentDateTime();
+    if (m_lastUpdate.isValid()) {
+        const double dt = m_lastUpdate.msecsTo(now) / 1000.0;
+        if (dt > 0)
+            m_rateHz = m_rateHz == 0 ? 1.0 / dt : m_rateHz + kRateSmoothing * (1.0 / dt - m_rateHz);
+    }
+    m_lastUpdate = now;
+    const bool changed = !m_value || !(*m_value == *v);
+    m_value = v;
+    m_raw = data;
+    if (m_state == State::Unknown || m_state == State::Reading)
+        setState(m_edit ? State::Edited : State::InSync);
+    if (changed) {
+        Q_EMIT valueChanged();
+        Q_EMIT m_device.parameterChanged(this);
+    }
+}
+
+void Parameter::apply() {
+    if (!m_edit || !m_write || m_state == State::Writing)
+        return;
+    const QString why = m_device.writesBlocked()
+                            ? Tr::tr("monitor-only mode is on: nothing is written")
+                            : validate(*m_edit);
+    if (!why.isEmpty()) {
+        fail(why);
+        return;
+    }
+    QString error;
+    const auto data = encodeWrite(*m_write, *m_edit, &error);
+    if (!data) {
+        fail(error);
+        return;
+    }
+    setState(State::Writing);
+    const bool repeatable = !meta().dangerous;
+    Reply *reply = m_device.queue().enqueue(
+        Request::write(m_device.address(), code(), *data, repeatable), this);
+    connect(reply, &Reply::finished, this, [this, reply, data = *data] {
+        reply->deleteLater();
+        if (!reply->ok()) {
+            fail(Tr::tr("not written: %1").arg(reply->errorString()));
+            return;
+        }
+        if (m_read)
+            readBack(data);
+        else {
+            m_edit.reset();
+            setState(State::InSync);
+            Q_EMIT writeFinished(true, {});
+        }
+    });
+}
+
+void Parameter::readBack(const QByteArray &written) {
+    Reply *reply = m_device.queue().enqueue(Request::read(m_device.address(), code()), this);
+    connect(reply, &Reply::finished, this, [this, reply, written] {
+        reply->deleteLater();
+        if (!reply->ok()) {
+            fail(Tr::tr("written, but the read-back failed: %1").arg(reply->errorString()));
+            return;
+        }
+        deviceReported(reply->answer().data);
+        const auto wrote = decodeAnswer(*m_read, written);
+        if (!wrote || !m_value || !confirms(*m_read, *wrote, *m_value)) {
+            fail(Tr::tr("the device reports %1 after %2 was written")
+                     .arg(displayText(), formatValue(*m_read, wrote.value_or(Value()),
+                                                     m_device.temperatureUnit())));
+            return;
+        }
+        m_edit.reset();
+        Q_EMIT editChanged();
+        setState(State::InSync);
+        m_device.logWrite(Tr::tr("%1 set to %2").arg(meta().name, displayText()));
+        Q_EMIT writeFinished(true, {});
+    });
+}
+
+void Parameter::fail(const QString &reason) {
+    setState(State::Failed, reason);
+    m_device.logCommunication(Tr::tr("writing %1").arg(meta().name), reason);
+    Q_EMIT writeFinished(false, reason);
+}
+
+bool Parameter::isSavedToMemory() const {
+    return !meta().isVolatile || (m_saved && m_saved == m_raw);
+}
+
+void Parameter::markSaved() {
+    m_saved = m_raw;
+    Q_EMIT valueChanged();
+}
+
+} // namespace tipscope::model

@@ -1,0 +1,99 @@
+// Parameter: one value of a device, built from the catalog, never hand-written per command.
+//
+// It holds the value as last read, a pending edit, and a state (Unknown, Reading, InSync, Edited,
+// Writing, Failed with the reason). There are two write paths, as in QGroundControl's Fact:
+// setEdit() + apply() is a person's edit, validated before anything reaches the wire, written,
+// and proved by a read-back (only then InSync); deviceReported() is the device's own value from
+// a poll and only updates what is shown. Limits that depend on the device (the selected
+// temperature between MIT and MAT) follow the current values of the limiting parameters.
+#pragma once
+
+#include "displayunits.h"
+
+#include "link/requestqueue.h"
+
+#include <QDateTime>
+#include <QObject>
+#include <QPointer>
+
+namespace tipscope::model {
+
+class DeviceModel;
+
+class Parameter : public QObject {
+    Q_OBJECT
+public:
+    enum class State { Unknown, Reading, InSync, Edited, Writing, Failed };
+    Q_ENUM(State)
+
+    // `read` and `write` are the catalog's views of this code in each direction (either may be
+    // null, not both); they must outlive the parameter (the builtin catalog does).
+    Parameter(DeviceModel &device, std::optional<protocol::ResolvedCommand> read,
+              std::optional<protocol::ResolvedCommand> write, QObject *parent = nullptr);
+
+    [[nodiscard]] QByteArray code() const { return spec().code; }
+    [[nodiscard]] const protocol::ResolvedCommand &spec() const;
+    [[nodiscard]] const protocol::CommandSpec &meta() const { return *spec().spec; }
+    [[nodiscard]] bool isReadable() const { return m_read.has_value(); }
+    [[nodiscard]] bool isWritable() const { return m_write.has_value(); }
+    [[nodiscard]] DeviceModel &device() const { return m_device; }
+
+    [[nodiscard]] std::optional<protocol::Value> value() const { return m_value; }
+    [[nodiscard]] std::optional<qint64> number() const;
+    [[nodiscard]] QByteArray rawValue() const { return m_raw; }
+    [[nodiscard]] std::optional<qint64> edit() const { return m_edit; }
+    [[nodiscard]] State state() const { return m_state; }
+    [[nodiscard]] QString failure() const { return m_failure; }
+    [[nodiscard]] QDateTime lastUpdate() const { return m_lastUpdate; }
+    [[nodiscard]] double achievedRateHz() const { return m_rateHz; }
+
+    // Effective limits in wire units, tightened by the limiting parameters' current values.
+    [[nodiscard]] qint64 minimum() const;
+    [[nodiscard]] qint64 maximum() const;
+    void setLimitParameters(Parameter *lower, Parameter *upper);
+    // Empty when `wire` may be written now; otherwise what is allowed, in display units.
+    [[nodiscard]] QString validate(qint64 wire) const;
+    [[nodiscard]] QString allowedText() const;
+
+    [[nodiscard]] QString displayText() const;     // the value as people read it
+    [[nodiscard]] QString displayEditText() const; // the pending edit, or the value
+    QString setEdit(qint64 wire);                  // error text, or empty when accepted
+    QString setEditText(const QString &text);      // the same from what a person typed
+    void revert();
+
+    // Reads the value now. The returned reply is owned by the parameter.
+    link::Reply *refresh(link::Priority priority = link::Priority::UserRead);
+    // Writes the pending edit and reads it back; writeFinished() tells the outcome.
+    void apply();
+    // The value the device reported (a poll or a read-back); never written back.
+    void deviceReported(const QByteArray &data);
+    // For volatile values (W-STx): whether the shown value is the one saved with W-NVS.
+    [[nodiscard]] bool isSavedToMemory() const;
+    void markSaved();
+
+Q_SIGNALS:
+    void valueChanged();
+    void stateChanged();
+    void editChanged();
+    void writeFinished(bool ok, const QString &reason);
+
+private:
+    void setState(State s, const QString &failure = {});
+    void readBack(const QByteArray &written);
+    void fail(const QString &reason);
+
+    DeviceModel &m_device;
+    std::optional<protocol::ResolvedCommand> m_read;
+    std::optional<protocol::ResolvedCommand> m_write;
+    std::optional<protocol::Value> m_value;
+    QByteArray m_raw;
+    std::optional<qint64> m_edit;
+    std::optional<QByteArray> m_saved;
+    State m_state = State::Unknown;
+    QString m_failure;
+    QDateTime m_lastUpdate;
+    double m_rateHz = 0;
+    QPointer<Parameter> m_lower, m_upper;
+};
+
+} // namespace tipscope::model

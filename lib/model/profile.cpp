@@ -1,0 +1,176 @@
+#include "profile.h"
+
+#include "devicemodel.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+
+namespace tipscope::model {
+
+using namespace tipscope::protocol;
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(Profile)
+};
+const QLatin1String kFormat("tipscope-profile");
+} // namespace
+
+bool Profile::isProfileParameter(const Parameter &p) {
+    return p.isReadable() && p.isWritable() && p.meta().kind != ValueKind::Flags &&
+           p.meta().kind != ValueKind::Action;
+}
+
+Profile Profile::capture(const DeviceModel &device, QStringList *missing) {
+    Profile pr;
+    pr.family = device.family();
+    pr.model = device.info().model;
+    pr.softwareVersion = device.info().softwareVersion;
+    pr.created = QDateTime::currentDateTime();
+    for (const Parameter *p : device.parameters()) {
+        if (!isProfileParameter(*p))
+            continue;
+        if (p->rawValue().isEmpty()) {
+            if (missing)
+                missing->append(QString::fromLatin1(p->code()));
+            continue;
+        }
+        pr.values.append({p->code(), p->rawValue()});
+    }
+    return pr;
+}
+
+QByteArray Profile::toJson() const {
+    QJsonObject root{{QStringLiteral("format"), kFormat},
+                     {QStringLiteral("schema"), kProfileSchema},
+                     {QStringLiteral("family"), family},
+                     {QStringLiteral("model"), model},
+                     {QStringLiteral("softwareVersion"), softwareVersion},
+                     {QStringLiteral("created"), created.toString(Qt::ISODateWithMs)},
+                     {QStringLiteral("comment"), comment}};
+    QJsonObject v;
+    for (const auto &[code, data] : values)
+        v.insert(QString::fromLatin1(code), QString::fromLatin1(data));
+    root.insert(QStringLiteral("values"), v);
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+QStringList Profile::problemsFor(const QString &fam) const {
+    QStringList problems;
+    const Catalog &cat = Catalog::builtin();
+    for (const auto &[code, data] : values) {
+        const QString c = QString::fromLatin1(code);
+        const auto w = cat.resolve(fam, code, Direction::Write);
+        const auto r = cat.resolve(fam, code, Direction::Read);
+        if (!w || !r || w->spec->kind == ValueKind::Flags || w->spec->kind == ValueKind::Action) {
+            problems.append(Tr::tr("%1: not a setting of a %2").arg(c, fam));
+            continue;
+        }
+        const auto v = decodeAnswer(*r, data);
+        if (!v || v->isText) {
+            problems.append(
+                Tr::tr("%1: '%2' is not a valid data field").arg(c, QString::fromLatin1(data)));
+            continue;
+        }
+        if (const QString why = validate(*w, v->number); !why.isEmpty())
+            problems.append(Tr::tr("%1: %2").arg(c, why));
+    }
+    return problems;
+}
+
+std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error) {
+    auto fail = [error](const QString &why) -> std::optional<Profile> {
+        *error = why;
+        return std::nullopt;
+    };
+    QJsonParseError pe;
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
+    if (pe.error != QJsonParseError::NoError)
+        return fail(
+            Tr::tr("not a valid JSON file: %1 at byte %2").arg(pe.errorString()).arg(pe.offset));
+    const QJsonObject root = doc.object();
+    if (!doc.isObject() || root.value(QStringLiteral("format")).toString() != kFormat)
+        return fail(Tr::tr("not a TipScope profile (no \"format\": \"tipscope-profile\")"));
+    const int schema = root.value(QStringLiteral("schema")).toInt(-1);
+    if (schema != kProfileSchema)
+        return fail(Tr::tr("profile schema %1 is not supported (this version reads schema %2)")
+                        .arg(schema)
+                        .arg(kProfileSchema));
+    Profile p;
+    p.family = root.value(QStringLiteral("family")).toString().toUpper();
+    if (!Catalog::builtin().family(p.family))
+        return fail(Tr::tr("unknown device family '%1'").arg(p.family));
+    p.model = root.value(QStringLiteral("model")).toString();
+    p.softwareVersion = root.value(QStringLiteral("softwareVersion")).toString();
+    p.created =
+        QDateTime::fromString(root.value(QStringLiteral("created")).toString(), Qt::ISODateWithMs);
+    p.comment = root.value(QStringLiteral("comment")).toString();
+    const QJsonValue values = root.value(QStringLiteral("values"));
+    if (!values.isObject() || values.toObject().isEmpty())
+        return fail(Tr::tr("the profile has no values"));
+    const QJsonObject v = values.toObject();
+    for (auto it = v.begin(); it != v.end(); ++it) {
+        if (!it.value().isString())
+            return fail(Tr::tr("%1: the value must be a data field in quotes, e.g. \"00350\"")
+                            .arg(it.key()));
+        p.values.append({it.key().toUpper().toLatin1(), it.value().toString().toLatin1()});
+    }
+    const QStringList problems = p.problemsFor(p.family);
+    if (!problems.isEmpty())
+        return fail(Tr::tr("the profile is refused, nothing will be written:\n%1")
+                        .arg(problems.join(QLatin1Char('\n'))));
+    return p;
+}
+
+bool Profile::save(const QString &path, QString *error) const {
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(toJson()) < 0 || !f.commit()) {
+        *error = Tr::tr("cannot write %1: %2").arg(path, f.errorString());
+        return false;
+    }
+    return true;
+}
+
+std::optional<Profile> Profile::load(const QString &path, QString *error) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        *error = Tr::tr("cannot read %1: %2").arg(path, f.errorString());
+        return std::nullopt;
+    }
+    if (f.size() > kMaxProfileBytes) {
+        *error = Tr::tr("%1 is %2 bytes; a profile is at most %3")
+                     .arg(path)
+                     .arg(f.size())
+                     .arg(kMaxProfileBytes);
+        return std::nullopt;
+    }
+    QString why;
+    auto p = fromJson(f.readAll(), &why);
+    if (!p)
+        *error = Tr::tr("%1: %2").arg(path, why);
+    return p;
+}
+
+QList<ProfileDifference> diffProfile(const Profile &profile, const DeviceModel &device) {
+    QList<ProfileDifference> out;
+    for (const auto &[code, data] : profile.values) {
+        const Parameter *p = device.parameter(code);
+        if (!p || !Profile::isProfileParameter(*p))
+            continue;
+        const auto want = decodeAnswer(p->spec(), data);
+        const auto have = p->value();
+        if (want && have && *want == *have)
+            continue;
+        const TemperatureUnit t = device.temperatureUnit();
+        out.append({code, p->meta().name,
+                    have ? formatValue(p->spec(), *have, t) : Tr::tr("unknown"),
+                    want ? formatValue(p->spec(), *want, t) : QString::fromLatin1(data),
+                    p->rawValue(), data});
+    }
+    return out;
+}
+
+} // namespace tipscope::model

@@ -1,0 +1,58 @@
+// Profile: every writable setting of a device, saved to a JSON file and applied to other
+// stations of the same family.
+//
+// The file holds a format tag, a schema version, the family, model and software version it was
+// taken from, the date, and the values as the wire's data fields ("ST1": "00350",
+// "HD1": "01.60"), so a profile means exactly what goes on the wire. Loading validates every
+// entry against the catalog (the code exists for the family and is writable, the value parses
+// and is allowed) and refuses the whole file on any error: a malformed or out-of-range profile
+// writes nothing. Runtime state (port status) and actions are never part of a profile.
+#pragma once
+
+#include <QDateTime>
+#include <QList>
+#include <QMap>
+#include <QString>
+#include <optional>
+
+namespace tipscope::model {
+
+class DeviceModel;
+class Parameter;
+
+inline constexpr int kProfileSchema = 1;
+inline constexpr qint64 kMaxProfileBytes = 1 << 20;
+
+struct Profile {
+    QString family;
+    QString model;
+    QString softwareVersion;
+    QDateTime created;
+    QString comment;
+    QList<QPair<QByteArray, QByteArray>> values; // code -> data field, in apply order
+
+    [[nodiscard]] static bool isProfileParameter(const Parameter &p);
+    // Takes every profile parameter whose value is known. Unknown values are listed in `missing`.
+    [[nodiscard]] static Profile capture(const DeviceModel &device, QStringList *missing = nullptr);
+    [[nodiscard]] QByteArray toJson() const;
+    [[nodiscard]] static std::optional<Profile> fromJson(const QByteArray &json, QString *error);
+    [[nodiscard]] bool save(const QString &path, QString *error) const;
+    [[nodiscard]] static std::optional<Profile> load(const QString &path, QString *error);
+    // Entries that are not valid for `family` (empty when all are), as "CODE: why" lines.
+    [[nodiscard]] QStringList problemsFor(const QString &family) const;
+};
+
+struct ProfileDifference {
+    QByteArray code;
+    QString name;
+    QString deviceText; // as people read it; "unknown" when the device did not answer
+    QString profileText;
+    QByteArray deviceData;
+    QByteArray profileData;
+};
+
+// What would change if `profile` were applied to `device`, from the device's current values.
+[[nodiscard]] QList<ProfileDifference> diffProfile(const Profile &profile,
+                                                   const DeviceModel &device);
+
+} // namespace tipscope::model

@@ -1,0 +1,211 @@
+#include "profileapplier.h"
+
+#include "devicemodel.h"
+
+#include "protocol/hexbytes.h"
+
+#include <QCoreApplication>
+#include <QTimer>
+
+namespace tipscope::model {
+
+using namespace tipscope::link;
+using namespace tipscope::protocol;
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(ProfileApplier)
+};
+} // namespace
+
+int ApplyReport::failedCount() const {
+    return int(
+        std::count_if(written.begin(), written.end(), [](const ApplyItem &i) { return !i.ok; }));
+}
+
+QString ApplyReport::text() const {
+    QStringList lines;
+    if (refused)
+        return Tr::tr("refused, nothing was written: %1").arg(reason);
+    for (const ProfileDifference &d : differences)
+        if (diffOnly || dryRun)
+            lines.append(
+                Tr::tr("%1 %2: %3 → %4")
+                    .arg(QString::fromLatin1(d.code), d.name, d.deviceText, d.profileText));
+    for (const ApplyItem &i : written)
+        lines.append(
+            i.ok ? Tr::tr("changed %1 %2: %3 → %4")
+                       .arg(QString::fromLatin1(i.code), i.name, i.before, i.after)
+                 : Tr::tr("FAILED %1 %2: %3").arg(QString::fromLatin1(i.code), i.name, i.reason));
+    for (const QString &f : frames)
+        lines.append(Tr::tr("would send %1").arg(f));
+    for (const QString &s : skipped)
+        lines.append(Tr::tr("skipped %1").arg(s));
+    if (cancelled)
+        lines.append(Tr::tr("cancelled: the remaining values were not written"));
+    lines.append(diffOnly ? Tr::tr("%n difference(s)", nullptr, int(differences.size()))
+                          : Tr::tr("%1 changed, %2 already right, %3 failed")
+                                .arg(written.size() - failedCount())
+                                .arg(unchanged)
+                                .arg(failedCount()));
+    return lines.join(QLatin1Char('\n'));
+}
+
+ProfileApplier::ProfileApplier(DeviceModel &device, const Profile &profile, Mode mode, bool force,
+                               QObject *parent)
+    : QObject(parent)
+    , m_device(device)
+    , m_profile(profile)
+    , m_mode(mode)
+    , m_force(force) {
+    m_report.dryRun = mode == Mode::DryRun;
+    m_report.diffOnly = mode == Mode::Diff;
+}
+
+void ProfileApplier::start() {
+    if (m_profile.family != m_device.family()) {
+        if (!m_force) {
+            m_report.refused = true;
+            m_report.reason = Tr::tr("the profile is for a %1, this device is a %2 (force to apply "
+                                     "the settings they share)")
+                                  .arg(m_profile.family, m_device.family());
+            QTimer::singleShot(0, this, &ProfileApplier::finish);
+            return;
+        }
+        Profile kept = m_profile;
+        kept.values.clear();
+        for (const auto &entry : m_profile.values) {
+            const Parameter *p = m_device.parameter(entry.first);
+            if (p && Profile::isProfileParameter(*p) &&
+                Profile{m_device.family(), {}, {}, {}, {}, {entry}}
+                    .problemsFor(m_device.family())
+                    .isEmpty())
+                kept.values.append(entry);
+            else
+                m_report.skipped.append(QString::fromLatin1(entry.first));
+        }
+        m_profile = kept;
+    }
+    if (m_mode == Mode::Apply && m_device.writesBlocked()) {
+        m_report.refused = true;
+        m_report.reason = Tr::tr("monitor-only mode is on");
+        QTimer::singleShot(0, this, &ProfileApplier::finish);
+        return;
+    }
+    readAll();
+}
+
+void ProfileApplier::readAll() {
+    m_pendingReads = 0;
+    for (const auto &entry : m_profile.values) {
+        Parameter *p = m_device.parameter(entry.first);
+        if (!p)
+            continue;
+        Reply *r = p->refresh(Priority::UserRead);
+        ++m_pendingReads;
+        connect(r, &Reply::finished, this, [this] {
+            Q_EMIT progress(int(m_profile.values.size()) - m_pendingReads + 1,
+                            int(m_profile.values.size()), Tr::tr("reading the device"));
+            if (--m_pendingReads == 0)
+                compare();
+        });
+    }
+    if (m_pendingReads == 0)
+        QTimer::singleShot(0, this, &ProfileApplier::compare);
+}
+
+QList<QByteArray> ProfileApplier::writeOrder() const {
+    // MIT and MAT bound the selected temperatures; write them first, in the order that keeps
+    // MIT <= MAT true after each write.
+    QList<QByteArray> order;
+    for (const ProfileDifference &d : m_report.differences)
+        order.append(d.code);
+    const Parameter *mit = m_device.parameter("MIT");
+    const bool raiseMitFirst = mit && mit->number() && order.contains("MIT") && [&] {
+        for (const ProfileDifference &d : m_report.differences)
+            if (d.code == "MIT")
+                return d.profileData.toInt() > *mit->number();
+        return false;
+    }();
+    QList<QByteArray> limits =
+        raiseMitFirst ? QList<QByteArray>{"MAT", "MIT"} : QList<QByteArray>{"MIT", "MAT"};
+    if (raiseMitFirst)
+        limits = {"MAT", "MIT"};
+    for (auto it = limits.rbegin(); it != limits.rend(); ++it)
+        if (order.removeAll(*it))
+            order.prepend(*it);
+    return order;
+}
+
+void ProfileApplier::compare() {
+    m_report.differences = diffProfile(m_profile, m_device);
+    m_report.unchanged = int(m_profile.values.size() - m_report.differences.size());
+    if (m_mode == Mode::Diff) {
+        finish();
+        return;
+    }
+    if (m_mode == Mode::DryRun) {
+        for (const ProfileDifference &d : m_report.differences) {
+            Frame f = Frame::write(d.code, d.profileData);
+            if (m_device.address())
+                f = f.addressed(m_device.queue().settings().robotAddress, *m_device.address());
+            m_report.frames.append(
+                QStringLiteral("%1  (%2)").arg(toHexText(f.encode()), f.toString()));
+        }
+        finish();
+        return;
+    }
+    m_toWrite = writeOrder();
+    m_next = 0;
+    writeNext();
+}
+
+void ProfileApplier::writeNext() {
+    if (m_cancelled && m_next < m_toWrite.size()) {
+        m_report.cancelled = true;
+        finish();
+        return;
+    }
+    if (m_next >= m_toWrite.size()) {
+        finish();
+        return;
+    }
+    const QByteArray code = m_toWrite.at(m_next++);
+    Parameter *p = m_device.parameter(code);
+    QByteArray data;
+    for (const auto &entry : m_profile.values)
+        if (entry.first == code)
+            data = entry.second;
+    ApplyItem item{code, p->meta().name, p->displayText(), {}, false, {}};
+    Q_EMIT progress(m_next, int(m_toWrite.size()), Tr::tr("writing %1").arg(p->meta().name));
+    const auto value = decodeAnswer(p->spec(), data);
+    const QString why = value ? p->setEdit(value->number) : Tr::tr("unreadable value");
+    if (!why.isEmpty()) {
+        item.reason = why;
+        m_report.written.append(item);
+        QTimer::singleShot(0, this, &ProfileApplier::writeNext);
+        return;
+    }
+    if (p->state() == Parameter::State::InSync) { // already right (the device changed meanwhile)
+        ++m_report.unchanged;
+        QTimer::singleShot(0, this, &ProfileApplier::writeNext);
+        return;
+    }
+    connect(
+        p, &Parameter::writeFinished, this,
+        [this, p, item](bool ok, const QString &reason) mutable {
+            item.ok = ok;
+            item.reason = reason;
+            item.after = p->displayText();
+            m_report.written.append(item);
+            writeNext();
+        },
+        Qt::SingleShotConnection);
+    p->apply();
+}
+
+void ProfileApplier::finish() {
+    Q_EMIT finished(m_report);
+}
+
+} // namespace tipscope::model

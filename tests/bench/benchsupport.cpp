@@ -1,0 +1,104 @@
+#include "benchsupport.h"
+
+#include <QFile>
+#include <QList>
+#include <QSysInfo>
+#include <QTextStream>
+#include <QThread>
+
+#include <algorithm>
+#include <cmath>
+#include <sys/resource.h>
+#include <unistd.h>
+
+namespace tipscope::bench {
+
+namespace {
+
+QTextStream &out() {
+    static QTextStream s(stdout);
+    return s;
+}
+
+QTextStream &err() {
+    static QTextStream s(stderr);
+    return s;
+}
+
+QString cpuModel() {
+    QFile f(QStringLiteral("/proc/cpuinfo"));
+    if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
+        return QStringLiteral("unknown");
+    for (QByteArray line = f.readLine(); !line.isEmpty(); line = f.readLine()) {
+        if (line.startsWith("model name"))
+            return QString::fromLatin1(line.mid(line.indexOf(':') + 1)).trimmed();
+    }
+    return QStringLiteral("unknown");
+}
+
+qint64 timevalUs(const timeval &tv) {
+    return qint64(tv.tv_sec) * 1'000'000 + tv.tv_usec;
+}
+
+} // namespace
+
+void printFigure(const QString &name, double value, const QString &unit, int decimals) {
+    out() << name << ": " << QString::number(value, 'f', decimals) << ' ' << unit << Qt::endl;
+}
+
+void printText(const QString &name, const QString &value) {
+    out() << name << ": " << value << Qt::endl;
+}
+
+void printError(const QString &message) {
+    out().flush();
+    err() << "tipscope-bench: error: " << message << Qt::endl;
+}
+
+void printNote(const QString &message) {
+    out().flush();
+    err() << "tipscope-bench: " << message << Qt::endl;
+}
+
+void printMachineContext() {
+    printFigure(QStringLiteral("bench.cores"), QThread::idealThreadCount(), QStringLiteral("cores"),
+                0);
+    printText(QStringLiteral("bench.cpu"), cpuModel());
+    const QString build = QStringLiteral(TIPSCOPE_BUILD_TYPE);
+    printText(QStringLiteral("bench.build"),
+              build.isEmpty() ? QStringLiteral("unspecified") : build);
+    printText(QStringLiteral("bench.qt"), QString::fromLatin1(qVersion()));
+    printText(QStringLiteral("bench.kernel"), QSysInfo::kernelVersion());
+}
+
+qint64 selfCpuUs() {
+    rusage ru{};
+    ::getrusage(RUSAGE_SELF, &ru);
+    return timevalUs(ru.ru_utime) + timevalUs(ru.ru_stime);
+}
+
+std::optional<qint64> processCpuUs(qint64 pid) {
+    QFile f(QStringLiteral("/proc/%1/stat").arg(pid));
+    if (pid <= 0 || !f.open(QIODevice::ReadOnly))
+        return std::nullopt;
+    const QByteArray stat = f.readAll();
+    // The command name in field 2 may hold spaces; the fields after its ')' are fixed.
+    const QList<QByteArray> fields = stat.mid(stat.lastIndexOf(')') + 2).split(' ');
+    constexpr int kUtime = 11; // field 14 of proc(5), counted from field 3
+    constexpr int kStime = 12;
+    if (fields.size() <= kStime)
+        return std::nullopt;
+    const long ticksPerSecond = ::sysconf(_SC_CLK_TCK);
+    const qint64 ticks = fields[kUtime].toLongLong() + fields[kStime].toLongLong();
+    return ticks * 1'000'000 / qMax(1L, ticksPerSecond);
+}
+
+double quantile(QList<double> values, double p) {
+    if (values.isEmpty())
+        return 0;
+    std::sort(values.begin(), values.end());
+    const auto rank = qsizetype(std::ceil(p * double(values.size())));
+    return values[std::clamp<qsizetype>(rank - 1, 0, values.size() - 1)];
+}
+
+} // namespace tipscope::bench

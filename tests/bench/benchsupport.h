@@ -1,0 +1,30 @@
+// Shared pieces of tipscope-bench: how a figure is printed, the machine context every run starts
+// with, and CPU-time readings.
+//
+// Every figure is one line on standard output, "name: value unit" (for example
+// "link.paced_tx_per_s: 70.4 tx/s"), so a script can grep and compare runs. Errors and notes go
+// to standard error and never mix with the figures.
+#pragma once
+
+#include <QString>
+#include <optional>
+
+namespace tipscope::bench {
+
+void printFigure(const QString &name, double value, const QString &unit, int decimals = 1);
+void printText(const QString &name, const QString &value);
+void printError(const QString &message);
+void printNote(const QString &message);
+
+// bench.cores, bench.cpu, bench.build, bench.qt, bench.kernel.
+void printMachineContext();
+
+// User plus system CPU time of this process so far, in microseconds (getrusage).
+[[nodiscard]] qint64 selfCpuUs();
+// User plus system CPU time of another process from /proc/<pid>/stat; nullopt if unreadable.
+[[nodiscard]] std::optional<qint64> processCpuUs(qint64 pid);
+
+// The p-quantile (0..1) of `values` by the nearest rank; 0 for an empty list.
+[[nodiscard]] double quantile(QList<double> values, double p);
+
+} // namespace tipscope::bench

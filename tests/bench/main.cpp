@@ -1,0 +1,66 @@
+// tipscope-bench: performance figures of TipScope against tipscope-sim.
+//
+// A dispatcher over subcommands: `tipscope-bench SUBCOMMAND [options]`. Each subcommand is a
+// function taking the arguments after its name and returning the exit status; add one by adding
+// a row to kSubcommands. Every run first prints the machine context (bench.* lines), then the
+// subcommand's figures, one "name: value unit" per line.
+#include "benchsupport.h"
+#include "linkbench.h"
+
+#include <QCoreApplication>
+#include <QTextStream>
+
+namespace {
+
+struct Subcommand {
+    const char *name;
+    const char *summary;
+    int (*run)(const QStringList &args);
+};
+
+const Subcommand kSubcommands[] = {
+    {"link", "link throughput, write latency under polling and detection time (--seconds N)",
+     tipscope::bench::runLinkBench},
+};
+
+void printUsage(QTextStream &s) {
+    s << "usage: tipscope-bench SUBCOMMAND [options]   (SUBCOMMAND --help for its options)\n\n"
+         "subcommands:\n";
+    for (const Subcommand &c : kSubcommands)
+        s << "  " << QString::fromLatin1(c.name).leftJustified(8) << c.summary << '\n';
+    s.flush();
+}
+
+bool asksForHelp(const QStringList &args) {
+    return args.contains(QStringLiteral("-h")) || args.contains(QStringLiteral("--help"));
+}
+
+} // namespace
+
+int main(int argc, char *argv[]) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("tipscope-bench"));
+    // The bench lives beside tipscope-sim in bin/, not two folders below it like the tests.
+    if (qEnvironmentVariableIsEmpty("TIPSCOPE_BIN_DIR"))
+        qputenv("TIPSCOPE_BIN_DIR", QCoreApplication::applicationDirPath().toLocal8Bit());
+
+    const QStringList args = app.arguments().mid(1);
+    if (args.isEmpty() || args.first() == QLatin1String("-h") ||
+        args.first() == QLatin1String("--help")) {
+        QTextStream out(stdout);
+        printUsage(out);
+        return args.isEmpty() ? 1 : 0;
+    }
+    for (const Subcommand &c : kSubcommands) {
+        if (args.first() != QLatin1String(c.name))
+            continue;
+        const QStringList rest = args.mid(1);
+        if (!asksForHelp(rest))
+            tipscope::bench::printMachineContext();
+        return c.run(rest);
+    }
+    QTextStream err(stderr);
+    err << "tipscope-bench: unknown subcommand '" << args.first() << "'\n";
+    printUsage(err);
+    return 1;
+}
