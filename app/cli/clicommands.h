@@ -12,6 +12,7 @@ int runWrite(CliSession &s);
 int runSend(CliSession &s);
 int runMonitor(CliSession &s);
 int runDump(CliSession &s);
+int runProfile(CliSession &s);
 int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err);
 
 // "ST1 350 °C", "HD1 1.60 s", "D12 disabled", "CT1 2 T245", "SMN DME-2C".

@@ -6,10 +6,10 @@ namespace tipscope::cli {
 
 namespace {
 
-const QStringList kCommands = {QStringLiteral("detect"),  QStringLiteral("read"),
-                               QStringLiteral("write"),   QStringLiteral("send"),
-                               QStringLiteral("monitor"), QStringLiteral("dump"),
-                               QStringLiteral("commands")};
+const QStringList kCommands = {QStringLiteral("detect"),   QStringLiteral("read"),
+                               QStringLiteral("write"),    QStringLiteral("send"),
+                               QStringLiteral("monitor"),  QStringLiteral("dump"),
+                               QStringLiteral("commands"), QStringLiteral("profile")};
 // Command options that take a value; all others are flags.
 const QStringList kValueOptions = {QStringLiteral("interval"), QStringLiteral("duration"),
                                    QStringLiteral("csv"), QStringLiteral("family")};
@@ -22,6 +22,7 @@ const QMap<QString, QStringList> kCommandOptions = {
      {QStringLiteral("interval"), QStringLiteral("duration"), QStringLiteral("csv")}},
     {QStringLiteral("dump"), {QStringLiteral("json")}},
     {QStringLiteral("commands"), {QStringLiteral("family")}},
+    {QStringLiteral("profile"), {QStringLiteral("force"), QStringLiteral("dry-run")}},
 };
 
 bool parseInt(const QString &text, int lo, int hi, int *out) {
@@ -36,29 +37,35 @@ bool parseInt(const QString &text, int lo, int hi, int *out) {
 } // namespace
 
 QString CliParser::usage() {
-    return tr("Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]\n"
-              "                    [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | "
-              "--no-addr]\n"
-              "                    [--timeout MS] [--retries N] [--verbose] COMMAND ...\n"
-              "\n"
-              "Commands:\n"
-              "  detect [--json] [--scan]  one line per device: \"<address or --> <model> <family> "
-              "<version>\"\n"
-              "  read CODE... [--raw]      one line per code: \"<CODE> <value> <unit>\"\n"
-              "  write CODE VALUE [--raw]  validate, send, and read back\n"
-              "  send HEX                  send a raw frame; print the answer in hex and decoded\n"
-              "  monitor [--interval MS] [--duration S] [--csv FILE]\n"
-              "                            tip temperature, setpoint, power and status per port\n"
-              "  dump [--json]             every readable parameter, counter and error\n"
-              "  commands [--family F]     the command catalog\n"
-              "\n"
-              "Without --addr or --no-addr the device is found automatically. --demo talks to the\n"
-              "built-in simulated DME station (address 01) and SFR feeder (address 10).\n"
-              "--timeout is the device turnaround added to the wire time of each request.\n"
-              "\n"
-              "Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);\n"
-              "3 the device answered NAK or a read-back differs; 4 no valid answer; 5 transport "
-              "error.\n");
+    return tr(
+        "Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]\n"
+        "                    [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | "
+        "--no-addr]\n"
+        "                    [--timeout MS] [--retries N] [--verbose] COMMAND ...\n"
+        "\n"
+        "Commands:\n"
+        "  detect [--json] [--scan]  one line per device: \"<address or --> <model> <family> "
+        "<version>\"\n"
+        "  read CODE... [--raw]      one line per code: \"<CODE> <value> <unit>\"\n"
+        "  write CODE VALUE [--raw]  validate, send, and read back\n"
+        "  send HEX                  send a raw frame; print the answer in hex and decoded\n"
+        "  monitor [--interval MS] [--duration S] [--csv FILE]\n"
+        "                            tip temperature, setpoint, power and status per port\n"
+        "  dump [--json]             every readable parameter, counter and error\n"
+        "  commands [--family F]     the command catalog\n"
+        "  profile save FILE         every writable setting of the device to a JSON profile\n"
+        "  profile diff FILE         what applying the profile would change\n"
+        "  profile apply FILE [--dry-run] [--force]\n"
+        "                            write what differs, each value read back; --dry-run lists\n"
+        "                            the frames; --force applies a profile of another family\n"
+        "\n"
+        "Without --addr or --no-addr the device is found automatically. --demo talks to the\n"
+        "built-in simulated DME station (address 01) and SFR feeder (address 10).\n"
+        "--timeout is the device turnaround added to the wire time of each request.\n"
+        "\n"
+        "Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);\n"
+        "3 the device answered NAK, or a read-back or profile check failed;\n"
+        "4 no valid answer; 5 transport error.\n");
 }
 
 std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString *error) {

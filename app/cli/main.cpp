@@ -45,5 +45,7 @@ int main(int argc, char *argv[]) {
         return runMonitor(session);
     if (c == QLatin1String("dump"))
         return runDump(session);
+    if (c == QLatin1String("profile"))
+        return runProfile(session);
     return kUsage;
 }

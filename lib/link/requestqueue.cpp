@@ -160,7 +160,16 @@ int RequestQueue::pendingCount() const {
 void RequestQueue::sendNext() {
     if (m_state != State::Idle || !m_open || !m_transport || m_current)
         return;
-    for (auto &q : m_queues) {
+    const auto hasWanted = [](const std::deque<Entry> &q) {
+        return std::any_of(q.begin(), q.end(), [](const Entry &e) { return e.wanted(); });
+    };
+    const bool pollsWaiting = hasWanted(m_queues[size_t(Priority::LivePoll)]) ||
+                              hasWanted(m_queues[size_t(Priority::Background)]);
+    const bool pollsFirst = pollsWaiting && m_urgentRun >= m_settings.urgentBurst;
+    const std::array<size_t, 4> order =
+        pollsFirst ? std::array<size_t, 4>{2, 3, 0, 1} : std::array<size_t, 4>{0, 1, 2, 3};
+    for (size_t p : order) {
+        auto &q = m_queues[p];
         while (!q.empty()) {
             Entry e = std::move(q.front());
             q.pop_front();
@@ -168,6 +177,8 @@ void RequestQueue::sendNext() {
                 ++m_stats.skipped;
                 continue;
             }
+            const bool urgent = p <= size_t(Priority::UserRead);
+            m_urgentRun = urgent && pollsWaiting ? m_urgentRun + 1 : 0;
             m_current = std::move(e);
             transmit();
             return;

@@ -14,6 +14,9 @@
 //  - Priorities: writes > user reads > live polling > background. Every write goes into the
 //    write class, first in first out, so writes are never reordered among themselves. A read
 //    identical to one still waiting in the queue joins it instead of being sent twice.
+//  - Fairness: after urgentBurst requests in a row from the two user classes while polls were
+//    waiting, one poll goes first, so a long user operation (a profile apply, a dump) cannot
+//    freeze the live values; a single user request still never waits behind more than one poll.
 //  - Deleting a Reply (or the owner it was parented to) before its request is sent withdraws
 //    the request. A lost line fails every pending request with the reason; nothing is dropped
 //    silently. Requests made while the line is closed fail at once with NotOpen.
@@ -56,6 +59,7 @@ struct Request {
 struct QueueSettings {
     int robotAddress = 0;
     int turnaroundMs = 100;
+    int urgentBurst = 3; // user requests in a row before a waiting poll gets one turn
     int retries = 2;
     int interFrameGapMs = 0;
 };
@@ -130,6 +134,7 @@ private:
     bool m_open = false;
     bool m_stopped = false;
     int m_timeoutRun = 0;
+    int m_urgentRun = 0;
     QTimer m_timer;
     QTimer m_gapTimer;
     protocol::FrameDecoder m_decoder;

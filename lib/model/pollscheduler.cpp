@@ -108,16 +108,29 @@ void PollScheduler::pump() {
         return;
     }
     while (m_inFlight < m_maxInFlight) {
+        // Live first by due time; every fourth slot, the most overdue of the rest first.
+        const bool othersTurn = m_slot % 4 == 3;
         Item *best = nullptr;
         for (Item &i : m_items) {
             if (i.inFlight || !i.parameter || i.dueMs > now)
                 continue;
-            if (!best || i.dueMs < best->dueMs ||
-                (i.dueMs == best->dueMs && i.pollClass < best->pollClass))
+            if (!best) {
+                best = &i;
+                continue;
+            }
+            const bool iLive = i.pollClass == PollClass::Live;
+            const bool bestLive = best->pollClass == PollClass::Live;
+            if (iLive != bestLive) {
+                if (iLive != othersTurn)
+                    best = &i;
+                continue;
+            }
+            if (i.dueMs < best->dueMs || (i.dueMs == best->dueMs && i.pollClass < best->pollClass))
                 best = &i;
         }
         if (!best)
             break;
+        ++m_slot;
         const PollClass c = best->pollClass;
         const Priority prio = c == PollClass::Live || c == PollClass::Status ? Priority::LivePoll
                                                                              : Priority::Background;

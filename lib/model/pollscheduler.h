@@ -5,10 +5,12 @@
 // settings, counters, identity. Each class has an interval; live values of ports nobody is
 // looking at are polled at the status interval instead. The scheduler is self-clocking: it keeps
 // at most maxInFlight polls in the request queue and sends the next only when one finishes, so it
-// never offers more load than the wire carries. When the wire cannot keep up, every value is
-// polled earliest-due-first and simply updates less often; Parameter::achievedRateHz() says how
-// often. Polls use the queue's polling and background priorities, so user writes and reads
-// always go first. A line that is not open pauses polling for a second at a time.
+// never offers more load than the wire carries. Due live values go first, but every fourth poll
+// goes to the most overdue other value, so a burst of settings or counters (a page opening)
+// cannot freeze the live curves and live values cannot starve the rest. When the wire cannot
+// keep up, values simply update less often; Parameter::achievedRateHz() says how often. Polls use
+// the queue's polling and background priorities, so user writes and reads always go first. A line
+// that is not open pauses polling for a second at a time.
 #pragma once
 
 #include "parameter.h"
@@ -68,6 +70,7 @@ private:
     int m_intervals[5] = {250, 2000, 0, 60000, 0};
     int m_maxInFlight = 2;
     int m_inFlight = 0;
+    int m_slot = 0;
     bool m_running = false;
     qint64 m_holdUntilMs = 0;
     qint64 m_done = 0;

@@ -50,6 +50,7 @@ private Q_SLOTS:
     void sendPrintsTheAnswerInHexAndDecoded();
     void monitorSurvivesAnUnplugAndResumes();
     void usageErrorsAreExitOne();
+    void profileSavesDiffsAndAppliesWithReadBack();
 
 private:
     // Starts the simulator on one end of a fresh socat pair; returns the host end.
@@ -237,6 +238,41 @@ void TestCli::usageErrorsAreExitOne() {
     QCOMPARE(v.exitCode, 0);
     QVERIFY(v.out.startsWith(QStringLiteral("tipscope-cli ")));
     QVERIFY(runCli({"--help"}).out.contains(QStringLiteral("Exit codes")));
+}
+
+void TestCli::profileSavesDiffsAndAppliesWithReadBack() {
+    const QString port = startSim({"--model", "DDR"});
+    QVERIFY(!port.isEmpty());
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("ddr.json"));
+    const Run saved = runCli({"--port", port, "profile", "save", file});
+    QCOMPARE(saved.exitCode, 0);
+    QVERIFY2(saved.out.contains(QStringLiteral("saved")), qPrintable(saved.out + saved.err));
+    QCOMPARE(runCli({"--port", port, "write", "PLM", "800"}).exitCode, 0);
+    QCOMPARE(runCli({"--port", port, "write", "A22", "-5"}).exitCode, 0);
+    const Run diff = runCli({"--port", port, "profile", "diff", file});
+    QCOMPARE(diff.exitCode, 0);
+    QVERIFY2(diff.out.contains(QStringLiteral("2 difference(s)")), qPrintable(diff.out));
+    const Run dry = runCli({"--port", port, "profile", "apply", "--dry-run", file});
+    QVERIFY(dry.out.contains(QStringLiteral("would send 02 57 50 4C 4D 30 31 30 30 30")));
+    const Run applied = runCli({"--port", port, "profile", "apply", file});
+    QCOMPARE(applied.exitCode, 0);
+    QVERIFY2(applied.out.contains(QStringLiteral("2 changed")), qPrintable(applied.out));
+    QVERIFY(runCli({"--port", port, "profile", "diff", file})
+                .out.contains(QStringLiteral("0 difference(s)")));
+
+    QFile bad(dir.filePath(QStringLiteral("bad.json")));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write(
+        R"({"format":"tipscope-profile","schema":1,"family":"DDR","values":{"PLM":"01001"}})");
+    bad.close();
+    const QString before = m_sim->command("stats");
+    const Run refused = runCli({"--port", port, "profile", "apply", bad.fileName()});
+    QCOMPARE(refused.exitCode, 2);
+    QVERIFY2(refused.err.contains(QStringLiteral("PLM")), qPrintable(refused.err));
+    const QString after = m_sim->command("stats");
+    QCOMPARE(after.section(QStringLiteral("writes "), 1).section(' ', 0, 0),
+             before.section(QStringLiteral("writes "), 1).section(' ', 0, 0));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

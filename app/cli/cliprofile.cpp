@@ -1,0 +1,116 @@
+// tipscope-cli profile save|diff|apply FILE: the technicians' profiles from a script.
+#include "clicommands.h"
+
+#include "model/feedermodel.h"
+#include "model/profileapplier.h"
+#include "model/stationmodel.h"
+
+#include <QEventLoop>
+
+namespace tipscope::cli {
+
+using namespace tipscope::link;
+using namespace tipscope::model;
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(CliProfile)
+};
+
+std::unique_ptr<DeviceModel> modelFor(CliSession &s) {
+    const DeviceInfo *d = s.firstStation();
+    if (!d && !s.devices().isEmpty())
+        d = &s.devices().first();
+    if (!d)
+        return nullptr;
+    if (protocol::Catalog::builtin().family(d->family)->isFeeder())
+        return std::make_unique<FeederModel>(s.line().queue(), *d);
+    return std::make_unique<StationModel>(s.line().queue(), *d);
+}
+
+void waitIdle(CliSession &s) {
+    QEventLoop loop;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+        if (s.line().queue().pendingCount() == 0)
+            loop.quit();
+    });
+    poll.start(10);
+    loop.exec();
+}
+
+int save(CliSession &s, DeviceModel &device, const QString &path) {
+    device.refreshAll(Priority::UserRead);
+    waitIdle(s);
+    QStringList missing;
+    const Profile p = Profile::capture(device, &missing);
+    if (!missing.isEmpty()) {
+        s.err() << Tr::tr("tipscope-cli: could not read %1; no profile written")
+                       .arg(missing.join(QLatin1Char(' ')))
+                << Qt::endl;
+        return s.line().state() == Line::State::Open ? kNoAnswer : kTransport;
+    }
+    QString error;
+    if (!p.save(path, &error)) {
+        s.err() << "tipscope-cli: " << error << Qt::endl;
+        return kUsage;
+    }
+    s.out() << Tr::tr("saved %1 settings of %2 to %3")
+                   .arg(p.values.size())
+                   .arg(device.displayName(), path)
+            << Qt::endl;
+    return kOk;
+}
+
+} // namespace
+
+int runProfile(CliSession &s) {
+    const QStringList &args = s.options().args;
+    static const QStringList verbs = {QStringLiteral("save"), QStringLiteral("diff"),
+                                      QStringLiteral("apply")};
+    if (args.size() != 2 || !verbs.contains(args.at(0))) {
+        s.err() << Tr::tr("tipscope-cli: profile takes save FILE, diff FILE or apply FILE")
+                << Qt::endl;
+        return kUsage;
+    }
+    const QString verb = args.at(0);
+    const QString path = args.at(1);
+    std::optional<Profile> profile;
+    if (verb != QLatin1String("save")) {
+        QString error;
+        profile = Profile::load(path, &error);
+        if (!profile) {
+            s.err() << "tipscope-cli: " << error << Qt::endl;
+            return kRefused;
+        }
+    }
+    if (const int rc = s.resolveDevices(); rc != kOk)
+        return rc;
+    auto device = modelFor(s);
+    if (!device)
+        return kNoAnswer;
+    if (verb == QLatin1String("save"))
+        return save(s, *device, path);
+    const bool dryRun = s.options().flags.contains(QStringLiteral("dry-run"));
+    const auto mode = verb == QLatin1String("diff") ? ProfileApplier::Mode::Diff
+                      : dryRun                      ? ProfileApplier::Mode::DryRun
+                                                    : ProfileApplier::Mode::Apply;
+    ProfileApplier applier(*device, *profile, mode,
+                           s.options().flags.contains(QStringLiteral("force")));
+    QEventLoop loop;
+    QObject::connect(&applier, &ProfileApplier::finished, &loop, &QEventLoop::quit);
+    applier.start();
+    loop.exec();
+    const ApplyReport &r = applier.report();
+    if (r.refused) {
+        s.err() << "tipscope-cli: " << r.text() << Qt::endl;
+        return kRefused;
+    }
+    s.out() << r.text() << Qt::endl;
+    if (s.line().state() != Line::State::Open)
+        return kTransport;
+    return r.failedCount() > 0 ? kNak : kOk;
+}
+
+} // namespace tipscope::cli

@@ -1,0 +1,84 @@
+#include "telemetry.h"
+
+#include <QLoggingCategory>
+
+namespace tipscope::model {
+
+namespace {
+Q_LOGGING_CATEGORY(lcTelemetry, "tipscope.model.telemetry")
+} // namespace
+
+Telemetry::Telemetry(QObject *parent)
+    : QObject(parent)
+{
+    // Single shot, started by the first sample after a quiet spell: samples arriving while it
+    // runs ride along, so a burst costs one signal and a steady stream at most one per interval.
+    m_coalesceTimer.setSingleShot(true);
+    setMaxSignalsPerSecond(kDefaultMaxSignalsPerSecond);
+    connect(&m_coalesceTimer, &QTimer::timeout, this, &Telemetry::emitSamplesAdded);
+}
+
+const TelemetryBuffer &Telemetry::ensureBuffer(const QString &key, const QStringList &series,
+                                               int capacity)
+{
+    auto it = m_entries.find(key);
+    if (it == m_entries.end())
+        return m_entries.try_emplace(key, TelemetryBuffer(series, capacity)).first->second.buffer;
+    const TelemetryBuffer &existing = it->second.buffer;
+    if (existing.seriesNames() != series || existing.capacity() != qMax(1, capacity))
+        qCWarning(lcTelemetry) << "buffer" << key << "already exists with series"
+                               << existing.seriesNames() << "and capacity" << existing.capacity()
+                               << "; keeping it rather than" << series << capacity;
+    return existing;
+}
+
+const TelemetryBuffer *Telemetry::buffer(const QString &key) const
+{
+    const auto it = m_entries.find(key);
+    return it == m_entries.end() ? nullptr : &it->second.buffer;
+}
+
+QStringList Telemetry::keys() const
+{
+    QStringList result;
+    result.reserve(qsizetype(m_entries.size()));
+    for (const auto &[key, entry] : m_entries)
+        result.append(key);
+    return result;
+}
+
+AppendResult Telemetry::append(const QString &key, qint64 timeMs, const qint32 *values,
+                               qsizetype count)
+{
+    const auto it = m_entries.find(key);
+    if (it == m_entries.end())
+        return AppendResult::UnknownKey;
+    const AppendResult result = it->second.buffer.append(timeMs, values, count);
+    if (result == AppendResult::Accepted) {
+        it->second.changed = true;
+        if (!m_coalesceTimer.isActive())
+            m_coalesceTimer.start();
+    }
+    return result;
+}
+
+void Telemetry::setMaxSignalsPerSecond(int rate)
+{
+    m_maxSignalsPerSecond = qBound(1, rate, 1000);
+    // Rounded up so that the rate is never exceeded.
+    m_coalesceTimer.setInterval((1000 + m_maxSignalsPerSecond - 1) / m_maxSignalsPerSecond);
+}
+
+void Telemetry::emitSamplesAdded()
+{
+    QStringList changed;
+    for (auto &[key, entry] : m_entries) {
+        if (entry.changed)
+            changed.append(key);
+        entry.changed = false;
+    }
+    if (!changed.isEmpty())
+        Q_EMIT samplesAdded(changed);
+}
+
+} // namespace tipscope::model

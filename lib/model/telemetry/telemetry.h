@@ -1,0 +1,73 @@
+// Telemetry: the sample histories of every port and feeder, one TelemetryBuffer per key
+// ("01/port1", "10/feeder"), and a bounded-rate notice that samples arrived.
+//
+// Writers (the port and feeder models) call ensureBuffer() once with the series they record,
+// then append() each reading; every write goes through Telemetry so that it can tell views.
+// Views read the buffers through buffer() and redraw on samplesAdded(), which is coalesced by a
+// timer: it comes at most maxSignalsPerSecond() times a second (20 by default) and at most one
+// interval after the first sample it reports, however fast samples arrive. Refused samples (out
+// of order, wrong value count, unknown key) do not trigger it.
+//
+// Telemetry owns the buffers; a buffer lives as long as the Telemetry object, so references
+// from ensureBuffer() and buffer() stay valid. Not thread-safe: use it from its own thread.
+#pragma once
+
+#include "model/telemetry/telemetrybuffer.h"
+
+#include <QObject>
+#include <QTimer>
+#include <map>
+
+namespace tipscope::model {
+
+class Telemetry : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kDefaultMaxSignalsPerSecond = 20;
+
+    explicit Telemetry(QObject *parent = nullptr);
+
+    // The buffer of `key`, created with `series` and `capacity` if it does not exist yet. An
+    // existing buffer keeps its series and capacity (a different request is logged).
+    const TelemetryBuffer &ensureBuffer(const QString &key, const QStringList &series,
+                                        int capacity = TelemetryBuffer::kDefaultCapacity);
+    // nullptr when no buffer of that key exists.
+    [[nodiscard]] const TelemetryBuffer *buffer(const QString &key) const;
+    // Sorted.
+    [[nodiscard]] QStringList keys() const;
+
+    AppendResult append(const QString &key, qint64 timeMs, const qint32 *values, qsizetype count);
+    AppendResult append(const QString &key, qint64 timeMs, std::initializer_list<qint32> values)
+    {
+        return append(key, timeMs, values.begin(), qsizetype(values.size()));
+    }
+    AppendResult append(const QString &key, qint64 timeMs, const QList<qint32> &values)
+    {
+        return append(key, timeMs, values.constData(), values.size());
+    }
+
+    // Clamped to 1..1000.
+    void setMaxSignalsPerSecond(int rate);
+    [[nodiscard]] int maxSignalsPerSecond() const { return m_maxSignalsPerSecond; }
+
+Q_SIGNALS:
+    // `keys` (sorted) are the buffers that accepted samples since the previous emission.
+    void samplesAdded(const QStringList &keys);
+
+private:
+    struct Entry {
+        explicit Entry(TelemetryBuffer b) : buffer(std::move(b)) {}
+        TelemetryBuffer buffer;
+        bool changed = false;
+    };
+
+    void emitSamplesAdded();
+
+    // std::map: nodes never move, so handed-out buffer references stay valid.
+    std::map<QString, Entry> m_entries;
+    QTimer m_coalesceTimer;
+    int m_maxSignalsPerSecond = kDefaultMaxSignalsPerSecond;
+};
+
+} // namespace tipscope::model
