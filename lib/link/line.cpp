@@ -75,6 +75,10 @@ void Line::close() {
 }
 
 void Line::onOpened() {
+    if (m_state == State::Closed) { // closed by the user while the open was on its way
+        m_transport->close();
+        return;
+    }
     if (m_everOpened)
         ++m_reconnects;
     m_everOpened = true;

@@ -13,8 +13,9 @@ struct LinkStats {
     qint64 sent = 0;     // frames written, retries included
     qint64 answered = 0; // requests that ended with a valid A or N answer
     qint64 timeouts = 0;
-    qint64 corrupted = 0; // BCC or format errors in received data
-    qint64 stray = 0;     // valid frames that matched no outstanding request
+    qint64 probesUnanswered = 0; // discovery probes to empty addresses: expected silence
+    qint64 corrupted = 0;        // BCC or format errors in received data
+    qint64 stray = 0;            // valid frames that matched no outstanding request
     qint64 retries = 0;
     qint64 skipped = 0; // requests withdrawn before they were sent
     qint64 coalesced = 0;

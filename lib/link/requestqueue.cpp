@@ -304,24 +304,30 @@ bool RequestQueue::canRetry(const Entry &e) const {
 void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
     m_timer.stop();
     Entry &e = *m_current;
-    if (error == ReplyError::Timeout) {
-        ++m_stats.timeouts;
-        if (!e.request.probe)
-            ++m_timeoutRun;
+    const bool timeout = error == ReplyError::Timeout;
+    if (timeout) {
+        ++(e.request.probe ? m_stats.probesUnanswered : m_stats.timeouts);
         m_tap.note(
             QStringLiteral("%1: %2 (attempt %3)").arg(e.frame.toString(), why).arg(e.attempts));
+    } else {
+        m_timeoutRun = 0; // a garbled answer still proves the cable and the device are there
     }
-    const int run = m_timeoutRun;
     if (canRetry(e)) {
         m_state = State::Gap;
         m_gapTimer.start(m_settings.interFrameGapMs);
-    } else {
-        QString text = QStringLiteral("%1 after %2 attempt(s)").arg(why).arg(e.attempts);
-        if (e.request.header == Header::Write && !e.request.repeatable)
-            text += QStringLiteral("; the device may have carried it out: check before repeating");
-        finishCurrent(error, text);
+        return;
     }
-    if (error == ReplyError::Timeout)
+    // The streak counts requests that got no answer at all, not attempts; a probe's silence is
+    // expected and counts for nothing.
+    const bool lengthensStreak = timeout && !e.request.probe;
+    if (lengthensStreak)
+        ++m_timeoutRun;
+    const int run = m_timeoutRun;
+    QString text = QStringLiteral("%1 after %2 attempt(s)").arg(why).arg(e.attempts);
+    if (e.request.header == Header::Write && !e.request.repeatable)
+        text += QStringLiteral("; the device may have carried it out: check before repeating");
+    finishCurrent(error, text);
+    if (lengthensStreak)
         Q_EMIT timeoutStreak(run);
 }
 

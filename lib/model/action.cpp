@@ -1,6 +1,7 @@
 #include "action.h"
 
 #include "devicemodel.h"
+#include "parameter.h"
 
 #include "protocol/valuecodec.h"
 
@@ -41,6 +42,9 @@ QString Action::trigger(Confirmation confirmation, qint64 argument) {
         m_running = false;
         if (reply->ok()) {
             m_device.logWrite(Tr::tr("%1 done").arg(name()));
+            // A reset's result is worth seeing at once (ECV, CPP, CFP, CTP share their code).
+            if (Parameter *same = m_device.parameter(code()))
+                same->refresh();
             Q_EMIT finished(true, {});
         } else {
             m_device.logCommunication(name(), reply->errorString());

@@ -197,6 +197,7 @@ void Parameter::deviceReported(const QByteArray &data) {
     m_raw = data;
     if (m_state == State::Unknown || m_state == State::Reading)
         setState(m_edit ? State::Edited : State::InSync);
+    Q_EMIT updated();
     if (changed) {
         Q_EMIT valueChanged();
         Q_EMIT m_device.parameterChanged(this);
@@ -256,8 +257,11 @@ void Parameter::readBack(const QByteArray &written) {
             return;
         }
         m_edit.reset();
+        m_unsavedWrite = meta().isVolatile;
+        m_unsavedWrite = meta().isVolatile;
         Q_EMIT editChanged();
         setState(State::InSync);
+        Q_EMIT stateChanged();
         m_device.logWrite(Tr::tr("%1 set to %2").arg(meta().name, displayText()));
         Q_EMIT writeFinished(true, {});
     });
@@ -270,12 +274,12 @@ void Parameter::fail(const QString &reason) {
 }
 
 bool Parameter::isSavedToMemory() const {
-    return !meta().isVolatile || (m_saved && m_saved == m_raw);
+    return !meta().isVolatile || !m_unsavedWrite;
 }
 
 void Parameter::markSaved() {
-    m_saved = m_raw;
-    Q_EMIT valueChanged();
+    m_unsavedWrite = false;
+    Q_EMIT stateChanged();
 }
 
 } // namespace tipscope::model

@@ -67,12 +67,14 @@ public:
     void apply();
     // The value the device reported (a poll or a read-back); never written back.
     void deviceReported(const QByteArray &data);
-    // For volatile values (W-STx): whether the shown value is the one saved with W-NVS.
+    // For volatile values (W-STx, the feeder's mode, speed, length): false after TipScope wrote
+    // a new value until W-NVS saved it. What the device held before TipScope came cannot be known.
     [[nodiscard]] bool isSavedToMemory() const;
     void markSaved();
 
 Q_SIGNALS:
     void valueChanged();
+    void updated(); // every reading, changed or not (telemetry samples)
     void stateChanged();
     void editChanged();
     void writeFinished(bool ok, const QString &reason);
@@ -88,7 +90,7 @@ private:
     std::optional<protocol::Value> m_value;
     QByteArray m_raw;
     std::optional<qint64> m_edit;
-    std::optional<QByteArray> m_saved;
+    bool m_unsavedWrite = false;
     State m_state = State::Unknown;
     QString m_failure;
     QDateTime m_lastUpdate;

@@ -125,7 +125,12 @@ void PollScheduler::pump() {
                     best = &i;
                 continue;
             }
-            if (i.dueMs < best->dueMs || (i.dueMs == best->dueMs && i.pollClass < best->pollClass))
+            // Among the rest, errors and status come before settings, counters and identity.
+            const bool earlier =
+                iLive ? i.dueMs < best->dueMs
+                      : i.pollClass < best->pollClass ||
+                            (i.pollClass == best->pollClass && i.dueMs < best->dueMs);
+            if (earlier)
                 best = &i;
         }
         if (!best)

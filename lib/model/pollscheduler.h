@@ -6,8 +6,9 @@
 // looking at are polled at the status interval instead. The scheduler is self-clocking: it keeps
 // at most maxInFlight polls in the request queue and sends the next only when one finishes, so it
 // never offers more load than the wire carries. Due live values go first, but every fourth poll
-// goes to the most overdue other value, so a burst of settings or counters (a page opening)
-// cannot freeze the live curves and live values cannot starve the rest. When the wire cannot
+// goes to another value (errors and status before settings, counters and identity), so a burst
+// of settings (a page opening) cannot freeze the live curves and live values cannot starve the
+// rest. When the wire cannot
 // keep up, values simply update less often; Parameter::achievedRateHz() says how often. Polls use
 // the queue's polling and background priorities, so user writes and reads always go first. A line
 // that is not open pauses polling for a second at a time.

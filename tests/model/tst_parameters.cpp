@@ -225,6 +225,7 @@ void TestParameters::saveToMemoryMarksSelectedTemperaturesSaved() {
     QVERIFY(done.wait());
     QVERIFY(st1->isSavedToMemory());
     QVERIFY(st->parameter("MAT")->isSavedToMemory()); // not volatile
+    QVERIFY(st->parameter("ST2")->isSavedToMemory()); // TipScope did not change it
 }
 
 void TestParameters::portStatusDecodesFlagsAndRobotControlsWork() {

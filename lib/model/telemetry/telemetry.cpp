@@ -9,8 +9,7 @@ Q_LOGGING_CATEGORY(lcTelemetry, "tipscope.model.telemetry")
 } // namespace
 
 Telemetry::Telemetry(QObject *parent)
-    : QObject(parent)
-{
+    : QObject(parent) {
     // Single shot, started by the first sample after a quiet spell: samples arriving while it
     // runs ride along, so a burst costs one signal and a steady stream at most one per interval.
     m_coalesceTimer.setSingleShot(true);
@@ -19,8 +18,7 @@ Telemetry::Telemetry(QObject *parent)
 }
 
 const TelemetryBuffer &Telemetry::ensureBuffer(const QString &key, const QStringList &series,
-                                               int capacity)
-{
+                                               int capacity) {
     auto it = m_entries.find(key);
     if (it == m_entries.end())
         return m_entries.try_emplace(key, TelemetryBuffer(series, capacity)).first->second.buffer;
@@ -32,14 +30,12 @@ const TelemetryBuffer &Telemetry::ensureBuffer(const QString &key, const QString
     return existing;
 }
 
-const TelemetryBuffer *Telemetry::buffer(const QString &key) const
-{
+const TelemetryBuffer *Telemetry::buffer(const QString &key) const {
     const auto it = m_entries.find(key);
     return it == m_entries.end() ? nullptr : &it->second.buffer;
 }
 
-QStringList Telemetry::keys() const
-{
+QStringList Telemetry::keys() const {
     QStringList result;
     result.reserve(qsizetype(m_entries.size()));
     for (const auto &[key, entry] : m_entries)
@@ -48,8 +44,7 @@ QStringList Telemetry::keys() const
 }
 
 AppendResult Telemetry::append(const QString &key, qint64 timeMs, const qint32 *values,
-                               qsizetype count)
-{
+                               qsizetype count) {
     const auto it = m_entries.find(key);
     if (it == m_entries.end())
         return AppendResult::UnknownKey;
@@ -62,15 +57,13 @@ AppendResult Telemetry::append(const QString &key, qint64 timeMs, const qint32 *
     return result;
 }
 
-void Telemetry::setMaxSignalsPerSecond(int rate)
-{
+void Telemetry::setMaxSignalsPerSecond(int rate) {
     m_maxSignalsPerSecond = qBound(1, rate, 1000);
     // Rounded up so that the rate is never exceeded.
     m_coalesceTimer.setInterval((1000 + m_maxSignalsPerSecond - 1) / m_maxSignalsPerSecond);
 }
 
-void Telemetry::emitSamplesAdded()
-{
+void Telemetry::emitSamplesAdded() {
     QStringList changed;
     for (auto &[key, entry] : m_entries) {
         if (entry.changed)

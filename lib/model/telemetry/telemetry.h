@@ -20,8 +20,7 @@
 
 namespace tipscope::model {
 
-class Telemetry : public QObject
-{
+class Telemetry : public QObject {
     Q_OBJECT
 public:
     static constexpr int kDefaultMaxSignalsPerSecond = 20;
@@ -38,12 +37,10 @@ public:
     [[nodiscard]] QStringList keys() const;
 
     AppendResult append(const QString &key, qint64 timeMs, const qint32 *values, qsizetype count);
-    AppendResult append(const QString &key, qint64 timeMs, std::initializer_list<qint32> values)
-    {
+    AppendResult append(const QString &key, qint64 timeMs, std::initializer_list<qint32> values) {
         return append(key, timeMs, values.begin(), qsizetype(values.size()));
     }
-    AppendResult append(const QString &key, qint64 timeMs, const QList<qint32> &values)
-    {
+    AppendResult append(const QString &key, qint64 timeMs, const QList<qint32> &values) {
         return append(key, timeMs, values.constData(), values.size());
     }
 
@@ -57,7 +54,8 @@ Q_SIGNALS:
 
 private:
     struct Entry {
-        explicit Entry(TelemetryBuffer b) : buffer(std::move(b)) {}
+        explicit Entry(TelemetryBuffer b)
+            : buffer(std::move(b)) {}
         TelemetryBuffer buffer;
         bool changed = false;
     };

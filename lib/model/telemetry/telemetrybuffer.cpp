@@ -16,8 +16,7 @@ constexpr size_t kFirstReserve = 1024;
 
 // Grows `v` ahead of a push_back the way the sample columns grow: doubling, but never past
 // `limit`, so that a full buffer holds exactly what it needs and memoryBytes() stays honest.
-template <typename T> void reserveForOneMore(std::vector<T> &v, size_t limit, size_t first)
-{
+template <typename T> void reserveForOneMore(std::vector<T> &v, size_t limit, size_t first) {
     if (v.size() < v.capacity())
         return;
     v.reserve(qMin(limit, qMax(first, v.capacity() * 2)));
@@ -28,28 +27,25 @@ template <typename T> void reserveForOneMore(std::vector<T> &v, size_t limit, si
 TelemetryBuffer::TelemetryBuffer(const QStringList &series, int capacity)
     : m_names(series)
     , m_capacity(qMax(1, capacity))
-    , m_columns(size_t(series.size()))
-{
+    , m_columns(size_t(series.size())) {
     // A level whose block is longer than the ring could never hold a whole block.
     for (int shift = kLevelShift; shift < 31 && (qint64(1) << shift) <= m_capacity;
          shift += kLevelShift) {
         const qint64 blockSize = qint64(1) << shift;
         Level level;
         level.shift = shift;
-        // One slot more than the ring spans, so the block being filled never reuses the slot
-        // of a block that still has samples in the ring.
-        level.slots = (m_capacity + blockSize - 1) / blockSize + 1;
+        // As many slots as blocks the ring spans: a block being started takes the slot of one
+        // whose first sample has just left the ring, and such a block is never used whole.
+        level.slots = (m_capacity + blockSize - 1) / blockSize;
         m_levels.push_back(std::move(level));
     }
 }
 
-qint64 TelemetryBuffer::firstTime() const
-{
+qint64 TelemetryBuffer::firstTime() const {
     return isEmpty() ? 0 : timeAtIndex(oldestIndex());
 }
 
-AppendResult TelemetryBuffer::append(qint64 timeMs, const qint32 *values, qsizetype count)
-{
+AppendResult TelemetryBuffer::append(qint64 timeMs, const qint32 *values, qsizetype count) {
     if (count != seriesCount()) {
         ++m_malformed;
         return AppendResult::WrongValueCount;
@@ -77,8 +73,7 @@ AppendResult TelemetryBuffer::append(qint64 timeMs, const qint32 *values, qsizet
     return AppendResult::Accepted;
 }
 
-void TelemetryBuffer::growStorage()
-{
+void TelemetryBuffer::growStorage() {
     const size_t limit = size_t(m_capacity);
     reserveForOneMore(m_times, limit, kFirstReserve);
     for (Column &column : m_columns)
@@ -87,8 +82,7 @@ void TelemetryBuffer::growStorage()
 
 // Summaries are keyed by absolute sample number, so the ring overwriting a sample needs no
 // repair here: a block that lost samples is simply never used whole by a query.
-void TelemetryBuffer::updateSummaries(qint64 index, const qint32 *values)
-{
+void TelemetryBuffer::updateSummaries(qint64 index, const qint32 *values) {
     const size_t series = m_columns.size();
     for (Level &level : m_levels) {
         const qint64 block = index >> level.shift;
@@ -124,8 +118,7 @@ void TelemetryBuffer::updateSummaries(qint64 index, const qint32 *values)
     }
 }
 
-qint64 TelemetryBuffer::memoryBytes() const
-{
+qint64 TelemetryBuffer::memoryBytes() const {
     qint64 bytes = qint64(sizeof(*this));
     bytes += qint64(m_times.capacity() * sizeof(qint64));
     bytes += qint64(m_columns.capacity() * sizeof(Column));
@@ -137,18 +130,16 @@ qint64 TelemetryBuffer::memoryBytes() const
     return bytes;
 }
 
-double TelemetryBuffer::bytesPerSamplePerSeries() const
-{
+double TelemetryBuffer::bytesPerSamplePerSeries() const {
     const auto slots = qint64(m_times.capacity());
     if (slots == 0)
         return 0;
     return double(memoryBytes()) / double(slots * qMax(1, seriesCount()));
 }
 
-void TelemetryBuffer::Column::store(qsizetype pos, qint32 value)
-{
-    const bool fitsNarrow = value >= std::numeric_limits<qint16>::min() &&
-                            value <= std::numeric_limits<qint16>::max();
+void TelemetryBuffer::Column::store(qsizetype pos, qint32 value) {
+    const bool fitsNarrow =
+        value >= std::numeric_limits<qint16>::min() && value <= std::numeric_limits<qint16>::max();
     if (!m_isWide && !fitsNarrow)
         widen();
     if (m_isWide) {
@@ -164,23 +155,20 @@ void TelemetryBuffer::Column::store(qsizetype pos, qint32 value)
     }
 }
 
-void TelemetryBuffer::Column::reserve(qsizetype slots)
-{
+void TelemetryBuffer::Column::reserve(qsizetype slots) {
     if (m_isWide)
         m_wide.reserve(size_t(slots));
     else
         m_narrow.reserve(size_t(slots));
 }
 
-qint64 TelemetryBuffer::Column::bytes() const
-{
+qint64 TelemetryBuffer::Column::bytes() const {
     return qint64(m_narrow.capacity() * sizeof(qint16) + m_wide.capacity() * sizeof(qint32));
 }
 
 // Once per series at most: temperatures, per mille and status codes fit in 16 bits, but a
 // value that does not must be kept exactly rather than clipped.
-void TelemetryBuffer::Column::widen()
-{
+void TelemetryBuffer::Column::widen() {
     m_wide.reserve(m_narrow.capacity());
     m_wide.assign(m_narrow.begin(), m_narrow.end());
     std::vector<qint16>().swap(m_narrow);

@@ -9,9 +9,10 @@
 //
 // Memory: one qint64 per sample for the time, one int16 per series and sample (a column widens
 // to int32 for good the first time a value needs it, so no value is ever clipped), and summaries
-// of min, max and sum per block of 64, 4096 and 262144 samples. That is at most 12.4 bytes per
-// sample per series, and about 4.4 for four int16 series; `memoryBytes()` counts the real
-// allocation.
+// of min, max and sum per block of 64, 4096 and 262144 samples (the levels the capacity can
+// hold). For a day-sized buffer that is about 4.4 bytes per sample per series with four int16
+// series and 12.4 at worst (one int32 series), plus a few hundred bytes of fixed overhead;
+// `memoryBytes()` counts the real allocation.
 //
 // Queries: `decimate()` gives min and max per time column for a chart, exact (a one-sample spike
 // is never lost), at a cost set by the number of buckets rather than the length of the history:
@@ -49,8 +50,7 @@ struct MinMaxBucket {
     int count = 0; // samples in the column
 };
 
-class TelemetryBuffer
-{
+class TelemetryBuffer {
 public:
     // 24 hours at 10 Hz.
     static constexpr int kDefaultCapacity = 864000;
@@ -88,12 +88,10 @@ public:
 
     // `values` holds one value per series, in the order of seriesNames().
     AppendResult append(qint64 timeMs, const qint32 *values, qsizetype count);
-    AppendResult append(qint64 timeMs, std::initializer_list<qint32> values)
-    {
+    AppendResult append(qint64 timeMs, std::initializer_list<qint32> values) {
         return append(timeMs, values.begin(), qsizetype(values.size()));
     }
-    AppendResult append(qint64 timeMs, const QList<qint32> &values)
-    {
+    AppendResult append(qint64 timeMs, const QList<qint32> &values) {
         return append(timeMs, values.constData(), values.size());
     }
 
@@ -103,8 +101,7 @@ public:
     [[nodiscard]] QList<Sample> samples(int series, qint64 t0, qint64 t1) const;
     // [t0, t1) split into `buckets` equal time columns; empty columns are left out, so gaps in
     // the data stay visible as gaps.
-    [[nodiscard]] QList<MinMaxBucket> decimate(int series, qint64 t0, qint64 t1,
-                                               int buckets) const;
+    [[nodiscard]] QList<MinMaxBucket> decimate(int series, qint64 t0, qint64 t1, int buckets) const;
     [[nodiscard]] Stats windowStats(int series, qint64 t0, qint64 t1) const;
 
     // Heap bytes allocated for samples and summaries plus the object itself (series names aside).
@@ -114,11 +111,9 @@ public:
 
 private:
     // One series' values by ring position: int16 until a value does not fit, then int32.
-    class Column
-    {
+    class Column {
     public:
-        [[nodiscard]] qint32 at(qsizetype pos) const
-        {
+        [[nodiscard]] qint32 at(qsizetype pos) const {
             return m_isWide ? m_wide[size_t(pos)] : qint32(m_narrow[size_t(pos)]);
         }
         void store(qsizetype pos, qint32 value);
@@ -159,11 +154,13 @@ private:
 
     // Ring position of a held sample. Cheaper than index % capacity, which dominated the binary
     // searches: a held sample is either in the current lap of the ring or in the previous one.
-    [[nodiscard]] qsizetype position(qint64 index) const
-    {
-        return qsizetype(index >= m_lapStart ? index - m_lapStart : index - m_lapStart + m_capacity);
+    [[nodiscard]] qsizetype position(qint64 index) const {
+        return qsizetype(index >= m_lapStart ? index - m_lapStart
+                                             : index - m_lapStart + m_capacity);
     }
-    [[nodiscard]] qint64 timeAtIndex(qint64 index) const { return m_times[size_t(position(index))]; }
+    [[nodiscard]] qint64 timeAtIndex(qint64 index) const {
+        return m_times[size_t(position(index))];
+    }
     [[nodiscard]] qint64 oldestIndex() const { return m_total - size(); }
     [[nodiscard]] bool isSeries(int series) const { return series >= 0 && series < seriesCount(); }
 

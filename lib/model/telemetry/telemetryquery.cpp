@@ -14,8 +14,7 @@ constexpr qint64 kFinestBlockMask = 63;
 
 } // namespace
 
-qint64 TelemetryBuffer::lowerBound(qint64 timeMs, qint64 from, qint64 to) const
-{
+qint64 TelemetryBuffer::lowerBound(qint64 timeMs, qint64 from, qint64 to) const {
     while (from < to) {
         const qint64 mid = from + (to - from) / 2;
         if (timeAtIndex(mid) < timeMs)
@@ -26,8 +25,7 @@ qint64 TelemetryBuffer::lowerBound(qint64 timeMs, qint64 from, qint64 to) const
     return from;
 }
 
-qint64 TelemetryBuffer::upperBound(qint64 timeMs, qint64 from, qint64 to) const
-{
+qint64 TelemetryBuffer::upperBound(qint64 timeMs, qint64 from, qint64 to) const {
     while (from < to) {
         const qint64 mid = from + (to - from) / 2;
         if (timeAtIndex(mid) <= timeMs)
@@ -41,8 +39,7 @@ qint64 TelemetryBuffer::upperBound(qint64 timeMs, qint64 from, qint64 to) const
 // The next bucket edge is usually a few hundred samples past the previous one: probing doubling
 // steps from there stays within cache lines already fetched, where a bisection of the whole
 // history would miss the cache on most of its first probes.
-qint64 TelemetryBuffer::gallopLowerBound(qint64 timeMs, qint64 from, qint64 to) const
-{
+qint64 TelemetryBuffer::gallopLowerBound(qint64 timeMs, qint64 from, qint64 to) const {
     qint64 step = 1;
     while (from + step < to && timeAtIndex(from + step - 1) < timeMs) {
         from += step; // everything before the probe is earlier than timeMs
@@ -51,8 +48,7 @@ qint64 TelemetryBuffer::gallopLowerBound(qint64 timeMs, qint64 from, qint64 to) 
     return lowerBound(timeMs, from, qMin(to, from + step));
 }
 
-std::optional<TelemetryBuffer::Sample> TelemetryBuffer::valueAt(int series, qint64 timeMs) const
-{
+std::optional<TelemetryBuffer::Sample> TelemetryBuffer::valueAt(int series, qint64 timeMs) const {
     if (!isSeries(series) || isEmpty())
         return std::nullopt;
     const qint64 after = upperBound(timeMs, oldestIndex(), m_total);
@@ -62,8 +58,7 @@ std::optional<TelemetryBuffer::Sample> TelemetryBuffer::valueAt(int series, qint
     return Sample{timeAtIndex(index), m_columns[size_t(series)].at(position(index))};
 }
 
-QList<TelemetryBuffer::Sample> TelemetryBuffer::samples(int series, qint64 t0, qint64 t1) const
-{
+QList<TelemetryBuffer::Sample> TelemetryBuffer::samples(int series, qint64 t0, qint64 t1) const {
     QList<Sample> result;
     if (!isSeries(series) || t1 <= t0)
         return result;
@@ -78,8 +73,7 @@ QList<TelemetryBuffer::Sample> TelemetryBuffer::samples(int series, qint64 t0, q
     return result;
 }
 
-QList<MinMaxBucket> TelemetryBuffer::decimate(int series, qint64 t0, qint64 t1, int buckets) const
-{
+QList<MinMaxBucket> TelemetryBuffer::decimate(int series, qint64 t0, qint64 t1, int buckets) const {
     QList<MinMaxBucket> result;
     if (!isSeries(series) || t1 <= t0 || buckets <= 0)
         return result;
@@ -111,8 +105,7 @@ QList<MinMaxBucket> TelemetryBuffer::decimate(int series, qint64 t0, qint64 t1, 
     return result;
 }
 
-TelemetryBuffer::Stats TelemetryBuffer::windowStats(int series, qint64 t0, qint64 t1) const
-{
+TelemetryBuffer::Stats TelemetryBuffer::windowStats(int series, qint64 t0, qint64 t1) const {
     if (!isSeries(series) || t1 <= t0)
         return {};
     const qint64 from = lowerBound(t0, oldestIndex(), m_total);
@@ -124,8 +117,7 @@ TelemetryBuffer::Stats TelemetryBuffer::windowStats(int series, qint64 t0, qint6
     return Stats{e.min, e.max, double(e.sum) / double(count), count};
 }
 
-TelemetryBuffer::Extremes TelemetryBuffer::scanRange(int series, qint64 first, qint64 last) const
-{
+TelemetryBuffer::Extremes TelemetryBuffer::scanRange(int series, qint64 first, qint64 last) const {
     Extremes result;
     const auto seriesCount = size_t(m_columns.size());
     qint64 index = first;
@@ -155,8 +147,7 @@ TelemetryBuffer::Extremes TelemetryBuffer::scanRange(int series, qint64 first, q
     return result;
 }
 
-void TelemetryBuffer::scanRaw(int series, qint64 first, qint64 last, Extremes &result) const
-{
+void TelemetryBuffer::scanRaw(int series, qint64 first, qint64 last, Extremes &result) const {
     const Column &column = m_columns[size_t(series)];
     // A local copy: writing through the reference each sample would force it out to memory.
     Extremes r = result;
@@ -180,8 +171,7 @@ void TelemetryBuffer::scanRaw(int series, qint64 first, qint64 last, Extremes &r
 
 // The coarsest block that starts at `index` and ends by `last`. Callers only pass ranges of
 // held samples, so such a block is complete and its slot has not been reused.
-const TelemetryBuffer::Level *TelemetryBuffer::wholeBlockAt(qint64 index, qint64 last) const
-{
+const TelemetryBuffer::Level *TelemetryBuffer::wholeBlockAt(qint64 index, qint64 last) const {
     for (auto level = m_levels.rbegin(); level != m_levels.rend(); ++level) {
         const qint64 blockSize = qint64(1) << level->shift;
         if ((index & (blockSize - 1)) == 0 && last - index >= blockSize)

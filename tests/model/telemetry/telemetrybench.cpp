@@ -26,8 +26,7 @@ using Buffers = std::vector<std::unique_ptr<TelemetryBuffer>>;
 
 // A tip that heats, idles with noise and now and then dips under load, so that the values and
 // their extremes look like a working day rather than a constant.
-std::vector<qint32> makeDay()
-{
+std::vector<qint32> makeDay() {
     std::mt19937 random(1);
     std::uniform_int_distribution<int> noise(-2, 2);
     std::uniform_int_distribution<int> roll(0, 999);
@@ -48,8 +47,7 @@ std::vector<qint32> makeDay()
 }
 
 // Returns the mean nanoseconds per append.
-double fill(Buffers &buffers, const std::vector<qint32> &day)
-{
+double fill(Buffers &buffers, const std::vector<qint32> &day) {
     const QStringList series = {QStringLiteral("tip"), QStringLiteral("setpoint"),
                                 QStringLiteral("power"), QStringLiteral("status")};
     for (int port = 0; port < kPorts; ++port)
@@ -65,8 +63,7 @@ double fill(Buffers &buffers, const std::vector<qint32> &day)
 }
 
 // Median over kRuns of the time for one decimate() per series and port, in milliseconds.
-double medianDecimateMs(const Buffers &buffers, qint64 t0, qint64 t1)
-{
+double medianDecimateMs(const Buffers &buffers, qint64 t0, qint64 t1) {
     std::vector<double> runs;
     for (int run = 0; run < kRuns; ++run) {
         QElapsedTimer timer;
@@ -84,8 +81,7 @@ double medianDecimateMs(const Buffers &buffers, qint64 t0, qint64 t1)
 
 } // namespace
 
-void runTelemetryBench(QTextStream &out)
-{
+void runTelemetryBench(QTextStream &out) {
     Buffers buffers;
     const double appendNs = fill(buffers, makeDay());
     double bytes = 0;

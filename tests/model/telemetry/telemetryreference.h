@@ -18,13 +18,12 @@ struct ReferenceSample {
     QList<qint32> values;
 };
 
-class ReferenceBuffer
-{
+class ReferenceBuffer {
 public:
-    explicit ReferenceBuffer(int capacity) : m_capacity(capacity) {}
+    explicit ReferenceBuffer(int capacity)
+        : m_capacity(capacity) {}
 
-    void append(qint64 timeMs, const QList<qint32> &values)
-    {
+    void append(qint64 timeMs, const QList<qint32> &values) {
         m_samples.push_back({timeMs, values});
         if (int(m_samples.size()) > m_capacity)
             m_samples.pop_front();
@@ -32,8 +31,7 @@ public:
     [[nodiscard]] const std::deque<ReferenceSample> &samples() const { return m_samples; }
 
     [[nodiscard]] QList<MinMaxBucket> decimate(int series, qint64 t0, qint64 t1,
-                                               int buckets) const
-    {
+                                               int buckets) const {
         QList<MinMaxBucket> result;
         const qint64 span = t1 - t0;
         for (int k = 0; k < buckets; ++k) {
@@ -58,8 +56,7 @@ public:
         return result;
     }
 
-    [[nodiscard]] TelemetryBuffer::Stats windowStats(int series, qint64 t0, qint64 t1) const
-    {
+    [[nodiscard]] TelemetryBuffer::Stats windowStats(int series, qint64 t0, qint64 t1) const {
         TelemetryBuffer::Stats stats;
         qint64 sum = 0;
         for (const ReferenceSample &s : m_samples) {
@@ -76,11 +73,9 @@ public:
     }
 
 private:
-    [[nodiscard]] std::deque<ReferenceSample>::const_iterator firstAtOrAfter(qint64 timeMs) const
-    {
-        return std::lower_bound(
-            m_samples.begin(), m_samples.end(), timeMs,
-            [](const ReferenceSample &s, qint64 t) { return s.timeMs < t; });
+    [[nodiscard]] std::deque<ReferenceSample>::const_iterator firstAtOrAfter(qint64 timeMs) const {
+        return std::lower_bound(m_samples.begin(), m_samples.end(), timeMs,
+                                [](const ReferenceSample &s, qint64 t) { return s.timeMs < t; });
     }
 
     int m_capacity;
@@ -88,16 +83,14 @@ private:
 };
 
 // Seeded, so every run sees the same data.
-class SampleGenerator
-{
+class SampleGenerator {
 public:
     SampleGenerator(quint32 seed, int seriesCount, bool wide)
-        : m_random(seed), m_values(seriesCount, 350), m_wide(wide)
-    {
-    }
+        : m_random(seed)
+        , m_values(seriesCount, 350)
+        , m_wide(wide) {}
 
-    [[nodiscard]] qint64 nextTime()
-    {
+    [[nodiscard]] qint64 nextTime() {
         const int roll = pick(0, 999);
         if (roll < 50)
             return m_time; // the station answered twice within a millisecond
@@ -108,8 +101,7 @@ public:
         return m_time;
     }
 
-    [[nodiscard]] QList<qint32> nextValues()
-    {
+    [[nodiscard]] QList<qint32> nextValues() {
         for (qint32 &v : m_values) {
             const int roll = pick(0, 999);
             if (roll < 5)
@@ -120,8 +112,7 @@ public:
         return m_values;
     }
 
-    [[nodiscard]] int pick(int low, int high)
-    {
+    [[nodiscard]] int pick(int low, int high) {
         return std::uniform_int_distribution<int>(low, high)(m_random);
     }
 

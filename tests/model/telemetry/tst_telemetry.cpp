@@ -17,8 +17,7 @@ const QString kFeeder = QStringLiteral("10/feeder");
 
 } // namespace
 
-class TestTelemetry : public QObject
-{
+class TestTelemetry : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
@@ -32,8 +31,7 @@ private Q_SLOTS:
     void signalRateIsClampedToASaneRange();
 };
 
-void TestTelemetry::bufferIsCreatedOnFirstUseWithTheGivenSeries()
-{
+void TestTelemetry::bufferIsCreatedOnFirstUseWithTheGivenSeries() {
     Telemetry telemetry;
     QVERIFY(!telemetry.buffer(kPort1));
     const TelemetryBuffer &created = telemetry.ensureBuffer(kPort1, kPortSeries, 500);
@@ -48,8 +46,7 @@ void TestTelemetry::bufferIsCreatedOnFirstUseWithTheGivenSeries()
     QCOMPARE(created.valueAt(2, 100)->value, 120);
 }
 
-void TestTelemetry::existingBufferKeepsItsSeries()
-{
+void TestTelemetry::existingBufferKeepsItsSeries() {
     Telemetry telemetry;
     const TelemetryBuffer &first = telemetry.ensureBuffer(kPort1, kPortSeries, 500);
     QTest::ignoreMessage(QtWarningMsg, QRegularExpression(QStringLiteral("already exists")));
@@ -59,15 +56,13 @@ void TestTelemetry::existingBufferKeepsItsSeries()
     QCOMPARE(again.capacity(), 500);
 }
 
-void TestTelemetry::appendToAnUnknownKeyIsRefused()
-{
+void TestTelemetry::appendToAnUnknownKeyIsRefused() {
     Telemetry telemetry;
     QCOMPARE(telemetry.append(kPort1, 1, {1, 2, 3, 4}), AppendResult::UnknownKey);
     QVERIFY(telemetry.keys().isEmpty());
 }
 
-void TestTelemetry::burstOfAppendsIsCoalescedIntoFewSignals()
-{
+void TestTelemetry::burstOfAppendsIsCoalescedIntoFewSignals() {
     Telemetry telemetry;
     QSignalSpy spy(&telemetry, &Telemetry::samplesAdded);
     QVERIFY(spy.isValid());
@@ -83,8 +78,7 @@ void TestTelemetry::burstOfAppendsIsCoalescedIntoFewSignals()
     QCOMPARE(spy.first().first().toStringList(), QStringList{kPort1});
 }
 
-void TestTelemetry::signalNamesOnlyTheBuffersThatChanged()
-{
+void TestTelemetry::signalNamesOnlyTheBuffersThatChanged() {
     Telemetry telemetry;
     QSignalSpy spy(&telemetry, &Telemetry::samplesAdded);
     QVERIFY(spy.isValid());
@@ -100,8 +94,7 @@ void TestTelemetry::signalNamesOnlyTheBuffersThatChanged()
     QCOMPARE(spy.takeFirst().first().toStringList(), QStringList({kPort1, kFeeder}));
 }
 
-void TestTelemetry::refusedSamplesDoNotSignal()
-{
+void TestTelemetry::refusedSamplesDoNotSignal() {
     Telemetry telemetry;
     // A quick timer, so that waiting for a signal that must not come costs little.
     telemetry.setMaxSignalsPerSecond(1000);
@@ -118,8 +111,7 @@ void TestTelemetry::refusedSamplesDoNotSignal()
     QCOMPARE(spy.count(), 1);
 }
 
-void TestTelemetry::signalRateIsClampedToASaneRange_data()
-{
+void TestTelemetry::signalRateIsClampedToASaneRange_data() {
     QTest::addColumn<int>("asked");
     QTest::addColumn<int>("kept");
 
@@ -129,8 +121,7 @@ void TestTelemetry::signalRateIsClampedToASaneRange_data()
     QTest::newRow("above a millisecond timer") << 5000 << 1000;
 }
 
-void TestTelemetry::signalRateIsClampedToASaneRange()
-{
+void TestTelemetry::signalRateIsClampedToASaneRange() {
     QFETCH(int, asked);
     QFETCH(int, kept);
     Telemetry telemetry;

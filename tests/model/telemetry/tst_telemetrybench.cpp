@@ -7,16 +7,14 @@
 #include <QTextStream>
 #include <QtTest>
 
-class TestTelemetryBench : public QObject
-{
+class TestTelemetryBench : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
     void benchPrintsItsFourFigures();
 };
 
-void TestTelemetryBench::benchPrintsItsFourFigures()
-{
+void TestTelemetryBench::benchPrintsItsFourFigures() {
     QString text;
     QTextStream out(&text);
     tipscope::bench::runTelemetryBench(out);

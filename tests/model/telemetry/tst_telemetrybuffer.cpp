@@ -18,8 +18,7 @@ const QStringList kPortSeries = {QStringLiteral("tip"), QStringLiteral("setpoint
 
 #if defined(__GLIBC__)
 // Bytes in use on the heap: small blocks from the arenas plus large mmapped ones.
-qint64 heapInUse()
-{
+qint64 heapInUse() {
     const struct mallinfo2 info = mallinfo2();
     return qint64(info.uordblks + info.hblkhd);
 }
@@ -27,8 +26,7 @@ qint64 heapInUse()
 
 } // namespace
 
-class TestTelemetryBuffer : public QObject
-{
+class TestTelemetryBuffer : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
@@ -46,8 +44,7 @@ private Q_SLOTS:
     void emptyBufferAllocatesNoSampleStorage();
 };
 
-void TestTelemetryBuffer::ringOverwriteKeepsTheNewestCapacitySamples_data()
-{
+void TestTelemetryBuffer::ringOverwriteKeepsTheNewestCapacitySamples_data() {
     QTest::addColumn<int>("capacity");
     QTest::addColumn<int>("appended");
 
@@ -58,8 +55,7 @@ void TestTelemetryBuffer::ringOverwriteKeepsTheNewestCapacitySamples_data()
     QTest::newRow("capacity of one") << 1 << 5;
 }
 
-void TestTelemetryBuffer::ringOverwriteKeepsTheNewestCapacitySamples()
-{
+void TestTelemetryBuffer::ringOverwriteKeepsTheNewestCapacitySamples() {
     QFETCH(int, capacity);
     QFETCH(int, appended);
     TelemetryBuffer buffer({QStringLiteral("tip"), QStringLiteral("power")}, capacity);
@@ -88,11 +84,10 @@ void TestTelemetryBuffer::ringOverwriteKeepsTheNewestCapacitySamples()
 
 // The block holding the oldest samples has lost some to the ring; its summary still remembers
 // them, so it must never be used whole again.
-void TestTelemetryBuffer::evictedExtremesNeverComeBackAfterWrapAround()
-{
+void TestTelemetryBuffer::evictedExtremesNeverComeBackAfterWrapAround() {
     const int capacity = 4096;
     TelemetryBuffer buffer({QStringLiteral("tip")}, capacity);
-    buffer.append(0, {9999}); // evicted below
+    buffer.append(0, {9999});  // evicted below
     buffer.append(1, {-9999}); // evicted below
     for (int i = 2; i < capacity + 2; ++i)
         buffer.append(i, {i % 7});
@@ -109,8 +104,7 @@ void TestTelemetryBuffer::evictedExtremesNeverComeBackAfterWrapAround()
     }
 }
 
-void TestTelemetryBuffer::olderSampleIsRefusedAndCounted()
-{
+void TestTelemetryBuffer::olderSampleIsRefusedAndCounted() {
     TelemetryBuffer buffer({QStringLiteral("tip")}, 100);
     QCOMPARE(buffer.append(1000, {300}), AppendResult::Accepted);
     QCOMPARE(buffer.append(999, {301}), AppendResult::OutOfOrder);
@@ -124,8 +118,7 @@ void TestTelemetryBuffer::olderSampleIsRefusedAndCounted()
     QCOMPARE(buffer.windowStats(0, 0, 2000).max, 302);
 }
 
-void TestTelemetryBuffer::sampleWithTheWrongNumberOfValuesIsRefusedAndCounted()
-{
+void TestTelemetryBuffer::sampleWithTheWrongNumberOfValuesIsRefusedAndCounted() {
     TelemetryBuffer buffer(kPortSeries, 100);
     QCOMPARE(buffer.append(1, {1, 2, 3}), AppendResult::WrongValueCount);
     QCOMPARE(buffer.append(2, {1, 2, 3, 4, 5}), AppendResult::WrongValueCount);
@@ -135,8 +128,7 @@ void TestTelemetryBuffer::sampleWithTheWrongNumberOfValuesIsRefusedAndCounted()
     QCOMPARE(buffer.size(), 1);
 }
 
-void TestTelemetryBuffer::valueAtGivesTheSampleAtOrJustBeforeTheTime_data()
-{
+void TestTelemetryBuffer::valueAtGivesTheSampleAtOrJustBeforeTheTime_data() {
     QTest::addColumn<qint64>("time");
     QTest::addColumn<bool>("found");
     QTest::addColumn<qint64>("sampleTime");
@@ -152,14 +144,14 @@ void TestTelemetryBuffer::valueAtGivesTheSampleAtOrJustBeforeTheTime_data()
     QTest::newRow("after the newest") << qint64(10'000) << true << qint64(500) << 5;
 }
 
-void TestTelemetryBuffer::valueAtGivesTheSampleAtOrJustBeforeTheTime()
-{
+void TestTelemetryBuffer::valueAtGivesTheSampleAtOrJustBeforeTheTime() {
     QFETCH(qint64, time);
     QFETCH(bool, found);
     QFETCH(qint64, sampleTime);
     QFETCH(qint32, value);
     TelemetryBuffer buffer({QStringLiteral("tip")}, 4);
-    for (const auto &[t, v] : {std::pair{100, 1}, {200, 2}, {300, 3}, {400, 4}, {400, 40}, {500, 5}})
+    for (const auto &[t, v] :
+         {std::pair{100, 1}, {200, 2}, {300, 3}, {400, 4}, {400, 40}, {500, 5}})
         buffer.append(t, {v});
 
     const std::optional<TelemetryBuffer::Sample> sample = buffer.valueAt(0, time);
@@ -170,8 +162,7 @@ void TestTelemetryBuffer::valueAtGivesTheSampleAtOrJustBeforeTheTime()
     }
 }
 
-void TestTelemetryBuffer::valuesBeyondSixteenBitsAreKeptExactly()
-{
+void TestTelemetryBuffer::valuesBeyondSixteenBitsAreKeptExactly() {
     TelemetryBuffer buffer({QStringLiteral("small"), QStringLiteral("big")}, 300);
     const qint32 big = 2'000'000'000;
     for (int i = 0; i < 500; ++i)
@@ -187,8 +178,7 @@ void TestTelemetryBuffer::valuesBeyondSixteenBitsAreKeptExactly()
     QCOMPARE(stats.count, 300);
 }
 
-void TestTelemetryBuffer::unknownSeriesGivesEmptyAnswers()
-{
+void TestTelemetryBuffer::unknownSeriesGivesEmptyAnswers() {
     TelemetryBuffer buffer(kPortSeries, 100);
     buffer.append(1, {1, 2, 3, 4});
     QCOMPARE(buffer.seriesIndex(QStringLiteral("power")), 2);
@@ -200,8 +190,7 @@ void TestTelemetryBuffer::unknownSeriesGivesEmptyAnswers()
     QCOMPARE(buffer.windowStats(4, 0, 10).count, 0);
 }
 
-void TestTelemetryBuffer::memoryPerSamplePerSeriesIsAtMostSixteenBytes_data()
-{
+void TestTelemetryBuffer::memoryPerSamplePerSeriesIsAtMostSixteenBytes_data() {
     QTest::addColumn<QStringList>("series");
     QTest::addColumn<qint32>("amplitude");
 
@@ -209,8 +198,7 @@ void TestTelemetryBuffer::memoryPerSamplePerSeriesIsAtMostSixteenBytes_data()
     QTest::newRow("one series widened to 32 bits") << QStringList{QStringLiteral("x")} << 100'000;
 }
 
-void TestTelemetryBuffer::memoryPerSamplePerSeriesIsAtMostSixteenBytes()
-{
+void TestTelemetryBuffer::memoryPerSamplePerSeriesIsAtMostSixteenBytes() {
 #if !defined(__GLIBC__)
     QSKIP("measuring the heap needs glibc's mallinfo2()");
 #else
@@ -238,8 +226,7 @@ void TestTelemetryBuffer::memoryPerSamplePerSeriesIsAtMostSixteenBytes()
 #endif
 }
 
-void TestTelemetryBuffer::emptyBufferAllocatesNoSampleStorage()
-{
+void TestTelemetryBuffer::emptyBufferAllocatesNoSampleStorage() {
     const TelemetryBuffer buffer(kPortSeries);
     QCOMPARE(buffer.capacity(), TelemetryBuffer::kDefaultCapacity);
     QVERIFY(buffer.isEmpty());

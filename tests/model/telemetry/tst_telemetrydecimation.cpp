@@ -18,8 +18,7 @@ struct Window {
     int buckets = 0;
 };
 
-QString describe(const MinMaxBucket &b)
-{
+QString describe(const MinMaxBucket &b) {
     return QStringLiteral("{start %1, min %2 at %3, max %4 at %5, count %6}")
         .arg(b.startMs)
         .arg(b.min)
@@ -29,16 +28,14 @@ QString describe(const MinMaxBucket &b)
         .arg(b.count);
 }
 
-bool operator==(const MinMaxBucket &a, const MinMaxBucket &b)
-{
+bool operator==(const MinMaxBucket &a, const MinMaxBucket &b) {
     return a.startMs == b.startMs && a.minTimeMs == b.minTimeMs && a.min == b.min &&
            a.maxTimeMs == b.maxTimeMs && a.max == b.max && a.count == b.count;
 }
 
 // Windows that start and end anywhere: on samples, between them, inside blocks, before the
 // oldest sample held and after the newest; plus the whole history.
-QList<Window> randomWindows(SampleGenerator &g, const ReferenceBuffer &reference, int count)
-{
+QList<Window> randomWindows(SampleGenerator &g, const ReferenceBuffer &reference, int count) {
     const auto &samples = reference.samples();
     const qint64 first = samples.front().timeMs;
     const qint64 last = samples.back().timeMs;
@@ -65,8 +62,7 @@ QList<Window> randomWindows(SampleGenerator &g, const ReferenceBuffer &reference
     return windows;
 }
 
-void fill(TelemetryBuffer &buffer, ReferenceBuffer &reference, SampleGenerator &g, int count)
-{
+void fill(TelemetryBuffer &buffer, ReferenceBuffer &reference, SampleGenerator &g, int count) {
     for (int i = 0; i < count; ++i) {
         const qint64 time = g.nextTime();
         const QList<qint32> values = g.nextValues();
@@ -77,8 +73,7 @@ void fill(TelemetryBuffer &buffer, ReferenceBuffer &reference, SampleGenerator &
 
 } // namespace
 
-class TestTelemetryDecimation : public QObject
-{
+class TestTelemetryDecimation : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
@@ -93,8 +88,7 @@ private Q_SLOTS:
     void emptyOrReversedWindowsGiveNothing();
 };
 
-void TestTelemetryDecimation::randomHistories_data()
-{
+void TestTelemetryDecimation::randomHistories_data() {
     QTest::addColumn<int>("capacity");
     QTest::addColumn<int>("count");
     QTest::addColumn<bool>("wide");
@@ -108,8 +102,7 @@ void TestTelemetryDecimation::randomHistories_data()
     QTest::newRow("ring smaller than one block") << 50 << 175 << false;
 }
 
-void TestTelemetryDecimation::decimationKeepsExactMinAndMaxOfEveryBucket()
-{
+void TestTelemetryDecimation::decimationKeepsExactMinAndMaxOfEveryBucket() {
     QFETCH(int, capacity);
     QFETCH(int, count);
     QFETCH(bool, wide);
@@ -129,16 +122,15 @@ void TestTelemetryDecimation::decimationKeepsExactMinAndMaxOfEveryBucket()
                                       .arg(w.buckets);
             QVERIFY2(got.size() == want.size(), qPrintable(where));
             for (qsizetype i = 0; i < got.size(); ++i) {
-                QVERIFY2(got[i] == want[i], qPrintable(where + QStringLiteral(": got ") +
-                                                       describe(got[i]) + QStringLiteral(", want ") +
-                                                       describe(want[i])));
+                QVERIFY2(got[i] == want[i],
+                         qPrintable(where + QStringLiteral(": got ") + describe(got[i]) +
+                                    QStringLiteral(", want ") + describe(want[i])));
             }
         }
     }
 }
 
-void TestTelemetryDecimation::windowStatsMatchBruteForce()
-{
+void TestTelemetryDecimation::windowStatsMatchBruteForce() {
     QFETCH(int, capacity);
     QFETCH(int, count);
     QFETCH(bool, wide);
@@ -160,8 +152,7 @@ void TestTelemetryDecimation::windowStatsMatchBruteForce()
     }
 }
 
-void TestTelemetryDecimation::oneSampleSpikeInAFlatDaySurvivesDecimation_data()
-{
+void TestTelemetryDecimation::oneSampleSpikeInAFlatDaySurvivesDecimation_data() {
     QTest::addColumn<int>("spikeIndex"); // among the samples held, oldest is 0
     QTest::addColumn<qint32>("spikeValue");
     QTest::addColumn<int>("overwritten"); // samples appended beyond the capacity
@@ -174,8 +165,7 @@ void TestTelemetryDecimation::oneSampleSpikeInAFlatDaySurvivesDecimation_data()
     QTest::newRow("dip after wrap-around") << 500'000 << 349 << 1'013;
 }
 
-void TestTelemetryDecimation::oneSampleSpikeInAFlatDaySurvivesDecimation()
-{
+void TestTelemetryDecimation::oneSampleSpikeInAFlatDaySurvivesDecimation() {
     QFETCH(int, spikeIndex);
     QFETCH(qint32, spikeValue);
     QFETCH(int, overwritten);
@@ -207,8 +197,7 @@ void TestTelemetryDecimation::oneSampleSpikeInAFlatDaySurvivesDecimation()
     QCOMPARE(total, capacity);
 }
 
-void TestTelemetryDecimation::gapsInTheDataStayGaps()
-{
+void TestTelemetryDecimation::gapsInTheDataStayGaps() {
     TelemetryBuffer buffer({QStringLiteral("tip")}, 1000);
     for (int i = 0; i < 10; ++i)
         buffer.append(kDayStartMs + i * 100, {300 + i});
@@ -228,8 +217,7 @@ void TestTelemetryDecimation::gapsInTheDataStayGaps()
     QCOMPARE(buckets[1].maxTimeMs, kDayStartMs + 3'600'900);
 }
 
-void TestTelemetryDecimation::emptyOrReversedWindowsGiveNothing()
-{
+void TestTelemetryDecimation::emptyOrReversedWindowsGiveNothing() {
     TelemetryBuffer buffer({QStringLiteral("tip")}, 100);
     QVERIFY(buffer.decimate(0, 0, 1000, 10).isEmpty());
     QCOMPARE(buffer.windowStats(0, 0, 1000).count, 0);

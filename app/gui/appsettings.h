@@ -1,0 +1,40 @@
+// AppSettings: what TipScope remembers between runs (QSettings), read with validation so that
+// a value written by an older version, or edited by hand, falls back to its default instead of
+// reaching the line: the last connection, line settings, units, poll rates, timeouts, language.
+#pragma once
+
+#include "model/session.h"
+
+#include <QByteArray>
+#include <QString>
+
+class QSettings;
+
+namespace tipscope::gui {
+
+struct AppSettings {
+    enum class Kind { Serial, Tcp, Demo };
+    Kind kind = Kind::Demo;
+    QString serialPort;
+    QString tcpAddress = QStringLiteral("127.0.0.1:4001");
+    int baud = 19200;
+    QString parity = QStringLiteral("none");
+    int stopBits = 1;
+    model::Session::Addressing addressing = model::Session::Addressing::Auto;
+    int robotAddress = 0;
+    int targetAddress = 1;
+    model::TemperatureUnit unit = model::TemperatureUnit::Celsius;
+    int liveMs = 250;
+    int statusMs = 2000;
+    int counterMs = 60000;
+    int turnaroundMs = 100;
+    int retries = 2;
+    QString language = QStringLiteral("system");
+
+    [[nodiscard]] static AppSettings load(QSettings &s);
+    void save(QSettings &s) const;
+    // The session settings these describe; `error` says why when they cannot be used.
+    [[nodiscard]] std::optional<model::Session::Settings> sessionSettings(QString *error) const;
+};
+
+} // namespace tipscope::gui

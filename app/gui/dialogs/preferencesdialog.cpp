@@ -1,0 +1,72 @@
+#include "preferencesdialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QSpinBox>
+
+namespace tipscope::gui {
+
+using namespace tipscope::model;
+
+static QSpinBox *spin(QWidget *parent, int lo, int hi, int value, const QString &suffix) {
+    auto *s = new QSpinBox(parent);
+    s->setRange(lo, hi);
+    s->setValue(value);
+    s->setSuffix(suffix);
+    return s;
+}
+
+PreferencesDialog::PreferencesDialog(const AppSettings &settings, QWidget *parent)
+    : QDialog(parent)
+    , m_base(settings) {
+    setWindowTitle(tr("Preferences"));
+    m_unit = new QComboBox(this);
+    m_unit->addItem(tr("Celsius (°C)"), int(TemperatureUnit::Celsius));
+    m_unit->addItem(tr("Fahrenheit (°F)"), int(TemperatureUnit::Fahrenheit));
+    m_unit->setCurrentIndex(m_unit->findData(int(settings.unit)));
+    m_live = spin(this, 50, 60000, settings.liveMs, tr(" ms"));
+    m_status = spin(this, 100, 600000, settings.statusMs, tr(" ms"));
+    m_counters = spin(this, 1000, 3600000, settings.counterMs, tr(" ms"));
+    m_turnaround = spin(this, 5, 10000, settings.turnaroundMs, tr(" ms"));
+    m_retries = spin(this, 0, 10, settings.retries, QString());
+    m_language = new QComboBox(this);
+    m_language->addItem(tr("Follow the system"), QStringLiteral("system"));
+    m_language->addItem(QStringLiteral("English"), QStringLiteral("en"));
+    m_language->addItem(QStringLiteral("Español"), QStringLiteral("es"));
+    m_language->addItem(QStringLiteral("Deutsch"), QStringLiteral("de"));
+    m_language->setCurrentIndex(qMax(0, m_language->findData(settings.language)));
+    auto *form = new QFormLayout(this);
+    form->addRow(tr("Temperature unit:"), m_unit);
+    form->addRow(tr("Live values (visible ports) every:"), m_live);
+    form->addRow(tr("Errors, alarms and status every:"), m_status);
+    form->addRow(tr("Counters every:"), m_counters);
+    form->addRow(tr("Device turnaround (added to the wire time):"), m_turnaround);
+    form->addRow(tr("Retries after a lost or corrupted answer:"), m_retries);
+    form->addRow(tr("Language (on the next start):"), m_language);
+    auto *note =
+        new QLabel(tr("The wire always carries °C; the unit only changes what you see and type. "
+                      "The colours follow the desktop theme."),
+                   this);
+    note->setWordWrap(true);
+    form->addRow(note);
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    form->addRow(buttons);
+}
+
+AppSettings PreferencesDialog::result() const {
+    AppSettings a = m_base;
+    a.unit = TemperatureUnit(m_unit->currentData().toInt());
+    a.liveMs = m_live->value();
+    a.statusMs = m_status->value();
+    a.counterMs = m_counters->value();
+    a.turnaroundMs = m_turnaround->value();
+    a.retries = m_retries->value();
+    a.language = m_language->currentData().toString();
+    return a;
+}
+
+} // namespace tipscope::gui

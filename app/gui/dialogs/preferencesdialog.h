@@ -1,0 +1,31 @@
+// PreferencesDialog: temperature unit, poll rates, answer timeout and retries, language (on the
+// next start). The theme follows the desktop's; nothing to choose.
+#pragma once
+
+#include "appsettings.h"
+
+#include <QDialog>
+
+class QComboBox;
+class QSpinBox;
+
+namespace tipscope::gui {
+
+class PreferencesDialog : public QDialog {
+    Q_OBJECT
+public:
+    PreferencesDialog(const AppSettings &settings, QWidget *parent = nullptr);
+    [[nodiscard]] AppSettings result() const;
+
+private:
+    AppSettings m_base;
+    QComboBox *m_unit;
+    QSpinBox *m_live;
+    QSpinBox *m_status;
+    QSpinBox *m_counters;
+    QSpinBox *m_turnaround;
+    QSpinBox *m_retries;
+    QComboBox *m_language;
+};
+
+} // namespace tipscope::gui

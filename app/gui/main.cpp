@@ -1,0 +1,63 @@
+// tipscope: the desktop application.
+#include "mainwindow.h"
+#include "screenshots.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSettings>
+#include <QTimer>
+#include <memory>
+
+using namespace tipscope::gui;
+
+int main(int argc, char *argv[]) {
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("TipScope"));
+    QApplication::setOrganizationName(QStringLiteral("TipScope"));
+    QApplication::setApplicationVersion(QStringLiteral(TIPSCOPE_VERSION));
+    QApplication::setDesktopFileName(QStringLiteral("tipscope"));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QApplication::translate(
+        "main", "Configure and monitor JBC soldering stations and the SFR feeder."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption demo(
+        QStringLiteral("demo"),
+        QApplication::translate("main",
+                                "Start on the built-in simulated DME station and SFR feeder."));
+    const QCommandLineOption port(QStringLiteral("port"),
+                                  QApplication::translate("main", "Connect to this serial port."),
+                                  QStringLiteral("DEVICE"));
+    const QCommandLineOption tcp(QStringLiteral("tcp"),
+                                 QApplication::translate("main", "Connect to a TCP serial server."),
+                                 QStringLiteral("HOST:PORT"));
+    const QCommandLineOption shots(
+        QStringLiteral("screenshots"),
+        QApplication::translate("main", "Save a PNG of every page into DIR, then quit."),
+        QStringLiteral("DIR"));
+    parser.addOptions({demo, port, tcp, shots});
+    parser.process(app);
+
+    MainWindow window;
+    window.show();
+    AppSettings start = AppSettings::load(*std::make_unique<QSettings>());
+    bool connectNow = false;
+    if (parser.isSet(demo) || parser.isSet(shots)) {
+        start.kind = AppSettings::Kind::Demo;
+        connectNow = true;
+    } else if (parser.isSet(port)) {
+        start.kind = AppSettings::Kind::Serial;
+        start.serialPort = parser.value(port);
+        connectNow = true;
+    } else if (parser.isSet(tcp)) {
+        start.kind = AppSettings::Kind::Tcp;
+        start.tcpAddress = parser.value(tcp);
+        connectNow = true;
+    }
+    if (connectNow)
+        window.connectWith(start);
+    if (parser.isSet(shots))
+        takeScreenshots(window, parser.value(shots));
+    return QApplication::exec();
+}

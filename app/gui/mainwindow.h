@@ -1,0 +1,62 @@
+// MainWindow: the connection bar, the device tree, the pages, and the status bar with the
+// line's state and statistics. It owns the Session; pages and widgets talk to its models.
+// Window geometry, splitter state and the last connection are remembered (AppSettings).
+#pragma once
+
+#include "appsettings.h"
+
+#include "model/session.h"
+
+#include <QMainWindow>
+
+class QTabWidget;
+class QSplitter;
+class QLabel;
+
+namespace tipscope::gui {
+
+class ConnectionBar;
+class DeviceTree;
+class LinkStatusLabel;
+class Page;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    [[nodiscard]] model::Session &session() { return m_session; }
+    [[nodiscard]] ConnectionBar &connectionBar() const { return *m_connection; }
+    [[nodiscard]] QTabWidget &pages() const { return *m_tabs; }
+    [[nodiscard]] Page *page(const QString &title) const;
+    [[nodiscard]] DeviceTree &deviceTree() const { return *m_tree; }
+
+    // Connects with the connection bar's settings (saving them); a refusal is shown and returned.
+    QString connectLine();
+    void connectWith(const AppSettings &settings);
+    void writeSupportReport();
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    void buildMenus();
+    void applyPreferences(const AppSettings &settings);
+    void onSelection(model::DeviceModel *device, int port);
+    void onTabChanged(int index);
+    void updateVisiblePorts();
+    void updateTitle();
+
+    model::Session m_session;
+    AppSettings m_settings;
+    ConnectionBar *m_connection;
+    DeviceTree *m_tree;
+    QTabWidget *m_tabs;
+    QSplitter *m_splitter;
+    LinkStatusLabel *m_linkStatus;
+    QLabel *m_stateLabel;
+    QList<Page *> m_pages;
+};
+
+} // namespace tipscope::gui

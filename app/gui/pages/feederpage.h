@@ -1,0 +1,53 @@
+// FeederPage: the SFR solder feeder: feeding settings (mode, speed, length, wire thickness,
+// switch input) with Apply / Revert / save to memory; start forward or backward, stop, and
+// loading; the live feeding status and fed length; the error code with its explanation and reset;
+// and the total and partial counters with their (confirmed) partial resets.
+#pragma once
+
+#include "page.h"
+
+class QLabel;
+class QPushButton;
+class QGridLayout;
+class QVBoxLayout;
+
+namespace tipscope::gui {
+
+class ParameterEditor;
+
+class FeederPage : public Page {
+    Q_OBJECT
+public:
+    explicit FeederPage(model::Session &session, QWidget *parent = nullptr);
+
+    [[nodiscard]] QString title() const override { return tr("Feeder"); }
+    [[nodiscard]] bool appliesTo(const model::DeviceModel *device) const override;
+    void setSelection(model::DeviceModel *device, int port) override;
+
+    // The buttons' actions, for keyboard users and tests; each returns an error or empty.
+    QString start(bool forward);
+    QString stop();
+    QString setLoading(bool on);
+    QString resetError();
+    QString resetCounter(const QByteArray &code, bool confirmed);
+    void applyEdits();
+    [[nodiscard]] ParameterEditor *editorFor(const QByteArray &code) const;
+    [[nodiscard]] QString liveText() const;
+
+private:
+    void rebuild();
+    void refreshLive();
+    void updateEnabled();
+    void report(const QString &error);
+    [[nodiscard]] model::FeederModel *feeder() const;
+
+    QWidget *m_body = nullptr;
+    QVBoxLayout *m_layout;
+    QLabel *m_live = nullptr;
+    QLabel *m_error = nullptr;
+    QLabel *m_feedback = nullptr;
+    QList<ParameterEditor *> m_editors;
+    QList<QPushButton *> m_writeButtons;
+};
+
+} // namespace tipscope::gui

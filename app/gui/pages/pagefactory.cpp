@@ -1,0 +1,15 @@
+#include "pagefactory.h"
+
+#include "dispensingpage.h"
+#include "feederpage.h"
+#include "overviewpage.h"
+#include "settingspage.h"
+
+namespace tipscope::gui {
+
+QList<Page *> createPages(model::Session &session, QWidget *parent) {
+    return {new OverviewPage(session, parent), new SettingsPage(session, parent),
+            new FeederPage(session, parent), new DispensingPage(session, parent)};
+}
+
+} // namespace tipscope::gui

@@ -1,0 +1,282 @@
+#include "settingspage.h"
+
+#include "dialogs/profiledialog.h"
+#include "widgets/parametereditor.h"
+
+#include "model/profile.h"
+
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QTimer>
+#include <QToolButton>
+
+namespace tipscope::gui {
+
+using namespace tipscope::model;
+
+SettingsPage::SettingsPage(Session &session, QWidget *parent)
+    : Page(session, parent) {
+    auto *top = new QHBoxLayout;
+    m_portBox = new QComboBox(this);
+    m_portBox->setAccessibleName(tr("Port"));
+    m_refresh = new QPushButton(tr("Re&fresh"), this);
+    m_apply = new QPushButton(tr("&Apply"), this);
+    m_revert = new QPushButton(tr("Re&vert"), this);
+    m_save = new QPushButton(tr("Save to station &memory"), this);
+    m_save->setToolTip(tr("The selected temperature is volatile: W-NVS stores it so that it "
+                          "survives a restart"));
+    m_actions = new QToolButton(this);
+    m_actions->setText(tr("Station actions"));
+    m_actions->setPopupMode(QToolButton::InstantPopup);
+    m_profiles = new QToolButton(this);
+    m_profiles->setText(tr("Profiles"));
+    m_profiles->setPopupMode(QToolButton::InstantPopup);
+    auto *profileMenu = new QMenu(m_profiles);
+    profileMenu->addAction(tr("Save device settings to a profile…"), this,
+                           &SettingsPage::saveProfile);
+    profileMenu->addAction(tr("Open a profile (compare, dry run, apply)…"), this,
+                           &SettingsPage::openProfile);
+    m_profiles->setMenu(profileMenu);
+    top->addWidget(new QLabel(tr("Port:"), this));
+    top->addWidget(m_portBox);
+    top->addStretch(1);
+    for (QWidget *w : {static_cast<QWidget *>(m_refresh), static_cast<QWidget *>(m_revert),
+                       static_cast<QWidget *>(m_apply), static_cast<QWidget *>(m_save),
+                       static_cast<QWidget *>(m_actions), static_cast<QWidget *>(m_profiles)})
+        top->addWidget(w);
+    m_scroll = new QScrollArea(this);
+    m_scroll->setWidgetResizable(true);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(m_scroll, 1);
+    connect(m_portBox, &QComboBox::activated, this, [this] {
+        m_port = m_portBox->currentData().toInt();
+        rebuild();
+    });
+    connect(m_apply, &QPushButton::clicked, this, &SettingsPage::applyEdits);
+    connect(m_revert, &QPushButton::clicked, this, &SettingsPage::revertEdits);
+    connect(m_refresh, &QPushButton::clicked, this, [this] {
+        for (Parameter *p : shownParameters())
+            p->refresh();
+    });
+    connect(m_save, &QPushButton::clicked, this, &SettingsPage::saveToMemory);
+    connect(&m_session, &Session::monitorOnlyChanged, this, &SettingsPage::updateButtons);
+    rebuild();
+}
+
+void SettingsPage::setSelection(DeviceModel *device, int port) {
+    const bool sameDevice = device == m_device;
+    Page::setSelection(device, port);
+    if (!sameDevice || (port > 0 && port != m_portBox->currentData().toInt()))
+        rebuild();
+}
+
+void SettingsPage::setActive(bool active) {
+    Page::setActive(active);
+    if (active && m_device)
+        m_session.scheduler().requestRefresh(m_device, PollClass::Settings);
+}
+
+QList<Parameter *> SettingsPage::shownParameters() const {
+    QList<Parameter *> out;
+    for (ParameterEditor *e : m_editors)
+        if (e->parameter())
+            out.append(e->parameter());
+    return out;
+}
+
+void SettingsPage::addGroup(const QString &title, const QList<Parameter *> &params) {
+    if (params.isEmpty())
+        return;
+    auto *box = new QGroupBox(title, m_form);
+    auto *form = new QFormLayout(box);
+    form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
+    for (Parameter *p : params) {
+        auto *editor = new ParameterEditor(p, box);
+        m_editors.append(editor);
+        connect(p, &Parameter::stateChanged, this, &SettingsPage::updateButtons);
+        auto *label = new QLabel(ParameterEditor::labelFor(*p), box);
+        label->setBuddy(editor);
+        label->setToolTip(p->meta().description);
+        form->addRow(label, editor);
+    }
+    m_groups->addWidget(box);
+}
+
+void SettingsPage::rebuild() {
+    m_editors.clear();
+    m_form = new QWidget;
+    m_groups = new QVBoxLayout(m_form);
+    m_scroll->setWidget(m_form); // deletes the previous form and its editors
+    m_portBox->clear();
+    m_actions->setMenu(nullptr);
+    auto *station = qobject_cast<StationModel *>(m_device.data());
+    auto *feeder = qobject_cast<FeederModel *>(m_device.data());
+    if (!m_device) {
+        m_groups->addWidget(
+            new QLabel(tr("Connect and select a device to see its settings."), m_form));
+    } else if (station) {
+        for (PortModel *port : station->ports()) {
+            m_portBox->addItem(tr("Port %1 (%2)").arg(port->number()).arg(port->toolName()),
+                               port->number());
+            // A different tool changes which settings come first: lay the page out again.
+            connect(port->param("CT"), &Parameter::valueChanged, m_form,
+                    [this] { QTimer::singleShot(0, this, &SettingsPage::rebuild); });
+        }
+        const int portNumber = qBound(1, m_port, qMax(1, int(station->ports().size())));
+        m_portBox->setCurrentIndex(m_portBox->findData(portNumber));
+        addGroup(tr("Station"), station->stationSettings());
+        if (PortModel *port = station->port(portNumber)) {
+            addGroup(tr("Port %1").arg(portNumber), {port->param("ST")});
+            addGroup(tr("Alarms, port %1").arg(portNumber), port->alarmSettings());
+            const auto tableName = QStringLiteral("$toolTable");
+            const auto tools = protocol::Catalog::builtin().table(tableName, station->family());
+            for (int tool : port->toolOrder()) {
+                QString title = tr("Tool %1, port %2").arg(tools.value(tool)).arg(portNumber);
+                if (port->tool() == tool)
+                    title += tr(" (connected)");
+                addGroup(title, port->toolSettings(tool));
+            }
+        }
+        addGroup(tr("Dispensing (ALE wire feed)"), station->dispensingSettings());
+        auto *menu = new QMenu(m_actions);
+        for (Action *a : station->actions())
+            if (a->isDangerous())
+                menu->addAction(a->name() + QStringLiteral("…"), this,
+                                [this, code = a->code()] { runDangerous(code); });
+        m_actions->setMenu(menu);
+    } else if (feeder) {
+        addGroup(tr("Feeding"), feeder->settings());
+    }
+    m_portBox->setVisible(station != nullptr);
+    m_groups->addStretch(1);
+    updateButtons();
+}
+
+ParameterEditor *SettingsPage::editorFor(const QByteArray &code) const {
+    for (ParameterEditor *e : m_editors)
+        if (e->parameter() && e->parameter()->code() == code)
+            return e;
+    return nullptr;
+}
+
+int SettingsPage::editedCount() const {
+    int n = 0;
+    for (const Parameter *p : shownParameters())
+        if (p->state() == Parameter::State::Edited ||
+            (p->state() == Parameter::State::Failed && p->edit()))
+            ++n;
+    return n;
+}
+
+void SettingsPage::updateButtons() {
+    const int edited = editedCount();
+    const bool writable = m_device && !m_session.monitorOnly();
+    m_apply->setText(edited ? tr("&Apply (%1)").arg(edited) : tr("&Apply"));
+    m_apply->setEnabled(writable && edited > 0);
+    m_revert->setEnabled(edited > 0);
+    m_refresh->setEnabled(m_device != nullptr);
+    m_save->setEnabled(writable && m_device->action("NVS"));
+    m_actions->setEnabled(writable && m_actions->menu() && !m_actions->menu()->isEmpty());
+    m_profiles->setEnabled(m_device != nullptr);
+    const QString why =
+        m_session.monitorOnly() ? tr("Monitor-only mode is on: nothing is written") : QString();
+    for (QWidget *w : {static_cast<QWidget *>(m_apply), static_cast<QWidget *>(m_save),
+                       static_cast<QWidget *>(m_actions)})
+        w->setToolTip(why.isEmpty() ? w->toolTip() : why);
+}
+
+void SettingsPage::applyEdits() {
+    for (Parameter *p : shownParameters())
+        if (p->edit() &&
+            (p->state() == Parameter::State::Edited || p->state() == Parameter::State::Failed))
+            p->apply();
+}
+
+void SettingsPage::revertEdits() {
+    for (Parameter *p : shownParameters())
+        p->revert();
+}
+
+void SettingsPage::saveToMemory() {
+    QString why;
+    if (auto *st = qobject_cast<StationModel *>(m_device.data()))
+        why = st->saveToMemory();
+    else if (auto *fd = qobject_cast<FeederModel *>(m_device.data()))
+        why = fd->saveToMemory();
+    if (!why.isEmpty())
+        QMessageBox::warning(this, tr("Save to station memory"), why);
+}
+
+void SettingsPage::runDangerous(const QByteArray &code) {
+    Action *a = m_device ? m_device->action(code) : nullptr;
+    if (!a)
+        return;
+    qint64 argument = 0;
+    if (code == "SAD") {
+        bool ok = false;
+        argument = QInputDialog::getInt(
+            this, a->name(), tr("New address (1-99), or 0 for frames without addresses:"),
+            m_device->address().value_or(1), 0, 99, 1, &ok);
+        if (!ok)
+            return;
+    }
+    const auto answer = QMessageBox::warning(
+        this, a->name(),
+        tr("%1\n\n%2\n\nDo you want to continue?").arg(a->description(), a->danger()),
+        QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer != QMessageBox::Yes)
+        return;
+    const QString why = a->trigger(Confirmation::Confirmed, argument);
+    if (!why.isEmpty())
+        QMessageBox::warning(this, a->name(), why);
+}
+
+void SettingsPage::saveProfile() {
+    if (!m_device)
+        return;
+    QStringList missing;
+    const Profile p = Profile::capture(*m_device, &missing);
+    if (!missing.isEmpty()) {
+        QMessageBox::warning(this, tr("Save profile"),
+                             tr("Some settings have not been read yet (%1). Refresh and try again.")
+                                 .arg(missing.mid(0, 8).join(QLatin1String(", "))));
+        return;
+    }
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save profile"), m_device->info().model + QStringLiteral(".json"),
+        tr("TipScope profiles (*.json)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!p.save(path, &error))
+        QMessageBox::critical(this, tr("Save profile"), error);
+}
+
+void SettingsPage::openProfile() {
+    if (!m_device)
+        return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open profile"), QString(),
+                                                      tr("TipScope profiles (*.json)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    const auto profile = Profile::load(path, &error);
+    if (!profile) {
+        QMessageBox::critical(this, tr("Open profile"), error);
+        return;
+    }
+    ProfileDialog dialog(*m_device, *profile, this);
+    dialog.exec();
+}
+
+} // namespace tipscope::gui

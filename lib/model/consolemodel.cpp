@@ -1,0 +1,286 @@
+#include "consolemodel.h"
+
+#include "protocol/catalog.h"
+#include "protocol/datafield.h"
+#include "protocol/hexbytes.h"
+
+#include <QBrush>
+#include <QColor>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QSaveFile>
+
+namespace tipscope::model {
+
+using namespace tipscope::protocol;
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(ConsoleModel)
+};
+
+QString commandName(const Frame &f) {
+    // The name of the command in any family that has it, for people reading raw frames.
+    const Catalog &cat = Catalog::builtin();
+    const Direction dir = f.header == Header::Write ? Direction::Write : Direction::Read;
+    for (const QString &fam : cat.familyNames())
+        if (auto r = cat.resolve(fam, f.command, dir))
+            return r->spec->name;
+    return {};
+}
+} // namespace
+
+ConsoleModel::ConsoleModel(QObject *parent, int capacity)
+    : QAbstractTableModel(parent)
+    , m_capacity(qMax(10, capacity)) {}
+
+void ConsoleModel::attach(link::FrameTap *tap) {
+    disconnect(m_connection);
+    m_tap = tap;
+    if (tap)
+        m_connection = connect(tap, &link::FrameTap::event, this,
+                               [this](const link::TapEvent &e) { add(fromTap(e)); });
+}
+
+ConsoleEntry ConsoleModel::fromTap(const link::TapEvent &e) {
+    ConsoleEntry c;
+    c.wallMs = e.wallMs;
+    c.monotonicUs = e.monotonicUs;
+    switch (e.kind) {
+    case link::TapEvent::Kind::Tx:
+        c.direction = ConsoleEntry::Direction::Tx;
+        c.bytes = e.bytes;
+        if (auto f = parseFrame(e.bytes))
+            c.frame = f;
+        else
+            c.remark = Tr::tr("sent as typed (not a valid frame)");
+        break;
+    case link::TapEvent::Kind::Rx:
+        c.direction = ConsoleEntry::Direction::Rx;
+        c.bytes = e.bytes;
+        break;
+    case link::TapEvent::Kind::Decoded:
+        c.bytes = e.decoded.raw;
+        if (e.decoded.kind == DecodeEvent::Kind::Frame) {
+            c.direction = ConsoleEntry::Direction::Decoded;
+            c.frame = e.decoded.frame;
+            c.stray = e.stray;
+            if (e.decoded.frame.header == Header::Nak)
+                c.remark =
+                    Catalog::builtin().nakText(parseNumber(e.decoded.frame.data).value_or(-1));
+            if (e.stray)
+                c.remark = Tr::tr("stray: answers no pending request");
+        } else {
+            c.direction = ConsoleEntry::Direction::Error;
+            c.bccOk = e.decoded.kind != DecodeEvent::Kind::BccError;
+            c.remark =
+                decodeEventKindName(e.decoded.kind) + QStringLiteral(": ") + e.decoded.detail;
+        }
+        break;
+    case link::TapEvent::Kind::Note:
+        c.direction = ConsoleEntry::Direction::Note;
+        c.remark = e.note;
+        break;
+    }
+    return c;
+}
+
+void ConsoleModel::add(const ConsoleEntry &e) {
+    if (m_paused) {
+        m_held.append(e);
+        if (m_held.size() > m_capacity)
+            m_held.removeFirst();
+        return;
+    }
+    if (m_originUs < 0)
+        m_originUs = e.monotonicUs;
+    if (int(m_entries.size()) >= m_capacity) {
+        beginRemoveRows({}, 0, 0);
+        m_entries.pop_front();
+        endRemoveRows();
+    }
+    const int row = int(m_entries.size());
+    beginInsertRows({}, row, row);
+    m_entries.push_back(e);
+    endInsertRows();
+}
+
+void ConsoleModel::setPaused(bool paused) {
+    m_paused = paused;
+    if (paused)
+        return;
+    const QList<ConsoleEntry> held = std::exchange(m_held, {});
+    for (const ConsoleEntry &e : held)
+        add(e);
+}
+
+void ConsoleModel::setRelativeTime(bool relative) {
+    m_relative = relative;
+    if (!m_entries.empty())
+        Q_EMIT dataChanged(index(0, Time), index(int(m_entries.size()) - 1, Time));
+}
+
+void ConsoleModel::clear() {
+    beginResetModel();
+    m_entries.clear();
+    m_held.clear();
+    m_originUs = -1;
+    endResetModel();
+}
+
+int ConsoleModel::rowCount(const QModelIndex &parent) const {
+    return parent.isValid() ? 0 : int(m_entries.size());
+}
+
+int ConsoleModel::columnCount(const QModelIndex &parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QString ConsoleModel::timeText(const ConsoleEntry &e) const {
+    if (m_relative)
+        return QStringLiteral("+%1 s").arg((e.monotonicUs - m_originUs) / 1e6, 0, 'f', 4);
+    return QDateTime::fromMSecsSinceEpoch(e.wallMs).toString(QStringLiteral("HH:mm:ss.zzz"));
+}
+
+static QString directionText(ConsoleEntry::Direction d) {
+    switch (d) {
+    case ConsoleEntry::Direction::Tx:
+        return Tr::tr("TX");
+    case ConsoleEntry::Direction::Rx:
+        return Tr::tr("RX");
+    case ConsoleEntry::Direction::Decoded:
+        return Tr::tr("frame");
+    case ConsoleEntry::Direction::Error:
+        return Tr::tr("error");
+    case ConsoleEntry::Direction::Note:
+        return Tr::tr("note");
+    }
+    return {};
+}
+
+QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
+    if (!index.isValid() || index.row() >= rowCount())
+        return {};
+    const ConsoleEntry &e = m_entries.at(size_t(index.row()));
+    if (role == Qt::ForegroundRole) {
+        if (e.direction == ConsoleEntry::Direction::Error || !e.bccOk)
+            return QBrush(QColor(0xc0, 0x1c, 0x28));
+        if (e.frame && e.frame->header == Header::Nak)
+            return QBrush(QColor(0xc0, 0x1c, 0x28));
+        if (e.stray)
+            return QBrush(QColor(0xb5, 0x83, 0x5a));
+        return {};
+    }
+    if (role != Qt::DisplayRole && role != Qt::ToolTipRole)
+        return {};
+    const std::optional<Frame> &f = e.frame;
+    switch (index.column()) {
+    case Time:
+        return timeText(e);
+    case Direction:
+        return directionText(e.direction);
+    case Device:
+        return f && f->isAddressed() ? QStringLiteral("%1→%2")
+                                           .arg(*f->source, 2, 10, QLatin1Char('0'))
+                                           .arg(*f->target, 2, 10, QLatin1Char('0'))
+                                     : QString();
+    case Header:
+        return f ? headerName(f->header) : QString();
+    case Command:
+        return f ? QString::fromLatin1(f->command) : QString();
+    case Name:
+        return f ? commandName(*f) : QString();
+    case Data:
+        return f ? QString::fromLatin1(f->data) : QString();
+    case Bcc:
+        if (e.direction == ConsoleEntry::Direction::Rx ||
+            e.direction == ConsoleEntry::Direction::Note)
+            return QString();
+        return e.bccOk ? Tr::tr("ok") : Tr::tr("bad");
+    case Hex:
+        return toHexText(e.bytes);
+    case Ascii:
+        return toAsciiText(e.bytes);
+    case Remark:
+        return e.remark;
+    default:
+        return {};
+    }
+}
+
+QVariant ConsoleModel::headerData(int section, Qt::Orientation o, int role) const {
+    if (o != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    static const char *names[] = {
+        QT_TRANSLATE_NOOP("ConsoleModel", "Time"),  QT_TRANSLATE_NOOP("ConsoleModel", "Dir"),
+        QT_TRANSLATE_NOOP("ConsoleModel", "Addr"),  QT_TRANSLATE_NOOP("ConsoleModel", "Header"),
+        QT_TRANSLATE_NOOP("ConsoleModel", "Cmd"),   QT_TRANSLATE_NOOP("ConsoleModel", "Name"),
+        QT_TRANSLATE_NOOP("ConsoleModel", "Data"),  QT_TRANSLATE_NOOP("ConsoleModel", "BCC"),
+        QT_TRANSLATE_NOOP("ConsoleModel", "Hex"),   QT_TRANSLATE_NOOP("ConsoleModel", "ASCII"),
+        QT_TRANSLATE_NOOP("ConsoleModel", "Remark")};
+    return section >= 0 && section < ColumnCount
+               ? QCoreApplication::translate("ConsoleModel", names[section])
+               : QVariant();
+}
+
+QString ConsoleModel::lineText(int row) const {
+    QStringList cells;
+    for (int c = 0; c < ColumnCount; ++c)
+        cells.append(data(index(row, c), Qt::DisplayRole).toString());
+    return cells.join(QLatin1Char('\t'));
+}
+
+bool ConsoleModel::saveText(const QString &path, QString *error) const {
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
+        *error = f.errorString();
+        return false;
+    }
+    QStringList header;
+    for (int c = 0; c < ColumnCount; ++c)
+        header.append(headerData(c, Qt::Horizontal, Qt::DisplayRole).toString());
+    f.write(header.join(QLatin1Char('\t')).toUtf8() + '\n');
+    for (int r = 0; r < rowCount(); ++r)
+        f.write(lineText(r).toUtf8() + '\n');
+    if (!f.commit()) {
+        *error = f.errorString();
+        return false;
+    }
+    return true;
+}
+
+bool ConsoleModel::filterAccepts(int row, const Filter &filter) const {
+    const ConsoleEntry &e = m_entries.at(size_t(row));
+    switch (e.direction) {
+    case ConsoleEntry::Direction::Tx:
+        if (!filter.tx)
+            return false;
+        break;
+    case ConsoleEntry::Direction::Rx:
+        if (!filter.rx)
+            return false;
+        break;
+    case ConsoleEntry::Direction::Decoded:
+        if (!filter.decoded)
+            return false;
+        break;
+    case ConsoleEntry::Direction::Error:
+        if (!filter.errors)
+            return false;
+        break;
+    case ConsoleEntry::Direction::Note:
+        if (!filter.notes)
+            return false;
+        break;
+    }
+    if (filter.address &&
+        (!e.frame || (e.frame->source != filter.address && e.frame->target != filter.address)))
+        return false;
+    if (!filter.command.isEmpty() &&
+        (!e.frame ||
+         !QString::fromLatin1(e.frame->command).contains(filter.command, Qt::CaseInsensitive)))
+        return false;
+    return true;
+}
+
+} // namespace tipscope::model

@@ -1,0 +1,88 @@
+// ConsoleModel: the raw frame console's data, apart from its widget.
+//
+// It keeps the last `capacity` entries of the line's FrameTap (TX and RX chunks, decoded frames
+// and decode errors, line notes) and presents them as a table: time, direction, device, header,
+// command and its catalog name, data, BCC, hex, ASCII, and a remark (error or NAK meaning). While
+// paused, new entries wait in a buffer and appear on resume, so pausing loses nothing. Filters
+// (direction, device address, command text) act on the view through filterAccepts().
+#pragma once
+
+#include "link/frametap.h"
+
+#include <QAbstractTableModel>
+#include <QPointer>
+#include <deque>
+
+namespace tipscope::model {
+
+struct ConsoleEntry {
+    enum class Direction { Tx, Rx, Decoded, Error, Note };
+    qint64 wallMs = 0;
+    qint64 monotonicUs = 0;
+    Direction direction = Direction::Tx;
+    QByteArray bytes;
+    std::optional<protocol::Frame> frame;
+    QString remark;
+    bool bccOk = true;
+    bool stray = false;
+};
+
+class ConsoleModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column {
+        Time,
+        Direction,
+        Device,
+        Header,
+        Command,
+        Name,
+        Data,
+        Bcc,
+        Hex,
+        Ascii,
+        Remark,
+        ColumnCount
+    };
+
+    explicit ConsoleModel(QObject *parent = nullptr, int capacity = 20000);
+
+    void attach(link::FrameTap *tap);
+    void setPaused(bool paused);
+    [[nodiscard]] bool isPaused() const { return m_paused; }
+    void setRelativeTime(bool relative);
+    void clear();
+
+    [[nodiscard]] int rowCount(const QModelIndex &parent = {}) const override;
+    [[nodiscard]] int columnCount(const QModelIndex &parent = {}) const override;
+    [[nodiscard]] QVariant data(const QModelIndex &index, int role) const override;
+    [[nodiscard]] QVariant headerData(int section, Qt::Orientation o, int role) const override;
+
+    [[nodiscard]] const ConsoleEntry &entry(int row) const { return m_entries.at(size_t(row)); }
+    [[nodiscard]] static ConsoleEntry fromTap(const link::TapEvent &e);
+    // One line per entry, as shown; for "save to file".
+    [[nodiscard]] QString lineText(int row) const;
+    bool saveText(const QString &path, QString *error) const;
+
+    struct Filter {
+        bool tx = true, rx = true, decoded = true, errors = true, notes = true;
+        std::optional<int> address;
+        QString command;
+    };
+    [[nodiscard]] bool filterAccepts(int row, const Filter &filter) const;
+
+private:
+    void add(const ConsoleEntry &e);
+    [[nodiscard]] QString timeText(const ConsoleEntry &e) const;
+
+    std::deque<ConsoleEntry> m_entries;
+    QList<ConsoleEntry> m_held;
+    int m_capacity;
+    bool m_paused = false;
+    bool m_relative = false;
+    qint64 m_originUs = -1;
+    QPointer<link::FrameTap> m_tap;
+    QMetaObject::Connection m_connection;
+};
+
+} // namespace tipscope::model

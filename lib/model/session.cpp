@@ -1,0 +1,259 @@
+#include "session.h"
+
+#include "sim/simline.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+
+namespace tipscope::model {
+
+using namespace tipscope::link;
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(Session)
+};
+const QStringList kPortSeries = {QStringLiteral("tip"), QStringLiteral("setpoint"),
+                                 QStringLiteral("power"), QStringLiteral("status")};
+const QStringList kFeederSeries = {QStringLiteral("fed"), QStringLiteral("speed"),
+                                   QStringLiteral("feeding")};
+} // namespace
+
+Session::Session(QObject *parent)
+    : QObject(parent)
+    , m_clockBaseMs(QDateTime::currentMSecsSinceEpoch()) {
+    m_clock.start();
+    m_stateText = Tr::tr("disconnected");
+}
+
+Session::~Session() {
+    m_scheduler.stop();
+    clearDevices();
+}
+
+StationModel *Session::station() const {
+    for (DeviceModel *d : m_devices)
+        if (auto *s = qobject_cast<StationModel *>(d))
+            return s;
+    return nullptr;
+}
+
+FeederModel *Session::feeder() const {
+    for (DeviceModel *d : m_devices)
+        if (auto *f = qobject_cast<FeederModel *>(d))
+            return f;
+    return nullptr;
+}
+
+QString Session::telemetryKey(const DeviceModel &device, int port) {
+    const QString who = device.info().addressText();
+    return port > 0 ? QStringLiteral("%1/port%2").arg(who).arg(port)
+                    : who + QStringLiteral("/feeder");
+}
+
+void Session::setState(State s, const QString &text) {
+    m_state = s;
+    m_stateText = text;
+    Q_EMIT stateChanged(s, text);
+}
+
+void Session::clearDevices() {
+    for (DeviceModel *d : std::as_const(m_devices)) {
+        m_scheduler.removeDevice(d);
+        delete d;
+    }
+    m_devices.clear();
+}
+
+void Session::connectTo(const Settings &settings) {
+    disconnectFromLine();
+    m_settings = settings;
+    if (settings.line.kind == LineSettings::Kind::Demo) {
+        m_demo = sim::SimLine::demo();
+        m_demo->setBaud(19200); // the demo behaves like a real station on a real wire
+        m_demo->setClockRunning(true);
+    }
+    LineSettings ls = settings.line;
+    ls.retryInitialOpen = true; // the application keeps trying; the state says why it cannot
+    m_line = std::make_unique<Line>(Line::makeTransport(ls, m_demo.get()), ls);
+    connect(m_line.get(), &Line::stateChanged, this, &Session::onLineState);
+    setState(State::Connecting, m_line->stateText());
+    m_line->open();
+}
+
+void Session::disconnectFromLine() {
+    m_scheduler.stop();
+    m_discovery.reset();
+    clearDevices();
+    Q_EMIT devicesChanged();
+    if (m_line) {
+        m_line->disconnect(this);
+        m_line->close();
+        m_line.reset();
+        m_log.add(Event::Kind::Connection, Event::Severity::Info, Tr::tr("line"),
+                  Tr::tr("disconnected"));
+    }
+    m_demo.reset();
+    setState(State::Disconnected, Tr::tr("disconnected"));
+}
+
+void Session::onLineState(Line::State s, const QString &) {
+    const QString text = m_line->stateText();
+    switch (s) {
+    case Line::State::Open:
+        m_log.add(Event::Kind::Connection, Event::Severity::Info, Tr::tr("line"), text);
+        if (m_devices.isEmpty())
+            detect();
+        else
+            setState(State::Connected, connectedText());
+        break;
+    case Line::State::Retrying:
+        m_log.add(Event::Kind::Connection, Event::Severity::Error, Tr::tr("line"), text);
+        setState(State::Retrying, text);
+        break;
+    case Line::State::Failed:
+        setState(State::Failed, text);
+        break;
+    case Line::State::Opening:
+        setState(State::Connecting, text);
+        break;
+    case Line::State::Closed:
+        break;
+    }
+}
+
+void Session::detect() {
+    setState(State::Detecting,
+             Tr::tr("looking for devices on %1").arg(m_line->transport().description()));
+    if (m_settings.addressing == Addressing::With) {
+        identify(m_settings.targetAddress);
+        return;
+    }
+    if (m_settings.addressing == Addressing::Without) {
+        identify(std::nullopt);
+        return;
+    }
+    m_discovery = std::make_unique<Discovery>(m_line->queue());
+    m_discovery->setScanAllAddresses(m_settings.scanAllAddresses);
+    connect(m_discovery.get(), &Discovery::finished, this,
+            [this] { adoptDevices(m_discovery->devices()); });
+    m_discovery->start();
+}
+
+void Session::identify(std::optional<int> address) {
+    // Discovery in one mode, limited to the named device.
+    m_discovery = std::make_unique<Discovery>(m_line->queue());
+    m_discovery->setMode(address ? Discovery::Mode::Addressed : Discovery::Mode::Unaddressed);
+    connect(m_discovery.get(), &Discovery::finished, this, [this, address] {
+        QList<DeviceInfo> found;
+        for (const DeviceInfo &d : m_discovery->devices())
+            if (d.address == address)
+                found.append(d);
+        if (found.isEmpty() && address) {
+            // Not a factory address: ask it directly.
+            Reply *r = m_line->queue().enqueue(Request::read(address, "SMN"), this);
+            connect(r, &Reply::finished, this, [this, r, address] {
+                r->deleteLater();
+                QList<DeviceInfo> one;
+                if (r->ok()) {
+                    DeviceInfo d;
+                    d.address = address;
+                    d.model = QString::fromLatin1(r->answer().data).trimmed();
+                    d.family = protocol::Catalog::builtin().familyForModel(d.model);
+                    one.append(d);
+                }
+                adoptDevices(one);
+            });
+            return;
+        }
+        adoptDevices(found);
+    });
+    m_discovery->start();
+}
+
+void Session::adoptDevices(const QList<DeviceInfo> &found) {
+    clearDevices();
+    for (const DeviceInfo &info : found) {
+        if (info.family.isEmpty())
+            continue;
+        DeviceModel *d = nullptr;
+        if (protocol::Catalog::builtin().family(info.family)->isFeeder()) {
+            auto *f = new FeederModel(m_line->queue(), info, this);
+            recordTelemetry(f);
+            d = f;
+        } else {
+            auto *s = new StationModel(m_line->queue(), info, this);
+            recordTelemetry(s);
+            d = s;
+        }
+        d->setEventLog(&m_log);
+        d->setTemperatureUnit(m_unit);
+        d->setWritesBlocked(m_monitorOnly);
+        m_devices.append(d);
+        m_scheduler.addDevice(d);
+        m_log.add(Event::Kind::Connection, Event::Severity::Info, d->displayName(),
+                  Tr::tr("found %1, software %2")
+                      .arg(info.family, info.softwareVersion.isEmpty() ? Tr::tr("unknown")
+                                                                       : info.softwareVersion));
+    }
+    m_scheduler.start();
+    Q_EMIT devicesChanged();
+    if (m_devices.isEmpty())
+        setState(State::Connected, Tr::tr("connected to %1, but no device answered (robot mode "
+                                          "off? wrong addressing or baud rate?)")
+                                       .arg(m_line->transport().description()));
+    else
+        setState(State::Connected, connectedText());
+}
+
+QString Session::connectedText() const {
+    return Tr::tr("%1, %n device(s)", nullptr, int(m_devices.size()))
+        .arg(m_line->transport().description());
+}
+
+qint64 Session::sampleTimeMs() const {
+    // Monotonic: a wall clock set back must not make every new sample look out of order.
+    return m_clockBaseMs + m_clock.elapsed();
+}
+
+void Session::recordTelemetry(StationModel *station) {
+    for (PortModel *port : station->ports()) {
+        const QString key = telemetryKey(*station, port->number());
+        m_telemetry.ensureBuffer(key, kPortSeries);
+        // A sample per tip-temperature reading; the other series carry their latest values.
+        connect(port->param("TT"), &Parameter::updated, this, [this, port, key] {
+            const auto status = port->param("PS")->number();
+            m_telemetry.append(key, sampleTimeMs(),
+                               {qint32(port->tipTemperature().value_or(0)),
+                                qint32(port->selectedTemperature().value_or(0)),
+                                qint32(port->power().value_or(0)), qint32(status.value_or(0))});
+        });
+    }
+}
+
+void Session::recordTelemetry(FeederModel *feeder) {
+    const QString key = telemetryKey(*feeder, 0);
+    m_telemetry.ensureBuffer(key, kFeederSeries);
+    connect(feeder->parameter("FDL"), &Parameter::updated, this, [this, feeder, key] {
+        m_telemetry.append(key, sampleTimeMs(),
+                           {qint32(feeder->fedLength().value_or(0)),
+                            qint32(feeder->parameter("SPD")->number().value_or(0)),
+                            qint32(feeder->isFeeding().value_or(false) ? 1 : 0)});
+    });
+}
+
+void Session::setTemperatureUnit(TemperatureUnit unit) {
+    m_unit = unit;
+    for (DeviceModel *d : std::as_const(m_devices))
+        d->setTemperatureUnit(unit);
+    Q_EMIT temperatureUnitChanged();
+}
+
+void Session::setMonitorOnly(bool on) {
+    m_monitorOnly = on;
+    for (DeviceModel *d : std::as_const(m_devices))
+        d->setWritesBlocked(on);
+    Q_EMIT monitorOnlyChanged(on);
+}
+
+} // namespace tipscope::model

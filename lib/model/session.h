@@ -1,0 +1,103 @@
+// Session: everything TipScope does with one line, for the application and its tests.
+//
+// connectTo() builds the line (serial, TCP, or the built-in simulated DME + SFR of demo mode),
+// opens it, finds the devices (or identifies the one the settings name), and builds a
+// StationModel or FeederModel for each, registered with the poll scheduler, the event log and
+// the telemetry recorder. A line that is lost keeps its device models: the line reconnects by
+// itself and polling resumes. Monitor-only and the temperature unit apply to every device.
+#pragma once
+
+#include "eventlog.h"
+#include "feedermodel.h"
+#include "pollscheduler.h"
+#include "stationmodel.h"
+#include "telemetry/telemetry.h"
+
+#include "link/discovery.h"
+#include "link/line.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <memory>
+
+namespace tipscope::sim {
+class SimLine;
+}
+
+namespace tipscope::model {
+
+class Session : public QObject {
+    Q_OBJECT
+public:
+    enum class Addressing { Auto, With, Without };
+    enum class State { Disconnected, Connecting, Detecting, Connected, Retrying, Failed };
+    Q_ENUM(State)
+
+    struct Settings {
+        link::LineSettings line;
+        Addressing addressing = Addressing::Auto;
+        int targetAddress = 1;
+        bool scanAllAddresses = false;
+    };
+
+    explicit Session(QObject *parent = nullptr);
+    ~Session() override;
+
+    void connectTo(const Settings &settings);
+    void disconnectFromLine();
+
+    [[nodiscard]] State state() const { return m_state; }
+    [[nodiscard]] QString stateText() const { return m_stateText; }
+    [[nodiscard]] const Settings &settings() const { return m_settings; }
+    [[nodiscard]] const QList<DeviceModel *> &devices() const { return m_devices; }
+    [[nodiscard]] StationModel *station() const;
+    [[nodiscard]] FeederModel *feeder() const;
+    [[nodiscard]] link::Line *line() const { return m_line.get(); }
+    [[nodiscard]] sim::SimLine *demoLine() const { return m_demo.get(); }
+    [[nodiscard]] PollScheduler &scheduler() { return m_scheduler; }
+    [[nodiscard]] EventLog &eventLog() { return m_log; }
+    [[nodiscard]] Telemetry &telemetry() { return m_telemetry; }
+
+    [[nodiscard]] TemperatureUnit temperatureUnit() const { return m_unit; }
+    void setTemperatureUnit(TemperatureUnit unit);
+    [[nodiscard]] bool monitorOnly() const { return m_monitorOnly; }
+    void setMonitorOnly(bool on);
+
+    // The telemetry key of a port or feeder ("01/port2", "10/feeder", "--/port1").
+    [[nodiscard]] static QString telemetryKey(const DeviceModel &device, int port);
+
+Q_SIGNALS:
+    void stateChanged(tipscope::model::Session::State state, const QString &text);
+    void devicesChanged();
+    void monitorOnlyChanged(bool on);
+    void temperatureUnitChanged();
+
+private:
+    void setState(State s, const QString &text);
+    void onLineState(link::Line::State s, const QString &detail);
+    void detect();
+    void adoptDevices(const QList<link::DeviceInfo> &found);
+    void identify(std::optional<int> address);
+    void clearDevices();
+    void recordTelemetry(StationModel *station);
+    void recordTelemetry(FeederModel *feeder);
+    [[nodiscard]] QString connectedText() const;
+    [[nodiscard]] qint64 sampleTimeMs() const;
+
+    Settings m_settings;
+    std::unique_ptr<sim::SimLine> m_demo;
+    std::unique_ptr<link::Line> m_line;
+    std::unique_ptr<link::Discovery> m_discovery;
+    QList<DeviceModel *> m_devices;
+    PollScheduler m_scheduler;
+    EventLog m_log;
+    Telemetry m_telemetry;
+    State m_state = State::Disconnected;
+    QString m_stateText;
+    TemperatureUnit m_unit = TemperatureUnit::Celsius;
+    bool m_monitorOnly = false;
+    qint64 m_clockBaseMs = 0;
+    QElapsedTimer m_clock;
+};
+
+} // namespace tipscope::model

@@ -1,0 +1,151 @@
+#include "supportreport.h"
+
+#include "session.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QMetaEnum>
+#include <QSaveFile>
+#include <QSysInfo>
+
+namespace tipscope::model {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(SupportReport)
+};
+
+QJsonObject deviceJson(const DeviceModel &d) {
+    QJsonArray values;
+    for (const Parameter *p : d.parameters()) {
+        if (!p->value())
+            continue;
+        values.append(
+            QJsonObject{{QStringLiteral("code"), QString::fromLatin1(p->code())},
+                        {QStringLiteral("name"), p->meta().name},
+                        {QStringLiteral("group"), p->meta().group},
+                        {QStringLiteral("data"), QString::fromLatin1(p->rawValue())},
+                        {QStringLiteral("text"), p->displayText()},
+                        {QStringLiteral("state"),
+                         QString::fromLatin1(
+                             QMetaEnum::fromType<Parameter::State>().valueToKey(int(p->state())))},
+                        {QStringLiteral("updated"), p->lastUpdate().toString(Qt::ISODateWithMs)}});
+    }
+    return {{QStringLiteral("address"), d.info().addressText()},
+            {QStringLiteral("model"), d.info().model},
+            {QStringLiteral("family"), d.family()},
+            {QStringLiteral("softwareVersion"), d.info().softwareVersion},
+            {QStringLiteral("values"), values}};
+}
+} // namespace
+
+QJsonObject supportReportJson(Session &session, int recentEvents) {
+    QJsonObject line;
+    if (link::Line *l = session.line()) {
+        const link::LinkStats &s = l->queue().stats();
+        const qint64 now = l->queue().nowMs();
+        QJsonObject naks;
+        for (auto it = s.naks.begin(); it != s.naks.end(); ++it)
+            naks.insert(QString::number(it.key()), it.value());
+        line = {{QStringLiteral("transport"), l->transport().description()},
+                {QStringLiteral("state"), l->stateText()},
+                {QStringLiteral("reconnects"), l->reconnects()},
+                {QStringLiteral("sent"), s.sent},
+                {QStringLiteral("answered"), s.answered},
+                {QStringLiteral("timeouts"), s.timeouts},
+                {QStringLiteral("corrupted"), s.corrupted},
+                {QStringLiteral("stray"), s.stray},
+                {QStringLiteral("retries"), s.retries},
+                {QStringLiteral("naks"), naks},
+                {QStringLiteral("latencyMedianMs"), s.medianLatencyUs() / 1000.0},
+                {QStringLiteral("transactionsPerSecond"), s.transactionsPerSecond(now)},
+                {QStringLiteral("summary"), s.summary(now)}};
+    }
+    QJsonArray devices;
+    for (const DeviceModel *d : session.devices())
+        devices.append(deviceJson(*d));
+    QJsonArray events;
+    const QList<Event> all = session.eventLog().events();
+    for (qsizetype i = qMax<qsizetype>(0, all.size() - recentEvents); i < all.size(); ++i) {
+        const Event &e = all.at(i);
+        events.append(QJsonObject{{QStringLiteral("time"), e.time.toString(Qt::ISODateWithMs)},
+                                  {QStringLiteral("kind"), Event::kindName(e.kind)},
+                                  {QStringLiteral("severity"), Event::severityName(e.severity)},
+                                  {QStringLiteral("source"), e.source},
+                                  {QStringLiteral("text"), e.text}});
+    }
+    return {{QStringLiteral("format"), QStringLiteral("tipscope-support-report")},
+            {QStringLiteral("created"), QDateTime::currentDateTime().toString(Qt::ISODateWithMs)},
+            {QStringLiteral("tipscopeVersion"), QCoreApplication::applicationVersion()},
+            {QStringLiteral("qtVersion"), QString::fromLatin1(qVersion())},
+            {QStringLiteral("system"), QSysInfo::prettyProductName()},
+            {QStringLiteral("line"), line},
+            {QStringLiteral("devices"), devices},
+            {QStringLiteral("events"), events}};
+}
+
+QString supportReportText(const QJsonObject &r) {
+    QStringList out;
+    out << Tr::tr("TipScope support report, %1").arg(r.value(QStringLiteral("created")).toString())
+        << Tr::tr("TipScope %1, Qt %2, %3")
+               .arg(r.value(QStringLiteral("tipscopeVersion")).toString(),
+                    r.value(QStringLiteral("qtVersion")).toString(),
+                    r.value(QStringLiteral("system")).toString())
+        << QString();
+    const QJsonObject line = r.value(QStringLiteral("line")).toObject();
+    out << Tr::tr("Line: %1").arg(line.value(QStringLiteral("transport")).toString())
+        << Tr::tr("State: %1").arg(line.value(QStringLiteral("state")).toString())
+        << Tr::tr("Statistics: %1").arg(line.value(QStringLiteral("summary")).toString())
+        << QString();
+    for (const QJsonValue &dv : r.value(QStringLiteral("devices")).toArray()) {
+        const QJsonObject d = dv.toObject();
+        out << Tr::tr("Device %1: %2 (%3), software %4")
+                   .arg(d.value(QStringLiteral("address")).toString(),
+                        d.value(QStringLiteral("model")).toString(),
+                        d.value(QStringLiteral("family")).toString(),
+                        d.value(QStringLiteral("softwareVersion")).toString());
+        for (const QJsonValue &vv : d.value(QStringLiteral("values")).toArray()) {
+            const QJsonObject v = vv.toObject();
+            out << QStringLiteral("  %1 %2: %3")
+                       .arg(v.value(QStringLiteral("code")).toString(), -4)
+                       .arg(v.value(QStringLiteral("name")).toString(),
+                            v.value(QStringLiteral("text")).toString());
+        }
+        out << QString();
+    }
+    out << Tr::tr("Recent events:");
+    for (const QJsonValue &ev : r.value(QStringLiteral("events")).toArray()) {
+        const QJsonObject e = ev.toObject();
+        out << QStringLiteral("  %1 [%2] %3 %4: %5")
+                   .arg(e.value(QStringLiteral("time")).toString(),
+                        e.value(QStringLiteral("severity")).toString(),
+                        e.value(QStringLiteral("kind")).toString(),
+                        e.value(QStringLiteral("source")).toString(),
+                        e.value(QStringLiteral("text")).toString());
+    }
+    return out.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
+QStringList writeSupportReport(Session &session, const QString &folder, QString *error) {
+    const QJsonObject report = supportReportJson(session);
+    const QString stem = QDir(folder).filePath(
+        QStringLiteral("tipscope-report-%1")
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
+    const QList<QPair<QString, QByteArray>> files = {
+        {stem + QStringLiteral(".json"), QJsonDocument(report).toJson(QJsonDocument::Indented)},
+        {stem + QStringLiteral(".txt"), supportReportText(report).toUtf8()}};
+    QStringList written;
+    for (const auto &[path, bytes] : files) {
+        QSaveFile f(path);
+        if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
+            *error = Tr::tr("cannot write %1: %2").arg(path, f.errorString());
+            return {};
+        }
+        written.append(path);
+    }
+    return written;
+}
+
+} // namespace tipscope::model

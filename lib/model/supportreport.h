@@ -1,0 +1,22 @@
+// The support report: one action writes what support staff need into two files, JSON for
+// machines and text for people: TipScope's version, the line and its statistics, each device's
+// identity and software version, every value it reported (settings, counters, errors), and the
+// recent event log. Nothing is read from the devices for it: it shows what TipScope knew.
+#pragma once
+
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+namespace tipscope::model {
+
+class Session;
+
+[[nodiscard]] QJsonObject supportReportJson(Session &session, int recentEvents = 500);
+[[nodiscard]] QString supportReportText(const QJsonObject &report);
+// Writes tipscope-report-<date>.json and .txt into `folder`; returns their paths, or empty
+// with `error` set.
+[[nodiscard]] QStringList writeSupportReport(Session &session, const QString &folder,
+                                             QString *error);
+
+} // namespace tipscope::model

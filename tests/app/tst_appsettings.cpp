@@ -1,0 +1,98 @@
+// Settings from an older version or edited by hand fall back to defaults; they never reach the
+// line.
+#include "appsettings.h"
+
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace tipscope::gui;
+using namespace tipscope::model;
+
+class TestAppSettings : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void roundTripsEverything();
+    void malformedValuesFallBackToDefaults_data();
+    void malformedValuesFallBackToDefaults();
+    void unusableConnectionsAreRefusedWithAReason();
+};
+
+void TestAppSettings::roundTripsEverything() {
+    QTemporaryDir dir;
+    QSettings s(dir.filePath(QStringLiteral("a.ini")), QSettings::IniFormat);
+    AppSettings a;
+    a.kind = AppSettings::Kind::Tcp;
+    a.tcpAddress = QStringLiteral("10.0.0.5:4001");
+    a.baud = 9600;
+    a.parity = QStringLiteral("even");
+    a.addressing = Session::Addressing::With;
+    a.targetAddress = 7;
+    a.unit = TemperatureUnit::Fahrenheit;
+    a.liveMs = 500;
+    a.language = QStringLiteral("de");
+    a.save(s);
+    const AppSettings b = AppSettings::load(s);
+    QCOMPARE(int(b.kind), int(a.kind));
+    QCOMPARE(b.tcpAddress, a.tcpAddress);
+    QCOMPARE(b.baud, 9600);
+    QCOMPARE(b.parity, QStringLiteral("even"));
+    QCOMPARE(int(b.addressing), int(Session::Addressing::With));
+    QCOMPARE(b.targetAddress, 7);
+    QCOMPARE(int(b.unit), int(TemperatureUnit::Fahrenheit));
+    QCOMPARE(b.liveMs, 500);
+    QCOMPARE(b.language, QStringLiteral("de"));
+}
+
+void TestAppSettings::malformedValuesFallBackToDefaults_data() {
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QVariant>("value");
+    QTest::newRow("kind") << "connection/kind" << QVariant(QStringLiteral("carrier-pigeon"));
+    QTest::newRow("baud text") << "line/baud" << QVariant(QStringLiteral("fast"));
+    QTest::newRow("baud negative") << "line/baud" << QVariant(-5);
+    QTest::newRow("parity") << "line/parity" << QVariant(QStringLiteral("mark"));
+    QTest::newRow("address") << "line/targetAddress" << QVariant(250);
+    QTest::newRow("unit") << "prefs/temperatureUnit" << QVariant(QStringLiteral("K"));
+    QTest::newRow("poll") << "poll/liveMs" << QVariant(0);
+    QTest::newRow("retries") << "link/retries" << QVariant(1000);
+    QTest::newRow("language") << "ui/language" << QVariant(QStringLiteral("tlh"));
+    QTest::newRow("tcp") << "connection/tcp" << QVariant(QStringLiteral("nohost"));
+    QTest::newRow("binary") << "line/baud" << QVariant(QByteArray("\xff\xfe\x00", 3));
+}
+
+void TestAppSettings::malformedValuesFallBackToDefaults() {
+    QFETCH(QString, key);
+    QFETCH(QVariant, value);
+    QTemporaryDir dir;
+    QSettings s(dir.filePath(QStringLiteral("b.ini")), QSettings::IniFormat);
+    s.setValue(key, value);
+    const AppSettings loaded = AppSettings::load(s);
+    const AppSettings defaults;
+    QCOMPARE(int(loaded.kind), int(defaults.kind));
+    QCOMPARE(loaded.baud, defaults.baud);
+    QCOMPARE(loaded.parity, defaults.parity);
+    QCOMPARE(loaded.targetAddress, defaults.targetAddress);
+    QCOMPARE(int(loaded.unit), int(defaults.unit));
+    QCOMPARE(loaded.liveMs, defaults.liveMs);
+    QCOMPARE(loaded.retries, defaults.retries);
+    QCOMPARE(loaded.language, defaults.language);
+    QCOMPARE(loaded.tcpAddress, defaults.tcpAddress);
+}
+
+void TestAppSettings::unusableConnectionsAreRefusedWithAReason() {
+    AppSettings a;
+    QString error;
+    a.kind = AppSettings::Kind::Serial;
+    a.serialPort = QStringLiteral("  ");
+    QVERIFY(!a.sessionSettings(&error));
+    QVERIFY(error.contains(QStringLiteral("serial port")));
+    a.kind = AppSettings::Kind::Tcp;
+    a.tcpAddress = QStringLiteral("host:99999");
+    QVERIFY(!a.sessionSettings(&error));
+    QVERIFY(error.contains(QStringLiteral("HOST:PORT")));
+    a.kind = AppSettings::Kind::Demo;
+    QVERIFY(a.sessionSettings(&error));
+}
+
+QTEST_GUILESS_MAIN(TestAppSettings)
+#include "tst_appsettings.moc"

@@ -1,0 +1,157 @@
+// The real main window on the offscreen platform, driven against the demo simulator.
+#include "connectionbar.h"
+#include "devicetree.h"
+#include "mainwindow.h"
+#include "pages/overviewpage.h"
+#include "pages/portcard.h"
+#include "pages/settingspage.h"
+#include "widgets/parametereditor.h"
+
+#include "link/simtransport.h"
+#include "sim/simline.h"
+
+#include <QSettings>
+#include <QTabWidget>
+#include <QtTest>
+
+using namespace tipscope;
+using namespace tipscope::gui;
+using namespace tipscope::model;
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void demoConnectsAndShowsEveryPortLive();
+    void aSettingEditedAndAppliedReachesTheStation();
+    void anInvalidEntryIsRefusedAndNothingIsSent();
+    void monitorOnlyBlocksTheRobotControls();
+    void robotControlsSetStatusAndSetpoint();
+    void unplugShowsRetryingAndRecovers();
+    void badConnectionSettingsAreRefusedWithAReason();
+
+private:
+    void connectDemo(MainWindow &w);
+};
+
+void TestMainWindow::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("TipScopeTests"));
+    QSettings().clear();
+}
+
+void TestMainWindow::connectDemo(MainWindow &w) {
+    AppSettings s;
+    s.kind = AppSettings::Kind::Demo;
+    w.connectWith(s);
+    QTRY_COMPARE_WITH_TIMEOUT(w.session().state(), Session::State::Connected, 10000);
+    QCOMPARE(w.session().devices().size(), 2);
+}
+
+void TestMainWindow::demoConnectsAndShowsEveryPortLive() {
+    MainWindow w;
+    w.show();
+    connectDemo(w);
+    QVERIFY(w.connectionBar().stateText().startsWith(QStringLiteral("Connected")));
+    auto *overview = qobject_cast<OverviewPage *>(w.page(QStringLiteral("Overview")));
+    QVERIFY(overview);
+    for (int port = 1; port <= 4; ++port) {
+        QVERIFY(overview->card(port));
+        QTRY_VERIFY_WITH_TIMEOUT(overview->card(port)->tipText().contains(QStringLiteral("°C")),
+                                 10000);
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(overview->stationText().contains(QStringLiteral("DME-2C")), 5000);
+    QCOMPARE(w.deviceTree().topLevelItem(0)->childCount(), 2);
+}
+
+void TestMainWindow::aSettingEditedAndAppliedReachesTheStation() {
+    MainWindow w;
+    w.show();
+    connectDemo(w);
+    auto *settings = qobject_cast<SettingsPage *>(w.page(QStringLiteral("Settings")));
+    w.pages().setCurrentWidget(settings);
+    ParameterEditor *mat = settings->editorFor("MAT");
+    QVERIFY(mat);
+    QTRY_VERIFY_WITH_TIMEOUT(mat->parameter()->value().has_value(), 15000);
+    QCOMPARE(mat->enterText(QStringLiteral("450")), QString());
+    QCOMPARE(settings->editedCount(), 1);
+    settings->applyEdits();
+    QTRY_COMPARE_WITH_TIMEOUT(mat->parameter()->state(), Parameter::State::InSync, 10000);
+    QCOMPARE(w.session().demoLine()->station()->setting("MAT").value(), 450);
+}
+
+void TestMainWindow::anInvalidEntryIsRefusedAndNothingIsSent() {
+    MainWindow w;
+    w.show();
+    connectDemo(w);
+    auto *settings = qobject_cast<SettingsPage *>(w.page(QStringLiteral("Settings")));
+    ParameterEditor *st = settings->editorFor("ST1");
+    QVERIFY(st);
+    QTRY_VERIFY_WITH_TIMEOUT(st->parameter()->value().has_value(), 15000);
+    const qint64 writes = w.session().demoLine()->stats().writeRequests;
+    const QString why = st->enterText(QStringLiteral("353"));
+    QVERIFY2(why.contains(QStringLiteral("steps of 5")), qPrintable(why));
+    QCOMPARE(settings->editedCount(), 0);
+    settings->applyEdits();
+    QTest::qWait(300);
+    QCOMPARE(w.session().demoLine()->stats().writeRequests, writes);
+}
+
+void TestMainWindow::monitorOnlyBlocksTheRobotControls() {
+    MainWindow w;
+    w.show();
+    connectDemo(w);
+    w.session().setMonitorOnly(true);
+    auto *overview = qobject_cast<OverviewPage *>(w.page(QStringLiteral("Overview")));
+    QVERIFY(overview->card(1)->requestMode(1).contains(QStringLiteral("monitor-only")));
+    QTest::qWait(200);
+    QCOMPARE(w.session().demoLine()->stats().writeRequests, 0);
+}
+
+void TestMainWindow::robotControlsSetStatusAndSetpoint() {
+    MainWindow w;
+    w.show();
+    connectDemo(w);
+    auto *overview = qobject_cast<OverviewPage *>(w.page(QStringLiteral("Overview")));
+    QTRY_VERIFY_WITH_TIMEOUT(w.session().station()->port(2)->param("ST")->value().has_value(),
+                             10000);
+    QCOMPARE(overview->card(2)->requestMode(10), QString());
+    QTRY_VERIFY_WITH_TIMEOUT(w.session().demoLine()->station()->port(2).cooling, 10000);
+    QCOMPARE(overview->card(2)->requestSetpoint(300), QString());
+    QTRY_COMPARE_WITH_TIMEOUT(w.session().demoLine()->station()->setting("ST2").value_or(0), 300,
+                              10000);
+    QVERIFY(!overview->card(2)->requestSetpoint(302).isEmpty());
+}
+
+void TestMainWindow::unplugShowsRetryingAndRecovers() {
+    MainWindow w;
+    w.show();
+    connectDemo(w);
+    auto *transport = qobject_cast<link::SimTransport *>(&w.session().line()->transport());
+    QVERIFY(transport);
+    transport->setPlugged(false);
+    QTRY_COMPARE_WITH_TIMEOUT(w.session().state(), Session::State::Retrying, 5000);
+    QVERIFY(w.connectionBar().stateText().contains(QStringLiteral("retrying")));
+    transport->setPlugged(true);
+    QTRY_COMPARE_WITH_TIMEOUT(w.session().state(), Session::State::Connected, 5000);
+    QCOMPARE(w.session().devices().size(), 2);
+}
+
+void TestMainWindow::badConnectionSettingsAreRefusedWithAReason() {
+    MainWindow w;
+    AppSettings s;
+    s.kind = AppSettings::Kind::Tcp;
+    s.tcpAddress = QStringLiteral("no-port-here");
+    w.connectionBar().setSettings(s);
+    QVERIFY(w.connectLine().contains(QStringLiteral("HOST:PORT")));
+    QCOMPARE(w.session().state(), Session::State::Disconnected);
+    s.kind = AppSettings::Kind::Serial;
+    s.serialPort = QStringLiteral("/dev/tipscope-missing");
+    w.connectWith(s);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        w.connectionBar().stateText().contains(QStringLiteral("no such port"), Qt::CaseInsensitive),
+        5000);
+}
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"

@@ -1,0 +1,163 @@
+// Discovery finds the simulated devices in probe order, identifies their family and software,
+// honours the addressing mode it is given, and reports its progress.
+#include "link/discovery.h"
+#include "link/line.h"
+#include "link/simtransport.h"
+#include "sim/simline.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace tipscope::link;
+using tipscope::sim::SimLine;
+using tipscope::sim::SimStation;
+
+Q_DECLARE_METATYPE(tipscope::link::DeviceInfo)
+
+namespace {
+
+constexpr int kWaitMs = 20000; // a generous ceiling for "eventually", never asserted on
+
+enum class Wiring { Demo, Ddr };
+
+std::unique_ptr<SimLine> makeSimLine(Wiring wiring) {
+    if (wiring == Wiring::Demo)
+        return SimLine::demo(); // DME at 01, SFR at 10
+    auto sim = std::make_unique<SimLine>();
+    sim->addDevice(std::make_unique<SimStation>(QStringLiteral("DDR"))); // no addresses
+    return sim;
+}
+
+// An open line to a simulated wiring, ready for discovery.
+struct Bench {
+    explicit Bench(Wiring wiring)
+        : sim(makeSimLine(wiring)) {
+        LineSettings s;
+        s.kind = LineSettings::Kind::Demo;
+        s.queue.turnaroundMs = 20;
+        // Low enough that the silence of absent addresses would look like a lost line, were
+        // probes counted towards it.
+        s.suspectAfterTimeouts = 2;
+        line = std::make_unique<Line>(std::make_unique<SimTransport>(*sim), s);
+    }
+
+    std::unique_ptr<SimLine> sim;
+    std::unique_ptr<Line> line;
+};
+
+QString addressesText(const QList<DeviceInfo> &devices) {
+    QStringList out;
+    for (const DeviceInfo &d : devices)
+        out.append(d.addressText());
+    return out.join(QLatin1Char(' '));
+}
+
+} // namespace
+
+class TestDiscovery : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void demoLineIsTwoIdentifiedDevicesInProbeOrder();
+    void ddrLineIsOneDeviceWithoutAddress();
+    void modeDecidesWhichDevicesAreFound_data();
+    void modeDecidesWhichDevicesAreFound();
+};
+
+void TestDiscovery::demoLineIsTwoIdentifiedDevicesInProbeOrder() {
+    Bench b(Wiring::Demo);
+    b.line->open();
+    QTRY_COMPARE_WITH_TIMEOUT(b.line->state(), Line::State::Open, kWaitMs);
+    Discovery discovery(b.line->queue());
+    QSignalSpy found(&discovery, &Discovery::deviceFound);
+    QVERIFY(found.isValid());
+    QSignalSpy finished(&discovery, &Discovery::finished);
+    QVERIFY(finished.isValid());
+
+    discovery.start();
+    QVERIFY(discovery.isRunning());
+    QVERIFY(finished.wait(kWaitMs));
+    QVERIFY(!discovery.isRunning());
+
+    const QList<DeviceInfo> devices = discovery.devices();
+    QCOMPARE(devices.size(), 2);
+    QCOMPARE(devices[0].address, std::optional<int>(1));
+    QCOMPARE(devices[0].model, QStringLiteral("DME-2C"));
+    QCOMPARE(devices[0].family, QStringLiteral("DME"));
+    QCOMPARE(devices[0].softwareVersion, QStringLiteral("9996780"));
+    QCOMPARE(devices[1].address, std::optional<int>(10));
+    QCOMPARE(devices[1].model, QStringLiteral("SFR-A"));
+    QCOMPARE(devices[1].family, QStringLiteral("SFR"));
+    QCOMPARE(devices[0].summary(), QStringLiteral("01 DME-2C DME 9996780"));
+
+    QCOMPARE(found.count(), 2);
+    QCOMPARE(found.at(0).at(0).value<DeviceInfo>().model, QStringLiteral("DME-2C"));
+    QCOMPARE(found.at(1).at(0).value<DeviceInfo>().model, QStringLiteral("SFR-A"));
+    QCOMPARE(finished.count(), 1);
+}
+
+void TestDiscovery::ddrLineIsOneDeviceWithoutAddress() {
+    Bench b(Wiring::Ddr);
+    b.line->open();
+    QTRY_COMPARE_WITH_TIMEOUT(b.line->state(), Line::State::Open, kWaitMs);
+    Discovery discovery(b.line->queue());
+    QSignalSpy finished(&discovery, &Discovery::finished);
+    QVERIFY(finished.isValid());
+
+    discovery.start();
+    QVERIFY(finished.wait(kWaitMs));
+
+    const QList<DeviceInfo> devices = discovery.devices();
+    QCOMPARE(devices.size(), 1);
+    QCOMPARE(devices[0].address, std::nullopt);
+    QCOMPARE(devices[0].addressText(), QStringLiteral("--"));
+    QCOMPARE(devices[0].model, QStringLiteral("DDR"));
+    QCOMPARE(devices[0].family, QStringLiteral("DDR"));
+}
+
+void TestDiscovery::modeDecidesWhichDevicesAreFound_data() {
+    QTest::addColumn<int>("wiring");
+    QTest::addColumn<int>("mode");
+    QTest::addColumn<QString>("expected"); // addresses in probe order
+    QTest::addColumn<int>("probes");
+
+    const int demo = int(Wiring::Demo);
+    const int ddr = int(Wiring::Ddr);
+    QTest::newRow("demo, auto") << demo << int(Discovery::Mode::Auto) << "01 10" << 4;
+    QTest::newRow("demo, addressed") << demo << int(Discovery::Mode::Addressed) << "01 10" << 3;
+    QTest::newRow("demo, unaddressed") << demo << int(Discovery::Mode::Unaddressed) << "" << 1;
+    QTest::newRow("ddr, auto") << ddr << int(Discovery::Mode::Auto) << "--" << 4;
+    QTest::newRow("ddr, addressed") << ddr << int(Discovery::Mode::Addressed) << "" << 3;
+    QTest::newRow("ddr, unaddressed") << ddr << int(Discovery::Mode::Unaddressed) << "--" << 1;
+}
+
+void TestDiscovery::modeDecidesWhichDevicesAreFound() {
+    QFETCH(int, wiring);
+    QFETCH(int, mode);
+    QFETCH(QString, expected);
+    QFETCH(int, probes);
+
+    Bench b(static_cast<Wiring>(wiring));
+    b.line->open();
+    QTRY_COMPARE_WITH_TIMEOUT(b.line->state(), Line::State::Open, kWaitMs);
+    Discovery discovery(b.line->queue());
+    discovery.setMode(Discovery::Mode(mode));
+    QSignalSpy progress(&discovery, &Discovery::progress);
+    QVERIFY(progress.isValid());
+    QSignalSpy finished(&discovery, &Discovery::finished);
+    QVERIFY(finished.isValid());
+
+    discovery.start();
+    QVERIFY(finished.wait(kWaitMs));
+
+    QCOMPARE(addressesText(discovery.devices()), expected);
+    QCOMPARE(b.line->state(), Line::State::Open);
+    QCOMPARE(b.line->reconnects(), 0);
+    QCOMPARE(progress.count(), probes);
+    for (int i = 0; i < progress.count(); ++i) {
+        QCOMPARE(progress.at(i).at(0).toInt(), i + 1);
+        QCOMPARE(progress.at(i).at(1).toInt(), probes);
+    }
+}
+
+QTEST_GUILESS_MAIN(TestDiscovery)
+#include "tst_discovery.moc"
