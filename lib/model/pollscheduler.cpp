@@ -44,6 +44,11 @@ void PollScheduler::addDevice(DeviceModel *device) {
 }
 
 void PollScheduler::removeDevice(DeviceModel *device) {
+    // A device deleted with polls in flight takes their replies along: they never finish, so
+    // their slots are given back here or polling would stall after a reconnect.
+    for (const Item &i : m_items)
+        if (i.device == device && i.inFlight)
+            --m_inFlight;
     m_items.erase(std::remove_if(m_items.begin(), m_items.end(),
                                  [device](const Item &i) { return i.device == device; }),
                   m_items.end());

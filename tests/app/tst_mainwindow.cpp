@@ -70,13 +70,14 @@ void TestMainWindow::aSettingEditedAndAppliedReachesTheStation() {
     connectDemo(w);
     auto *settings = qobject_cast<SettingsPage *>(w.page(QStringLiteral("Settings")));
     w.pages().setCurrentWidget(settings);
+    Parameter *matParam = w.session().station()->parameter("MAT");
+    QTRY_VERIFY_WITH_TIMEOUT(matParam->value().has_value(), 15000);
     ParameterEditor *mat = settings->editorFor("MAT");
     QVERIFY(mat);
-    QTRY_VERIFY_WITH_TIMEOUT(mat->parameter()->value().has_value(), 15000);
     QCOMPARE(mat->enterText(QStringLiteral("450")), QString());
     QCOMPARE(settings->editedCount(), 1);
     settings->applyEdits();
-    QTRY_COMPARE_WITH_TIMEOUT(mat->parameter()->state(), Parameter::State::InSync, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(matParam->state(), Parameter::State::InSync, 10000);
     QCOMPARE(w.session().demoLine()->station()->setting("MAT").value(), 450);
 }
 
@@ -85,9 +86,9 @@ void TestMainWindow::anInvalidEntryIsRefusedAndNothingIsSent() {
     w.show();
     connectDemo(w);
     auto *settings = qobject_cast<SettingsPage *>(w.page(QStringLiteral("Settings")));
+    QTRY_VERIFY_WITH_TIMEOUT(w.session().station()->parameter("ST1")->value().has_value(), 15000);
     ParameterEditor *st = settings->editorFor("ST1");
     QVERIFY(st);
-    QTRY_VERIFY_WITH_TIMEOUT(st->parameter()->value().has_value(), 15000);
     const qint64 writes = w.session().demoLine()->stats().writeRequests;
     const QString why = st->enterText(QStringLiteral("353"));
     QVERIFY2(why.contains(QStringLiteral("steps of 5")), qPrintable(why));

@@ -1,5 +1,6 @@
 #include "pagefactory.h"
 
+#include "consolepage.h"
 #include "dispensingpage.h"
 #include "feederpage.h"
 #include "overviewpage.h"
@@ -9,7 +10,8 @@ namespace tipscope::gui {
 
 QList<Page *> createPages(model::Session &session, QWidget *parent) {
     return {new OverviewPage(session, parent), new SettingsPage(session, parent),
-            new FeederPage(session, parent), new DispensingPage(session, parent)};
+            new FeederPage(session, parent), new DispensingPage(session, parent),
+            new ConsolePage(session, parent)};
 }
 
 } // namespace tipscope::gui

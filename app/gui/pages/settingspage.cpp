@@ -125,17 +125,17 @@ void SettingsPage::rebuild() {
         m_groups->addWidget(
             new QLabel(tr("Connect and select a device to see its settings."), m_form));
     } else if (station) {
-        for (PortModel *port : station->ports()) {
+        for (PortModel *port : station->ports())
             m_portBox->addItem(tr("Port %1 (%2)").arg(port->number()).arg(port->toolName()),
                                port->number());
-            // A different tool changes which settings come first: lay the page out again.
-            connect(port->param("CT"), &Parameter::valueChanged, m_form,
-                    [this] { QTimer::singleShot(0, this, &SettingsPage::rebuild); });
-        }
         const int portNumber = qBound(1, m_port, qMax(1, int(station->ports().size())));
         m_portBox->setCurrentIndex(m_portBox->findData(portNumber));
         addGroup(tr("Station"), station->stationSettings());
         if (PortModel *port = station->port(portNumber)) {
+            // Another tool on the shown port changes which settings come first: lay out again,
+            // once, after the current event (the signal may come from inside a reply handler).
+            connect(port->param("CT"), &Parameter::valueChanged, m_form,
+                    [this] { QTimer::singleShot(0, m_form, [this] { rebuild(); }); });
             addGroup(tr("Port %1").arg(portNumber), {port->param("ST")});
             addGroup(tr("Alarms, port %1").arg(portNumber), port->alarmSettings());
             const auto tableName = QStringLiteral("$toolTable");

@@ -1,0 +1,407 @@
+#include "consolepage.h"
+
+#include "framebuilder.h"
+
+#include "link/line.h"
+#include "protocol/framedecoder.h"
+#include "protocol/hexbytes.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QClipboard>
+#include <QComboBox>
+#include <QDateTime>
+#include <QFileDialog>
+#include <QFontDatabase>
+#include <QGuiApplication>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QRegularExpression>
+#include <QScrollBar>
+#include <QTableView>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace tipscope::gui {
+
+using model::ConsoleModel;
+
+ConsoleFilterProxy::ConsoleFilterProxy(ConsoleModel *source, QObject *parent)
+    : QSortFilterProxyModel(parent)
+    , m_console(source) {
+    setSourceModel(source);
+}
+
+void ConsoleFilterProxy::setFilter(const ConsoleModel::Filter &filter) {
+    m_filter = filter;
+    invalidateFilter();
+}
+
+bool ConsoleFilterProxy::filterAcceptsRow(int sourceRow, const QModelIndex &sourceParent) const {
+    return !sourceParent.isValid() && m_console->filterAccepts(sourceRow, m_filter);
+}
+
+QVariant ConsoleFilterProxy::data(const QModelIndex &index, int role) const {
+    // The model writes a BCC that happens to be printable as that character ("<ETX>="), which
+    // reads like data; for a whole frame the BCC is shown as a byte value instead.
+    if (role == Qt::DisplayRole && index.column() == ConsoleModel::Ascii) {
+        const model::ConsoleEntry &e = m_console->entry(mapToSource(index).row());
+        if (e.frame && e.bytes.size() > 1 && e.bytes.at(e.bytes.size() - 2) == protocol::kEtx)
+            return protocol::toAsciiText(e.bytes.chopped(1)) +
+                   QStringLiteral("<%1>").arg(protocol::toHexText(e.bytes.right(1)));
+    }
+    if (role == Qt::FontRole) {
+        switch (index.column()) {
+        case ConsoleModel::Device:
+        case ConsoleModel::Command:
+        case ConsoleModel::Data:
+        case ConsoleModel::Hex:
+        case ConsoleModel::Ascii:
+            return QFontDatabase::systemFont(QFontDatabase::FixedFont);
+        default:
+            break;
+        }
+    }
+    return QSortFilterProxyModel::data(index, role);
+}
+
+namespace {
+QString describeReply(const link::Reply &reply, const QString &what) {
+    switch (reply.error()) {
+    case link::ReplyError::None:
+        return ConsolePage::tr("%1: answered %2 after %3 ms")
+            .arg(what, reply.answer().toString())
+            .arg(double(reply.latencyUs()) / 1000.0, 0, 'f', 1);
+    case link::ReplyError::Nak:
+        return ConsolePage::tr("%1: refused, %2").arg(what, reply.errorString());
+    case link::ReplyError::Timeout:
+        return ConsolePage::tr("%1: no answer (timeout)").arg(what);
+    default:
+        return ConsolePage::tr("%1: %2 (%3)")
+            .arg(what, link::replyErrorName(reply.error()), reply.errorString());
+    }
+}
+} // namespace
+
+ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
+    : Page(session, parent)
+    , m_model(new ConsoleModel(this))
+    , m_proxy(new ConsoleFilterProxy(m_model, this)) {
+    auto *bar = new QToolBar(this);
+    bar->setObjectName(QStringLiteral("consoleToolBar"));
+    bar->setAccessibleName(tr("Console tools"));
+    buildToolBar(bar);
+    buildTable();
+    m_builder = new FrameBuilder(this);
+    m_builder->setObjectName(QStringLiteral("frameBuilder"));
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(bar);
+    layout->addWidget(m_table, 1);
+    layout->addWidget(m_builder);
+
+    // The count is for reading, not for every row of a burst.
+    m_countTimer.setSingleShot(true);
+    m_countTimer.setInterval(200);
+    connect(&m_countTimer, &QTimer::timeout, this, &ConsolePage::updateCount);
+    // Started only when idle: restarting it on every row would starve it under steady traffic.
+    auto countLater = [this] {
+        if (!m_countTimer.isActive())
+            m_countTimer.start();
+    };
+    connect(m_proxy, &QAbstractItemModel::rowsInserted, this, countLater);
+    connect(m_proxy, &QAbstractItemModel::rowsRemoved, this, countLater);
+    connect(m_proxy, &QAbstractItemModel::modelReset, this, countLater);
+    connect(m_proxy, &QAbstractItemModel::layoutChanged, this, countLater);
+
+    connect(m_builder, &FrameBuilder::sendRequested, this, &ConsolePage::send);
+    connect(&m_session, &model::Session::stateChanged, this, &ConsolePage::followLine);
+    connect(&m_session, &model::Session::devicesChanged, this, &ConsolePage::updateDevices);
+    connect(&m_session, &model::Session::monitorOnlyChanged, m_builder,
+            &FrameBuilder::setMonitorOnly);
+    m_builder->setMonitorOnly(m_session.monitorOnly());
+    followLine();
+    updateDevices();
+    applyFilter();
+    updateCount();
+}
+
+void ConsolePage::buildToolBar(QToolBar *bar) {
+    m_pause = bar->addAction(tr("Pause"));
+    m_pause->setObjectName(QStringLiteral("pauseAction"));
+    m_pause->setCheckable(true);
+    m_pause->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    m_pause->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_pause->setToolTip(tr("Hold new rows (Ctrl+P); nothing is lost, they appear on resume"));
+    addAction(m_pause); // so the shortcut works wherever the focus is on this page
+    connect(m_pause, &QAction::toggled, this, &ConsolePage::setPaused);
+
+    m_relative = bar->addAction(tr("Relative time"));
+    m_relative->setObjectName(QStringLiteral("relativeTimeAction"));
+    m_relative->setCheckable(true);
+    m_relative->setToolTip(tr("Show seconds since the first row instead of the clock time"));
+    connect(m_relative, &QAction::toggled, m_model, &ConsoleModel::setRelativeTime);
+    bar->addSeparator();
+
+    auto box = [this, bar](const QString &text, const char *name, const QString &tip,
+                           bool checked) {
+        auto *b = new QCheckBox(text, bar);
+        b->setObjectName(QLatin1String(name));
+        b->setChecked(checked);
+        b->setToolTip(tip);
+        b->setAccessibleName(tip);
+        bar->addWidget(b);
+        connect(b, &QCheckBox::toggled, this, &ConsolePage::applyFilter);
+        return b;
+    };
+    bar->addWidget(new QLabel(tr("Show:"), bar));
+    m_showTx = box(tr("TX"), "showTx", tr("Show bytes sent"), true);
+    // Every received byte is also in a frame or error row, so the chunks (as the driver happened
+    // to deliver them) are off by default; they matter when chasing timing or split answers.
+    m_showRx = box(tr("RX chunks"), "showRx",
+                   tr("Show bytes as the driver delivered them, chunk by chunk (every received "
+                      "byte is also in a frame or error row)"),
+                   false);
+    m_showFrames = box(tr("Frames"), "showFrames", tr("Show received frames, decoded"), true);
+    m_showErrors =
+        box(tr("Errors"), "showErrors", tr("Show decode errors (BCC, format, garbage)"), true);
+    m_showNotes = box(tr("Notes"), "showNotes", tr("Show line notes (timeouts, line state)"), true);
+    bar->addSeparator();
+
+    auto *addressLabel = new QLabel(tr("De&vice:"), bar);
+    m_address = new QComboBox(bar);
+    m_address->setObjectName(QStringLiteral("addressFilter"));
+    m_address->setAccessibleName(tr("Device address filter"));
+    m_address->setToolTip(tr("Only frames from or to this address; type any address 00-99"));
+    m_address->setEditable(true);
+    m_address->setInsertPolicy(QComboBox::NoInsert);
+    m_address->setMinimumContentsLength(12);
+    addressLabel->setBuddy(m_address);
+    bar->addWidget(addressLabel);
+    bar->addWidget(m_address);
+    connect(m_address, &QComboBox::currentTextChanged, this, &ConsolePage::applyFilter);
+
+    auto *commandLabel = new QLabel(tr("Co&mmand:"), bar);
+    m_command = new QLineEdit(bar);
+    m_command->setObjectName(QStringLiteral("commandFilter"));
+    m_command->setAccessibleName(tr("Command filter"));
+    m_command->setPlaceholderText(tr("e.g. ST1"));
+    m_command->setClearButtonEnabled(true);
+    m_command->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('W')) * 10);
+    commandLabel->setBuddy(m_command);
+    bar->addWidget(commandLabel);
+    bar->addWidget(m_command);
+    connect(m_command, &QLineEdit::textChanged, this, &ConsolePage::applyFilter);
+    bar->addSeparator();
+
+    QAction *clear = bar->addAction(tr("Clear"), m_model, &ConsoleModel::clear);
+    clear->setObjectName(QStringLiteral("clearAction"));
+    clear->setToolTip(tr("Remove every row, held ones included"));
+    QAction *save = bar->addAction(tr("Save…"), this, &ConsolePage::save);
+    save->setObjectName(QStringLiteral("saveAction"));
+    save->setToolTip(tr("Save every row (not only the shown ones) to a text file"));
+
+    auto *spacer = new QWidget(bar);
+    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    bar->addWidget(spacer);
+    m_count = new QLabel(bar);
+    m_count->setObjectName(QStringLiteral("rowCountLabel"));
+    bar->addWidget(m_count);
+}
+
+void ConsolePage::buildTable() {
+    m_table = new QTableView(this);
+    m_table->setObjectName(QStringLiteral("consoleTable"));
+    m_table->setAccessibleName(tr("Traffic on the line"));
+    m_table->setModel(m_proxy);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_table->setWordWrap(false);
+    m_table->setAlternatingRowColors(true);
+    m_table->setHorizontalScrollMode(QAbstractItemView::ScrollPerPixel);
+
+    const QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    const QFontMetrics text = fontMetrics();
+    const QFontMetrics fixed(mono);
+    // Fixed row heights keep scrolling through 20000 rows cheap and the rows aligned.
+    QHeaderView *rows = m_table->verticalHeader();
+    rows->hide();
+    rows->setSectionResizeMode(QHeaderView::Fixed);
+    rows->setDefaultSectionSize(qMax(text.height(), fixed.height()) + 6);
+
+    QHeaderView *columns = m_table->horizontalHeader();
+    columns->setStretchLastSection(true);
+    columns->setHighlightSections(false);
+    auto width = [&](int column, const QFontMetrics &fm, const QString &sample) {
+        const QString title =
+            m_model->headerData(column, Qt::Horizontal, Qt::DisplayRole).toString();
+        m_table->setColumnWidth(
+            column, qMax(fm.horizontalAdvance(sample), text.horizontalAdvance(title)) + 18);
+    };
+    width(ConsoleModel::Time, text, QStringLiteral("+0000.0000 s"));
+    width(ConsoleModel::Direction, text, tr("error"));
+    width(ConsoleModel::Device, fixed, QStringLiteral("00→00"));
+    width(ConsoleModel::Header, text, QStringLiteral("Answer"));
+    width(ConsoleModel::Command, fixed, QStringLiteral("WWW"));
+    width(ConsoleModel::Name, text, QStringLiteral("Time to sleep/hibernation"));
+    width(ConsoleModel::Data, fixed, QStringLiteral("DME-2C0000"));
+    width(ConsoleModel::Bcc, text, tr("bad"));
+    // An addressed frame with a 5-character data field is 16 bytes; model names are a bit longer.
+    width(ConsoleModel::Hex, fixed, QString(18 * 3 - 1, QLatin1Char('0')));
+    width(ConsoleModel::Ascii, fixed, QStringLiteral("<STX>0001W ST100350<ETX><3E>"));
+
+    // Follow the newest row unless the user scrolled away from the bottom to read.
+    QScrollBar *scroll = m_table->verticalScrollBar();
+    connect(scroll, &QScrollBar::valueChanged, this,
+            [this, scroll](int value) { m_followNewest = value >= scroll->maximum(); });
+    connect(scroll, &QScrollBar::rangeChanged, this, [this, scroll](int, int max) {
+        if (m_followNewest)
+            scroll->setValue(max);
+    });
+
+    auto *copy = new QAction(tr("Copy rows"), m_table);
+    copy->setShortcut(QKeySequence::Copy);
+    copy->setShortcutContext(Qt::WidgetShortcut);
+    connect(copy, &QAction::triggered, this, &ConsolePage::copySelection);
+    m_table->addAction(copy);
+    m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
+}
+
+void ConsolePage::followLine() {
+    link::Line *line = m_session.line();
+    if (line == m_line)
+        return;
+    m_line = line;
+    m_model->attach(line ? &line->queue().tap() : nullptr);
+    if (line)
+        m_builder->setRobotAddress(line->queue().settings().robotAddress);
+}
+
+void ConsolePage::updateDevices() {
+    QList<FrameBuilder::Target> targets;
+    const QString current = m_address->currentText();
+    {
+        const QSignalBlocker block(m_address);
+        m_address->clear();
+        m_address->addItem(tr("All"));
+        for (const model::DeviceModel *d : m_session.devices()) {
+            const QString label = d->address()
+                                      ? d->info().addressText() + QLatin1Char(' ') + d->info().model
+                                      : tr("%1 (no address)").arg(d->info().model);
+            targets.append({label, d->address(), d->family()});
+            if (d->address())
+                m_address->addItem(targets.last().label, *d->address());
+        }
+        const int index = m_address->findText(current);
+        if (index >= 0)
+            m_address->setCurrentIndex(index);
+        else
+            m_address->setEditText(current.isEmpty() ? tr("All") : current);
+    }
+    m_builder->setTargets(targets);
+}
+
+void ConsolePage::applyFilter() {
+    ConsoleModel::Filter filter;
+    filter.tx = m_showTx->isChecked();
+    filter.rx = m_showRx->isChecked();
+    filter.decoded = m_showFrames->isChecked();
+    filter.errors = m_showErrors->isChecked();
+    filter.notes = m_showNotes->isChecked();
+    filter.command = m_command->text().trimmed();
+
+    // "01", "1" and "01 DME-2C" all mean address 1; anything else is shown as not understood.
+    const QString text = m_address->currentText().trimmed();
+    static const QRegularExpression leadingAddress(QStringLiteral("^(\\d{1,2})(\\s|$)"));
+    const QRegularExpressionMatch match = leadingAddress.match(text);
+    const bool all = text.isEmpty() || text.compare(tr("All"), Qt::CaseInsensitive) == 0;
+    if (!all && match.hasMatch())
+        filter.address = match.captured(1).toInt();
+    QPalette palette;
+    if (!all && !match.hasMatch())
+        palette.setColor(QPalette::Text, QColor(0xc0, 0x1c, 0x28));
+    if (m_address->lineEdit())
+        m_address->lineEdit()->setPalette(palette);
+    m_proxy->setFilter(filter);
+    updateCount();
+}
+
+void ConsolePage::setPaused(bool paused) {
+    m_model->setPaused(paused);
+    m_pause->setText(paused ? tr("Resume") : tr("Pause"));
+    updateCount();
+}
+
+bool ConsolePage::saveTo(const QString &path, QString *error) {
+    QString why;
+    const bool ok = m_model->saveText(path, &why);
+    if (!ok && error)
+        *error = why;
+    return ok;
+}
+
+void ConsolePage::save() {
+    const QString suggested =
+        QStringLiteral("tipscope-console-%1.txt")
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save console"), suggested,
+                                                      tr("Text files (*.txt);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!saveTo(path, &error))
+        QMessageBox::warning(this, tr("Save console"),
+                             tr("Could not save %1:\n%2").arg(path, error));
+}
+
+void ConsolePage::copySelection() {
+    QStringList lines;
+    const QModelIndexList selected = m_table->selectionModel()->selectedRows();
+    QList<int> rows;
+    for (const QModelIndex &index : selected)
+        rows.append(m_proxy->mapToSource(index).row());
+    std::sort(rows.begin(), rows.end());
+    for (int row : rows)
+        lines.append(m_model->lineText(row));
+    if (!lines.isEmpty())
+        QGuiApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
+}
+
+void ConsolePage::updateCount() {
+    QString text = tr("%1 of %2 rows shown").arg(m_proxy->rowCount()).arg(m_model->rowCount());
+    if (m_model->isPaused())
+        text += QStringLiteral(" · ") + tr("paused: new traffic is held");
+    m_count->setText(text);
+}
+
+void ConsolePage::send(const QByteArray &bytes, bool write) {
+    const auto frame = protocol::parseFrame(bytes);
+    const QString what = frame ? frame->toString() : tr("%n raw byte(s)", "", int(bytes.size()));
+    link::Line *line = m_session.line();
+    if (!line) {
+        m_builder->showOutcome(tr("%1: not sent, not connected").arg(what), true);
+        return;
+    }
+    if (write && m_session.monitorOnly()) {
+        m_builder->showOutcome(tr("%1: not sent, monitor-only mode is on").arg(what), true);
+        return;
+    }
+    link::Request request;
+    request.raw = bytes;
+    // Once, as typed: retries would put frames on the wire that the person did not ask for.
+    request.retries = 0;
+    request.repeatable = false;
+    if (write) {
+        request.header = protocol::Header::Write;
+        request.priority = link::Priority::UserWrite;
+    }
+    link::Reply *reply = line->queue().enqueue(request, this);
+    m_builder->showOutcome(tr("%1: sent, waiting for the answer…").arg(what), false);
+    connect(reply, &link::Reply::finished, this, [this, reply, what] {
+        reply->deleteLater();
+        m_builder->showOutcome(describeReply(*reply, what), !reply->ok());
+    });
+}
+
+} // namespace tipscope::gui

@@ -1,0 +1,104 @@
+// ConsolePage: the raw frame console, every byte on the wire for people who read frames.
+//
+// The table shows the session line's FrameTap through a ConsoleModel: TX and RX chunks, decoded
+// frames with their catalog names and BCC check, decode errors and line notes, newest at the
+// bottom and followed unless the user scrolled up. The toolbar pauses (nothing is lost: held
+// rows appear on resume), switches absolute/relative time, filters by kind, device address and
+// command, clears, and saves every row to a text file. The FrameBuilder below composes a frame
+// from the catalog or takes raw hex; both are sent once, verbatim (Request::raw), through the
+// session's RequestQueue, so the answer shows up in the table like any other traffic, and the
+// outcome of the last send is shown under the builder.
+//
+// The page follows the session: when Session::stateChanged reports a different line (a new
+// connectTo()), the model is attached to that line's tap; history stays until Clear. In
+// monitor-only mode W frames and raw bytes are not sent; reads still are.
+#pragma once
+
+#include "page.h"
+
+#include "model/consolemodel.h"
+
+#include <QPointer>
+#include <QSortFilterProxyModel>
+#include <QTimer>
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QTableView;
+class QToolBar;
+
+namespace tipscope::link {
+class Line;
+}
+
+namespace tipscope::gui {
+
+class FrameBuilder;
+
+// The console's filters, applied by the model's own rules (ConsoleModel::filterAccepts), plus
+// a fixed-width font for the columns people compare byte by byte.
+class ConsoleFilterProxy : public QSortFilterProxyModel {
+    Q_OBJECT
+public:
+    explicit ConsoleFilterProxy(model::ConsoleModel *source, QObject *parent = nullptr);
+
+    void setFilter(const model::ConsoleModel::Filter &filter);
+    [[nodiscard]] const model::ConsoleModel::Filter &filter() const { return m_filter; }
+    [[nodiscard]] QVariant data(const QModelIndex &index, int role) const override;
+
+protected:
+    [[nodiscard]] bool filterAcceptsRow(int sourceRow,
+                                        const QModelIndex &sourceParent) const override;
+
+private:
+    model::ConsoleModel *m_console;
+    model::ConsoleModel::Filter m_filter;
+};
+
+class ConsolePage : public Page {
+    Q_OBJECT
+public:
+    explicit ConsolePage(model::Session &session, QWidget *parent = nullptr);
+
+    [[nodiscard]] QString title() const override { return tr("Console"); }
+
+    // Writes every row (not only the filtered ones) as tab-separated text; false with `error`.
+    bool saveTo(const QString &path, QString *error);
+    [[nodiscard]] model::ConsoleModel &consoleModel() { return *m_model; }
+    [[nodiscard]] QAbstractItemModel *visibleRows() { return m_proxy; }
+
+private:
+    void buildToolBar(QToolBar *bar);
+    void buildTable();
+    void followLine();
+    void updateDevices();
+    void applyFilter();
+    void setPaused(bool paused);
+    void save();
+    void copySelection();
+    void updateCount();
+    void send(const QByteArray &bytes, bool write);
+
+    model::ConsoleModel *m_model = nullptr;
+    ConsoleFilterProxy *m_proxy = nullptr;
+    QTableView *m_table = nullptr;
+    FrameBuilder *m_builder = nullptr;
+    QAction *m_pause = nullptr;
+    QAction *m_relative = nullptr;
+    QCheckBox *m_showTx = nullptr;
+    QCheckBox *m_showRx = nullptr;
+    QCheckBox *m_showFrames = nullptr;
+    QCheckBox *m_showErrors = nullptr;
+    QCheckBox *m_showNotes = nullptr;
+    QComboBox *m_address = nullptr;
+    QLineEdit *m_command = nullptr;
+    QLabel *m_count = nullptr;
+    QTimer m_countTimer;
+    QPointer<link::Line> m_line;
+    bool m_followNewest = true;
+};
+
+} // namespace tipscope::gui

@@ -1,0 +1,380 @@
+#include "counterspage.h"
+
+#include "model/displayunits.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QScrollArea>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <iterator>
+
+namespace tipscope::gui {
+
+using namespace tipscope::model;
+
+namespace {
+
+// One row of a feeder table: a quantity with its total and its resettable partial counter.
+struct FeederRow {
+    const char *label;
+    const char *total;
+    const char *partial;
+    const char *reset;
+};
+
+const FeederRow kFeederRows[] = {
+    {QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Plugged hours"), "CPT", "CPP",
+     QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Reset partial plugged hours…")},
+    {QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Feeding hours"), "CFT", "CFP",
+     QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Reset partial feeding hours…")},
+    {QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Fed length"), "CTT", "CTP",
+     QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Reset partial fed length…")},
+};
+
+// RFC 4180 quoting, so that a device or counter name with a comma stays one field.
+QString csvField(const QString &text) {
+    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) &&
+        !text.contains(QLatin1Char('\n')))
+        return text;
+    QString quoted = text;
+    quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
+    return QLatin1Char('"') + quoted + QLatin1Char('"');
+}
+
+// A value as a spreadsheet parses it: display units, '.' decimal point, empty when unknown.
+QString csvLine(const QString &device, int port, const Parameter &p) {
+    const TemperatureUnit unit = p.device().temperatureUnit();
+    const DisplayFormat f = displayFormat(p.spec(), unit);
+    const auto wire = p.number();
+    const QString value =
+        wire ? QString::number(toDisplay(p.spec(), *wire, unit), 'f', f.decimals) : QString();
+    const QStringList fields{csvField(device), port > 0 ? QString::number(port) : QString(),
+                             csvField(p.meta().name), value, csvField(f.unit)};
+    return fields.join(QLatin1Char(',')) + QLatin1Char('\n');
+}
+
+// The table shows every row without scrolling; the page scrolls instead.
+void fitHeight(QTableWidget *table) {
+    table->setFixedHeight(table->horizontalHeader()->sizeHint().height() +
+                          table->verticalHeader()->length() + 2 * table->frameWidth());
+}
+
+QString now() {
+    return QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss"));
+}
+
+} // namespace
+
+CountersPage::CountersPage(Session &session, QWidget *parent)
+    : Page(session, parent) {
+    m_status = new QLabel(this);
+    m_status->setAccessibleName(tr("Counters status"));
+    m_status->setWordWrap(true);
+    m_refresh = new QPushButton(tr("Re&fresh"), this);
+    m_refresh->setToolTip(tr("Read every counter of every device now (they are otherwise read "
+                             "once a minute)"));
+    m_refresh->setAccessibleName(tr("Refresh counters"));
+    m_refresh->setObjectName(QStringLiteral("refreshCounters"));
+    m_export = new QPushButton(tr("&Export CSV…"), this);
+    m_export->setToolTip(tr("Save every counter of every device as a CSV file"));
+    m_export->setAccessibleName(tr("Export counters as CSV"));
+    m_export->setObjectName(QStringLiteral("exportCounters"));
+    auto *top = new QHBoxLayout;
+    top->addWidget(m_status, 1);
+    top->addWidget(m_refresh);
+    top->addWidget(m_export);
+
+    m_placeholder =
+        new QLabel(tr("No device is connected. Connect to a line to read its counters."), this);
+    m_placeholder->setAlignment(Qt::AlignCenter);
+    auto *content = new QWidget;
+    m_boxLayout = new QVBoxLayout(content);
+    m_boxLayout->setContentsMargins(0, 0, 0, 0);
+    m_boxLayout->addWidget(m_placeholder);
+    m_boxLayout->addStretch(1);
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(scroll, 1);
+
+    connect(m_refresh, &QPushButton::clicked, this, &CountersPage::refresh);
+    connect(m_export, &QPushButton::clicked, this, &CountersPage::chooseExportFile);
+    connect(&m_session, &Session::devicesChanged, this, &CountersPage::rebuild);
+    connect(&m_session, &Session::monitorOnlyChanged, this, &CountersPage::updateButtons);
+    rebuild();
+}
+
+CountersPage::~CountersPage() {
+    // Before the tables: no connection may outlive the cells it writes to.
+    delete m_bindings;
+}
+
+void CountersPage::setActive(bool active) {
+    Page::setActive(active);
+    // Counters are polled once a minute; someone opening the page wants today's numbers.
+    if (active)
+        refresh();
+}
+
+void CountersPage::refresh() {
+    for (DeviceModel *device : m_session.devices())
+        m_session.scheduler().requestRefresh(device, PollClass::Counter);
+    if (!m_session.devices().isEmpty())
+        showStatus(tr("%1 Reading the counters…").arg(now()));
+}
+
+void CountersPage::rebuild() {
+    // The old devices are gone (or going): drop every connection to them before the cells.
+    delete m_bindings;
+    m_bindings = new QObject(this);
+    qDeleteAll(m_boxes);
+    m_boxes.clear();
+    m_resets.clear();
+    for (DeviceModel *device : m_session.devices()) {
+        if (auto *station = qobject_cast<StationModel *>(device))
+            addStation(station);
+        else if (auto *feeder = qobject_cast<FeederModel *>(device))
+            addFeeder(feeder);
+    }
+    m_placeholder->setVisible(m_boxes.isEmpty());
+    if (m_session.devices().isEmpty())
+        m_status->clear();
+    updateButtons();
+}
+
+QTableWidget *CountersPage::makeTable(const QString &objectName, const QString &accessibleName) {
+    auto *table = new QTableWidget(this);
+    table->setObjectName(objectName);
+    table->setAccessibleName(accessibleName);
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table->setSelectionMode(QAbstractItemView::ContiguousSelection);
+    // Tab leaves the table instead of walking its cells, so the buttons stay reachable.
+    table->setTabKeyNavigation(false);
+    table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    table->setAlternatingRowColors(true);
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    table->horizontalHeader()->setDefaultAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    table->verticalHeader()->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    return table;
+}
+
+void CountersPage::addStation(StationModel *station) {
+    const QList<PortModel *> &ports = station->ports();
+    if (ports.isEmpty())
+        return;
+    auto *box = new QGroupBox(tr("Station %1").arg(station->displayName()));
+    QTableWidget *table = makeTable(QStringLiteral("stationCounters"),
+                                    tr("Counters of %1").arg(station->displayName()));
+    // Every port has the same counters; the first port names the rows.
+    const QList<Parameter *> rows = ports.first()->counters();
+    table->setRowCount(int(rows.size()));
+    table->setColumnCount(int(ports.size()));
+    for (int r = 0; r < rows.size(); ++r) {
+        auto *header = new QTableWidgetItem(rows[r]->meta().name);
+        header->setToolTip(rows[r]->meta().description);
+        table->setVerticalHeaderItem(r, header);
+    }
+    for (int c = 0; c < ports.size(); ++c) {
+        table->setHorizontalHeaderItem(c, new QTableWidgetItem(tr("Port %1").arg(c + 1)));
+        for (int r = 0; r < rows.size(); ++r) {
+            const QString base = rows[r]->meta().pattern.chopped(1); // "CPx" -> "CP"
+            if (Parameter *p = ports[c]->param(base.toLatin1().constData()))
+                bindCell(table, r, c, p);
+        }
+    }
+    fitHeight(table);
+    auto *layout = new QVBoxLayout(box);
+    layout->addWidget(table);
+    m_boxLayout->insertWidget(m_boxLayout->count() - 1, box);
+    m_boxes.append(box);
+}
+
+void CountersPage::addFeeder(FeederModel *feeder) {
+    auto *box = new QGroupBox(tr("Solder feeder %1").arg(feeder->displayName()));
+    QTableWidget *table = makeTable(QStringLiteral("feederCounters"),
+                                    tr("Counters of %1").arg(feeder->displayName()));
+    table->setRowCount(int(std::size(kFeederRows)));
+    table->setColumnCount(2);
+    table->setHorizontalHeaderLabels({tr("Total"), tr("Partial")});
+    auto *buttons = new QHBoxLayout;
+    for (int r = 0; r < int(std::size(kFeederRows)); ++r) {
+        const FeederRow &row = kFeederRows[r];
+        table->setVerticalHeaderItem(r, new QTableWidgetItem(tr(row.label)));
+        if (Parameter *total = feeder->parameter(row.total))
+            bindCell(table, r, 0, total);
+        if (Parameter *partial = feeder->parameter(row.partial))
+            bindCell(table, r, 1, partial);
+        auto *button = new QPushButton(tr(row.reset));
+        button->setObjectName(QLatin1String("reset") + QLatin1String(row.partial));
+        button->setAccessibleName(tr(row.reset).remove(QStringLiteral("…")));
+        const QByteArray code = row.partial;
+        QPointer<FeederModel> target = feeder;
+        connect(button, &QPushButton::clicked, this, [this, target, code] {
+            if (target)
+                resetPartialOf(target, code);
+        });
+        buttons->addWidget(button);
+        m_resets.append({feeder, code, button});
+    }
+    buttons->addStretch(1);
+    fitHeight(table);
+    auto *layout = new QVBoxLayout(box);
+    layout->addWidget(table);
+    layout->addLayout(buttons);
+    m_boxLayout->insertWidget(m_boxLayout->count() - 1, box);
+    m_boxes.append(box);
+}
+
+void CountersPage::bindCell(QTableWidget *table, int row, int column, Parameter *parameter) {
+    auto *item = new QTableWidgetItem;
+    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    table->setItem(row, column, item);
+    // The connections live in m_bindings, which goes before the table does, and end with the
+    // parameter; `item` and `parameter` are therefore alive whenever this runs.
+    auto update = [this, item, parameter] {
+        item->setText(parameter->displayText());
+        QString tip =
+            tr("%1 (R-%2)").arg(parameter->meta().name, QString::fromLatin1(parameter->code()));
+        if (parameter->state() == Parameter::State::Failed)
+            tip += QLatin1Char('\n') + tr("Last read failed: %1").arg(parameter->failure());
+        else if (parameter->lastUpdate().isValid())
+            tip += QLatin1Char('\n') +
+                   tr("Read at %1")
+                       .arg(QLocale().toString(parameter->lastUpdate(), QLocale::ShortFormat));
+        else
+            tip += QLatin1Char('\n') + tr("Not read yet");
+        item->setToolTip(tip);
+    };
+    update();
+    connect(parameter, &Parameter::updated, m_bindings, update);
+    connect(parameter, &Parameter::valueChanged, m_bindings, update);
+    connect(parameter, &Parameter::stateChanged, m_bindings, update);
+}
+
+void CountersPage::resetPartial(const QByteArray &code) {
+    if (FeederModel *feeder = m_session.feeder())
+        resetPartialOf(feeder, code);
+}
+
+void CountersPage::resetPartialOf(FeederModel *feeder, const QByteArray &code) {
+    QPointer<FeederModel> target = feeder;
+    QPointer<Action> action = feeder->action(code);
+    QPointer<Parameter> counter = feeder->parameter(code);
+    if (!action || !counter)
+        return;
+    // No question that could only be answered with a refusal.
+    if (feeder->writesBlocked()) {
+        showStatus(tr("%1 Monitor-only mode is on: nothing is reset.").arg(now()));
+        return;
+    }
+    QMessageBox box(QMessageBox::Warning, tr("Reset partial counter"),
+                    tr("Reset “%1” on %2?").arg(counter->meta().name, feeder->displayName()),
+                    QMessageBox::Cancel, this);
+    box.setInformativeText(tr("It now reads %1.").arg(counter->displayText()) + QLatin1Char(' ') +
+                           action->danger() + QLatin1Char(' ') +
+                           tr("The total counter is not affected."));
+    QPushButton *reset = box.addButton(tr("Reset counter"), QMessageBox::DestructiveRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    // The dialog ran an event loop: the feeder may have gone in the meantime.
+    if (box.clickedButton() != reset || !target || !action) {
+        showStatus(tr("%1 Nothing was reset.").arg(now()));
+        return;
+    }
+    const QString name = counter->meta().name;
+    const QString why = target->resetPartialCounter(code, Confirmation::Confirmed);
+    if (!why.isEmpty()) {
+        showStatus(tr("%1 Not reset: %2").arg(now(), why));
+        return;
+    }
+    showStatus(tr("%1 Resetting %2…").arg(now(), name));
+    connect(
+        action, &Action::finished, this,
+        [this, counter, name](bool ok, const QString &reason) {
+            if (ok && counter)
+                counter->refresh(); // show the zero now rather than at the next counter poll
+            showStatus(ok ? tr("%1 %2 reset.").arg(now(), name)
+                          : tr("%1 %2 was not reset: %3").arg(now(), name, reason));
+            updateButtons();
+        },
+        Qt::SingleShotConnection);
+    updateButtons();
+}
+
+void CountersPage::updateButtons() {
+    const bool blocked = m_session.monitorOnly();
+    for (const ResetButton &r : std::as_const(m_resets)) {
+        Action *action = r.feeder ? r.feeder->action(r.code) : nullptr;
+        r.button->setEnabled(action && !blocked && !action->isRunning());
+        if (blocked)
+            r.button->setToolTip(tr("Monitor-only mode is on: TipScope writes nothing to the "
+                                    "devices. Turn it off to reset counters."));
+        else if (action)
+            r.button->setToolTip(action->description() + QLatin1String(". ") + action->danger());
+    }
+    const bool any = !m_session.devices().isEmpty();
+    m_refresh->setEnabled(any);
+    m_export->setEnabled(any);
+}
+
+void CountersPage::showStatus(const QString &text) {
+    m_status->setText(text);
+}
+
+void CountersPage::chooseExportFile() {
+    const QString name =
+        QStringLiteral("tipscope-counters-%1.csv")
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmm")));
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export counters"), QDir(dir).filePath(name), tr("CSV files (*.csv)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (exportCsv(path, &error))
+        showStatus(tr("%1 Counters saved to %2").arg(now(), QDir::toNativeSeparators(path)));
+    else
+        QMessageBox::warning(this, tr("Export counters"),
+                             tr("The counters could not be saved: %1").arg(error));
+}
+
+bool CountersPage::exportCsv(const QString &path, QString *error) const {
+    // The header is a file format that scripts match on, so it is not translated.
+    QString text = QStringLiteral("device,port,counter,value,unit\n");
+    for (DeviceModel *device : m_session.devices()) {
+        if (auto *station = qobject_cast<StationModel *>(device)) {
+            for (PortModel *port : station->ports())
+                for (Parameter *p : port->counters())
+                    text += csvLine(station->displayName(), port->number(), *p);
+        } else if (auto *feeder = qobject_cast<FeederModel *>(device)) {
+            for (Parameter *p : feeder->counters())
+                text += csvLine(feeder->displayName(), 0, *p);
+        }
+    }
+    // QSaveFile: a failed export never leaves half a file where an old one was.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
+        if (error)
+            *error = file.errorString();
+        return false;
+    }
+    return true;
+}
+
+} // namespace tipscope::gui

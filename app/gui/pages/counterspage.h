@@ -1,0 +1,77 @@
+// CountersPage: the usage counters of every connected device, for support staff.
+//
+// Each station gets a table of its counters (rows: plugged, work, sleep, hibernation and no-tool
+// hours, sleep and desoldering cycles; columns: the ports); each SFR feeder a table of its total
+// and partial plugged hours, feeding hours and fed metres. Cells show the parameters' values and
+// follow Parameter::valueChanged, so they update whenever the poll scheduler reads a counter;
+// refresh() asks the scheduler for every counter now, since counters are otherwise polled
+// slowly.
+//
+// The feeder's partial counters can be reset, each only after a QMessageBox that says what will
+// happen (Action::danger()); the model receives Confirmation::Confirmed only when the person
+// agreed. In monitor-only mode the resets are disabled and say why. exportCsv() writes every
+// counter of every device (device, port, counter, value, unit) for a support ticket.
+//
+// The page follows Session::devicesChanged and reaches devices only through the session or
+// QPointer, so a device that goes away on disconnect never leaves a dangling pointer here.
+#pragma once
+
+#include "page.h"
+
+class QGroupBox;
+class QLabel;
+class QPushButton;
+class QTableWidget;
+class QVBoxLayout;
+
+namespace tipscope::gui {
+
+class CountersPage : public Page {
+    Q_OBJECT
+public:
+    explicit CountersPage(model::Session &session, QWidget *parent = nullptr);
+    ~CountersPage() override;
+
+    [[nodiscard]] QString title() const override { return tr("Counters"); }
+    void setActive(bool active) override;
+
+    // Asks the poll scheduler to read every counter of every device now.
+    void refresh();
+    // Asks for confirmation, then resets a partial counter ("CPP", "CFP" or "CTP") of the
+    // session's feeder, as its Reset button does.
+    void resetPartial(const QByteArray &code);
+    // Every counter of every device as CSV (UTF-8, header row "device,port,counter,value,unit",
+    // values in display units with a '.' decimal point). Returns false and sets *error (if
+    // given) when the file cannot be written.
+    [[nodiscard]] bool exportCsv(const QString &path, QString *error) const;
+
+private:
+    struct ResetButton {
+        QPointer<model::FeederModel> feeder;
+        QByteArray code;
+        QPushButton *button = nullptr;
+    };
+
+    void rebuild();
+    void addStation(model::StationModel *station);
+    void addFeeder(model::FeederModel *feeder);
+    [[nodiscard]] QTableWidget *makeTable(const QString &objectName, const QString &accessibleName);
+    void bindCell(QTableWidget *table, int row, int column, model::Parameter *parameter);
+    void resetPartialOf(model::FeederModel *feeder, const QByteArray &code);
+    void updateButtons();
+    void showStatus(const QString &text);
+    void chooseExportFile();
+
+    QLabel *m_placeholder;
+    QVBoxLayout *m_boxLayout;
+    QList<QGroupBox *> m_boxes;
+    QList<ResetButton> m_resets;
+    QPushButton *m_refresh;
+    QPushButton *m_export;
+    QLabel *m_status;
+    // Parent of every connection to a device's parameters; replaced on each rebuild so that no
+    // connection outlives the table cells it writes to.
+    QObject *m_bindings = nullptr;
+};
+
+} // namespace tipscope::gui

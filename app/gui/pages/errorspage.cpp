@@ -1,0 +1,730 @@
+#include "errorspage.h"
+
+#include "protocol/catalog.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
+#include <QComboBox>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QScrollBar>
+#include <QSortFilterProxyModel>
+#include <QStandardPaths>
+#include <QStyle>
+#include <QTableView>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <deque>
+
+namespace tipscope::gui {
+
+using namespace tipscope::model;
+using protocol::Catalog;
+
+namespace {
+
+// The same bound as the session's EventLog: the page never holds more than the log does.
+constexpr int kHistoryCapacity = 10000;
+constexpr int kFlushMs = 100; // new events are shown at most ten times a second
+constexpr int kMaxStateRowsShown = 10;
+
+// How bad something is, in the order a reader ranks it; Unknown = not read yet.
+enum class Level { Unknown, Ok, Info, Warning, Error };
+
+Level levelOf(const QString &catalogSeverity) {
+    if (catalogSeverity == QLatin1String("ok"))
+        return Level::Ok;
+    if (catalogSeverity == QLatin1String("info"))
+        return Level::Info;
+    if (catalogSeverity == QLatin1String("warning"))
+        return Level::Warning;
+    return Level::Error;
+}
+
+Level levelOf(Event::Severity severity) {
+    switch (severity) {
+    case Event::Severity::Info:
+        return Level::Info;
+    case Event::Severity::Warning:
+        return Level::Warning;
+    case Event::Severity::Error:
+        return Level::Error;
+    }
+    return Level::Error;
+}
+
+QString levelName(Level level) {
+    switch (level) {
+    case Level::Unknown:
+        return ErrorsPage::tr("Not read yet");
+    case Level::Ok:
+        return ErrorsPage::tr("OK");
+    case Level::Info:
+        return ErrorsPage::tr("Info");
+    case Level::Warning:
+        return ErrorsPage::tr("Warning");
+    case Level::Error:
+        return ErrorsPage::tr("Error");
+    }
+    return {};
+}
+
+QIcon levelIcon(Level level) {
+    const QStyle *style = QApplication::style();
+    switch (level) {
+    case Level::Unknown:
+        return {};
+    case Level::Ok:
+        return style->standardIcon(QStyle::SP_DialogApplyButton);
+    case Level::Info:
+        return style->standardIcon(QStyle::SP_MessageBoxInformation);
+    case Level::Warning:
+        return style->standardIcon(QStyle::SP_MessageBoxWarning);
+    case Level::Error:
+        return style->standardIcon(QStyle::SP_MessageBoxCritical);
+    }
+    return {};
+}
+
+// Translucent, so the tint reads on light and dark palettes alike.
+QVariant levelTint(Level level) {
+    switch (level) {
+    case Level::Error:
+        return QColor(220, 40, 40, 70);
+    case Level::Warning:
+        return QColor(235, 165, 0, 80);
+    case Level::Info:
+        return QColor(40, 120, 220, 35);
+    default:
+        return {};
+    }
+}
+
+QString kindText(Event::Kind kind) {
+    switch (kind) {
+    case Event::Kind::StationError:
+        return ErrorsPage::tr("Station error");
+    case Event::Kind::PortError:
+        return ErrorsPage::tr("Port error");
+    case Event::Kind::FeederError:
+        return ErrorsPage::tr("Feeder error");
+    case Event::Kind::Alarm:
+        return ErrorsPage::tr("Alarm");
+    case Event::Kind::Status:
+        return ErrorsPage::tr("Status");
+    case Event::Kind::Write:
+        return ErrorsPage::tr("Write");
+    case Event::Kind::Communication:
+        return ErrorsPage::tr("Communication");
+    case Event::Kind::Connection:
+        return ErrorsPage::tr("Connection");
+    }
+    return {};
+}
+
+constexpr quint32 bit(Event::Kind kind) {
+    return 1u << int(kind);
+}
+constexpr quint32 kAllKinds = 0xffffffffu;
+constexpr quint32 kErrorKinds = bit(Event::Kind::StationError) | bit(Event::Kind::PortError) |
+                                bit(Event::Kind::FeederError) | bit(Event::Kind::Alarm);
+
+// Tabs and line breaks inside a field would break the one-event-a-line text format.
+QString flat(QString text) {
+    text.replace(QLatin1Char('\t'), QLatin1Char(' '));
+    text.replace(QLatin1Char('\n'), QLatin1Char(' '));
+    return text;
+}
+
+void setCell(QTableWidget *table, int row, int column, const QString &text, Level tintLevel,
+             const QString &tip = {}, const QIcon &icon = {}) {
+    QTableWidgetItem *item = table->item(row, column);
+    if (!item) {
+        item = new QTableWidgetItem;
+        table->setItem(row, column, item);
+    }
+    item->setText(text);
+    item->setIcon(icon);
+    item->setToolTip(tip.isEmpty() ? text : tip);
+    item->setData(Qt::BackgroundRole, levelTint(tintLevel));
+}
+
+} // namespace
+
+// The history as a table: one row per event, oldest first, bounded like the EventLog.
+class ErrorsPage::HistoryModel : public QAbstractTableModel {
+public:
+    enum Column { Time, Severity, Kind, Source, Text, ColumnCount };
+
+    using QAbstractTableModel::QAbstractTableModel;
+
+    void reset(const QList<Event> &events) {
+        beginResetModel();
+        const qsizetype skip = qMax<qsizetype>(0, events.size() - kHistoryCapacity);
+        m_events.assign(events.begin() + skip, events.end());
+        endResetModel();
+    }
+
+    void append(const QList<Event> &events) {
+        const qsizetype skip = qMax<qsizetype>(0, events.size() - kHistoryCapacity);
+        const int incoming = int(events.size() - skip);
+        const int overflow =
+            qMin(int(m_events.size()) + incoming - kHistoryCapacity, int(m_events.size()));
+        if (overflow > 0) {
+            beginRemoveRows({}, 0, overflow - 1);
+            m_events.erase(m_events.begin(), m_events.begin() + overflow);
+            endRemoveRows();
+        }
+        const int first = int(m_events.size());
+        beginInsertRows({}, first, first + incoming - 1);
+        m_events.insert(m_events.end(), events.begin() + skip, events.end());
+        endInsertRows();
+    }
+
+    [[nodiscard]] const Event &event(int row) const { return m_events.at(size_t(row)); }
+
+    int rowCount(const QModelIndex &parent = {}) const override {
+        return parent.isValid() ? 0 : int(m_events.size());
+    }
+    int columnCount(const QModelIndex &parent = {}) const override {
+        return parent.isValid() ? 0 : ColumnCount;
+    }
+
+    // What a cell says; `full` gives the date with the time, for files and the clipboard.
+    [[nodiscard]] static QString text(const Event &e, int column, bool full) {
+        switch (column) {
+        case Time:
+            return e.time.toString(full ? QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")
+                                        : QStringLiteral("HH:mm:ss"));
+        case Severity:
+            return levelName(levelOf(e.severity));
+        case Kind:
+            return kindText(e.kind);
+        case Source:
+            return e.source;
+        case Text:
+            return e.text;
+        default:
+            return {};
+        }
+    }
+
+    QVariant data(const QModelIndex &index, int role) const override {
+        if (!index.isValid() || index.row() >= rowCount())
+            return {};
+        const Event &e = event(index.row());
+        switch (role) {
+        case Qt::DisplayRole:
+            return text(e, index.column(), false);
+        case Qt::ToolTipRole:
+            return index.column() == Time ? text(e, Time, true) : text(e, index.column(), false);
+        case Qt::DecorationRole:
+            return index.column() == Severity ? QVariant(levelIcon(levelOf(e.severity)))
+                                              : QVariant();
+        case Qt::BackgroundRole:
+            // Only problems are tinted, so they stand out among status changes and writes.
+            return e.severity == Event::Severity::Info ? QVariant()
+                                                       : levelTint(levelOf(e.severity));
+        default:
+            return {};
+        }
+    }
+
+    QVariant headerData(int section, Qt::Orientation orientation, int role) const override {
+        if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+            return {};
+        return columnName(section);
+    }
+
+    [[nodiscard]] static QString columnName(int column) {
+        switch (column) {
+        case Time:
+            return ErrorsPage::tr("Time");
+        case Severity:
+            return ErrorsPage::tr("Severity");
+        case Kind:
+            return ErrorsPage::tr("Kind");
+        case Source:
+            return ErrorsPage::tr("Source");
+        case Text:
+            return ErrorsPage::tr("What happened");
+        default:
+            return {};
+        }
+    }
+
+private:
+    std::deque<Event> m_events;
+};
+
+// Kind (a set), minimum severity and free text (any column, case-insensitive).
+class ErrorsPage::HistoryFilter : public QSortFilterProxyModel {
+public:
+    using QSortFilterProxyModel::QSortFilterProxyModel;
+
+    void setFilter(quint32 kinds, Event::Severity minimum, const QString &text) {
+        m_kinds = kinds;
+        m_minimum = minimum;
+        m_text = text.trimmed();
+        invalidateFilter();
+    }
+
+protected:
+    bool filterAcceptsRow(int row, const QModelIndex &) const override {
+        const Event &e = static_cast<const HistoryModel *>(sourceModel())->event(row);
+        if (!(m_kinds & bit(e.kind)) || int(e.severity) < int(m_minimum))
+            return false;
+        if (m_text.isEmpty())
+            return true;
+        for (int c = 0; c < HistoryModel::ColumnCount; ++c)
+            if (HistoryModel::text(e, c, true).contains(m_text, Qt::CaseInsensitive))
+                return true;
+        return false;
+    }
+
+private:
+    quint32 m_kinds = kAllKinds;
+    Event::Severity m_minimum = Event::Severity::Info;
+    QString m_text;
+};
+
+ErrorsPage::ErrorsPage(Session &session, QWidget *parent)
+    : Page(session, parent) {
+    m_flush.setSingleShot(true);
+    m_flush.setInterval(kFlushMs);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(buildStatePanel());
+    layout->addWidget(buildHistoryPanel(), 1);
+
+    connect(&m_flush, &QTimer::timeout, this, &ErrorsPage::flushEvents);
+    connect(&m_session.eventLog(), &EventLog::appended, this, [this](const Event &e) {
+        m_pending.append(e);
+        if (!m_flush.isActive())
+            m_flush.start();
+    });
+    connect(&m_session.eventLog(), &EventLog::cleared, this, [this] {
+        m_pending.clear();
+        m_events->reset({});
+        updateCount();
+    });
+    connect(&m_session, &Session::devicesChanged, this, &ErrorsPage::rebuildState);
+    connect(&m_session, &Session::monitorOnlyChanged, this, &ErrorsPage::updateButtons);
+    m_events->reset(m_session.eventLog().events());
+    m_history->scrollToBottom();
+    updateCount();
+    rebuildState();
+}
+
+ErrorsPage::~ErrorsPage() {
+    // Before the tables: no connection may outlive the rows it writes to.
+    delete m_bindings;
+}
+
+QWidget *ErrorsPage::buildStatePanel() {
+    auto *box = new QGroupBox(tr("Current state"), this);
+    m_state = new QTableWidget(0, 4, box);
+    m_state->setObjectName(QStringLiteral("currentState"));
+    m_state->setAccessibleName(tr("Current errors and alarms"));
+    m_state->setHorizontalHeaderLabels(
+        {tr("Where"), tr("Severity"), tr("Error"), tr("Temperature alarm")});
+    m_state->verticalHeader()->hide();
+    m_state->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_state->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_state->setTabKeyNavigation(false);
+    m_state->setWordWrap(false);
+    QHeaderView *header = m_state->horizontalHeader();
+    header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    header->setSectionResizeMode(QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(2, QHeaderView::Stretch);
+
+    m_resetFeeder = new QPushButton(tr("&Reset feeder error"), box);
+    m_resetFeeder->setObjectName(QStringLiteral("resetFeederError"));
+    m_resetFeeder->setAccessibleName(tr("Reset feeder error"));
+    m_status = new QLabel(box);
+    m_status->setAccessibleName(tr("Result of the last action"));
+    auto *row = new QHBoxLayout;
+    row->addWidget(m_resetFeeder);
+    row->addWidget(m_status, 1);
+
+    auto *layout = new QVBoxLayout(box);
+    layout->addWidget(m_state);
+    layout->addLayout(row);
+    connect(m_resetFeeder, &QPushButton::clicked, this, &ErrorsPage::resetFeederError);
+    return box;
+}
+
+QWidget *ErrorsPage::buildHistoryPanel() {
+    auto *box = new QGroupBox(tr("History"), this);
+    m_kindFilter = new QComboBox(box);
+    m_kindFilter->setObjectName(QStringLiteral("kindFilter"));
+    m_kindFilter->setAccessibleName(tr("Show events of kind"));
+    m_kindFilter->addItem(tr("All kinds"), kAllKinds);
+    m_kindFilter->addItem(tr("Errors and alarms"), kErrorKinds);
+    const std::pair<Event::Kind, QString> kinds[] = {
+        {Event::Kind::StationError, tr("Station errors")},
+        {Event::Kind::PortError, tr("Port errors")},
+        {Event::Kind::FeederError, tr("Feeder errors")},
+        {Event::Kind::Alarm, tr("Alarms")},
+        {Event::Kind::Status, tr("Status changes")},
+        {Event::Kind::Write, tr("Writes")},
+        {Event::Kind::Communication, tr("Communication")},
+        {Event::Kind::Connection, tr("Connection")}};
+    for (const auto &[kind, name] : kinds)
+        m_kindFilter->addItem(name, bit(kind));
+    m_severityFilter = new QComboBox(box);
+    m_severityFilter->setObjectName(QStringLiteral("severityFilter"));
+    m_severityFilter->setAccessibleName(tr("Show events of severity"));
+    m_severityFilter->addItem(tr("Any severity"), int(Event::Severity::Info));
+    m_severityFilter->addItem(tr("Warnings and errors"), int(Event::Severity::Warning));
+    m_severityFilter->addItem(tr("Errors only"), int(Event::Severity::Error));
+    m_textFilter = new QLineEdit(box);
+    m_textFilter->setObjectName(QStringLiteral("textFilter"));
+    m_textFilter->setAccessibleName(tr("Show events containing"));
+    m_textFilter->setPlaceholderText(tr("Text in any column"));
+    m_textFilter->setClearButtonEnabled(true);
+    auto *kindLabel = new QLabel(tr("&Kind:"), box);
+    kindLabel->setBuddy(m_kindFilter);
+    auto *severityLabel = new QLabel(tr("Se&verity:"), box);
+    severityLabel->setBuddy(m_severityFilter);
+    auto *textLabel = new QLabel(tr("&Search:"), box);
+    textLabel->setBuddy(m_textFilter);
+    auto *filters = new QHBoxLayout;
+    filters->addWidget(kindLabel);
+    filters->addWidget(m_kindFilter);
+    filters->addSpacing(12);
+    filters->addWidget(severityLabel);
+    filters->addWidget(m_severityFilter);
+    filters->addSpacing(12);
+    filters->addWidget(textLabel);
+    filters->addWidget(m_textFilter, 1);
+
+    m_events = new HistoryModel(this);
+    m_filter = new HistoryFilter(this);
+    m_filter->setSourceModel(m_events);
+    m_history = new QTableView(box);
+    m_history->setObjectName(QStringLiteral("history"));
+    m_history->setAccessibleName(tr("Event history"));
+    m_history->setModel(m_filter);
+    m_history->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_history->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_history->setTabKeyNavigation(false);
+    m_history->setWordWrap(false);
+    m_history->setAlternatingRowColors(true);
+    m_history->verticalHeader()->hide();
+    // Fixed row heights and column widths: measuring 10 000 rows on every insert would not be.
+    m_history->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_history->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
+    QHeaderView *header = m_history->horizontalHeader();
+    header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    header->setStretchLastSection(true);
+    const int pad = 24 + style()->pixelMetric(QStyle::PM_SmallIconSize);
+    const QFontMetrics fm = fontMetrics();
+    header->resizeSection(HistoryModel::Time,
+                          fm.horizontalAdvance(QStringLiteral("00:00:00")) + pad);
+    header->resizeSection(HistoryModel::Severity,
+                          fm.horizontalAdvance(levelName(Level::Warning)) + pad);
+    header->resizeSection(HistoryModel::Kind,
+                          fm.horizontalAdvance(kindText(Event::Kind::Communication)) + pad);
+    header->resizeSection(HistoryModel::Source,
+                          fm.horizontalAdvance(QStringLiteral("DME-2C at 01, port 4")) + pad);
+    auto *copyAction = new QAction(tr("Copy"), m_history);
+    copyAction->setShortcut(QKeySequence::Copy);
+    copyAction->setShortcutContext(Qt::WidgetShortcut);
+    m_history->addAction(copyAction);
+
+    m_count = new QLabel(box);
+    m_count->setAccessibleName(tr("Events shown"));
+    m_copy = new QPushButton(tr("&Copy"), box);
+    m_copy->setObjectName(QStringLiteral("copyEvents"));
+    m_copy->setToolTip(tr("Copy the selected events to the clipboard (Ctrl+C)"));
+    m_copy->setAccessibleName(tr("Copy selected events"));
+    m_export = new QPushButton(tr("E&xport…"), box);
+    m_export->setObjectName(QStringLiteral("exportEvents"));
+    m_export->setToolTip(tr("Save the events shown as a tab-separated text file"));
+    m_export->setAccessibleName(tr("Export events"));
+    m_historyStatus = new QLabel(box);
+    m_historyStatus->setAccessibleName(tr("Result of the last export"));
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_count);
+    buttons->addWidget(m_historyStatus, 1);
+    buttons->addWidget(m_copy);
+    buttons->addWidget(m_export);
+
+    auto *layout = new QVBoxLayout(box);
+    layout->addLayout(filters);
+    layout->addWidget(m_history, 1);
+    layout->addLayout(buttons);
+
+    connect(m_kindFilter, &QComboBox::currentIndexChanged, this, &ErrorsPage::applyFilters);
+    connect(m_severityFilter, &QComboBox::currentIndexChanged, this, &ErrorsPage::applyFilters);
+    connect(m_textFilter, &QLineEdit::textChanged, this, &ErrorsPage::applyFilters);
+    connect(copyAction, &QAction::triggered, this, &ErrorsPage::copySelection);
+    connect(m_copy, &QPushButton::clicked, this, &ErrorsPage::copySelection);
+    connect(m_export, &QPushButton::clicked, this, &ErrorsPage::chooseExportFile);
+    connect(m_history->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &ErrorsPage::updateButtons);
+    return box;
+}
+
+void ErrorsPage::setActive(bool active) {
+    Page::setActive(active);
+    // Errors are polled every few seconds; someone opening the page wants them now.
+    if (active)
+        for (DeviceModel *device : m_session.devices())
+            m_session.scheduler().requestRefresh(device, PollClass::Status);
+}
+
+void ErrorsPage::rebuildState() {
+    // The old devices are gone (or going): drop every connection to them before the rows.
+    delete m_bindings;
+    m_bindings = new QObject(this);
+    m_rows.clear();
+    m_state->setRowCount(0);
+    for (DeviceModel *device : m_session.devices()) {
+        addStateRow(device, 0);
+        if (auto *station = qobject_cast<StationModel *>(device))
+            for (PortModel *port : station->ports())
+                addStateRow(device, port->number());
+    }
+    const int shown = qBound(1, int(m_rows.size()), kMaxStateRowsShown);
+    m_state->setFixedHeight(m_state->horizontalHeader()->sizeHint().height() +
+                            shown * m_state->verticalHeader()->defaultSectionSize() +
+                            2 * m_state->frameWidth());
+    if (m_rows.isEmpty()) {
+        m_state->setRowCount(1);
+        setCell(m_state, 0, 0, tr("No device is connected."), Level::Unknown);
+    }
+    updateButtons();
+}
+
+void ErrorsPage::addStateRow(DeviceModel *device, int port) {
+    const int row = int(m_rows.size());
+    m_rows.append({device, port});
+    m_state->setRowCount(row + 1);
+    QList<Parameter *> watched;
+    if (auto *station = qobject_cast<StationModel *>(device)) {
+        if (port == 0)
+            watched = {station->parameter("SER")};
+        else
+            for (const char *base : {"PE", "TA", "CT"})
+                watched.append(station->port(port)->param(base));
+    } else {
+        watched = {device->parameter("ECV")};
+    }
+    // m_bindings goes before the table, and the connections end with the parameters.
+    for (Parameter *p : std::as_const(watched)) {
+        if (!p)
+            continue;
+        connect(p, &Parameter::valueChanged, m_bindings, [this, row] { updateStateRow(row); });
+        connect(p, &Parameter::stateChanged, m_bindings, [this, row] { updateStateRow(row); });
+    }
+    updateStateRow(row);
+}
+
+void ErrorsPage::updateStateRow(int row) {
+    DeviceModel *device = m_rows.value(row).device;
+    if (!device)
+        return;
+    const int portNumber = m_rows.at(row).port;
+    const Catalog &catalog = Catalog::builtin();
+    QString where = device->displayName();
+    std::optional<int> code;
+    QString table;
+    QString explanation;
+    std::optional<int> alarms; // ports only
+    bool hasAlarms = false;
+    if (auto *station = qobject_cast<StationModel *>(device)) {
+        if (portNumber == 0) {
+            code = station->stationError();
+            table = station->familyInfo().stationErrors;
+            explanation = station->stationErrorText();
+        } else {
+            PortModel *port = station->port(portNumber);
+            where = tr("%1, port %2").arg(where).arg(portNumber);
+            if (port->tool())
+                where += QStringLiteral(" (%1)").arg(port->toolName());
+            code = port->error();
+            table = station->familyInfo().portErrors;
+            explanation = port->errorText();
+            hasAlarms = true;
+            if (Parameter *ta = port->param("TA"); ta && ta->number())
+                alarms = port->alarmFlags();
+        }
+    } else if (auto *feeder = qobject_cast<FeederModel *>(device)) {
+        code = feeder->errorCode();
+        table = QStringLiteral("feederErrors"); // the SFR's one table (Catalog::feederErrorText)
+        explanation = feeder->errorText();
+    }
+    const Level errorLevel = code ? levelOf(catalog.severity(table, *code)) : Level::Unknown;
+    if (!code)
+        explanation = tr("Not read yet");
+    const QString errorTip =
+        code ? tr("Error code %1: %2").arg(*code).arg(explanation) : explanation;
+
+    Level alarmLevel = Level::Unknown;
+    QString alarmText;
+    if (alarms) {
+        QStringList parts;
+        if (*alarms % 10 == 1)
+            parts.append(tr("High temperature"));
+        if ((*alarms / 10) % 10 == 1)
+            parts.append(tr("Low temperature"));
+        alarmLevel = parts.isEmpty() ? Level::Ok : Level::Warning;
+        alarmText = parts.isEmpty() ? tr("None") : parts.join(QLatin1String(", "));
+    } else if (hasAlarms) {
+        alarmText = tr("Not read yet");
+    }
+
+    // The row is as bad as its worst part; it is only "OK" once its error has been read.
+    Level worst = qMax(errorLevel, alarmLevel);
+    if (errorLevel == Level::Unknown && worst <= Level::Ok)
+        worst = Level::Unknown;
+    setCell(m_state, row, 0, where, Level::Unknown);
+    setCell(m_state, row, 1, levelName(worst), worst, {}, levelIcon(worst));
+    setCell(m_state, row, 2, explanation, errorLevel, errorTip);
+    setCell(m_state, row, 3, alarmText, alarmLevel,
+            hasAlarms ? QString() : tr("This device has no temperature alarm"));
+}
+
+void ErrorsPage::resetFeederError() {
+    FeederModel *feeder = m_session.feeder();
+    if (!feeder)
+        return;
+    const QString why = feeder->resetError();
+    if (!why.isEmpty()) {
+        showStatus(tr("Not reset: %1").arg(why));
+        return;
+    }
+    showStatus(tr("Resetting the feeder error…"));
+    QPointer<Parameter> code = feeder->parameter("ECV");
+    connect(
+        feeder->action("ECV"), &Action::finished, this,
+        [this, code](bool ok, const QString &reason) {
+            if (ok && code)
+                code->refresh(); // show the cleared code now rather than at the next poll
+            showStatus(ok ? tr("Feeder error reset.")
+                          : tr("The feeder error was not reset: %1").arg(reason));
+            updateButtons();
+        },
+        Qt::SingleShotConnection);
+    updateButtons();
+}
+
+void ErrorsPage::updateButtons() {
+    FeederModel *feeder = m_session.feeder();
+    const Action *reset = feeder ? feeder->action("ECV") : nullptr;
+    const bool blocked = m_session.monitorOnly();
+    m_resetFeeder->setEnabled(reset && !blocked && !reset->isRunning());
+    if (blocked)
+        m_resetFeeder->setToolTip(tr("Monitor-only mode is on: TipScope writes nothing to the "
+                                     "devices. Turn it off to reset the feeder error."));
+    else if (!reset)
+        m_resetFeeder->setToolTip(tr("No feeder is connected"));
+    else
+        m_resetFeeder->setToolTip(
+            tr("Clears the feeder's error code (W-ECV); the feeder does not feed while an error "
+               "is set"));
+    m_copy->setEnabled(m_history->selectionModel()->hasSelection());
+}
+
+void ErrorsPage::showStatus(const QString &text) {
+    m_status->setText(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss ")) + text);
+}
+
+void ErrorsPage::flushEvents() {
+    if (m_pending.isEmpty())
+        return;
+    // Follow the newest event only while the reader is at the bottom, not while reading back.
+    const QScrollBar *bar = m_history->verticalScrollBar();
+    const bool follow = bar->value() >= bar->maximum();
+    m_events->append(m_pending);
+    m_pending.clear();
+    if (follow)
+        m_history->scrollToBottom();
+    updateCount();
+}
+
+void ErrorsPage::applyFilters() {
+    m_filter->setFilter(m_kindFilter->currentData().toUInt(),
+                        Event::Severity(m_severityFilter->currentData().toInt()),
+                        m_textFilter->text());
+    m_history->scrollToBottom();
+    updateCount();
+}
+
+void ErrorsPage::updateCount() {
+    QString text = tr("%1 of %2 events shown").arg(m_filter->rowCount()).arg(m_events->rowCount());
+    if (const qint64 dropped = m_session.eventLog().dropped(); dropped > 0)
+        text += QLatin1String("; ") + tr("%n older events were dropped", nullptr, int(dropped));
+    m_count->setText(text);
+    updateButtons();
+}
+
+QString ErrorsPage::rowText(int proxyRow) const {
+    const Event &e = m_events->event(m_filter->mapToSource(m_filter->index(proxyRow, 0)).row());
+    QStringList fields;
+    for (int c = 0; c < HistoryModel::ColumnCount; ++c)
+        fields.append(flat(HistoryModel::text(e, c, true)));
+    return fields.join(QLatin1Char('\t'));
+}
+
+void ErrorsPage::copySelection() const {
+    QList<int> rows;
+    for (const QModelIndex &index : m_history->selectionModel()->selectedRows())
+        rows.append(index.row());
+    if (rows.isEmpty())
+        return;
+    std::sort(rows.begin(), rows.end()); // in time order, whatever order they were picked in
+    QStringList lines;
+    for (int row : std::as_const(rows))
+        lines.append(rowText(row));
+    QApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
+}
+
+bool ErrorsPage::exportText(const QString &path, QString *error) const {
+    QStringList header;
+    for (int c = 0; c < HistoryModel::ColumnCount; ++c)
+        header.append(HistoryModel::columnName(c));
+    QString text = header.join(QLatin1Char('\t')) + QLatin1Char('\n');
+    for (int row = 0; row < m_filter->rowCount(); ++row)
+        text += rowText(row) + QLatin1Char('\n');
+    // QSaveFile: a failed export never leaves half a file where an old one was.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
+        if (error)
+            *error = file.errorString();
+        return false;
+    }
+    return true;
+}
+
+void ErrorsPage::chooseExportFile() {
+    const QString name =
+        QStringLiteral("tipscope-events-%1.txt")
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmm")));
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export events"), QDir(dir).filePath(name), tr("Text files (*.txt *.tsv)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (exportText(path, &error))
+        m_historyStatus->setText(tr("Saved to %1").arg(QDir::toNativeSeparators(path)));
+    else
+        QMessageBox::warning(this, tr("Export events"),
+                             tr("The events could not be saved: %1").arg(error));
+}
+
+} // namespace tipscope::gui
