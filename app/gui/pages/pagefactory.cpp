@@ -1,7 +1,9 @@
 #include "pagefactory.h"
 
 #include "consolepage.h"
+#include "counterspage.h"
 #include "dispensingpage.h"
+#include "errorspage.h"
 #include "feederpage.h"
 #include "overviewpage.h"
 #include "settingspage.h"
@@ -10,7 +12,8 @@ namespace tipscope::gui {
 
 QList<Page *> createPages(model::Session &session, QWidget *parent) {
     return {new OverviewPage(session, parent), new SettingsPage(session, parent),
-            new FeederPage(session, parent), new DispensingPage(session, parent),
+            new FeederPage(session, parent),   new DispensingPage(session, parent),
+            new CountersPage(session, parent), new ErrorsPage(session, parent),
             new ConsolePage(session, parent)};
 }
 
