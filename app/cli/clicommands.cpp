@@ -176,7 +176,7 @@ int runWrite(CliSession &s) {
 int runSend(CliSession &s) {
     if (s.options().args.isEmpty()) {
         s.err() << Tr::tr("tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 "
-                          "52 53 4D 4E 03 1E")
+                          "52 53 4D 4E 03 02")
                 << Qt::endl;
         return kUsage;
     }

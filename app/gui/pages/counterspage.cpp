@@ -78,8 +78,10 @@ QString now() {
 
 CountersPage::CountersPage(Session &session, QWidget *parent)
     : Page(session, parent) {
+    m_readAt = new QLabel(this);
+    m_readAt->setAccessibleName(tr("When the counters were read"));
     m_status = new QLabel(this);
-    m_status->setAccessibleName(tr("Counters status"));
+    m_status->setAccessibleName(tr("Result of the last action"));
     m_status->setWordWrap(true);
     m_refresh = new QPushButton(tr("Re&fresh"), this);
     m_refresh->setToolTip(tr("Read every counter of every device now (they are otherwise read "
@@ -91,6 +93,8 @@ CountersPage::CountersPage(Session &session, QWidget *parent)
     m_export->setAccessibleName(tr("Export counters as CSV"));
     m_export->setObjectName(QStringLiteral("exportCounters"));
     auto *top = new QHBoxLayout;
+    top->addWidget(m_readAt);
+    top->addSpacing(24);
     top->addWidget(m_status, 1);
     top->addWidget(m_refresh);
     top->addWidget(m_export);
@@ -134,8 +138,26 @@ void CountersPage::setActive(bool active) {
 void CountersPage::refresh() {
     for (DeviceModel *device : m_session.devices())
         m_session.scheduler().requestRefresh(device, PollClass::Counter);
-    if (!m_session.devices().isEmpty())
-        showStatus(tr("%1 Reading the counters…").arg(now()));
+    m_waiting = !m_session.devices().isEmpty();
+    updateReadAt();
+}
+
+void CountersPage::noteReading(const QDateTime &when) {
+    m_lastRead = qMax(m_lastRead, when);
+    m_waiting = false;
+    updateReadAt();
+}
+
+void CountersPage::updateReadAt() {
+    if (m_session.devices().isEmpty())
+        m_readAt->clear();
+    else if (m_waiting)
+        m_readAt->setText(tr("Reading the counters…"));
+    else if (m_lastRead.isValid())
+        m_readAt->setText(
+            tr("Last reading at %1").arg(m_lastRead.toString(QStringLiteral("HH:mm:ss"))));
+    else
+        m_readAt->setText(tr("Waiting for the first reading…"));
 }
 
 void CountersPage::rebuild() {
@@ -152,8 +174,10 @@ void CountersPage::rebuild() {
             addFeeder(feeder);
     }
     m_placeholder->setVisible(m_boxes.isEmpty());
-    if (m_session.devices().isEmpty())
-        m_status->clear();
+    m_lastRead = {};
+    m_waiting = false;
+    m_status->clear();
+    updateReadAt();
     updateButtons();
 }
 
@@ -167,7 +191,11 @@ QTableWidget *CountersPage::makeTable(const QString &objectName, const QString &
     table->setTabKeyNavigation(false);
     table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     table->setAlternatingRowColors(true);
-    table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    // Narrow columns keep each number next to its row name; the box leaves the rest empty.
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table->horizontalHeader()->setMinimumSectionSize(120);
+    table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    table->setSizePolicy(QSizePolicy::Maximum, QSizePolicy::Fixed);
     table->horizontalHeader()->setDefaultAlignment(Qt::AlignRight | Qt::AlignVCenter);
     table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
     table->verticalHeader()->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
@@ -200,7 +228,7 @@ void CountersPage::addStation(StationModel *station) {
     }
     fitHeight(table);
     auto *layout = new QVBoxLayout(box);
-    layout->addWidget(table);
+    layout->addWidget(table, 0, Qt::AlignLeft);
     m_boxLayout->insertWidget(m_boxLayout->count() - 1, box);
     m_boxes.append(box);
 }
@@ -235,7 +263,7 @@ void CountersPage::addFeeder(FeederModel *feeder) {
     buttons->addStretch(1);
     fitHeight(table);
     auto *layout = new QVBoxLayout(box);
-    layout->addWidget(table);
+    layout->addWidget(table, 0, Qt::AlignLeft);
     layout->addLayout(buttons);
     m_boxLayout->insertWidget(m_boxLayout->count() - 1, box);
     m_boxes.append(box);
@@ -263,6 +291,8 @@ void CountersPage::bindCell(QTableWidget *table, int row, int column, Parameter 
     };
     update();
     connect(parameter, &Parameter::updated, m_bindings, update);
+    connect(parameter, &Parameter::updated, m_bindings,
+            [this, parameter] { noteReading(parameter->lastUpdate()); });
     connect(parameter, &Parameter::valueChanged, m_bindings, update);
     connect(parameter, &Parameter::stateChanged, m_bindings, update);
 }

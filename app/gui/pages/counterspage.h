@@ -18,6 +18,8 @@
 
 #include "page.h"
 
+#include <QDateTime>
+
 class QGroupBox;
 class QLabel;
 class QPushButton;
@@ -59,6 +61,8 @@ private:
     void bindCell(QTableWidget *table, int row, int column, model::Parameter *parameter);
     void resetPartialOf(model::FeederModel *feeder, const QByteArray &code);
     void updateButtons();
+    void noteReading(const QDateTime &when);
+    void updateReadAt();
     void showStatus(const QString &text);
     void chooseExportFile();
 
@@ -68,7 +72,10 @@ private:
     QList<ResetButton> m_resets;
     QPushButton *m_refresh;
     QPushButton *m_export;
+    QLabel *m_readAt;
     QLabel *m_status;
+    QDateTime m_lastRead;   // the newest reading of any counter shown
+    bool m_waiting = false; // a refresh was asked for and nothing has come back yet
     // Parent of every connection to a device's parameters; replaced on each rebuild so that no
     // connection outlives the table cells it writes to.
     QObject *m_bindings = nullptr;

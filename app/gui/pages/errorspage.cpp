@@ -334,11 +334,11 @@ ErrorsPage::~ErrorsPage() {
 
 QWidget *ErrorsPage::buildStatePanel() {
     auto *box = new QGroupBox(tr("Current state"), this);
-    m_state = new QTableWidget(0, 4, box);
+    m_state = new QTableWidget(0, 5, box);
     m_state->setObjectName(QStringLiteral("currentState"));
     m_state->setAccessibleName(tr("Current errors and alarms"));
     m_state->setHorizontalHeaderLabels(
-        {tr("Where"), tr("Severity"), tr("Error"), tr("Temperature alarm")});
+        {tr("Where"), tr("Tool"), tr("Severity"), tr("Error"), tr("Temperature alarm")});
     m_state->verticalHeader()->hide();
     m_state->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_state->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -347,7 +347,7 @@ QWidget *ErrorsPage::buildStatePanel() {
     QHeaderView *header = m_state->horizontalHeader();
     header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
     header->setSectionResizeMode(QHeaderView::ResizeToContents);
-    header->setSectionResizeMode(2, QHeaderView::Stretch);
+    header->setSectionResizeMode(3, QHeaderView::Stretch);
 
     m_resetFeeder = new QPushButton(tr("&Reset feeder error"), box);
     m_resetFeeder->setObjectName(QStringLiteral("resetFeederError"));
@@ -539,7 +539,9 @@ void ErrorsPage::updateStateRow(int row) {
         return;
     const int portNumber = m_rows.at(row).port;
     const Catalog &catalog = Catalog::builtin();
+    // "Where" reads exactly like the history's Source column, so the two can be matched.
     QString where = device->displayName();
+    QString tool;
     std::optional<int> code;
     QString table;
     QString explanation;
@@ -553,8 +555,7 @@ void ErrorsPage::updateStateRow(int row) {
         } else {
             PortModel *port = station->port(portNumber);
             where = tr("%1, port %2").arg(where).arg(portNumber);
-            if (port->tool())
-                where += QStringLiteral(" (%1)").arg(port->toolName());
+            tool = port->toolName();
             code = port->error();
             table = station->familyInfo().portErrors;
             explanation = port->errorText();
@@ -592,9 +593,10 @@ void ErrorsPage::updateStateRow(int row) {
     if (errorLevel == Level::Unknown && worst <= Level::Ok)
         worst = Level::Unknown;
     setCell(m_state, row, 0, where, Level::Unknown);
-    setCell(m_state, row, 1, levelName(worst), worst, {}, levelIcon(worst));
-    setCell(m_state, row, 2, explanation, errorLevel, errorTip);
-    setCell(m_state, row, 3, alarmText, alarmLevel,
+    setCell(m_state, row, 1, tool, Level::Unknown);
+    setCell(m_state, row, 2, levelName(worst), worst, {}, levelIcon(worst));
+    setCell(m_state, row, 3, explanation, errorLevel, errorTip);
+    setCell(m_state, row, 4, alarmText, alarmLevel,
             hasAlarms ? QString() : tr("This device has no temperature alarm"));
 }
 

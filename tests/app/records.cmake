@@ -1,0 +1,6 @@
+# Widget tests of the support pages, on a real Session in demo mode (a simulated 19200 Bd wire,
+# so a test waits for real polls).
+tipscope_add_test(tst_counterspage SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_counterspage.cpp
+                  LIBS tipscope_gui TIMEOUT 300)
+tipscope_add_test(tst_errorspage SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_errorspage.cpp
+                  LIBS tipscope_gui TIMEOUT 300)
