@@ -4,6 +4,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QSettings>
 #include <QTimer>
 #include <memory>
@@ -16,6 +17,7 @@ int main(int argc, char *argv[]) {
     QApplication::setOrganizationName(QStringLiteral("TipScope"));
     QApplication::setApplicationVersion(QStringLiteral(TIPSCOPE_VERSION));
     QApplication::setDesktopFileName(QStringLiteral("tipscope"));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/tipscope/icons/tipscope-256.png")));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate(
