@@ -148,10 +148,14 @@ int runWrite(CliSession &s) {
     QByteArray data;
     QString error;
     if (raw) {
-        data = args.at(1).toLatin1();
-        for (char c : data)
-            if (c < 0x20 || c > 0x7e)
+        // Checked before toLatin1(), which would turn anything outside Latin-1 into '?'.
+        const QString typed = args.at(1);
+        for (QChar c : typed)
+            if (c.unicode() < 0x20 || c.unicode() > 0x7e)
                 error = Tr::tr("the data field must be printable ASCII");
+        if (typed.isEmpty())
+            error = Tr::tr("the data field must be printable ASCII");
+        data = typed.toLatin1();
         if (data.size() > 32)
             error = Tr::tr("the data field is longer than 32 characters");
     } else if (cmd.spec->kind == ValueKind::Action && args.size() == 1) {

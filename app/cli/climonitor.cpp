@@ -10,6 +10,7 @@
 #include <QEventLoop>
 #include <QFile>
 #include <QTimer>
+#include <cmath>
 
 namespace tipscope::cli {
 
@@ -67,7 +68,7 @@ int runMonitor(CliSession &s) {
     }
     const double durationS =
         s.options().values.value(QStringLiteral("duration"), QStringLiteral("0")).toDouble(&ok);
-    if (!ok || durationS < 0) {
+    if (!ok || !std::isfinite(durationS) || durationS < 0 || durationS > 1e9) {
         s.err() << Tr::tr("tipscope-cli: --duration takes seconds") << Qt::endl;
         return kUsage;
     }

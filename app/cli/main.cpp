@@ -1,6 +1,7 @@
 // tipscope-cli: the command-line face of TipScope, for technicians' scripts and for testing the
 // whole stack without a window.
 #include "clicommands.h"
+#include "i18n/translations.h"
 
 #include <QCoreApplication>
 
@@ -10,6 +11,9 @@ int main(int argc, char *argv[]) {
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("tipscope-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(TIPSCOPE_VERSION));
+    // Messages follow the system's language (LANGUAGE, LC_ALL, LC_MESSAGES, LANG); what the
+    // commands print as data keeps the protocol's own format.
+    tipscope::i18n::installTranslators(app, QStringLiteral("system"));
     QTextStream out(stdout);
     QTextStream err(stderr);
     QString error;

@@ -22,7 +22,7 @@ void LinkStatusLabel::refresh() {
     }
     const link::LinkStats &s = line->queue().stats();
     const qint64 now = line->queue().nowMs();
-    setText(tr("%1 tx/s · %2 ms · %3 timeouts · %4 BCC errors · %5 NAKs")
+    setText(tr("%L1 tx/s · %L2 ms · %3 timeouts · %4 BCC errors · %5 NAKs")
                 .arg(s.transactionsPerSecond(now), 0, 'f', 1)
                 .arg(s.medianLatencyUs() / 1000.0, 0, 'f', 1)
                 .arg(s.timeouts)

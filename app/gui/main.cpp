@@ -1,4 +1,5 @@
 // tipscope: the desktop application.
+#include "i18n/translations.h"
 #include "mainwindow.h"
 #include "screenshots.h"
 
@@ -17,6 +18,10 @@ int main(int argc, char *argv[]) {
     QApplication::setOrganizationName(QStringLiteral("TipScope"));
     QApplication::setApplicationVersion(QStringLiteral(TIPSCOPE_VERSION));
     QApplication::setDesktopFileName(QStringLiteral("tipscope"));
+    // The language is chosen in Preferences (ui/language) and takes effect here, before the first
+    // translated string, the command-line help included.
+    AppSettings start = AppSettings::load(*std::make_unique<QSettings>());
+    tipscope::i18n::installTranslators(app, start.language);
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/tipscope/icons/tipscope-256.png")));
 
     QCommandLineParser parser;
@@ -43,7 +48,6 @@ int main(int argc, char *argv[]) {
 
     MainWindow window;
     window.show();
-    AppSettings start = AppSettings::load(*std::make_unique<QSettings>());
     bool connectNow = false;
     if (parser.isSet(demo) || parser.isSet(shots)) {
         start.kind = AppSettings::Kind::Demo;

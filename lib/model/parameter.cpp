@@ -227,7 +227,15 @@ void Parameter::apply() {
     connect(reply, &Reply::finished, this, [this, reply, data = *data] {
         reply->deleteLater();
         if (!reply->ok()) {
-            fail(Tr::tr("not written: %1").arg(reply->errorString()));
+            // Only a refusal or a closed line proves nothing was written; when the answer was
+            // lost the device may hold the new value, so say so and look.
+            const ReplyError e = reply->error();
+            if (e == ReplyError::Nak || e == ReplyError::NotOpen || e == ReplyError::Cancelled) {
+                fail(Tr::tr("not written: %1").arg(reply->errorString()));
+                return;
+            }
+            fail(Tr::tr("perhaps not written, the answer was lost: %1").arg(reply->errorString()));
+            refresh();
             return;
         }
         if (m_read)

@@ -83,7 +83,8 @@ QStringList Profile::problemsFor(const QString &fam) const {
 
 std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error) {
     auto fail = [error](const QString &why) -> std::optional<Profile> {
-        *error = why;
+        if (error)
+            *error = why;
         return std::nullopt;
     };
     QJsonParseError pe;
@@ -116,7 +117,11 @@ std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error)
         if (!it.value().isString())
             return fail(Tr::tr("%1: the value must be a data field in quotes, e.g. \"00350\"")
                             .arg(it.key()));
-        p.values.append({it.key().toUpper().toLatin1(), it.value().toString().toLatin1()});
+        const QByteArray code = it.key().toUpper().toLatin1();
+        for (const auto &entry : std::as_const(p.values))
+            if (entry.first == code) // "st1" and "ST1": which one was meant?
+                return fail(Tr::tr("%1: not a setting of a %2").arg(it.key(), p.family));
+        p.values.append({code, it.value().toString().toLatin1()});
     }
     const QStringList problems = p.problemsFor(p.family);
     if (!problems.isEmpty())
@@ -140,15 +145,17 @@ std::optional<Profile> Profile::load(const QString &path, QString *error) {
         *error = Tr::tr("cannot read %1: %2").arg(path, f.errorString());
         return std::nullopt;
     }
-    if (f.size() > kMaxProfileBytes) {
+    // Read at most one byte more than allowed: size() is 0 for a FIFO or standard input.
+    const QByteArray bytes = f.read(kMaxProfileBytes + 1);
+    if (bytes.size() > kMaxProfileBytes) {
         *error = Tr::tr("%1 is %2 bytes; a profile is at most %3")
                      .arg(path)
-                     .arg(f.size())
+                     .arg(qMax<qint64>(f.size(), bytes.size()))
                      .arg(kMaxProfileBytes);
         return std::nullopt;
     }
     QString why;
-    auto p = fromJson(f.readAll(), &why);
+    auto p = fromJson(bytes, &why);
     if (!p)
         *error = Tr::tr("%1: %2").arg(path, why);
     return p;

@@ -2,6 +2,8 @@
 
 #include "datafield.h"
 
+#include <cmath>
+
 namespace tipscope::protocol {
 
 static QString joinSpecials(const QMap<int, QString> &special) {
@@ -132,7 +134,7 @@ static std::optional<qint64> parseDelayText(const QString &t) {
         return *d;
     bool ok = false;
     const double seconds = t.toDouble(&ok);
-    if (!ok || seconds < 0 || seconds > 99.99)
+    if (!ok || !std::isfinite(seconds) || seconds < 0 || seconds > 99.99)
         return std::nullopt;
     const qint64 centis = qRound64(seconds * 100);
     if (qAbs(seconds * 100 - double(centis)) > 1e-6)

@@ -60,8 +60,10 @@ SimFeeder *SimLine::feeder() const {
 }
 
 void SimLine::setFaults(const SimFaults &faults) {
+    // Reseeding on every change would restart the fault sequence each time a knob is turned.
+    if (faults.seed != m_faults.seed)
+        m_rng.seed(faults.seed);
     m_faults = faults;
-    m_rng.seed(faults.seed);
 }
 
 void SimLine::setClockRunning(bool running) {

@@ -5,10 +5,14 @@
 // a row to kSubcommands. Every run first prints the machine context (bench.* lines), then the
 // subcommand's figures, one "name: value unit" per line.
 #include "benchsupport.h"
+#include "chartbench.h"
 #include "linkbench.h"
+#include "soakbench.h"
 
-#include <QCoreApplication>
+#include <QApplication>
 #include <QTextStream>
+#include <algorithm>
+#include <memory>
 
 namespace {
 
@@ -16,11 +20,17 @@ struct Subcommand {
     const char *name;
     const char *summary;
     int (*run)(const QStringList &args);
+    // Builds widgets: runs under a QApplication, offscreen unless QT_QPA_PLATFORM names one.
+    bool needsWidgets = false;
 };
 
 const Subcommand kSubcommands[] = {
     {"link", "link throughput, write latency under polling and detection time (--seconds N)",
      tipscope::bench::runLinkBench},
+    {"soak", "fault-injection soak: writes with read-back under faults and unplugs (--minutes N)",
+     tipscope::bench::runSoakBench},
+    {"chart", "chart redraw over a day of 4 ports, naive chart, memory, GUI CPU (--seconds N)",
+     tipscope::bench::runChartBench, true},
 };
 
 void printUsage(QTextStream &s) {
@@ -38,7 +48,18 @@ bool asksForHelp(const QStringList &args) {
 } // namespace
 
 int main(int argc, char *argv[]) {
-    QCoreApplication app(argc, argv);
+    // Only the widget subcommands get a QApplication; the others need no display at all.
+    const auto chosen =
+        std::find_if(std::begin(kSubcommands), std::end(kSubcommands), [&](const Subcommand &c) {
+            return argc > 1 && qstrcmp(argv[1], c.name) == 0;
+        });
+    const bool widgets = chosen != std::end(kSubcommands) && chosen->needsWidgets;
+    if (widgets && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    const std::unique_ptr<QCoreApplication> application =
+        widgets ? std::make_unique<QApplication>(argc, argv)
+                : std::make_unique<QCoreApplication>(argc, argv);
+    QCoreApplication &app = *application;
     QCoreApplication::setApplicationName(QStringLiteral("tipscope-bench"));
     // The bench lives beside tipscope-sim in bin/, not two folders below it like the tests.
     if (qEnvironmentVariableIsEmpty("TIPSCOPE_BIN_DIR"))

@@ -71,7 +71,7 @@ namespace {
 QString describeReply(const link::Reply &reply, const QString &what) {
     switch (reply.error()) {
     case link::ReplyError::None:
-        return ConsolePage::tr("%1: answered %2 after %3 ms")
+        return ConsolePage::tr("%1: answered %2 after %L3 ms")
             .arg(what, reply.answer().toString())
             .arg(double(reply.latencyUs()) / 1000.0, 0, 'f', 1);
     case link::ReplyError::Nak:

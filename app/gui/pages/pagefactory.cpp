@@ -8,13 +8,15 @@
 #include "overviewpage.h"
 #include "settingspage.h"
 
+#include "charts/chartspage.h"
+
 namespace tipscope::gui {
 
 QList<Page *> createPages(model::Session &session, QWidget *parent) {
     return {new OverviewPage(session, parent), new SettingsPage(session, parent),
             new FeederPage(session, parent),   new DispensingPage(session, parent),
             new CountersPage(session, parent), new ErrorsPage(session, parent),
-            new ConsolePage(session, parent)};
+            new ConsolePage(session, parent),  new ChartsPage(session, parent)};
 }
 
 } // namespace tipscope::gui

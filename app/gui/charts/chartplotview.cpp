@@ -1,0 +1,191 @@
+// ChartPlotView: paints what Qt Charts has no item for (alarm bands, event markers) in the
+// foreground, and turns mouse and keyboard input into ChartWidget's requests.
+#include "chartwidget_p.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QRubberBand>
+#include <QToolTip>
+#include <QWheelEvent>
+#include <cmath>
+
+namespace tipscope::gui {
+
+namespace {
+constexpr double kWheelZoomPerNotch = 0.8; // one wheel notch shows 80 % of the window
+constexpr double kKeyPanFraction = 0.1;
+constexpr int kMinBandPx = 4; // a smaller rubber band is a click, not a range
+} // namespace
+
+ChartPlotView::ChartPlotView(QChart *chart, ChartWidget &owner)
+    : QChartView(chart, &owner)
+    , m_owner(owner)
+    , m_rubberBand(new QRubberBand(QRubberBand::Rectangle, viewport())) {
+    setObjectName(QStringLiteral("chartPlot"));
+    setFrameShape(QFrame::NoFrame);
+    setRubberBand(QChartView::NoRubberBand); // ours: the page owns the time window
+    setRenderHint(QPainter::Antialiasing, false);
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    viewport()->setMouseTracking(true);
+    setAccessibleDescription(tr("Time chart. Wheel or plus and minus keys zoom, drag or arrow "
+                                "keys pan, Shift+drag selects a range, double-click or Home "
+                                "resets."));
+}
+
+double ChartPlotView::msPerPixel() const {
+    const double width = m_owner.d->plot().width();
+    return width > 0 ? double(m_owner.d->t1 - m_owner.d->t0) / width : 0;
+}
+
+void ChartPlotView::drawForeground(QPainter *painter, const QRectF &rect) {
+    QChartView::drawForeground(painter, rect);
+    const QRectF plot = m_owner.d->plot();
+    if (plot.isEmpty())
+        return;
+    painter->save();
+    painter->setClipRect(plot);
+    drawBands(*painter, plot);
+    drawMarkers(*painter, plot);
+    painter->restore();
+}
+
+void ChartPlotView::drawBands(QPainter &painter, const QRectF &plot) const {
+    for (const ChartBand &b : std::as_const(m_owner.d->bands)) {
+        const double top =
+            std::isfinite(b.high) ? m_owner.d->yAt(b.axis, b.high, plot) : plot.top();
+        const double bottom =
+            std::isfinite(b.low) ? m_owner.d->yAt(b.axis, b.low, plot) : plot.bottom();
+        QColor fill = b.color;
+        fill.setAlpha(28);
+        painter.fillRect(QRectF(plot.left(), top, plot.width(), bottom - top), fill);
+        const double edge = b.labelAtLow ? bottom : top;
+        if (edge < plot.top() || edge > plot.bottom())
+            continue;
+        painter.setPen(QPen(b.color, 1, Qt::DashDotLine));
+        painter.drawLine(QPointF(plot.left(), edge), QPointF(plot.right(), edge));
+        const QFontMetricsF metrics(painter.font());
+        const double y = b.labelAtLow ? edge - 3 : edge + metrics.ascent() + 2;
+        painter.drawText(QPointF(plot.left() + 4, y), b.label);
+    }
+}
+
+void ChartPlotView::drawMarkers(QPainter &painter, const QRectF &plot) const {
+    const ChartWidgetPrivate &d = *m_owner.d;
+    for (const ChartMarker &m : std::as_const(d.markers)) {
+        if (m.timeMs < d.t0 || m.timeMs >= d.t1)
+            continue;
+        const double x = plot.left() + double(m.timeMs - d.t0) / double(d.t1 - d.t0) * plot.width();
+        QColor line = m.color;
+        line.setAlpha(150);
+        painter.setPen(QPen(line, 1, Qt::DashLine));
+        painter.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+        // A flag at the top edge, where the cursor finds the tooltip.
+        const QPointF flag[] = {{x - 4, plot.top()}, {x + 4, plot.top()}, {x, plot.top() + 7}};
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(m.color);
+        painter.drawPolygon(flag, 3);
+    }
+}
+
+void ChartPlotView::mousePressEvent(QMouseEvent *event) {
+    m_pressPos = m_lastPos = event->position().toPoint();
+    const bool band = event->button() == Qt::RightButton ||
+                      (event->button() == Qt::LeftButton && event->modifiers() & Qt::ShiftModifier);
+    m_drag = band ? Drag::Band : event->button() == Qt::LeftButton ? Drag::Pan : Drag::None;
+    if (m_drag == Drag::Band) {
+        const QRectF plot = m_owner.d->plot();
+        m_rubberBand->setGeometry(QRect(m_pressPos.x(), int(plot.top()), 0, int(plot.height())));
+        m_rubberBand->show();
+    } else if (m_drag == Drag::Pan) {
+        viewport()->setCursor(Qt::ClosedHandCursor);
+    }
+    event->accept();
+}
+
+void ChartPlotView::mouseMoveEvent(QMouseEvent *event) {
+    const QPoint pos = event->position().toPoint();
+    const QRectF plot = m_owner.d->plot();
+    if (m_drag == Drag::Pan && pos.x() != m_lastPos.x()) {
+        // Dragging right brings earlier times into view.
+        Q_EMIT m_owner.panRequested(
+            -qint64(std::llround((pos.x() - m_lastPos.x()) * msPerPixel())));
+    } else if (m_drag == Drag::Band) {
+        const int x = qBound(int(plot.left()), pos.x(), int(plot.right()));
+        m_rubberBand->setGeometry(QRect(QPoint(qMin(x, m_pressPos.x()), int(plot.top())),
+                                        QSize(std::abs(x - m_pressPos.x()), int(plot.height()))));
+    }
+    m_lastPos = pos;
+    if (plot.contains(event->position())) {
+        Q_EMIT m_owner.hovered(m_owner.timeAt(event->position().x()));
+        const QString tip = m_owner.markerTooltipAt(event->position().x());
+        if (tip.isEmpty())
+            QToolTip::hideText();
+        else
+            QToolTip::showText(event->globalPosition().toPoint(), tip, viewport());
+    } else {
+        Q_EMIT m_owner.left();
+    }
+    event->accept();
+}
+
+void ChartPlotView::mouseReleaseEvent(QMouseEvent *event) {
+    if (m_drag == Drag::Band) {
+        m_rubberBand->hide();
+        const QRect band = m_rubberBand->geometry();
+        if (band.width() >= kMinBandPx)
+            Q_EMIT m_owner.rangeSelected(m_owner.timeAt(band.left()), m_owner.timeAt(band.right()));
+    }
+    viewport()->unsetCursor();
+    m_drag = Drag::None;
+    event->accept();
+}
+
+void ChartPlotView::mouseDoubleClickEvent(QMouseEvent *event) {
+    Q_EMIT m_owner.resetRequested();
+    event->accept();
+}
+
+void ChartPlotView::wheelEvent(QWheelEvent *event) {
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches != 0)
+        Q_EMIT m_owner.zoomRequested(std::pow(kWheelZoomPerNotch, notches),
+                                     m_owner.timeAt(event->position().x()));
+    event->accept();
+}
+
+void ChartPlotView::keyPressEvent(QKeyEvent *event) {
+    const ChartWidgetPrivate &d = *m_owner.d;
+    const qint64 middle = d.t0 + (d.t1 - d.t0) / 2;
+    const qint64 step = qint64(double(d.t1 - d.t0) * kKeyPanFraction);
+    switch (event->key()) {
+    case Qt::Key_Plus:
+    case Qt::Key_Equal:
+        Q_EMIT m_owner.zoomRequested(kWheelZoomPerNotch, middle);
+        break;
+    case Qt::Key_Minus:
+        Q_EMIT m_owner.zoomRequested(1 / kWheelZoomPerNotch, middle);
+        break;
+    case Qt::Key_Left:
+        Q_EMIT m_owner.panRequested(-step);
+        break;
+    case Qt::Key_Right:
+        Q_EMIT m_owner.panRequested(step);
+        break;
+    case Qt::Key_Home:
+        Q_EMIT m_owner.resetRequested();
+        break;
+    default:
+        QChartView::keyPressEvent(event);
+        return;
+    }
+    event->accept();
+}
+
+void ChartPlotView::leaveEvent(QEvent *event) {
+    Q_EMIT m_owner.left();
+    QChartView::leaveEvent(event);
+}
+
+} // namespace tipscope::gui

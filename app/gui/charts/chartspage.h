@@ -1,0 +1,136 @@
+// ChartsPage: tip curves over time. Per port: tip temperature and setpoint (°C or °F) and power
+// (% on the right axis), every port overlaid or one pane per port, and the feeder's fed length
+// and speed in a pane of its own; alarm limits as shaded bands, event markers (status changes,
+// errors, alarms, writes) with tooltips; a time window of 30 s to 24 h that follows the newest
+// data or stays paused; wheel zoom, drag pan, rubber-band zoom and reset; a crosshair readout of
+// every series under the cursor; heat-up, recovery and min/max/mean of the visible window; PNG
+// and CSV export of the window, continuous CSV recording, and replay of a recorded CSV.
+//
+// Bounded work: redraws are coalesced on a timer, at most kMaxRedrawsPerSecond and, while
+// following, no more often than the window moves by a pixel column; each asks the telemetry for
+// the window decimated to the plot's width (ChartFrame), so its cost depends on pixels, not on
+// history. Nothing is drawn while the page is hidden. Measurements, which read more, are
+// refreshed at most once a second.
+//
+// The page never holds history itself: live it reads the session's telemetry, in replay a
+// ChartRecording it owns. Only ChartWidget touches Qt Charts.
+#pragma once
+
+#include "chartevents.h"
+#include "chartseries.h"
+#include "chartviewport.h"
+
+#include "pages/page.h"
+
+#include <QElapsedTimer>
+#include <QTimer>
+#include <memory>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPlainTextEdit;
+class QToolButton;
+class QVBoxLayout;
+
+namespace tipscope::gui {
+
+class ChartRecorder;
+class ChartWidget;
+struct ChartBand;
+struct ChartMarker;
+struct ChartRecording;
+
+class ChartsPage : public Page {
+    Q_OBJECT
+public:
+    static constexpr int kMaxRedrawsPerSecond = 20;
+    enum class Layout { Overlaid, PerPort };
+
+    explicit ChartsPage(model::Session &session, QWidget *parent = nullptr);
+    ~ChartsPage() override;
+
+    [[nodiscard]] QString title() const override { return tr("Charts"); }
+    [[nodiscard]] QSet<int> visiblePorts() const override;
+    void setActive(bool active) override;
+
+    void setPaneLayout(Layout layout);
+    [[nodiscard]] ChartViewport &viewport() { return m_viewport; }
+    // Station panes first, then the feeder's.
+    [[nodiscard]] QList<ChartWidget *> panes() const;
+    [[nodiscard]] QList<ChartTrace> traces(int pane) const;
+    // Redraws now instead of at the next coalesced tick (tests, the bench, exports).
+    void redrawNow();
+    [[nodiscard]] qint64 redrawCount() const { return m_redraws; }
+    [[nodiscard]] QString readoutText() const;
+    [[nodiscard]] QString measurementText() const;
+    void setTolerance(double display);
+    void updateMeasurements();
+
+    // Each returns an error, or empty on success.
+    QString exportPng(const QString &path);
+    QString exportCsv(const QString &path);
+    QString startRecording(const QString &path);
+    void stopRecording();
+    [[nodiscard]] bool isRecording() const;
+    QString openReplay(const QString &path);
+    void showLive();
+    [[nodiscard]] bool isReplay() const { return m_replay != nullptr; }
+    // What the charts show: the session's telemetry live, the recording's in replay.
+    [[nodiscard]] const model::Telemetry &shownTelemetry() const;
+    [[nodiscard]] const QList<ChartChannel> &shownChannels() const;
+
+private:
+    struct Pane {
+        ChartWidget *widget = nullptr;
+        QList<int> channels;
+        QList<ChartTrace> traces;
+    };
+
+    void buildToolbar(QVBoxLayout *layout);
+    void rebuildPanes();
+    void connectPane(ChartWidget *widget);
+    void resetView();
+    void scheduleRedraw();
+    void redraw();
+    void drawPane(Pane &pane);
+    void onSamplesAdded();
+    void onHover(qint64 timeMs);
+    void onLeave();
+    void refreshLiveChannels();
+    void updateSourceLabel();
+    void chooseAndExport(bool png);
+    void toggleRecording(bool on);
+    void chooseReplay();
+    [[nodiscard]] const ChartEvents &events() const;
+    [[nodiscard]] QList<ChartMarker> markersFor(const Pane &pane) const;
+    [[nodiscard]] QList<ChartBand> bandsFor(const Pane &pane) const;
+
+    ChartViewport m_viewport;
+    QTimer m_redrawTimer;
+    QTimer m_measureTimer;
+    QElapsedTimer m_sinceRedraw;
+    qint64 m_redraws = 0;
+    Layout m_layout = Layout::Overlaid;
+    QList<ChartChannel> m_liveChannels;
+    ChartEvents m_liveEvents;
+    std::unique_ptr<ChartRecording> m_replay;
+    QString m_replayPath;
+    ChartRecorder *m_recorder;
+    QList<Pane> m_panes;
+    std::optional<qint64> m_hover;
+
+    QVBoxLayout *m_panesLayout = nullptr;
+    QWidget *m_panesHost = nullptr;
+    QComboBox *m_window = nullptr;
+    QComboBox *m_layoutBox = nullptr;
+    QToolButton *m_follow = nullptr;
+    QToolButton *m_record = nullptr;
+    QToolButton *m_live = nullptr;
+    QLabel *m_source = nullptr;
+    QLabel *m_readout = nullptr;
+    QDoubleSpinBox *m_tolerance = nullptr;
+    QPlainTextEdit *m_measurements = nullptr;
+};
+
+} // namespace tipscope::gui

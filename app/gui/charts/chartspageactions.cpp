@@ -1,0 +1,231 @@
+// ChartsPage's toolbar and what its buttons do with files: PNG and CSV export of the visible
+// window, continuous recording, and replay of a recording.
+#include "chartspage.h"
+
+#include "chartcsv.h"
+#include "chartcsvreader.h"
+#include "chartrecorder.h"
+#include "chartwidget.h"
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QStandardPaths>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace tipscope::gui {
+
+using namespace tipscope::model;
+
+namespace {
+QString softwareVersion() {
+    const QString v = QCoreApplication::applicationVersion();
+    return v.isEmpty() ? QStringLiteral("unknown") : v;
+}
+
+QString suggestedPath(const QString &suffix) {
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    return folder + QStringLiteral("/tipscope-") +
+           QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")) + suffix;
+}
+
+QToolButton *toolButton(const QString &text, const QString &name, QWidget *parent) {
+    auto *b = new QToolButton(parent);
+    b->setText(text);
+    b->setObjectName(name);
+    b->setAccessibleName(QString(text).remove(QLatin1Char('&')).remove(QStringLiteral("…")));
+    b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    return b;
+}
+} // namespace
+
+void ChartsPage::buildToolbar(QVBoxLayout *layout) {
+    auto *row = new QHBoxLayout;
+    auto *windowLabel = new QLabel(tr("&Window"), this);
+    m_window = new QComboBox(this);
+    m_window->setObjectName(QStringLiteral("windowCombo"));
+    m_window->setAccessibleName(tr("Time window"));
+    windowLabel->setBuddy(m_window);
+    const std::pair<QString, qint64> windows[] = {
+        {tr("30 s"), 30'000},        {tr("1 min"), 60'000},        {tr("5 min"), 300'000},
+        {tr("15 min"), 900'000},     {tr("1 h"), 3600'000},        {tr("4 h"), 4 * 3600'000},
+        {tr("12 h"), 12 * 3600'000}, {tr("24 h"), 24 * 3600'000LL}};
+    for (const auto &[text, ms] : windows)
+        m_window->addItem(text, ms);
+    m_window->setCurrentIndex(m_window->findData(ChartViewport::kDefaultWindowMs));
+    connect(m_window, &QComboBox::activated, this,
+            [this] { m_viewport.setWindowLength(m_window->currentData().toLongLong()); });
+
+    m_follow = toolButton(tr("&Follow"), QStringLiteral("followButton"), this);
+    m_follow->setCheckable(true);
+    m_follow->setChecked(true);
+    m_follow->setToolTip(tr("Keep the newest data at the right edge; uncheck to pause"));
+    connect(m_follow, &QToolButton::clicked, &m_viewport, &ChartViewport::setFollowing);
+    connect(&m_viewport, &ChartViewport::followingChanged, m_follow, &QToolButton::setChecked);
+    auto *reset = toolButton(tr("&Reset view"), QStringLiteral("resetButton"), this);
+    connect(reset, &QToolButton::clicked, this, &ChartsPage::resetView);
+    m_layoutBox = new QComboBox(this);
+    m_layoutBox->setObjectName(QStringLiteral("layoutCombo"));
+    m_layoutBox->setAccessibleName(tr("Pane layout"));
+    m_layoutBox->addItem(tr("Ports overlaid"));
+    m_layoutBox->addItem(tr("One pane per port"));
+    connect(m_layoutBox, &QComboBox::activated, this,
+            [this](int i) { setPaneLayout(i == 0 ? Layout::Overlaid : Layout::PerPort); });
+
+    auto *exportButton = toolButton(tr("&Export"), QStringLiteral("exportButton"), this);
+    exportButton->setPopupMode(QToolButton::InstantPopup);
+    auto *exportMenu = new QMenu(exportButton);
+    exportMenu->addAction(tr("Visible window as &PNG…"), this, [this] { chooseAndExport(true); });
+    exportMenu->addAction(tr("Visible window as &CSV…"), this, [this] { chooseAndExport(false); });
+    exportButton->setMenu(exportMenu);
+    m_record = toolButton(tr("Re&cord…"), QStringLiteral("recordButton"), this);
+    m_record->setCheckable(true);
+    m_record->setToolTip(tr("Write every new sample and event to a CSV file until unchecked"));
+    connect(m_record, &QToolButton::clicked, this, &ChartsPage::toggleRecording);
+    auto *open = toolButton(tr("&Open recording…"), QStringLiteral("openButton"), this);
+    connect(open, &QToolButton::clicked, this, &ChartsPage::chooseReplay);
+    m_live = toolButton(tr("Back to &live"), QStringLiteral("liveButton"), this);
+    m_live->setVisible(false);
+    connect(m_live, &QToolButton::clicked, this, &ChartsPage::showLive);
+    m_source = new QLabel(this);
+    m_source->setObjectName(QStringLiteral("sourceLabel"));
+    m_source->setAccessibleName(tr("Data shown"));
+    connect(m_recorder, &ChartRecorder::failed, this, [this](const QString &why) {
+        updateSourceLabel();
+        QMessageBox::warning(this, tr("Recording stopped"),
+                             tr("Writing %1 failed: %2").arg(m_recorder->path(), why));
+    });
+
+    for (QWidget *w : {static_cast<QWidget *>(windowLabel), static_cast<QWidget *>(m_window),
+                       static_cast<QWidget *>(m_follow), static_cast<QWidget *>(reset),
+                       static_cast<QWidget *>(m_layoutBox), static_cast<QWidget *>(exportButton),
+                       static_cast<QWidget *>(m_record), static_cast<QWidget *>(open),
+                       static_cast<QWidget *>(m_live)})
+        row->addWidget(w);
+    row->addWidget(m_source, 1);
+    layout->addLayout(row);
+    updateSourceLabel();
+}
+
+void ChartsPage::updateSourceLabel() {
+    QString text = m_replay ? tr("Replay: %1 (%Ln row(s))", nullptr, int(m_replay->rows))
+                                  .arg(QFileInfo(m_replayPath).fileName())
+                            : tr("Live");
+    if (m_recorder->isRecording())
+        text += tr(" · recording to %1").arg(QFileInfo(m_recorder->path()).fileName());
+    m_source->setText(text);
+    m_live->setVisible(m_replay != nullptr);
+    m_record->setChecked(m_recorder->isRecording());
+}
+
+QString ChartsPage::exportPng(const QString &path) {
+    redrawNow();
+    if (m_panes.isEmpty())
+        return tr("there is no chart to export");
+    if (!m_panesHost->grab().save(path, "PNG"))
+        return tr("could not write %1").arg(path);
+    return {};
+}
+
+QString ChartsPage::exportCsv(const QString &path) {
+    if (!m_replay) // the header names today's tools and alarm limits
+        m_liveChannels = sessionChannels(m_session);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
+        return file.errorString();
+    ChartCsvWriter writer(file, shownChannels(), m_session.temperatureUnit());
+    if (!writer.writeHeader(softwareVersion()) ||
+        !writer.writeWindow(shownTelemetry(), events(), m_viewport.start(), m_viewport.end()))
+        return writer.errorString();
+    return {};
+}
+
+void ChartsPage::chooseAndExport(bool png) {
+    const QString path = QFileDialog::getSaveFileName(
+        this, png ? tr("Export chart as PNG") : tr("Export chart data as CSV"),
+        suggestedPath(png ? QStringLiteral(".png") : QStringLiteral(".csv")),
+        png ? tr("PNG image (*.png)") : tr("CSV file (*.csv)"));
+    if (path.isEmpty())
+        return;
+    const QString error = png ? exportPng(path) : exportCsv(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Export"), tr("Export failed: %1").arg(error));
+}
+
+QString ChartsPage::startRecording(const QString &path) {
+    // Fresh channels: the tools and alarm limits the file's header names are today's.
+    m_liveChannels = sessionChannels(m_session);
+    const QString error =
+        m_recorder->start(path, m_liveChannels, m_session.temperatureUnit(), softwareVersion());
+    updateSourceLabel();
+    return error;
+}
+
+void ChartsPage::stopRecording() {
+    m_recorder->stop();
+    updateSourceLabel();
+}
+
+bool ChartsPage::isRecording() const {
+    return m_recorder->isRecording();
+}
+
+void ChartsPage::toggleRecording(bool on) {
+    if (!on) {
+        stopRecording();
+        return;
+    }
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Record to CSV file"),
+                                     suggestedPath(QStringLiteral(".csv")), tr("CSV file (*.csv)"));
+    const QString error = path.isEmpty() ? QString() : startRecording(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Record"), tr("Cannot record: %1").arg(error));
+    updateSourceLabel();
+}
+
+QString ChartsPage::openReplay(const QString &path) {
+    QString error;
+    auto recording = ChartCsvReader::readFile(path, &error);
+    if (!recording)
+        return error;
+    m_replay = std::move(recording);
+    m_replayPath = path;
+    rebuildPanes();
+    m_viewport.setDataRange(m_replay->firstMs, m_replay->lastMs);
+    resetView();
+    updateSourceLabel();
+    scheduleRedraw();
+    return {};
+}
+
+void ChartsPage::showLive() {
+    m_replay.reset();
+    m_replayPath.clear();
+    rebuildPanes();
+    onSamplesAdded();
+    m_viewport.reset();
+    updateSourceLabel();
+}
+
+void ChartsPage::chooseReplay() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open a chart recording"),
+        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation),
+        tr("CSV file (*.csv);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    const QString error = openReplay(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Replay"), tr("Cannot replay %1").arg(error));
+}
+
+} // namespace tipscope::gui

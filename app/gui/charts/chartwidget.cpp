@@ -1,0 +1,311 @@
+#include "chartwidget.h"
+
+#include "chartwidget_p.h"
+
+#include <QDateTime>
+#include <QPainter>
+#include <QVBoxLayout>
+#include <cmath>
+
+namespace tipscope::gui {
+
+namespace {
+constexpr double kMarkerHitPx = 5;
+
+// 1, 2 or 5 times a power of ten, about a fifth of `span`: ticks on round values.
+double tickStep(double span) {
+    if (!(span > 0))
+        return 1;
+    const double raw = span / 5;
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 5.0})
+        if (magnitude * m >= raw)
+            return magnitude * m;
+    return magnitude * 10;
+}
+
+void styleValueAxis(QValueAxis *axis) {
+    axis->setTickType(QValueAxis::TicksDynamic);
+    axis->setTickAnchor(0);
+    axis->setLabelFormat(QStringLiteral("%g"));
+    axis->setMinorTickCount(0);
+}
+} // namespace
+
+ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
+    chart = new QChart;
+    chart->setAnimationOptions(QChart::NoAnimation); // animations re-run on every replace()
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    chart->legend()->setAlignment(Qt::AlignTop);
+    timeAxis = new QCategoryAxis(chart);
+    timeAxis->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+    leftAxis = new QValueAxis(chart);
+    rightAxis = new QValueAxis(chart);
+    styleValueAxis(leftAxis);
+    styleValueAxis(rightAxis);
+    chart->legend()->setMarkerShape(QLegend::MarkerShapeFromSeries); // dashes tell series apart
+    chart->addAxis(timeAxis, Qt::AlignBottom);
+    chart->addAxis(leftAxis, Qt::AlignLeft);
+    chart->addAxis(rightAxis, Qt::AlignRight);
+    rightAxis->setVisible(false);
+    view = new ChartPlotView(chart, owner);
+    crosshair = new QGraphicsLineItem(chart);
+    crosshair->setPen(QPen(QColor(60, 60, 60, 180), 1));
+    crosshair->setZValue(100);
+    crosshair->setVisible(false);
+    emptyText = new QGraphicsSimpleTextItem(chart);
+    emptyText->setBrush(QColor(120, 120, 120));
+    emptyText->setZValue(100);
+    emptyText->setVisible(false);
+}
+
+double ChartWidgetPrivate::yAt(ChartAxis axis, double value, const QRectF &plot) const {
+    const double *r = ranges[axis == ChartAxis::Left ? 0 : 1];
+    const double span = r[1] - r[0];
+    return span > 0 ? plot.bottom() - (value - r[0]) / span * plot.height() : plot.bottom();
+}
+
+void ChartWidgetPrivate::placeOverlays() {
+    const QRectF p = plot();
+    if (crosshairTime && *crosshairTime >= t0 && *crosshairTime < t1) {
+        const double x = p.left() + double(*crosshairTime - t0) / double(t1 - t0) * p.width();
+        crosshair->setLine(x, p.top(), x, p.bottom());
+        crosshair->setVisible(true);
+    } else {
+        crosshair->setVisible(false);
+    }
+    const QRectF text = emptyText->boundingRect();
+    emptyText->setPos(p.center() - QPointF(text.width() / 2, text.height() / 2));
+}
+
+void ChartWidgetPrivate::updateTimeTicks() {
+    static constexpr qint64 kSteps[] = {1000,       2000,      5000,      10'000,    15'000,
+                                        30'000,     60'000,    120'000,   300'000,   600'000,
+                                        900'000,    1'800'000, 3'600'000, 7'200'000, 10'800'000,
+                                        21'600'000, 43'200'000};
+    const int maxTicks = qMax(2, int(plot().width() / 90));
+    qint64 step = kSteps[std::size(kSteps) - 1];
+    for (qint64 candidate : kSteps) {
+        if ((t1 - t0) / candidate <= maxTicks) {
+            step = candidate;
+            break;
+        }
+    }
+    // Rounded on the local clock, so hours and minutes are the ones people read on the wall.
+    const qint64 offset = qint64(QDateTime::fromMSecsSinceEpoch(t0).offsetFromUtc()) * 1000;
+    QList<qint64> wanted;
+    for (qint64 t = ((t0 + offset + step - 1) / step) * step - offset; t < t1; t += step)
+        wanted.append(t);
+    if (wanted == ticks)
+        return;
+    ticks = wanted;
+    for (const QString &label : timeAxis->categoriesLabels())
+        timeAxis->remove(label);
+    const QString format = step < 60'000 ? QStringLiteral("HH:mm:ss") : QStringLiteral("HH:mm");
+    timeAxis->setStartValue(double(wanted.value(0, t0) - step));
+    for (qint64 t : std::as_const(wanted)) {
+        const QDateTime time = QDateTime::fromMSecsSinceEpoch(t);
+        const bool midnight = time.time().hour() == 0 && time.time().minute() == 0;
+        timeAxis->append(
+            time.toString(midnight && step >= 3600'000 ? QStringLiteral("dd.MM.") : format),
+            double(t));
+    }
+}
+
+ChartWidget::ChartWidget(QWidget *parent)
+    : QWidget(parent)
+    , d(std::make_unique<ChartWidgetPrivate>(*this)) {
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(d->view);
+    setFocusProxy(d->view);
+    connect(d->chart, &QChart::plotAreaChanged, this, [this] {
+        d->placeOverlays();
+        d->updateTimeTicks();
+        Q_EMIT plotResized();
+    });
+}
+
+ChartWidget::~ChartWidget() = default;
+
+void ChartWidget::setTitle(const QString &title) {
+    d->title = title;
+    d->chart->setTitle(d->compact ? QString() : title);
+    d->view->setAccessibleName(title);
+}
+
+void ChartWidget::setCompact(bool compact) {
+    d->compact = compact;
+    d->chart->setTitle(compact ? QString() : d->title);
+    d->chart->legend()->setAlignment(compact ? Qt::AlignRight : Qt::AlignTop);
+}
+
+void ChartWidget::setSeries(const QList<ChartSeriesStyle> &styles) {
+    for (QLineSeries *s : std::as_const(d->series)) {
+        d->chart->removeSeries(s);
+        delete s;
+    }
+    d->series.clear();
+    d->styles = styles;
+    bool anyRight = false;
+    for (const ChartSeriesStyle &style : styles) {
+        auto *s = new QLineSeries;
+        s->setName(style.name);
+        // One pixel wide: the raster engine draws such pens with its cosmetic line stroker. A
+        // wider pen is stroked into a polygon and filled, which for a min/max zigzag of
+        // thousands of segments took over a minute a frame (tipscope-bench chart).
+        QPen pen(style.color, 1, style.style);
+        pen.setCosmetic(true);
+        s->setPen(pen);
+        d->chart->addSeries(s);
+        s->attachAxis(d->timeAxis);
+        s->attachAxis(style.axis == ChartAxis::Left ? d->leftAxis : d->rightAxis);
+        anyRight = anyRight || style.axis == ChartAxis::Right;
+        d->series.append(s);
+    }
+    d->rightAxis->setVisible(anyRight);
+}
+
+void ChartWidget::setAxisTitle(ChartAxis axis, const QString &title) {
+    (axis == ChartAxis::Left ? d->leftAxis : d->rightAxis)->setTitleText(title);
+}
+
+void ChartWidget::setTimeRange(qint64 t0, qint64 t1) {
+    if (t1 <= t0)
+        t1 = t0 + 1;
+    if (t0 == d->t0 && t1 == d->t1)
+        return;
+    d->t0 = t0;
+    d->t1 = t1;
+    d->timeAxis->setRange(double(t0), double(t1));
+    d->updateTimeTicks();
+    d->placeOverlays();
+    d->view->viewport()->update();
+}
+
+void ChartWidget::setAxisRange(ChartAxis axis, double min, double max) {
+    double *r = d->ranges[axis == ChartAxis::Left ? 0 : 1];
+    if (r[0] == min && r[1] == max) // never true for the first call: the ranges start as NaN
+        return;
+    r[0] = min;
+    r[1] = max;
+    QValueAxis *a = axis == ChartAxis::Left ? d->leftAxis : d->rightAxis;
+    a->setRange(min, max);
+    a->setTickInterval(tickStep(max - min));
+    d->view->viewport()->update();
+}
+
+void ChartWidget::setPoints(int index, const QList<QPointF> &points) {
+    if (index >= 0 && index < d->series.size())
+        d->series.at(index)->replace(points);
+}
+
+void ChartWidget::showData(const ChartData &data) {
+    const qint64 t1 = qMax(data.t1, data.t0 + 1);
+    const bool timeMoves = data.t0 != d->t0 || t1 != d->t1;
+    const bool moves[2] = {d->ranges[0][0] != data.leftMin || d->ranges[0][1] != data.leftMax,
+                           d->ranges[1][0] != data.rightMin || d->ranges[1][1] != data.rightMax};
+    // Qt Charts maps a series' points to the screen (and strokes its hover shape, the dearest
+    // part of a redraw) on every replace() and again on every range change of an axis it is
+    // attached to. A series whose axis is about to move gets its points silently, and the range
+    // change maps them once; the others are replaced normally.
+    for (int i = 0; i < d->series.size() && i < data.points.size(); ++i) {
+        const bool left = d->styles.at(i).axis == ChartAxis::Left;
+        QLineSeries *s = d->series.at(i);
+        if (timeMoves || moves[left ? 0 : 1]) {
+            const QSignalBlocker quiet(s);
+            s->replace(data.points.at(i));
+        } else {
+            s->replace(data.points.at(i));
+        }
+    }
+    setAxisRange(ChartAxis::Left, data.leftMin, data.leftMax);
+    setAxisRange(ChartAxis::Right, data.rightMin, data.rightMax);
+    setTimeRange(data.t0, t1);
+}
+
+void ChartWidget::setMarkers(const QList<ChartMarker> &markers) {
+    d->markers = markers;
+    d->view->viewport()->update();
+}
+
+void ChartWidget::setBands(const QList<ChartBand> &bands) {
+    d->bands = bands;
+    d->view->viewport()->update();
+}
+
+void ChartWidget::setCrosshair(std::optional<qint64> timeMs) {
+    d->crosshairTime = timeMs;
+    d->placeOverlays();
+}
+
+void ChartWidget::setEmptyText(const QString &text) {
+    d->emptyText->setText(text);
+    d->emptyText->setVisible(!text.isEmpty());
+    d->placeOverlays();
+}
+
+int ChartWidget::seriesCount() const {
+    return int(d->series.size());
+}
+
+qsizetype ChartWidget::pointCount(int index) const {
+    return index >= 0 && index < d->series.size() ? d->series.at(index)->count() : 0;
+}
+
+qint64 ChartWidget::timeStart() const {
+    return d->t0;
+}
+
+qint64 ChartWidget::timeEnd() const {
+    return d->t1;
+}
+
+QWidget *ChartWidget::plotSurface() const {
+    return d->view->viewport();
+}
+
+QRectF ChartWidget::plotArea() const {
+    return d->plot();
+}
+
+int ChartWidget::plotWidth() const {
+    return qMax(1, int(std::lround(d->plot().width())));
+}
+
+qint64 ChartWidget::timeAt(double x) const {
+    const QRectF p = d->plot();
+    const double fraction = p.width() > 0 ? (x - p.left()) / p.width() : 0;
+    return d->t0 + qint64(std::llround(fraction * double(d->t1 - d->t0)));
+}
+
+double ChartWidget::xAt(qint64 timeMs) const {
+    const QRectF p = d->plot();
+    return p.left() + double(timeMs - d->t0) / double(d->t1 - d->t0) * p.width();
+}
+
+QPointF ChartWidget::seriesPosition(int index, const QPointF &value) const {
+    if (index < 0 || index >= d->series.size())
+        return {};
+    return d->chart->mapToPosition(value, d->series.at(index));
+}
+
+QString ChartWidget::markerTooltipAt(double x) const {
+    QStringList tips;
+    for (const ChartMarker &m : std::as_const(d->markers))
+        if (m.timeMs >= d->t0 && m.timeMs < d->t1 && std::abs(xAt(m.timeMs) - x) <= kMarkerHitPx)
+            tips.append(m.tooltip);
+    if (tips.size() > 8) // a burst of events: the first ones and how many more
+        tips = tips.mid(0, 8) << tr("… and %n more", nullptr, int(tips.size() - 8));
+    return tips.join(QLatin1Char('\n'));
+}
+
+int ChartWidget::markerCount() const {
+    return int(d->markers.size());
+}
+
+QImage ChartWidget::toImage() const {
+    return d->view->grab().toImage();
+}
+
+} // namespace tipscope::gui

@@ -1,0 +1,81 @@
+// ChartWidget's insides: the Qt Charts objects and the view that paints the markers and bands
+// and turns mouse and keyboard input into the widget's requests. Private to chartwidget.cpp and
+// chartplotview.cpp; nothing else includes Qt Charts.
+#pragma once
+
+#include "chartwidget.h"
+
+#include <QCategoryAxis>
+#include <QChartView>
+#include <QGraphicsLineItem>
+#include <QGraphicsSimpleTextItem>
+#include <QLineSeries>
+#include <QValueAxis>
+
+class QRubberBand;
+
+namespace tipscope::gui {
+
+class ChartPlotView : public QChartView {
+    Q_OBJECT
+public:
+    ChartPlotView(QChart *chart, ChartWidget &owner);
+
+protected:
+    void drawForeground(QPainter *painter, const QRectF &rect) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void mouseDoubleClickEvent(QMouseEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void leaveEvent(QEvent *event) override;
+
+private:
+    enum class Drag { None, Pan, Band };
+
+    void drawBands(QPainter &painter, const QRectF &plot) const;
+    void drawMarkers(QPainter &painter, const QRectF &plot) const;
+    [[nodiscard]] double msPerPixel() const;
+
+    ChartWidget &m_owner;
+    Drag m_drag = Drag::None;
+    QPoint m_pressPos;
+    QPoint m_lastPos;
+    QRubberBand *m_rubberBand;
+};
+
+class ChartWidgetPrivate {
+public:
+    explicit ChartWidgetPrivate(ChartWidget &owner);
+
+    // Plot area in scene coordinates, which are the view's viewport coordinates (the chart
+    // fills the scene at the origin, unscaled).
+    [[nodiscard]] QRectF plot() const { return chart->plotArea(); }
+    [[nodiscard]] double yAt(ChartAxis axis, double value, const QRectF &plot) const;
+    void placeOverlays();
+    // Ticks on round times (every 10 s, 1 min, 1 h...), which QDateTimeAxis cannot do: its
+    // ticks divide the range evenly, so a moving window would show 03:10:47, 03:11:30...
+    void updateTimeTicks();
+
+    QChart *chart;
+    ChartPlotView *view;
+    QCategoryAxis *timeAxis;
+    QValueAxis *leftAxis;
+    QValueAxis *rightAxis;
+    QList<QLineSeries *> series;
+    QList<ChartSeriesStyle> styles;
+    QGraphicsLineItem *crosshair;
+    QGraphicsSimpleTextItem *emptyText;
+    QString title;
+    bool compact = false;
+    qint64 t0 = 0;
+    qint64 t1 = 1;
+    double ranges[2][2] = {{qQNaN(), qQNaN()}, {qQNaN(), qQNaN()}}; // [axis][min, max]
+    QList<qint64> ticks;                                            // the time axis' current ticks
+    std::optional<qint64> crosshairTime;
+    QList<ChartMarker> markers;
+    QList<ChartBand> bands;
+};
+
+} // namespace tipscope::gui

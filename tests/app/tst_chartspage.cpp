@@ -1,0 +1,267 @@
+// The Charts page through its real widgets against the demo line (a simulated DME-4C at 01 and
+// an SFR at 10 on a 19200 Bd wire, so the tests wait for real polls): panes and curves, event
+// markers for status changes injected in the simulator, the crosshair readout after zoom and pan,
+// export, recording and replay.
+#include "charts/chartframe.h"
+#include "charts/chartspage.h"
+#include "charts/chartwidget.h"
+
+#include "sim/simline.h"
+#include "sim/simstation.h"
+
+#include <QApplication>
+#include <QImage>
+#include <QMouseEvent>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QWheelEvent>
+#include <memory>
+
+using namespace tipscope;
+using namespace tipscope::gui;
+using model::Session;
+
+namespace {
+constexpr int kConnectMs = 30000;
+constexpr int kDataMs = 20000;
+
+void sendMouse(QWidget *w, QEvent::Type type, QPointF pos, Qt::MouseButton button,
+               Qt::MouseButtons buttons) {
+    QMouseEvent event(type, pos, w->mapToGlobal(pos), button, buttons, Qt::NoModifier);
+    QApplication::sendEvent(w, &event);
+}
+} // namespace
+
+class TestChartsPage : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+
+    void everyPortOfTheDemoStationIsDrawnLive();
+    void statusChangesInjectedInTheSimulatorGetMarkers();
+    void zoomAndPanKeepTheCrosshairReadoutConsistentWithTheBuffer();
+    void exportedCsvReplaysTheSameSamples();
+    void aMalformedRecordingIsRefusedAndTheLiveViewStays();
+    void recordingWritesTheNewSamplesToTheFile();
+    void pngExportWritesAnImageOfThePanes();
+    void onePanePerPortOnRequest();
+
+private:
+    void connectDemo();
+    void waitForSamples(int count);
+    [[nodiscard]] ChartWidget *stationPane() const { return m_page->panes().value(0); }
+    [[nodiscard]] QString logText() const {
+        QStringList lines;
+        for (const model::Event &e : m_session->eventLog().events())
+            lines.append(e.source + QStringLiteral(": ") + e.text);
+        return lines.join(QLatin1Char('\n'));
+    }
+
+    std::unique_ptr<Session> m_session;
+    std::unique_ptr<ChartsPage> m_page;
+    QTemporaryDir m_dir;
+};
+
+void TestChartsPage::init() {
+    m_session = std::make_unique<Session>();
+    m_page = std::make_unique<ChartsPage>(*m_session);
+    m_page->resize(1200, 800);
+    m_page->show();
+    m_page->setActive(true);
+    connectDemo();
+}
+
+void TestChartsPage::cleanup() {
+    m_page.reset();
+    m_session.reset();
+}
+
+void TestChartsPage::connectDemo() {
+    Session::Settings settings;
+    settings.line.kind = link::LineSettings::Kind::Demo;
+    m_session->connectTo(settings);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);
+    m_session->scheduler().setVisiblePorts(m_session->station(), m_page->visiblePorts());
+}
+
+void TestChartsPage::waitForSamples(int count) {
+    const QString key = Session::telemetryKey(*m_session->station(), 1);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->telemetry().buffer(key)->size() >= count, kDataMs);
+}
+
+void TestChartsPage::everyPortOfTheDemoStationIsDrawnLive() {
+    QCOMPARE(m_page->visiblePorts().size(), 4);
+    QCOMPARE(m_page->panes().size(), 2); // the ports overlaid, and the feeder
+    QCOMPARE(stationPane()->seriesCount(), 12);
+    QCOMPARE(m_page->traces(1).size(), 2); // fed length and speed
+    waitForSamples(5);
+    QTRY_VERIFY_WITH_TIMEOUT(stationPane()->pointCount(0) > 0, kDataMs); // by the page's timer
+    for (int i = 0; i < 12; ++i)
+        QVERIFY2(stationPane()->pointCount(i) > 0, qPrintable(m_page->traces(0).at(i).name));
+    QVERIFY(m_page->viewport().isFollowing());
+    m_page->redrawNow();
+    QCOMPARE(stationPane()->timeEnd(), m_page->viewport().end());
+    QVERIFY(m_page->redrawCount() > 0);
+}
+
+void TestChartsPage::statusChangesInjectedInTheSimulatorGetMarkers() {
+    waitForSamples(3);
+    // A change is logged against a value already read: wait for the first readings.
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->station()->port(2)->status().has_value() &&
+                                 m_session->station()->port(3)->error().has_value(),
+                             kDataMs);
+    m_session->demoLine()->station()->setStatus(2, 1); // port 2 into the stand
+    m_session->demoLine()->station()->setPortError(3, 4);
+    const auto tooltips = [this] {
+        m_page->redrawNow();
+        QStringList all;
+        for (ChartWidget *pane : m_page->panes())
+            for (double x = pane->plotArea().left(); x <= pane->plotArea().right(); x += 4)
+                if (const QString tip = pane->markerTooltipAt(x); !all.contains(tip))
+                    all.append(tip);
+        return all.join(QLatin1Char('\n'));
+    };
+    // The demo's tool sleeps at once in the stand, so the first reading may already say Sleep.
+    QTRY_VERIFY2_WITH_TIMEOUT(tooltips().contains(QStringLiteral("Port 2 · status: Working → ")),
+                              qPrintable(tooltips() + QStringLiteral(" | log: ") + logText()),
+                              kDataMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(tooltips().contains(QStringLiteral("Port 3 · port error: ")),
+                              qPrintable(tooltips() + QStringLiteral(" | log: ") + logText()),
+                              kDataMs);
+    // Port 2's marker is not on the feeder's pane.
+    ChartWidget *feeder = m_page->panes().value(1);
+    for (double x = feeder->plotArea().left(); x <= feeder->plotArea().right(); x += 4)
+        QVERIFY(!feeder->markerTooltipAt(x).contains(QStringLiteral("Port 2")));
+}
+
+void TestChartsPage::zoomAndPanKeepTheCrosshairReadoutConsistentWithTheBuffer() {
+    waitForSamples(40);
+    m_page->redrawNow();
+    ChartWidget *pane = stationPane();
+    QWidget *surface = pane->plotSurface();
+    const QRectF plot = pane->plotArea();
+    // Zoom in twice about a point right of the middle, then drag the view to the right.
+    const QPointF at(plot.left() + plot.width() * 0.8, plot.center().y());
+    for (int notch = 0; notch < 2; ++notch) {
+        QWheelEvent wheel(at, surface->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(surface, &wheel);
+    }
+    QVERIFY(!m_page->viewport().isFollowing());
+    QCOMPARE(m_page->viewport().windowMs(), qint64(ChartViewport::kDefaultWindowMs * 0.64));
+    sendMouse(surface, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton);
+    sendMouse(surface, QEvent::MouseMove, at + QPointF(60, 0), Qt::NoButton, Qt::LeftButton);
+    sendMouse(surface, QEvent::MouseButtonRelease, at + QPointF(60, 0), Qt::LeftButton,
+              Qt::NoButton);
+    m_page->redrawNow();
+    QCOMPARE(pane->timeStart(), m_page->viewport().start());
+    QCOMPARE(pane->timeEnd(), m_page->viewport().end());
+
+    // Hover over data: the readout is the buffer's newest sample at or before that instant.
+    const auto *tips =
+        m_session->telemetry().buffer(Session::telemetryKey(*m_session->station(), 1));
+    const double x = pane->xAt(tips->lastTime() - 2000);
+    QVERIFY(plot.contains(QPointF(x, plot.center().y())));
+    sendMouse(surface, QEvent::MouseMove, QPointF(x, plot.center().y()), Qt::NoButton,
+              Qt::NoButton);
+    const qint64 t = pane->timeAt(x);
+    const QList<ChartTrace> traces = m_page->traces(0);
+    const QList<ReadoutValue> values =
+        readoutAt(m_session->telemetry(), sessionChannels(*m_session), traces, t);
+    QCOMPARE(values.at(0).wire, tips->valueAt(0, t)->value);
+    QCOMPARE(values.at(0).sampleMs, tips->valueAt(0, t)->timeMs);
+    QVERIFY2(m_page->readoutText().contains(readoutText(traces, values, t)),
+             qPrintable(m_page->readoutText()));
+    // The crosshair's pixel is where Qt Charts itself draws that instant.
+    QVERIFY(qAbs(pane->seriesPosition(0, QPointF(double(t), 300)).x() - x) < 1.0);
+}
+
+void TestChartsPage::exportedCsvReplaysTheSameSamples() {
+    waitForSamples(20);
+    m_page->viewport().setFollowing(false); // a fixed window to export and compare
+    const qint64 t0 = m_page->viewport().start(), t1 = m_page->viewport().end();
+    const QString path = m_dir.filePath(QStringLiteral("window.csv"));
+    QCOMPARE(m_page->exportCsv(path), QString());
+    QCOMPARE(m_page->openReplay(path), QString());
+    QVERIFY(m_page->isReplay());
+    QCOMPARE(m_page->panes().size(), 2);
+    m_page->redrawNow();
+    QVERIFY(stationPane()->pointCount(0) > 0);
+    // Every live sample of the window is in the replay (keyed by channel id), unchanged.
+    const QList<ChartChannel> live = sessionChannels(*m_session);
+    QCOMPARE(m_page->shownChannels().size(), live.size());
+    for (const ChartChannel &c : live) {
+        const auto *from = m_session->telemetry().buffer(c.key);
+        const auto *back = m_page->shownTelemetry().buffer(c.id);
+        QVERIFY2(back, qPrintable(c.id));
+        QCOMPARE(back->seriesNames(), from->seriesNames());
+        for (int s = 0; s < from->seriesCount(); ++s) {
+            const auto expected = from->samples(s, t0, t1);
+            const auto replayed = back->samples(s, t0, t1);
+            QCOMPARE(replayed.size(), expected.size());
+            for (qsizetype i = 0; i < expected.size(); ++i) {
+                QCOMPARE(replayed.at(i).timeMs, expected.at(i).timeMs);
+                QCOMPARE(replayed.at(i).value, expected.at(i).value);
+            }
+        }
+    }
+    m_page->showLive();
+    QVERIFY(!m_page->isReplay());
+    QVERIFY(m_page->viewport().isFollowing());
+}
+
+void TestChartsPage::aMalformedRecordingIsRefusedAndTheLiveViewStays() {
+    const QString path = m_dir.filePath(QStringLiteral("bad.csv"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("time,port1 tip [°C],events\n2024-01-01T00:00:00.000Z,hot,\n");
+    file.close();
+    const QString error = m_page->openReplay(path);
+    QVERIFY2(error.contains(QStringLiteral("bad.csv, line 2")), qPrintable(error));
+    QVERIFY2(error.contains(QStringLiteral("\"hot\" is not a number")), qPrintable(error));
+    QVERIFY(!m_page->isReplay());
+    QCOMPARE(m_page->panes().size(), 2);
+}
+
+void TestChartsPage::recordingWritesTheNewSamplesToTheFile() {
+    waitForSamples(3);
+    const QString path = m_dir.filePath(QStringLiteral("rec.csv"));
+    QCOMPARE(m_page->startRecording(path), QString());
+    QVERIFY(m_page->isRecording());
+    const QString key = Session::telemetryKey(*m_session->station(), 1);
+    const qint64 before = m_session->telemetry().buffer(key)->totalAppended();
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->telemetry().buffer(key)->totalAppended() >= before + 8,
+                             kDataMs);
+    m_page->stopRecording();
+    QVERIFY(!m_page->isRecording());
+    QCOMPARE(m_page->openReplay(path), QString());
+    QVERIFY(m_page->isReplay());
+    const auto *recorded = m_page->shownTelemetry().buffer(QStringLiteral("port1"));
+    QVERIFY(recorded);
+    QVERIFY2(recorded->size() >= 8, qPrintable(QString::number(recorded->size())));
+    QVERIFY(recorded->firstTime() > m_session->telemetry().buffer(key)->firstTime());
+    m_page->redrawNow();
+    QVERIFY(stationPane()->pointCount(0) > 0);
+}
+
+void TestChartsPage::pngExportWritesAnImageOfThePanes() {
+    waitForSamples(3);
+    const QString path = m_dir.filePath(QStringLiteral("chart.png"));
+    QCOMPARE(m_page->exportPng(path), QString());
+    const QImage image(path);
+    QVERIFY(!image.isNull());
+    QVERIFY(image.width() > 600 && image.height() > 300);
+    QVERIFY(!m_page->exportPng(QStringLiteral("/no/such/folder/chart.png")).isEmpty());
+}
+
+void TestChartsPage::onePanePerPortOnRequest() {
+    m_page->setPaneLayout(ChartsPage::Layout::PerPort);
+    QCOMPARE(m_page->panes().size(), 5);
+    QCOMPARE(m_page->panes().first()->seriesCount(), 3);
+    m_page->setPaneLayout(ChartsPage::Layout::Overlaid);
+    QCOMPARE(m_page->panes().size(), 2);
+}
+
+QTEST_MAIN(TestChartsPage)
+#include "tst_chartspage.moc"

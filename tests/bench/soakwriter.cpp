@@ -1,0 +1,157 @@
+#include "soakwriter.h"
+
+#include "model/stationmodel.h"
+
+#include <QTimer>
+
+namespace tipscope::bench {
+
+using model::Parameter;
+
+namespace {
+constexpr int kExamples = 5;
+constexpr int kMaxPauseMs = 100; // between a finished write and the next, like a person clicking
+} // namespace
+
+WriteStream::WriteStream(model::StationModel &station, const QList<QByteArray> &codes, quint32 seed,
+                         QObject *parent)
+    : QObject(parent)
+    , m_rng(seed) {
+    m_clock.start();
+    for (const QByteArray &code : codes) {
+        Parameter *p = station.parameter(code);
+        if (!p || !p->isWritable())
+            continue;
+        m_tracks[code].parameter = p;
+        connect(p, &Parameter::writeFinished, this,
+                [this, code](bool ok, const QString &reason) { onFinished(code, ok, reason); });
+    }
+}
+
+void WriteStream::setInitial(const QByteArray &code, qint64 value) {
+    if (m_tracks.contains(code))
+        m_tracks[code].lastVerified = value;
+}
+
+void WriteStream::start(int inFlight) {
+    m_inFlightTarget = inFlight;
+    m_issuing = true;
+    for (int i = 0; i < inFlight; ++i)
+        issueNext();
+}
+
+qint64 WriteStream::pickValue(const Track &t) {
+    const Parameter &p = *t.parameter;
+    const qint64 step = qMax(1, p.meta().step);
+    const qint64 lo = p.minimum();
+    const qint64 steps = (p.maximum() - lo) / step;
+    for (;;) {
+        const qint64 v = lo + step * qint64(m_rng.bounded(quint32(steps + 1)));
+        if (v != t.lastVerified.value_or(v + 1))
+            return v;
+    }
+}
+
+void WriteStream::issueNext() {
+    if (!m_issuing || m_inFlight >= m_inFlightTarget)
+        return;
+    // A parameter with no write open, chosen at random so every code sees traffic.
+    QList<QByteArray> idle;
+    for (auto it = m_tracks.cbegin(); it != m_tracks.cend(); ++it)
+        if (!it->busy && it->parameter)
+            idle.append(it.key());
+    if (idle.isEmpty())
+        return;
+    const QByteArray code = idle.at(int(m_rng.bounded(quint32(idle.size()))));
+    Track &t = m_tracks[code];
+    const qint64 value = pickValue(t);
+    if (const QString why = t.parameter->setEdit(value); !why.isEmpty()) {
+        ++m_tally.refused;
+        if (m_tally.examples.size() < kExamples)
+            m_tally.examples.append(QStringLiteral("%1 refused: %2").arg(code, why));
+        scheduleNext();
+        return;
+    }
+    t.busy = true;
+    t.pendingValue = value;
+    t.startedMs = m_clock.elapsed();
+    ++m_inFlight;
+    ++m_tally.issued;
+    t.parameter->apply();
+}
+
+void WriteStream::scheduleNext() {
+    QTimer::singleShot(int(m_rng.bounded(kMaxPauseMs + 1)), this, &WriteStream::issueNext);
+}
+
+void WriteStream::onFinished(const QByteArray &code, bool ok, const QString &reason) {
+    Track &t = m_tracks[code];
+    if (!t.busy) {
+        ++m_tally.unsolicited;
+        return;
+    }
+    t.busy = false;
+    --m_inFlight;
+    if (ok) {
+        ++m_tally.verified;
+        m_tally.verifiedMs.append(double(m_clock.elapsed() - t.startedMs));
+        t.lastVerified = t.pendingValue;
+        t.failedSince.clear();
+    } else {
+        ++m_tally.failed;
+        ++m_tally.failedBy[classify(reason)];
+        if (m_tally.examples.size() < kExamples)
+            m_tally.examples.append(QStringLiteral("%1: %2").arg(code, reason));
+        t.failedSince.append({t.pendingValue, reason});
+    }
+    scheduleNext();
+}
+
+QString WriteStream::classify(const QString &reason) {
+    // Read-back first: "written, but the read-back failed: no answer" is not a lost write.
+    static const QList<QPair<const char *, QLatin1String>> kClasses = {
+        {"read-back failed", QLatin1String("readback_failed")},
+        {"the device reports", QLatin1String("readback_mismatch")},
+        {"line was lost", QLatin1String("line_lost")},
+        {"not connected", QLatin1String("line_down")},
+        {"clos", QLatin1String("line_down")},
+        {"NAK", QLatin1String("nak")},
+        {"corrupted", QLatin1String("corrupted")},
+        {"no answer", QLatin1String("no_answer")},
+        {"could not be written", QLatin1String("no_answer")},
+    };
+    for (const auto &[needle, name] : kClasses)
+        if (reason.contains(QLatin1String(needle)))
+            return name;
+    return QStringLiteral("other");
+}
+
+WriteStream::Verdict WriteStream::judge(const QByteArray &code, qint64 deviceValue) const {
+    const Track t = m_tracks.value(code);
+    if (t.lastVerified == deviceValue)
+        return Verdict::Expected;
+    for (const auto &[value, reason] : t.failedSince)
+        if (value == deviceValue)
+            return Verdict::FromFailedWrite;
+    return Verdict::Unexpected;
+}
+
+QString WriteStream::expectationText(const QByteArray &code) const {
+    const Track t = m_tracks.value(code);
+    QStringList failed;
+    for (const auto &[value, reason] : t.failedSince)
+        failed.append(QString::number(value));
+    return QStringLiteral("last verified %1, failed since: [%2]")
+        .arg(t.lastVerified ? QString::number(*t.lastVerified) : QStringLiteral("none"),
+             failed.join(QLatin1Char(' ')));
+}
+
+QString WriteStream::failureReason(const QByteArray &code, qint64 value) const {
+    const Track t = m_tracks.value(code);
+    for (const auto &[v, reason] : t.failedSince)
+        if (v == value)
+            return reason;
+    return {};
+}
+
+} // namespace tipscope::bench

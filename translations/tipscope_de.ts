@@ -1,0 +1,3828 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE" sourcelanguage="en">
+<context>
+    <name>Action</name>
+    <message>
+        <location filename="../lib/model/action.cpp" line="28"/>
+        <source>monitor-only mode is on: nothing is written</source>
+        <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/action.cpp" line="30"/>
+        <source>%1 needs an explicit confirmation: %2</source>
+        <translation>%1 erfordert eine ausdrückliche Bestätigung: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/action.cpp" line="32"/>
+        <source>%1 is already running</source>
+        <translation>%1 läuft bereits</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/action.cpp" line="44"/>
+        <source>%1 done</source>
+        <translation>%1 erledigt</translation>
+    </message>
+</context>
+<context>
+    <name>AppSettings</name>
+    <message>
+        <location filename="../app/gui/appsettings.cpp" line="106"/>
+        <source>choose a serial port</source>
+        <translation>wählen Sie eine serielle Schnittstelle</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/appsettings.cpp" line="116"/>
+        <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
+        <translation>&apos;%1&apos; hat nicht die Form HOST:PORT (zum Beispiel 192.168.1.20:4001)</translation>
+    </message>
+</context>
+<context>
+    <name>ChartCsv</name>
+    <message>
+        <location filename="../app/gui/charts/chartcsv.cpp" line="192"/>
+        <source>the file could not be written</source>
+        <translation>die Datei konnte nicht geschrieben werden</translation>
+    </message>
+</context>
+<context>
+    <name>ChartCsvReader</name>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="62"/>
+        <source>line %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="91"/>
+        <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
+        <translation>die Zeile ist länger als %1 Bytes (ist das eine Diagramm-CSV-Datei?)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="98"/>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="273"/>
+        <source>the file holds binary data, not CSV text</source>
+        <translation>die Datei enthält Binärdaten, keinen CSV-Text</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="102"/>
+        <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
+        <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als &quot;CSV UTF-8&quot;)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="123"/>
+        <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
+        <translation>die Kopfzeile muss mit &quot;time&quot; beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="126"/>
+        <source>%1 columns; replay reads at most %2</source>
+        <translation>%1 Spalten; die Wiedergabe liest höchstens %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="137"/>
+        <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
+        <translation>Spalte %1 &quot;%2&quot; ist weder &quot;port&lt;n&gt; &lt;Reihe&gt; [Einheit]&quot; noch &quot;feeder &lt;Reihe&gt; [Einheit]&quot;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="148"/>
+        <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
+        <translation>Spalte %1 &quot;%2&quot;: die Einheit muss &quot;%3&quot; sein</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="150"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <source>Feeder</source>
+        <translation>Lotdrahtvorschub</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="174"/>
+        <source>column %1 &quot;%2&quot; appears twice</source>
+        <translation>Spalte %1 &quot;%2&quot; kommt zweimal vor</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="179"/>
+        <source>the header names no series columns</source>
+        <translation>die Kopfzeile nennt keine Spalten mit Datenreihen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="200"/>
+        <source>column %1: &quot;%2&quot; is not a number</source>
+        <translation>Spalte %1: &quot;%2&quot; ist keine Zahl</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="205"/>
+        <source>%1 has values in some of its columns but not all</source>
+        <translation>%1 hat nur in einem Teil seiner Spalten Werte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="212"/>
+        <source>%1 cells, but the header has %2 columns</source>
+        <translation>%1 Zellen, aber die Kopfzeile hat %2 Spalten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="217"/>
+        <source>&quot;%1&quot; is not an ISO 8601 time</source>
+        <translation>&quot;%1&quot; ist keine Zeitangabe nach ISO 8601</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="220"/>
+        <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
+        <translation>die Zeit %1 liegt vor der der vorigen Zeile (die Zeilen müssen zeitlich geordnet sein)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="231"/>
+        <source>%1 has more than %2 samples, more than replay holds; split the file</source>
+        <translation>%1 hat mehr als %2 Messwerte, mehr als die Wiedergabe fasst; teilen Sie die Datei auf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="244"/>
+        <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
+        <translation>das Ereignis &quot;%1&quot; hat nicht die Form &quot;&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;&quot;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="290"/>
+        <source>a quoted cell is not closed</source>
+        <translation>eine Zelle in Anführungszeichen ist nicht geschlossen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="300"/>
+        <source>the file has a header but no rows</source>
+        <translation>die Datei hat eine Kopfzeile, aber keine Zeilen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="301"/>
+        <source>the file is empty or holds only comments</source>
+        <translation>die Datei ist leer oder enthält nur Kommentare</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="319"/>
+        <source>the file is %1 MB; replay reads files up to %2 MB</source>
+        <translation>die Datei ist %1 MB groß; die Wiedergabe liest Dateien bis %2 MB</translation>
+    </message>
+</context>
+<context>
+    <name>ChartRecorder</name>
+    <message>
+        <location filename="../app/gui/charts/chartrecorder.cpp" line="31"/>
+        <source>nothing to record: no station or feeder is connected</source>
+        <translation>nichts aufzuzeichnen: weder Station noch Lotdrahtvorschub verbunden</translation>
+    </message>
+</context>
+<context>
+    <name>ChartSeries</name>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="76"/>
+        <source>Tip</source>
+        <translation>Lötspitze</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
+        <source>Setpoint</source>
+        <translation>Sollwert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
+        <source>Power</source>
+        <translation>Leistung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
+        <source>Fed length</source>
+        <translation>Vorgeschobene Länge</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
+        <source>Feeding</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="107"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="122"/>
+        <source>Feeder</source>
+        <translation>Lotdrahtvorschub</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="146"/>
+        <source>P%1 </source>
+        <translation>P%1 </translation>
+    </message>
+</context>
+<context>
+    <name>CliCommands</name>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="37"/>
+        <source>tipscope-cli: %1: %2</source>
+        <translation>tipscope-cli: %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="49"/>
+        <source>%1 unreadable data field &apos;%2&apos;</source>
+        <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="75"/>
+        <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
+        <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="86"/>
+        <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
+        <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="108"/>
+        <source>%1 written</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="113"/>
+        <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
+        <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="121"/>
+        <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
+        <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="126"/>
+        <source>%1 (verified)</source>
+        <translation>%1 (geprüft)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="135"/>
+        <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
+        <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="143"/>
+        <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
+        <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="155"/>
+        <location filename="../app/cli/clicommands.cpp" line="157"/>
+        <source>the data field must be printable ASCII</source>
+        <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <source>the data field is longer than 32 characters</source>
+        <translation>das Datenfeld ist länger als 32 Zeichen</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="169"/>
+        <location filename="../app/cli/clicommands.cpp" line="190"/>
+        <source>tipscope-cli: refused, nothing was sent: %1</source>
+        <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="182"/>
+        <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
+        <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="255"/>
+        <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
+        <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="278"/>
+        <source> [dangerous]</source>
+        <translation> [gefährlich]</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="281"/>
+        <source>values: %1</source>
+        <translation>Werte: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="282"/>
+        <source>families: %1</source>
+        <translation>Familien: %1</translation>
+    </message>
+</context>
+<context>
+    <name>CliMonitor</name>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="65"/>
+        <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
+        <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="72"/>
+        <source>tipscope-cli: --duration takes seconds</source>
+        <translation>tipscope-cli: --duration erwartet Sekunden</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="79"/>
+        <source>tipscope-cli: monitor needs a station; none was found</source>
+        <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="88"/>
+        <source>tipscope-cli: cannot write %1: %2</source>
+        <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="112"/>
+        <source>P%1 --</source>
+        <translation>P%1 --</translation>
+    </message>
+</context>
+<context>
+    <name>CliParser</name>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="40"/>
+        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]
+                    [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
+                    [--timeout MS] [--retries N] [--verbose] COMMAND ...
+
+Commands:
+  detect [--json] [--scan]  one line per device: &quot;&lt;address or --&gt; &lt;model&gt; &lt;family&gt; &lt;version&gt;&quot;
+  read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
+  write CODE VALUE [--raw]  validate, send, and read back
+  send HEX                  send a raw frame; print the answer in hex and decoded
+  monitor [--interval MS] [--duration S] [--csv FILE]
+                            tip temperature, setpoint, power and status per port
+  dump [--json]             every readable parameter, counter and error
+  commands [--family F]     the command catalog
+  profile save FILE         every writable setting of the device to a JSON profile
+  profile diff FILE         what applying the profile would change
+  profile apply FILE [--dry-run] [--force]
+                            write what differs, each value read back; --dry-run lists
+                            the frames; --force applies a profile of another family
+
+Without --addr or --no-addr the device is found automatically. --demo talks to the
+built-in simulated DME station (address 01) and SFR feeder (address 10).
+--timeout is the device turnaround added to the wire time of each request.
+
+Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
+3 the device answered NAK, or a read-back or profile check failed;
+4 no valid answer; 5 transport error.
+</source>
+        <translation>Aufruf: tipscope-cli [--port GERÄT | --tcp HOST:PORT | --demo] [--baud N]
+                     [--parity none|even|odd] [--stop-bits 1|2] [--addr QUELLE:ZIEL | --no-addr]
+                     [--timeout MS] [--retries N] [--verbose] BEFEHL ...
+
+Befehle:
+  detect [--json] [--scan]  eine Zeile pro Gerät: &quot;&lt;Adresse oder --&gt; &lt;Modell&gt; &lt;Familie&gt; &lt;Version&gt;&quot;
+  read CODE... [--raw]      eine Zeile pro Code: &quot;&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;&quot;
+  write CODE WERT [--raw]   prüfen, senden und zurücklesen
+  send HEX                  ein Roh-Telegramm senden; die Antwort hexadezimal und dekodiert ausgeben
+  monitor [--interval MS] [--duration S] [--csv DATEI]
+                            Spitzentemperatur, Sollwert, Leistung und Status pro Port
+  dump [--json]             alle lesbaren Parameter, Zähler und Fehler
+  commands [--family F]     der Befehlskatalog
+  profile save DATEI        alle beschreibbaren Einstellungen des Geräts in ein JSON-Profil
+  profile diff DATEI        was das Anwenden des Profils ändern würde
+  profile apply DATEI [--dry-run] [--force]
+                            schreiben, was abweicht, jeden Wert zurücklesen; --dry-run
+                            listet die Telegramme auf; --force wendet ein Profil einer
+                            anderen Familie an
+
+Ohne --addr oder --no-addr wird das Gerät automatisch gesucht. --demo spricht mit der
+eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10).
+--timeout ist die Antwortzeit des Geräts, die zur Übertragungszeit jeder Anfrage addiert wird.
+
+Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschrieben);
+3 das Gerät hat mit NAK geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen;
+4 keine gültige Antwort; 5 Übertragungsfehler.
+</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="85"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="118"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="123"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="130"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="135"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud erwartet eine Baudrate wie 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="142"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity erwartet none, even oder odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="146"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits erwartet 1 oder 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="154"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="162"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="165"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="169"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 braucht einen Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="173"/>
+        <source>--%1 takes no value</source>
+        <translation>--%1 nimmt keinen Wert an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <source>unknown option --%1</source>
+        <translation>unbekannte Option --%1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="178"/>
+        <source>&apos;%1&apos; has no option --%2</source>
+        <translation>&apos;%1&apos; hat keine Option --%2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="184"/>
+        <source>no command given</source>
+        <translation>kein Befehl angegeben</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
+        <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
+    </message>
+</context>
+<context>
+    <name>CliProfile</name>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="49"/>
+        <source>tipscope-cli: could not read %1; no profile written</source>
+        <translation>tipscope-cli: %1 konnte nicht gelesen werden; kein Profil geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="59"/>
+        <source>saved %1 settings of %2 to %3</source>
+        <translation>%1 Einstellungen von %2 in %3 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="73"/>
+        <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
+        <translation>tipscope-cli: profile erwartet save DATEI, diff DATEI oder apply DATEI</translation>
+    </message>
+</context>
+<context>
+    <name>CliSession</name>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="56"/>
+        <source>tipscope-cli: cannot open %1: %2</source>
+        <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="92"/>
+        <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
+        <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="93"/>
+        <source>without addresses</source>
+        <translation>ohne Adressen</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="103"/>
+        <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
+        <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="134"/>
+        <source>tipscope-cli: the line was lost: %1</source>
+        <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="137"/>
+        <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
+        <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
+    </message>
+</context>
+<context>
+    <name>ConsoleModel</name>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="56"/>
+        <source>sent as typed (not a valid frame)</source>
+        <translation>unverändert gesendet (kein gültiges Telegramm)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="72"/>
+        <source>stray: answers no pending request</source>
+        <translation>verwaist: beantwortet keine offene Anfrage</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="148"/>
+        <source>TX</source>
+        <translation>TX</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="150"/>
+        <source>RX</source>
+        <translation>RX</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="152"/>
+        <source>frame</source>
+        <translation>Telegramm</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="154"/>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="156"/>
+        <source>note</source>
+        <translation>Hinweis</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="199"/>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="199"/>
+        <source>bad</source>
+        <translation>falsch</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="215"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="215"/>
+        <source>Dir</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="216"/>
+        <source>Addr</source>
+        <translation>Adr.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="216"/>
+        <source>Header</source>
+        <translation>Kopf</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="217"/>
+        <source>Cmd</source>
+        <translation>Befehl</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="217"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <source>Data</source>
+        <translation>Daten</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <source>BCC</source>
+        <translation>BCC</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="219"/>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="219"/>
+        <source>ASCII</source>
+        <translation>ASCII</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="220"/>
+        <source>Remark</source>
+        <translation>Bemerkung</translation>
+    </message>
+</context>
+<context>
+    <name>DeviceModel</name>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="61"/>
+        <source>%1 at %2</source>
+        <translation>%1, Adresse %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="62"/>
+        <source>%1 (no address)</source>
+        <translation>%1 (ohne Adresse)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="66"/>
+        <source>%1, port %2</source>
+        <translation>%1, Port %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>DisplayUnits</name>
+    <message>
+        <location filename="../lib/model/displayunits.cpp" line="83"/>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>&apos;%1&apos; ist keine Zahl</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/displayunits.cpp" line="89"/>
+        <source>%1 has more decimals than %2 can take</source>
+        <translation>%1 hat mehr Nachkommastellen, als %2 zulässt</translation>
+    </message>
+</context>
+<context>
+    <name>FeederModel</name>
+    <message>
+        <location filename="../lib/model/feedermodel.cpp" line="57"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/feedermodel.cpp" line="63"/>
+        <source>%1 has no command %2</source>
+        <translation>%1 hat keinen Befehl %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/feedermodel.cpp" line="80"/>
+        <source>error cleared</source>
+        <translation>Fehler gelöscht</translation>
+    </message>
+</context>
+<context>
+    <name>FrameBuilder</name>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="43"/>
+        <source>%1 carries the data field %2.</source>
+        <translation>%1 enthält das Datenfeld %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="46"/>
+        <source>A write needs a data field: %1.</source>
+        <translation>Ein Schreibbefehl braucht ein Datenfeld: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="57"/>
+        <source>On the wire this value is written %1.</source>
+        <translation>Auf der Leitung wird dieser Wert als %1 geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
+        <source>Unknown device family: the catalog cannot check this frame.</source>
+        <translation>Unbekannte Gerätefamilie: der Katalog kann dieses Telegramm nicht prüfen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="73"/>
+        <source>%1 is not a %2 write command in the catalog.</source>
+        <translation>%1 ist im Katalog kein Schreibbefehl für %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="74"/>
+        <source>%1 is not a %2 read command in the catalog.</source>
+        <translation>%1 ist im Katalog kein Lesebefehl für %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="77"/>
+        <source>Did you mean %1?</source>
+        <translation>Meinten Sie %1?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
+        <source>It is sent as typed.</source>
+        <translation>Es wird unverändert gesendet.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
+        <source>Reads carry no data field; the device may refuse this frame.</source>
+        <translation>Lesebefehle haben kein Datenfeld; das Gerät kann dieses Telegramm ablehnen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
+        <source>Dangerous: %1</source>
+        <translation>Gefährlich: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="93"/>
+        <source>Catalog check: %1</source>
+        <translation>Katalogprüfung: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
+        <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
+        <translation>Nicht sendbar: der Befehl muss aus 3 druckbaren Zeichen bestehen, z. B. SMN.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="120"/>
+        <source>Not sendable: the data field may only hold printable ASCII.</source>
+        <translation>Nicht sendbar: das Datenfeld darf nur druckbare ASCII-Zeichen enthalten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="125"/>
+        <source>Not sendable: addresses go from 00 to 99.</source>
+        <translation>Nicht sendbar: Adressen gehen von 00 bis 99.</translation>
+    </message>
+</context>
+<context>
+    <name>MeasurementReport</name>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="30"/>
+        <source>%1: min %2, max %3, mean %4</source>
+        <translation>%1: Min. %2, Max. %3, Mittel %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="39"/>
+        <source>wake</source>
+        <translation>Aufwachen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="39"/>
+        <source>heat-up</source>
+        <translation>Aufheizen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="41"/>
+        <source>%1 at %2 to %3: %4</source>
+        <translation>%1 um %2 auf %3: %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="44"/>
+        <source>%1 at %2 to %3: not reached in this window</source>
+        <translation>%1 um %2 auf %3: in diesem Zeitfenster nicht erreicht</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
+        <source>… %n more heat-up(s)</source>
+        <translation>
+            <numerusform>… %n weiteres Aufheizen</numerusform>
+            <numerusform>… %n weitere Aufheizvorgänge</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="57"/>
+        <source>recovery at %1: %2 (dip to %3)</source>
+        <translation>Erholung um %1: %2 (Einbruch auf %3)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="60"/>
+        <source>dip at %1 to %2: not recovered in this window</source>
+        <translation>Einbruch um %1 auf %2: in diesem Zeitfenster nicht erholt</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
+        <source>… %n more recovery(s)</source>
+        <translation>
+            <numerusform>… %n weitere Erholung</numerusform>
+            <numerusform>… %n weitere Erholungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="72"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="74"/>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="75"/>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="92"/>
+        <source>%1: no samples in this window</source>
+        <translation>%1: keine Messwerte in diesem Zeitfenster</translation>
+    </message>
+</context>
+<context>
+    <name>Parameter</name>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="69"/>
+        <source>read-only</source>
+        <translation>schreibgeschützt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="75"/>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="78"/>
+        <source> in steps of %1 %2</source>
+        <translation> in Schritten von %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="85"/>
+        <source>, or %1</source>
+        <translation>, oder %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="91"/>
+        <location filename="../lib/model/parameter.cpp" line="132"/>
+        <source>%1 cannot be written</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="100"/>
+        <source>%1 is not allowed for %2: allowed is %3</source>
+        <translation>%1 ist für %2 nicht zulässig: zulässig ist %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="105"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="117"/>
+        <location filename="../lib/model/parameter.cpp" line="211"/>
+        <source>monitor-only mode is on: nothing is written</source>
+        <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="136"/>
+        <source>%1: %2; allowed is %3</source>
+        <translation>%1: %2; zulässig ist %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="172"/>
+        <source>reading %1 (%2)</source>
+        <translation>%1 wird gelesen (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="184"/>
+        <source>reading %1</source>
+        <translation>%1 wird gelesen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="185"/>
+        <source>unreadable data field &apos;%1&apos;</source>
+        <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="234"/>
+        <source>not written: %1</source>
+        <translation>nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="237"/>
+        <source>perhaps not written, the answer was lost: %1</source>
+        <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="256"/>
+        <source>written, but the read-back failed: %1</source>
+        <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="262"/>
+        <source>the device reports %1 after %2 was written</source>
+        <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="273"/>
+        <source>%1 set to %2</source>
+        <translation>%1 auf %2 gesetzt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="280"/>
+        <source>writing %1</source>
+        <translation>%1 wird geschrieben</translation>
+    </message>
+</context>
+<context>
+    <name>PortModel</name>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="30"/>
+        <source>Working</source>
+        <translation>In Betrieb</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="32"/>
+        <source>Stand</source>
+        <translation>In der Ablage</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="34"/>
+        <source>Sleep</source>
+        <translation>Ruhemodus</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="36"/>
+        <source>Hibernation</source>
+        <translation>Tiefschlaf</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="44"/>
+        <source>Cooling</source>
+        <translation>Abkühlen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="46"/>
+        <source>Suction</source>
+        <translation>Absaugung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="48"/>
+        <source>Motor forward</source>
+        <translation>Motor vorwärts</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="50"/>
+        <source>Motor backward</source>
+        <translation>Motor rückwärts</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="100"/>
+        <location filename="../lib/model/portmodel.cpp" line="113"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="103"/>
+        <source>tool %1</source>
+        <translation>Werkzeug %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="170"/>
+        <source>this port has no status command</source>
+        <translation>dieser Port hat keinen Statusbefehl</translation>
+    </message>
+</context>
+<context>
+    <name>Profile</name>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="69"/>
+        <location filename="../lib/model/profile.cpp" line="123"/>
+        <source>%1: not a setting of a %2</source>
+        <translation>%1: keine Einstellung von %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="75"/>
+        <source>%1: &apos;%2&apos; is not a valid data field</source>
+        <translation>%1: &apos;%2&apos; ist kein gültiges Datenfeld</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="79"/>
+        <location filename="../lib/model/profile.cpp" line="160"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="94"/>
+        <source>not a valid JSON file: %1 at byte %2</source>
+        <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="97"/>
+        <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
+        <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="100"/>
+        <source>profile schema %1 is not supported (this version reads schema %2)</source>
+        <translation>Profilschema %1 wird nicht unterstützt (diese Version liest Schema %2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="106"/>
+        <source>unknown device family &apos;%1&apos;</source>
+        <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="114"/>
+        <source>the profile has no values</source>
+        <translation>das Profil enthält keine Werte</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="118"/>
+        <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
+        <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="128"/>
+        <source>the profile is refused, nothing will be written:
+%1</source>
+        <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
+%1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="136"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="145"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="151"/>
+        <source>%1 is %2 bytes; a profile is at most %3</source>
+        <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="176"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+</context>
+<context>
+    <name>ProfileApplier</name>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="29"/>
+        <source>refused, nothing was written: %1</source>
+        <translation>abgelehnt, nichts wurde geschrieben: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="33"/>
+        <source>%1 %2: %3 → %4</source>
+        <translation>%1 %2: %3 → %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="37"/>
+        <source>changed %1 %2: %3 → %4</source>
+        <translation>geändert %1 %2: %3 → %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="39"/>
+        <source>FAILED %1 %2: %3</source>
+        <translation>FEHLER %1 %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="41"/>
+        <source>would send %1</source>
+        <translation>würde %1 senden</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="43"/>
+        <source>skipped %1</source>
+        <translation>%1 übersprungen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <source>cancelled: the remaining values were not written</source>
+        <translation>abgebrochen: die übrigen Werte wurden nicht geschrieben</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <source>%n difference(s)</source>
+        <translation>
+            <numerusform>%n Unterschied</numerusform>
+            <numerusform>%n Unterschiede</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <source>%1 changed, %2 already right, %3 failed</source>
+        <translation>%1 geändert, %2 bereits richtig, %3 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="69"/>
+        <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
+        <translation>das Profil ist für %1, dieses Gerät ist %2 (erzwingen, um die gemeinsamen Einstellungen anzuwenden)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="91"/>
+        <source>monitor-only mode is on</source>
+        <translation>der Modus „Nur beobachten“ ist aktiv</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="108"/>
+        <source>reading the device</source>
+        <translation>Gerät wird gelesen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="180"/>
+        <source>writing %1</source>
+        <translation>%1 wird geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="182"/>
+        <source>unreadable value</source>
+        <translation>unlesbarer Wert</translation>
+    </message>
+</context>
+<context>
+    <name>Session</name>
+    <message>
+        <location filename="../lib/model/session.cpp" line="26"/>
+        <location filename="../lib/model/session.cpp" line="94"/>
+        <location filename="../lib/model/session.cpp" line="97"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="93"/>
+        <location filename="../lib/model/session.cpp" line="104"/>
+        <location filename="../lib/model/session.cpp" line="111"/>
+        <source>line</source>
+        <translation>Leitung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="127"/>
+        <source>looking for devices on %1</source>
+        <translation>Geräte an %1 werden gesucht</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="195"/>
+        <source>found %1, software %2</source>
+        <translation>%1 gefunden, Software %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="196"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="202"/>
+        <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
+        <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/session.cpp" line="210"/>
+        <source>%1, %n device(s)</source>
+        <translation>
+            <numerusform>%1, %n Gerät</numerusform>
+            <numerusform>%1, %n Geräte</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>StationModel</name>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="55"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="71"/>
+        <source>%1 does not support %2</source>
+        <translation>%1 unterstützt %2 nicht</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="78"/>
+        <source>%1 cannot save to memory</source>
+        <translation>%1 kann nicht im Speicher sichern</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="115"/>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="129"/>
+        <source>error cleared</source>
+        <translation>Fehler gelöscht</translation>
+    </message>
+</context>
+<context>
+    <name>SupportReport</name>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="91"/>
+        <source>TipScope support report, %1</source>
+        <translation>TipScope-Supportbericht, %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="92"/>
+        <source>TipScope %1, Qt %2, %3</source>
+        <translation>TipScope %1, Qt %2, %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="98"/>
+        <source>Line: %1</source>
+        <translation>Leitung: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="99"/>
+        <source>State: %1</source>
+        <translation>Zustand: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="100"/>
+        <source>Statistics: %1</source>
+        <translation>Statistik: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="104"/>
+        <source>Device %1: %2 (%3), software %4</source>
+        <translation>Gerät %1: %2 (%3), Software %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="118"/>
+        <source>Recent events:</source>
+        <translation>Letzte Ereignisse:</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="143"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../app/gui/main.cpp" line="28"/>
+        <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
+        <translation>JBC-Lötstationen und den SFR-Lotdrahtvorschub konfigurieren und überwachen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="34"/>
+        <source>Start on the built-in simulated DME station and SFR feeder.</source>
+        <translation>Mit der eingebauten simulierten DME-Station und dem SFR-Lotdrahtvorschub starten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="37"/>
+        <source>Connect to this serial port.</source>
+        <translation>Mit dieser seriellen Schnittstelle verbinden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="40"/>
+        <source>Connect to a TCP serial server.</source>
+        <translation>Mit einem seriellen TCP-Server verbinden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="44"/>
+        <source>Save a PNG of every page into DIR, then quit.</source>
+        <translation>Ein PNG jeder Seite in DIR speichern, dann beenden.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ChartPlotView</name>
+    <message>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="32"/>
+        <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
+        <translation>Zeitdiagramm. Mausrad oder Plus- und Minustaste zoomen, Ziehen oder Pfeiltasten verschieben, Umschalt+Ziehen wählt einen Bereich, Doppelklick oder Pos1 setzt zurück.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ChartWidget</name>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/chartwidget.cpp" line="299"/>
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… und %n weitere</numerusform>
+            <numerusform>… und %n weitere</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ChartsPage</name>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="28"/>
+        <location filename="../app/gui/charts/chartspage.h" line="53"/>
+        <source>Charts</source>
+        <translation>Diagramme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="44"/>
+        <source>Values under the cursor</source>
+        <translation>Werte unter dem Mauszeiger</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="49"/>
+        <source>Heat-up and recovery &amp;band ±</source>
+        <translation>Toleranzband für A&amp;ufheizen und Erholung ±</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="52"/>
+        <source>Tolerance band around the setpoint</source>
+        <translation>Toleranzband um den Sollwert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="63"/>
+        <source>Measurements of the visible window</source>
+        <translation>Messungen im sichtbaren Zeitfenster</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="176"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="179"/>
+        <source>%1 at %2</source>
+        <translation>%1, Adresse %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="182"/>
+        <source>%1 — feeder</source>
+        <translation>%1 — Lotdrahtvorschub</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
+        <source>%1 — all ports</source>
+        <translation>%1 — alle Ports</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
+        <source>%1 — %2 %3</source>
+        <translation>%1 — %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
+        <source>Temperature (%1)</source>
+        <translation>Temperatur (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
+        <source>Power (%)</source>
+        <translation>Leistung (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="289"/>
+        <source>No samples in this window</source>
+        <translation>Keine Messwerte in diesem Zeitfenster</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="44"/>
+        <source>device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="46"/>
+        <source>%1 · %2 · %3: %4</source>
+        <translation>%1 · %2 · %3: %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="112"/>
+        <source>Point at a chart to read every series at that instant. Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
+        <translation>Zeigen Sie auf ein Diagramm, um alle Reihen zu diesem Zeitpunkt abzulesen. Mausrad: Zoom · Ziehen: Verschieben · Umschalt+Ziehen: auf einen Bereich zoomen · Doppelklick: Zurücksetzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="52"/>
+        <source>&amp;Window</source>
+        <translation>&amp;Zeitfenster</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="55"/>
+        <source>Time window</source>
+        <translation>Zeitfenster</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <source>30 s</source>
+        <translation>30 s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <source>1 min</source>
+        <translation>1 min</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <source>5 min</source>
+        <translation>5 min</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <source>15 min</source>
+        <translation>15 min</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <source>1 h</source>
+        <translation>1 h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <source>4 h</source>
+        <translation>4 h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="60"/>
+        <source>12 h</source>
+        <translation>12 h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="60"/>
+        <source>24 h</source>
+        <translation>24 h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
+        <source>&amp;Follow</source>
+        <translation>&amp;Mitlaufen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="70"/>
+        <source>Keep the newest data at the right edge; uncheck to pause</source>
+        <translation>Die neuesten Daten am rechten Rand halten; zum Anhalten abwählen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <source>&amp;Reset view</source>
+        <translation>Ansicht zu&amp;rücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
+        <source>Pane layout</source>
+        <translation>Anordnung der Bereiche</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="78"/>
+        <source>Ports overlaid</source>
+        <translation>Ports überlagert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="79"/>
+        <source>One pane per port</source>
+        <translation>Ein Bereich pro Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
+        <source>&amp;Export</source>
+        <translation>E&amp;xportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
+        <source>Visible window as &amp;PNG…</source>
+        <translation>Sichtbares Zeitfenster als &amp;PNG…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
+        <source>Visible window as &amp;CSV…</source>
+        <translation>Sichtbares Zeitfenster als &amp;CSV…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="89"/>
+        <source>Re&amp;cord…</source>
+        <translation>&amp;Aufzeichnen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
+        <source>Write every new sample and event to a CSV file until unchecked</source>
+        <translation>Jeden neuen Messwert und jedes Ereignis in eine CSV-Datei schreiben, bis abgewählt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
+        <source>&amp;Open recording…</source>
+        <translation>Aufzeichnung ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
+        <source>Back to &amp;live</source>
+        <translation>Zurück zu &amp;Live</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="100"/>
+        <source>Data shown</source>
+        <translation>Angezeigte Daten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="103"/>
+        <source>Recording stopped</source>
+        <translation>Aufzeichnung beendet</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="104"/>
+        <source>Writing %1 failed: %2</source>
+        <translation>Schreiben von %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="73"/>
+        <source>P%1</source>
+        <translation>P%1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="89"/>
+        <source>High alarm</source>
+        <translation>Alarm hoch</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="92"/>
+        <source>Low alarm</source>
+        <translation>Alarm tief</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
+        <source>Replay: %1 (%Ln row(s))</source>
+        <translation>
+            <numerusform>Wiedergabe: %1 (%Ln Zeile)</numerusform>
+            <numerusform>Wiedergabe: %1 (%Ln Zeilen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="121"/>
+        <source>Live</source>
+        <translation>Live</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
+        <source> · recording to %1</source>
+        <translation> · Aufzeichnung in %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="132"/>
+        <source>there is no chart to export</source>
+        <translation>es gibt kein Diagramm zum Exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="134"/>
+        <source>could not write %1</source>
+        <translation>%1 konnte nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="153"/>
+        <source>Export chart as PNG</source>
+        <translation>Diagramm als PNG exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="153"/>
+        <source>Export chart data as CSV</source>
+        <translation>Diagrammdaten als CSV exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <source>PNG image (*.png)</source>
+        <translation>PNG-Bild (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="188"/>
+        <source>CSV file (*.csv)</source>
+        <translation>CSV-Datei (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
+        <source>Export failed: %1</source>
+        <translation>Export fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="187"/>
+        <source>Record to CSV file</source>
+        <translation>In CSV-Datei aufzeichnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="191"/>
+        <source>Record</source>
+        <translation>Aufzeichnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="191"/>
+        <source>Cannot record: %1</source>
+        <translation>Aufzeichnung nicht möglich: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="221"/>
+        <source>Open a chart recording</source>
+        <translation>Diagrammaufzeichnung öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="223"/>
+        <source>CSV file (*.csv);;All files (*)</source>
+        <translation>CSV-Datei (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="228"/>
+        <source>Replay</source>
+        <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="228"/>
+        <source>Cannot replay %1</source>
+        <translation>%1 kann nicht wiedergegeben werden</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ConnectionBar</name>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="23"/>
+        <location filename="../app/gui/connectionbar.cpp" line="30"/>
+        <source>Serial port</source>
+        <translation>Serielle Schnittstelle</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="24"/>
+        <location filename="../app/gui/connectionbar.cpp" line="34"/>
+        <source>TCP serial server</source>
+        <translation>Serieller TCP-Server</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="25"/>
+        <source>Demo (simulated DME + SFR)</source>
+        <translation>Demo (simulierte DME + SFR)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="26"/>
+        <source>Connection type</source>
+        <translation>Verbindungsart</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="31"/>
+        <source>Serial ports on this computer; you may also type a device path</source>
+        <translation>Serielle Schnittstellen dieses Computers; Sie können auch einen Gerätepfad eingeben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="33"/>
+        <source>host:port</source>
+        <translation>Host:Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="38"/>
+        <source>Baud rate</source>
+        <translation>Baudrate</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="40"/>
+        <source>no parity</source>
+        <translation>keine Parität</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="41"/>
+        <source>even</source>
+        <translation>gerade</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="42"/>
+        <source>odd</source>
+        <translation>ungerade</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="44"/>
+        <source>1 stop bit</source>
+        <translation>1 Stoppbit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="45"/>
+        <source>2 stop bits</source>
+        <translation>2 Stoppbits</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="47"/>
+        <source>Find devices</source>
+        <translation>Geräte suchen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="48"/>
+        <source>With addresses</source>
+        <translation>Mit Adressen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="49"/>
+        <source>Without addresses</source>
+        <translation>Ohne Adressen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="50"/>
+        <source>Addressing</source>
+        <translation>Adressierung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="53"/>
+        <source>robot </source>
+        <translation>Roboter </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="54"/>
+        <source>Robot address</source>
+        <translation>Roboteradresse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="57"/>
+        <source>device </source>
+        <translation>Gerät </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="58"/>
+        <source>Device address</source>
+        <translation>Geräteadresse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="59"/>
+        <location filename="../app/gui/connectionbar.cpp" line="167"/>
+        <source>&amp;Connect</source>
+        <translation>&amp;Verbinden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="60"/>
+        <source>&amp;Monitor only</source>
+        <translation>Nur &amp;beobachten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="61"/>
+        <source>Block every write: watch a production line without risk</source>
+        <translation>Sperrt jeden Schreibzugriff: eine Fertigungslinie ohne Risiko beobachten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="93"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="167"/>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Trennen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
+        <source>Connected</source>
+        <translation>Verbunden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="184"/>
+        <source>Connecting</source>
+        <translation>Verbindung wird aufgebaut</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="184"/>
+        <source>Detecting devices</source>
+        <translation>Geräte werden erkannt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="188"/>
+        <source>Disconnected, retrying</source>
+        <translation>Getrennt, neuer Versuch läuft</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="192"/>
+        <source>Cannot connect</source>
+        <translation>Verbindung nicht möglich</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="195"/>
+        <source>Disconnected</source>
+        <translation>Getrennt</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ConsolePage</name>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="74"/>
+        <source>%1: answered %2 after %L3 ms</source>
+        <translation>%1: Antwort %2 nach %L3 ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="78"/>
+        <source>%1: refused, %2</source>
+        <translation>%1: abgelehnt, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="80"/>
+        <source>%1: no answer (timeout)</source>
+        <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="82"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="94"/>
+        <source>Console tools</source>
+        <translation>Konsolenwerkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="131"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <source>Pause</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
+        <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="140"/>
+        <source>Relative time</source>
+        <translation>Relative Zeit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <source>Show seconds since the first row instead of the clock time</source>
+        <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="158"/>
+        <source>Show:</source>
+        <translation>Anzeigen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <source>TX</source>
+        <translation>TX</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <source>Show bytes sent</source>
+        <translation>Gesendete Bytes anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <source>RX chunks</source>
+        <translation>RX-Blöcke</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
+        <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <source>Frames</source>
+        <translation>Telegramme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <source>Show received frames, decoded</source>
+        <translation>Empfangene Telegramme dekodiert anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <source>Errors</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <source>Show decode errors (BCC, format, garbage)</source>
+        <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <source>Notes</source>
+        <translation>Hinweise</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <source>Show line notes (timeouts, line state)</source>
+        <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
+        <source>De&amp;vice:</source>
+        <translation>&amp;Gerät:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <source>Device address filter</source>
+        <translation>Filter für Geräteadresse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <source>Only frames from or to this address; type any address 00-99</source>
+        <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="185"/>
+        <source>Co&amp;mmand:</source>
+        <translation>Be&amp;fehl:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
+        <source>Command filter</source>
+        <translation>Befehlsfilter</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="189"/>
+        <source>e.g. ST1</source>
+        <translation>z. B. ST1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="198"/>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="200"/>
+        <source>Remove every row, held ones included</source>
+        <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <source>Save…</source>
+        <translation>Speichern…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <source>Save every row (not only the shown ones) to a text file</source>
+        <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="216"/>
+        <source>Traffic on the line</source>
+        <translation>Verkehr auf der Leitung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="243"/>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="249"/>
+        <source>bad</source>
+        <translation>falsch</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="263"/>
+        <source>Copy rows</source>
+        <translation>Zeilen kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="287"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="300"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="318"/>
+        <source>All</source>
+        <translation>Alle</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="291"/>
+        <source>%1 (no address)</source>
+        <translation>%1 (ohne Adresse)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="348"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <source>Save console</source>
+        <translation>Konsole speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <source>Text files (*.txt);;All files (*)</source>
+        <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <source>Could not save %1:
+%2</source>
+        <translation>%1 konnte nicht gespeichert werden:
+%2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
+        <source>%1 of %2 rows shown</source>
+        <translation>%1 von %2 Zeilen angezeigt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="374"/>
+        <source>paused: new traffic is held</source>
+        <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n Rohbyte</numerusform>
+            <numerusform>%n Rohbytes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
+        <source>%1: not sent, not connected</source>
+        <translation>%1: nicht gesendet, nicht verbunden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <source>%1: not sent, monitor-only mode is on</source>
+        <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="400"/>
+        <source>%1: sent, waiting for the answer…</source>
+        <translation>%1: gesendet, warte auf Antwort…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.h" line="66"/>
+        <source>Console</source>
+        <translation>Konsole</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::CountersPage</name>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="37"/>
+        <source>Plugged hours</source>
+        <translation>Einschaltstunden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
+        <source>Reset partial plugged hours…</source>
+        <translation>Teilzähler Einschaltstunden zurücksetzen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
+        <source>Feeding hours</source>
+        <translation>Vorschubstunden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
+        <source>Reset partial feeding hours…</source>
+        <translation>Teilzähler Vorschubstunden zurücksetzen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
+        <source>Fed length</source>
+        <translation>Vorgeschobene Länge</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
+        <source>Reset partial fed length…</source>
+        <translation>Teilzähler vorgeschobene Länge zurücksetzen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
+        <source>When the counters were read</source>
+        <translation>Zeitpunkt der Zählerabfrage</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <source>Result of the last action</source>
+        <translation>Ergebnis der letzten Aktion</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <source>Re&amp;fresh</source>
+        <translation>A&amp;ktualisieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="87"/>
+        <source>Read every counter of every device now (they are otherwise read once a minute)</source>
+        <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
+        <source>Refresh counters</source>
+        <translation>Zähler aktualisieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <source>&amp;Export CSV…</source>
+        <translation>CSV e&amp;xportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
+        <source>Save every counter of every device as a CSV file</source>
+        <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <source>Export counters as CSV</source>
+        <translation>Zähler als CSV exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="103"/>
+        <source>No device is connected. Connect to a line to read its counters.</source>
+        <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="155"/>
+        <source>Reading the counters…</source>
+        <translation>Zähler werden gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="158"/>
+        <source>Last reading at %1</source>
+        <translation>Letzte Abfrage um %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
+        <source>Waiting for the first reading…</source>
+        <translation>Warte auf die erste Abfrage…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="209"/>
+        <source>Station %1</source>
+        <translation>Station %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="211"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="239"/>
+        <source>Counters of %1</source>
+        <translation>Zähler von %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
+        <source>Solder feeder %1</source>
+        <translation>Lotdrahtvorschub %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
+        <source>Total</source>
+        <translation>Gesamt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
+        <source>Partial</source>
+        <translation>Teilzähler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="281"/>
+        <source>%1 (R-%2)</source>
+        <translation>%1 (R-%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="283"/>
+        <source>Last read failed: %1</source>
+        <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="286"/>
+        <source>Read at %1</source>
+        <translation>Gelesen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
+        <source>Not read yet</source>
+        <translation>Noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="313"/>
+        <source>%1 Monitor-only mode is on: nothing is reset.</source>
+        <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="316"/>
+        <source>Reset partial counter</source>
+        <translation>Teilzähler zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="317"/>
+        <source>Reset “%1” on %2?</source>
+        <translation>„%1“ an %2 zurücksetzen?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="319"/>
+        <source>It now reads %1.</source>
+        <translation>Er steht jetzt auf %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="321"/>
+        <source>The total counter is not affected.</source>
+        <translation>Der Gesamtzähler bleibt unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
+        <source>Reset counter</source>
+        <translation>Zähler zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
+        <source>%1 Nothing was reset.</source>
+        <translation>%1 Es wurde nichts zurückgesetzt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
+        <source>%1 Not reset: %2</source>
+        <translation>%1 Nicht zurückgesetzt: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <source>%1 Resetting %2…</source>
+        <translation>%1 %2 wird zurückgesetzt…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <source>%1 %2 reset.</source>
+        <translation>%1 %2 zurückgesetzt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
+        <source>%1 %2 was not reset: %3</source>
+        <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="356"/>
+        <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="383"/>
+        <source>Export counters</source>
+        <translation>Zähler exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="376"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="381"/>
+        <source>%1 Counters saved to %2</source>
+        <translation>%1 Zähler in %2 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="384"/>
+        <source>The counters could not be saved: %1</source>
+        <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.h" line="37"/>
+        <source>Counters</source>
+        <translation>Zähler</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::DeviceTree</name>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="18"/>
+        <source>Devices</source>
+        <translation>Geräte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="72"/>
+        <source>No line</source>
+        <translation>Keine Leitung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="78"/>
+        <source>feeder</source>
+        <translation>Lotdrahtvorschub</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="78"/>
+        <source>station</source>
+        <translation>Station</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="83"/>
+        <source>Port %1: %2</source>
+        <translation>Port %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::DispensingPage</name>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="45"/>
+        <source>Only the ALE has a built-in wire feed.</source>
+        <translation>Nur die ALE hat einen eingebauten Drahtvorschub.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="55"/>
+        <source>&amp;Start dispensing</source>
+        <translation>Dosieren &amp;starten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="56"/>
+        <source>S&amp;top dispensing</source>
+        <translation>Dosieren sto&amp;ppen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
+        <source>Ignore fuse error…</source>
+        <translation>Sicherungsfehler ignorieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="63"/>
+        <source>
+
+Continue?</source>
+        <translation>
+
+Fortfahren?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="75"/>
+        <source>Wire feed settings</source>
+        <translation>Einstellungen des Drahtvorschubs</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="85"/>
+        <source>&amp;Apply</source>
+        <translation>&amp;Anwenden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="110"/>
+        <source>%1 · dispensed %2 in %3 cycles · %4</source>
+        <translation>%1 · %2 in %3 Zyklen dosiert · %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="114"/>
+        <source>fuse unknown</source>
+        <translation>Sicherung unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="115"/>
+        <source>fuse present</source>
+        <translation>Sicherung vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
+        <source>fuse missing or blown</source>
+        <translation>Sicherung fehlt oder ist durchgebrannt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="122"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="130"/>
+        <source>no ALE</source>
+        <translation>keine ALE</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.h" line="21"/>
+        <source>Dispensing</source>
+        <translation>Dosierung</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ErrorsPage</name>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="71"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="573"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="588"/>
+        <source>Not read yet</source>
+        <translation>Noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="73"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="75"/>
+        <source>Info</source>
+        <translation>Info</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="77"/>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="79"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
+        <source>Station error</source>
+        <translation>Stationsfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="120"/>
+        <source>Port error</source>
+        <translation>Portfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="122"/>
+        <source>Feeder error</source>
+        <translation>Vorschubfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="124"/>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="126"/>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="128"/>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="382"/>
+        <source>Communication</source>
+        <translation>Kommunikation</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="132"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="383"/>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="254"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Severity</source>
+        <translation>Schweregrad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="258"/>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="260"/>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="262"/>
+        <source>What happened</source>
+        <translation>Ereignis</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="336"/>
+        <source>Current state</source>
+        <translation>Aktueller Zustand</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="339"/>
+        <source>Current errors and alarms</source>
+        <translation>Aktuelle Fehler und Alarme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Where</source>
+        <translation>Ort</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Temperature alarm</source>
+        <translation>Temperaturalarm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="352"/>
+        <source>&amp;Reset feeder error</source>
+        <translation>Vorschubfehler &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="354"/>
+        <source>Reset feeder error</source>
+        <translation>Vorschubfehler zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="356"/>
+        <source>Result of the last action</source>
+        <translation>Ergebnis der letzten Aktion</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="369"/>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="372"/>
+        <source>Show events of kind</source>
+        <translation>Ereignisse dieser Art anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
+        <source>All kinds</source>
+        <translation>Alle Arten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <source>Errors and alarms</source>
+        <translation>Fehler und Alarme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="376"/>
+        <source>Station errors</source>
+        <translation>Stationsfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <source>Port errors</source>
+        <translation>Portfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
+        <source>Feeder errors</source>
+        <translation>Vorschubfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="379"/>
+        <source>Alarms</source>
+        <translation>Alarme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
+        <source>Status changes</source>
+        <translation>Statuswechsel</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="381"/>
+        <source>Writes</source>
+        <translation>Schreibzugriffe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="388"/>
+        <source>Show events of severity</source>
+        <translation>Ereignisse dieses Schweregrads anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="389"/>
+        <source>Any severity</source>
+        <translation>Jeder Schweregrad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="390"/>
+        <source>Warnings and errors</source>
+        <translation>Warnungen und Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="391"/>
+        <source>Errors only</source>
+        <translation>Nur Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="394"/>
+        <source>Show events containing</source>
+        <translation>Ereignisse mit diesem Text anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="395"/>
+        <source>Text in any column</source>
+        <translation>Text in beliebiger Spalte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="397"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Art:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="399"/>
+        <source>Se&amp;verity:</source>
+        <translation>&amp;Schweregrad:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
+        <source>&amp;Search:</source>
+        <translation>S&amp;uchen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="418"/>
+        <source>Event history</source>
+        <translation>Ereignisverlauf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="442"/>
+        <source>Copy</source>
+        <translation>Kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="448"/>
+        <source>Events shown</source>
+        <translation>Angezeigte Ereignisse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="449"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="451"/>
+        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
+        <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="452"/>
+        <source>Copy selected events</source>
+        <translation>Ausgewählte Ereignisse kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="453"/>
+        <source>E&amp;xport…</source>
+        <translation>E&amp;xportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="455"/>
+        <source>Save the events shown as a tab-separated text file</source>
+        <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="456"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="721"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="728"/>
+        <source>Export events</source>
+        <translation>Ereignisse exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="458"/>
+        <source>Result of the last export</source>
+        <translation>Ergebnis des letzten Exports</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="507"/>
+        <source>No device is connected.</source>
+        <translation>Kein Gerät verbunden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="557"/>
+        <source>%1, port %2</source>
+        <translation>%1, Port %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="575"/>
+        <source>Error code %1: %2</source>
+        <translation>Fehlercode %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="582"/>
+        <source>High temperature</source>
+        <translation>Übertemperatur</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="584"/>
+        <source>Low temperature</source>
+        <translation>Untertemperatur</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="586"/>
+        <source>None</source>
+        <translation>Keiner</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="600"/>
+        <source>This device has no temperature alarm</source>
+        <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="609"/>
+        <source>Not reset: %1</source>
+        <translation>Nicht zurückgesetzt: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="612"/>
+        <source>Resetting the feeder error…</source>
+        <translation>Vorschubfehler wird zurückgesetzt…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="619"/>
+        <source>Feeder error reset.</source>
+        <translation>Vorschubfehler zurückgesetzt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="620"/>
+        <source>The feeder error was not reset: %1</source>
+        <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="633"/>
+        <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="636"/>
+        <source>No feeder is connected</source>
+        <translation>Kein Lotdrahtvorschub verbunden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="639"/>
+        <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
+        <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="670"/>
+        <source>%1 of %2 events shown</source>
+        <translation>%1 von %2 Ereignissen angezeigt</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/errorspage.cpp" line="672"/>
+        <source>%n older events were dropped</source>
+        <translation>
+            <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
+            <numerusform>%n ältere Ereignisse wurden verworfen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="721"/>
+        <source>Text files (*.txt *.tsv)</source>
+        <translation>Textdateien (*.txt *.tsv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="726"/>
+        <source>Saved to %1</source>
+        <translation>Gespeichert in %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="729"/>
+        <source>The events could not be saved: %1</source>
+        <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.h" line="40"/>
+        <source>Errors</source>
+        <translation>Fehler</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FeederPage</name>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="45"/>
+        <source>No feeder on this line.</source>
+        <translation>Kein Lotdrahtvorschub an dieser Leitung.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
+        <source>Feed &amp;forward</source>
+        <translation>Draht vor&amp;wärts</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
+        <source>W-SFD 00001</source>
+        <translation>W-SFD 00001</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
+        <source>Feed &amp;backward</source>
+        <translation>Draht &amp;rückwärts</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
+        <source>W-SFD 00000</source>
+        <translation>W-SFD 00000</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Stopp</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
+        <source>W-SSD</source>
+        <translation>W-SSD</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
+        <source>Start &amp;loading</source>
+        <translation>Ein&amp;fädeln starten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
+        <source>W-SLD 00001: feed ignoring errors, for a new spool</source>
+        <translation>W-SLD 00001: Vorschub ohne Fehlerprüfung, für eine neue Spule</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
+        <source>End loading</source>
+        <translation>Einfädeln beenden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
+        <source>W-SLD 00000</source>
+        <translation>W-SLD 00000</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="80"/>
+        <source>&amp;Reset error</source>
+        <translation>Fehler &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="86"/>
+        <source>Feeding settings</source>
+        <translation>Vorschubeinstellungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="94"/>
+        <source>&amp;Apply</source>
+        <translation>&amp;Anwenden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="95"/>
+        <source>Save to feeder memory</source>
+        <translation>Im Speicher des Lotdrahtvorschubs sichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="96"/>
+        <source>W-NVS: mode, speed and length survive a restart</source>
+        <translation>W-NVS: Modus, Geschwindigkeit und Länge bleiben nach einem Neustart erhalten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="108"/>
+        <source>Counters</source>
+        <translation>Zähler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="116"/>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <source>Feeding</source>
+        <translation>Vorschub läuft</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <source>Idle</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="142"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · vorgeschoben %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
+        <source>⚠ %1</source>
+        <translation>⚠ %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
+        <source>No feeder error</source>
+        <translation>Kein Vorschubfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="154"/>
+        <source>Monitor-only mode is on: nothing is written</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="167"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="179"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="185"/>
+        <source>no feeder</source>
+        <translation>kein Lotdrahtvorschub</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="194"/>
+        <source>no such counter</source>
+        <translation>diesen Zähler gibt es nicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="197"/>
+        <source>
+
+Reset it?</source>
+        <translation>
+
+Zurücksetzen?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="200"/>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.h" line="23"/>
+        <source>Feeder</source>
+        <translation>Lotdrahtvorschub</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FrameBuilder</name>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="139"/>
+        <source>Send a frame</source>
+        <translation>Telegramm senden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="162"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="165"/>
+        <source>Header</source>
+        <translation>Kopf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="166"/>
+        <source>R (read)</source>
+        <translation>R (lesen)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="167"/>
+        <source>W (write)</source>
+        <translation>W (schreiben)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="169"/>
+        <source>Command</source>
+        <translation>Befehl</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="179"/>
+        <source>Data field</source>
+        <translation>Datenfeld</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="183"/>
+        <source>&amp;Send frame</source>
+        <translation>Telegramm &amp;senden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="184"/>
+        <source>Send frame</source>
+        <translation>Telegramm senden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="186"/>
+        <source>Frame to be sent</source>
+        <translation>Zu sendendes Telegramm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="190"/>
+        <source>Catalog check</source>
+        <translation>Katalogprüfung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="193"/>
+        <source>Raw bytes in hex</source>
+        <translation>Rohbytes hexadezimal</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="197"/>
+        <source>Send ra&amp;w hex</source>
+        <translation>Roh-He&amp;x senden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="198"/>
+        <source>Send raw hex</source>
+        <translation>Roh-Hex senden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="200"/>
+        <source>Raw bytes check</source>
+        <translation>Prüfung der Rohbytes</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="201"/>
+        <source>Nothing sent yet.</source>
+        <translation>Noch nichts gesendet.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="202"/>
+        <source>Outcome of the last send</source>
+        <translation>Ergebnis des letzten Sendens</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
+        <source>&amp;Device</source>
+        <translation>Ger&amp;ät</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="213"/>
+        <source>&amp;Header</source>
+        <translation>&amp;Kopf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <source>C&amp;ommand</source>
+        <translation>Befeh&amp;l</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="217"/>
+        <source>D&amp;ata</source>
+        <translation>Date&amp;n</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="220"/>
+        <source>Frame</source>
+        <translation>Telegramm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="223"/>
+        <source>&amp;Raw hex</source>
+        <translation>&amp;Roh-Hex</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
+        <source>Last send</source>
+        <translation>Letztes Senden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="260"/>
+        <source>Monitor-only mode is on: raw bytes are not sent, since they may be a write. Reads can still be sent with Send frame.</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: Rohbytes werden nicht gesendet, da sie ein Schreibbefehl sein könnten. Lesebefehle können weiterhin mit „Telegramm senden“ gesendet werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
+        <source>Send these bytes exactly as typed; the answer appears in the table.</source>
+        <translation>Diese Bytes genau wie eingegeben senden; die Antwort erscheint in der Tabelle.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="287"/>
+        <source>No device is known on this line: connect first, or send raw hex.</source>
+        <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="350"/>
+        <source>(nothing to send)</source>
+        <translation>(nichts zu senden)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="354"/>
+        <source>none for reads</source>
+        <translation>keins bei Lesebefehlen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="354"/>
+        <source>e.g. 00350</source>
+        <translation>z. B. 00350</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="358"/>
+        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: W-Telegramme werden nicht gesendet, Lesebefehle schon.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="370"/>
+        <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
+        <translation>Dieses Telegramm einmal wie angezeigt senden (ohne Wiederholungen; Katalogwarnungen halten es nicht auf). Die Antwort erscheint in der Tabelle.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/framebuilder.cpp" line="387"/>
+        <source>%n byte(s), a valid frame: %1</source>
+        <translation>
+            <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
+            <numerusform>%n Bytes, ein gültiges Telegramm: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/framebuilder.cpp" line="390"/>
+        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
+        <translation>
+            <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
+            <numerusform>%n Bytes, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="408"/>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::LinkStatusLabel</name>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
+        <source>Line statistics</source>
+        <translation>Leitungsstatistik</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="19"/>
+        <source>no line</source>
+        <translation>keine Leitung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="25"/>
+        <source>%L1 tx/s · %L2 ms · %3 timeouts · %4 BCC errors · %5 NAKs</source>
+        <translation>%L1 tx/s · %L2 ms · %3 Zeitüberschreitungen · %4 BCC-Fehler · %5 NAKs</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="33"/>
+        <source>NAK %1 × %2: %3</source>
+        <translation>NAK %1 × %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="37"/>
+        <source>Reconnects: %1</source>
+        <translation>Neuverbindungen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::MainWindow</name>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="36"/>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="88"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="89"/>
+        <source>Write &amp;support report…</source>
+        <translation>&amp;Supportbericht schreiben…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="91"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="92"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Extras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="93"/>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Optionen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="98"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="99"/>
+        <source>&amp;About TipScope</source>
+        <translation>&amp;Über TipScope</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="101"/>
+        <source>About TipScope</source>
+        <translation>Über TipScope</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="102"/>
+        <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="177"/>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="182"/>
+        <source>TipScope — %1</source>
+        <translation>TipScope — %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="187"/>
+        <source>Folder for the support report</source>
+        <translation>Ordner für den Supportbericht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="194"/>
+        <location filename="../app/gui/mainwindow.cpp" line="197"/>
+        <source>Support report</source>
+        <translation>Supportbericht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="198"/>
+        <source>Written:
+%1
+
+Attach both files to the support ticket.</source>
+        <translation>Geschrieben:
+%1
+
+Hängen Sie beide Dateien an das Support-Ticket an.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::OverviewPage</name>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="77"/>
+        <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="84"/>
+        <source>family %1</source>
+        <translation>Familie %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
+        <source>software %1</source>
+        <translation>Software %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="88"/>
+        <source>transformer %1</source>
+        <translation>Transformator %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="90"/>
+        <source>fuse present</source>
+        <translation>Sicherung vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
+        <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="95"/>
+        <source>⚠ Station error: %1</source>
+        <translation>⚠ Stationsfehler: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <source>feeding</source>
+        <translation>Vorschub läuft</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <source>idle</source>
+        <translation>bereit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="108"/>
+        <source>fed %1</source>
+        <translation>vorgeschoben %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="110"/>
+        <source>speed %1</source>
+        <translation>Geschwindigkeit %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.h" line="21"/>
+        <source>Overview</source>
+        <translation>Übersicht</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ParameterEditor</name>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="51"/>
+        <source>Allowed: %1</source>
+        <translation>Zulässig: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="52"/>
+        <source>Command: %1</source>
+        <translation>Befehl: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="74"/>
+        <source>%1 disabled</source>
+        <translation>%1 deaktiviert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="122"/>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="125"/>
+        <source>reading…</source>
+        <translation>wird gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <source>not saved</source>
+        <translation>nicht gesichert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <source>✓ in sync</source>
+        <translation>✓ synchron</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="132"/>
+        <source>edited</source>
+        <translation>geändert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="136"/>
+        <source>writing…</source>
+        <translation>wird geschrieben…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="139"/>
+        <source>✗ failed</source>
+        <translation>✗ fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="144"/>
+        <source>✗ refused</source>
+        <translation>✗ abgelehnt</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::PortCard</name>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="21"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="32"/>
+        <source>Tip temperature, port %1</source>
+        <translation>Spitzentemperatur, Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="39"/>
+        <source>Power, port %1</source>
+        <translation>Leistung, Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
+        <source>Work</source>
+        <translation>Arbeiten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="46"/>
+        <source>Stand</source>
+        <translation>Ablage</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
+        <source>Cool</source>
+        <translation>Abkühlen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <source>W-PS%1 00000: heat to the selected temperature</source>
+        <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
+        <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <source>W-PS%1 00010: cooling (extractor stand-by)</source>
+        <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="55"/>
+        <source>New selected temperature, port %1</source>
+        <translation>Neue eingestellte Temperatur, Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="56"/>
+        <source>Set</source>
+        <translation>Setzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="92"/>
+        <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="100"/>
+        <source>Monitor-only mode is on: nothing is written</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="125"/>
+        <source>Port %1 — %2</source>
+        <translation>Port %1 — %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="128"/>
+        <source>— °</source>
+        <translation>— °</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="129"/>
+        <source>set %1</source>
+        <translation>Soll %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="131"/>
+        <source>power %1</source>
+        <translation>Leistung %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
+        <source>status unknown</source>
+        <translation>Status unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
+        <source>transistor %1</source>
+        <translation>Transistor %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
+        <source>%1 until the next mode</source>
+        <translation>%1 bis zum nächsten Modus</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::PreferencesDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="24"/>
+        <source>Preferences</source>
+        <translation>Optionen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="26"/>
+        <source>Celsius (°C)</source>
+        <translation>Celsius (°C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="27"/>
+        <source>Fahrenheit (°F)</source>
+        <translation>Fahrenheit (°F)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="29"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="31"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
+        <source>Follow the system</source>
+        <translation>Systemsprache</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
+        <source>Temperature unit:</source>
+        <translation>Temperatureinheit:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="42"/>
+        <source>Live values (visible ports) every:</source>
+        <translation>Live-Werte (sichtbare Ports) alle:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43"/>
+        <source>Errors, alarms and status every:</source>
+        <translation>Fehler, Alarme und Status alle:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44"/>
+        <source>Counters every:</source>
+        <translation>Zähler alle:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="45"/>
+        <source>Device turnaround (added to the wire time):</source>
+        <translation>Antwortzeit des Geräts (zur Übertragungszeit addiert):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="46"/>
+        <source>Retries after a lost or corrupted answer:</source>
+        <translation>Wiederholungen nach verlorener oder beschädigter Antwort:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
+        <source>Language (on the next start):</source>
+        <translation>Sprache (beim nächsten Start):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
+        <translation>Auf der Leitung wird immer °C übertragen; die Einheit ändert nur, was Sie sehen und eingeben. Die Farben folgen dem Desktop-Design.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ProfileDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="23"/>
+        <source>Profile for %1</source>
+        <translation>Profil für %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <source>Setting</source>
+        <translation>Einstellung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <source>Device now</source>
+        <translation>Gerät jetzt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="34"/>
+        <source>The dry run&apos;s frames and the apply report appear here.</source>
+        <translation>Hier erscheinen die Telegramme des Probelaufs und der Bericht der Übernahme.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38"/>
+        <source>Apply anyway: the profile is for a %1, this is a %2 (only the settings both have are written)</source>
+        <translation>Trotzdem anwenden: das Profil ist für %1, dieses Gerät ist %2 (nur die Einstellungen, die beide haben, werden geschrieben)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="44"/>
+        <source>Compare again</source>
+        <translation>Erneut vergleichen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="45"/>
+        <source>Dry run</source>
+        <translation>Probelauf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="46"/>
+        <source>Apply to device</source>
+        <translation>Auf Gerät anwenden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="47"/>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="66"/>
+        <source>Monitor-only mode is on: nothing is written</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="109"/>
+        <source>&lt;b&gt;Refused:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Abgelehnt:&lt;/b&gt; %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="111"/>
+        <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
+        <translation>
+            <numerusform>Profil von %1 (%2, Software %3), erstellt: %4. %n Einstellung weicht vom Gerät ab.</numerusform>
+            <numerusform>Profil von %1 (%2, Software %3), erstellt: %4. %n Einstellungen weichen vom Gerät ab.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="117"/>
+        <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
+        <translation>
+            <numerusform>Probelauf: %n Telegramm würde gesendet; nichts wurde geschrieben.</numerusform>
+            <numerusform>Probelauf: %n Telegramme würden gesendet; nichts wurde geschrieben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="121"/>
+        <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches.</source>
+        <translation>&lt;b&gt;Angewendet.&lt;/b&gt; Jeder geschriebene Wert wurde zurückgelesen und stimmt überein.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="122"/>
+        <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; See the report below.</source>
+        <translation>&lt;b&gt;Nicht alles wurde angewendet.&lt;/b&gt; Siehe Bericht unten.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::SettingsPage</name>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="30"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
+        <source>Re&amp;fresh</source>
+        <translation>A&amp;ktualisieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <source>&amp;Apply</source>
+        <translation>&amp;Anwenden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
+        <source>Re&amp;vert</source>
+        <translation>&amp;Zurücknehmen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <source>Save to station &amp;memory</source>
+        <translation>Im Stations&amp;speicher sichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
+        <translation>Die eingestellte Temperatur ist flüchtig: W-NVS speichert sie, damit sie einen Neustart übersteht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
+        <source>Station actions</source>
+        <translation>Stationsaktionen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
+        <source>Profiles</source>
+        <translation>Profile</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
+        <source>Save device settings to a profile…</source>
+        <translation>Geräteeinstellungen in einem Profil speichern…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
+        <source>Open a profile (compare, dry run, apply)…</source>
+        <translation>Profil öffnen (vergleichen, Probelauf, anwenden)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="49"/>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="126"/>
+        <source>Connect and select a device to see its settings.</source>
+        <translation>Verbinden Sie sich und wählen Sie ein Gerät, um seine Einstellungen zu sehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="129"/>
+        <source>Port %1 (%2)</source>
+        <translation>Port %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
+        <source>Station</source>
+        <translation>Station</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="139"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="140"/>
+        <source>Alarms, port %1</source>
+        <translation>Alarme, Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
+        <source>Tool %1, port %2</source>
+        <translation>Werkzeug %1, Port %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
+        <source> (connected)</source>
+        <translation> (angeschlossen)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
+        <source>Dispensing (ALE wire feed)</source>
+        <translation>Dosierung (Drahtvorschub der ALE)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
+        <source>Feeding</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <source>&amp;Apply (%1)</source>
+        <translation>&amp;Anwenden (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="192"/>
+        <source>Monitor-only mode is on: nothing is written</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="217"/>
+        <source>Save to station memory</source>
+        <translation>Im Stationsspeicher sichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="228"/>
+        <source>New address (1-99), or 0 for frames without addresses:</source>
+        <translation>Neue Adresse (1-99) oder 0 für Telegramme ohne Adressen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="235"/>
+        <source>%1
+
+%2
+
+Do you want to continue?</source>
+        <translation>%1
+
+%2
+
+Möchten Sie fortfahren?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="250"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
+        <source>Save profile</source>
+        <translation>Profil speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="251"/>
+        <source>Some settings have not been read yet (%1). Refresh and try again.</source>
+        <translation>Einige Einstellungen wurden noch nicht gelesen (%1). Aktualisieren Sie und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="269"/>
+        <source>TipScope profiles (*.json)</source>
+        <translation>TipScope-Profile (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
+        <source>Open profile</source>
+        <translation>Profil öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.h" line="24"/>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Line</name>
+    <message>
+        <location filename="../lib/link/line.cpp" line="43"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="45"/>
+        <source>connecting to %1</source>
+        <translation>Verbindung mit %1 wird aufgebaut</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="47"/>
+        <source>connected: %1</source>
+        <translation>verbunden: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="49"/>
+        <source>disconnected, retrying every %1 s: %2</source>
+        <translation>getrennt, neuer Versuch alle %1 s: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="53"/>
+        <source>cannot connect: %1</source>
+        <translation>Verbindung nicht möglich: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="73"/>
+        <source>disconnected by the user</source>
+        <translation>vom Benutzer getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="115"/>
+        <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
+        <translation>keine Antwort auf %1 Anfragen in Folge (Kabel abgezogen, Gerät aus oder falsche Adressierung?)</translation>
+    </message>
+</context>
+</TS>

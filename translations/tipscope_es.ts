@@ -1,0 +1,3829 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="es_ES" sourcelanguage="en">
+<context>
+    <name>Action</name>
+    <message>
+        <location filename="../lib/model/action.cpp" line="28"/>
+        <source>monitor-only mode is on: nothing is written</source>
+        <translation>el modo solo supervisión está activado: no se escribe nada</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/action.cpp" line="30"/>
+        <source>%1 needs an explicit confirmation: %2</source>
+        <translation>%1 necesita una confirmación explícita: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/action.cpp" line="32"/>
+        <source>%1 is already running</source>
+        <translation>%1 ya está en curso</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/action.cpp" line="44"/>
+        <source>%1 done</source>
+        <translation>%1 completado</translation>
+    </message>
+</context>
+<context>
+    <name>AppSettings</name>
+    <message>
+        <location filename="../app/gui/appsettings.cpp" line="106"/>
+        <source>choose a serial port</source>
+        <translation>elija un puerto serie</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/appsettings.cpp" line="116"/>
+        <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
+        <translation>&apos;%1&apos; no tiene la forma HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
+    </message>
+</context>
+<context>
+    <name>ChartCsv</name>
+    <message>
+        <location filename="../app/gui/charts/chartcsv.cpp" line="192"/>
+        <source>the file could not be written</source>
+        <translation>no se pudo escribir el archivo</translation>
+    </message>
+</context>
+<context>
+    <name>ChartCsvReader</name>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="62"/>
+        <source>line %1: %2</source>
+        <translation>línea %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="91"/>
+        <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
+        <translation>la línea supera los %1 bytes (¿es un CSV de gráficos?)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="98"/>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="273"/>
+        <source>the file holds binary data, not CSV text</source>
+        <translation>el archivo contiene datos binarios, no texto CSV</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="102"/>
+        <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
+        <translation>el texto no está en UTF-8 (guarde el archivo como &quot;CSV UTF-8&quot;)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="123"/>
+        <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
+        <translation>la fila de cabecera debe empezar por &quot;time&quot; (¿es un CSV de gráficos escrito por TipScope?)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="126"/>
+        <source>%1 columns; replay reads at most %2</source>
+        <translation>%1 columnas; la reproducción lee como máximo %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="137"/>
+        <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
+        <translation>la columna %1 &quot;%2&quot; no es &quot;port&lt;n&gt; &lt;serie&gt; [unidad]&quot; ni &quot;feeder &lt;serie&gt; [unidad]&quot;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="148"/>
+        <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
+        <translation>columna %1 &quot;%2&quot;: la unidad debería ser &quot;%3&quot;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="150"/>
+        <source>none</source>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <source>Feeder</source>
+        <translation>Alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="174"/>
+        <source>column %1 &quot;%2&quot; appears twice</source>
+        <translation>la columna %1 &quot;%2&quot; aparece dos veces</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="179"/>
+        <source>the header names no series columns</source>
+        <translation>la cabecera no nombra ninguna columna de serie</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="200"/>
+        <source>column %1: &quot;%2&quot; is not a number</source>
+        <translation>columna %1: &quot;%2&quot; no es un número</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="205"/>
+        <source>%1 has values in some of its columns but not all</source>
+        <translation>%1 tiene valores en algunas de sus columnas, pero no en todas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="212"/>
+        <source>%1 cells, but the header has %2 columns</source>
+        <translation>%1 celdas, pero la cabecera tiene %2 columnas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="217"/>
+        <source>&quot;%1&quot; is not an ISO 8601 time</source>
+        <translation>&quot;%1&quot; no es una hora ISO 8601</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="220"/>
+        <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
+        <translation>la hora %1 es anterior a la de la fila precedente (las filas deben estar en orden cronológico)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="231"/>
+        <source>%1 has more than %2 samples, more than replay holds; split the file</source>
+        <translation>%1 tiene más de %2 muestras, más de las que admite la reproducción; divida el archivo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="244"/>
+        <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
+        <translation>el evento &quot;%1&quot; no tiene la forma &quot;&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;&quot;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="290"/>
+        <source>a quoted cell is not closed</source>
+        <translation>una celda entre comillas no está cerrada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="300"/>
+        <source>the file has a header but no rows</source>
+        <translation>el archivo tiene cabecera pero ninguna fila</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="301"/>
+        <source>the file is empty or holds only comments</source>
+        <translation>el archivo está vacío o solo contiene comentarios</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartcsvreader.cpp" line="319"/>
+        <source>the file is %1 MB; replay reads files up to %2 MB</source>
+        <translation>el archivo ocupa %1 MB; la reproducción lee archivos de hasta %2 MB</translation>
+    </message>
+</context>
+<context>
+    <name>ChartRecorder</name>
+    <message>
+        <location filename="../app/gui/charts/chartrecorder.cpp" line="31"/>
+        <source>nothing to record: no station or feeder is connected</source>
+        <translation>nada que grabar: no hay ninguna estación ni alimentador conectados</translation>
+    </message>
+</context>
+<context>
+    <name>ChartSeries</name>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="76"/>
+        <source>Tip</source>
+        <translation>Punta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
+        <source>Setpoint</source>
+        <translation>Consigna</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
+        <source>Power</source>
+        <translation>Potencia</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
+        <source>Fed length</source>
+        <translation>Longitud alimentada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
+        <source>Speed</source>
+        <translation>Velocidad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
+        <source>Feeding</source>
+        <translation>Alimentando</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="107"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="122"/>
+        <source>Feeder</source>
+        <translation>Alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="146"/>
+        <source>P%1 </source>
+        <translation>P%1 </translation>
+    </message>
+</context>
+<context>
+    <name>CliCommands</name>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="37"/>
+        <source>tipscope-cli: %1: %2</source>
+        <translation>tipscope-cli: %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="49"/>
+        <source>%1 unreadable data field &apos;%2&apos;</source>
+        <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="75"/>
+        <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
+        <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="86"/>
+        <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
+        <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="108"/>
+        <source>%1 written</source>
+        <translation>%1 escrito</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="113"/>
+        <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
+        <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="121"/>
+        <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
+        <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="126"/>
+        <source>%1 (verified)</source>
+        <translation>%1 (verificado)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="135"/>
+        <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
+        <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="143"/>
+        <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
+        <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="155"/>
+        <location filename="../app/cli/clicommands.cpp" line="157"/>
+        <source>the data field must be printable ASCII</source>
+        <translation>el campo de datos debe ser ASCII imprimible</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <source>the data field is longer than 32 characters</source>
+        <translation>el campo de datos tiene más de 32 caracteres</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="169"/>
+        <location filename="../app/cli/clicommands.cpp" line="190"/>
+        <source>tipscope-cli: refused, nothing was sent: %1</source>
+        <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="182"/>
+        <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
+        <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="255"/>
+        <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
+        <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="278"/>
+        <source> [dangerous]</source>
+        <translation> [peligroso]</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="281"/>
+        <source>values: %1</source>
+        <translation>valores: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="282"/>
+        <source>families: %1</source>
+        <translation>familias: %1</translation>
+    </message>
+</context>
+<context>
+    <name>CliMonitor</name>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="65"/>
+        <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
+        <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="72"/>
+        <source>tipscope-cli: --duration takes seconds</source>
+        <translation>tipscope-cli: --duration requiere segundos</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="79"/>
+        <source>tipscope-cli: monitor needs a station; none was found</source>
+        <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="88"/>
+        <source>tipscope-cli: cannot write %1: %2</source>
+        <translation>tipscope-cli: no se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="112"/>
+        <source>P%1 --</source>
+        <translation>P%1 --</translation>
+    </message>
+</context>
+<context>
+    <name>CliParser</name>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="40"/>
+        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]
+                    [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
+                    [--timeout MS] [--retries N] [--verbose] COMMAND ...
+
+Commands:
+  detect [--json] [--scan]  one line per device: &quot;&lt;address or --&gt; &lt;model&gt; &lt;family&gt; &lt;version&gt;&quot;
+  read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
+  write CODE VALUE [--raw]  validate, send, and read back
+  send HEX                  send a raw frame; print the answer in hex and decoded
+  monitor [--interval MS] [--duration S] [--csv FILE]
+                            tip temperature, setpoint, power and status per port
+  dump [--json]             every readable parameter, counter and error
+  commands [--family F]     the command catalog
+  profile save FILE         every writable setting of the device to a JSON profile
+  profile diff FILE         what applying the profile would change
+  profile apply FILE [--dry-run] [--force]
+                            write what differs, each value read back; --dry-run lists
+                            the frames; --force applies a profile of another family
+
+Without --addr or --no-addr the device is found automatically. --demo talks to the
+built-in simulated DME station (address 01) and SFR feeder (address 10).
+--timeout is the device turnaround added to the wire time of each request.
+
+Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
+3 the device answered NAK, or a read-back or profile check failed;
+4 no valid answer; 5 transport error.
+</source>
+        <translation>Uso: tipscope-cli [--port DISPOSITIVO | --tcp HOST:PUERTO | --demo] [--baud N]
+                  [--parity none|even|odd] [--stop-bits 1|2] [--addr ORIG:DEST | --no-addr]
+                  [--timeout MS] [--retries N] [--verbose] COMANDO ...
+
+Comandos:
+  detect [--json] [--scan]  una línea por equipo: &quot;&lt;dirección o --&gt; &lt;modelo&gt; &lt;familia&gt; &lt;versión&gt;&quot;
+  read CÓDIGO... [--raw]    una línea por código: &quot;&lt;CÓDIGO&gt; &lt;valor&gt; &lt;unidad&gt;&quot;
+  write CÓDIGO VALOR [--raw]
+                            valida, envía y vuelve a leer
+  send HEX                  envía una trama en bruto; muestra la respuesta en hex y decodificada
+  monitor [--interval MS] [--duration S] [--csv ARCHIVO]
+                            temperatura de la punta, consigna, potencia y estado por puerto
+  dump [--json]             todos los parámetros legibles, contadores y errores
+  commands [--family F]     el catálogo de comandos
+  profile save ARCHIVO      todos los ajustes escribibles del equipo en un perfil JSON
+  profile diff ARCHIVO      lo que cambiaría al aplicar el perfil
+  profile apply ARCHIVO [--dry-run] [--force]
+                            escribe lo que difiere y vuelve a leer cada valor; --dry-run
+                            lista las tramas; --force aplica un perfil de otra familia
+
+Sin --addr ni --no-addr, el equipo se busca automáticamente. --demo habla con la
+estación DME simulada integrada (dirección 01) y el alimentador SFR (dirección 10).
+--timeout es el tiempo de respuesta del equipo, que se suma al tiempo de transmisión
+de cada petición.
+
+Códigos de salida: 0 correcto; 1 error de uso; 2 valor rechazado antes de enviar (no se
+escribió nada); 3 el equipo respondió NAK, o falló una relectura o la comprobación del
+perfil; 4 ninguna respuesta válida; 5 error de transporte.
+</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="85"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="118"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>indique solo una de --port, --tcp y --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="123"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="130"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="135"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud requiere una velocidad como 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="142"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity admite none, even u odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="146"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits admite 1 o 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="154"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="162"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="165"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries requiere un número de 0 a 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="169"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 necesita un valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="173"/>
+        <source>--%1 takes no value</source>
+        <translation>--%1 no admite ningún valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <source>unknown option --%1</source>
+        <translation>opción desconocida --%1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="178"/>
+        <source>&apos;%1&apos; has no option --%2</source>
+        <translation>&apos;%1&apos; no tiene la opción --%2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="184"/>
+        <source>no command given</source>
+        <translation>no se indicó ningún comando</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
+        <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
+    </message>
+</context>
+<context>
+    <name>CliProfile</name>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="49"/>
+        <source>tipscope-cli: could not read %1; no profile written</source>
+        <translation>tipscope-cli: no se pudo leer %1; no se escribió ningún perfil</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="59"/>
+        <source>saved %1 settings of %2 to %3</source>
+        <translation>se guardaron %1 ajustes de %2 en %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="73"/>
+        <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
+        <translation>tipscope-cli: profile requiere save ARCHIVO, diff ARCHIVO o apply ARCHIVO</translation>
+    </message>
+</context>
+<context>
+    <name>CliSession</name>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="56"/>
+        <source>tipscope-cli: cannot open %1: %2</source>
+        <translation>tipscope-cli: no se puede abrir %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="92"/>
+        <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
+        <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="93"/>
+        <source>without addresses</source>
+        <translation>sin direcciones</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="103"/>
+        <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
+        <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="134"/>
+        <source>tipscope-cli: the line was lost: %1</source>
+        <translation>tipscope-cli: se perdió la línea: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="137"/>
+        <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
+        <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
+    </message>
+</context>
+<context>
+    <name>ConsoleModel</name>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="56"/>
+        <source>sent as typed (not a valid frame)</source>
+        <translation>enviado tal cual (no es una trama válida)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="72"/>
+        <source>stray: answers no pending request</source>
+        <translation>huérfana: no responde a ninguna petición pendiente</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="148"/>
+        <source>TX</source>
+        <translation>TX</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="150"/>
+        <source>RX</source>
+        <translation>RX</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="152"/>
+        <source>frame</source>
+        <translation>trama</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="154"/>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="156"/>
+        <source>note</source>
+        <translation>nota</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="199"/>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="199"/>
+        <source>bad</source>
+        <translation>erróneo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="215"/>
+        <source>Time</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="215"/>
+        <source>Dir</source>
+        <translation>Sentido</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="216"/>
+        <source>Addr</source>
+        <translation>Dir.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="216"/>
+        <source>Header</source>
+        <translation>Cabecera</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="217"/>
+        <source>Cmd</source>
+        <translation>Comando</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="217"/>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <source>Data</source>
+        <translation>Datos</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <source>BCC</source>
+        <translation>BCC</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="219"/>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="219"/>
+        <source>ASCII</source>
+        <translation>ASCII</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="220"/>
+        <source>Remark</source>
+        <translation>Observación</translation>
+    </message>
+</context>
+<context>
+    <name>DeviceModel</name>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="61"/>
+        <source>%1 at %2</source>
+        <translation>%1, dirección %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="62"/>
+        <source>%1 (no address)</source>
+        <translation>%1 (sin dirección)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="66"/>
+        <source>%1, port %2</source>
+        <translation>%1, puerto %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>DisplayUnits</name>
+    <message>
+        <location filename="../lib/model/displayunits.cpp" line="83"/>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>&apos;%1&apos; no es un número</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/displayunits.cpp" line="89"/>
+        <source>%1 has more decimals than %2 can take</source>
+        <translation>%1 tiene más decimales de los que admite %2</translation>
+    </message>
+</context>
+<context>
+    <name>FeederModel</name>
+    <message>
+        <location filename="../lib/model/feedermodel.cpp" line="57"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/feedermodel.cpp" line="63"/>
+        <source>%1 has no command %2</source>
+        <translation>%1 no tiene el comando %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/feedermodel.cpp" line="80"/>
+        <source>error cleared</source>
+        <translation>error borrado</translation>
+    </message>
+</context>
+<context>
+    <name>FrameBuilder</name>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="43"/>
+        <source>%1 carries the data field %2.</source>
+        <translation>%1 lleva el campo de datos %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="46"/>
+        <source>A write needs a data field: %1.</source>
+        <translation>Una escritura necesita un campo de datos: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="57"/>
+        <source>On the wire this value is written %1.</source>
+        <translation>En la línea este valor se escribe %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
+        <source>Unknown device family: the catalog cannot check this frame.</source>
+        <translation>Familia de equipo desconocida: el catálogo no puede comprobar esta trama.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="73"/>
+        <source>%1 is not a %2 write command in the catalog.</source>
+        <translation>%1 no es un comando de escritura de %2 en el catálogo.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="74"/>
+        <source>%1 is not a %2 read command in the catalog.</source>
+        <translation>%1 no es un comando de lectura de %2 en el catálogo.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="77"/>
+        <source>Did you mean %1?</source>
+        <translation>¿Quería decir %1?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
+        <source>It is sent as typed.</source>
+        <translation>Se envía tal cual.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
+        <source>Reads carry no data field; the device may refuse this frame.</source>
+        <translation>Las lecturas no llevan campo de datos; el equipo puede rechazar esta trama.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
+        <source>Dangerous: %1</source>
+        <translation>Peligroso: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="93"/>
+        <source>Catalog check: %1</source>
+        <translation>Comprobación del catálogo: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
+        <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
+        <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="120"/>
+        <source>Not sendable: the data field may only hold printable ASCII.</source>
+        <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="125"/>
+        <source>Not sendable: addresses go from 00 to 99.</source>
+        <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
+    </message>
+</context>
+<context>
+    <name>MeasurementReport</name>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="30"/>
+        <source>%1: min %2, max %3, mean %4</source>
+        <translation>%1: mín. %2, máx. %3, media %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="39"/>
+        <source>wake</source>
+        <translation>salida del reposo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="39"/>
+        <source>heat-up</source>
+        <translation>calentamiento</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="41"/>
+        <source>%1 at %2 to %3: %4</source>
+        <translation>%1 a las %2 hasta %3: %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="44"/>
+        <source>%1 at %2 to %3: not reached in this window</source>
+        <translation>%1 a las %2 hasta %3: no alcanzado en esta ventana</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
+        <source>… %n more heat-up(s)</source>
+        <translation>
+            <numerusform>… %n calentamiento más</numerusform>
+            <numerusform>… %n calentamientos más</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="57"/>
+        <source>recovery at %1: %2 (dip to %3)</source>
+        <translation>recuperación a las %1: %2 (caída hasta %3)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="60"/>
+        <source>dip at %1 to %2: not recovered in this window</source>
+        <translation>caída a las %1 hasta %2: sin recuperar en esta ventana</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
+        <source>… %n more recovery(s)</source>
+        <translation>
+            <numerusform>… %n recuperación más</numerusform>
+            <numerusform>… %n recuperaciones más</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="72"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="74"/>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="75"/>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="92"/>
+        <source>%1: no samples in this window</source>
+        <translation>%1: sin muestras en esta ventana</translation>
+    </message>
+</context>
+<context>
+    <name>Parameter</name>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="69"/>
+        <source>read-only</source>
+        <translation>solo lectura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="75"/>
+        <source>%1 to %2</source>
+        <translation>de %1 a %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="78"/>
+        <source> in steps of %1 %2</source>
+        <translation> en pasos de %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="85"/>
+        <source>, or %1</source>
+        <translation>, o %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="91"/>
+        <location filename="../lib/model/parameter.cpp" line="132"/>
+        <source>%1 cannot be written</source>
+        <translation>%1 no se puede escribir</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="100"/>
+        <source>%1 is not allowed for %2: allowed is %3</source>
+        <translation>%1 no está permitido para %2: se permite %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="105"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="117"/>
+        <location filename="../lib/model/parameter.cpp" line="211"/>
+        <source>monitor-only mode is on: nothing is written</source>
+        <translation>el modo solo supervisión está activado: no se escribe nada</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="136"/>
+        <source>%1: %2; allowed is %3</source>
+        <translation>%1: %2; se permite %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="172"/>
+        <source>reading %1 (%2)</source>
+        <translation>leyendo %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="184"/>
+        <source>reading %1</source>
+        <translation>leyendo %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="185"/>
+        <source>unreadable data field &apos;%1&apos;</source>
+        <translation>campo de datos ilegible &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="234"/>
+        <source>not written: %1</source>
+        <translation>no escrito: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="237"/>
+        <source>perhaps not written, the answer was lost: %1</source>
+        <translation>quizá no escrito, se perdió la respuesta: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="256"/>
+        <source>written, but the read-back failed: %1</source>
+        <translation>escrito, pero la relectura falló: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="262"/>
+        <source>the device reports %1 after %2 was written</source>
+        <translation>el equipo indica %1 tras escribir %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="273"/>
+        <source>%1 set to %2</source>
+        <translation>%1 ajustado a %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/parameter.cpp" line="280"/>
+        <source>writing %1</source>
+        <translation>escribiendo %1</translation>
+    </message>
+</context>
+<context>
+    <name>PortModel</name>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="30"/>
+        <source>Working</source>
+        <translation>Trabajando</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="32"/>
+        <source>Stand</source>
+        <translation>En soporte</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="34"/>
+        <source>Sleep</source>
+        <translation>Reposo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="36"/>
+        <source>Hibernation</source>
+        <translation>Hibernación</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="44"/>
+        <source>Cooling</source>
+        <translation>Enfriando</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="46"/>
+        <source>Suction</source>
+        <translation>Succión</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="48"/>
+        <source>Motor forward</source>
+        <translation>Motor adelante</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="50"/>
+        <source>Motor backward</source>
+        <translation>Motor atrás</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="100"/>
+        <location filename="../lib/model/portmodel.cpp" line="113"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="103"/>
+        <source>tool %1</source>
+        <translation>herramienta %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="170"/>
+        <source>this port has no status command</source>
+        <translation>este puerto no tiene comando de estado</translation>
+    </message>
+</context>
+<context>
+    <name>Profile</name>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="69"/>
+        <location filename="../lib/model/profile.cpp" line="123"/>
+        <source>%1: not a setting of a %2</source>
+        <translation>%1: no es un ajuste de %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="75"/>
+        <source>%1: &apos;%2&apos; is not a valid data field</source>
+        <translation>%1: &apos;%2&apos; no es un campo de datos válido</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="79"/>
+        <location filename="../lib/model/profile.cpp" line="160"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="94"/>
+        <source>not a valid JSON file: %1 at byte %2</source>
+        <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="97"/>
+        <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
+        <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="100"/>
+        <source>profile schema %1 is not supported (this version reads schema %2)</source>
+        <translation>el esquema de perfil %1 no es compatible (esta versión lee el esquema %2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="106"/>
+        <source>unknown device family &apos;%1&apos;</source>
+        <translation>familia de equipo desconocida &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="114"/>
+        <source>the profile has no values</source>
+        <translation>el perfil no tiene valores</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="118"/>
+        <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
+        <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="128"/>
+        <source>the profile is refused, nothing will be written:
+%1</source>
+        <translation>el perfil se rechaza, no se escribirá nada:
+%1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="136"/>
+        <source>cannot write %1: %2</source>
+        <translation>no se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="145"/>
+        <source>cannot read %1: %2</source>
+        <translation>no se puede leer %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="151"/>
+        <source>%1 is %2 bytes; a profile is at most %3</source>
+        <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="176"/>
+        <source>unknown</source>
+        <translation>desconocido</translation>
+    </message>
+</context>
+<context>
+    <name>ProfileApplier</name>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="29"/>
+        <source>refused, nothing was written: %1</source>
+        <translation>rechazado, no se escribió nada: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="33"/>
+        <source>%1 %2: %3 → %4</source>
+        <translation>%1 %2: %3 → %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="37"/>
+        <source>changed %1 %2: %3 → %4</source>
+        <translation>cambiado %1 %2: %3 → %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="39"/>
+        <source>FAILED %1 %2: %3</source>
+        <translation>FALLÓ %1 %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="41"/>
+        <source>would send %1</source>
+        <translation>se enviaría %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="43"/>
+        <source>skipped %1</source>
+        <translation>omitido %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <source>cancelled: the remaining values were not written</source>
+        <translation>cancelado: los valores restantes no se escribieron</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <source>%n difference(s)</source>
+        <translation>
+            <numerusform>%n diferencia</numerusform>
+            <numerusform>%n diferencias</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <source>%1 changed, %2 already right, %3 failed</source>
+        <translation>%1 cambiados, %2 ya correctos, %3 fallidos</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="69"/>
+        <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
+        <translation>el perfil es para %1 y este equipo es %2 (fuerce la aplicación para escribir los ajustes que comparten)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="91"/>
+        <source>monitor-only mode is on</source>
+        <translation>el modo solo supervisión está activado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="108"/>
+        <source>reading the device</source>
+        <translation>leyendo el equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="180"/>
+        <source>writing %1</source>
+        <translation>escribiendo %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="182"/>
+        <source>unreadable value</source>
+        <translation>valor ilegible</translation>
+    </message>
+</context>
+<context>
+    <name>Session</name>
+    <message>
+        <location filename="../lib/model/session.cpp" line="26"/>
+        <location filename="../lib/model/session.cpp" line="94"/>
+        <location filename="../lib/model/session.cpp" line="97"/>
+        <source>disconnected</source>
+        <translation>desconectado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="93"/>
+        <location filename="../lib/model/session.cpp" line="104"/>
+        <location filename="../lib/model/session.cpp" line="111"/>
+        <source>line</source>
+        <translation>línea</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="127"/>
+        <source>looking for devices on %1</source>
+        <translation>buscando equipos en %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="195"/>
+        <source>found %1, software %2</source>
+        <translation>se encontró %1, software %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="196"/>
+        <source>unknown</source>
+        <translation>desconocido</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="202"/>
+        <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
+        <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/session.cpp" line="210"/>
+        <source>%1, %n device(s)</source>
+        <translation>
+            <numerusform>%1, %n equipo</numerusform>
+            <numerusform>%1, %n equipos</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>StationModel</name>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="55"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="71"/>
+        <source>%1 does not support %2</source>
+        <translation>%1 no admite %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="78"/>
+        <source>%1 cannot save to memory</source>
+        <translation>%1 no puede guardar en memoria</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="115"/>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/stationmodel.cpp" line="129"/>
+        <source>error cleared</source>
+        <translation>error borrado</translation>
+    </message>
+</context>
+<context>
+    <name>SupportReport</name>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="91"/>
+        <source>TipScope support report, %1</source>
+        <translation>Informe de soporte de TipScope, %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="92"/>
+        <source>TipScope %1, Qt %2, %3</source>
+        <translation>TipScope %1, Qt %2, %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="98"/>
+        <source>Line: %1</source>
+        <translation>Línea: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="99"/>
+        <source>State: %1</source>
+        <translation>Estado: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="100"/>
+        <source>Statistics: %1</source>
+        <translation>Estadísticas: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="104"/>
+        <source>Device %1: %2 (%3), software %4</source>
+        <translation>Equipo %1: %2 (%3), software %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="118"/>
+        <source>Recent events:</source>
+        <translation>Eventos recientes:</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="143"/>
+        <source>cannot write %1: %2</source>
+        <translation>no se puede escribir %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../app/gui/main.cpp" line="28"/>
+        <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
+        <translation>Configure y supervise estaciones de soldadura JBC y el alimentador SFR.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="34"/>
+        <source>Start on the built-in simulated DME station and SFR feeder.</source>
+        <translation>Iniciar con la estación DME y el alimentador SFR simulados integrados.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="37"/>
+        <source>Connect to this serial port.</source>
+        <translation>Conectar a este puerto serie.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="40"/>
+        <source>Connect to a TCP serial server.</source>
+        <translation>Conectar a un servidor serie TCP.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="44"/>
+        <source>Save a PNG of every page into DIR, then quit.</source>
+        <translation>Guardar un PNG de cada página en DIR y salir.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ChartPlotView</name>
+    <message>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="32"/>
+        <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
+        <translation>Gráfico temporal. La rueda o las teclas más y menos hacen zoom, arrastrar o las flechas desplazan, Mayús+arrastrar selecciona un intervalo, doble clic o Inicio restablece.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ChartWidget</name>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/chartwidget.cpp" line="299"/>
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… y %n más</numerusform>
+            <numerusform>… y %n más</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ChartsPage</name>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="28"/>
+        <location filename="../app/gui/charts/chartspage.h" line="53"/>
+        <source>Charts</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="44"/>
+        <source>Values under the cursor</source>
+        <translation>Valores bajo el cursor</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="49"/>
+        <source>Heat-up and recovery &amp;band ±</source>
+        <translation>&amp;Banda de calentamiento y recuperación ±</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="52"/>
+        <source>Tolerance band around the setpoint</source>
+        <translation>Banda de tolerancia alrededor de la consigna</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="63"/>
+        <source>Measurements of the visible window</source>
+        <translation>Mediciones de la ventana visible</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="176"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="179"/>
+        <source>%1 at %2</source>
+        <translation>%1, dirección %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="182"/>
+        <source>%1 — feeder</source>
+        <translation>%1 — alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
+        <source>%1 — all ports</source>
+        <translation>%1 — todos los puertos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
+        <source>%1 — %2 %3</source>
+        <translation>%1 — %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
+        <source>Temperature (%1)</source>
+        <translation>Temperatura (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
+        <source>Power (%)</source>
+        <translation>Potencia (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="289"/>
+        <source>No samples in this window</source>
+        <translation>No hay muestras en esta ventana</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="44"/>
+        <source>device</source>
+        <translation>equipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="46"/>
+        <source>%1 · %2 · %3: %4</source>
+        <translation>%1 · %2 · %3: %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="112"/>
+        <source>Point at a chart to read every series at that instant. Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
+        <translation>Señale un gráfico para leer todas las series en ese instante. Rueda: zoom · arrastrar: desplazar · Mayús+arrastrar: ampliar un intervalo · doble clic: restablecer.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="52"/>
+        <source>&amp;Window</source>
+        <translation>&amp;Ventana</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="55"/>
+        <source>Time window</source>
+        <translation>Ventana de tiempo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <source>30 s</source>
+        <translation>30 s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <source>1 min</source>
+        <translation>1 min</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <source>5 min</source>
+        <translation>5 min</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <source>15 min</source>
+        <translation>15 min</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <source>1 h</source>
+        <translation>1 h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <source>4 h</source>
+        <translation>4 h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="60"/>
+        <source>12 h</source>
+        <translation>12 h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="60"/>
+        <source>24 h</source>
+        <translation>24 h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
+        <source>&amp;Follow</source>
+        <translation>Segu&amp;ir</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="70"/>
+        <source>Keep the newest data at the right edge; uncheck to pause</source>
+        <translation>Mantener los datos más recientes en el borde derecho; desmarque para pausar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <source>&amp;Reset view</source>
+        <translation>&amp;Restablecer vista</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
+        <source>Pane layout</source>
+        <translation>Disposición de los paneles</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="78"/>
+        <source>Ports overlaid</source>
+        <translation>Puertos superpuestos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="79"/>
+        <source>One pane per port</source>
+        <translation>Un panel por puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
+        <source>&amp;Export</source>
+        <translation>E&amp;xportar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
+        <source>Visible window as &amp;PNG…</source>
+        <translation>Ventana visible como &amp;PNG…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
+        <source>Visible window as &amp;CSV…</source>
+        <translation>Ventana visible como &amp;CSV…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="89"/>
+        <source>Re&amp;cord…</source>
+        <translation>&amp;Grabar…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
+        <source>Write every new sample and event to a CSV file until unchecked</source>
+        <translation>Escribir cada nueva muestra y evento en un archivo CSV hasta desmarcarlo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
+        <source>&amp;Open recording…</source>
+        <translation>Abrir grabació&amp;n…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
+        <source>Back to &amp;live</source>
+        <translation>Volver a &amp;tiempo real</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="100"/>
+        <source>Data shown</source>
+        <translation>Datos mostrados</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="103"/>
+        <source>Recording stopped</source>
+        <translation>Grabación detenida</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="104"/>
+        <source>Writing %1 failed: %2</source>
+        <translation>Falló la escritura de %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="73"/>
+        <source>P%1</source>
+        <translation>P%1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="89"/>
+        <source>High alarm</source>
+        <translation>Alarma alta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="92"/>
+        <source>Low alarm</source>
+        <translation>Alarma baja</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
+        <source>Replay: %1 (%Ln row(s))</source>
+        <translation>
+            <numerusform>Reproducción: %1 (%Ln fila)</numerusform>
+            <numerusform>Reproducción: %1 (%Ln filas)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="121"/>
+        <source>Live</source>
+        <translation>Tiempo real</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
+        <source> · recording to %1</source>
+        <translation> · grabando en %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="132"/>
+        <source>there is no chart to export</source>
+        <translation>no hay ningún gráfico que exportar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="134"/>
+        <source>could not write %1</source>
+        <translation>no se pudo escribir %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="153"/>
+        <source>Export chart as PNG</source>
+        <translation>Exportar gráfico como PNG</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="153"/>
+        <source>Export chart data as CSV</source>
+        <translation>Exportar datos del gráfico como CSV</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <source>PNG image (*.png)</source>
+        <translation>Imagen PNG (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="188"/>
+        <source>CSV file (*.csv)</source>
+        <translation>Archivo CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
+        <source>Export</source>
+        <translation>Exportar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
+        <source>Export failed: %1</source>
+        <translation>Falló la exportación: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="187"/>
+        <source>Record to CSV file</source>
+        <translation>Grabar en un archivo CSV</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="191"/>
+        <source>Record</source>
+        <translation>Grabar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="191"/>
+        <source>Cannot record: %1</source>
+        <translation>No se puede grabar: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="221"/>
+        <source>Open a chart recording</source>
+        <translation>Abrir una grabación de gráficos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="223"/>
+        <source>CSV file (*.csv);;All files (*)</source>
+        <translation>Archivo CSV (*.csv);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="228"/>
+        <source>Replay</source>
+        <translation>Reproducción</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="228"/>
+        <source>Cannot replay %1</source>
+        <translation>No se puede reproducir %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ConnectionBar</name>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="23"/>
+        <location filename="../app/gui/connectionbar.cpp" line="30"/>
+        <source>Serial port</source>
+        <translation>Puerto serie</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="24"/>
+        <location filename="../app/gui/connectionbar.cpp" line="34"/>
+        <source>TCP serial server</source>
+        <translation>Servidor serie TCP</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="25"/>
+        <source>Demo (simulated DME + SFR)</source>
+        <translation>Demo (DME + SFR simulados)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="26"/>
+        <source>Connection type</source>
+        <translation>Tipo de conexión</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="31"/>
+        <source>Serial ports on this computer; you may also type a device path</source>
+        <translation>Puertos serie de este ordenador; también puede escribir la ruta de un dispositivo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="33"/>
+        <source>host:port</source>
+        <translation>host:puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="38"/>
+        <source>Baud rate</source>
+        <translation>Velocidad en baudios</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="40"/>
+        <source>no parity</source>
+        <translation>sin paridad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="41"/>
+        <source>even</source>
+        <translation>par</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="42"/>
+        <source>odd</source>
+        <translation>impar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="44"/>
+        <source>1 stop bit</source>
+        <translation>1 bit de parada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="45"/>
+        <source>2 stop bits</source>
+        <translation>2 bits de parada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="47"/>
+        <source>Find devices</source>
+        <translation>Buscar equipos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="48"/>
+        <source>With addresses</source>
+        <translation>Con direcciones</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="49"/>
+        <source>Without addresses</source>
+        <translation>Sin direcciones</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="50"/>
+        <source>Addressing</source>
+        <translation>Direccionamiento</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="53"/>
+        <source>robot </source>
+        <translation>robot </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="54"/>
+        <source>Robot address</source>
+        <translation>Dirección del robot</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="57"/>
+        <source>device </source>
+        <translation>equipo </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="58"/>
+        <source>Device address</source>
+        <translation>Dirección del equipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="59"/>
+        <location filename="../app/gui/connectionbar.cpp" line="167"/>
+        <source>&amp;Connect</source>
+        <translation>&amp;Conectar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="60"/>
+        <source>&amp;Monitor only</source>
+        <translation>Solo &amp;supervisión</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="61"/>
+        <source>Block every write: watch a production line without risk</source>
+        <translation>Bloquea toda escritura: supervise una línea de producción sin riesgo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="93"/>
+        <source>disconnected</source>
+        <translation>desconectado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="167"/>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Desconectar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
+        <source>Connected</source>
+        <translation>Conectado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="184"/>
+        <source>Connecting</source>
+        <translation>Conectando</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="184"/>
+        <source>Detecting devices</source>
+        <translation>Detectando equipos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="188"/>
+        <source>Disconnected, retrying</source>
+        <translation>Desconectado, reintentando</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="192"/>
+        <source>Cannot connect</source>
+        <translation>No se puede conectar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="195"/>
+        <source>Disconnected</source>
+        <translation>Desconectado</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ConsolePage</name>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="74"/>
+        <source>%1: answered %2 after %L3 ms</source>
+        <translation>%1: respondió %2 tras %L3 ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="78"/>
+        <source>%1: refused, %2</source>
+        <translation>%1: rechazado, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="80"/>
+        <source>%1: no answer (timeout)</source>
+        <translation>%1: sin respuesta (tiempo agotado)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="82"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="94"/>
+        <source>Console tools</source>
+        <translation>Herramientas de la consola</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="131"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
+        <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="140"/>
+        <source>Relative time</source>
+        <translation>Tiempo relativo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <source>Show seconds since the first row instead of the clock time</source>
+        <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="158"/>
+        <source>Show:</source>
+        <translation>Mostrar:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <source>TX</source>
+        <translation>TX</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <source>Show bytes sent</source>
+        <translation>Mostrar los bytes enviados</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <source>RX chunks</source>
+        <translation>Bloques RX</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
+        <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <source>Frames</source>
+        <translation>Tramas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <source>Show received frames, decoded</source>
+        <translation>Mostrar las tramas recibidas, decodificadas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <source>Errors</source>
+        <translation>Errores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <source>Show decode errors (BCC, format, garbage)</source>
+        <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <source>Notes</source>
+        <translation>Notas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <source>Show line notes (timeouts, line state)</source>
+        <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
+        <source>De&amp;vice:</source>
+        <translation>Equi&amp;po:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <source>Device address filter</source>
+        <translation>Filtro de dirección de equipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <source>Only frames from or to this address; type any address 00-99</source>
+        <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="185"/>
+        <source>Co&amp;mmand:</source>
+        <translation>Co&amp;mando:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
+        <source>Command filter</source>
+        <translation>Filtro de comando</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="189"/>
+        <source>e.g. ST1</source>
+        <translation>p. ej. ST1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="198"/>
+        <source>Clear</source>
+        <translation>Borrar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="200"/>
+        <source>Remove every row, held ones included</source>
+        <translation>Quitar todas las filas, incluidas las retenidas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <source>Save…</source>
+        <translation>Guardar…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <source>Save every row (not only the shown ones) to a text file</source>
+        <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="216"/>
+        <source>Traffic on the line</source>
+        <translation>Tráfico en la línea</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="243"/>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="249"/>
+        <source>bad</source>
+        <translation>erróneo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="263"/>
+        <source>Copy rows</source>
+        <translation>Copiar filas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="287"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="300"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="318"/>
+        <source>All</source>
+        <translation>Todos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="291"/>
+        <source>%1 (no address)</source>
+        <translation>%1 (sin dirección)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="348"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <source>Save console</source>
+        <translation>Guardar la consola</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <source>Text files (*.txt);;All files (*)</source>
+        <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <source>Could not save %1:
+%2</source>
+        <translation>No se pudo guardar %1:
+%2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
+        <source>%1 of %2 rows shown</source>
+        <translation>%1 de %2 filas mostradas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="374"/>
+        <source>paused: new traffic is held</source>
+        <translation>en pausa: el tráfico nuevo se retiene</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n byte en bruto</numerusform>
+            <numerusform>%n bytes en bruto</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
+        <source>%1: not sent, not connected</source>
+        <translation>%1: no enviado, sin conexión</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <source>%1: not sent, monitor-only mode is on</source>
+        <translation>%1: no enviado, el modo solo supervisión está activado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="400"/>
+        <source>%1: sent, waiting for the answer…</source>
+        <translation>%1: enviado, esperando la respuesta…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.h" line="66"/>
+        <source>Console</source>
+        <translation>Consola</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::CountersPage</name>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="37"/>
+        <source>Plugged hours</source>
+        <translation>Horas conectado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
+        <source>Reset partial plugged hours…</source>
+        <translation>Poner a cero las horas conectado parciales…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
+        <source>Feeding hours</source>
+        <translation>Horas de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
+        <source>Reset partial feeding hours…</source>
+        <translation>Poner a cero las horas de alimentación parciales…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
+        <source>Fed length</source>
+        <translation>Longitud alimentada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
+        <source>Reset partial fed length…</source>
+        <translation>Poner a cero la longitud alimentada parcial…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
+        <source>When the counters were read</source>
+        <translation>Cuándo se leyeron los contadores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <source>Result of the last action</source>
+        <translation>Resultado de la última acción</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <source>Re&amp;fresh</source>
+        <translation>Ac&amp;tualizar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="87"/>
+        <source>Read every counter of every device now (they are otherwise read once a minute)</source>
+        <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
+        <source>Refresh counters</source>
+        <translation>Actualizar contadores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <source>&amp;Export CSV…</source>
+        <translation>E&amp;xportar CSV…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
+        <source>Save every counter of every device as a CSV file</source>
+        <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <source>Export counters as CSV</source>
+        <translation>Exportar contadores como CSV</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="103"/>
+        <source>No device is connected. Connect to a line to read its counters.</source>
+        <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="155"/>
+        <source>Reading the counters…</source>
+        <translation>Leyendo los contadores…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="158"/>
+        <source>Last reading at %1</source>
+        <translation>Última lectura a las %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
+        <source>Waiting for the first reading…</source>
+        <translation>Esperando la primera lectura…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="209"/>
+        <source>Station %1</source>
+        <translation>Estación %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="211"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="239"/>
+        <source>Counters of %1</source>
+        <translation>Contadores de %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
+        <source>Solder feeder %1</source>
+        <translation>Alimentador de estaño %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
+        <source>Total</source>
+        <translation>Total</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
+        <source>Partial</source>
+        <translation>Parcial</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="281"/>
+        <source>%1 (R-%2)</source>
+        <translation>%1 (R-%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="283"/>
+        <source>Last read failed: %1</source>
+        <translation>Falló la última lectura: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="286"/>
+        <source>Read at %1</source>
+        <translation>Leído: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
+        <source>Not read yet</source>
+        <translation>Aún no leído</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="313"/>
+        <source>%1 Monitor-only mode is on: nothing is reset.</source>
+        <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="316"/>
+        <source>Reset partial counter</source>
+        <translation>Poner a cero el contador parcial</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="317"/>
+        <source>Reset “%1” on %2?</source>
+        <translation>¿Poner a cero «%1» en %2?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="319"/>
+        <source>It now reads %1.</source>
+        <translation>Ahora marca %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="321"/>
+        <source>The total counter is not affected.</source>
+        <translation>El contador total no se ve afectado.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
+        <source>Reset counter</source>
+        <translation>Poner a cero</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
+        <source>%1 Nothing was reset.</source>
+        <translation>%1 No se puso nada a cero.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
+        <source>%1 Not reset: %2</source>
+        <translation>%1 No se puso a cero: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <source>%1 Resetting %2…</source>
+        <translation>%1 Poniendo a cero %2…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <source>%1 %2 reset.</source>
+        <translation>%1 %2 puesto a cero.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
+        <source>%1 %2 was not reset: %3</source>
+        <translation>%1 %2 no se puso a cero: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="356"/>
+        <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
+        <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="383"/>
+        <source>Export counters</source>
+        <translation>Exportar contadores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="376"/>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="381"/>
+        <source>%1 Counters saved to %2</source>
+        <translation>%1 Contadores guardados en %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.cpp" line="384"/>
+        <source>The counters could not be saved: %1</source>
+        <translation>No se pudieron guardar los contadores: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/counterspage.h" line="37"/>
+        <source>Counters</source>
+        <translation>Contadores</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::DeviceTree</name>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="18"/>
+        <source>Devices</source>
+        <translation>Equipos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="72"/>
+        <source>No line</source>
+        <translation>Sin línea</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="78"/>
+        <source>feeder</source>
+        <translation>alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="78"/>
+        <source>station</source>
+        <translation>estación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="83"/>
+        <source>Port %1: %2</source>
+        <translation>Puerto %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::DispensingPage</name>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="45"/>
+        <source>Only the ALE has a built-in wire feed.</source>
+        <translation>Solo la ALE tiene alimentación de hilo integrada.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="55"/>
+        <source>&amp;Start dispensing</source>
+        <translation>&amp;Iniciar dispensado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="56"/>
+        <source>S&amp;top dispensing</source>
+        <translation>De&amp;tener dispensado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
+        <source>Ignore fuse error…</source>
+        <translation>Ignorar error de fusible…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="63"/>
+        <source>
+
+Continue?</source>
+        <translation>
+
+¿Continuar?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="75"/>
+        <source>Wire feed settings</source>
+        <translation>Ajustes de alimentación de hilo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="85"/>
+        <source>&amp;Apply</source>
+        <translation>A&amp;plicar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="110"/>
+        <source>%1 · dispensed %2 in %3 cycles · %4</source>
+        <translation>%1 · dispensado %2 en %3 ciclos · %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="114"/>
+        <source>fuse unknown</source>
+        <translation>fusible desconocido</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="115"/>
+        <source>fuse present</source>
+        <translation>fusible presente</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
+        <source>fuse missing or blown</source>
+        <translation>fusible ausente o fundido</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="122"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="130"/>
+        <source>no ALE</source>
+        <translation>sin ALE</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/dispensingpage.h" line="21"/>
+        <source>Dispensing</source>
+        <translation>Dispensado</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ErrorsPage</name>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="71"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="573"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="588"/>
+        <source>Not read yet</source>
+        <translation>Aún no leído</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="73"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="75"/>
+        <source>Info</source>
+        <translation>Información</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="77"/>
+        <source>Warning</source>
+        <translation>Advertencia</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="79"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
+        <source>Station error</source>
+        <translation>Error de estación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="120"/>
+        <source>Port error</source>
+        <translation>Error de puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="122"/>
+        <source>Feeder error</source>
+        <translation>Error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="124"/>
+        <source>Alarm</source>
+        <translation>Alarma</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="126"/>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="128"/>
+        <source>Write</source>
+        <translation>Escritura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="382"/>
+        <source>Communication</source>
+        <translation>Comunicación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="132"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="383"/>
+        <source>Connection</source>
+        <translation>Conexión</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="254"/>
+        <source>Time</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Severity</source>
+        <translation>Gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="258"/>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="260"/>
+        <source>Source</source>
+        <translation>Origen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="262"/>
+        <source>What happened</source>
+        <translation>Qué ocurrió</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="336"/>
+        <source>Current state</source>
+        <translation>Estado actual</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="339"/>
+        <source>Current errors and alarms</source>
+        <translation>Errores y alarmas actuales</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Where</source>
+        <translation>Dónde</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <source>Temperature alarm</source>
+        <translation>Alarma de temperatura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="352"/>
+        <source>&amp;Reset feeder error</source>
+        <translation>&amp;Borrar error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="354"/>
+        <source>Reset feeder error</source>
+        <translation>Borrar error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="356"/>
+        <source>Result of the last action</source>
+        <translation>Resultado de la última acción</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="369"/>
+        <source>History</source>
+        <translation>Historial</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="372"/>
+        <source>Show events of kind</source>
+        <translation>Mostrar eventos del tipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
+        <source>All kinds</source>
+        <translation>Todos los tipos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <source>Errors and alarms</source>
+        <translation>Errores y alarmas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="376"/>
+        <source>Station errors</source>
+        <translation>Errores de estación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <source>Port errors</source>
+        <translation>Errores de puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
+        <source>Feeder errors</source>
+        <translation>Errores del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="379"/>
+        <source>Alarms</source>
+        <translation>Alarmas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
+        <source>Status changes</source>
+        <translation>Cambios de estado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="381"/>
+        <source>Writes</source>
+        <translation>Escrituras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="388"/>
+        <source>Show events of severity</source>
+        <translation>Mostrar eventos de la gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="389"/>
+        <source>Any severity</source>
+        <translation>Cualquier gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="390"/>
+        <source>Warnings and errors</source>
+        <translation>Advertencias y errores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="391"/>
+        <source>Errors only</source>
+        <translation>Solo errores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="394"/>
+        <source>Show events containing</source>
+        <translation>Mostrar eventos que contengan</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="395"/>
+        <source>Text in any column</source>
+        <translation>Texto en cualquier columna</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="397"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Tipo:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="399"/>
+        <source>Se&amp;verity:</source>
+        <translation>&amp;Gravedad:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
+        <source>&amp;Search:</source>
+        <translation>B&amp;uscar:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="418"/>
+        <source>Event history</source>
+        <translation>Historial de eventos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="442"/>
+        <source>Copy</source>
+        <translation>Copiar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="448"/>
+        <source>Events shown</source>
+        <translation>Eventos mostrados</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="449"/>
+        <source>&amp;Copy</source>
+        <translation>Co&amp;piar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="451"/>
+        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
+        <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="452"/>
+        <source>Copy selected events</source>
+        <translation>Copiar eventos seleccionados</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="453"/>
+        <source>E&amp;xport…</source>
+        <translation>E&amp;xportar…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="455"/>
+        <source>Save the events shown as a tab-separated text file</source>
+        <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="456"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="721"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="728"/>
+        <source>Export events</source>
+        <translation>Exportar eventos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="458"/>
+        <source>Result of the last export</source>
+        <translation>Resultado de la última exportación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="507"/>
+        <source>No device is connected.</source>
+        <translation>No hay ningún equipo conectado.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="557"/>
+        <source>%1, port %2</source>
+        <translation>%1, puerto %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="575"/>
+        <source>Error code %1: %2</source>
+        <translation>Código de error %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="582"/>
+        <source>High temperature</source>
+        <translation>Temperatura alta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="584"/>
+        <source>Low temperature</source>
+        <translation>Temperatura baja</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="586"/>
+        <source>None</source>
+        <translation>Ninguna</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="600"/>
+        <source>This device has no temperature alarm</source>
+        <translation>Este equipo no tiene alarma de temperatura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="609"/>
+        <source>Not reset: %1</source>
+        <translation>No se borró: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="612"/>
+        <source>Resetting the feeder error…</source>
+        <translation>Borrando el error del alimentador…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="619"/>
+        <source>Feeder error reset.</source>
+        <translation>Error del alimentador borrado.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="620"/>
+        <source>The feeder error was not reset: %1</source>
+        <translation>El error del alimentador no se borró: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="633"/>
+        <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
+        <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="636"/>
+        <source>No feeder is connected</source>
+        <translation>No hay ningún alimentador conectado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="639"/>
+        <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
+        <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="670"/>
+        <source>%1 of %2 events shown</source>
+        <translation>%1 de %2 eventos mostrados</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/errorspage.cpp" line="672"/>
+        <source>%n older events were dropped</source>
+        <translation>
+            <numerusform>se descartó %n evento antiguo</numerusform>
+            <numerusform>se descartaron %n eventos antiguos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="721"/>
+        <source>Text files (*.txt *.tsv)</source>
+        <translation>Archivos de texto (*.txt *.tsv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="726"/>
+        <source>Saved to %1</source>
+        <translation>Guardado en %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.cpp" line="729"/>
+        <source>The events could not be saved: %1</source>
+        <translation>No se pudieron guardar los eventos: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorspage.h" line="40"/>
+        <source>Errors</source>
+        <translation>Errores</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FeederPage</name>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="45"/>
+        <source>No feeder on this line.</source>
+        <translation>No hay alimentador en esta línea.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
+        <source>Feed &amp;forward</source>
+        <translation>A&amp;vanzar hilo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
+        <source>W-SFD 00001</source>
+        <translation>W-SFD 00001</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
+        <source>Feed &amp;backward</source>
+        <translation>Re&amp;troceder hilo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
+        <source>W-SFD 00000</source>
+        <translation>W-SFD 00000</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Parar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
+        <source>W-SSD</source>
+        <translation>W-SSD</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
+        <source>Start &amp;loading</source>
+        <translation>Iniciar car&amp;ga</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
+        <source>W-SLD 00001: feed ignoring errors, for a new spool</source>
+        <translation>W-SLD 00001: alimentar ignorando los errores, para una bobina nueva</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
+        <source>End loading</source>
+        <translation>Terminar carga</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
+        <source>W-SLD 00000</source>
+        <translation>W-SLD 00000</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="80"/>
+        <source>&amp;Reset error</source>
+        <translation>&amp;Borrar error</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="86"/>
+        <source>Feeding settings</source>
+        <translation>Ajustes de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="94"/>
+        <source>&amp;Apply</source>
+        <translation>Ap&amp;licar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="95"/>
+        <source>Save to feeder memory</source>
+        <translation>Guardar en la memoria del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="96"/>
+        <source>W-NVS: mode, speed and length survive a restart</source>
+        <translation>W-NVS: el modo, la velocidad y la longitud se conservan tras reiniciar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="108"/>
+        <source>Counters</source>
+        <translation>Contadores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="116"/>
+        <source>Reset</source>
+        <translation>Poner a cero</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <source>Feeding</source>
+        <translation>Alimentando</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <source>Idle</source>
+        <translation>En espera</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="142"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · alimentado %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
+        <source>⚠ %1</source>
+        <translation>⚠ %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
+        <source>No feeder error</source>
+        <translation>Sin error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="154"/>
+        <source>Monitor-only mode is on: nothing is written</source>
+        <translation>El modo solo supervisión está activado: no se escribe nada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="167"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="179"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="185"/>
+        <source>no feeder</source>
+        <translation>sin alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="194"/>
+        <source>no such counter</source>
+        <translation>no existe ese contador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="197"/>
+        <source>
+
+Reset it?</source>
+        <translation>
+
+¿Ponerlo a cero?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="200"/>
+        <source>cancelled</source>
+        <translation>cancelado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.h" line="23"/>
+        <source>Feeder</source>
+        <translation>Alimentador</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FrameBuilder</name>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="139"/>
+        <source>Send a frame</source>
+        <translation>Enviar una trama</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="162"/>
+        <source>Device</source>
+        <translation>Equipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="165"/>
+        <source>Header</source>
+        <translation>Cabecera</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="166"/>
+        <source>R (read)</source>
+        <translation>R (lectura)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="167"/>
+        <source>W (write)</source>
+        <translation>W (escritura)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="169"/>
+        <source>Command</source>
+        <translation>Comando</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="179"/>
+        <source>Data field</source>
+        <translation>Campo de datos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="183"/>
+        <source>&amp;Send frame</source>
+        <translation>&amp;Enviar trama</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="184"/>
+        <source>Send frame</source>
+        <translation>Enviar trama</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="186"/>
+        <source>Frame to be sent</source>
+        <translation>Trama que se enviará</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="190"/>
+        <source>Catalog check</source>
+        <translation>Comprobación del catálogo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="193"/>
+        <source>Raw bytes in hex</source>
+        <translation>Bytes en bruto en hexadecimal</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="197"/>
+        <source>Send ra&amp;w hex</source>
+        <translation>Enviar he&amp;x en bruto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="198"/>
+        <source>Send raw hex</source>
+        <translation>Enviar hex en bruto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="200"/>
+        <source>Raw bytes check</source>
+        <translation>Comprobación de los bytes en bruto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="201"/>
+        <source>Nothing sent yet.</source>
+        <translation>Aún no se ha enviado nada.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="202"/>
+        <source>Outcome of the last send</source>
+        <translation>Resultado del último envío</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
+        <source>&amp;Device</source>
+        <translation>E&amp;quipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="213"/>
+        <source>&amp;Header</source>
+        <translation>Ca&amp;becera</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <source>C&amp;ommand</source>
+        <translation>C&amp;omando</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="217"/>
+        <source>D&amp;ata</source>
+        <translation>Da&amp;tos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="220"/>
+        <source>Frame</source>
+        <translation>Trama</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="223"/>
+        <source>&amp;Raw hex</source>
+        <translation>Hex en b&amp;ruto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
+        <source>Last send</source>
+        <translation>Último envío</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="260"/>
+        <source>Monitor-only mode is on: raw bytes are not sent, since they may be a write. Reads can still be sent with Send frame.</source>
+        <translation>El modo solo supervisión está activado: los bytes en bruto no se envían, ya que podrían ser una escritura. Las lecturas aún se pueden enviar con Enviar trama.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
+        <source>Send these bytes exactly as typed; the answer appears in the table.</source>
+        <translation>Enviar estos bytes exactamente como se han escrito; la respuesta aparece en la tabla.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="287"/>
+        <source>No device is known on this line: connect first, or send raw hex.</source>
+        <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="350"/>
+        <source>(nothing to send)</source>
+        <translation>(nada que enviar)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="354"/>
+        <source>none for reads</source>
+        <translation>ninguno en lecturas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="354"/>
+        <source>e.g. 00350</source>
+        <translation>p. ej. 00350</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="358"/>
+        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
+        <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="370"/>
+        <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
+        <translation>Enviar esta trama una vez, tal como se muestra (sin reintentos; los avisos del catálogo no la detienen). Su respuesta aparece en la tabla.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/framebuilder.cpp" line="387"/>
+        <source>%n byte(s), a valid frame: %1</source>
+        <translation>
+            <numerusform>%n byte, una trama válida: %1</numerusform>
+            <numerusform>%n bytes, una trama válida: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/framebuilder.cpp" line="390"/>
+        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
+        <translation>
+            <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
+            <numerusform>%n bytes, no es una trama válida (%1): se envía tal cual</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="408"/>
+        <source>Not sent: %1</source>
+        <translation>No enviado: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::LinkStatusLabel</name>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
+        <source>Line statistics</source>
+        <translation>Estadísticas de la línea</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="19"/>
+        <source>no line</source>
+        <translation>sin línea</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="25"/>
+        <source>%L1 tx/s · %L2 ms · %3 timeouts · %4 BCC errors · %5 NAKs</source>
+        <translation>%L1 tx/s · %L2 ms · %3 tiempos agotados · %4 errores BCC · %5 NAK</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="33"/>
+        <source>NAK %1 × %2: %3</source>
+        <translation>NAK %1 × %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="37"/>
+        <source>Reconnects: %1</source>
+        <translation>Reconexiones: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::MainWindow</name>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="36"/>
+        <source>Connection</source>
+        <translation>Conexión</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="88"/>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="89"/>
+        <source>Write &amp;support report…</source>
+        <translation>Escribir &amp;informe de soporte…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="91"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Salir</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="92"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Herramientas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="93"/>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Preferencias…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="98"/>
+        <source>&amp;Help</source>
+        <translation>A&amp;yuda</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="99"/>
+        <source>&amp;About TipScope</source>
+        <translation>&amp;Acerca de TipScope</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="101"/>
+        <source>About TipScope</source>
+        <translation>Acerca de TipScope</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="102"/>
+        <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="177"/>
+        <source>not connected</source>
+        <translation>sin conexión</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="182"/>
+        <source>TipScope — %1</source>
+        <translation>TipScope — %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="187"/>
+        <source>Folder for the support report</source>
+        <translation>Carpeta para el informe de soporte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="194"/>
+        <location filename="../app/gui/mainwindow.cpp" line="197"/>
+        <source>Support report</source>
+        <translation>Informe de soporte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="198"/>
+        <source>Written:
+%1
+
+Attach both files to the support ticket.</source>
+        <translation>Escrito:
+%1
+
+Adjunte ambos archivos a la solicitud de soporte.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::OverviewPage</name>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="77"/>
+        <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="84"/>
+        <source>family %1</source>
+        <translation>familia %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
+        <source>software %1</source>
+        <translation>software %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="88"/>
+        <source>transformer %1</source>
+        <translation>transformador %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="90"/>
+        <source>fuse present</source>
+        <translation>fusible presente</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
+        <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="95"/>
+        <source>⚠ Station error: %1</source>
+        <translation>⚠ Error de estación: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <source>feeding</source>
+        <translation>alimentando</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <source>idle</source>
+        <translation>en espera</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="108"/>
+        <source>fed %1</source>
+        <translation>alimentado %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="110"/>
+        <source>speed %1</source>
+        <translation>velocidad %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.h" line="21"/>
+        <source>Overview</source>
+        <translation>Vista general</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ParameterEditor</name>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="51"/>
+        <source>Allowed: %1</source>
+        <translation>Permitido: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="52"/>
+        <source>Command: %1</source>
+        <translation>Comando: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="74"/>
+        <source>%1 disabled</source>
+        <translation>%1 desactivado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="122"/>
+        <source>not read</source>
+        <translation>no leído</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="125"/>
+        <source>reading…</source>
+        <translation>leyendo…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <source>not saved</source>
+        <translation>no guardado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <source>✓ in sync</source>
+        <translation>✓ sincronizado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="132"/>
+        <source>edited</source>
+        <translation>editado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="136"/>
+        <source>writing…</source>
+        <translation>escribiendo…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="139"/>
+        <source>✗ failed</source>
+        <translation>✗ falló</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="144"/>
+        <source>✗ refused</source>
+        <translation>✗ rechazado</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::PortCard</name>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="21"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="32"/>
+        <source>Tip temperature, port %1</source>
+        <translation>Temperatura de la punta, puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="39"/>
+        <source>Power, port %1</source>
+        <translation>Potencia, puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
+        <source>Work</source>
+        <translation>Trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="46"/>
+        <source>Stand</source>
+        <translation>Soporte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
+        <source>Cool</source>
+        <translation>Enfriar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <source>W-PS%1 00000: heat to the selected temperature</source>
+        <translation>W-PS%1 00000: calentar a la temperatura seleccionada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
+        <translation>W-PS%1 00001: soporte; el reposo y la hibernación siguen tras sus retardos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <source>W-PS%1 00010: cooling (extractor stand-by)</source>
+        <translation>W-PS%1 00010: enfriamiento (extractor en espera)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="55"/>
+        <source>New selected temperature, port %1</source>
+        <translation>Nueva temperatura seleccionada, puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="56"/>
+        <source>Set</source>
+        <translation>Fijar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="92"/>
+        <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="100"/>
+        <source>Monitor-only mode is on: nothing is written</source>
+        <translation>El modo solo supervisión está activado: no se escribe nada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="125"/>
+        <source>Port %1 — %2</source>
+        <translation>Puerto %1 — %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="128"/>
+        <source>— °</source>
+        <translation>— °</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="129"/>
+        <source>set %1</source>
+        <translation>consigna %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="131"/>
+        <source>power %1</source>
+        <translation>potencia %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
+        <source>status unknown</source>
+        <translation>estado desconocido</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
+        <source>transistor %1</source>
+        <translation>transistor %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
+        <source>%1 until the next mode</source>
+        <translation>%1 hasta el siguiente modo</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::PreferencesDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="24"/>
+        <source>Preferences</source>
+        <translation>Preferencias</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="26"/>
+        <source>Celsius (°C)</source>
+        <translation>Celsius (°C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="27"/>
+        <source>Fahrenheit (°F)</source>
+        <translation>Fahrenheit (°F)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="29"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="31"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
+        <source>Follow the system</source>
+        <translation>Idioma del sistema</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
+        <source>Temperature unit:</source>
+        <translation>Unidad de temperatura:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="42"/>
+        <source>Live values (visible ports) every:</source>
+        <translation>Valores en tiempo real (puertos visibles) cada:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43"/>
+        <source>Errors, alarms and status every:</source>
+        <translation>Errores, alarmas y estado cada:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44"/>
+        <source>Counters every:</source>
+        <translation>Contadores cada:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="45"/>
+        <source>Device turnaround (added to the wire time):</source>
+        <translation>Tiempo de respuesta del equipo (se suma al tiempo de transmisión):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="46"/>
+        <source>Retries after a lost or corrupted answer:</source>
+        <translation>Reintentos tras una respuesta perdida o dañada:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
+        <source>Language (on the next start):</source>
+        <translation>Idioma (en el próximo inicio):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
+        <translation>En la línea siempre viaja °C; la unidad solo cambia lo que ve y escribe. Los colores siguen el tema del escritorio.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ProfileDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="23"/>
+        <source>Profile for %1</source>
+        <translation>Perfil para %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <source>Setting</source>
+        <translation>Ajuste</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <source>Device now</source>
+        <translation>Equipo ahora</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <source>Profile</source>
+        <translation>Perfil</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="34"/>
+        <source>The dry run&apos;s frames and the apply report appear here.</source>
+        <translation>Aquí aparecen las tramas de la simulación y el informe de la aplicación.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38"/>
+        <source>Apply anyway: the profile is for a %1, this is a %2 (only the settings both have are written)</source>
+        <translation>Aplicar de todos modos: el perfil es para %1 y este equipo es %2 (solo se escriben los ajustes que tienen ambos)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="44"/>
+        <source>Compare again</source>
+        <translation>Comparar de nuevo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="45"/>
+        <source>Dry run</source>
+        <translation>Simulación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="46"/>
+        <source>Apply to device</source>
+        <translation>Aplicar al equipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="47"/>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="66"/>
+        <source>Monitor-only mode is on: nothing is written</source>
+        <translation>El modo solo supervisión está activado: no se escribe nada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="109"/>
+        <source>&lt;b&gt;Refused:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Rechazado:&lt;/b&gt; %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="111"/>
+        <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
+        <translation>
+            <numerusform>Perfil de %1 (%2, software %3), creado: %4. %n ajuste difiere del equipo.</numerusform>
+            <numerusform>Perfil de %1 (%2, software %3), creado: %4. %n ajustes difieren del equipo.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="117"/>
+        <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
+        <translation>
+            <numerusform>Simulación: se enviaría %n trama; no se escribió nada.</numerusform>
+            <numerusform>Simulación: se enviarían %n tramas; no se escribió nada.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="121"/>
+        <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches.</source>
+        <translation>&lt;b&gt;Aplicado.&lt;/b&gt; Todos los valores escritos se volvieron a leer y coinciden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="122"/>
+        <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; See the report below.</source>
+        <translation>&lt;b&gt;No se aplicó todo.&lt;/b&gt; Consulte el informe de abajo.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::SettingsPage</name>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="30"/>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
+        <source>Re&amp;fresh</source>
+        <translation>Ac&amp;tualizar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <source>&amp;Apply</source>
+        <translation>A&amp;plicar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
+        <source>Re&amp;vert</source>
+        <translation>&amp;Revertir</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <source>Save to station &amp;memory</source>
+        <translation>Guardar en la &amp;memoria de la estación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
+        <translation>La temperatura seleccionada es volátil: W-NVS la guarda para que se conserve tras reiniciar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
+        <source>Station actions</source>
+        <translation>Acciones de la estación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
+        <source>Profiles</source>
+        <translation>Perfiles</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
+        <source>Save device settings to a profile…</source>
+        <translation>Guardar los ajustes del equipo en un perfil…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
+        <source>Open a profile (compare, dry run, apply)…</source>
+        <translation>Abrir un perfil (comparar, simular, aplicar)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="49"/>
+        <source>Port:</source>
+        <translation>Puerto:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="126"/>
+        <source>Connect and select a device to see its settings.</source>
+        <translation>Conéctese y seleccione un equipo para ver sus ajustes.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="129"/>
+        <source>Port %1 (%2)</source>
+        <translation>Puerto %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
+        <source>Station</source>
+        <translation>Estación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="139"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="140"/>
+        <source>Alarms, port %1</source>
+        <translation>Alarmas, puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
+        <source>Tool %1, port %2</source>
+        <translation>Herramienta %1, puerto %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
+        <source> (connected)</source>
+        <translation> (conectada)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
+        <source>Dispensing (ALE wire feed)</source>
+        <translation>Dispensado (alimentación de hilo de la ALE)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
+        <source>Feeding</source>
+        <translation>Alimentación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <source>&amp;Apply (%1)</source>
+        <translation>A&amp;plicar (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="192"/>
+        <source>Monitor-only mode is on: nothing is written</source>
+        <translation>El modo solo supervisión está activado: no se escribe nada</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="217"/>
+        <source>Save to station memory</source>
+        <translation>Guardar en la memoria de la estación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="228"/>
+        <source>New address (1-99), or 0 for frames without addresses:</source>
+        <translation>Nueva dirección (1-99), o 0 para tramas sin direcciones:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="235"/>
+        <source>%1
+
+%2
+
+Do you want to continue?</source>
+        <translation>%1
+
+%2
+
+¿Desea continuar?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="250"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
+        <source>Save profile</source>
+        <translation>Guardar perfil</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="251"/>
+        <source>Some settings have not been read yet (%1). Refresh and try again.</source>
+        <translation>Algunos ajustes aún no se han leído (%1). Actualice y vuelva a intentarlo.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="269"/>
+        <source>TipScope profiles (*.json)</source>
+        <translation>Perfiles de TipScope (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
+        <source>Open profile</source>
+        <translation>Abrir perfil</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.h" line="24"/>
+        <source>Settings</source>
+        <translation>Ajustes</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Line</name>
+    <message>
+        <location filename="../lib/link/line.cpp" line="43"/>
+        <source>disconnected</source>
+        <translation>desconectado</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="45"/>
+        <source>connecting to %1</source>
+        <translation>conectando con %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="47"/>
+        <source>connected: %1</source>
+        <translation>conectado: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="49"/>
+        <source>disconnected, retrying every %1 s: %2</source>
+        <translation>desconectado, reintentando cada %1 s: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="53"/>
+        <source>cannot connect: %1</source>
+        <translation>no se puede conectar: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="73"/>
+        <source>disconnected by the user</source>
+        <translation>desconectado por el usuario</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="115"/>
+        <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
+        <translation>sin respuesta a %1 peticiones seguidas (¿cable desenchufado, equipo apagado o direccionamiento incorrecto?)</translation>
+    </message>
+</context>
+</TS>
