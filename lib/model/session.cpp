@@ -223,6 +223,10 @@ void Session::recordTelemetry(StationModel *station) {
         // A sample per tip-temperature reading; the other series carry their latest values.
         connect(port->param("TT"), &Parameter::updated, this, [this, port, key] {
             const auto status = port->param("PS")->number();
+            // A series starting at 0 before its first reading would draw a false drop and spoil
+            // the measurements: record once the setpoint and power are known.
+            if (!port->selectedTemperature() || !port->power())
+                return;
             m_telemetry.append(key, sampleTimeMs(),
                                {qint32(port->tipTemperature().value_or(0)),
                                 qint32(port->selectedTemperature().value_or(0)),
