@@ -113,9 +113,13 @@ struct ChartRig {
     }
 
     // Points in, layout, and one full paint: what the screen needs before it shows the update.
-    double show(const QList<QList<QPointF>> &points, qint64 t0, qint64 t1, QElapsedTimer &timer) {
+    // `shownMs` receives the time when the chart had the points, before the paint.
+    double show(const QList<QList<QPointF>> &points, qint64 t0, qint64 t1, QElapsedTimer &timer,
+                double *shownMs = nullptr) {
         counter.paints = 0;
         widget.showData(gui::ChartData{t0, t1, 0, 400, 0, 100, points});
+        if (shownMs)
+            *shownMs = double(timer.nsecsElapsed()) / 1e6;
         QCoreApplication::processEvents(); // layout, and the paint of the update on screen
         if (counter.paints == 0)
             widget.plotSurface()->repaint();
@@ -128,12 +132,14 @@ struct ChartRig {
 struct UpdateTimes {
     double totalMs = 0;
     double decimateMs = 0; // the part spent asking the telemetry
+    double seriesMs = 0;   // handing the points to the chart
+    double paintMs = 0;    // layout and paint
     qint64 points = 0;
 };
 
 UpdateTimes medianUpdate(ChartRig &rig, const Telemetry &telemetry, const QList<ChartChannel> &cs,
                          const QList<ChartTrace> &traces, qint64 t0, qint64 t1) {
-    QList<double> totals, decimations;
+    QList<double> totals, decimations, handovers, paints;
     UpdateTimes result;
     for (int run = 0; run <= kRuns; ++run) {
         QElapsedTimer timer;
@@ -141,15 +147,20 @@ UpdateTimes medianUpdate(ChartRig &rig, const Telemetry &telemetry, const QList<
         const gui::ChartFrame frame =
             gui::buildFrame(telemetry, cs, traces, t0 - run, t1 - run, rig.widget.plotWidth());
         const double decimated = double(timer.nsecsElapsed()) / 1e6;
-        const double ms = rig.show(frame.points, t0 - run, t1 - run, timer);
+        double shown = 0;
+        const double ms = rig.show(frame.points, t0 - run, t1 - run, timer, &shown);
         if (run > 0) { // the first run warms caches and fonts
             totals.append(ms);
             decimations.append(decimated);
+            handovers.append(shown - decimated);
+            paints.append(ms - shown);
         }
         result.points = frame.pointCount;
     }
     result.totalMs = quantile(totals, 0.5);
     result.decimateMs = quantile(decimations, 0.5);
+    result.seriesMs = quantile(handovers, 0.5);
+    result.paintMs = quantile(paints, 0.5);
     return result;
 }
 
@@ -229,6 +240,7 @@ int runChartBench(const QStringList &args) {
     if (args.contains(QStringLiteral("--help")) || args.contains(QStringLiteral("-h"))) {
         QTextStream(stdout)
             << "Usage: tipscope-bench chart [--seconds N] [--no-gui | --gui-only] [--no-baseline]\n"
+               "                            [--no-naive]\n"
                "Chart redraw over a day of 4 ports at 1920 px, the naive chart, memory, and the\n"
                "GUI's CPU share with the demo line live (each CPU run N seconds, default 60).\n";
         return 0;
@@ -270,6 +282,10 @@ int runChartBench(const QStringList &args) {
                         2);
             printFigure(QStringLiteral("chart.decimate_full_ms"), day.decimateMs,
                         QStringLiteral("ms"), 2);
+            printFigure(QStringLiteral("chart.series_full_ms"), day.seriesMs, QStringLiteral("ms"),
+                        2);
+            printFigure(QStringLiteral("chart.paint_full_ms"), day.paintMs, QStringLiteral("ms"),
+                        2);
             printFigure(QStringLiteral("chart.points_full"), double(day.points),
                         QStringLiteral("points"), 0);
             const qint64 middle = kStartMs + kDayMs / 2;
@@ -282,7 +298,7 @@ int runChartBench(const QStringList &args) {
             printFigure(QStringLiteral("memory.peak_rss_chart_mb"), peakRssMb(),
                         QStringLiteral("MB"));
         }
-        {
+        if (!args.contains(QStringLiteral("--no-naive"))) {
             printNote(QStringLiteral("naive chart: %1 points, this takes a while")
                           .arg(qint64(kSamples) * traces.size()));
             ChartRig rig(traces);

@@ -3,6 +3,7 @@
 #include <QDateTime>
 #include <QLocale>
 #include <cmath>
+#include <optional>
 
 namespace tipscope::gui {
 
@@ -39,12 +40,15 @@ void appendPoint(QList<QPointF> &points, const QPointF &p) {
 }
 } // namespace
 
-QList<QPointF> minMaxPoints(const TelemetryBuffer &buffer, int series, qint64 t0, qint64 t1,
-                            int columns, const SeriesFormat &format, ValueSpan *span) {
+namespace {
+// The points of already decimated columns; `lead` is the last sample before the window, so the
+// curve enters the window from the left edge rather than starting at the first column.
+QList<QPointF> pointsOf(const QList<MinMaxBucket> &buckets,
+                        const std::optional<TelemetryBuffer::Sample> &lead,
+                        const SeriesFormat &format, ValueSpan *span) {
     QList<QPointF> points;
-    const QList<MinMaxBucket> buckets = buffer.decimate(series, t0, t1, qMax(1, columns));
     points.reserve(buckets.size() * 2 + 1);
-    if (const auto lead = buffer.valueAt(series, t0 - 1))
+    if (lead)
         points.append(QPointF(double(lead->timeMs), format.toDisplay(lead->value)));
     for (const MinMaxBucket &b : buckets) {
         const QPointF low(double(b.minTimeMs), format.toDisplay(b.min));
@@ -65,24 +69,51 @@ QList<QPointF> minMaxPoints(const TelemetryBuffer &buffer, int series, qint64 t0
     }
     return points;
 }
+} // namespace
+
+QList<QPointF> minMaxPoints(const TelemetryBuffer &buffer, int series, qint64 t0, qint64 t1,
+                            int columns, const SeriesFormat &format, ValueSpan *span) {
+    return pointsOf(buffer.decimate(series, t0, t1, qMax(1, columns)),
+                    buffer.valueAt(series, t0 - 1), format, span);
+}
 
 ChartFrame buildFrame(const Telemetry &telemetry, const QList<ChartChannel> &channels,
                       const QList<ChartTrace> &traces, qint64 t0, qint64 t1, int columns) {
     ChartFrame frame;
     frame.t0 = t0;
     frame.t1 = t1;
-    frame.points.reserve(traces.size());
-    for (const ChartTrace &trace : traces) {
-        const TelemetryBuffer *buffer = telemetry.buffer(channels.value(trace.channel).key);
-        if (!buffer) {
-            frame.points.append(QList<QPointF>());
+    frame.points.resize(traces.size());
+    // The traces of one channel share a buffer, and one decimation reads them all.
+    QList<int> pending;
+    for (int i = 0; i < traces.size(); ++i)
+        pending.append(i);
+    while (!pending.isEmpty()) {
+        const int channel = traces.at(pending.constFirst()).channel;
+        QList<int> group;
+        for (int i : std::as_const(pending))
+            if (traces.at(i).channel == channel)
+                group.append(i);
+        for (int i : std::as_const(group))
+            pending.removeOne(i);
+        const TelemetryBuffer *buffer = telemetry.buffer(channels.value(channel).key);
+        if (!buffer)
             continue;
+        QList<int> series;
+        for (int i : std::as_const(group))
+            series.append(buffer->seriesIndex(traces.at(i).series));
+        // Block edges: a column's extremes are drawn at their true times, so a column edge moved
+        // by a few samples changes no pixel, and the day window costs a quarter as much.
+        const QList<QList<MinMaxBucket>> buckets =
+            buffer->decimate(series, t0, t1, qMax(1, columns), model::ColumnEdges::Blocks);
+        for (qsizetype g = 0; g < group.size(); ++g) {
+            const ChartTrace &trace = traces.at(group.at(g));
+            ValueSpan span;
+            QList<QPointF> &points = frame.points[group.at(g)];
+            points =
+                pointsOf(buckets.at(g), buffer->valueAt(series.at(g), t0 - 1), trace.format, &span);
+            frame.pointCount += points.size();
+            (trace.format.axis == ChartAxis::Left ? frame.left : frame.right).include(span);
         }
-        ValueSpan span;
-        frame.points.append(minMaxPoints(*buffer, buffer->seriesIndex(trace.series), t0, t1,
-                                         columns, trace.format, &span));
-        frame.pointCount += frame.points.last().size();
-        (trace.format.axis == ChartAxis::Left ? frame.left : frame.right).include(span);
     }
     return frame;
 }

@@ -11,6 +11,7 @@ namespace {
 // Each summary level is 64 times coarser than the one below: few enough levels that append
 // stays cheap, and at most 63 raw samples or blocks are read at each edge of a query range.
 constexpr int kLevelShift = 6;
+static_assert(1 << kLevelShift == TelemetryBuffer::kFinestBlock);
 // The first allocation; storage then doubles up to the capacity.
 constexpr size_t kFirstReserve = 1024;
 

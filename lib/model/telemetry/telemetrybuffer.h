@@ -40,6 +40,19 @@ enum class AppendResult {
     UnknownKey,      // Telemetry only: no buffer of that key was created
 };
 
+// Where decimate() puts the edges between columns.
+enum class ColumnEdges {
+    // Exactly on the time grid: [t0, t1) split into equal columns. Raw samples are read at every
+    // edge, which on a long window costs a cache miss per edge and series.
+    Exact,
+    // For a chart of a long window: when a column holds at least kSnapMinBlocks of the finest
+    // summary blocks, each inner edge moves to the nearest block boundary (at most 32 samples,
+    // well under a column), so whole columns come from the summaries. Every sample still falls
+    // in exactly one column and each column's min and max are exact for the samples it holds,
+    // at their true times: a spike is never lost, it may be counted one column over.
+    Blocks,
+};
+
 // One non-empty time column of a decimated window.
 struct MinMaxBucket {
     qint64 startMs = 0;   // start of the column, whether or not a sample falls on it
@@ -54,6 +67,10 @@ class TelemetryBuffer {
 public:
     // 24 hours at 10 Hz.
     static constexpr int kDefaultCapacity = 864000;
+    // Samples per block of the finest summary level.
+    static constexpr int kFinestBlock = 64;
+    // ColumnEdges::Blocks moves edges only when a column holds this many finest blocks.
+    static constexpr int kSnapMinBlocks = 4;
 
     struct Sample {
         qint64 timeMs = 0;
@@ -102,6 +119,12 @@ public:
     // [t0, t1) split into `buckets` equal time columns; empty columns are left out, so gaps in
     // the data stay visible as gaps.
     [[nodiscard]] QList<MinMaxBucket> decimate(int series, qint64 t0, qint64 t1, int buckets) const;
+    // decimate() of several series over the same columns, one list per entry of `series` (empty
+    // for an unknown series). A chart asks for all the series of a port at once: the search for
+    // the columns' edges does not depend on the series and is done once.
+    [[nodiscard]] QList<QList<MinMaxBucket>> decimate(const QList<int> &series, qint64 t0,
+                                                      qint64 t1, int buckets,
+                                                      ColumnEdges edges = ColumnEdges::Exact) const;
     [[nodiscard]] Stats windowStats(int series, qint64 t0, qint64 t1) const;
 
     // Heap bytes allocated for samples and summaries plus the object itself (series names aside).
@@ -110,6 +133,8 @@ public:
     [[nodiscard]] double bytesPerSamplePerSeries() const;
 
 private:
+    struct Extremes;
+
     // One series' values by ring position: int16 until a value does not fit, then int32.
     class Column {
     public:
@@ -117,6 +142,9 @@ private:
             return m_isWide ? m_wide[size_t(pos)] : qint32(m_narrow[size_t(pos)]);
         }
         void store(qsizetype pos, qint32 value);
+        // Folds `count` values from ring position `pos` (not wrapping), the first of which is
+        // sample number `firstIndex`, into `result`.
+        void scan(qsizetype pos, qsizetype count, qint64 firstIndex, Extremes &result) const;
         void reserve(qsizetype slots);
         [[nodiscard]] qint64 bytes() const;
 
@@ -175,6 +203,15 @@ private:
     [[nodiscard]] Extremes scanRange(int series, qint64 first, qint64 last) const;
     void scanRaw(int series, qint64 first, qint64 last, Extremes &result) const;
     [[nodiscard]] const Level *wholeBlockAt(qint64 index, qint64 last) const;
+    // The sample numbers [first, last) of each non-empty column of decimate(), with the column.
+    struct ColumnRange {
+        int column = 0;
+        qint64 first = 0;
+        qint64 last = 0;
+    };
+    [[nodiscard]] std::vector<ColumnRange> columnRanges(qint64 t0, qint64 t1, int buckets,
+                                                        ColumnEdges edges) const;
+    [[nodiscard]] static qint64 columnStart(qint64 t0, qint64 t1, int buckets, int column);
 
     QStringList m_names;
     int m_capacity;

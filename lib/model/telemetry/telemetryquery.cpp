@@ -5,12 +5,14 @@
 // blocks from the summaries and only the ragged ends raw.
 #include "telemetrybuffer.h"
 
+#include <algorithm>
+
 namespace tipscope::model {
 
 namespace {
 
 // Raw reads stop at multiples of the finest block, where a summary can take over.
-constexpr qint64 kFinestBlockMask = 63;
+constexpr qint64 kFinestBlockMask = TelemetryBuffer::kFinestBlock - 1;
 
 } // namespace
 
@@ -73,34 +75,59 @@ QList<TelemetryBuffer::Sample> TelemetryBuffer::samples(int series, qint64 t0, q
     return result;
 }
 
-QList<MinMaxBucket> TelemetryBuffer::decimate(int series, qint64 t0, qint64 t1, int buckets) const {
-    QList<MinMaxBucket> result;
-    if (!isSeries(series) || t1 <= t0 || buckets <= 0)
-        return result;
-    qint64 from = lowerBound(t0, oldestIndex(), m_total);
-    const qint64 end = lowerBound(t1, from, m_total);
-    if (from == end)
-        return result;
-
-    // Unsigned arithmetic: the span of any two qint64 times fits, and edge k is exactly
-    // t0 + span * k / buckets without the product overflowing.
+// Unsigned arithmetic: the span of any two qint64 times fits, and edge k is exactly
+// t0 + span * k / buckets without the product overflowing.
+qint64 TelemetryBuffer::columnStart(qint64 t0, qint64 t1, int buckets, int column) {
     const quint64 span = quint64(t1) - quint64(t0);
     const quint64 step = span / quint64(buckets);
     const quint64 rest = span % quint64(buckets);
-    const auto edge = [&](int k) {
-        return qint64(quint64(t0) + step * quint64(k) + rest * quint64(k) / quint64(buckets));
-    };
+    return qint64(quint64(t0) + step * quint64(column) + rest * quint64(column) / quint64(buckets));
+}
 
-    result.reserve(qsizetype(qMin<qint64>(buckets, end - from)));
+std::vector<TelemetryBuffer::ColumnRange>
+TelemetryBuffer::columnRanges(qint64 t0, qint64 t1, int buckets, ColumnEdges edges) const {
+    std::vector<ColumnRange> ranges;
+    if (isEmpty() || t1 <= t0 || buckets <= 0)
+        return ranges;
+    qint64 from = lowerBound(t0, oldestIndex(), m_total);
+    const qint64 end = lowerBound(t1, from, m_total);
+    ranges.reserve(size_t(qMin<qint64>(buckets, end - from)));
+    const bool snap = edges == ColumnEdges::Blocks &&
+                      (end - from) / buckets >= qint64(kSnapMinBlocks) * kFinestBlock;
     for (int k = 0; k < buckets && from < end; ++k) {
-        const qint64 bucketEnd = k + 1 == buckets ? t1 : edge(k + 1);
-        const qint64 to = gallopLowerBound(bucketEnd, from, end);
-        if (to > from) {
-            const Extremes e = scanRange(series, from, to);
-            result.append(MinMaxBucket{edge(k), timeAtIndex(e.minIndex), e.min,
-                                       timeAtIndex(e.maxIndex), e.max, int(to - from)});
-        }
+        const qint64 columnEnd = k + 1 == buckets ? t1 : columnStart(t0, t1, buckets, k + 1);
+        qint64 to = gallopLowerBound(columnEnd, from, end);
+        if (snap && k + 1 < buckets) // the last edge is the window's, never moved
+            to = qBound(from, (to + kFinestBlock / 2) & ~kFinestBlockMask, end);
+        if (to > from)
+            ranges.push_back({k, from, to});
         from = to;
+    }
+    return ranges;
+}
+
+QList<MinMaxBucket> TelemetryBuffer::decimate(int series, qint64 t0, qint64 t1, int buckets) const {
+    return decimate(QList<int>{series}, t0, t1, buckets).constFirst();
+}
+
+QList<QList<MinMaxBucket>> TelemetryBuffer::decimate(const QList<int> &series, qint64 t0, qint64 t1,
+                                                     int buckets, ColumnEdges edges) const {
+    QList<QList<MinMaxBucket>> result(series.size());
+    const std::vector<ColumnRange> ranges = columnRanges(t0, t1, buckets, edges);
+    for (qsizetype i = 0; i < series.size(); ++i)
+        if (isSeries(series.at(i)))
+            result[i].reserve(qsizetype(ranges.size()));
+    // Column by column, all series at once: the summaries of one block keep the series side by
+    // side, so one cache line serves them all (series by series was twice as slow).
+    for (const ColumnRange &r : ranges) {
+        const qint64 start = columnStart(t0, t1, buckets, r.column);
+        for (qsizetype i = 0; i < series.size(); ++i) {
+            if (!isSeries(series.at(i)))
+                continue;
+            const Extremes e = scanRange(series.at(i), r.first, r.last);
+            result[i].append(MinMaxBucket{start, timeAtIndex(e.minIndex), e.min,
+                                          timeAtIndex(e.maxIndex), e.max, int(r.last - r.first)});
+        }
     }
     return result;
 }
@@ -149,24 +176,51 @@ TelemetryBuffer::Extremes TelemetryBuffer::scanRange(int series, qint64 first, q
 
 void TelemetryBuffer::scanRaw(int series, qint64 first, qint64 last, Extremes &result) const {
     const Column &column = m_columns[size_t(series)];
-    // A local copy: writing through the reference each sample would force it out to memory.
-    Extremes r = result;
-    qsizetype pos = position(first);
-    for (qint64 index = first; index < last; ++index) {
-        const qint32 value = column.at(pos);
-        if (r.minIndex < 0 || value < r.min) {
-            r.min = value;
-            r.minIndex = index;
-        }
-        if (r.maxIndex < 0 || value > r.max) {
-            r.max = value;
-            r.maxIndex = index;
-        }
-        r.sum += value;
-        if (++pos == m_capacity)
-            pos = 0;
+    // At most two contiguous pieces: up to the end of the ring, then from its start.
+    const qsizetype pos = position(first);
+    const qsizetype count = qsizetype(last - first);
+    const qsizetype head = qMin<qsizetype>(count, qsizetype(m_capacity) - pos);
+    column.scan(pos, head, first, result);
+    if (head < count)
+        column.scan(0, count - head, first + head, result);
+}
+
+namespace {
+
+// Two passes over a few dozen values: a branch-free min/max/sum the compiler can vectorise, then
+// the first position of each extreme, only when it beats the one already held (the earliest
+// extreme wins, as in the summaries).
+template <typename T, typename Extremes>
+void scanValues(const T *values, qsizetype count, qint64 firstIndex, Extremes &r) {
+    if (count <= 0)
+        return;
+    T low = values[0];
+    T high = values[0];
+    qint64 sum = 0;
+    for (qsizetype i = 0; i < count; ++i) {
+        low = std::min(low, values[i]);
+        high = std::max(high, values[i]);
+        sum += values[i];
     }
-    result = r;
+    if (r.minIndex < 0 || qint32(low) < r.min) {
+        r.min = low;
+        r.minIndex = firstIndex + (std::find(values, values + count, low) - values);
+    }
+    if (r.maxIndex < 0 || qint32(high) > r.max) {
+        r.max = high;
+        r.maxIndex = firstIndex + (std::find(values, values + count, high) - values);
+    }
+    r.sum += sum;
+}
+
+} // namespace
+
+void TelemetryBuffer::Column::scan(qsizetype pos, qsizetype count, qint64 firstIndex,
+                                   Extremes &result) const {
+    if (m_isWide)
+        scanValues(m_wide.data() + pos, count, firstIndex, result);
+    else
+        scanValues(m_narrow.data() + pos, count, firstIndex, result);
 }
 
 // The coarsest block that starts at `index` and ends by `last`. Callers only pass ranges of

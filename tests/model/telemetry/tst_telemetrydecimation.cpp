@@ -33,6 +33,11 @@ bool operator==(const MinMaxBucket &a, const MinMaxBucket &b) {
            a.maxTimeMs == b.maxTimeMs && a.max == b.max && a.count == b.count;
 }
 
+bool same(const QList<MinMaxBucket> &a, const QList<MinMaxBucket> &b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const MinMaxBucket &x, const MinMaxBucket &y) { return x == y; });
+}
+
 // Windows that start and end anywhere: on samples, between them, inside blocks, before the
 // oldest sample held and after the newest; plus the whole history.
 QList<Window> randomWindows(SampleGenerator &g, const ReferenceBuffer &reference, int count) {
@@ -80,6 +85,8 @@ private Q_SLOTS:
     void randomHistories_data();
     void decimationKeepsExactMinAndMaxOfEveryBucket_data() { randomHistories_data(); }
     void decimationKeepsExactMinAndMaxOfEveryBucket();
+    void blockEdgesKeepExactExtremesOfEveryColumn_data() { randomHistories_data(); }
+    void blockEdgesKeepExactExtremesOfEveryColumn();
     void windowStatsMatchBruteForce_data() { randomHistories_data(); }
     void windowStatsMatchBruteForce();
     void oneSampleSpikeInAFlatDaySurvivesDecimation_data();
@@ -130,6 +137,81 @@ void TestTelemetryDecimation::decimationKeepsExactMinAndMaxOfEveryBucket() {
     }
 }
 
+// ColumnEdges::Blocks may move each inner edge by up to half a finest block, so the columns are
+// checked against the samples they say they hold: consecutive runs of the window's samples,
+// each column's extremes exact (earliest on ties) at their true times, every sample in exactly
+// one column, and every edge within half a block of the exact one. Asking for several series at
+// once answers what asking for each alone does.
+void TestTelemetryDecimation::blockEdgesKeepExactExtremesOfEveryColumn() {
+    QFETCH(int, capacity);
+    QFETCH(int, count);
+    QFETCH(bool, wide);
+    SampleGenerator g(99, 2, wide);
+    TelemetryBuffer buffer({QStringLiteral("tip"), QStringLiteral("power")}, capacity);
+    ReferenceBuffer reference(capacity);
+    fill(buffer, reference, g, count);
+    const auto &samples = reference.samples();
+    const auto firstAtOrAfter = [&samples](qint64 t) {
+        return qsizetype(
+            std::lower_bound(samples.begin(), samples.end(), t,
+                             [](const ReferenceSample &s, qint64 v) { return s.timeMs < v; }) -
+            samples.begin());
+    };
+    int snappedWindows = 0;
+    for (Window w : randomWindows(g, reference, 150)) {
+        w.buckets = qMin(w.buckets, 64); // long columns, where edges do move
+        const QList<QList<MinMaxBucket>> both =
+            buffer.decimate(QList<int>{0, 1}, w.t0, w.t1, w.buckets, ColumnEdges::Blocks);
+        QCOMPARE(both.size(), 2);
+        QCOMPARE(both.at(0).size(), both.at(1).size());
+        const QList<MinMaxBucket> exact = reference.decimate(0, w.t0, w.t1, w.buckets);
+        const QString where =
+            QStringLiteral("[%1, %2), %3 buckets").arg(w.t0).arg(w.t1).arg(w.buckets);
+        qsizetype cursor = firstAtOrAfter(w.t0);
+        const qsizetype end = firstAtOrAfter(w.t1);
+        for (int series = 0; series < 2; ++series) {
+            cursor = firstAtOrAfter(w.t0);
+            qsizetype exactCursor = cursor;
+            qsizetype exactIndex = 0;
+            bool moved = false;
+            for (const MinMaxBucket &b : both.at(series)) {
+                QVERIFY2(b.count > 0 && cursor + b.count <= end, qPrintable(where));
+                MinMaxBucket want{b.startMs, 0, 0, 0, 0, b.count};
+                for (qsizetype i = cursor; i < cursor + b.count; ++i) {
+                    const qint32 v = samples[size_t(i)].values.at(series);
+                    const qint64 t = samples[size_t(i)].timeMs;
+                    if (i == cursor || v < want.min)
+                        want = {want.startMs, t, v, want.maxTimeMs, want.max, b.count};
+                    if (i == cursor || v > want.max)
+                        want = {want.startMs, want.minTimeMs, want.min, t, v, b.count};
+                }
+                QVERIFY2(b == want, qPrintable(where + QStringLiteral(": got ") + describe(b) +
+                                               QStringLiteral(", want ") + describe(want)));
+                cursor += b.count;
+                // The exact columns up to this one's start end within half a block of here.
+                while (exactIndex < exact.size() && exact.at(exactIndex).startMs <= b.startMs)
+                    exactCursor += exact.at(exactIndex++).count;
+                QVERIFY2(qAbs(exactCursor - cursor) <= TelemetryBuffer::kFinestBlock / 2,
+                         qPrintable(where));
+                moved = moved || exactCursor != cursor;
+            }
+            QVERIFY2(cursor == end, qPrintable(where)); // no sample left out
+            if (series == 0 && moved)
+                ++snappedWindows;
+            QVERIFY(
+                same(both.at(series),
+                     buffer.decimate(QList<int>{series}, w.t0, w.t1, w.buckets, ColumnEdges::Blocks)
+                         .constFirst()));
+        }
+        QVERIFY(same(buffer.decimate(QList<int>{0, 1}, w.t0, w.t1, w.buckets).at(1),
+                     buffer.decimate(1, w.t0, w.t1, w.buckets)));
+    }
+    // Not a vacuous pass: unless the ring is too small for a column of several blocks, edges
+    // did move in some windows.
+    if (capacity >= TelemetryBuffer::kSnapMinBlocks * TelemetryBuffer::kFinestBlock * 4)
+        QVERIFY(snappedWindows > 0);
+}
+
 void TestTelemetryDecimation::windowStatsMatchBruteForce() {
     QFETCH(int, capacity);
     QFETCH(int, count);
@@ -178,23 +260,26 @@ void TestTelemetryDecimation::oneSampleSpikeInAFlatDaySurvivesDecimation() {
     }
     const qint64 spikeTime = kDayStartMs + qint64(overwritten + spikeIndex) * 100;
 
-    const QList<MinMaxBucket> buckets =
-        buffer.decimate(0, buffer.firstTime(), buffer.lastTime() + 1, 1920);
-    QCOMPARE(buckets.size(), 1920);
-    int total = 0;
-    int spikes = 0;
-    for (const MinMaxBucket &b : buckets) {
-        total += b.count;
-        if (b.min == flat && b.max == flat)
-            continue;
-        ++spikes;
-        const bool up = spikeValue > flat;
-        QCOMPARE(up ? b.max : b.min, spikeValue);
-        QCOMPARE(up ? b.maxTimeMs : b.minTimeMs, spikeTime);
-        QCOMPARE(up ? b.min : b.max, flat);
+    for (ColumnEdges edges : {ColumnEdges::Exact, ColumnEdges::Blocks}) {
+        const QList<MinMaxBucket> buckets =
+            buffer.decimate(QList<int>{0}, buffer.firstTime(), buffer.lastTime() + 1, 1920, edges)
+                .constFirst();
+        QCOMPARE(buckets.size(), 1920);
+        int total = 0;
+        int spikes = 0;
+        for (const MinMaxBucket &b : buckets) {
+            total += b.count;
+            if (b.min == flat && b.max == flat)
+                continue;
+            ++spikes;
+            const bool up = spikeValue > flat;
+            QCOMPARE(up ? b.max : b.min, spikeValue);
+            QCOMPARE(up ? b.maxTimeMs : b.minTimeMs, spikeTime);
+            QCOMPARE(up ? b.min : b.max, flat);
+        }
+        QCOMPARE(spikes, 1);
+        QCOMPARE(total, capacity);
     }
-    QCOMPARE(spikes, 1);
-    QCOMPARE(total, capacity);
 }
 
 void TestTelemetryDecimation::gapsInTheDataStayGaps() {
