@@ -240,9 +240,10 @@ int runChartBench(const QStringList &args) {
     if (args.contains(QStringLiteral("--help")) || args.contains(QStringLiteral("-h"))) {
         QTextStream(stdout)
             << "Usage: tipscope-bench chart [--seconds N] [--no-gui | --gui-only] [--no-baseline]\n"
-               "                            [--no-naive]\n"
+               "                            [--no-naive] [--png-day FILE] [--png FILE]\n"
                "Chart redraw over a day of 4 ports at 1920 px, the naive chart, memory, and the\n"
-               "GUI's CPU share with the demo line live (each CPU run N seconds, default 60).\n";
+               "GUI's CPU share with the demo line live (each CPU run N seconds, default 60).\n"
+               "--png-day and --png save the chart of the day and of the minute as images.\n";
         return 0;
     }
     const auto option = [&args](const char *name, const QString &fallback) {
@@ -288,9 +289,13 @@ int runChartBench(const QStringList &args) {
                         2);
             printFigure(QStringLiteral("chart.points_full"), double(day.points),
                         QStringLiteral("points"), 0);
+            if (const QString png = option("--png-day", QString()); !png.isEmpty())
+                rig.widget.toImage().save(png);
             const qint64 middle = kStartMs + kDayMs / 2;
             const UpdateTimes minute =
                 medianUpdate(rig, telemetry, channels, traces, middle, middle + 60'000);
+            if (const QString png = option("--png", QString()); !png.isEmpty())
+                rig.widget.toImage().save(png); // the last update: a minute of the day
             printFigure(QStringLiteral("chart.redraw_1min_ms"), minute.totalMs,
                         QStringLiteral("ms"), 2);
             printFigure(QStringLiteral("chart.decimate_1min_ms"), minute.decimateMs,

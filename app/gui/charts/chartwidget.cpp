@@ -32,6 +32,15 @@ void styleValueAxis(QValueAxis *axis) {
 }
 } // namespace
 
+// One pixel wide: the raster engine draws such pens with its cosmetic line stroker. A wider pen
+// is stroked into a polygon and filled, which for a min/max zigzag of thousands of segments
+// took over a minute a frame (tipscope-bench chart).
+QPen tracePen(const ChartSeriesStyle &style) {
+    QPen pen(style.color, 1, style.style);
+    pen.setCosmetic(true);
+    return pen;
+}
+
 ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
     chart = new QChart;
     chart->setAnimationOptions(QChart::NoAnimation); // animations re-run on every replace()
@@ -147,16 +156,14 @@ void ChartWidget::setSeries(const QList<ChartSeriesStyle> &styles) {
     }
     d->series.clear();
     d->styles = styles;
+    d->points = QList<QList<QPointF>>(styles.size());
     bool anyRight = false;
     for (const ChartSeriesStyle &style : styles) {
+        // The series stays empty: it gives the legend its entry and nothing else. The curve is
+        // drawn by ChartPlotView (see drawTraces()).
         auto *s = new QLineSeries;
         s->setName(style.name);
-        // One pixel wide: the raster engine draws such pens with its cosmetic line stroker. A
-        // wider pen is stroked into a polygon and filled, which for a min/max zigzag of
-        // thousands of segments took over a minute a frame (tipscope-bench chart).
-        QPen pen(style.color, 1, style.style);
-        pen.setCosmetic(true);
-        s->setPen(pen);
+        s->setPen(tracePen(style));
         d->chart->addSeries(s);
         s->attachAxis(d->timeAxis);
         s->attachAxis(style.axis == ChartAxis::Left ? d->leftAxis : d->rightAxis);
@@ -196,32 +203,19 @@ void ChartWidget::setAxisRange(ChartAxis axis, double min, double max) {
 }
 
 void ChartWidget::setPoints(int index, const QList<QPointF> &points) {
-    if (index >= 0 && index < d->series.size())
-        d->series.at(index)->replace(points);
+    if (index >= 0 && index < d->points.size()) {
+        d->points[index] = points;
+        d->view->viewport()->update();
+    }
 }
 
 void ChartWidget::showData(const ChartData &data) {
-    const qint64 t1 = qMax(data.t1, data.t0 + 1);
-    const bool timeMoves = data.t0 != d->t0 || t1 != d->t1;
-    const bool moves[2] = {d->ranges[0][0] != data.leftMin || d->ranges[0][1] != data.leftMax,
-                           d->ranges[1][0] != data.rightMin || d->ranges[1][1] != data.rightMax};
-    // Qt Charts maps a series' points to the screen (and strokes its hover shape, the dearest
-    // part of a redraw) on every replace() and again on every range change of an axis it is
-    // attached to. A series whose axis is about to move gets its points silently, and the range
-    // change maps them once; the others are replaced normally.
-    for (int i = 0; i < d->series.size() && i < data.points.size(); ++i) {
-        const bool left = d->styles.at(i).axis == ChartAxis::Left;
-        QLineSeries *s = d->series.at(i);
-        if (timeMoves || moves[left ? 0 : 1]) {
-            const QSignalBlocker quiet(s);
-            s->replace(data.points.at(i));
-        } else {
-            s->replace(data.points.at(i));
-        }
-    }
+    for (int i = 0; i < d->points.size(); ++i)
+        d->points[i] = data.points.value(i);
     setAxisRange(ChartAxis::Left, data.leftMin, data.leftMax);
     setAxisRange(ChartAxis::Right, data.rightMin, data.rightMax);
-    setTimeRange(data.t0, t1);
+    setTimeRange(data.t0, qMax(data.t1, data.t0 + 1));
+    d->view->viewport()->update();
 }
 
 void ChartWidget::setMarkers(const QList<ChartMarker> &markers) {
@@ -250,7 +244,7 @@ int ChartWidget::seriesCount() const {
 }
 
 qsizetype ChartWidget::pointCount(int index) const {
-    return index >= 0 && index < d->series.size() ? d->series.at(index)->count() : 0;
+    return d->points.value(index).size();
 }
 
 qint64 ChartWidget::timeStart() const {
@@ -285,9 +279,11 @@ double ChartWidget::xAt(qint64 timeMs) const {
 }
 
 QPointF ChartWidget::seriesPosition(int index, const QPointF &value) const {
-    if (index < 0 || index >= d->series.size())
+    if (index < 0 || index >= d->styles.size())
         return {};
-    return d->chart->mapToPosition(value, d->series.at(index));
+    const QRectF p = d->plot();
+    return {p.left() + (value.x() - double(d->t0)) / double(d->t1 - d->t0) * p.width(),
+            d->yAt(d->styles.at(index).axis, value.y(), p)};
 }
 
 QString ChartWidget::markerTooltipAt(double x) const {

@@ -5,10 +5,12 @@
 //
 // The widget holds no history. The page gives it, per redraw, the points of each series (already
 // decimated to the plot's width, see ChartFrame), the time range, the axis ranges (showData()),
-// the event markers and the alarm bands; each series gets exactly one QLineSeries::replace() per
-// redraw (append() restrokes the whole path per point). Lines are one pixel wide: wider pens are
-// stroked into polygons, which for a min/max zigzag costs seconds a frame. No animations and no
-// OpenGL: OpenGL series ignore pen styles and may not run headless.
+// the event markers and the alarm bands. Qt Charts draws the axes, grid and legend; the curves
+// are painted by the widget itself (QLineSeries builds a path and strokes a hover outline for
+// every new set of points, which cost more than the drawing). A curve with fewer points than
+// the plot has pixel columns is a one-pixel polyline in its pen style; a denser one (a min/max
+// zigzag) is one opaque vertical run per pixel column, paler when its style is dashed or
+// dotted, and power curves are drawn beneath temperatures. No animations and no OpenGL.
 //
 // What people do with the mouse and keyboard comes back as requests, not as a changed view: the
 // page owns the time window (ChartViewport) and redraws. Wheel: zoomRequested() about the

@@ -16,6 +16,9 @@ class QRubberBand;
 
 namespace tipscope::gui {
 
+// The pen of a curve, for the plot and for its legend entry.
+[[nodiscard]] QPen tracePen(const ChartSeriesStyle &style);
+
 class ChartPlotView : public QChartView {
     Q_OBJECT
 public:
@@ -34,6 +37,11 @@ protected:
 private:
     enum class Drag { None, Pan, Band };
 
+    // The curves, as polylines in the plot's pixels. QLineSeries is not used for them: for
+    // every new set of points it builds a path and strokes a hover outline of it, which cost
+    // more than painting the curve itself.
+    void drawTraces(QPainter &painter, const QRectF &plot) const;
+    void drawColumns(QPainter &painter, const QPolygonF &line, const QColor &color) const;
     void drawBands(QPainter &painter, const QRectF &plot) const;
     void drawMarkers(QPainter &painter, const QRectF &plot) const;
     [[nodiscard]] double msPerPixel() const;
@@ -63,8 +71,9 @@ public:
     QCategoryAxis *timeAxis;
     QValueAxis *leftAxis;
     QValueAxis *rightAxis;
-    QList<QLineSeries *> series;
+    QList<QLineSeries *> series; // legend entries only, never given points
     QList<ChartSeriesStyle> styles;
+    QList<QList<QPointF>> points; // per series, in display units against time in ms
     QGraphicsLineItem *crosshair;
     QGraphicsSimpleTextItem *emptyText;
     QString title;

@@ -1,0 +1,141 @@
+// The chart's own drawing of curves, read back from the pixels of the real widget: a one-sample
+// spike in a day of data reaches the screen, temperatures stay on top of a dense power curve, a
+// gap in the data stays a gap, and a sparse curve is drawn as a line between its points.
+#include "charts/chartframe.h"
+#include "charts/chartwidget.h"
+
+#include <QTest>
+
+using namespace tipscope;
+using namespace tipscope::gui;
+using model::TelemetryBuffer;
+
+namespace {
+constexpr qint64 kT0 = 1'700'000'000'000;
+constexpr qint64 kDayMs = 86'400'000;
+const QColor kTip(0x00, 0x72, 0xB2);
+const QColor kPower(0xD5, 0x5E, 0x00);
+
+// Whether a pixel of `color` lies within `slack` pixels of `at` in the chart's image.
+bool colorNear(const QImage &image, QPointF at, const QColor &color, int slack = 1) {
+    for (int dx = -slack; dx <= slack; ++dx)
+        for (int dy = -slack; dy <= slack; ++dy) {
+            const QPoint p(int(at.x()) + dx, int(at.y()) + dy);
+            if (image.valid(p) && image.pixelColor(p).rgb() == color.rgb())
+                return true;
+        }
+    return false;
+}
+
+// Pixels of `color` in the pixel column `x`, between the plot's top and bottom.
+int colorInColumn(const QImage &image, int x, const QRectF &plot, const QColor &color) {
+    int n = 0;
+    for (int y = int(plot.top()); y < int(plot.bottom()); ++y)
+        n += image.pixelColor(x, y).rgb() == color.rgb() ? 1 : 0;
+    return n;
+}
+} // namespace
+
+class TestChartWidget : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup() { delete m_chart; }
+    void aOneSampleSpikeInADayReachesTheScreen();
+    void temperaturesAreDrawnOverADensePowerCurve();
+    void aGapInDenseDataStaysEmpty();
+    void aSparseCurveIsALineThroughItsPoints();
+
+private:
+    void show(qint64 t0, qint64 t1, const QList<QList<QPointF>> &points);
+
+    ChartWidget *m_chart = nullptr;
+};
+
+void TestChartWidget::init() {
+    m_chart = new ChartWidget;
+    m_chart->setSeries({{QStringLiteral("tip"), kTip, Qt::SolidLine, ChartAxis::Left},
+                        {QStringLiteral("power"), kPower, Qt::DotLine, ChartAxis::Right}});
+    m_chart->resize(1200, 600);
+    m_chart->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_chart));
+}
+
+void TestChartWidget::show(qint64 t0, qint64 t1, const QList<QList<QPointF>> &points) {
+    m_chart->showData(ChartData{t0, t1, 0, 1000, 0, 100, points});
+    QCoreApplication::processEvents();
+}
+
+void TestChartWidget::aOneSampleSpikeInADayReachesTheScreen() {
+    TelemetryBuffer buffer({QStringLiteral("tip")});
+    const int spikeAt = 612'345;
+    for (int i = 0; i < 864'000; ++i)
+        buffer.append(kT0 + i * 100, {i == spikeAt ? 900 : 340 + (i * 7919) % 21});
+    const SeriesFormat f = seriesFormat(QStringLiteral("tip"), model::TemperatureUnit::Celsius);
+    show(kT0, kT0 + kDayMs, {});
+    const QList<QPointF> points =
+        minMaxPoints(buffer, 0, kT0, kT0 + kDayMs, m_chart->plotWidth(), f);
+    QVERIFY(points.size() > m_chart->plotWidth()); // dense: drawn as columns
+    show(kT0, kT0 + kDayMs, {points, {}});
+    const QImage image = m_chart->toImage();
+    const QPointF spike = m_chart->seriesPosition(0, QPointF(double(kT0 + spikeAt * 100LL), 900));
+    QVERIFY2(colorNear(image, spike, kTip),
+             qPrintable(QStringLiteral("no tip pixel at %1,%2").arg(spike.x()).arg(spike.y())));
+    // Nowhere else does the curve reach that high.
+    const QPointF elsewhere = m_chart->seriesPosition(0, QPointF(double(kT0 + 3'600'000), 900));
+    QVERIFY(!colorNear(image, elsewhere, kTip, 3));
+}
+
+void TestChartWidget::temperaturesAreDrawnOverADensePowerCurve() {
+    // Power bursts from 0 to 100 % in every column; the tip sits at 500 across the day.
+    QList<QPointF> tip;
+    QList<QPointF> power;
+    const int columns = m_chart->plotWidth();
+    for (int k = 0; k < columns * 2; ++k) {
+        const double t = double(kT0) + double(kDayMs) * k / (columns * 2);
+        tip.append(QPointF(t, 500 + (k % 2)));
+        power.append(QPointF(t, k % 2 ? 100 : 0));
+    }
+    show(kT0, kT0 + kDayMs, {tip, power});
+    const QImage image = m_chart->toImage();
+    const QRectF plot = m_chart->plotArea();
+    int tipOnTop = 0;
+    int checked = 0;
+    for (int x = int(plot.left()) + 2; x < int(plot.right()) - 2; x += 97, ++checked) {
+        const QPointF at = m_chart->seriesPosition(0, QPointF(m_chart->timeAt(x + 0.5), 500));
+        tipOnTop += image.pixelColor(x, int(at.y())).rgb() == kTip.rgb() ? 1 : 0;
+        // The power column fills the rest, in the paler colour of a dotted curve.
+        QVERIFY(colorInColumn(image, x, plot, kPower) == 0);
+    }
+    QCOMPARE(tipOnTop, checked);
+}
+
+void TestChartWidget::aGapInDenseDataStaysEmpty() {
+    QList<QPointF> tip;
+    const int columns = m_chart->plotWidth();
+    for (int k = 0; k < columns * 2; ++k) {
+        if (k > columns / 2 && k < columns) // a quarter of the day without samples
+            continue;
+        tip.append(QPointF(double(kT0) + double(kDayMs) * k / (columns * 2), 300 + (k % 7)));
+    }
+    show(kT0, kT0 + kDayMs, {tip, {}});
+    const QImage image = m_chart->toImage();
+    const QRectF plot = m_chart->plotArea();
+    const int inGap = int(m_chart->xAt(kT0 + kDayMs * 3 / 8));
+    const int before = int(m_chart->xAt(kT0 + kDayMs / 8));
+    QCOMPARE(colorInColumn(image, inGap, plot, kTip), 0);
+    QVERIFY(colorInColumn(image, before, plot, kTip) > 0);
+}
+
+void TestChartWidget::aSparseCurveIsALineThroughItsPoints() {
+    const qint64 t1 = kT0 + 60'000;
+    show(kT0, t1, {{QPointF(double(kT0), 200), QPointF(double(t1), 600)}, {}});
+    const QImage image = m_chart->toImage();
+    // Half way along, the line is half way up.
+    const QPointF middle = m_chart->seriesPosition(0, QPointF(double(kT0 + 30'000), 400));
+    QVERIFY(colorNear(image, middle, kTip));
+    QCOMPARE(m_chart->pointCount(0), 2);
+}
+
+QTEST_MAIN(TestChartWidget)
+#include "tst_chartwidget.moc"
