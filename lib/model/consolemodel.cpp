@@ -32,7 +32,12 @@ QString commandName(const Frame &f) {
 
 ConsoleModel::ConsoleModel(QObject *parent, int capacity)
     : QAbstractTableModel(parent)
-    , m_capacity(qMax(10, capacity)) {}
+    , m_batch(this)
+    , m_capacity(qMax(10, capacity)) {
+    m_batch.setSingleShot(true);
+    m_batch.setInterval(kBatchMs);
+    connect(&m_batch, &QTimer::timeout, this, &ConsoleModel::flush);
+}
 
 void ConsoleModel::attach(link::FrameTap *tap) {
     disconnect(m_connection);
@@ -86,32 +91,44 @@ ConsoleEntry ConsoleModel::fromTap(const link::TapEvent &e) {
 }
 
 void ConsoleModel::add(const ConsoleEntry &e) {
-    if (m_paused) {
-        m_held.append(e);
-        if (m_held.size() > m_capacity)
-            m_held.removeFirst();
+    QList<ConsoleEntry> &queue = m_paused ? m_held : m_pending;
+    queue.append(e);
+    if (queue.size() > m_capacity) // older than anything the table could still show
+        queue.removeFirst();
+    if (!m_paused && !m_batch.isActive())
+        m_batch.start();
+}
+
+void ConsoleModel::flush() {
+    m_batch.stop();
+    if (m_pending.isEmpty())
         return;
-    }
+    const QList<ConsoleEntry> batch = std::exchange(m_pending, {});
     if (m_originUs < 0)
-        m_originUs = e.monotonicUs;
-    if (int(m_entries.size()) >= m_capacity) {
-        beginRemoveRows({}, 0, 0);
-        m_entries.pop_front();
+        m_originUs = batch.constFirst().monotonicUs;
+    const int overflow =
+        qMin(int(m_entries.size()), int(m_entries.size() + batch.size()) - m_capacity);
+    if (overflow > 0) {
+        beginRemoveRows({}, 0, overflow - 1);
+        m_entries.erase(m_entries.begin(), m_entries.begin() + overflow);
         endRemoveRows();
     }
     const int row = int(m_entries.size());
-    beginInsertRows({}, row, row);
-    m_entries.push_back(e);
+    beginInsertRows({}, row, row + int(batch.size()) - 1);
+    m_entries.insert(m_entries.end(), batch.begin(), batch.end());
     endInsertRows();
 }
 
 void ConsoleModel::setPaused(bool paused) {
+    if (paused)
+        flush(); // what arrived before the pause is shown, not held
     m_paused = paused;
     if (paused)
         return;
-    const QList<ConsoleEntry> held = std::exchange(m_held, {});
-    for (const ConsoleEntry &e : held)
-        add(e);
+    m_pending.append(std::exchange(m_held, {}));
+    while (m_pending.size() > m_capacity)
+        m_pending.removeFirst();
+    flush();
 }
 
 void ConsoleModel::setRelativeTime(bool relative) {
@@ -123,7 +140,9 @@ void ConsoleModel::setRelativeTime(bool relative) {
 void ConsoleModel::clear() {
     beginResetModel();
     m_entries.clear();
+    m_pending.clear();
     m_held.clear();
+    m_batch.stop();
     m_originUs = -1;
     endResetModel();
 }

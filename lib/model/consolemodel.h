@@ -3,7 +3,10 @@
 // It keeps the last `capacity` entries of the line's FrameTap (TX and RX chunks, decoded frames
 // and decode errors, line notes) and presents them as a table: time, direction, device, header,
 // command and its catalog name, data, BCC, hex, ASCII, and a remark (error or NAK meaning). While
-// paused, new entries wait in a buffer and appear on resume, so pausing loses nothing. Filters
+// paused, new entries wait in a buffer and appear on resume, so pausing loses nothing. Entries
+// reach the table in batches, at most every kBatchMs (or at flush()): a busy line taps a few
+// hundred events a second, and a row inserted at a time kept the filter proxy and the view busy
+// even with the console hidden. Filters
 // (direction, device address, command text) act on the view through filterAccepts().
 #pragma once
 
@@ -11,6 +14,7 @@
 
 #include <QAbstractTableModel>
 #include <QPointer>
+#include <QTimer>
 #include <deque>
 
 namespace tipscope::model {
@@ -45,6 +49,8 @@ public:
         ColumnCount
     };
 
+    static constexpr int kBatchMs = 100;
+
     explicit ConsoleModel(QObject *parent = nullptr, int capacity = 20000);
 
     void attach(link::FrameTap *tap);
@@ -52,6 +58,8 @@ public:
     [[nodiscard]] bool isPaused() const { return m_paused; }
     void setRelativeTime(bool relative);
     void clear();
+    // Shows the entries that arrived since the last batch now.
+    void flush();
 
     [[nodiscard]] int rowCount(const QModelIndex &parent = {}) const override;
     [[nodiscard]] int columnCount(const QModelIndex &parent = {}) const override;
@@ -76,7 +84,9 @@ private:
     [[nodiscard]] QString timeText(const ConsoleEntry &e) const;
 
     std::deque<ConsoleEntry> m_entries;
-    QList<ConsoleEntry> m_held;
+    QList<ConsoleEntry> m_pending; // arrived, not yet in the table
+    QList<ConsoleEntry> m_held;    // arrived while paused
+    QTimer m_batch;
     int m_capacity;
     bool m_paused = false;
     bool m_relative = false;

@@ -335,6 +335,7 @@ void ConsolePage::setPaused(bool paused) {
 
 bool ConsolePage::saveTo(const QString &path, QString *error) {
     QString why;
+    m_model->flush(); // the file has every row up to now
     const bool ok = m_model->saveText(path, &why);
     if (!ok && error)
         *error = why;

@@ -1,0 +1,91 @@
+// ConsoleModel takes the line's tap events in batches: a burst becomes one insertion, in order,
+// nothing is lost below the capacity, the oldest rows go first above it, and pausing holds rows
+// without dropping them.
+#include "model/consolemodel.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace tipscope;
+using model::ConsoleModel;
+
+namespace {
+QString noteAt(const ConsoleModel &m, int row) {
+    return m.entry(row).remark;
+}
+} // namespace
+
+class TestConsoleModel : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void aBurstIsInsertedAtOnceAndInOrder();
+    void flushShowsWhatArrivedWithoutWaiting();
+    void beyondTheCapacityTheOldestRowsGo();
+    void pauseHoldsRowsAndResumeShowsThemAll();
+};
+
+void TestConsoleModel::aBurstIsInsertedAtOnceAndInOrder() {
+    link::FrameTap tap;
+    ConsoleModel model(nullptr, 1000);
+    model.attach(&tap);
+    QSignalSpy inserted(&model, &ConsoleModel::rowsInserted);
+    for (int i = 0; i < 300; ++i)
+        tap.note(QString::number(i));
+    QCOMPARE(model.rowCount(), 0); // not yet: the batch is due
+    QTRY_COMPARE_WITH_TIMEOUT(model.rowCount(), 300, 5 * ConsoleModel::kBatchMs + 2000);
+    QCOMPARE(inserted.count(), 1);
+    for (int i = 0; i < 300; ++i)
+        QCOMPARE(noteAt(model, i), QString::number(i));
+}
+
+void TestConsoleModel::flushShowsWhatArrivedWithoutWaiting() {
+    link::FrameTap tap;
+    ConsoleModel model;
+    model.attach(&tap);
+    tap.tx("\x02R00SMN\x03?");
+    tap.note(QStringLiteral("after"));
+    model.flush();
+    QCOMPARE(model.rowCount(), 2);
+    QCOMPARE(model.entry(0).direction, model::ConsoleEntry::Direction::Tx);
+    QCOMPARE(noteAt(model, 1), QStringLiteral("after"));
+}
+
+void TestConsoleModel::beyondTheCapacityTheOldestRowsGo() {
+    link::FrameTap tap;
+    ConsoleModel model(nullptr, 50);
+    model.attach(&tap);
+    for (int i = 0; i < 40; ++i)
+        tap.note(QString::number(i));
+    model.flush();
+    for (int i = 40; i < 75; ++i) // overflows across batches
+        tap.note(QString::number(i));
+    model.flush();
+    QCOMPARE(model.rowCount(), 50);
+    QCOMPARE(noteAt(model, 0), QStringLiteral("25"));
+    QCOMPARE(noteAt(model, 49), QStringLiteral("74"));
+    for (int i = 75; i < 200; ++i) // one batch larger than the capacity
+        tap.note(QString::number(i));
+    model.flush();
+    QCOMPARE(model.rowCount(), 50);
+    QCOMPARE(noteAt(model, 0), QStringLiteral("150"));
+    QCOMPARE(noteAt(model, 49), QStringLiteral("199"));
+}
+
+void TestConsoleModel::pauseHoldsRowsAndResumeShowsThemAll() {
+    link::FrameTap tap;
+    ConsoleModel model;
+    model.attach(&tap);
+    tap.note(QStringLiteral("before"));
+    model.setPaused(true);
+    QCOMPARE(model.rowCount(), 1); // what arrived before the pause is shown
+    for (int i = 0; i < 20; ++i)
+        tap.note(QString::number(i));
+    QTest::qWait(3 * ConsoleModel::kBatchMs);
+    QCOMPARE(model.rowCount(), 1);
+    model.setPaused(false);
+    QCOMPARE(model.rowCount(), 21);
+    QCOMPARE(noteAt(model, 20), QStringLiteral("19"));
+}
+
+QTEST_MAIN(TestConsoleModel)
+#include "tst_consolemodel.moc"
