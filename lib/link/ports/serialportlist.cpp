@@ -196,22 +196,43 @@ SerialPortList::SerialPortList(const QString &sysRoot, const QString &byIdDir, Q
     : QObject(parent)
     , m_sysRoot(sysRoot)
     , m_byIdDir(byIdDir)
-    , m_timer(this) {
-    m_timer.setInterval(1000);
+    , m_timer(this)
+    , m_settle(this)
+    , m_watcher(this) {
+    m_timer.setInterval(30'000);
     connect(&m_timer, &QTimer::timeout, this, &SerialPortList::refresh);
+    m_settle.setSingleShot(true);
+    m_settle.setInterval(250);
+    connect(&m_settle, &QTimer::timeout, this, &SerialPortList::refresh);
+    connect(&m_watcher, &QFileSystemWatcher::directoryChanged, &m_settle,
+            qOverload<>(&QTimer::start));
 }
 
 void SerialPortList::start() {
-    refresh();
     m_timer.start();
+    refresh();
 }
 
 void SerialPortList::stop() {
     m_timer.stop();
+    m_settle.stop();
+    if (!m_watcher.directories().isEmpty())
+        m_watcher.removePaths(m_watcher.directories());
+}
+
+// The by-id folder exists only while a USB adapter is plugged in, and the watcher forgets a
+// folder that is removed: both are (re)added after each scan.
+void SerialPortList::watchFolders() {
+    if (!m_timer.isActive())
+        return;
+    for (const QString &dir : {m_deviceDir, m_byIdDir})
+        if (!m_watcher.directories().contains(dir) && QFileInfo(dir).isDir())
+            m_watcher.addPath(dir);
 }
 
 void SerialPortList::refresh() {
     QList<SerialPortEntry> current = scanPorts();
+    watchFolders();
     std::stable_sort(current.begin(), current.end(),
                      [](const SerialPortEntry &a, const SerialPortEntry &b) {
                          return a.systemLocation < b.systemLocation;

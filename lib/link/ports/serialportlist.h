@@ -3,14 +3,18 @@
 //
 // Each entry joins what QSerialPortInfo reports with what only sysfs knows: the kernel driver, the
 // FTDI latency timer (16 ms by default, which slows every request/answer exchange) and the
-// stable /dev/serial/by-id name. Nothing is scanned until start() or refresh(); after start() a
-// timer polls every pollInterval() ms. changed() is emitted only when the set of ports or any
-// detail of one differs from the previous scan; the order in which the system lists them does
+// stable /dev/serial/by-id name. Nothing is scanned until start() or refresh(). After start() the
+// list rescans when the device folder (/dev, and the by-id folder once it exists) changes, which
+// is when a port comes or goes, and otherwise every pollInterval() ms (30 s), for details such
+// as a latency timer changed in sysfs. Listing the ports opens and stats hundreds of files, so
+// the quiet machine is not scanned every second. changed() is emitted only when the set of ports or
+// any detail of one differs from the previous scan; the order in which the system lists them does
 // not count. The sysfs root and the by-id folder are constructor parameters so tests can point
 // them at a scratch tree; the list of ports itself comes from QSerialPortInfo, which tests
 // replace by overriding scanPorts().
 #pragma once
 
+#include <QFileSystemWatcher>
 #include <QList>
 #include <QObject>
 #include <QString>
@@ -21,6 +25,7 @@ namespace tipscope::link {
 
 inline constexpr const char *kDefaultSysRoot = "/sys";
 inline constexpr const char *kDefaultByIdDir = "/dev/serial/by-id";
+inline constexpr const char *kDefaultDeviceDir = "/dev";
 
 struct SerialPortEntry {
     QString portName;       // ttyUSB0, ttyS0, pts/3
@@ -67,6 +72,9 @@ public:
     [[nodiscard]] bool isPolling() const { return m_timer.isActive(); }
     [[nodiscard]] QString sysRoot() const { return m_sysRoot; }
     [[nodiscard]] QString byIdDir() const { return m_byIdDir; }
+    // The folder whose changes trigger a rescan; set before start().
+    void setDeviceDirectory(const QString &dir) { m_deviceDir = dir; }
+    [[nodiscard]] QString deviceDirectory() const { return m_deviceDir; }
 
 public Q_SLOTS:
     // Scans now and starts polling.
@@ -84,9 +92,15 @@ protected:
     [[nodiscard]] virtual QList<SerialPortEntry> scanPorts() const;
 
 private:
+    void watchFolders();
+
     QString m_sysRoot;
     QString m_byIdDir;
+    QString m_deviceDir = QString::fromLatin1(kDefaultDeviceDir);
     QTimer m_timer;
+    // udev adds the device node, then its by-id link and permissions: one rescan after the burst.
+    QTimer m_settle;
+    QFileSystemWatcher m_watcher;
     QList<SerialPortEntry> m_ports;
 };
 

@@ -3,8 +3,10 @@
 // the QSerialPortInfo scan with a list the test edits.
 #include "link/ports/serialportlist.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace tipscope::link;
@@ -56,7 +58,7 @@ char *toString(const SerialPortEntry &entry) {
 class TestSerialPortList : public QObject {
     Q_OBJECT
 private Q_SLOTS:
-    void pollIntervalDefaultsToOneSecond();
+    void pollIntervalDefaultsToThirtySeconds();
     void firstScanThatFindsPortsEmitsChanged();
     void firstScanThatFindsNothingStaysQuiet();
     void rescanFindingTheSamePortsDoesNotEmit();
@@ -68,12 +70,15 @@ private Q_SLOTS:
     void portsAreSortedBySystemLocation();
     void pollingPicksUpANewPortWithoutAnExplicitRefresh();
     void stoppedListNoLongerPolls();
+    void newDeviceNodeIsPickedUpWithoutWaitingForThePoll();
+    void stoppedListIgnoresTheDeviceFolder();
     void realScanDescribesBuiltInPortsWithTheirDriver();
 };
 
-void TestSerialPortList::pollIntervalDefaultsToOneSecond() {
+void TestSerialPortList::pollIntervalDefaultsToThirtySeconds() {
     FakePortList list;
-    QCOMPARE(list.pollInterval(), 1000);
+    QCOMPARE(list.pollInterval(), 30'000);
+    QCOMPARE(list.deviceDirectory(), QStringLiteral("/dev"));
     QVERIFY(!list.isPolling());
     QCOMPARE(list.sysRoot(), QStringLiteral("/sys"));
     QCOMPARE(list.byIdDir(), QStringLiteral("/dev/serial/by-id"));
@@ -227,6 +232,52 @@ void TestSerialPortList::stoppedListNoLongerPolls() {
     QVERIFY(spy.isValid());
     list.next = {ftdiAdapter(QStringLiteral("ttyUSB0"))};
     QTest::qWait(150);
+    QCOMPARE(spy.count(), 0);
+}
+
+// A device node appearing in the watched folder (here a scratch folder standing in for /dev)
+// rescans at once; the poll alone would take a minute.
+void TestSerialPortList::newDeviceNodeIsPickedUpWithoutWaitingForThePoll() {
+    QTemporaryDir dev;
+    QVERIFY(dev.isValid());
+    FakePortList list(QStringLiteral("/sys"), dev.filePath(QStringLiteral("serial/by-id")));
+    list.setPollInterval(60'000);
+    list.setDeviceDirectory(dev.path());
+    QSignalSpy spy(&list, &SerialPortList::changed);
+    QVERIFY(spy.isValid());
+    list.start();
+    QTest::qWait(50);
+    list.next = {ftdiAdapter(QStringLiteral("ttyUSB0"))};
+    QFile node(dev.filePath(QStringLiteral("ttyUSB0")));
+    QVERIFY(node.open(QIODevice::WriteOnly));
+    node.close();
+    QTRY_COMPARE_WITH_TIMEOUT(spy.count(), 1, 5000);
+    QCOMPARE(list.ports().value(0).portName, QStringLiteral("ttyUSB0"));
+
+    // Its by-id folder appears with the adapter and is watched from the next scan on.
+    QVERIFY(QDir(dev.path()).mkpath(QStringLiteral("serial/by-id")));
+    QTRY_COMPARE_WITH_TIMEOUT(spy.count(), 1, 1000); // the same ports: no change
+    list.next.first().latencyTimerMs = 1;
+    QFile link(dev.filePath(QStringLiteral("serial/by-id/usb-FTDI")));
+    QVERIFY(link.open(QIODevice::WriteOnly));
+    link.close();
+    QTRY_COMPARE_WITH_TIMEOUT(spy.count(), 2, 5000);
+}
+
+void TestSerialPortList::stoppedListIgnoresTheDeviceFolder() {
+    QTemporaryDir dev;
+    QVERIFY(dev.isValid());
+    FakePortList list;
+    list.setPollInterval(60'000);
+    list.setDeviceDirectory(dev.path());
+    list.start();
+    list.stop();
+    QSignalSpy spy(&list, &SerialPortList::changed);
+    list.next = {ftdiAdapter(QStringLiteral("ttyUSB0"))};
+    QFile node(dev.filePath(QStringLiteral("ttyUSB0")));
+    QVERIFY(node.open(QIODevice::WriteOnly));
+    node.close();
+    QTest::qWait(600);
     QCOMPARE(spy.count(), 0);
 }
 
