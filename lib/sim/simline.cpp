@@ -227,6 +227,8 @@ void SimLine::pump() {
         qsizetype due = o.bytes.size();
         if (byteNs() > 0)
             due = qMin<qsizetype>(o.bytes.size(), (now - o.startNs) / byteNs() + 1);
+        if (m_chunkNs > 0 && due < o.bytes.size() && now < o.startNs + m_chunkNs)
+            due = o.sent; // the adapter has not handed anything over yet
         if (due > o.sent) {
             const QByteArray part = o.bytes.mid(o.sent, due - o.sent);
             o.sent = due;
@@ -240,7 +242,10 @@ void SimLine::pump() {
     if (m_out.empty())
         return;
     const Outgoing &next = m_out.front();
-    const qint64 waitNs = next.sent > 0 ? byteNs() : next.startNs - now;
+    qint64 waitNs = next.sent > 0 ? qMax(byteNs(), m_chunkNs) : next.startNs - now;
+    if (m_chunkNs > 0 && next.sent == 0) // the first hand-over, or the whole answer if shorter
+        waitNs = qMax<qint64>(0, next.startNs - now) +
+                 qMin(m_chunkNs, (next.bytes.size() - 1) * byteNs());
     m_pumpTimer.start(int(qMax<qint64>(0, (waitNs + kNsPerMs - 1) / kNsPerMs)));
 }
 

@@ -5,7 +5,8 @@
 // request with a bad BCC with NAK 00001 and a malformed one with NAK 00002, and applies the
 // configured faults to answers. With a baud rate set, the line paces both directions like a real
 // wire (10 bits per byte): an answer starts no earlier than the request's last byte would have
-// arrived, and leaves byte by byte at the line rate. Simulated time for the devices advances
+// arrived, and leaves byte by byte at the line rate (or, with setChunkMs(), in the chunks a
+// USB-serial adapter hands over once per latency period). Simulated time for the devices advances
 // from a timer while the clock runs, or explicitly through advance().
 #pragma once
 
@@ -65,7 +66,14 @@ public:
     [[nodiscard]] const SimFaults &faults() const { return m_faults; }
     void setBaud(int baud) { m_baud = baud; }
     [[nodiscard]] int baud() const { return m_baud; }
+    // What has arrived of an answer is delivered every `ms` after its first byte, or when its
+    // last byte is in, whichever is first (0, the default: as each byte arrives). A USB-serial
+    // adapter works this way (its latency timer), and it spares the receiver a wake-up a byte.
+    void setChunkMs(int ms) { m_chunkNs = qMax(0, ms) * 1'000'000LL; }
     void setClockRunning(bool running);
+    // How often the running clock moves the devices' simulated time (default 20 ms). The
+    // physics steps by the time elapsed, so a coarser tick only makes changes show in steps.
+    void setTickMs(int ms) { m_tickTimer.setInterval(qMax(1, ms)); }
     void advance(int ms);
     [[nodiscard]] const SimLineStats &stats() const { return m_stats; }
 
@@ -100,6 +108,7 @@ private:
     SimFaults m_faults;
     QRandomGenerator m_rng;
     int m_baud = 0;
+    qint64 m_chunkNs = 0;
     QElapsedTimer m_clock;
     qint64 m_rxFreeNs = 0;
     qint64 m_txFreeNs = 0;

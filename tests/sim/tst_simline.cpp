@@ -83,6 +83,8 @@ private Q_SLOTS:
     void nvsKeepsSelectedTemperatureAcrossRestart();
     void dropAndCorruptFaultsAreCountedAndVisible();
     void pacedAnswersTakeAtLeastTheWireTime();
+    void chunkedAnswersArriveInFewerPiecesAtTheSameTime_data();
+    void chunkedAnswersArriveInFewerPiecesAtTheSameTime();
     void controlCommandsInjectFaultsAndRefuseNonsense();
 };
 
@@ -359,6 +361,40 @@ void TestSimLine::pacedAnswersTakeAtLeastTheWireTime() {
     QTRY_COMPARE_WITH_TIMEOUT(got.size(), 16, 5000);
     // 27 bytes at 10 bits each and 19200 baud: 14 ms is the physical floor.
     QVERIFY2(t.elapsed() >= 13, qPrintable(QString::number(t.elapsed())));
+}
+
+void TestSimLine::chunkedAnswersArriveInFewerPiecesAtTheSameTime_data() {
+    QTest::addColumn<int>("chunkMs");
+    QTest::addColumn<int>("maxPieces");
+    QTest::newRow("byte by byte") << 0 << 16;
+    QTest::newRow("adapter latency 4 ms") << 4 << 3;
+    QTest::newRow("adapter latency longer than the answer") << 20 << 1;
+}
+
+// A USB adapter's latency timer groups the bytes of an answer; the answer is whole, and never
+// earlier than the wire allows.
+void TestSimLine::chunkedAnswersArriveInFewerPiecesAtTheSameTime() {
+    QFETCH(int, chunkMs);
+    QFETCH(int, maxPieces);
+    auto line = SimLine::demo();
+    line->setBaud(19200);
+    line->setChunkMs(chunkMs);
+    QByteArray got;
+    int pieces = 0;
+    connect(line.get(), &SimLine::transmit, this, [&](const QByteArray &b) {
+        got += b;
+        ++pieces;
+    });
+    QElapsedTimer t;
+    t.start();
+    line->receive(rd("TT1").encode());
+    QTRY_COMPARE_WITH_TIMEOUT(got.size(), 16, 5000);
+    QVERIFY2(t.elapsed() >= 13, qPrintable(QString::number(t.elapsed())));
+    QVERIFY2(pieces <= maxPieces, qPrintable(QString::number(pieces)));
+    FrameDecoder decoder;
+    const auto events = decoder.feed(got);
+    QCOMPARE(events.size(), size_t(1));
+    QCOMPARE(events.front().kind, DecodeEvent::Kind::Frame);
 }
 
 void TestSimLine::controlCommandsInjectFaultsAndRefuseNonsense() {
