@@ -19,6 +19,10 @@ DeviceTree::DeviceTree(Session &session, QWidget *parent)
     setMinimumWidth(200);
     connect(&session, &Session::devicesChanged, this, &DeviceTree::rebuild);
     connect(&session, &Session::stateChanged, this, &DeviceTree::relabel);
+    // A port's model changes with every live value; its label (tool, error) far more rarely.
+    m_relabel.setSingleShot(true);
+    m_relabel.setInterval(kRelabelMs);
+    connect(&m_relabel, &QTimer::timeout, this, &DeviceTree::relabel);
     connect(this, &QTreeWidget::currentItemChanged, this,
             [this] { Q_EMIT selectionChangedTo(selectedDevice(), selectedPort()); });
     rebuild();
@@ -51,7 +55,10 @@ void DeviceTree::rebuild() {
                 auto *p = new QTreeWidgetItem(item);
                 p->setData(0, kDeviceRole, i + 1);
                 p->setData(0, kPortRole, port->number());
-                connect(port, &PortModel::changed, this, &DeviceTree::relabel);
+                connect(port, &PortModel::changed, this, [this] {
+                    if (!m_relabel.isActive()) // not restarted: a busy port still gets a label
+                        m_relabel.start();
+                });
             }
         }
     }

@@ -4,6 +4,7 @@
 
 #include "model/session.h"
 
+#include <QTimer>
 #include <QTreeWidget>
 
 namespace tipscope::gui {
@@ -23,7 +24,10 @@ private:
     void rebuild();
     void relabel();
 
+    static constexpr int kRelabelMs = 250;
+
     model::Session &m_session;
+    QTimer m_relabel;
 };
 
 } // namespace tipscope::gui

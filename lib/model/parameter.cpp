@@ -185,13 +185,15 @@ void Parameter::deviceReported(const QByteArray &data) {
             Tr::tr("unreadable data field '%1'").arg(QString::fromLatin1(data)));
         return;
     }
-    const QDateTime now = QDateTime::currentDateTime();
-    if (m_lastUpdate.isValid()) {
-        const double dt = m_lastUpdate.msecsTo(now) / 1000.0;
+    // Milliseconds, not a QDateTime: a local date and time looks up the time zone each time,
+    // which at live polling rates was a visible share of the GUI's CPU.
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    if (m_lastUpdateMs >= 0) {
+        const double dt = double(now - m_lastUpdateMs) / 1000.0;
         if (dt > 0)
             m_rateHz = m_rateHz == 0 ? 1.0 / dt : m_rateHz + kRateSmoothing * (1.0 / dt - m_rateHz);
     }
-    m_lastUpdate = now;
+    m_lastUpdateMs = now;
     const bool changed = !m_value || !(*m_value == *v);
     m_value = v;
     m_raw = data;

@@ -44,7 +44,10 @@ public:
     [[nodiscard]] std::optional<qint64> edit() const { return m_edit; }
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] QString failure() const { return m_failure; }
-    [[nodiscard]] QDateTime lastUpdate() const { return m_lastUpdate; }
+    // Local time; invalid before the first reading.
+    [[nodiscard]] QDateTime lastUpdate() const {
+        return m_lastUpdateMs < 0 ? QDateTime() : QDateTime::fromMSecsSinceEpoch(m_lastUpdateMs);
+    }
     [[nodiscard]] double achievedRateHz() const { return m_rateHz; }
 
     // Effective limits in wire units, tightened by the limiting parameters' current values.
@@ -93,7 +96,7 @@ private:
     bool m_unsavedWrite = false;
     State m_state = State::Unknown;
     QString m_failure;
-    QDateTime m_lastUpdate;
+    qint64 m_lastUpdateMs = -1;
     double m_rateHz = 0;
     QPointer<Parameter> m_lower, m_upper;
 };

@@ -1,5 +1,7 @@
 #include "portcard.h"
 
+#include "widgets/deferredrefresh.h"
+
 #include "model/stationmodel.h"
 
 #include <QDoubleSpinBox>
@@ -83,8 +85,10 @@ PortCard::PortCard(PortModel &port, QWidget *parent)
     connect(m_cool, &QPushButton::clicked, this, [this] { requestMode(10); });
     connect(m_set, &QPushButton::clicked, this,
             [this] { requestSetpoint(m_newSetpoint->value()); });
-    connect(&port, &PortModel::changed, this, &PortCard::refresh);
-    connect(&port.station(), &DeviceModel::temperatureUnitChanged, this, &PortCard::refresh);
+    m_refresh = new DeferredRefresh(*this, [this] { refresh(); });
+    connect(&port, &PortModel::changed, m_refresh, &DeferredRefresh::request);
+    connect(&port.station(), &DeviceModel::temperatureUnitChanged, m_refresh,
+            &DeferredRefresh::request);
     for (Parameter *p : {port.param("ST"), port.param("PS")})
         connect(p, &Parameter::stateChanged, this, [this, p] {
             if (p->state() == Parameter::State::Failed)
@@ -107,13 +111,16 @@ void PortCard::setWritesAllowed(bool allowed) {
     }
 }
 
-QString PortCard::tipText() const {
+QString PortCard::tipText() {
+    m_refresh->flush();
     return m_tip->text();
 }
-QString PortCard::statusText() const {
+QString PortCard::statusText() {
+    m_refresh->flush();
     return m_status->text();
 }
-QString PortCard::problemText() const {
+QString PortCard::problemText() {
+    m_refresh->flush();
     return m_problem->text();
 }
 

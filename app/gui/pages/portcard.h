@@ -18,15 +18,18 @@ class PortModel;
 
 namespace tipscope::gui {
 
+class DeferredRefresh;
+
 class PortCard : public QFrame {
     Q_OBJECT
 public:
     explicit PortCard(model::PortModel &port, QWidget *parent = nullptr);
 
     void setWritesAllowed(bool allowed);
-    [[nodiscard]] QString tipText() const;
-    [[nodiscard]] QString statusText() const;
-    [[nodiscard]] QString problemText() const;
+    // What the card shows (brought up to date first if it was hidden).
+    [[nodiscard]] QString tipText();
+    [[nodiscard]] QString statusText();
+    [[nodiscard]] QString problemText();
     // The robot controls, for keyboard users and tests: 0 work, 1 stand, 10 cool.
     QString requestMode(int mode);
     QString requestSetpoint(double displayValue);
@@ -35,6 +38,7 @@ private:
     void refresh();
 
     QPointer<model::PortModel> m_port;
+    DeferredRefresh *m_refresh = nullptr;
     QLabel *m_title;
     QLabel *m_tip;
     QLabel *m_setpoint;

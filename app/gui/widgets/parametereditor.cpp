@@ -1,5 +1,7 @@
 #include "parametereditor.h"
 
+#include "deferredrefresh.h"
+
 #include "model/devicemodel.h"
 
 #include <QCheckBox>
@@ -27,7 +29,10 @@ ParameterEditor::ParameterEditor(Parameter *parameter, QWidget *parent)
     build();
     connect(parameter, &Parameter::valueChanged, this, &ParameterEditor::refreshFromParameter);
     connect(parameter, &Parameter::editChanged, this, &ParameterEditor::refreshFromParameter);
-    connect(parameter, &Parameter::stateChanged, this, &ParameterEditor::refreshState);
+    // Every poll takes a value through reading and back to in sync; an editor on a hidden page
+    // catches up when shown.
+    auto *stateRefresh = new DeferredRefresh(*this, [this] { refreshState(); });
+    connect(parameter, &Parameter::stateChanged, stateRefresh, &DeferredRefresh::request);
     connect(&parameter->device(), &DeviceModel::temperatureUnitChanged, this, [this] {
         delete layout();
         qDeleteAll(findChildren<QWidget *>(QString(), Qt::FindDirectChildrenOnly));
