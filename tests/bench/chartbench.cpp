@@ -219,9 +219,11 @@ int runGuiCpu(int seconds, bool baseline) {
     // also polls all four ports, is the baseline the chart adds to.
     const double base = baseline ? cpuPercent(window, overview, seconds) : 0;
     const qint64 redraws = charts->redrawCount();
+    const qint64 answered = window.session().line()->queue().stats().answered;
     QElapsedTimer wall;
     wall.start();
     const double withChart = cpuPercent(window, charts, seconds);
+    const double elapsedS = double(wall.elapsed()) / 1e3;
     printFigure(QStringLiteral("gui.cpu_percent"), withChart, QStringLiteral("%"), 2);
     if (baseline) {
         printFigure(QStringLiteral("gui.cpu_overview_percent"), base, QStringLiteral("%"), 2);
@@ -229,7 +231,9 @@ int runGuiCpu(int seconds, bool baseline) {
                     2);
     }
     printFigure(QStringLiteral("gui.redraws_per_s"),
-                double(charts->redrawCount() - redraws) / (double(wall.elapsed()) / 1e3),
+                double(charts->redrawCount() - redraws) / elapsedS, QStringLiteral("/s"));
+    printFigure(QStringLiteral("gui.transactions_per_s"),
+                double(window.session().line()->queue().stats().answered - answered) / elapsedS,
                 QStringLiteral("/s"));
     return 0;
 }

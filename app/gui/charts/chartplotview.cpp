@@ -55,11 +55,36 @@ void ChartPlotView::drawForeground(QPainter *painter, const QRectF &rect) {
     if (plot.isEmpty())
         return;
     painter->save();
+    drawTimeAxis(*painter, plot);
     painter->setClipRect(plot);
     drawTraces(*painter, plot);
     drawBands(*painter, plot);
     drawMarkers(*painter, plot);
     painter->restore();
+}
+
+// Grid lines across the plot, tick marks under it and the labels below, in the value axes' pens
+// and font so the three axes look alike.
+void ChartPlotView::drawTimeAxis(QPainter &painter, const QRectF &plot) const {
+    const ChartWidgetPrivate &d = *m_owner.d;
+    const QFontMetricsF metrics(d.leftAxis->labelsFont());
+    painter.setFont(d.leftAxis->labelsFont());
+    const QRectF scene = sceneRect();
+    for (qsizetype i = 0; i < d.ticks.size(); ++i) {
+        const double x = std::round(plot.left() + double(d.ticks.at(i) - d.t0) /
+                                                      double(d.t1 - d.t0) * plot.width());
+        if (x < plot.left() || x > plot.right())
+            continue;
+        painter.setPen(d.leftAxis->gridLinePen());
+        painter.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+        painter.setPen(d.leftAxis->linePen());
+        painter.drawLine(QPointF(x, plot.bottom()), QPointF(x, plot.bottom() + 5));
+        const QString &label = d.tickLabels.value(i);
+        const double width = metrics.horizontalAdvance(label);
+        const double left = qBound(scene.left(), x - width / 2, scene.right() - width);
+        painter.setPen(QPen(d.leftAxis->labelsBrush(), 1));
+        painter.drawText(QPointF(left, plot.bottom() + 6 + metrics.ascent()), label);
+    }
 }
 
 void ChartPlotView::drawTraces(QPainter &painter, const QRectF &plot) const {

@@ -44,10 +44,16 @@ QPen tracePen(const ChartSeriesStyle &style) {
 ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
     chart = new QChart;
     chart->setAnimationOptions(QChart::NoAnimation); // animations re-run on every replace()
-    chart->setMargins(QMargins(4, 4, 4, 4));
+    chart->setMargins(QMargins(4, 4, 4, 4 + timeLabelStrip()));
     chart->legend()->setAlignment(Qt::AlignTop);
-    timeAxis = new QCategoryAxis(chart);
-    timeAxis->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+    // The time axis only holds the plot's bottom edge: its range never changes, and the ticks,
+    // grid lines and labels of time are drawn by ChartPlotView. Moving a Qt Charts axis relaid
+    // its rich-text labels on every frame of a following chart, the dearest part of a redraw.
+    timeAxis = new QValueAxis(chart);
+    timeAxis->setRange(0, 1);
+    timeAxis->setTickCount(2);
+    timeAxis->setLabelsVisible(false);
+    timeAxis->setGridLineVisible(false);
     leftAxis = new QValueAxis(chart);
     rightAxis = new QValueAxis(chart);
     styleValueAxis(leftAxis);
@@ -66,6 +72,15 @@ ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
     emptyText->setBrush(QColor(120, 120, 120));
     emptyText->setZValue(100);
     emptyText->setVisible(false);
+}
+
+// Only the plot: Qt Charts repaints the axis labels and the legend itself when they change, and
+// repainting their rich-text items on every frame was most of a live chart's painting.
+void ChartWidgetPrivate::updatePlot() {
+    const QRect p = plot().toAlignedRect();
+    // And the time labels below it, which may reach half a label past either end.
+    const QRect labels(p.left() - 60, p.bottom() + 1, p.width() + 120, timeLabelStrip());
+    view->viewport()->update(QRegion(p.adjusted(-1, -1, 1, 1)) + labels);
 }
 
 double ChartWidgetPrivate::yAt(ChartAxis axis, double value, const QRectF &plot) const {
@@ -87,6 +102,10 @@ void ChartWidgetPrivate::placeOverlays() {
     emptyText->setPos(p.center() - QPointF(text.width() / 2, text.height() / 2));
 }
 
+int ChartWidgetPrivate::timeLabelStrip() const {
+    return QFontMetrics(leftAxis ? leftAxis->labelsFont() : QFont()).height() + 8;
+}
+
 void ChartWidgetPrivate::updateTimeTicks() {
     static constexpr qint64 kSteps[] = {1000,       2000,      5000,      10'000,    15'000,
                                         30'000,     60'000,    120'000,   300'000,   600'000,
@@ -105,19 +124,17 @@ void ChartWidgetPrivate::updateTimeTicks() {
     QList<qint64> wanted;
     for (qint64 t = ((t0 + offset + step - 1) / step) * step - offset; t < t1; t += step)
         wanted.append(t);
-    if (wanted == ticks)
+    if (wanted == ticks && step == tickStep)
         return;
     ticks = wanted;
-    for (const QString &label : timeAxis->categoriesLabels())
-        timeAxis->remove(label);
+    tickStep = step;
+    tickLabels.clear();
     const QString format = step < 60'000 ? QStringLiteral("HH:mm:ss") : QStringLiteral("HH:mm");
-    timeAxis->setStartValue(double(wanted.value(0, t0) - step));
     for (qint64 t : std::as_const(wanted)) {
         const QDateTime time = QDateTime::fromMSecsSinceEpoch(t);
         const bool midnight = time.time().hour() == 0 && time.time().minute() == 0;
-        timeAxis->append(
-            time.toString(midnight && step >= 3600'000 ? QStringLiteral("dd.MM.") : format),
-            double(t));
+        tickLabels.append(
+            time.toString(midnight && step >= 3600'000 ? QStringLiteral("dd.MM.") : format));
     }
 }
 
@@ -184,10 +201,9 @@ void ChartWidget::setTimeRange(qint64 t0, qint64 t1) {
         return;
     d->t0 = t0;
     d->t1 = t1;
-    d->timeAxis->setRange(double(t0), double(t1));
     d->updateTimeTicks();
     d->placeOverlays();
-    d->view->viewport()->update();
+    d->updatePlot();
 }
 
 void ChartWidget::setAxisRange(ChartAxis axis, double min, double max) {
@@ -199,13 +215,13 @@ void ChartWidget::setAxisRange(ChartAxis axis, double min, double max) {
     QValueAxis *a = axis == ChartAxis::Left ? d->leftAxis : d->rightAxis;
     a->setRange(min, max);
     a->setTickInterval(tickStep(max - min));
-    d->view->viewport()->update();
+    d->updatePlot();
 }
 
 void ChartWidget::setPoints(int index, const QList<QPointF> &points) {
     if (index >= 0 && index < d->points.size()) {
         d->points[index] = points;
-        d->view->viewport()->update();
+        d->updatePlot();
     }
 }
 
@@ -215,17 +231,17 @@ void ChartWidget::showData(const ChartData &data) {
     setAxisRange(ChartAxis::Left, data.leftMin, data.leftMax);
     setAxisRange(ChartAxis::Right, data.rightMin, data.rightMax);
     setTimeRange(data.t0, qMax(data.t1, data.t0 + 1));
-    d->view->viewport()->update();
+    d->updatePlot();
 }
 
 void ChartWidget::setMarkers(const QList<ChartMarker> &markers) {
     d->markers = markers;
-    d->view->viewport()->update();
+    d->updatePlot();
 }
 
 void ChartWidget::setBands(const QList<ChartBand> &bands) {
     d->bands = bands;
-    d->view->viewport()->update();
+    d->updatePlot();
 }
 
 void ChartWidget::setCrosshair(std::optional<qint64> timeMs) {

@@ -5,7 +5,6 @@
 
 #include "chartwidget.h"
 
-#include <QCategoryAxis>
 #include <QChartView>
 #include <QGraphicsLineItem>
 #include <QGraphicsSimpleTextItem>
@@ -40,6 +39,7 @@ private:
     // The curves, as polylines in the plot's pixels. QLineSeries is not used for them: for
     // every new set of points it builds a path and strokes a hover outline of it, which cost
     // more than painting the curve itself.
+    void drawTimeAxis(QPainter &painter, const QRectF &plot) const;
     void drawTraces(QPainter &painter, const QRectF &plot) const;
     void drawColumns(QPainter &painter, const QPolygonF &line, const QColor &color) const;
     void drawBands(QPainter &painter, const QRectF &plot) const;
@@ -62,15 +62,18 @@ public:
     [[nodiscard]] QRectF plot() const { return chart->plotArea(); }
     [[nodiscard]] double yAt(ChartAxis axis, double value, const QRectF &plot) const;
     void placeOverlays();
+    void updatePlot();
     // Ticks on round times (every 10 s, 1 min, 1 h...), which QDateTimeAxis cannot do: its
     // ticks divide the range evenly, so a moving window would show 03:10:47, 03:11:30...
     void updateTimeTicks();
+    // Height of the band under the plot that holds the time labels.
+    [[nodiscard]] int timeLabelStrip() const;
 
     QChart *chart;
     ChartPlotView *view;
-    QCategoryAxis *timeAxis;
-    QValueAxis *leftAxis;
-    QValueAxis *rightAxis;
+    QValueAxis *timeAxis = nullptr;
+    QValueAxis *leftAxis = nullptr;
+    QValueAxis *rightAxis = nullptr;
     QList<QLineSeries *> series; // legend entries only, never given points
     QList<ChartSeriesStyle> styles;
     QList<QList<QPointF>> points; // per series, in display units against time in ms
@@ -81,7 +84,9 @@ public:
     qint64 t0 = 0;
     qint64 t1 = 1;
     double ranges[2][2] = {{qQNaN(), qQNaN()}, {qQNaN(), qQNaN()}}; // [axis][min, max]
-    QList<qint64> ticks;                                            // the time axis' current ticks
+    QList<qint64> ticks; // the time axis' current ticks, and their labels
+    QStringList tickLabels;
+    qint64 tickStep = 0;
     std::optional<qint64> crosshairTime;
     QList<ChartMarker> markers;
     QList<ChartBand> bands;
