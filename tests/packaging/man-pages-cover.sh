@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# man-pages-cover.sh CLI-BINARY CLI-PAGE SIM-BINARY SIM-PAGE
+# man-pages-cover.sh CLI-BINARY CLI-PAGE SIM-BINARY SIM-PAGE GUI-BINARY GUI-PAGE
 # The manual pages must describe everything the programs offer: every option in their --help,
 # every tipscope-cli command, and every control command tipscope-sim lists for `help`. A new
 # option without a line in its manual page fails here.
@@ -11,6 +11,8 @@ cli=${1:?tipscope-cli}
 cliPage=${2:?tipscope-cli.1}
 sim=${3:?tipscope-sim}
 simPage=${4:?tipscope-sim.1}
+gui=${5:?tipscope}
+guiPage=${6:?tipscope.1}
 scratch=$(mktemp -d)
 simPid=
 cleanup() {
@@ -73,6 +75,14 @@ listing=$(sed -n 2p "$scratch/sim.out")
 [[ "$listing" == commands:* ]] || fail "tipscope-sim did not list its commands: $(cat "$scratch/sim.err")"
 for c in $(echo "${listing#commands:}" | sed 's/ | /\n/g' | awk '{print $1}') unplug plug help; do
     check "$scratch/sim.txt" "tipscope-sim control command $c" "^ +$c( |$)"
+done
+
+# --- tipscope (the desktop application; its --help needs no display) ----------------------
+render "$guiPage" >"$scratch/gui.txt"
+QT_QPA_PLATFORM=offscreen "$gui" --help >"$scratch/gui-help.txt" 2>/dev/null ||
+    fail "$gui --help failed"
+for opt in $(options <"$scratch/gui-help.txt"); do
+    check "$scratch/gui.txt" "tipscope option $opt" "$(tag "$opt")"
 done
 
 if [ ${#missing[@]} -gt 0 ]; then
