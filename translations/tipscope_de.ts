@@ -38,6 +38,1039 @@
     </message>
 </context>
 <context>
+    <name>Catalog</name>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="196"/>
+        <source>Unknown NAK code %1</source>
+        <translation>Unbekannter NAK-Code %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="201"/>
+        <source>Unknown station error %1</source>
+        <translation>Unbekannter Stationsfehler %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="210"/>
+        <source>Unknown port error %1</source>
+        <translation>Unbekannter Portfehler %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
+        <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt; mit W-ECV zurücksetzen und im SFR-Handbuch nachsehen)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="13"/>
+        <source>Port status</source>
+        <translation>Portstatus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="14"/>
+        <source>Tool operating status: working, stand, sleep, hibernation, with cooling, suction and motor flags</source>
+        <translation>Betriebszustand des Werkzeugs: in Betrieb, Ablage, Ruhemodus, Tiefschlaf, mit Flags für Abkühlen, Absaugung und Motor</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="15"/>
+        <source>Working</source>
+        <translation>In Betrieb</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="16"/>
+        <source>Stand</source>
+        <translation>Ablage</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="17"/>
+        <source>Cooling</source>
+        <translation>Abkühlen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="18"/>
+        <source>Tool operating status: no stand (working), stand, sleep, hibernation, with extractor and suction flags</source>
+        <translation>Betriebszustand des Werkzeugs: nicht in der Ablage (in Betrieb), Ablage, Ruhemodus, Tiefschlaf, mit Flags für Rauchabsaugung und Absaugung</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="19"/>
+        <source>Selected temperature</source>
+        <translation>Eingestellte Temperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="20"/>
+        <source>Tip working temperature, in steps of 5 °C between the station&apos;s minimum and maximum; volatile until saved</source>
+        <translation>Arbeitstemperatur der Spitze, in Schritten von 5 °C zwischen Minimum und Maximum der Station; flüchtig bis zum Speichern</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="21"/>
+        <source>Tip temperature</source>
+        <translation>Spitzentemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="22"/>
+        <source>Current tip temperature</source>
+        <translation>Aktuelle Spitzentemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="23"/>
+        <source>Power</source>
+        <translation>Leistung</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="24"/>
+        <source>Power delivered to the tip, in thousandths of the station&apos;s maximum</source>
+        <translation>An die Spitze abgegebene Leistung, in Tausendsteln des Stationsmaximums</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="25"/>
+        <source>Time to sleep/hibernation</source>
+        <translation>Zeit bis Ruhemodus/Tiefschlaf</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="26"/>
+        <source>Seconds left before the tool enters sleep or hibernation</source>
+        <translation>Verbleibende Sekunden, bis das Werkzeug in den Ruhemodus oder Tiefschlaf wechselt</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="27"/>
+        <source>Transistor temperature</source>
+        <translation>Transistortemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="28"/>
+        <source>Temperature of the port&apos;s power transistor</source>
+        <translation>Temperatur des Leistungstransistors des Ports</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="29"/>
+        <source>Connected tool</source>
+        <translation>Angeschlossenes Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="30"/>
+        <source>Tool connected to the port</source>
+        <translation>Am Port angeschlossenes Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="31"/>
+        <source>Port error</source>
+        <translation>Portfehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="32"/>
+        <source>Current error of the port</source>
+        <translation>Aktueller Fehler des Ports</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="33"/>
+        <source>High temperature alarm</source>
+        <translation>Übertemperaturalarm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="34"/>
+        <source>Upper tip temperature alarm limit, in steps of 5 °C</source>
+        <translation>Obere Alarmgrenze der Spitzentemperatur, in Schritten von 5 °C</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="35"/>
+        <source>Low temperature alarm</source>
+        <translation>Untertemperaturalarm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="36"/>
+        <source>Lower tip temperature alarm limit, in steps of 5 °C</source>
+        <translation>Untere Alarmgrenze der Spitzentemperatur, in Schritten von 5 °C</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="37"/>
+        <source>High alarm delay</source>
+        <translation>Verzögerung Alarm hoch</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="38"/>
+        <source>How long the tip must stay above the high alarm limit before the alarm is set (ss.cc)</source>
+        <translation>Wie lange die Spitze über der oberen Alarmgrenze bleiben muss, bevor der Alarm ausgelöst wird (ss.cc)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="39"/>
+        <source>disabled</source>
+        <translation>deaktiviert</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="40"/>
+        <source>Low alarm delay</source>
+        <translation>Verzögerung Alarm tief</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="41"/>
+        <source>How long the tip must stay below the low alarm limit before the alarm is set (ss.cc)</source>
+        <translation>Wie lange die Spitze unter der unteren Alarmgrenze bleiben muss, bevor der Alarm ausgelöst wird (ss.cc)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="42"/>
+        <source>Temperature alarm</source>
+        <translation>Temperaturalarm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="43"/>
+        <source>Alarm flags: units digit high alarm, tens digit low alarm (DDR/HDR clear them when read)</source>
+        <translation>Alarm-Flags: Einerstelle Alarm hoch, Zehnerstelle Alarm tief (DDR/HDR löschen sie beim Lesen)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="44"/>
+        <source>Plugged hours</source>
+        <translation>Einschaltstunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="45"/>
+        <source>Hours with a tool plugged into the port</source>
+        <translation>Stunden mit am Port angeschlossenem Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
+        <source>No-tool hours</source>
+        <translation>Stunden ohne Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
+        <source>Hours the port was powered with no tool</source>
+        <translation>Stunden, in denen der Port ohne Werkzeug eingeschaltet war</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="48"/>
+        <source>Sleep hours</source>
+        <translation>Ruhemodus-Stunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="49"/>
+        <source>Hours in sleep</source>
+        <translation>Stunden im Ruhemodus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="50"/>
+        <source>Hibernation hours</source>
+        <translation>Tiefschlafstunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="51"/>
+        <source>Hours in hibernation</source>
+        <translation>Stunden im Tiefschlaf</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
+        <source>Work hours</source>
+        <translation>Arbeitsstunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
+        <source>Hours working</source>
+        <translation>Stunden in Betrieb</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="54"/>
+        <source>Sleep cycles</source>
+        <translation>Ruhemodus-Zyklen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="55"/>
+        <source>Number of times the tool went into sleep</source>
+        <translation>Anzahl der Wechsel des Werkzeugs in den Ruhemodus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="56"/>
+        <source>Desoldering cycles</source>
+        <translation>Entlötzyklen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="57"/>
+        <source>Number of times the desoldering tool was activated</source>
+        <translation>Anzahl der Aktivierungen des Entlötwerkzeugs</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="58"/>
+        <source>Dispensed cycles</source>
+        <translation>Dosierzyklen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="59"/>
+        <source>Number of dispensing cycles of the built-in wire feed</source>
+        <translation>Anzahl der Dosierzyklen des eingebauten Drahtvorschubs</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="60"/>
+        <source>Dispensed length</source>
+        <translation>Dosierte Länge</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="61"/>
+        <source>Total wire length dispensed (hexadecimal on the wire)</source>
+        <translation>Insgesamt dosierte Drahtlänge (auf der Leitung hexadezimal)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="62"/>
+        <source>Temperature adjust</source>
+        <translation>Temperaturkorrektur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="63"/>
+        <source>Offset added to the tool&apos;s temperature, ±50 °C in steps of 1</source>
+        <translation>Zur Werkzeugtemperatur addierter Offset, ±50 °C in Schritten von 1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="64"/>
+        <source>Sleep temperature</source>
+        <translation>Ruhemodus-Temperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="65"/>
+        <source>Tip temperature in sleep, in steps of 5 °C</source>
+        <translation>Spitzentemperatur im Ruhemodus, in Schritten von 5 °C</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="66"/>
+        <source>Sleep delay</source>
+        <translation>Ruhemodus-Verzögerung</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="67"/>
+        <source>Minutes in the stand before sleep, 0 to 9, or disabled</source>
+        <translation>Minuten in der Ablage bis zum Ruhemodus, 0 bis 9, oder deaktiviert</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="68"/>
+        <source>Hibernation delay</source>
+        <translation>Tiefschlafverzögerung</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="69"/>
+        <source>Minutes in sleep before hibernation, 0 to 60 in steps of 5, or disabled</source>
+        <translation>Minuten im Ruhemodus bis zum Tiefschlaf, 0 bis 60 in Schritten von 5, oder deaktiviert</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="70"/>
+        <source>Maximum temperature</source>
+        <translation>Höchsttemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="71"/>
+        <source>Highest temperature selectable with the selected temperature</source>
+        <translation>Höchste als eingestellte Temperatur wählbare Temperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="72"/>
+        <source>Minimum temperature</source>
+        <translation>Mindesttemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="73"/>
+        <source>Lowest temperature selectable with the selected temperature</source>
+        <translation>Niedrigste als eingestellte Temperatur wählbare Temperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="74"/>
+        <source>Power limit</source>
+        <translation>Leistungsgrenze</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="75"/>
+        <source>Maximum power delivered to a tool, in thousandths of the station&apos;s maximum</source>
+        <translation>Maximale an ein Werkzeug abgegebene Leistung, in Tausendsteln des Stationsmaximums</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="76"/>
+        <source>Transformer temperature</source>
+        <translation>Transformatortemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="77"/>
+        <source>Temperature of the power supply transformer (R-TT; see protocol notes)</source>
+        <translation>Temperatur des Netztransformators (R-TT; siehe Protokollhinweise)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="78"/>
+        <source>Station error</source>
+        <translation>Stationsfehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="79"/>
+        <source>Current error of the station</source>
+        <translation>Aktueller Fehler der Station</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="80"/>
+        <source>Fuse status</source>
+        <translation>Sicherungsstatus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="81"/>
+        <source>Whether the station&apos;s fuse is in place</source>
+        <translation>Ob die Sicherung der Station eingesetzt ist</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="82"/>
+        <source>No fuse (blown or missing)</source>
+        <translation>Keine Sicherung (durchgebrannt oder fehlt)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="83"/>
+        <source>Fuse present</source>
+        <translation>Sicherung vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="84"/>
+        <source>Model name</source>
+        <translation>Modellname</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="85"/>
+        <source>The device&apos;s model name</source>
+        <translation>Modellname des Geräts</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="86"/>
+        <source>Software version</source>
+        <translation>Softwareversion</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="87"/>
+        <source>The device&apos;s software version</source>
+        <translation>Softwareversion des Geräts</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="88"/>
+        <source>Save to station memory</source>
+        <translation>Im Stationsspeicher sichern</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="89"/>
+        <source>Stores the volatile settings (selected temperature; feeder mode, speed, length) in non-volatile memory</source>
+        <translation>Speichert die flüchtigen Einstellungen (eingestellte Temperatur; Vorschubmodus, -geschwindigkeit, -länge) im nichtflüchtigen Speicher</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="90"/>
+        <source>Factory reset</source>
+        <translation>Werkseinstellungen wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="91"/>
+        <source>Resets every parameter of the device to its factory value</source>
+        <translation>Setzt alle Parameter des Geräts auf ihre Werkswerte zurück</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="92"/>
+        <source>Every setting of the device returns to its factory value; the feeder restarts and goes back to address 10 in addressed mode.</source>
+        <translation>Alle Einstellungen des Geräts werden auf ihre Werkswerte zurückgesetzt; der Lotdrahtvorschub startet neu und kehrt im adressierten Betrieb zur Adresse 10 zurück.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="93"/>
+        <source>Restart station</source>
+        <translation>Station neu starten</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="94"/>
+        <source>Restarts the control unit</source>
+        <translation>Startet das Steuergerät neu</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="95"/>
+        <source>The control unit restarts: tools cool down and the station does not answer until it is back.</source>
+        <translation>Das Steuergerät startet neu: die Werkzeuge kühlen ab, und die Station antwortet erst wieder, wenn sie bereit ist.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="96"/>
+        <source>Device address</source>
+        <translation>Geräteadresse</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="97"/>
+        <source>Sets the device&apos;s own address (1-99); 0 switches it to frames without addresses</source>
+        <translation>Setzt die eigene Adresse des Geräts (1-99); 0 schaltet auf Telegramme ohne Adressen um</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="98"/>
+        <source>The device answers only at the new address (or only without addresses for 0); TipScope must reconnect with the new setting.</source>
+        <translation>Das Gerät antwortet nur noch unter der neuen Adresse (bzw. bei 0 nur ohne Adressen); TipScope muss sich mit der neuen Einstellung neu verbinden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="99"/>
+        <source>Ignore fuse error</source>
+        <translation>Sicherungsfehler ignorieren</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="100"/>
+        <source>Lets the station keep working despite a fuse error</source>
+        <translation>Lässt die Station trotz Sicherungsfehler weiterarbeiten</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="101"/>
+        <source>The station keeps heating although its fuse is reported missing or blown.</source>
+        <translation>Die Station heizt weiter, obwohl ihre Sicherung als fehlend oder durchgebrannt gemeldet wird.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="102"/>
+        <source>Dispensing mode</source>
+        <translation>Dosiermodus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="103"/>
+        <source>How the built-in feed dispenses wire</source>
+        <translation>Wie der eingebaute Vorschub den Draht dosiert</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="104"/>
+        <source>Continuous</source>
+        <translation>Kontinuierlich</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="105"/>
+        <source>Discontinuous</source>
+        <translation>Diskontinuierlich</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="106"/>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="107"/>
+        <source>Tin reload</source>
+        <translation>Lötzinn nachladen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="108"/>
+        <source>Dispensing length</source>
+        <translation>Dosierlänge</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="109"/>
+        <source>Wire length dispensed per cycle, in tenths of a millimetre</source>
+        <translation>Pro Zyklus dosierte Drahtlänge, in Zehntelmillimetern</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="110"/>
+        <source>Dispensing speed</source>
+        <translation>Dosiergeschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="111"/>
+        <source>Wire speed, in tenths of a millimetre per second</source>
+        <translation>Drahtgeschwindigkeit, in Zehntelmillimetern pro Sekunde</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="112"/>
+        <source>Wire diameter</source>
+        <translation>Drahtdurchmesser</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="113"/>
+        <source>Solder wire diameter, in hundredths of a millimetre</source>
+        <translation>Durchmesser des Lötdrahts, in Hundertstelmillimetern</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="114"/>
+        <source>Backward length</source>
+        <translation>Rückzuglänge</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="115"/>
+        <source>Wire pulled back after each cycle, in tenths of a millimetre</source>
+        <translation>Nach jedem Zyklus zurückgezogener Draht, in Zehntelmillimetern</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="116"/>
+        <source>Wire clogging detection</source>
+        <translation>Drahtstauerkennung</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="117"/>
+        <source>Detects a clogged wire feed</source>
+        <translation>Erkennt einen verstopften Drahtvorschub</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="118"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="119"/>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="120"/>
+        <source>Dispensing status</source>
+        <translation>Dosierstatus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="121"/>
+        <source>Whether the dispensing motor is running</source>
+        <translation>Ob der Dosiermotor läuft</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="122"/>
+        <source>Stopped</source>
+        <translation>Gestoppt</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="123"/>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="124"/>
+        <source>Start dispensing</source>
+        <translation>Dosieren starten</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="125"/>
+        <source>Starts the dispensing motor</source>
+        <translation>Startet den Dosiermotor</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="126"/>
+        <source>Stop dispensing</source>
+        <translation>Dosieren stoppen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="127"/>
+        <source>Stops the dispensing motor</source>
+        <translation>Stoppt den Dosiermotor</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="128"/>
+        <source>Feeding mode</source>
+        <translation>Vorschubmodus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="129"/>
+        <source>Continuous feeds until stopped; discontinuous feeds the set length</source>
+        <translation>Kontinuierlich: Vorschub bis zum Stopp; diskontinuierlich: Vorschub um die eingestellte Länge</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="130"/>
+        <source>Start feeding</source>
+        <translation>Vorschub starten</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="131"/>
+        <source>Starts feeding wire forward or backward</source>
+        <translation>Startet den Drahtvorschub vorwärts oder rückwärts</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="132"/>
+        <source>Forward</source>
+        <translation>Vorwärts</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="133"/>
+        <source>Backward</source>
+        <translation>Rückwärts</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="134"/>
+        <source>Stop feeding</source>
+        <translation>Vorschub stoppen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="135"/>
+        <source>Stops feeding (continuous mode)</source>
+        <translation>Stoppt den Vorschub (kontinuierlicher Modus)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
+        <source>Feeding length</source>
+        <translation>Vorschublänge</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
+        <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
+        <translation>Vorschublänge pro Start im diskontinuierlichen Modus, in Zehntelmillimetern</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
+        <source>Feeding speed</source>
+        <translation>Vorschubgeschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
+        <source>Feeding speed, in tenths of a millimetre per second</source>
+        <translation>Vorschubgeschwindigkeit, in Zehntelmillimetern pro Sekunde</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="140"/>
+        <source>Wire thickness</source>
+        <translation>Drahtstärke</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="141"/>
+        <source>Diameter class of the solder wire</source>
+        <translation>Durchmesserklasse des Lötdrahts</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="142"/>
+        <source>≤ 0.8 mm</source>
+        <translation>≤ 0,8 mm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="143"/>
+        <source>&gt; 0.8 mm and ≤ 1.2 mm</source>
+        <translation>&gt; 0,8 mm und ≤ 1,2 mm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="144"/>
+        <source>&gt; 1.2 mm</source>
+        <translation>&gt; 1,2 mm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="145"/>
+        <source>Switch input</source>
+        <translation>Schaltereingang</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="146"/>
+        <source>Whether the switch input can start feeding</source>
+        <translation>Ob der Schaltereingang den Vorschub starten kann</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="147"/>
+        <source>Disabled</source>
+        <translation>Deaktiviert</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="148"/>
+        <source>Enabled</source>
+        <translation>Aktiviert</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="149"/>
+        <source>Feeder error code</source>
+        <translation>Vorschub-Fehlercode</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="150"/>
+        <source>The feeder&apos;s last error code</source>
+        <translation>Letzter Fehlercode des Lotdrahtvorschubs</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="151"/>
+        <source>Reset feeder error</source>
+        <translation>Vorschubfehler zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="152"/>
+        <source>Clears the feeder&apos;s last error code</source>
+        <translation>Löscht den letzten Fehlercode des Lotdrahtvorschubs</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="153"/>
+        <source>Feeding status</source>
+        <translation>Vorschubstatus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="154"/>
+        <source>Whether the feeder is feeding</source>
+        <translation>Ob der Lotdrahtvorschub gerade Draht fördert</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="155"/>
+        <source>Idle</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="156"/>
+        <source>Feeding</source>
+        <translation>Vorschub läuft</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="157"/>
+        <source>Fed length</source>
+        <translation>Vorgeschobene Länge</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="158"/>
+        <source>Length fed since the last start, in tenths of a millimetre</source>
+        <translation>Seit dem letzten Start vorgeschobene Länge, in Zehntelmillimetern</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="159"/>
+        <source>Loading</source>
+        <translation>Einfädeln</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="160"/>
+        <source>Feeds wire ignoring feeding errors, for loading a new spool</source>
+        <translation>Schiebt Draht ohne Prüfung auf Vorschubfehler vor, zum Einfädeln einer neuen Spule</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="161"/>
+        <source>Start loading</source>
+        <translation>Einfädeln starten</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="162"/>
+        <source>End loading</source>
+        <translation>Einfädeln beenden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="163"/>
+        <source>Plugged hours (total)</source>
+        <translation>Einschaltstunden (gesamt)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="164"/>
+        <source>Hours powered, total counter</source>
+        <translation>Stunden eingeschaltet, Gesamtzähler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="165"/>
+        <source>Plugged hours (partial)</source>
+        <translation>Einschaltstunden (Teilzähler)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="166"/>
+        <source>Hours powered since the partial counter was reset</source>
+        <translation>Stunden eingeschaltet seit dem Zurücksetzen des Teilzählers</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="167"/>
+        <source>Reset plugged hours (partial)</source>
+        <translation>Einschaltstunden (Teilzähler) zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="168"/>
+        <source>Resets the partial plugged-hours counter</source>
+        <translation>Setzt den Teilzähler der Einschaltstunden zurück</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="169"/>
+        <source>The partial plugged-hours counter goes back to zero; the old value cannot be recovered.</source>
+        <translation>Der Teilzähler der Einschaltstunden wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <source>Feeding hours (total)</source>
+        <translation>Vorschubstunden (gesamt)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
+        <source>Hours feeding, total counter</source>
+        <translation>Stunden mit Vorschub, Gesamtzähler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
+        <source>Feeding hours (partial)</source>
+        <translation>Vorschubstunden (Teilzähler)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <source>Hours feeding since the partial counter was reset</source>
+        <translation>Stunden mit Vorschub seit dem Zurücksetzen des Teilzählers</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
+        <source>Reset feeding hours (partial)</source>
+        <translation>Vorschubstunden (Teilzähler) zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
+        <source>Resets the partial feeding-hours counter</source>
+        <translation>Setzt den Teilzähler der Vorschubstunden zurück</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
+        <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
+        <translation>Der Teilzähler der Vorschubstunden wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
+        <source>Fed length (total)</source>
+        <translation>Vorgeschobene Länge (gesamt)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
+        <source>Metres of wire fed, total counter</source>
+        <translation>Vorgeschobener Draht in Metern, Gesamtzähler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <source>Fed length (partial)</source>
+        <translation>Vorgeschobene Länge (Teilzähler)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
+        <source>Metres of wire fed since the partial counter was reset</source>
+        <translation>Vorgeschobener Draht in Metern seit dem Zurücksetzen des Teilzählers</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
+        <source>Reset fed length (partial)</source>
+        <translation>Vorgeschobene Länge (Teilzähler) zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
+        <source>Resets the partial fed-length counter</source>
+        <translation>Setzt den Teilzähler der vorgeschobenen Länge zurück</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
+        <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
+        <translation>Der Teilzähler der vorgeschobenen Länge wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
+        <source>No tool</source>
+        <translation>Kein Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
+        <source>BCC error: the frame failed the sum check</source>
+        <translation>BCC-Fehler: das Telegramm hat die Prüfsummenkontrolle nicht bestanden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
+        <source>Format error: the frame has the wrong size or layout</source>
+        <translation>Formatfehler: das Telegramm hat die falsche Länge oder den falschen Aufbau</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <source>Out of range: the value is outside the allowed limits or off-step</source>
+        <translation>Außerhalb des Bereichs: der Wert liegt außerhalb der zulässigen Grenzen oder nicht im Schrittraster</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
+        <source>Control error: the command is not accepted by this device</source>
+        <translation>Steuerungsfehler: dieses Gerät nimmt den Befehl nicht an</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
+        <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
+        <translation>Der Robotermodus ist aus: schalten Sie im Stationsmenü &quot;Robot mode&quot; ein</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
+        <source>Device model error: the device model is unknown</source>
+        <translation>Gerätemodellfehler: das Gerätemodell ist unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
+        <source>Undefined error</source>
+        <translation>Undefinierter Fehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
+        <source>Stopped by transformer overload</source>
+        <translation>Wegen Überlast des Transformators gestoppt</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <source>Temperature sensor error</source>
+        <translation>Fehler des Temperatursensors</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
+        <source>Memory error</source>
+        <translation>Speicherfehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
+        <source>Mains frequency error</source>
+        <translation>Netzfrequenzfehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
+        <source>Device model error</source>
+        <translation>Gerätemodellfehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
+        <source>MCU tools not connected</source>
+        <translation>Werkzeug-MCU nicht verbunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
+        <source>Warning: transformer overload</source>
+        <translation>Warnung: Überlast des Transformators</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
+        <source>Short circuit</source>
+        <translation>Kurzschluss</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
+        <source>Short circuit, not recoverable: restart the station</source>
+        <translation>Kurzschluss, nicht behebbar: Station neu starten</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
+        <source>Open circuit</source>
+        <translation>Leitungsunterbrechung</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
+        <source>Tool not accepted</source>
+        <translation>Werkzeug nicht akzeptiert</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
+        <source>Detecting tool</source>
+        <translation>Werkzeug wird erkannt</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
+        <source>Stopped at maximum power</source>
+        <translation>Bei maximaler Leistung gestoppt</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
+        <source>Stopped by transistor (MOS) overload</source>
+        <translation>Wegen Überlast des Transistors (MOS) gestoppt</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
+        <source>Warning: transistor (MOS) overload</source>
+        <translation>Warnung: Überlast des Transistors (MOS)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
+        <source>No error</source>
+        <translation>Kein Fehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
+        <source>Sleep</source>
+        <translation>Ruhemodus</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
+        <source>Hibernation</source>
+        <translation>Tiefschlaf</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
+        <source>Suction on</source>
+        <translation>Absaugung ein</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
+        <source>Motor forward (dispensing)</source>
+        <translation>Motor vorwärts (Dosieren)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <source>Motor backward</source>
+        <translation>Motor rückwärts</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
+        <source>unknown (%1)</source>
+        <translation>unbekannt (%1)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+</context>
+<context>
     <name>ChartCsv</name>
     <message>
         <location filename="../app/gui/charts/chartcsv.cpp" line="192"/>
@@ -243,84 +1276,84 @@
         <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="75"/>
+        <location filename="../app/cli/clicommands.cpp" line="76"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="86"/>
+        <location filename="../app/cli/clicommands.cpp" line="87"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="108"/>
+        <location filename="../app/cli/clicommands.cpp" line="109"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="113"/>
+        <location filename="../app/cli/clicommands.cpp" line="114"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="121"/>
+        <location filename="../app/cli/clicommands.cpp" line="122"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="126"/>
+        <location filename="../app/cli/clicommands.cpp" line="127"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="135"/>
+        <location filename="../app/cli/clicommands.cpp" line="136"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="143"/>
+        <location filename="../app/cli/clicommands.cpp" line="144"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="155"/>
-        <location filename="../app/cli/clicommands.cpp" line="157"/>
+        <location filename="../app/cli/clicommands.cpp" line="156"/>
+        <location filename="../app/cli/clicommands.cpp" line="158"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <location filename="../app/cli/clicommands.cpp" line="161"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="169"/>
-        <location filename="../app/cli/clicommands.cpp" line="190"/>
+        <location filename="../app/cli/clicommands.cpp" line="170"/>
+        <location filename="../app/cli/clicommands.cpp" line="191"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="182"/>
+        <location filename="../app/cli/clicommands.cpp" line="183"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="255"/>
+        <location filename="../app/cli/clicommands.cpp" line="256"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="278"/>
+        <location filename="../app/cli/clicommands.cpp" line="279"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="281"/>
+        <location filename="../app/cli/clicommands.cpp" line="282"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="282"/>
+        <location filename="../app/cli/clicommands.cpp" line="283"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
     </message>
@@ -548,102 +1581,102 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="56"/>
+        <location filename="../lib/model/consolemodel.cpp" line="61"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>unverändert gesendet (kein gültiges Telegramm)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="72"/>
+        <location filename="../lib/model/consolemodel.cpp" line="77"/>
         <source>stray: answers no pending request</source>
         <translation>verwaist: beantwortet keine offene Anfrage</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="148"/>
+        <location filename="../lib/model/consolemodel.cpp" line="167"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="150"/>
+        <location filename="../lib/model/consolemodel.cpp" line="169"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="152"/>
+        <location filename="../lib/model/consolemodel.cpp" line="171"/>
         <source>frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="154"/>
+        <location filename="../lib/model/consolemodel.cpp" line="173"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="156"/>
+        <location filename="../lib/model/consolemodel.cpp" line="175"/>
         <source>note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="199"/>
+        <location filename="../lib/model/consolemodel.cpp" line="218"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="199"/>
+        <location filename="../lib/model/consolemodel.cpp" line="218"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="215"/>
+        <location filename="../lib/model/consolemodel.cpp" line="234"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="215"/>
+        <location filename="../lib/model/consolemodel.cpp" line="234"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="216"/>
+        <location filename="../lib/model/consolemodel.cpp" line="235"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="216"/>
+        <location filename="../lib/model/consolemodel.cpp" line="235"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="217"/>
+        <location filename="../lib/model/consolemodel.cpp" line="236"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="217"/>
+        <location filename="../lib/model/consolemodel.cpp" line="236"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="237"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="237"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="219"/>
+        <location filename="../lib/model/consolemodel.cpp" line="238"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="219"/>
+        <location filename="../lib/model/consolemodel.cpp" line="238"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="220"/>
+        <location filename="../lib/model/consolemodel.cpp" line="239"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -674,7 +1707,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>DisplayUnits</name>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="83"/>
+        <location filename="../lib/model/displayunits.cpp" line="82"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>&apos;%1&apos; ist keine Zahl</translation>
     </message>
@@ -720,59 +1753,176 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Auf der Leitung wird dieser Wert als %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="72"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Unbekannte Gerätefamilie: der Katalog kann dieses Telegramm nicht prüfen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="73"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 ist im Katalog kein Schreibbefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="74"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="79"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 ist im Katalog kein Lesebefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="77"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
         <source>Did you mean %1?</source>
         <translation>Meinten Sie %1?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
         <source>It is sent as typed.</source>
         <translation>Es wird unverändert gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Lesebefehle haben kein Datenfeld; das Gerät kann dieses Telegramm ablehnen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
         <source>Dangerous: %1</source>
         <translation>Gefährlich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="93"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
         <source>Catalog check: %1</source>
         <translation>Katalogprüfung: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>Nicht sendbar: der Befehl muss aus 3 druckbaren Zeichen bestehen, z. B. SMN.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="120"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="125"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>Nicht sendbar: das Datenfeld darf nur druckbare ASCII-Zeichen enthalten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="125"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="130"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>Nicht sendbar: Adressen gehen von 00 bis 99.</translation>
+    </message>
+</context>
+<context>
+    <name>FrameDecoder</name>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="16"/>
+        <source>frame</source>
+        <translation>Telegramm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
+        <source>BCC error</source>
+        <translation>BCC-Fehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
+        <source>format error</source>
+        <translation>Formatfehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
+        <source>overflow</source>
+        <translation>Überlauf</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
+        <source>garbage</source>
+        <translation>Datenmüll</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="53"/>
+        <source>not STX…ETX BCC or too short</source>
+        <translation>kein STX…ETX BCC oder zu kurz</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="57"/>
+        <source>BCC is %1, expected %2</source>
+        <translation>BCC ist %1, erwartet %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="67"/>
+        <source>malformed addresses</source>
+        <translation>fehlerhafte Adressen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="73"/>
+        <source>too short for header and command</source>
+        <translation>zu kurz für Kopf und Befehl</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="76"/>
+        <source>unknown header</source>
+        <translation>unbekannter Kopf</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="81"/>
+        <source>command is not 3 letters or digits</source>
+        <translation>Befehl besteht nicht aus 3 Buchstaben oder Ziffern</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="86"/>
+        <source>data field is not printable ASCII</source>
+        <translation>Datenfeld ist kein druckbares ASCII</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="119"/>
+        <source>frame interrupted by a new STX</source>
+        <translation>Telegramm durch ein neues STX unterbrochen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="128"/>
+        <source>no ETX within %1 bytes</source>
+        <translation>kein ETX innerhalb von %1 Bytes</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/protocol/framedecoder.cpp" line="147"/>
+        <source>%n byte(s) outside any frame</source>
+        <translation>
+            <numerusform>%n Byte außerhalb eines Telegramms</numerusform>
+            <numerusform>%n Bytes außerhalb eines Telegramms</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>HexBytes</name>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="38"/>
+        <source>odd number of hex digits before position %1</source>
+        <translation>ungerade Anzahl von Hex-Ziffern vor Position %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="48"/>
+        <source>&apos;%1&apos; at position %2 is not a hex digit</source>
+        <translation>&apos;%1&apos; an Position %2 ist keine Hex-Ziffer</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
+        <source>more than %1 bytes</source>
+        <translation>mehr als %1 Bytes</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="59"/>
+        <source>odd number of hex digits</source>
+        <translation>ungerade Anzahl von Hex-Ziffern</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="61"/>
+        <source>no bytes given</source>
+        <translation>keine Bytes angegeben</translation>
+    </message>
+</context>
+<context>
+    <name>LinkStats</name>
+    <message>
+        <location filename="../lib/link/linkstats.cpp" line="60"/>
+        <source>%1 tx/s, latency %2 ms median (%3-%4), %5 sent, %6 answered, %7 timeouts, %8 corrupted, %9 NAKs, %10 stray, %11 retries</source>
+        <translation>%1 tx/s, Latenz %2 ms Median (%3-%4), %5 gesendet, %6 beantwortet, %7 Zeitüberschreitungen, %8 beschädigt, %9 NAKs, %10 verwaist, %11 Wiederholungen</translation>
     </message>
 </context>
 <context>
@@ -889,7 +2039,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="117"/>
-        <location filename="../lib/model/parameter.cpp" line="211"/>
+        <location filename="../lib/model/parameter.cpp" line="213"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
@@ -914,34 +2064,92 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="234"/>
+        <location filename="../lib/model/parameter.cpp" line="236"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="237"/>
+        <location filename="../lib/model/parameter.cpp" line="239"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="256"/>
+        <location filename="../lib/model/parameter.cpp" line="258"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="262"/>
+        <location filename="../lib/model/parameter.cpp" line="264"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="273"/>
+        <location filename="../lib/model/parameter.cpp" line="275"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="280"/>
+        <location filename="../lib/model/parameter.cpp" line="282"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
+    </message>
+</context>
+<context>
+    <name>PortDiagnostics</name>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <source>this program</source>
+        <translation>dieses Programm</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <source>, this program</source>
+        <translation>, dieses Programm</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="46"/>
+        <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
+        <translation>führen Sie `sudo usermod -aG %1 $USER` aus und melden Sie sich danach ab und wieder an.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
+        <source>You are not allowed to open %1: %2</source>
+        <translation>Sie haben keine Berechtigung, %1 zu öffnen: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
+        <translation>Sie haben keine Berechtigung, %1 zu öffnen, und die Schnittstelle gehört zur Gruppe root statt zu dialout; ein Gruppenbeitritt hilft daher erst, wenn eine udev-Regel ihr GROUP=&quot;dialout&quot; zuweist. Dann %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="54"/>
+        <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
+        <translation>Sie haben keine Berechtigung, %1 zu öffnen; die Schnittstelle gehört zur Gruppe %2 (nicht dialout): %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="96"/>
+        <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
+        <translation>%1 wird bereits von %2 verwendet. Schließen Sie diese Verbindung und versuchen Sie es dann erneut.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
+        <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
+        <translation>Diesen Port gibt es nicht: %1. Möglicherweise ist der Adapter abgezogen oder der Portname falsch geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="105"/>
+        <source>%1 is already open in TipScope; close that connection first</source>
+        <translation>%1 ist in TipScope bereits geöffnet; schließen Sie zuerst diese Verbindung</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="109"/>
+        <source>%1 stopped working, perhaps because the adapter was unplugged</source>
+        <translation>%1 funktioniert nicht mehr, vielleicht wurde der Adapter abgezogen</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
+        <source>Could not open %1</source>
+        <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
 </context>
 <context>
@@ -988,7 +2196,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/portmodel.cpp" line="100"/>
-        <location filename="../lib/model/portmodel.cpp" line="113"/>
+        <location filename="../lib/model/portmodel.cpp" line="114"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -998,7 +2206,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Werkzeug %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="170"/>
+        <location filename="../lib/model/portmodel.cpp" line="171"/>
         <source>this port has no status command</source>
         <translation>dieser Port hat keinen Statusbefehl</translation>
     </message>
@@ -1075,7 +2283,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="176"/>
+        <location filename="../lib/model/profile.cpp" line="175"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
@@ -1157,43 +2365,59 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>SerialPortList</name>
+    <message>
+        <location filename="../lib/link/ports/serialportlist.cpp" line="161"/>
+        <source>%1 is an FTDI adapter with a %2 ms latency timer (the kernel default is 16 ms), which holds back every short answer and throttles request/answer traffic.
+Set it to 1 ms now with:
+  echo 1 | sudo tee /sys/bus/usb-serial/devices/%1/latency_timer
+Make it permanent with this udev rule:
+  echo &apos;ACTION==&quot;add&quot;, SUBSYSTEM==&quot;usb-serial&quot;, DRIVER==&quot;ftdi_sio&quot;, ATTR{latency_timer}=&quot;1&quot;&apos; | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</source>
+        <translation>%1 ist ein FTDI-Adapter mit einem Latenz-Timer von %2 ms (Kernel-Standard: 16 ms); dieser hält jede kurze Antwort zurück und bremst den Anfrage-Antwort-Verkehr.
+Sofort auf 1 ms stellen mit:
+  echo 1 | sudo tee /sys/bus/usb-serial/devices/%1/latency_timer
+Dauerhaft mit dieser udev-Regel:
+  echo &apos;ACTION==&quot;add&quot;, SUBSYSTEM==&quot;usb-serial&quot;, DRIVER==&quot;ftdi_sio&quot;, ATTR{latency_timer}=&quot;1&quot;&apos; | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</translation>
+    </message>
+</context>
+<context>
     <name>Session</name>
     <message>
         <location filename="../lib/model/session.cpp" line="26"/>
-        <location filename="../lib/model/session.cpp" line="94"/>
-        <location filename="../lib/model/session.cpp" line="97"/>
+        <location filename="../lib/model/session.cpp" line="96"/>
+        <location filename="../lib/model/session.cpp" line="99"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="93"/>
-        <location filename="../lib/model/session.cpp" line="104"/>
-        <location filename="../lib/model/session.cpp" line="111"/>
+        <location filename="../lib/model/session.cpp" line="95"/>
+        <location filename="../lib/model/session.cpp" line="106"/>
+        <location filename="../lib/model/session.cpp" line="113"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="127"/>
+        <location filename="../lib/model/session.cpp" line="129"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="195"/>
+        <location filename="../lib/model/session.cpp" line="197"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="196"/>
+        <location filename="../lib/model/session.cpp" line="198"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="202"/>
+        <location filename="../lib/model/session.cpp" line="204"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="212"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -1232,44 +2456,98 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="91"/>
+        <location filename="../lib/model/supportreport.cpp" line="93"/>
         <source>TipScope support report, %1</source>
         <translation>TipScope-Supportbericht, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="92"/>
+        <location filename="../lib/model/supportreport.cpp" line="94"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="98"/>
+        <location filename="../lib/model/supportreport.cpp" line="100"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="99"/>
+        <location filename="../lib/model/supportreport.cpp" line="101"/>
         <source>State: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="100"/>
+        <location filename="../lib/model/supportreport.cpp" line="102"/>
         <source>Statistics: %1</source>
         <translation>Statistik: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="104"/>
+        <location filename="../lib/model/supportreport.cpp" line="106"/>
         <source>Device %1: %2 (%3), software %4</source>
         <translation>Gerät %1: %2 (%3), Software %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="118"/>
+        <location filename="../lib/model/supportreport.cpp" line="121"/>
         <source>Recent events:</source>
         <translation>Letzte Ereignisse:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="143"/>
+        <location filename="../lib/model/supportreport.cpp" line="146"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ValueCodec</name>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="42"/>
+        <source>%1 to %2%3</source>
+        <translation>%1 bis %2%3</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="46"/>
+        <source> in steps of %1</source>
+        <translation> in Schritten von %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="48"/>
+        <source>, or %1</source>
+        <translation>, oder %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="56"/>
+        <source>one of %1</source>
+        <translation>einer der Werte %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="59"/>
+        <source>no value (the command carries %1)</source>
+        <translation>kein Wert (der Befehl enthält %1)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="62"/>
+        <source>nothing: it is read-only</source>
+        <translation>nichts: schreibgeschützt</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="71"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="77"/>
+        <source>%1 cannot be written</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="91"/>
+        <source>%1 refused for %2 (%3): allowed is %4</source>
+        <translation>%1 für %2 (%3) abgelehnt: zulässig ist %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
+        <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
+        <translation>&apos;%1&apos; ist keine Verzögerung in Sekunden wie 1.6 oder 01.60</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
+        <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
+        <translation>&apos;%1&apos; ist keine ganze Zahl; für %2 zulässig: %3</translation>
     </message>
 </context>
 <context>
@@ -1303,7 +2581,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="32"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="42"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Zeitdiagramm. Mausrad oder Plus- und Minustaste zoomen, Ziehen oder Pfeiltasten verschieben, Umschalt+Ziehen wählt einen Bereich, Doppelklick oder Pos1 setzt zurück.</translation>
     </message>
@@ -1311,7 +2589,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="299"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="311"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -1811,223 +3089,223 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="74"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="75"/>
         <source>%1: answered %2 after %L3 ms</source>
         <translation>%1: Antwort %2 nach %L3 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="78"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
         <source>%1: refused, %2</source>
         <translation>%1: abgelehnt, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="80"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="81"/>
         <source>%1: no answer (timeout)</source>
         <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="82"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="94"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="95"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="131"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="132"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="137"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="140"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
         <source>Relative time</source>
         <translation>Relative Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="158"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
         <source>Show bytes sent</source>
         <translation>Gesendete Bytes anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
         <source>RX chunks</source>
         <translation>RX-Blöcke</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>Frames</source>
         <translation>Telegramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>Show received frames, decoded</source>
         <translation>Empfangene Telegramme dekodiert anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>Notes</source>
         <translation>Hinweise</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>De&amp;vice:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Device address filter</source>
         <translation>Filter für Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="185"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="186"/>
         <source>Co&amp;mmand:</source>
         <translation>Be&amp;fehl:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="189"/>
         <source>Command filter</source>
         <translation>Befehlsfilter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="189"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
         <source>e.g. ST1</source>
         <translation>z. B. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="198"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="199"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="200"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
         <source>Remove every row, held ones included</source>
         <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="202"/>
         <source>Save…</source>
         <translation>Speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="204"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="216"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="217"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="243"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="244"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="249"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="252"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="263"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="266"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="287"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="300"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="318"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="290"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="303"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="321"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="291"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="348"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="374"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
         <source>paused: new traffic is held</source>
         <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="384"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n Rohbyte</numerusform>
@@ -2035,17 +3313,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: nicht gesendet, nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="391"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="400"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="404"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: gesendet, warte auf Antwort…</translation>
     </message>
@@ -2088,194 +3366,194 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Teilzähler vorgeschobene Länge zurücksetzen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>When the counters were read</source>
         <translation>Zeitpunkt der Zählerabfrage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="87"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="87"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
         <source>Refresh counters</source>
         <translation>Zähler aktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
         <source>&amp;Export CSV…</source>
         <translation>CSV e&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
         <source>Export counters as CSV</source>
         <translation>Zähler als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="103"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="104"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="155"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="156"/>
         <source>Reading the counters…</source>
         <translation>Zähler werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
         <source>Last reading at %1</source>
         <translation>Letzte Abfrage um %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="161"/>
         <source>Waiting for the first reading…</source>
         <translation>Warte auf die erste Abfrage…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="209"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
         <source>Station %1</source>
         <translation>Station %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="211"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="239"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="240"/>
         <source>Counters of %1</source>
         <translation>Zähler von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="223"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="238"/>
         <source>Solder feeder %1</source>
         <translation>Lotdrahtvorschub %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Partial</source>
         <translation>Teilzähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="282"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="283"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="284"/>
         <source>Last read failed: %1</source>
         <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="286"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="287"/>
         <source>Read at %1</source>
         <translation>Gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="313"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="314"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="316"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="317"/>
         <source>Reset partial counter</source>
         <translation>Teilzähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="317"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="318"/>
         <source>Reset “%1” on %2?</source>
         <translation>„%1“ an %2 zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="319"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="320"/>
         <source>It now reads %1.</source>
         <translation>Er steht jetzt auf %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="321"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
         <source>The total counter is not affected.</source>
         <translation>Der Gesamtzähler bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>Reset counter</source>
         <translation>Zähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 Es wurde nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 Nicht zurückgesetzt: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 %2 wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="344"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="356"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="376"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="383"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="384"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="381"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="385"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>
@@ -2293,22 +3571,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="72"/>
+        <location filename="../app/gui/devicetree.cpp" line="79"/>
         <source>No line</source>
         <translation>Keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="78"/>
+        <location filename="../app/gui/devicetree.cpp" line="85"/>
         <source>feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="78"/>
+        <location filename="../app/gui/devicetree.cpp" line="85"/>
         <source>station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="83"/>
+        <location filename="../app/gui/devicetree.cpp" line="90"/>
         <source>Port %1: %2</source>
         <translation>Port %1: %2</translation>
     </message>
@@ -2938,167 +4216,167 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="139"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="144"/>
         <source>Send a frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="162"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="167"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="165"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="170"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="166"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="171"/>
         <source>R (read)</source>
         <translation>R (lesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="167"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="172"/>
         <source>W (write)</source>
         <translation>W (schreiben)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="169"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="174"/>
         <source>Command</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="179"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="184"/>
         <source>Data field</source>
         <translation>Datenfeld</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="183"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="188"/>
         <source>&amp;Send frame</source>
         <translation>Telegramm &amp;senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="184"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="189"/>
         <source>Send frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="186"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="191"/>
         <source>Frame to be sent</source>
         <translation>Zu sendendes Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="190"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="195"/>
         <source>Catalog check</source>
         <translation>Katalogprüfung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="193"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="198"/>
         <source>Raw bytes in hex</source>
         <translation>Rohbytes hexadezimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="197"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="202"/>
         <source>Send ra&amp;w hex</source>
         <translation>Roh-He&amp;x senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="198"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="203"/>
         <source>Send raw hex</source>
         <translation>Roh-Hex senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="200"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="205"/>
         <source>Raw bytes check</source>
         <translation>Prüfung der Rohbytes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="201"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
         <source>Nothing sent yet.</source>
         <translation>Noch nichts gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="202"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="207"/>
         <source>Outcome of the last send</source>
         <translation>Ergebnis des letzten Sendens</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="216"/>
         <source>&amp;Device</source>
         <translation>Ger&amp;ät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="213"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="218"/>
         <source>&amp;Header</source>
         <translation>&amp;Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="220"/>
         <source>C&amp;ommand</source>
         <translation>Befeh&amp;l</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="217"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
         <source>D&amp;ata</source>
         <translation>Date&amp;n</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="220"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="225"/>
         <source>Frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="223"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="228"/>
         <source>&amp;Raw hex</source>
         <translation>&amp;Roh-Hex</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="232"/>
         <source>Last send</source>
         <translation>Letztes Senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="260"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="265"/>
         <source>Monitor-only mode is on: raw bytes are not sent, since they may be a write. Reads can still be sent with Send frame.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: Rohbytes werden nicht gesendet, da sie ein Schreibbefehl sein könnten. Lesebefehle können weiterhin mit „Telegramm senden“ gesendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="267"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Diese Bytes genau wie eingegeben senden; die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="287"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="292"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="350"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="355"/>
         <source>(nothing to send)</source>
         <translation>(nichts zu senden)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="354"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
         <source>none for reads</source>
         <translation>keins bei Lesebefehlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="354"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
         <source>e.g. 00350</source>
         <translation>z. B. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="358"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="363"/>
         <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: W-Telegramme werden nicht gesendet, Lesebefehle schon.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="370"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="375"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Dieses Telegramm einmal wie angezeigt senden (ohne Wiederholungen; Katalogwarnungen halten es nicht auf). Die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="387"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="392"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
@@ -3106,7 +4384,7 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="390"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="395"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
@@ -3114,7 +4392,7 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="408"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="413"/>
         <source>Not sent: %1</source>
         <translation>Nicht gesendet: %1</translation>
     </message>
@@ -3142,7 +4420,7 @@ Zurücksetzen?</translation>
         <translation>NAK %1 × %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="37"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="38"/>
         <source>Reconnects: %1</source>
         <translation>Neuverbindungen: %1</translation>
     </message>
@@ -3303,57 +4581,57 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="51"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="56"/>
         <source>Allowed: %1</source>
         <translation>Zulässig: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="52"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="57"/>
         <source>Command: %1</source>
         <translation>Befehl: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="74"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="80"/>
         <source>%1 disabled</source>
         <translation>%1 deaktiviert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="122"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="125"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="131"/>
         <source>reading…</source>
         <translation>wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
         <source>not saved</source>
         <translation>nicht gesichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
         <source>✓ in sync</source>
         <translation>✓ synchron</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="132"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="138"/>
         <source>edited</source>
         <translation>geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="136"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="142"/>
         <source>writing…</source>
         <translation>wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="139"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="145"/>
         <source>✗ failed</source>
         <translation>✗ fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="144"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="150"/>
         <source>✗ refused</source>
         <translation>✗ abgelehnt</translation>
     </message>
@@ -3361,102 +4639,102 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="21"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="23"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="32"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="34"/>
         <source>Tip temperature, port %1</source>
         <translation>Spitzentemperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="39"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="41"/>
         <source>Power, port %1</source>
         <translation>Leistung, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
         <source>Work</source>
         <translation>Arbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="46"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Cool</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="53"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="55"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
         <source>New selected temperature, port %1</source>
         <translation>Neue eingestellte Temperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="56"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="92"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="100"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="104"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="125"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="132"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="128"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="129"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="131"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="140"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="143"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="145"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
     </message>
@@ -3635,7 +4913,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="186"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
@@ -3710,42 +4988,42 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Werkzeug %1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
         <source> (connected)</source>
         <translation> (angeschlossen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dosierung (Drahtvorschub der ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="160"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="186"/>
         <source>&amp;Apply (%1)</source>
         <translation>&amp;Anwenden (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="192"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="194"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="217"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="219"/>
         <source>Save to station memory</source>
         <translation>Im Stationsspeicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="228"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="230"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Neue Adresse (1-99) oder 0 für Telegramme ohne Adressen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="235"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="237"/>
         <source>%1
 
 %2
@@ -3758,26 +5036,26 @@ Do you want to continue?</source>
 Möchten Sie fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="250"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="252"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="258"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="264"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="251"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="253"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Einige Einstellungen wurden noch nicht gelesen (%1). Aktualisieren Sie und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="269"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="259"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="271"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="270"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="277"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>
@@ -3789,6 +5067,11 @@ Möchten Sie fortfahren?</translation>
 </context>
 <context>
     <name>tipscope::link::Line</name>
+    <message>
+        <location filename="../lib/link/line.cpp" line="23"/>
+        <source>the line was closed</source>
+        <translation>die Leitung wurde geschlossen</translation>
+    </message>
     <message>
         <location filename="../lib/link/line.cpp" line="43"/>
         <source>disconnected</source>
@@ -3823,6 +5106,154 @@ Möchten Sie fortfahren?</translation>
         <location filename="../lib/link/line.cpp" line="115"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>keine Antwort auf %1 Anfragen in Folge (Kabel abgezogen, Gerät aus oder falsche Adressierung?)</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Reply</name>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="10"/>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="12"/>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="14"/>
+        <source>corrupted answer</source>
+        <translation>beschädigte Antwort</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="16"/>
+        <source>refused (NAK)</source>
+        <translation>abgelehnt (NAK)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="18"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="20"/>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="22"/>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::RequestQueue</name>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="60"/>
+        <source>the connection was closed</source>
+        <translation>die Verbindung wurde geschlossen</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="106"/>
+        <source>the connection is closing</source>
+        <translation>die Verbindung wird geschlossen</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="110"/>
+        <source>not sent: the line is not connected</source>
+        <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="257"/>
+        <source>the answer was corrupted (%1)</source>
+        <translation>die Antwort war beschädigt (%1)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="268"/>
+        <source>the request could not be written</source>
+        <translation>die Anfrage konnte nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="272"/>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="290"/>
+        <source>NAK %1: %2</source>
+        <translation>NAK %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <source>%1: %2 (attempt %3)</source>
+        <translation>%1: %2 (Versuch %3)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <source>%1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>%1 nach %n Versuch</numerusform>
+            <numerusform>%1 nach %n Versuchen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="327"/>
+        <source>; the device may have carried it out: check before repeating</source>
+        <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="388"/>
+        <source>line lost: %1</source>
+        <translation>Leitung verloren: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="389"/>
+        <source>the line was lost: %1</source>
+        <translation>die Leitung ist verloren gegangen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::SerialTransport</name>
+    <message>
+        <location filename="../lib/link/serialtransport.cpp" line="74"/>
+        <source>the port went away (%1)</source>
+        <translation>der Port ist verschwunden (%1)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/serialtransport.cpp" line="79"/>
+        <source>the port stopped responding (%1)</source>
+        <translation>der Port reagiert nicht mehr (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::SimTransport</name>
+    <message>
+        <location filename="../lib/link/simtransport.cpp" line="24"/>
+        <source>the simulated line is unplugged</source>
+        <translation>die simulierte Leitung ist abgezogen</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/simtransport.cpp" line="51"/>
+        <source>demo (simulated %1)</source>
+        <translation>Demo (simulierte %1)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/simtransport.cpp" line="62"/>
+        <source>the simulated cable was pulled</source>
+        <translation>das simulierte Kabel wurde abgezogen</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::TcpTransport</name>
+    <message>
+        <location filename="../lib/link/tcptransport.cpp" line="23"/>
+        <source>the connection to %1 dropped (%2)</source>
+        <translation>die Verbindung zu %1 ist abgebrochen (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/tcptransport.cpp" line="29"/>
+        <source>cannot connect to %1: %2</source>
+        <translation>Verbindung zu %1 nicht möglich: %2</translation>
     </message>
 </context>
 </TS>

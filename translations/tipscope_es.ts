@@ -38,6 +38,1039 @@
     </message>
 </context>
 <context>
+    <name>Catalog</name>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="196"/>
+        <source>Unknown NAK code %1</source>
+        <translation>Código NAK desconocido %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="201"/>
+        <source>Unknown station error %1</source>
+        <translation>Error de estación desconocido %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="210"/>
+        <source>Unknown port error %1</source>
+        <translation>Error de puerto desconocido %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
+        <translation>Error del alimentador %1 (no figura en la guía del SFR; bórrelo con W-ECV y consulte el manual del SFR)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="13"/>
+        <source>Port status</source>
+        <translation>Estado del puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="14"/>
+        <source>Tool operating status: working, stand, sleep, hibernation, with cooling, suction and motor flags</source>
+        <translation>Estado de funcionamiento de la herramienta: trabajando, soporte, reposo, hibernación, con indicadores de enfriamiento, succión y motor</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="15"/>
+        <source>Working</source>
+        <translation>Trabajando</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="16"/>
+        <source>Stand</source>
+        <translation>En soporte</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="17"/>
+        <source>Cooling</source>
+        <translation>Enfriando</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="18"/>
+        <source>Tool operating status: no stand (working), stand, sleep, hibernation, with extractor and suction flags</source>
+        <translation>Estado de funcionamiento de la herramienta: sin soporte (trabajando), soporte, reposo, hibernación, con indicadores de extractor y succión</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="19"/>
+        <source>Selected temperature</source>
+        <translation>Temperatura seleccionada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="20"/>
+        <source>Tip working temperature, in steps of 5 °C between the station&apos;s minimum and maximum; volatile until saved</source>
+        <translation>Temperatura de trabajo de la punta, en pasos de 5 °C entre la mínima y la máxima de la estación; volátil hasta que se guarde</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="21"/>
+        <source>Tip temperature</source>
+        <translation>Temperatura de la punta</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="22"/>
+        <source>Current tip temperature</source>
+        <translation>Temperatura actual de la punta</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="23"/>
+        <source>Power</source>
+        <translation>Potencia</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="24"/>
+        <source>Power delivered to the tip, in thousandths of the station&apos;s maximum</source>
+        <translation>Potencia entregada a la punta, en milésimas de la máxima de la estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="25"/>
+        <source>Time to sleep/hibernation</source>
+        <translation>Tiempo hasta reposo/hibernación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="26"/>
+        <source>Seconds left before the tool enters sleep or hibernation</source>
+        <translation>Segundos que faltan para que la herramienta entre en reposo o hibernación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="27"/>
+        <source>Transistor temperature</source>
+        <translation>Temperatura del transistor</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="28"/>
+        <source>Temperature of the port&apos;s power transistor</source>
+        <translation>Temperatura del transistor de potencia del puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="29"/>
+        <source>Connected tool</source>
+        <translation>Herramienta conectada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="30"/>
+        <source>Tool connected to the port</source>
+        <translation>Herramienta conectada al puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="31"/>
+        <source>Port error</source>
+        <translation>Error de puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="32"/>
+        <source>Current error of the port</source>
+        <translation>Error actual del puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="33"/>
+        <source>High temperature alarm</source>
+        <translation>Alarma de temperatura alta</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="34"/>
+        <source>Upper tip temperature alarm limit, in steps of 5 °C</source>
+        <translation>Límite superior de alarma de temperatura de la punta, en pasos de 5 °C</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="35"/>
+        <source>Low temperature alarm</source>
+        <translation>Alarma de temperatura baja</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="36"/>
+        <source>Lower tip temperature alarm limit, in steps of 5 °C</source>
+        <translation>Límite inferior de alarma de temperatura de la punta, en pasos de 5 °C</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="37"/>
+        <source>High alarm delay</source>
+        <translation>Retardo de alarma alta</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="38"/>
+        <source>How long the tip must stay above the high alarm limit before the alarm is set (ss.cc)</source>
+        <translation>Tiempo que la punta debe permanecer por encima del límite de alarma alta antes de que se active la alarma (ss.cc)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="39"/>
+        <source>disabled</source>
+        <translation>desactivado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="40"/>
+        <source>Low alarm delay</source>
+        <translation>Retardo de alarma baja</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="41"/>
+        <source>How long the tip must stay below the low alarm limit before the alarm is set (ss.cc)</source>
+        <translation>Tiempo que la punta debe permanecer por debajo del límite de alarma baja antes de que se active la alarma (ss.cc)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="42"/>
+        <source>Temperature alarm</source>
+        <translation>Alarma de temperatura</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="43"/>
+        <source>Alarm flags: units digit high alarm, tens digit low alarm (DDR/HDR clear them when read)</source>
+        <translation>Indicadores de alarma: dígito de las unidades, alarma alta; dígito de las decenas, alarma baja (en DDR/HDR se borran al leerlos)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="44"/>
+        <source>Plugged hours</source>
+        <translation>Horas conectado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="45"/>
+        <source>Hours with a tool plugged into the port</source>
+        <translation>Horas con una herramienta conectada al puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
+        <source>No-tool hours</source>
+        <translation>Horas sin herramienta</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
+        <source>Hours the port was powered with no tool</source>
+        <translation>Horas que el puerto estuvo con tensión sin herramienta</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="48"/>
+        <source>Sleep hours</source>
+        <translation>Horas en reposo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="49"/>
+        <source>Hours in sleep</source>
+        <translation>Horas en modo reposo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="50"/>
+        <source>Hibernation hours</source>
+        <translation>Horas en hibernación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="51"/>
+        <source>Hours in hibernation</source>
+        <translation>Horas en modo hibernación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
+        <source>Work hours</source>
+        <translation>Horas de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
+        <source>Hours working</source>
+        <translation>Horas trabajando</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="54"/>
+        <source>Sleep cycles</source>
+        <translation>Ciclos de reposo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="55"/>
+        <source>Number of times the tool went into sleep</source>
+        <translation>Número de veces que la herramienta entró en reposo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="56"/>
+        <source>Desoldering cycles</source>
+        <translation>Ciclos de desoldadura</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="57"/>
+        <source>Number of times the desoldering tool was activated</source>
+        <translation>Número de veces que se activó la herramienta de desoldadura</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="58"/>
+        <source>Dispensed cycles</source>
+        <translation>Ciclos de dispensado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="59"/>
+        <source>Number of dispensing cycles of the built-in wire feed</source>
+        <translation>Número de ciclos de dispensado de la alimentación de hilo integrada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="60"/>
+        <source>Dispensed length</source>
+        <translation>Longitud dispensada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="61"/>
+        <source>Total wire length dispensed (hexadecimal on the wire)</source>
+        <translation>Longitud total de hilo dispensada (hexadecimal en la línea)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="62"/>
+        <source>Temperature adjust</source>
+        <translation>Ajuste de temperatura</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="63"/>
+        <source>Offset added to the tool&apos;s temperature, ±50 °C in steps of 1</source>
+        <translation>Desviación sumada a la temperatura de la herramienta, ±50 °C en pasos de 1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="64"/>
+        <source>Sleep temperature</source>
+        <translation>Temperatura de reposo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="65"/>
+        <source>Tip temperature in sleep, in steps of 5 °C</source>
+        <translation>Temperatura de la punta en reposo, en pasos de 5 °C</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="66"/>
+        <source>Sleep delay</source>
+        <translation>Retardo de reposo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="67"/>
+        <source>Minutes in the stand before sleep, 0 to 9, or disabled</source>
+        <translation>Minutos en el soporte antes del reposo, de 0 a 9, o desactivado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="68"/>
+        <source>Hibernation delay</source>
+        <translation>Retardo de hibernación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="69"/>
+        <source>Minutes in sleep before hibernation, 0 to 60 in steps of 5, or disabled</source>
+        <translation>Minutos en reposo antes de la hibernación, de 0 a 60 en pasos de 5, o desactivado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="70"/>
+        <source>Maximum temperature</source>
+        <translation>Temperatura máxima</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="71"/>
+        <source>Highest temperature selectable with the selected temperature</source>
+        <translation>Temperatura más alta que se puede elegir como temperatura seleccionada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="72"/>
+        <source>Minimum temperature</source>
+        <translation>Temperatura mínima</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="73"/>
+        <source>Lowest temperature selectable with the selected temperature</source>
+        <translation>Temperatura más baja que se puede elegir como temperatura seleccionada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="74"/>
+        <source>Power limit</source>
+        <translation>Límite de potencia</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="75"/>
+        <source>Maximum power delivered to a tool, in thousandths of the station&apos;s maximum</source>
+        <translation>Potencia máxima entregada a una herramienta, en milésimas de la máxima de la estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="76"/>
+        <source>Transformer temperature</source>
+        <translation>Temperatura del transformador</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="77"/>
+        <source>Temperature of the power supply transformer (R-TT; see protocol notes)</source>
+        <translation>Temperatura del transformador de alimentación (R-TT; véanse las notas del protocolo)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="78"/>
+        <source>Station error</source>
+        <translation>Error de estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="79"/>
+        <source>Current error of the station</source>
+        <translation>Error actual de la estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="80"/>
+        <source>Fuse status</source>
+        <translation>Estado del fusible</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="81"/>
+        <source>Whether the station&apos;s fuse is in place</source>
+        <translation>Indica si el fusible de la estación está colocado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="82"/>
+        <source>No fuse (blown or missing)</source>
+        <translation>Sin fusible (fundido o ausente)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="83"/>
+        <source>Fuse present</source>
+        <translation>Fusible presente</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="84"/>
+        <source>Model name</source>
+        <translation>Nombre del modelo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="85"/>
+        <source>The device&apos;s model name</source>
+        <translation>Nombre del modelo del equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="86"/>
+        <source>Software version</source>
+        <translation>Versión de software</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="87"/>
+        <source>The device&apos;s software version</source>
+        <translation>Versión de software del equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="88"/>
+        <source>Save to station memory</source>
+        <translation>Guardar en la memoria de la estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="89"/>
+        <source>Stores the volatile settings (selected temperature; feeder mode, speed, length) in non-volatile memory</source>
+        <translation>Guarda los ajustes volátiles (temperatura seleccionada; modo, velocidad y longitud del alimentador) en la memoria no volátil</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="90"/>
+        <source>Factory reset</source>
+        <translation>Restablecer valores de fábrica</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="91"/>
+        <source>Resets every parameter of the device to its factory value</source>
+        <translation>Restablece todos los parámetros del equipo a su valor de fábrica</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="92"/>
+        <source>Every setting of the device returns to its factory value; the feeder restarts and goes back to address 10 in addressed mode.</source>
+        <translation>Todos los ajustes del equipo vuelven a su valor de fábrica; el alimentador se reinicia y vuelve a la dirección 10 en modo con direcciones.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="93"/>
+        <source>Restart station</source>
+        <translation>Reiniciar estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="94"/>
+        <source>Restarts the control unit</source>
+        <translation>Reinicia la unidad de control</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="95"/>
+        <source>The control unit restarts: tools cool down and the station does not answer until it is back.</source>
+        <translation>La unidad de control se reinicia: las herramientas se enfrían y la estación no responde hasta que vuelve a estar operativa.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="96"/>
+        <source>Device address</source>
+        <translation>Dirección del equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="97"/>
+        <source>Sets the device&apos;s own address (1-99); 0 switches it to frames without addresses</source>
+        <translation>Fija la dirección propia del equipo (1-99); 0 lo cambia a tramas sin direcciones</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="98"/>
+        <source>The device answers only at the new address (or only without addresses for 0); TipScope must reconnect with the new setting.</source>
+        <translation>El equipo solo responde en la nueva dirección (o solo sin direcciones si es 0); TipScope debe volver a conectarse con el nuevo ajuste.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="99"/>
+        <source>Ignore fuse error</source>
+        <translation>Ignorar error de fusible</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="100"/>
+        <source>Lets the station keep working despite a fuse error</source>
+        <translation>Permite que la estación siga funcionando pese a un error de fusible</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="101"/>
+        <source>The station keeps heating although its fuse is reported missing or blown.</source>
+        <translation>La estación sigue calentando aunque se indique que su fusible falta o está fundido.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="102"/>
+        <source>Dispensing mode</source>
+        <translation>Modo de dispensado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="103"/>
+        <source>How the built-in feed dispenses wire</source>
+        <translation>Cómo dispensa el hilo la alimentación integrada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="104"/>
+        <source>Continuous</source>
+        <translation>Continuo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="105"/>
+        <source>Discontinuous</source>
+        <translation>Discontinuo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="106"/>
+        <source>Program</source>
+        <translation>Programa</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="107"/>
+        <source>Tin reload</source>
+        <translation>Recarga de estaño</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="108"/>
+        <source>Dispensing length</source>
+        <translation>Longitud de dispensado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="109"/>
+        <source>Wire length dispensed per cycle, in tenths of a millimetre</source>
+        <translation>Longitud de hilo dispensada por ciclo, en décimas de milímetro</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="110"/>
+        <source>Dispensing speed</source>
+        <translation>Velocidad de dispensado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="111"/>
+        <source>Wire speed, in tenths of a millimetre per second</source>
+        <translation>Velocidad del hilo, en décimas de milímetro por segundo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="112"/>
+        <source>Wire diameter</source>
+        <translation>Diámetro del hilo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="113"/>
+        <source>Solder wire diameter, in hundredths of a millimetre</source>
+        <translation>Diámetro del hilo de soldadura, en centésimas de milímetro</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="114"/>
+        <source>Backward length</source>
+        <translation>Longitud de retroceso</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="115"/>
+        <source>Wire pulled back after each cycle, in tenths of a millimetre</source>
+        <translation>Hilo que se retrae tras cada ciclo, en décimas de milímetro</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="116"/>
+        <source>Wire clogging detection</source>
+        <translation>Detección de atasco del hilo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="117"/>
+        <source>Detects a clogged wire feed</source>
+        <translation>Detecta un atasco en la alimentación de hilo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="118"/>
+        <source>Off</source>
+        <translation>Desactivada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="119"/>
+        <source>On</source>
+        <translation>Activada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="120"/>
+        <source>Dispensing status</source>
+        <translation>Estado del dispensado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="121"/>
+        <source>Whether the dispensing motor is running</source>
+        <translation>Indica si el motor de dispensado está en marcha</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="122"/>
+        <source>Stopped</source>
+        <translation>Detenido</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="123"/>
+        <source>Running</source>
+        <translation>En marcha</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="124"/>
+        <source>Start dispensing</source>
+        <translation>Iniciar dispensado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="125"/>
+        <source>Starts the dispensing motor</source>
+        <translation>Pone en marcha el motor de dispensado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="126"/>
+        <source>Stop dispensing</source>
+        <translation>Detener dispensado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="127"/>
+        <source>Stops the dispensing motor</source>
+        <translation>Detiene el motor de dispensado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="128"/>
+        <source>Feeding mode</source>
+        <translation>Modo de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="129"/>
+        <source>Continuous feeds until stopped; discontinuous feeds the set length</source>
+        <translation>Continuo alimenta hasta que se detiene; discontinuo alimenta la longitud ajustada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="130"/>
+        <source>Start feeding</source>
+        <translation>Iniciar alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="131"/>
+        <source>Starts feeding wire forward or backward</source>
+        <translation>Inicia la alimentación de hilo hacia delante o hacia atrás</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="132"/>
+        <source>Forward</source>
+        <translation>Adelante</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="133"/>
+        <source>Backward</source>
+        <translation>Atrás</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="134"/>
+        <source>Stop feeding</source>
+        <translation>Detener alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="135"/>
+        <source>Stops feeding (continuous mode)</source>
+        <translation>Detiene la alimentación (modo continuo)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
+        <source>Feeding length</source>
+        <translation>Longitud de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
+        <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
+        <translation>Longitud alimentada en cada inicio en modo discontinuo, en décimas de milímetro</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
+        <source>Feeding speed</source>
+        <translation>Velocidad de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
+        <source>Feeding speed, in tenths of a millimetre per second</source>
+        <translation>Velocidad de alimentación, en décimas de milímetro por segundo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="140"/>
+        <source>Wire thickness</source>
+        <translation>Grosor del hilo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="141"/>
+        <source>Diameter class of the solder wire</source>
+        <translation>Clase de diámetro del hilo de soldadura</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="142"/>
+        <source>≤ 0.8 mm</source>
+        <translation>≤ 0,8 mm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="143"/>
+        <source>&gt; 0.8 mm and ≤ 1.2 mm</source>
+        <translation>&gt; 0,8 mm y ≤ 1,2 mm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="144"/>
+        <source>&gt; 1.2 mm</source>
+        <translation>&gt; 1,2 mm</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="145"/>
+        <source>Switch input</source>
+        <translation>Entrada de interruptor</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="146"/>
+        <source>Whether the switch input can start feeding</source>
+        <translation>Indica si la entrada de interruptor puede iniciar la alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="147"/>
+        <source>Disabled</source>
+        <translation>Desactivada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="148"/>
+        <source>Enabled</source>
+        <translation>Activada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="149"/>
+        <source>Feeder error code</source>
+        <translation>Código de error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="150"/>
+        <source>The feeder&apos;s last error code</source>
+        <translation>Último código de error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="151"/>
+        <source>Reset feeder error</source>
+        <translation>Borrar error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="152"/>
+        <source>Clears the feeder&apos;s last error code</source>
+        <translation>Borra el último código de error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="153"/>
+        <source>Feeding status</source>
+        <translation>Estado de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="154"/>
+        <source>Whether the feeder is feeding</source>
+        <translation>Indica si el alimentador está alimentando</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="155"/>
+        <source>Idle</source>
+        <translation>En espera</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="156"/>
+        <source>Feeding</source>
+        <translation>Alimentando</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="157"/>
+        <source>Fed length</source>
+        <translation>Longitud alimentada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="158"/>
+        <source>Length fed since the last start, in tenths of a millimetre</source>
+        <translation>Longitud alimentada desde el último inicio, en décimas de milímetro</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="159"/>
+        <source>Loading</source>
+        <translation>Carga</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="160"/>
+        <source>Feeds wire ignoring feeding errors, for loading a new spool</source>
+        <translation>Alimenta hilo ignorando los errores de alimentación, para cargar una bobina nueva</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="161"/>
+        <source>Start loading</source>
+        <translation>Iniciar carga</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="162"/>
+        <source>End loading</source>
+        <translation>Terminar carga</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="163"/>
+        <source>Plugged hours (total)</source>
+        <translation>Horas conectado (total)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="164"/>
+        <source>Hours powered, total counter</source>
+        <translation>Horas con tensión, contador total</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="165"/>
+        <source>Plugged hours (partial)</source>
+        <translation>Horas conectado (parcial)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="166"/>
+        <source>Hours powered since the partial counter was reset</source>
+        <translation>Horas con tensión desde la última puesta a cero del contador parcial</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="167"/>
+        <source>Reset plugged hours (partial)</source>
+        <translation>Poner a cero horas conectado (parcial)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="168"/>
+        <source>Resets the partial plugged-hours counter</source>
+        <translation>Pone a cero el contador parcial de horas conectado</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="169"/>
+        <source>The partial plugged-hours counter goes back to zero; the old value cannot be recovered.</source>
+        <translation>El contador parcial de horas conectado vuelve a cero; el valor anterior no se puede recuperar.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <source>Feeding hours (total)</source>
+        <translation>Horas de alimentación (total)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
+        <source>Hours feeding, total counter</source>
+        <translation>Horas alimentando, contador total</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
+        <source>Feeding hours (partial)</source>
+        <translation>Horas de alimentación (parcial)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <source>Hours feeding since the partial counter was reset</source>
+        <translation>Horas alimentando desde la última puesta a cero del contador parcial</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
+        <source>Reset feeding hours (partial)</source>
+        <translation>Poner a cero horas de alimentación (parcial)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
+        <source>Resets the partial feeding-hours counter</source>
+        <translation>Pone a cero el contador parcial de horas de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
+        <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
+        <translation>El contador parcial de horas de alimentación vuelve a cero; el valor anterior no se puede recuperar.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
+        <source>Fed length (total)</source>
+        <translation>Longitud alimentada (total)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
+        <source>Metres of wire fed, total counter</source>
+        <translation>Metros de hilo alimentados, contador total</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <source>Fed length (partial)</source>
+        <translation>Longitud alimentada (parcial)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
+        <source>Metres of wire fed since the partial counter was reset</source>
+        <translation>Metros de hilo alimentados desde la última puesta a cero del contador parcial</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
+        <source>Reset fed length (partial)</source>
+        <translation>Poner a cero longitud alimentada (parcial)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
+        <source>Resets the partial fed-length counter</source>
+        <translation>Pone a cero el contador parcial de longitud alimentada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
+        <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
+        <translation>El contador parcial de longitud alimentada vuelve a cero; el valor anterior no se puede recuperar.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
+        <source>No tool</source>
+        <translation>Sin herramienta</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
+        <source>BCC error: the frame failed the sum check</source>
+        <translation>Error de BCC: la trama no superó la comprobación de suma</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
+        <source>Format error: the frame has the wrong size or layout</source>
+        <translation>Error de formato: la trama tiene un tamaño o una estructura incorrectos</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <source>Out of range: the value is outside the allowed limits or off-step</source>
+        <translation>Fuera de rango: el valor está fuera de los límites permitidos o no respeta el paso</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
+        <source>Control error: the command is not accepted by this device</source>
+        <translation>Error de control: este equipo no acepta el comando</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
+        <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
+        <translation>El modo robot está desactivado: active &quot;Robot mode&quot; en el menú de la estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
+        <source>Device model error: the device model is unknown</source>
+        <translation>Error de modelo de equipo: el modelo del equipo es desconocido</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
+        <source>Undefined error</source>
+        <translation>Error no definido</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
+        <source>Stopped by transformer overload</source>
+        <translation>Detenido por sobrecarga del transformador</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <source>Temperature sensor error</source>
+        <translation>Error del sensor de temperatura</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
+        <source>Memory error</source>
+        <translation>Error de memoria</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
+        <source>Mains frequency error</source>
+        <translation>Error de frecuencia de red</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
+        <source>Device model error</source>
+        <translation>Error de modelo de equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
+        <source>MCU tools not connected</source>
+        <translation>Herramientas MCU no conectadas</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
+        <source>Warning: transformer overload</source>
+        <translation>Advertencia: sobrecarga del transformador</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
+        <source>Short circuit</source>
+        <translation>Cortocircuito</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
+        <source>Short circuit, not recoverable: restart the station</source>
+        <translation>Cortocircuito no recuperable: reinicie la estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
+        <source>Open circuit</source>
+        <translation>Circuito abierto</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
+        <source>Tool not accepted</source>
+        <translation>Herramienta no aceptada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
+        <source>Detecting tool</source>
+        <translation>Detectando herramienta</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
+        <source>Stopped at maximum power</source>
+        <translation>Detenido a potencia máxima</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
+        <source>Stopped by transistor (MOS) overload</source>
+        <translation>Detenido por sobrecarga del transistor (MOS)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
+        <source>Warning: transistor (MOS) overload</source>
+        <translation>Advertencia: sobrecarga del transistor (MOS)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
+        <source>No error</source>
+        <translation>Sin error</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
+        <source>Sleep</source>
+        <translation>Reposo</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
+        <source>Hibernation</source>
+        <translation>Hibernación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
+        <source>Suction on</source>
+        <translation>Succión activada</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
+        <source>Motor forward (dispensing)</source>
+        <translation>Motor adelante (dispensado)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <source>Motor backward</source>
+        <translation>Motor atrás</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
+        <source>unknown (%1)</source>
+        <translation>desconocido (%1)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+</context>
+<context>
     <name>ChartCsv</name>
     <message>
         <location filename="../app/gui/charts/chartcsv.cpp" line="192"/>
@@ -243,84 +1276,84 @@
         <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="75"/>
+        <location filename="../app/cli/clicommands.cpp" line="76"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="86"/>
+        <location filename="../app/cli/clicommands.cpp" line="87"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="108"/>
+        <location filename="../app/cli/clicommands.cpp" line="109"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="113"/>
+        <location filename="../app/cli/clicommands.cpp" line="114"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="121"/>
+        <location filename="../app/cli/clicommands.cpp" line="122"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="126"/>
+        <location filename="../app/cli/clicommands.cpp" line="127"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="135"/>
+        <location filename="../app/cli/clicommands.cpp" line="136"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="143"/>
+        <location filename="../app/cli/clicommands.cpp" line="144"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="155"/>
-        <location filename="../app/cli/clicommands.cpp" line="157"/>
+        <location filename="../app/cli/clicommands.cpp" line="156"/>
+        <location filename="../app/cli/clicommands.cpp" line="158"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <location filename="../app/cli/clicommands.cpp" line="161"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="169"/>
-        <location filename="../app/cli/clicommands.cpp" line="190"/>
+        <location filename="../app/cli/clicommands.cpp" line="170"/>
+        <location filename="../app/cli/clicommands.cpp" line="191"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="182"/>
+        <location filename="../app/cli/clicommands.cpp" line="183"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="255"/>
+        <location filename="../app/cli/clicommands.cpp" line="256"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="278"/>
+        <location filename="../app/cli/clicommands.cpp" line="279"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="281"/>
+        <location filename="../app/cli/clicommands.cpp" line="282"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="282"/>
+        <location filename="../app/cli/clicommands.cpp" line="283"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
     </message>
@@ -549,102 +1582,102 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="56"/>
+        <location filename="../lib/model/consolemodel.cpp" line="61"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>enviado tal cual (no es una trama válida)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="72"/>
+        <location filename="../lib/model/consolemodel.cpp" line="77"/>
         <source>stray: answers no pending request</source>
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="148"/>
+        <location filename="../lib/model/consolemodel.cpp" line="167"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="150"/>
+        <location filename="../lib/model/consolemodel.cpp" line="169"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="152"/>
+        <location filename="../lib/model/consolemodel.cpp" line="171"/>
         <source>frame</source>
         <translation>trama</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="154"/>
+        <location filename="../lib/model/consolemodel.cpp" line="173"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="156"/>
+        <location filename="../lib/model/consolemodel.cpp" line="175"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="199"/>
+        <location filename="../lib/model/consolemodel.cpp" line="218"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="199"/>
+        <location filename="../lib/model/consolemodel.cpp" line="218"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="215"/>
+        <location filename="../lib/model/consolemodel.cpp" line="234"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="215"/>
+        <location filename="../lib/model/consolemodel.cpp" line="234"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="216"/>
+        <location filename="../lib/model/consolemodel.cpp" line="235"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="216"/>
+        <location filename="../lib/model/consolemodel.cpp" line="235"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="217"/>
+        <location filename="../lib/model/consolemodel.cpp" line="236"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="217"/>
+        <location filename="../lib/model/consolemodel.cpp" line="236"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="237"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="237"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="219"/>
+        <location filename="../lib/model/consolemodel.cpp" line="238"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="219"/>
+        <location filename="../lib/model/consolemodel.cpp" line="238"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="220"/>
+        <location filename="../lib/model/consolemodel.cpp" line="239"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -675,7 +1708,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>DisplayUnits</name>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="83"/>
+        <location filename="../lib/model/displayunits.cpp" line="82"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>&apos;%1&apos; no es un número</translation>
     </message>
@@ -721,59 +1754,176 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>En la línea este valor se escribe %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="72"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Familia de equipo desconocida: el catálogo no puede comprobar esta trama.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="73"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 no es un comando de escritura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="74"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="79"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 no es un comando de lectura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="77"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
         <source>Did you mean %1?</source>
         <translation>¿Quería decir %1?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
         <source>It is sent as typed.</source>
         <translation>Se envía tal cual.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Las lecturas no llevan campo de datos; el equipo puede rechazar esta trama.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
         <source>Dangerous: %1</source>
         <translation>Peligroso: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="93"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
         <source>Catalog check: %1</source>
         <translation>Comprobación del catálogo: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="120"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="125"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="125"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="130"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
+    </message>
+</context>
+<context>
+    <name>FrameDecoder</name>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="16"/>
+        <source>frame</source>
+        <translation>trama</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
+        <source>BCC error</source>
+        <translation>error de BCC</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
+        <source>format error</source>
+        <translation>error de formato</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
+        <source>overflow</source>
+        <translation>desbordamiento</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
+        <source>garbage</source>
+        <translation>basura</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="53"/>
+        <source>not STX…ETX BCC or too short</source>
+        <translation>no es STX…ETX BCC o es demasiado corta</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="57"/>
+        <source>BCC is %1, expected %2</source>
+        <translation>el BCC es %1, se esperaba %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="67"/>
+        <source>malformed addresses</source>
+        <translation>direcciones mal formadas</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="73"/>
+        <source>too short for header and command</source>
+        <translation>demasiado corta para cabecera y comando</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="76"/>
+        <source>unknown header</source>
+        <translation>cabecera desconocida</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="81"/>
+        <source>command is not 3 letters or digits</source>
+        <translation>el comando no son 3 letras o dígitos</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="86"/>
+        <source>data field is not printable ASCII</source>
+        <translation>el campo de datos no es ASCII imprimible</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="119"/>
+        <source>frame interrupted by a new STX</source>
+        <translation>trama interrumpida por un nuevo STX</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/framedecoder.cpp" line="128"/>
+        <source>no ETX within %1 bytes</source>
+        <translation>ningún ETX en %1 bytes</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/protocol/framedecoder.cpp" line="147"/>
+        <source>%n byte(s) outside any frame</source>
+        <translation>
+            <numerusform>%n byte fuera de toda trama</numerusform>
+            <numerusform>%n bytes fuera de toda trama</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>HexBytes</name>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="38"/>
+        <source>odd number of hex digits before position %1</source>
+        <translation>número impar de dígitos hexadecimales antes de la posición %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="48"/>
+        <source>&apos;%1&apos; at position %2 is not a hex digit</source>
+        <translation>&apos;%1&apos; en la posición %2 no es un dígito hexadecimal</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
+        <source>more than %1 bytes</source>
+        <translation>más de %1 bytes</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="59"/>
+        <source>odd number of hex digits</source>
+        <translation>número impar de dígitos hexadecimales</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/hexbytes.cpp" line="61"/>
+        <source>no bytes given</source>
+        <translation>no se indicó ningún byte</translation>
+    </message>
+</context>
+<context>
+    <name>LinkStats</name>
+    <message>
+        <location filename="../lib/link/linkstats.cpp" line="60"/>
+        <source>%1 tx/s, latency %2 ms median (%3-%4), %5 sent, %6 answered, %7 timeouts, %8 corrupted, %9 NAKs, %10 stray, %11 retries</source>
+        <translation>%1 tx/s, latencia %2 ms de mediana (%3-%4), %5 enviadas, %6 respondidas, %7 tiempos agotados, %8 dañadas, %9 NAK, %10 huérfanas, %11 reintentos</translation>
     </message>
 </context>
 <context>
@@ -890,7 +2040,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="117"/>
-        <location filename="../lib/model/parameter.cpp" line="211"/>
+        <location filename="../lib/model/parameter.cpp" line="213"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
@@ -915,34 +2065,92 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="234"/>
+        <location filename="../lib/model/parameter.cpp" line="236"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="237"/>
+        <location filename="../lib/model/parameter.cpp" line="239"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="256"/>
+        <location filename="../lib/model/parameter.cpp" line="258"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="262"/>
+        <location filename="../lib/model/parameter.cpp" line="264"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="273"/>
+        <location filename="../lib/model/parameter.cpp" line="275"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="280"/>
+        <location filename="../lib/model/parameter.cpp" line="282"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
+    </message>
+</context>
+<context>
+    <name>PortDiagnostics</name>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <source>this program</source>
+        <translation>este programa</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <source>, this program</source>
+        <translation>, este programa</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="46"/>
+        <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
+        <translation>ejecute `sudo usermod -aG %1 $USER` y después cierre la sesión y vuelva a iniciarla.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
+        <source>You are not allowed to open %1: %2</source>
+        <translation>No tiene permiso para abrir %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
+        <translation>No tiene permiso para abrir %1, y pertenece al grupo root en lugar de dialout, así que unirse a un grupo no servirá hasta que una regla de udev le asigne GROUP=&quot;dialout&quot;. Después, %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="54"/>
+        <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
+        <translation>No tiene permiso para abrir %1, que pertenece al grupo %2 (no a dialout): %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="96"/>
+        <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
+        <translation>%1 está ocupado: lo tiene abierto %2. Cierre esa conexión e inténtelo de nuevo.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
+        <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
+        <translation>No existe el puerto %1. Puede que el adaptador esté desenchufado o que el nombre del puerto esté mal escrito.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="105"/>
+        <source>%1 is already open in TipScope; close that connection first</source>
+        <translation>%1 ya está abierto en TipScope; cierre primero esa conexión</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="109"/>
+        <source>%1 stopped working, perhaps because the adapter was unplugged</source>
+        <translation>%1 dejó de funcionar, quizá porque se desenchufó el adaptador</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
+        <source>Could not open %1</source>
+        <translation>No se pudo abrir %1</translation>
     </message>
 </context>
 <context>
@@ -989,7 +2197,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/portmodel.cpp" line="100"/>
-        <location filename="../lib/model/portmodel.cpp" line="113"/>
+        <location filename="../lib/model/portmodel.cpp" line="114"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -999,7 +2207,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>herramienta %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="170"/>
+        <location filename="../lib/model/portmodel.cpp" line="171"/>
         <source>this port has no status command</source>
         <translation>este puerto no tiene comando de estado</translation>
     </message>
@@ -1076,7 +2284,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="176"/>
+        <location filename="../lib/model/profile.cpp" line="175"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
@@ -1158,43 +2366,59 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>SerialPortList</name>
+    <message>
+        <location filename="../lib/link/ports/serialportlist.cpp" line="161"/>
+        <source>%1 is an FTDI adapter with a %2 ms latency timer (the kernel default is 16 ms), which holds back every short answer and throttles request/answer traffic.
+Set it to 1 ms now with:
+  echo 1 | sudo tee /sys/bus/usb-serial/devices/%1/latency_timer
+Make it permanent with this udev rule:
+  echo &apos;ACTION==&quot;add&quot;, SUBSYSTEM==&quot;usb-serial&quot;, DRIVER==&quot;ftdi_sio&quot;, ATTR{latency_timer}=&quot;1&quot;&apos; | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</source>
+        <translation>%1 es un adaptador FTDI con un temporizador de latencia de %2 ms (el valor por defecto del kernel es 16 ms), que retiene cada respuesta corta y frena el tráfico de peticiones y respuestas.
+Ajústelo ahora a 1 ms con:
+  echo 1 | sudo tee /sys/bus/usb-serial/devices/%1/latency_timer
+Hágalo permanente con esta regla de udev:
+  echo &apos;ACTION==&quot;add&quot;, SUBSYSTEM==&quot;usb-serial&quot;, DRIVER==&quot;ftdi_sio&quot;, ATTR{latency_timer}=&quot;1&quot;&apos; | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</translation>
+    </message>
+</context>
+<context>
     <name>Session</name>
     <message>
         <location filename="../lib/model/session.cpp" line="26"/>
-        <location filename="../lib/model/session.cpp" line="94"/>
-        <location filename="../lib/model/session.cpp" line="97"/>
+        <location filename="../lib/model/session.cpp" line="96"/>
+        <location filename="../lib/model/session.cpp" line="99"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="93"/>
-        <location filename="../lib/model/session.cpp" line="104"/>
-        <location filename="../lib/model/session.cpp" line="111"/>
+        <location filename="../lib/model/session.cpp" line="95"/>
+        <location filename="../lib/model/session.cpp" line="106"/>
+        <location filename="../lib/model/session.cpp" line="113"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="127"/>
+        <location filename="../lib/model/session.cpp" line="129"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="195"/>
+        <location filename="../lib/model/session.cpp" line="197"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="196"/>
+        <location filename="../lib/model/session.cpp" line="198"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="202"/>
+        <location filename="../lib/model/session.cpp" line="204"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="212"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -1233,44 +2457,98 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="91"/>
+        <location filename="../lib/model/supportreport.cpp" line="93"/>
         <source>TipScope support report, %1</source>
         <translation>Informe de soporte de TipScope, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="92"/>
+        <location filename="../lib/model/supportreport.cpp" line="94"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="98"/>
+        <location filename="../lib/model/supportreport.cpp" line="100"/>
         <source>Line: %1</source>
         <translation>Línea: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="99"/>
+        <location filename="../lib/model/supportreport.cpp" line="101"/>
         <source>State: %1</source>
         <translation>Estado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="100"/>
+        <location filename="../lib/model/supportreport.cpp" line="102"/>
         <source>Statistics: %1</source>
         <translation>Estadísticas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="104"/>
+        <location filename="../lib/model/supportreport.cpp" line="106"/>
         <source>Device %1: %2 (%3), software %4</source>
         <translation>Equipo %1: %2 (%3), software %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="118"/>
+        <location filename="../lib/model/supportreport.cpp" line="121"/>
         <source>Recent events:</source>
         <translation>Eventos recientes:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="143"/>
+        <location filename="../lib/model/supportreport.cpp" line="146"/>
         <source>cannot write %1: %2</source>
         <translation>no se puede escribir %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ValueCodec</name>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="42"/>
+        <source>%1 to %2%3</source>
+        <translation>de %1 a %2%3</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="46"/>
+        <source> in steps of %1</source>
+        <translation> en pasos de %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="48"/>
+        <source>, or %1</source>
+        <translation>, o %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="56"/>
+        <source>one of %1</source>
+        <translation>uno de %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="59"/>
+        <source>no value (the command carries %1)</source>
+        <translation>ningún valor (el comando lleva %1)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="62"/>
+        <source>nothing: it is read-only</source>
+        <translation>nada: es de solo lectura</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="71"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="77"/>
+        <source>%1 cannot be written</source>
+        <translation>%1 no se puede escribir</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="91"/>
+        <source>%1 refused for %2 (%3): allowed is %4</source>
+        <translation>%1 rechazado para %2 (%3): se permite %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
+        <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
+        <translation>&apos;%1&apos; no es un retardo en segundos como 1.6 o 01.60</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
+        <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
+        <translation>&apos;%1&apos; no es un número entero; %2 admite %3</translation>
     </message>
 </context>
 <context>
@@ -1304,7 +2582,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="32"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="42"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Gráfico temporal. La rueda o las teclas más y menos hacen zoom, arrastrar o las flechas desplazan, Mayús+arrastrar selecciona un intervalo, doble clic o Inicio restablece.</translation>
     </message>
@@ -1312,7 +2590,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="299"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="311"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -1812,223 +3090,223 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="74"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="75"/>
         <source>%1: answered %2 after %L3 ms</source>
         <translation>%1: respondió %2 tras %L3 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="78"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
         <source>%1: refused, %2</source>
         <translation>%1: rechazado, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="80"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="81"/>
         <source>%1: no answer (timeout)</source>
         <translation>%1: sin respuesta (tiempo agotado)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="82"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="94"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="95"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="131"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="132"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="137"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="140"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
         <source>Relative time</source>
         <translation>Tiempo relativo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="158"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
         <source>Show:</source>
         <translation>Mostrar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
         <source>Show bytes sent</source>
         <translation>Mostrar los bytes enviados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
         <source>RX chunks</source>
         <translation>Bloques RX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>Frames</source>
         <translation>Tramas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>Show received frames, decoded</source>
         <translation>Mostrar las tramas recibidas, decodificadas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>De&amp;vice:</source>
         <translation>Equi&amp;po:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Device address filter</source>
         <translation>Filtro de dirección de equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="185"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="186"/>
         <source>Co&amp;mmand:</source>
         <translation>Co&amp;mando:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="189"/>
         <source>Command filter</source>
         <translation>Filtro de comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="189"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
         <source>e.g. ST1</source>
         <translation>p. ej. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="198"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="199"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="200"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
         <source>Remove every row, held ones included</source>
         <translation>Quitar todas las filas, incluidas las retenidas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="202"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="204"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="216"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="217"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="243"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="244"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="249"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="252"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="263"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="266"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="287"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="300"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="318"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="290"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="303"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="321"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="291"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="348"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="374"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
         <source>paused: new traffic is held</source>
         <translation>en pausa: el tráfico nuevo se retiene</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="384"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n byte en bruto</numerusform>
@@ -2036,17 +3314,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: no enviado, sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="391"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: no enviado, el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="400"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="404"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: enviado, esperando la respuesta…</translation>
     </message>
@@ -2089,194 +3367,194 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>Poner a cero la longitud alimentada parcial…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>When the counters were read</source>
         <translation>Cuándo se leyeron los contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="87"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="87"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
         <source>Refresh counters</source>
         <translation>Actualizar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
         <source>&amp;Export CSV…</source>
         <translation>E&amp;xportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
         <source>Export counters as CSV</source>
         <translation>Exportar contadores como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="103"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="104"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="155"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="156"/>
         <source>Reading the counters…</source>
         <translation>Leyendo los contadores…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
         <source>Last reading at %1</source>
         <translation>Última lectura a las %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="161"/>
         <source>Waiting for the first reading…</source>
         <translation>Esperando la primera lectura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="209"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
         <source>Station %1</source>
         <translation>Estación %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="211"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="239"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="240"/>
         <source>Counters of %1</source>
         <translation>Contadores de %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="223"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="238"/>
         <source>Solder feeder %1</source>
         <translation>Alimentador de estaño %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Partial</source>
         <translation>Parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="282"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="283"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="284"/>
         <source>Last read failed: %1</source>
         <translation>Falló la última lectura: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="286"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="287"/>
         <source>Read at %1</source>
         <translation>Leído: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="313"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="314"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="316"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="317"/>
         <source>Reset partial counter</source>
         <translation>Poner a cero el contador parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="317"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="318"/>
         <source>Reset “%1” on %2?</source>
         <translation>¿Poner a cero «%1» en %2?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="319"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="320"/>
         <source>It now reads %1.</source>
         <translation>Ahora marca %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="321"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
         <source>The total counter is not affected.</source>
         <translation>El contador total no se ve afectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>Reset counter</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 No se puso nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 No se puso a cero: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 Poniendo a cero %2…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 puesto a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="344"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 no se puso a cero: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="356"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="376"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="383"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="384"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="381"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="385"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>
@@ -2294,22 +3572,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>Equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="72"/>
+        <location filename="../app/gui/devicetree.cpp" line="79"/>
         <source>No line</source>
         <translation>Sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="78"/>
+        <location filename="../app/gui/devicetree.cpp" line="85"/>
         <source>feeder</source>
         <translation>alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="78"/>
+        <location filename="../app/gui/devicetree.cpp" line="85"/>
         <source>station</source>
         <translation>estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="83"/>
+        <location filename="../app/gui/devicetree.cpp" line="90"/>
         <source>Port %1: %2</source>
         <translation>Puerto %1: %2</translation>
     </message>
@@ -2939,167 +4217,167 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="139"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="144"/>
         <source>Send a frame</source>
         <translation>Enviar una trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="162"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="167"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="165"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="170"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="166"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="171"/>
         <source>R (read)</source>
         <translation>R (lectura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="167"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="172"/>
         <source>W (write)</source>
         <translation>W (escritura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="169"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="174"/>
         <source>Command</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="179"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="184"/>
         <source>Data field</source>
         <translation>Campo de datos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="183"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="188"/>
         <source>&amp;Send frame</source>
         <translation>&amp;Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="184"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="189"/>
         <source>Send frame</source>
         <translation>Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="186"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="191"/>
         <source>Frame to be sent</source>
         <translation>Trama que se enviará</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="190"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="195"/>
         <source>Catalog check</source>
         <translation>Comprobación del catálogo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="193"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="198"/>
         <source>Raw bytes in hex</source>
         <translation>Bytes en bruto en hexadecimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="197"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="202"/>
         <source>Send ra&amp;w hex</source>
         <translation>Enviar he&amp;x en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="198"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="203"/>
         <source>Send raw hex</source>
         <translation>Enviar hex en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="200"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="205"/>
         <source>Raw bytes check</source>
         <translation>Comprobación de los bytes en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="201"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
         <source>Nothing sent yet.</source>
         <translation>Aún no se ha enviado nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="202"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="207"/>
         <source>Outcome of the last send</source>
         <translation>Resultado del último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="216"/>
         <source>&amp;Device</source>
         <translation>E&amp;quipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="213"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="218"/>
         <source>&amp;Header</source>
         <translation>Ca&amp;becera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="220"/>
         <source>C&amp;ommand</source>
         <translation>C&amp;omando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="217"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
         <source>D&amp;ata</source>
         <translation>Da&amp;tos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="220"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="225"/>
         <source>Frame</source>
         <translation>Trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="223"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="228"/>
         <source>&amp;Raw hex</source>
         <translation>Hex en b&amp;ruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="232"/>
         <source>Last send</source>
         <translation>Último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="260"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="265"/>
         <source>Monitor-only mode is on: raw bytes are not sent, since they may be a write. Reads can still be sent with Send frame.</source>
         <translation>El modo solo supervisión está activado: los bytes en bruto no se envían, ya que podrían ser una escritura. Las lecturas aún se pueden enviar con Enviar trama.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="267"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Enviar estos bytes exactamente como se han escrito; la respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="287"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="292"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="350"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="355"/>
         <source>(nothing to send)</source>
         <translation>(nada que enviar)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="354"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
         <source>none for reads</source>
         <translation>ninguno en lecturas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="354"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
         <source>e.g. 00350</source>
         <translation>p. ej. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="358"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="363"/>
         <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
         <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="370"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="375"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Enviar esta trama una vez, tal como se muestra (sin reintentos; los avisos del catálogo no la detienen). Su respuesta aparece en la tabla.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="387"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="392"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, una trama válida: %1</numerusform>
@@ -3107,7 +4385,7 @@ Reset it?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="390"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="395"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
@@ -3115,7 +4393,7 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="408"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="413"/>
         <source>Not sent: %1</source>
         <translation>No enviado: %1</translation>
     </message>
@@ -3143,7 +4421,7 @@ Reset it?</source>
         <translation>NAK %1 × %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="37"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="38"/>
         <source>Reconnects: %1</source>
         <translation>Reconexiones: %1</translation>
     </message>
@@ -3304,57 +4582,57 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="51"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="56"/>
         <source>Allowed: %1</source>
         <translation>Permitido: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="52"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="57"/>
         <source>Command: %1</source>
         <translation>Comando: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="74"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="80"/>
         <source>%1 disabled</source>
         <translation>%1 desactivado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="122"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
         <source>not read</source>
         <translation>no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="125"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="131"/>
         <source>reading…</source>
         <translation>leyendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
         <source>not saved</source>
         <translation>no guardado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
         <source>✓ in sync</source>
         <translation>✓ sincronizado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="132"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="138"/>
         <source>edited</source>
         <translation>editado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="136"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="142"/>
         <source>writing…</source>
         <translation>escribiendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="139"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="145"/>
         <source>✗ failed</source>
         <translation>✗ falló</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="144"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="150"/>
         <source>✗ refused</source>
         <translation>✗ rechazado</translation>
     </message>
@@ -3362,102 +4640,102 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="21"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="23"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="32"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="34"/>
         <source>Tip temperature, port %1</source>
         <translation>Temperatura de la punta, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="39"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="41"/>
         <source>Power, port %1</source>
         <translation>Potencia, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
         <source>Work</source>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="46"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Stand</source>
         <translation>Soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Cool</source>
         <translation>Enfriar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: calentar a la temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: soporte; el reposo y la hibernación siguen tras sus retardos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="53"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: enfriamiento (extractor en espera)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="55"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
         <source>New selected temperature, port %1</source>
         <translation>Nueva temperatura seleccionada, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="56"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
         <source>Set</source>
         <translation>Fijar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="92"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="100"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="104"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="125"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="132"/>
         <source>Port %1 — %2</source>
         <translation>Puerto %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="128"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="129"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
         <source>set %1</source>
         <translation>consigna %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="131"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
         <source>power %1</source>
         <translation>potencia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="140"/>
         <source>status unknown</source>
         <translation>estado desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="143"/>
         <source>transistor %1</source>
         <translation>transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="145"/>
         <source>%1 until the next mode</source>
         <translation>%1 hasta el siguiente modo</translation>
     </message>
@@ -3636,7 +4914,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="186"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
@@ -3711,42 +4989,42 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Herramienta %1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
         <source> (connected)</source>
         <translation> (conectada)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dispensado (alimentación de hilo de la ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="160"/>
         <source>Feeding</source>
         <translation>Alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="186"/>
         <source>&amp;Apply (%1)</source>
         <translation>A&amp;plicar (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="192"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="194"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="217"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="219"/>
         <source>Save to station memory</source>
         <translation>Guardar en la memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="228"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="230"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Nueva dirección (1-99), o 0 para tramas sin direcciones:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="235"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="237"/>
         <source>%1
 
 %2
@@ -3759,26 +5037,26 @@ Do you want to continue?</source>
 ¿Desea continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="250"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="252"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="258"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="264"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="251"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="253"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Algunos ajustes aún no se han leído (%1). Actualice y vuelva a intentarlo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="269"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="259"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="271"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="270"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="277"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>
@@ -3790,6 +5068,11 @@ Do you want to continue?</source>
 </context>
 <context>
     <name>tipscope::link::Line</name>
+    <message>
+        <location filename="../lib/link/line.cpp" line="23"/>
+        <source>the line was closed</source>
+        <translation>se cerró la línea</translation>
+    </message>
     <message>
         <location filename="../lib/link/line.cpp" line="43"/>
         <source>disconnected</source>
@@ -3824,6 +5107,154 @@ Do you want to continue?</source>
         <location filename="../lib/link/line.cpp" line="115"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>sin respuesta a %1 peticiones seguidas (¿cable desenchufado, equipo apagado o direccionamiento incorrecto?)</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Reply</name>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="10"/>
+        <source>ok</source>
+        <translation>correcto</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="12"/>
+        <source>no answer</source>
+        <translation>sin respuesta</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="14"/>
+        <source>corrupted answer</source>
+        <translation>respuesta dañada</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="16"/>
+        <source>refused (NAK)</source>
+        <translation>rechazado (NAK)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="18"/>
+        <source>disconnected</source>
+        <translation>desconectado</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="20"/>
+        <source>cancelled</source>
+        <translation>cancelado</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/reply.cpp" line="22"/>
+        <source>not connected</source>
+        <translation>sin conexión</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::RequestQueue</name>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="60"/>
+        <source>the connection was closed</source>
+        <translation>se cerró la conexión</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="106"/>
+        <source>the connection is closing</source>
+        <translation>la conexión se está cerrando</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="110"/>
+        <source>not sent: the line is not connected</source>
+        <translation>no enviado: la línea no está conectada</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="257"/>
+        <source>the answer was corrupted (%1)</source>
+        <translation>la respuesta llegó dañada (%1)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="268"/>
+        <source>the request could not be written</source>
+        <translation>no se pudo escribir la petición</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="272"/>
+        <source>no answer</source>
+        <translation>sin respuesta</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="290"/>
+        <source>NAK %1: %2</source>
+        <translation>NAK %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <source>%1: %2 (attempt %3)</source>
+        <translation>%1: %2 (intento %3)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <source>%1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>%1 tras %n intento</numerusform>
+            <numerusform>%1 tras %n intentos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="327"/>
+        <source>; the device may have carried it out: check before repeating</source>
+        <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="388"/>
+        <source>line lost: %1</source>
+        <translation>línea perdida: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="389"/>
+        <source>the line was lost: %1</source>
+        <translation>se perdió la línea: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::SerialTransport</name>
+    <message>
+        <location filename="../lib/link/serialtransport.cpp" line="74"/>
+        <source>the port went away (%1)</source>
+        <translation>el puerto desapareció (%1)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/serialtransport.cpp" line="79"/>
+        <source>the port stopped responding (%1)</source>
+        <translation>el puerto dejó de responder (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::SimTransport</name>
+    <message>
+        <location filename="../lib/link/simtransport.cpp" line="24"/>
+        <source>the simulated line is unplugged</source>
+        <translation>la línea simulada está desenchufada</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/simtransport.cpp" line="51"/>
+        <source>demo (simulated %1)</source>
+        <translation>demo (%1 simulado)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/simtransport.cpp" line="62"/>
+        <source>the simulated cable was pulled</source>
+        <translation>se desenchufó el cable simulado</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::TcpTransport</name>
+    <message>
+        <location filename="../lib/link/tcptransport.cpp" line="23"/>
+        <source>the connection to %1 dropped (%2)</source>
+        <translation>se cortó la conexión con %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/tcptransport.cpp" line="29"/>
+        <source>cannot connect to %1: %2</source>
+        <translation>no se puede conectar con %1: %2</translation>
     </message>
 </context>
 </TS>

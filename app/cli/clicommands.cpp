@@ -47,7 +47,8 @@ QString formatReading(const ResolvedCommand &cmd, const QByteArray &data, bool r
     const auto value = decodeAnswer(cmd, data);
     if (!value)
         return Tr::tr("%1 unreadable data field '%2'").arg(code, QString::fromLatin1(data));
-    const QString described = describeValue(cmd, *value);
+    // Data for scripts: the catalog's English labels, whatever the language of the messages.
+    const QString described = describeValue(cmd, *value, Wording::Catalog);
     const ValueKind k = cmd.spec->kind;
     if ((k == ValueKind::Enum || k == ValueKind::Flags) && !value->isText &&
         !cmd.spec->special.contains(int(value->number)))
@@ -273,10 +274,10 @@ int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err) {
                 range = allowedText(*r);
         }
         out << qSetFieldWidth(5) << Qt::left << c.pattern << qSetFieldWidth(3) << access
-            << qSetFieldWidth(0) << c.name;
+            << qSetFieldWidth(0) << catalogText(c.name);
         if (c.dangerous)
             out << Tr::tr(" [dangerous]");
-        out << "\n      " << c.description;
+        out << "\n      " << catalogText(c.description);
         if (!range.isEmpty())
             out << "\n      " << Tr::tr("values: %1").arg(range);
         out << "\n      " << Tr::tr("families: %1").arg(c.families.join(QLatin1Char(' ')))

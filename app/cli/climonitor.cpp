@@ -48,7 +48,7 @@ PortReading readPort(CliSession &s, const DeviceInfo &d, int port, int *worst) {
         if (base == "PP")
             fields.append(QString::number(value->number / 10.0, 'f', 1));
         else
-            fields.append(describeValue(*cmd, *value));
+            fields.append(describeValue(*cmd, *value, Wording::Catalog)); // data: English
     }
     r = {fields[0], fields[1], fields[2], fields[3], true};
     return r;

@@ -33,7 +33,8 @@ void LinkStatusLabel::refresh() {
         tip.append(tr("NAK %1 × %2: %3")
                        .arg(it.key())
                        .arg(it.value())
-                       .arg(protocol::Catalog::builtin().nakText(it.key())));
+                       .arg(protocol::Catalog::builtin().nakText(it.key(),
+                                                                 protocol::Wording::Translated)));
     tip.append(tr("Reconnects: %1").arg(line->reconnects()));
     setToolTip(tip.join(QLatin1Char('\n')));
 }

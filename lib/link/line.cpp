@@ -20,7 +20,7 @@ Line::Line(std::unique_ptr<Transport> transport, const LineSettings &settings, Q
 }
 
 Line::~Line() {
-    m_queue.stop(QStringLiteral("the line was closed"));
+    m_queue.stop(tr("the line was closed"));
     m_transport->close();
 }
 

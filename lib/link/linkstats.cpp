@@ -1,13 +1,17 @@
 #include "linkstats.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <vector>
 
 namespace tipscope::link {
 
 namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(LinkStats)
+};
 constexpr qint64 kRateWindowMs = 5000;
-}
+} // namespace
 
 void LinkStats::recordAnswer(qint64 latencyUs, qint64 nowMs) {
     ++answered;
@@ -53,8 +57,8 @@ qint64 LinkStats::nakTotal() const {
 }
 
 QString LinkStats::summary(qint64 nowMs) const {
-    return QStringLiteral("%1 tx/s, latency %2 ms median (%3-%4), %5 sent, %6 answered, "
-                          "%7 timeouts, %8 corrupted, %9 NAKs, %10 stray, %11 retries")
+    return Tr::tr("%1 tx/s, latency %2 ms median (%3-%4), %5 sent, %6 answered, %7 timeouts, "
+                  "%8 corrupted, %9 NAKs, %10 stray, %11 retries")
         .arg(transactionsPerSecond(nowMs), 0, 'f', 1)
         .arg(medianLatencyUs() / 1000.0, 0, 'f', 1)
         .arg(minLatencyUs / 1000.0, 0, 'f', 1)

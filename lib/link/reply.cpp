@@ -1,23 +1,25 @@
 #include "reply.h"
 
+#include <QCoreApplication>
+
 namespace tipscope::link {
 
 QString replyErrorName(ReplyError e) {
     switch (e) {
     case ReplyError::None:
-        return QStringLiteral("ok");
+        return Reply::tr("ok");
     case ReplyError::Timeout:
-        return QStringLiteral("no answer");
+        return Reply::tr("no answer");
     case ReplyError::Corrupted:
-        return QStringLiteral("corrupted answer");
+        return Reply::tr("corrupted answer");
     case ReplyError::Nak:
-        return QStringLiteral("refused (NAK)");
+        return Reply::tr("refused (NAK)");
     case ReplyError::Disconnected:
-        return QStringLiteral("disconnected");
+        return Reply::tr("disconnected");
     case ReplyError::Cancelled:
-        return QStringLiteral("cancelled");
+        return Reply::tr("cancelled");
     case ReplyError::NotOpen:
-        return QStringLiteral("not connected");
+        return Reply::tr("not connected");
     }
     return {};
 }

@@ -57,7 +57,7 @@ RequestQueue::RequestQueue(QObject *parent)
 }
 
 RequestQueue::~RequestQueue() {
-    stop(QStringLiteral("the connection was closed"));
+    stop(tr("the connection was closed"));
 }
 
 void RequestQueue::setTransport(Transport *transport) {
@@ -103,12 +103,11 @@ Reply *RequestQueue::enqueue(const Request &request, QObject *owner) {
     }
     auto *reply = new Reply(frame, owner);
     if (m_stopped) {
-        finishLater(reply, ReplyError::Cancelled, QStringLiteral("the connection is closing"));
+        finishLater(reply, ReplyError::Cancelled, tr("the connection is closing"));
         return reply;
     }
     if (!m_open) {
-        finishLater(reply, ReplyError::NotOpen,
-                    QStringLiteral("not sent: the line is not connected"));
+        finishLater(reply, ReplyError::NotOpen, tr("not sent: the line is not connected"));
         return reply;
     }
     if (tryCoalesce(request, reply))
@@ -255,7 +254,7 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
             m_tap.decoded(ev, false);
             if (waiting)
                 attemptFailed(ReplyError::Corrupted,
-                              QStringLiteral("the answer was corrupted (%1)").arg(ev.detail));
+                              tr("the answer was corrupted (%1)").arg(ev.detail));
             break;
         }
     }
@@ -266,11 +265,11 @@ void RequestQueue::onTimer() {
     if (!m_current)
         return;
     if (m_state == State::Writing) {
-        attemptFailed(ReplyError::Timeout, QStringLiteral("the request could not be written"));
+        attemptFailed(ReplyError::Timeout, tr("the request could not be written"));
         return;
     }
     if (m_state == State::Waiting)
-        attemptFailed(ReplyError::Timeout, QStringLiteral("no answer"));
+        attemptFailed(ReplyError::Timeout, tr("no answer"));
 }
 
 void RequestQueue::complete(const Frame &answer) {
@@ -288,8 +287,9 @@ void RequestQueue::complete(const Frame &answer) {
             return;
         }
         finishCurrent(ReplyError::Nak,
-                      QStringLiteral("NAK %1: %2")
-                          .arg(QString::fromLatin1(answer.data), Catalog::builtin().nakText(code)),
+                      tr("NAK %1: %2")
+                          .arg(QString::fromLatin1(answer.data),
+                               Catalog::builtin().nakText(code, Wording::Translated)),
                       answer);
         return;
     }
@@ -307,8 +307,7 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
     const bool timeout = error == ReplyError::Timeout;
     if (timeout) {
         ++(e.request.probe ? m_stats.probesUnanswered : m_stats.timeouts);
-        m_tap.note(
-            QStringLiteral("%1: %2 (attempt %3)").arg(e.frame.toString(), why).arg(e.attempts));
+        m_tap.note(tr("%1: %2 (attempt %3)").arg(e.frame.toString(), why).arg(e.attempts));
     } else {
         m_timeoutRun = 0; // a garbled answer still proves the cable and the device are there
     }
@@ -323,9 +322,9 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
     if (lengthensStreak)
         ++m_timeoutRun;
     const int run = m_timeoutRun;
-    QString text = QStringLiteral("%1 after %2 attempt(s)").arg(why).arg(e.attempts);
+    QString text = tr("%1 after %n attempt(s)", nullptr, e.attempts).arg(why);
     if (e.request.header == Header::Write && !e.request.repeatable)
-        text += QStringLiteral("; the device may have carried it out: check before repeating");
+        text += tr("; the device may have carried it out: check before repeating");
     finishCurrent(error, text);
     if (lengthensStreak)
         Q_EMIT timeoutStreak(run);
@@ -386,8 +385,8 @@ void RequestQueue::lineOpened() {
 
 void RequestQueue::lineLost(const QString &reason) {
     m_open = false;
-    m_tap.note(QStringLiteral("line lost: ") + reason);
-    failEverything(ReplyError::Disconnected, QStringLiteral("the line was lost: ") + reason);
+    m_tap.note(tr("line lost: %1").arg(reason));
+    failEverything(ReplyError::Disconnected, tr("the line was lost: %1").arg(reason));
 }
 
 void RequestQueue::stop(const QString &reason) {

@@ -71,12 +71,12 @@ void SerialTransport::onError(QSerialPort::SerialPortError error) {
         return; // open() reports its own failures
     switch (error) {
     case QSerialPort::ResourceError:
-        lose(QStringLiteral("the port went away (%1)").arg(m_port.errorString()));
+        lose(tr("the port went away (%1)").arg(m_port.errorString()));
         break;
     case QSerialPort::ReadError:
     case QSerialPort::WriteError:
         // On an unplugged adapter Qt 6.4 reports zero-byte reads as ReadError, over and over.
-        lose(QStringLiteral("the port stopped responding (%1)").arg(m_port.errorString()));
+        lose(tr("the port stopped responding (%1)").arg(m_port.errorString()));
         break;
     default:
         break;

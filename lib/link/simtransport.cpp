@@ -21,8 +21,7 @@ SimTransport::SimTransport(sim::SimLine &line, QObject *parent)
 void SimTransport::open() {
     QTimer::singleShot(0, this, [this] {
         if (!m_plugged) {
-            Q_EMIT openFailed(OpenFailure::NotFound,
-                              QStringLiteral("the simulated line is unplugged"));
+            Q_EMIT openFailed(OpenFailure::NotFound, tr("the simulated line is unplugged"));
             return;
         }
         m_open = true;
@@ -49,7 +48,7 @@ QString SimTransport::description() const {
     QStringList names;
     for (const auto *d : m_line.devices())
         names.append(d->family().name);
-    return QStringLiteral("demo (simulated %1)").arg(names.join(QLatin1String(" + ")));
+    return tr("demo (simulated %1)").arg(names.join(QLatin1String(" + ")));
 }
 
 int SimTransport::baudRate() const {
@@ -60,7 +59,7 @@ void SimTransport::setPlugged(bool plugged) {
     m_plugged = plugged;
     if (!plugged && m_open) {
         m_open = false;
-        Q_EMIT disconnected(QStringLiteral("the simulated cable was pulled"));
+        Q_EMIT disconnected(tr("the simulated cable was pulled"));
     }
 }
 

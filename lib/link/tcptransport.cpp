@@ -20,14 +20,13 @@ TcpTransport::TcpTransport(const QString &host, quint16 port, int wireBaud, QObj
         if (m_wasConnected) {
             m_wasConnected = false;
             m_socket.abort();
-            Q_EMIT disconnected(
-                QStringLiteral("the connection to %1 dropped (%2)").arg(description(), why));
+            Q_EMIT disconnected(tr("the connection to %1 dropped (%2)").arg(description(), why));
             return;
         }
         const OpenFailure kind =
             e == QAbstractSocket::HostNotFoundError ? OpenFailure::NotFound : OpenFailure::Other;
         m_socket.abort();
-        Q_EMIT openFailed(kind, QStringLiteral("cannot connect to %1: %2").arg(description(), why));
+        Q_EMIT openFailed(kind, tr("cannot connect to %1: %2").arg(description(), why));
     });
 }
 

@@ -23,11 +23,15 @@ public:
            QObject *parent = nullptr);
 
     [[nodiscard]] QByteArray code() const { return m_command.code; }
-    [[nodiscard]] QString name() const { return m_command.spec->name; }
-    [[nodiscard]] QString description() const { return m_command.spec->description; }
-    [[nodiscard]] QString danger() const { return m_command.spec->danger; }
+    // The catalog's words for the action, in the user interface language.
+    [[nodiscard]] QString name() const { return protocol::catalogText(m_command.spec->name); }
+    [[nodiscard]] QString description() const {
+        return protocol::catalogText(m_command.spec->description);
+    }
+    [[nodiscard]] QString danger() const { return protocol::catalogText(m_command.spec->danger); }
     [[nodiscard]] bool isDangerous() const { return m_command.spec->dangerous; }
-    // The values the action takes (SFD: forward/backward); empty for fixed-data actions.
+    // The values the action takes (SFD: forward/backward), labelled in the catalog's English;
+    // empty for fixed-data actions.
     [[nodiscard]] QMap<int, QString> choices() const { return m_command.values; }
     [[nodiscard]] const protocol::ResolvedCommand &command() const { return m_command; }
     [[nodiscard]] bool isRunning() const { return m_running; }

@@ -25,7 +25,7 @@ QString commandName(const Frame &f) {
     const Direction dir = f.header == Header::Write ? Direction::Write : Direction::Read;
     for (const QString &fam : cat.familyNames())
         if (auto r = cat.resolve(fam, f.command, dir))
-            return r->spec->name;
+            return catalogText(r->spec->name);
     return {};
 }
 } // namespace
@@ -71,8 +71,8 @@ ConsoleEntry ConsoleModel::fromTap(const link::TapEvent &e) {
             c.frame = e.decoded.frame;
             c.stray = e.stray;
             if (e.decoded.frame.header == Header::Nak)
-                c.remark =
-                    Catalog::builtin().nakText(parseNumber(e.decoded.frame.data).value_or(-1));
+                c.remark = Catalog::builtin().nakText(
+                    parseNumber(e.decoded.frame.data).value_or(-1), Wording::Translated);
             if (e.stray)
                 c.remark = Tr::tr("stray: answers no pending request");
         } else {

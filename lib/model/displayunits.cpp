@@ -50,12 +50,12 @@ QString formatValue(const ResolvedCommand &cmd, const Value &v, TemperatureUnit 
     if (v.isText)
         return v.text;
     if (cmd.spec->special.contains(int(v.number)))
-        return cmd.spec->special.value(int(v.number));
+        return catalogText(cmd.spec->special.value(int(v.number)));
     switch (cmd.spec->kind) {
     case ValueKind::Enum:
     case ValueKind::Flags:
     case ValueKind::Text:
-        return describeValue(cmd, v);
+        return describeValue(cmd, v, Wording::Translated);
     default:
         return formatNumber(cmd, v.number, t);
     }
@@ -64,9 +64,8 @@ QString formatValue(const ResolvedCommand &cmd, const Value &v, TemperatureUnit 
 std::optional<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text,
                                        TemperatureUnit t, QString *error) {
     const QString s = text.trimmed();
-    for (auto it = cmd.spec->special.begin(); it != cmd.spec->special.end(); ++it)
-        if (s.compare(it.value(), Qt::CaseInsensitive) == 0)
-            return it.key();
+    if (auto special = labelled(cmd.spec->special, s))
+        return special;
     if (cmd.spec->kind == ValueKind::Enum || cmd.spec->kind == ValueKind::Flags ||
         cmd.spec->kind == ValueKind::Action)
         return parseUserValue(cmd, s, error);
@@ -86,7 +85,8 @@ std::optional<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString
     const qint64 wire = fromDisplay(cmd, d, t);
     if (std::fabs(toDisplay(cmd, wire, t) - d) > std::pow(10.0, -f.decimals) / 2 + 1e-9) {
         if (error)
-            *error = Tr::tr("%1 has more decimals than %2 can take").arg(s, cmd.spec->name);
+            *error =
+                Tr::tr("%1 has more decimals than %2 can take").arg(s, catalogText(cmd.spec->name));
         return std::nullopt;
     }
     return wire;

@@ -29,7 +29,8 @@ struct DisplayFormat {
                                TemperatureUnit t);
 [[nodiscard]] qint64 fromDisplay(const protocol::ResolvedCommand &cmd, double display,
                                  TemperatureUnit t);
-// "350 °C", "662 °F", "84.0 %", "20.0 mm", "1.60 s", "disabled", "Stand, Cooling", "T245".
+// "350 °C", "662 °F", "84.0 %", "20.0 mm", "1.60 s", "disabled", "Stand, Cooling", "T245", the
+// catalog's words in the user interface language.
 [[nodiscard]] QString formatValue(const protocol::ResolvedCommand &cmd, const protocol::Value &v,
                                   TemperatureUnit t);
 // A number with its unit, without special-value names ("350 °C").

@@ -54,7 +54,7 @@ std::optional<int> FeederModel::errorCode() const {
 
 QString FeederModel::errorText() const {
     const auto e = errorCode();
-    return e ? Catalog::builtin().feederErrorText(*e) : Tr::tr("—");
+    return e ? Catalog::builtin().feederErrorText(*e, Wording::Translated) : Tr::tr("—");
 }
 
 QString FeederModel::trigger(const QByteArray &code, Confirmation c, qint64 arg) {

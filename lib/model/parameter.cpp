@@ -80,7 +80,7 @@ QString Parameter::allowedText() const {
     }
     QStringList specials;
     for (const QString &s : c.spec->special)
-        specials.append(s);
+        specials.append(catalogText(s));
     if (!specials.isEmpty())
         text += Tr::tr(", or %1").arg(specials.join(QLatin1String(", ")));
     return text;
@@ -88,7 +88,7 @@ QString Parameter::allowedText() const {
 
 QString Parameter::validate(qint64 wire) const {
     if (!m_write)
-        return Tr::tr("%1 cannot be written").arg(meta().name);
+        return Tr::tr("%1 cannot be written").arg(label());
     const ResolvedCommand &c = *m_write;
     const bool special = c.spec->special.contains(int(wire));
     const bool numeric = c.spec->kind == ValueKind::Number || c.spec->kind == ValueKind::Delay;
@@ -97,7 +97,7 @@ QString Parameter::validate(qint64 wire) const {
         return {};
     const QString shown = numeric && !special ? formatNumber(c, wire, m_device.temperatureUnit())
                                               : QString::number(wire);
-    return Tr::tr("%1 is not allowed for %2: allowed is %3").arg(shown, meta().name, allowedText());
+    return Tr::tr("%1 is not allowed for %2: allowed is %3").arg(shown, label(), allowedText());
 }
 
 QString Parameter::displayText() const {
@@ -129,11 +129,11 @@ QString Parameter::setEdit(qint64 wire) {
 
 QString Parameter::setEditText(const QString &text) {
     if (!m_write)
-        return Tr::tr("%1 cannot be written").arg(meta().name);
+        return Tr::tr("%1 cannot be written").arg(label());
     QString error;
     const auto wire = parseDisplayText(*m_write, text, m_device.temperatureUnit(), &error);
     if (!wire)
-        return Tr::tr("%1: %2; allowed is %3").arg(meta().name, error, allowedText());
+        return Tr::tr("%1: %2; allowed is %3").arg(label(), error, allowedText());
     return setEdit(*wire);
 }
 
@@ -169,7 +169,7 @@ Reply *Parameter::refresh(Priority priority) {
         if (m_state == State::Reading)
             setState(m_value ? State::InSync : State::Unknown);
         m_device.logCommunication(
-            Tr::tr("reading %1 (%2)").arg(meta().name, QString::fromLatin1(code())),
+            Tr::tr("reading %1 (%2)").arg(label(), QString::fromLatin1(code())),
             reply->errorString());
     });
     return reply;
@@ -181,7 +181,7 @@ void Parameter::deviceReported(const QByteArray &data) {
     const auto v = decodeAnswer(*m_read, data);
     if (!v) {
         m_device.logCommunication(
-            Tr::tr("reading %1").arg(meta().name),
+            Tr::tr("reading %1").arg(label()),
             Tr::tr("unreadable data field '%1'").arg(QString::fromLatin1(data)));
         return;
     }
@@ -272,14 +272,14 @@ void Parameter::readBack(const QByteArray &written) {
         Q_EMIT editChanged();
         setState(State::InSync);
         Q_EMIT stateChanged();
-        m_device.logWrite(Tr::tr("%1 set to %2").arg(meta().name, displayText()));
+        m_device.logWrite(Tr::tr("%1 set to %2").arg(label(), displayText()));
         Q_EMIT writeFinished(true, {});
     });
 }
 
 void Parameter::fail(const QString &reason) {
     setState(State::Failed, reason);
-    m_device.logCommunication(Tr::tr("writing %1").arg(meta().name), reason);
+    m_device.logCommunication(Tr::tr("writing %1").arg(label()), reason);
     Q_EMIT writeFinished(false, reason);
 }
 

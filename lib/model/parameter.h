@@ -34,6 +34,10 @@ public:
     [[nodiscard]] QByteArray code() const { return spec().code; }
     [[nodiscard]] const protocol::ResolvedCommand &spec() const;
     [[nodiscard]] const protocol::CommandSpec &meta() const { return *spec().spec; }
+    // The catalog's name and description in the user interface language, for people; meta()
+    // has them in English for data (CSV columns, the support report's JSON).
+    [[nodiscard]] QString label() const { return protocol::catalogText(meta().name); }
+    [[nodiscard]] QString description() const { return protocol::catalogText(meta().description); }
     [[nodiscard]] bool isReadable() const { return m_read.has_value(); }
     [[nodiscard]] bool isWritable() const { return m_write.has_value(); }
     [[nodiscard]] DeviceModel &device() const { return m_device; }

@@ -98,9 +98,9 @@ QString PortModel::toolName() const {
     const auto t = tool();
     if (!t)
         return Tr::tr("—");
-    return Catalog::builtin()
-        .table(QStringLiteral("$toolTable"), m_station.family())
-        .value(*t, Tr::tr("tool %1").arg(*t));
+    const QMap<int, QString> tools =
+        Catalog::builtin().table(QStringLiteral("$toolTable"), m_station.family());
+    return tools.contains(*t) ? catalogText(tools.value(*t)) : Tr::tr("tool %1").arg(*t);
 }
 
 std::optional<int> PortModel::error() const {
@@ -110,7 +110,8 @@ std::optional<int> PortModel::error() const {
 
 QString PortModel::errorText() const {
     const auto e = error();
-    return e ? Catalog::builtin().portErrorText(m_station.family(), *e) : Tr::tr("—");
+    return e ? Catalog::builtin().portErrorText(m_station.family(), *e, Wording::Translated)
+             : Tr::tr("—");
 }
 
 int PortModel::alarmFlags() const {

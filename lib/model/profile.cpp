@@ -172,8 +172,7 @@ QList<ProfileDifference> diffProfile(const Profile &profile, const DeviceModel &
         if (want && have && *want == *have)
             continue;
         const TemperatureUnit t = device.temperatureUnit();
-        out.append({code, p->meta().name,
-                    have ? formatValue(p->spec(), *have, t) : Tr::tr("unknown"),
+        out.append({code, p->label(), have ? formatValue(p->spec(), *have, t) : Tr::tr("unknown"),
                     want ? formatValue(p->spec(), *want, t) : QString::fromLatin1(data),
                     p->rawValue(), data});
     }

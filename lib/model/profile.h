@@ -44,7 +44,7 @@ struct Profile {
 
 struct ProfileDifference {
     QByteArray code;
-    QString name;
+    QString name;       // Parameter::label(), in the user interface language
     QString deviceText; // as people read it; "unknown" when the device did not answer
     QString profileText;
     QByteArray deviceData;

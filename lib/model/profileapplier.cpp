@@ -176,8 +176,8 @@ void ProfileApplier::writeNext() {
     for (const auto &entry : m_profile.values)
         if (entry.first == code)
             data = entry.second;
-    ApplyItem item{code, p->meta().name, p->displayText(), {}, false, {}};
-    Q_EMIT progress(m_next, int(m_toWrite.size()), Tr::tr("writing %1").arg(p->meta().name));
+    ApplyItem item{code, p->label(), p->displayText(), {}, false, {}};
+    Q_EMIT progress(m_next, int(m_toWrite.size()), Tr::tr("writing %1").arg(p->label()));
     const auto value = decodeAnswer(p->spec(), data);
     const QString why = value ? p->setEdit(value->number) : Tr::tr("unreadable value");
     if (!why.isEmpty()) {

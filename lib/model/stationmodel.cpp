@@ -52,7 +52,7 @@ std::optional<int> StationModel::stationError() const {
 
 QString StationModel::stationErrorText() const {
     const auto e = stationError();
-    return e ? Catalog::builtin().stationErrorText(family(), *e) : Tr::tr("—");
+    return e ? Catalog::builtin().stationErrorText(family(), *e, Wording::Translated) : Tr::tr("—");
 }
 
 std::optional<qint64> StationModel::transformerTemperature() const {

@@ -2,6 +2,8 @@
 
 #include "session.h"
 
+#include "protocol/catalogtext.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QJsonArray>
@@ -108,9 +110,10 @@ QString supportReportText(const QJsonObject &r) {
                         d.value(QStringLiteral("softwareVersion")).toString());
         for (const QJsonValue &vv : d.value(QStringLiteral("values")).toArray()) {
             const QJsonObject v = vv.toObject();
+            // The JSON keeps the catalog's English name for machines; people read theirs.
             out << QStringLiteral("  %1 %2: %3")
                        .arg(v.value(QStringLiteral("code")).toString(), -4)
-                       .arg(v.value(QStringLiteral("name")).toString(),
+                       .arg(protocol::catalogText(v.value(QStringLiteral("name")).toString()),
                             v.value(QStringLiteral("text")).toString());
         }
         out << QString();

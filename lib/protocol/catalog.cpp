@@ -182,35 +182,39 @@ QString Catalog::familyForModel(const QString &modelName) const {
     return {};
 }
 
-static QString lookup(const QMap<int, QString> &table, int code, const QString &fallback) {
+// `fallback` is a sentence with %1 for the code, marked for lupdate in the context "Catalog".
+static QString lookup(const QMap<int, QString> &table, int code, const char *fallback,
+                      Wording wording) {
     auto it = table.constFind(code);
-    return it == table.constEnd() ? fallback : it.value();
+    if (it != table.constEnd())
+        return catalogText(it.value(), wording);
+    return catalogText(QString::fromUtf8(fallback), wording).arg(code);
 }
 
-QString Catalog::nakText(int code) const {
+QString Catalog::nakText(int code, Wording wording) const {
     return lookup(m_tables.value(QStringLiteral("nak")), code,
-                  QStringLiteral("Unknown NAK code %1").arg(code));
+                  QT_TRANSLATE_NOOP("Catalog", "Unknown NAK code %1"), wording);
 }
 
-QString Catalog::stationErrorText(const QString &familyName, int code) const {
+QString Catalog::stationErrorText(const QString &familyName, int code, Wording wording) const {
     return lookup(table(QStringLiteral("$stationErrors"), familyName), code,
-                  QStringLiteral("Unknown station error %1").arg(code));
+                  QT_TRANSLATE_NOOP("Catalog", "Unknown station error %1"), wording);
 }
 
 int Catalog::canonicalPortError(int code) const {
     return m_portErrorAliases.value(code, code);
 }
 
-QString Catalog::portErrorText(const QString &familyName, int code) const {
+QString Catalog::portErrorText(const QString &familyName, int code, Wording wording) const {
     return lookup(table(QStringLiteral("$portErrors"), familyName), canonicalPortError(code),
-                  QStringLiteral("Unknown port error %1").arg(code));
+                  QT_TRANSLATE_NOOP("Catalog", "Unknown port error %1"), wording);
 }
 
-QString Catalog::feederErrorText(int code) const {
+QString Catalog::feederErrorText(int code, Wording wording) const {
     return lookup(m_tables.value(QStringLiteral("feederErrors")), code,
-                  QStringLiteral("Feeder error %1 (not listed in the SFR guide; reset it with "
-                                 "W-ECV and see the SFR manual)")
-                      .arg(code));
+                  QT_TRANSLATE_NOOP("Catalog", "Feeder error %1 (not listed in the SFR guide; "
+                                               "reset it with W-ECV and see the SFR manual)"),
+                  wording);
 }
 
 QString Catalog::severity(const QString &tableName, int code) const {

@@ -8,6 +8,8 @@
 // and safe to share; builtin() parses the embedded resources once.
 #pragma once
 
+#include "catalogtext.h"
+
 #include <QByteArray>
 #include <QList>
 #include <QMap>
@@ -127,10 +129,12 @@ public:
     // Family whose name starts the model name reported by R-SMN ("DME-2C" -> "DME").
     [[nodiscard]] QString familyForModel(const QString &modelName) const;
 
-    [[nodiscard]] QString nakText(int code) const;
-    [[nodiscard]] QString stationErrorText(const QString &family, int code) const;
-    [[nodiscard]] QString portErrorText(const QString &family, int code) const;
-    [[nodiscard]] QString feederErrorText(int code) const;
+    // What a code means, for people: the table's text, or a sentence for a code not listed.
+    // Wording::Translated for what is shown, Wording::Catalog for data output (catalogtext.h).
+    [[nodiscard]] QString nakText(int code, Wording wording) const;
+    [[nodiscard]] QString stationErrorText(const QString &family, int code, Wording wording) const;
+    [[nodiscard]] QString portErrorText(const QString &family, int code, Wording wording) const;
+    [[nodiscard]] QString feederErrorText(int code, Wording wording) const;
     [[nodiscard]] QString severity(const QString &tableName, int code) const;
     // Maps a misprinted code (the guides' 80000) to its table entry.
     [[nodiscard]] int canonicalPortError(int code) const;

@@ -4,18 +4,24 @@
 
 namespace tipscope::protocol {
 
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(FrameDecoder)
+};
+} // namespace
+
 QString decodeEventKindName(DecodeEvent::Kind kind) {
     switch (kind) {
     case DecodeEvent::Kind::Frame:
-        return QStringLiteral("frame");
+        return Tr::tr("frame");
     case DecodeEvent::Kind::BccError:
-        return QStringLiteral("BCC error");
+        return Tr::tr("BCC error");
     case DecodeEvent::Kind::FormatError:
-        return QStringLiteral("format error");
+        return Tr::tr("format error");
     case DecodeEvent::Kind::Overflow:
-        return QStringLiteral("overflow");
+        return Tr::tr("overflow");
     case DecodeEvent::Kind::Garbage:
-        return QStringLiteral("garbage");
+        return Tr::tr("garbage");
     }
     return {};
 }
@@ -44,12 +50,11 @@ std::optional<Frame> parseFrame(const QByteArray &raw, DecodeEvent::Kind *failur
     using K = DecodeEvent::Kind;
     const qsizetype n = raw.size();
     if (n < 7 || raw.at(0) != kStx || raw.at(n - 2) != kEtx)
-        return fail(K::FormatError, QStringLiteral("not STX…ETX BCC or too short"), failureKind,
-                    why);
+        return fail(K::FormatError, Tr::tr("not STX…ETX BCC or too short"), failureKind, why);
     const char expected = blockCheck(raw.left(n - 1));
     if (expected != raw.at(n - 1))
         return fail(K::BccError,
-                    QStringLiteral("BCC is %1, expected %2")
+                    Tr::tr("BCC is %1, expected %2")
                         .arg(quint8(raw.at(n - 1)), 2, 16, QLatin1Char('0'))
                         .arg(quint8(expected), 2, 16, QLatin1Char('0')),
                     failureKind, why);
@@ -59,28 +64,27 @@ std::optional<Frame> parseFrame(const QByteArray &raw, DecodeEvent::Kind *failur
     qsizetype pos = 0;
     if (isDigit(body.at(0))) {
         if (body.size() < 8 || !isDigit(body.at(1)) || !isDigit(body.at(2)) || !isDigit(body.at(3)))
-            return fail(K::FormatError, QStringLiteral("malformed addresses"), failureKind, why);
+            return fail(K::FormatError, Tr::tr("malformed addresses"), failureKind, why);
         f.source = body.mid(0, 2).toInt();
         f.target = body.mid(2, 2).toInt();
         pos = 4;
     }
     if (body.size() < pos + 4)
-        return fail(K::FormatError, QStringLiteral("too short for header and command"), failureKind,
-                    why);
+        return fail(K::FormatError, Tr::tr("too short for header and command"), failureKind, why);
     const auto header = headerFromChar(body.at(pos));
     if (!header)
-        return fail(K::FormatError, QStringLiteral("unknown header"), failureKind, why);
+        return fail(K::FormatError, Tr::tr("unknown header"), failureKind, why);
     f.header = *header;
     f.command = body.mid(pos + 1, 3);
     for (char c : f.command)
         if (!isCommandChar(c))
-            return fail(K::FormatError, QStringLiteral("command is not 3 letters or digits"),
-                        failureKind, why);
+            return fail(K::FormatError, Tr::tr("command is not 3 letters or digits"), failureKind,
+                        why);
     f.data = body.mid(pos + 4);
     for (char c : f.data)
         if (!isPrintable(c))
-            return fail(K::FormatError, QStringLiteral("data field is not printable ASCII"),
-                        failureKind, why);
+            return fail(K::FormatError, Tr::tr("data field is not printable ASCII"), failureKind,
+                        why);
     return f;
 }
 
@@ -112,7 +116,7 @@ std::vector<DecodeEvent> FrameDecoder::feed(QByteArrayView chunk) {
             if (byte == kStx) {
                 // A frame cannot contain STX: the candidate was cut short; restart here.
                 emitRejected(out, DecodeEvent::Kind::FormatError,
-                             QStringLiteral("frame interrupted by a new STX"));
+                             Tr::tr("frame interrupted by a new STX"));
                 m_candidate.append(byte);
                 m_state = State::InFrame;
             } else {
@@ -121,7 +125,7 @@ std::vector<DecodeEvent> FrameDecoder::feed(QByteArrayView chunk) {
                     m_state = State::AwaitBcc;
                 else if (m_candidate.size() > m_maxFrameSize - 1)
                     emitRejected(out, DecodeEvent::Kind::Overflow,
-                                 QStringLiteral("no ETX within %1 bytes").arg(m_maxFrameSize));
+                                 Tr::tr("no ETX within %1 bytes").arg(m_maxFrameSize));
             }
             break;
         case State::AwaitBcc:
@@ -140,7 +144,7 @@ void FrameDecoder::flushGarbage(std::vector<DecodeEvent> &out) {
     DecodeEvent e;
     e.kind = DecodeEvent::Kind::Garbage;
     e.raw = m_garbage;
-    e.detail = QStringLiteral("%1 byte(s) outside any frame").arg(m_garbage.size());
+    e.detail = Tr::tr("%n byte(s) outside any frame", nullptr, int(m_garbage.size()));
     out.push_back(std::move(e));
     m_garbage.clear();
 }

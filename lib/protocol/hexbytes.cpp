@@ -2,7 +2,15 @@
 
 #include "frame.h"
 
+#include <QCoreApplication>
+
 namespace tipscope::protocol {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(HexBytes)
+};
+} // namespace
 
 static int hexValue(QChar c) {
     const char16_t u = c.unicode();
@@ -27,8 +35,7 @@ std::optional<QByteArray> parseHexBytes(const QString &text, QString *error) {
         const QChar c = text.at(i);
         if (c.isSpace() || c == QLatin1Char(',') || c == QLatin1Char(':')) {
             if (pending >= 0)
-                return fail(
-                    QStringLiteral("odd number of hex digits before position %1").arg(i + 1));
+                return fail(Tr::tr("odd number of hex digits before position %1").arg(i + 1));
             continue;
         }
         if (pending < 0 && c == QLatin1Char('0') && i + 1 < text.size() &&
@@ -38,20 +45,20 @@ std::optional<QByteArray> parseHexBytes(const QString &text, QString *error) {
         }
         const int v = hexValue(c);
         if (v < 0)
-            return fail(QStringLiteral("'%1' at position %2 is not a hex digit").arg(c).arg(i + 1));
+            return fail(Tr::tr("'%1' at position %2 is not a hex digit").arg(c).arg(i + 1));
         if (pending < 0) {
             pending = v;
         } else {
             out.append(char(pending * 16 + v));
             pending = -1;
             if (out.size() > kMaxHexInputBytes)
-                return fail(QStringLiteral("more than %1 bytes").arg(kMaxHexInputBytes));
+                return fail(Tr::tr("more than %1 bytes").arg(kMaxHexInputBytes));
         }
     }
     if (pending >= 0)
-        return fail(QStringLiteral("odd number of hex digits"));
+        return fail(Tr::tr("odd number of hex digits"));
     if (out.isEmpty())
-        return fail(QStringLiteral("no bytes given"));
+        return fail(Tr::tr("no bytes given"));
     return out;
 }
 

@@ -2,14 +2,21 @@
 
 #include "datafield.h"
 
+#include <QCoreApplication>
 #include <cmath>
 
 namespace tipscope::protocol {
 
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(ValueCodec)
+};
+} // namespace
+
 static QString joinSpecials(const QMap<int, QString> &special) {
     QStringList names;
     for (const auto &label : special)
-        names.append(label);
+        names.append(catalogText(label));
     return names.join(QLatin1String(", "));
 }
 
@@ -32,28 +39,27 @@ QString allowedText(const ResolvedCommand &cmd) {
     case ValueKind::Number:
     case ValueKind::Delay: {
         QString unit = wireUnitSymbol(cmd);
-        QString t = QStringLiteral("%1 to %2%3")
+        QString t = Tr::tr("%1 to %2%3")
                         .arg(formatNumber(cmd, cmd.min), formatNumber(cmd, cmd.max),
                              unit.isEmpty() ? QString() : QLatin1Char(' ') + unit);
         if (s.step > 1)
-            t += QStringLiteral(" in steps of %1").arg(s.step);
+            t += Tr::tr(" in steps of %1").arg(s.step);
         if (!s.special.isEmpty())
-            t += QStringLiteral(", or ") + joinSpecials(s.special);
+            t += Tr::tr(", or %1").arg(joinSpecials(s.special));
         return t;
     }
     case ValueKind::Enum:
     case ValueKind::Flags: {
         QStringList items;
         for (auto it = cmd.values.begin(); it != cmd.values.end(); ++it)
-            items.append(QStringLiteral("%1 (%2)").arg(it.key()).arg(it.value()));
-        return QStringLiteral("one of ") + items.join(QLatin1String(", "));
+            items.append(QStringLiteral("%1 (%2)").arg(it.key()).arg(catalogText(it.value())));
+        return Tr::tr("one of %1").arg(items.join(QLatin1String(", ")));
     }
     case ValueKind::Action:
-        return QStringLiteral("no value (the command carries %1)")
-            .arg(QString::fromLatin1(s.fixedData));
+        return Tr::tr("no value (the command carries %1)").arg(QString::fromLatin1(s.fixedData));
     case ValueKind::Hex:
     case ValueKind::Text:
-        return QStringLiteral("nothing: it is read-only");
+        return Tr::tr("nothing: it is read-only");
     }
     return {};
 }
@@ -62,13 +68,13 @@ QString validate(const ResolvedCommand &cmd, qint64 value) {
     const CommandSpec &s = *cmd.spec;
     const QString code = QString::fromLatin1(cmd.code);
     if (cmd.direction != Direction::Write || !s.writable)
-        return QStringLiteral("%1 cannot be written").arg(code);
+        return Tr::tr("%1 cannot be written").arg(code);
     switch (s.kind) {
     case ValueKind::Action:
         return {};
     case ValueKind::Hex:
     case ValueKind::Text:
-        return QStringLiteral("%1 cannot be written").arg(code);
+        return Tr::tr("%1 cannot be written").arg(code);
     case ValueKind::Enum:
     case ValueKind::Flags:
         if (cmd.values.contains(int(value)) && value == qint64(int(value)))
@@ -82,8 +88,8 @@ QString validate(const ResolvedCommand &cmd, qint64 value) {
             return {};
         break;
     }
-    return QStringLiteral("%1 refused for %2 (%3): allowed is %4")
-        .arg(formatNumber(cmd, value), code, s.name, allowedText(cmd));
+    return Tr::tr("%1 refused for %2 (%3): allowed is %4")
+        .arg(formatNumber(cmd, value), code, catalogText(s.name), allowedText(cmd));
 }
 
 std::optional<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value, QString *error) {
@@ -142,6 +148,17 @@ static std::optional<qint64> parseDelayText(const QString &t) {
     return centis;
 }
 
+std::optional<qint64> labelled(const QMap<int, QString> &labels, const QString &text) {
+    for (auto it = labels.begin(); it != labels.end(); ++it) {
+        if (it.value().isEmpty())
+            continue;
+        if (text.compare(it.value(), Qt::CaseInsensitive) == 0 ||
+            text.compare(catalogText(it.value()), Qt::CaseInsensitive) == 0)
+            return it.key();
+    }
+    return std::nullopt;
+}
+
 std::optional<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text,
                                      QString *error) {
     const CommandSpec &s = *cmd.spec;
@@ -153,60 +170,67 @@ std::optional<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &
     };
     if (s.kind == ValueKind::Action)
         return 0;
-    for (auto it = s.special.begin(); it != s.special.end(); ++it)
-        if (t.compare(it.value(), Qt::CaseInsensitive) == 0)
-            return it.key();
-    for (auto it = cmd.values.begin(); it != cmd.values.end(); ++it)
-        if (!it.value().isEmpty() && t.compare(it.value(), Qt::CaseInsensitive) == 0)
-            return it.key();
+    if (auto special = labelled(s.special, t))
+        return special;
+    if (auto choice = labelled(cmd.values, t))
+        return choice;
     if (s.kind == ValueKind::Delay) {
         if (auto n = parseNumber(t.toLatin1()); n && s.special.contains(*n))
             return *n;
         if (auto d = parseDelayText(t))
             return *d;
-        return fail(QStringLiteral("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(t));
+        return fail(Tr::tr("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(t));
     }
     bool ok = false;
     const qint64 v = t.toLongLong(&ok);
     if (!ok)
-        return fail(QStringLiteral("'%1' is not a whole number; %2 takes %3")
+        return fail(Tr::tr("'%1' is not a whole number; %2 takes %3")
                         .arg(t, QString::fromLatin1(cmd.code), allowedText(cmd)));
     return v;
 }
 
-QStringList flagLabels(const QList<DigitField> &digits, qint64 value) {
+QStringList flagLabels(const QList<DigitField> &digits, qint64 value, Wording wording) {
     QStringList labels;
     for (const DigitField &d : digits) {
         qint64 div = 1;
         for (int i = 0; i < d.digit; ++i)
             div *= 10;
         const int digit = int((value / div) % 10);
-        const QString label =
-            d.values.value(digit, QStringLiteral("%1 %2?").arg(d.name).arg(digit));
+        // A digit the catalog does not know is shown by its field's name: "motor 7?".
+        const auto it = d.values.constFind(digit);
+        const QString label = it == d.values.constEnd()
+                                  ? QStringLiteral("%1 %2?").arg(d.name).arg(digit)
+                                  : catalogText(it.value(), wording);
         if (!label.isEmpty())
             labels.append(label);
     }
     return labels;
 }
 
-QString describeValue(const ResolvedCommand &cmd, const Value &value) {
+QString describeValue(const ResolvedCommand &cmd, const Value &value, Wording wording) {
     const CommandSpec &s = *cmd.spec;
     if (value.isText)
         return value.text;
     if (s.special.contains(int(value.number)))
-        return s.special.value(int(value.number));
+        return catalogText(s.special.value(int(value.number)), wording);
     switch (s.kind) {
     case ValueKind::Delay:
         return QString::number(value.number / 100.0, 'f', 2);
-    case ValueKind::Enum:
+    case ValueKind::Enum: {
         if (s.table == QLatin1String("$portErrors"))
-            return Catalog::builtin().portErrorText(cmd.family, int(value.number));
-        return cmd.values.value(int(value.number),
-                                QStringLiteral("unknown (%1)").arg(value.number));
+            return Catalog::builtin().portErrorText(cmd.family, int(value.number), wording);
+        const auto it = cmd.values.constFind(int(value.number));
+        if (it != cmd.values.constEnd())
+            return catalogText(it.value(), wording);
+        return catalogText(QString::fromUtf8(QT_TRANSLATE_NOOP("Catalog", "unknown (%1)")), wording)
+            .arg(value.number);
+    }
     case ValueKind::Flags: {
         const QStringList labels =
-            flagLabels(Catalog::builtin().digits(s.digitsTable), value.number);
-        return labels.isEmpty() ? QStringLiteral("none") : labels.join(QLatin1String(", "));
+            flagLabels(Catalog::builtin().digits(s.digitsTable), value.number, wording);
+        return labels.isEmpty()
+                   ? catalogText(QString::fromUtf8(QT_TRANSLATE_NOOP("Catalog", "none")), wording)
+                   : labels.join(QLatin1String(", "));
     }
     default:
         return QString::number(value.number);

@@ -69,7 +69,7 @@ void checkWrite(const ResolvedCommand &cmd, qint64 value) {
         return;
     const auto back = decodeAnswer(*read, *field);
     FUZZ_CHECK(back && !back->isText && back->number == value);
-    (void)describeValue(*read, *back);
+    (void)describeValue(*read, *back, Wording::Translated);
 }
 
 void checkUserValue(const ResolvedCommand &cmd, const QString &text) {
@@ -118,7 +118,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     case 5: {
         const ResolvedCommand &cmd = pick(commands().reads, data[1], data[2]);
         if (const auto v = decodeAnswer(cmd, field))
-            (void)describeValue(cmd, *v);
+            (void)describeValue(cmd, *v, Wording::Catalog);
         break;
     }
     default: {

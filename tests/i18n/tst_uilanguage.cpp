@@ -3,6 +3,8 @@
 // has no such locale installed); tipscope follows the ui/language preference or the system.
 #include "i18n/translations.h"
 #include "mainwindow.h"
+#include "protocol/catalog.h"
+#include "protocol/catalogtext.h"
 #include "ptyfixtures.h"
 
 #include <QDir>
@@ -72,6 +74,7 @@ private Q_SLOTS:
     void guiHelpFollowsThePreference_data();
     void guiHelpFollowsThePreference();
     void mainWindowShowsGermanWithQtsOwnTexts();
+    void catalogTextsAndLinkErrorsAreShownInGermanButDataStaysEnglish();
 };
 
 void TestUiLanguage::initTestCase() {
@@ -194,6 +197,36 @@ void TestUiLanguage::mainWindowShowsGermanWithQtsOwnTexts() {
         QSKIP(
             qPrintable(qtCatalogue + QStringLiteral(" is not installed (qt6-translations-l10n)")));
     QCOMPARE(cancel, QStringLiteral("Abbrechen"));
+}
+
+// The catalog's words (names, descriptions, value labels, error tables) and the link's messages
+// reach people in their language; what scripts read (Wording::Catalog) stays the catalog's English.
+void TestUiLanguage::catalogTextsAndLinkErrorsAreShownInGermanButDataStaysEnglish() {
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), QStringLiteral("de")),
+             QStringLiteral("de"));
+    const protocol::Catalog &c = protocol::Catalog::builtin();
+    const QString selected = protocol::catalogText(QStringLiteral("Selected temperature"));
+    const QString nak = c.nakText(5, protocol::Wording::Translated);
+    const QString nakData = c.nakText(5, protocol::Wording::Catalog);
+    const QString noTool = c.portErrorText(QStringLiteral("DME"), 4, protocol::Wording::Translated);
+    const QString notConnected = QCoreApplication::translate("tipscope::link::RequestQueue",
+                                                             "not sent: the line is not connected");
+    qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
+
+    QCOMPARE(selected, translated(QStringLiteral("de"), "Catalog", "Selected temperature"));
+    QVERIFY2(!selected.isEmpty() && selected != QLatin1String("Selected temperature"),
+             qPrintable(selected));
+    QVERIFY2(nak.contains(QLatin1String("Robot")) &&
+                 !nak.startsWith(QLatin1String("Robot mode is")),
+             qPrintable(nak));
+    QCOMPARE(nakData, QStringLiteral("Robot mode is off: switch \"Robot mode\" on in the station "
+                                     "menu"));
+    QVERIFY2(noTool != QLatin1String("No tool"), qPrintable(noTool));
+    QVERIFY2(notConnected != QLatin1String("not sent: the line is not connected"),
+             qPrintable(notConnected));
+    // Back in English, the same call gives the catalog's own words.
+    QCOMPARE(protocol::catalogText(QStringLiteral("Selected temperature")),
+             QStringLiteral("Selected temperature"));
 }
 
 QTEST_MAIN(TestUiLanguage)

@@ -243,15 +243,16 @@ void TestCatalog::familyIsFoundFromTheModelName() {
 
 void TestCatalog::errorTablesExplainCodesIncludingTheMisprintedOne() {
     const Catalog &cat = Catalog::builtin();
-    QVERIFY(cat.nakText(5).contains("Robot mode"));
-    QCOMPARE(cat.nakText(9), cat.nakText(99999));
-    QCOMPARE(cat.portErrorText("DME", 80000), cat.portErrorText("DME", 8));
-    QVERIFY(cat.portErrorText("DDR", 8).contains("MOS"));
-    QVERIFY(cat.stationErrorText("UCR", 7).contains("Warning"));
-    QVERIFY(cat.stationErrorText("DDR", 7).contains("Unknown"));
+    const Wording w = Wording::Catalog;
+    QVERIFY(cat.nakText(5, w).contains("Robot mode"));
+    QCOMPARE(cat.nakText(9, w), cat.nakText(99999, w));
+    QCOMPARE(cat.portErrorText("DME", 80000, w), cat.portErrorText("DME", 8, w));
+    QVERIFY(cat.portErrorText("DDR", 8, w).contains("MOS"));
+    QVERIFY(cat.stationErrorText("UCR", 7, w).contains("Warning"));
+    QVERIFY(cat.stationErrorText("DDR", 7, w).contains("Unknown"));
     QCOMPARE(cat.severity("portErrorsUcrGroup", 9), QStringLiteral("warning"));
     QCOMPARE(cat.severity("portErrorsUcrGroup", 1), QStringLiteral("error"));
-    QVERIFY(cat.feederErrorText(3).contains("3"));
+    QVERIFY(cat.feederErrorText(3, w).contains("3"));
 }
 
 void TestCatalog::validationSaysWhatIsAllowed() {

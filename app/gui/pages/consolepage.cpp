@@ -3,6 +3,7 @@
 #include "framebuilder.h"
 
 #include "link/line.h"
+#include "protocol/catalogtext.h"
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 
@@ -244,7 +245,9 @@ void ConsolePage::buildTable() {
     width(ConsoleModel::Device, fixed, QStringLiteral("00→00"));
     width(ConsoleModel::Header, text, QStringLiteral("Answer"));
     width(ConsoleModel::Command, fixed, QStringLiteral("WWW"));
-    width(ConsoleModel::Name, text, QStringLiteral("Time to sleep/hibernation"));
+    // One of the longest command names, in the interface language.
+    width(ConsoleModel::Name, text,
+          protocol::catalogText(QStringLiteral("Time to sleep/hibernation")));
     width(ConsoleModel::Data, fixed, QStringLiteral("DME-2C0000"));
     width(ConsoleModel::Bcc, text, tr("bad"));
     // An addressed frame with a 5-character data field is 16 bytes; model names are a bit longer.

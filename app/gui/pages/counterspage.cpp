@@ -52,7 +52,8 @@ QString csvField(const QString &text) {
     return QLatin1Char('"') + quoted + QLatin1Char('"');
 }
 
-// A value as a spreadsheet parses it: display units, '.' decimal point, empty when unknown.
+// A value as a spreadsheet parses it: display units, '.' decimal point, empty when unknown. The
+// counter keeps the catalog's English name, like the header, whatever the interface language.
 QString csvLine(const QString &device, int port, const Parameter &p) {
     const TemperatureUnit unit = p.device().temperatureUnit();
     const DisplayFormat f = displayFormat(p.spec(), unit);
@@ -214,8 +215,8 @@ void CountersPage::addStation(StationModel *station) {
     table->setRowCount(int(rows.size()));
     table->setColumnCount(int(ports.size()));
     for (int r = 0; r < rows.size(); ++r) {
-        auto *header = new QTableWidgetItem(rows[r]->meta().name);
-        header->setToolTip(rows[r]->meta().description);
+        auto *header = new QTableWidgetItem(rows[r]->label());
+        header->setToolTip(rows[r]->description());
         table->setVerticalHeaderItem(r, header);
     }
     for (int c = 0; c < ports.size(); ++c) {
@@ -278,7 +279,7 @@ void CountersPage::bindCell(QTableWidget *table, int row, int column, Parameter 
     auto update = [this, item, parameter] {
         item->setText(parameter->displayText());
         QString tip =
-            tr("%1 (R-%2)").arg(parameter->meta().name, QString::fromLatin1(parameter->code()));
+            tr("%1 (R-%2)").arg(parameter->label(), QString::fromLatin1(parameter->code()));
         if (parameter->state() == Parameter::State::Failed)
             tip += QLatin1Char('\n') + tr("Last read failed: %1").arg(parameter->failure());
         else if (parameter->lastUpdate().isValid())
@@ -314,7 +315,7 @@ void CountersPage::resetPartialOf(FeederModel *feeder, const QByteArray &code) {
         return;
     }
     QMessageBox box(QMessageBox::Warning, tr("Reset partial counter"),
-                    tr("Reset “%1” on %2?").arg(counter->meta().name, feeder->displayName()),
+                    tr("Reset “%1” on %2?").arg(counter->label(), feeder->displayName()),
                     QMessageBox::Cancel, this);
     box.setInformativeText(tr("It now reads %1.").arg(counter->displayText()) + QLatin1Char(' ') +
                            action->danger() + QLatin1Char(' ') +
@@ -327,7 +328,7 @@ void CountersPage::resetPartialOf(FeederModel *feeder, const QByteArray &code) {
         showStatus(tr("%1 Nothing was reset.").arg(now()));
         return;
     }
-    const QString name = counter->meta().name;
+    const QString name = counter->label();
     const QString why = target->resetPartialCounter(code, Confirmation::Confirmed);
     if (!why.isEmpty()) {
         showStatus(tr("%1 Not reset: %2").arg(now(), why));

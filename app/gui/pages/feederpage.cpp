@@ -110,7 +110,7 @@ void FeederPage::rebuild() {
     int row = 0;
     for (Parameter *p : f->counters()) {
         auto *value = new ParameterEditor(p, counters);
-        grid->addWidget(new QLabel(p->meta().name, counters), row, 0);
+        grid->addWidget(new QLabel(p->label(), counters), row, 0);
         grid->addWidget(value, row, 1);
         if (Action *a = f->action(p->code())) {
             auto *b = new QPushButton(tr("Reset"), counters);

@@ -58,6 +58,11 @@ QString writeProblem(const ResolvedCommand &cmd, const QString &data) {
     return {};
 }
 
+// "Name: description", as the catalog says it in the user interface language.
+QString describe(const CommandSpec &spec) {
+    return QStringLiteral("%1: %2").arg(catalogText(spec.name), catalogText(spec.description));
+}
+
 void addCatalogAdvice(const FrameInput &in, const QString &code, FrameDraft &draft) {
     auto warn = [&draft](const QString &text) {
         draft.hint = text;
@@ -81,17 +86,17 @@ void addCatalogAdvice(const FrameInput &in, const QString &code, FrameDraft &dra
     if (!write) {
         if (!in.data.isEmpty())
             return warn(Tr::tr("Reads carry no data field; the device may refuse this frame."));
-        draft.hint = QStringLiteral("%1: %2").arg(spec.name, spec.description);
+        draft.hint = describe(spec);
         return;
     }
     const QString problem = writeProblem(*cmd, in.data);
     if (spec.dangerous)
-        return warn(
-            Tr::tr("Dangerous: %1").arg(spec.danger.isEmpty() ? spec.description : spec.danger) +
-            (problem.isEmpty() ? QString() : QLatin1Char(' ') + problem));
+        return warn(Tr::tr("Dangerous: %1")
+                        .arg(catalogText(spec.danger.isEmpty() ? spec.description : spec.danger)) +
+                    (problem.isEmpty() ? QString() : QLatin1Char(' ') + problem));
     if (!problem.isEmpty())
         return warn(Tr::tr("Catalog check: %1").arg(problem));
-    draft.hint = QStringLiteral("%1: %2").arg(spec.name, spec.description);
+    draft.hint = describe(spec);
 }
 
 enum class Tone { Normal, Warning, Error };
@@ -307,7 +312,7 @@ void FrameBuilder::fillCommands() {
         m_command->clear();
         for (const ResolvedCommand &c : Catalog::builtin().expand(family, dir)) {
             const QString code = QString::fromLatin1(c.code);
-            m_command->addItem(code + kSeparator + c.spec->name, code);
+            m_command->addItem(code + kSeparator + catalogText(c.spec->name), code);
         }
         // Keep what the person chose; with nothing chosen yet, start from the model-name read
         // every device answers.

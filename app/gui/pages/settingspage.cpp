@@ -106,7 +106,7 @@ void SettingsPage::addGroup(const QString &title, const QList<Parameter *> &para
         connect(p, &Parameter::stateChanged, this, &SettingsPage::updateButtons);
         auto *label = new QLabel(ParameterEditor::labelFor(*p), box);
         label->setBuddy(editor);
-        label->setToolTip(p->meta().description);
+        label->setToolTip(p->description());
         form->addRow(label, editor);
     }
     m_groups->addWidget(box);
@@ -141,7 +141,9 @@ void SettingsPage::rebuild() {
             const auto tableName = QStringLiteral("$toolTable");
             const auto tools = protocol::Catalog::builtin().table(tableName, station->family());
             for (int tool : port->toolOrder()) {
-                QString title = tr("Tool %1, port %2").arg(tools.value(tool)).arg(portNumber);
+                QString title = tr("Tool %1, port %2")
+                                    .arg(protocol::catalogText(tools.value(tool)))
+                                    .arg(portNumber);
                 if (port->tool() == tool)
                     title += tr(" (connected)");
                 addGroup(title, port->toolSettings(tool));

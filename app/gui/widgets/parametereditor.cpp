@@ -45,26 +45,26 @@ ParameterEditor::ParameterEditor(Parameter *parameter, QWidget *parent)
 }
 
 QString ParameterEditor::labelFor(const Parameter &p) {
-    return p.meta().name;
+    return p.label();
 }
 
 void ParameterEditor::build() {
     auto *row = new QHBoxLayout(this);
     row->setContentsMargins(0, 0, 0, 0);
     const Parameter &p = *m_parameter;
-    const QString tip = p.meta().description + QStringLiteral("\n") +
+    const QString tip = p.description() + QStringLiteral("\n") +
                         tr("Allowed: %1").arg(p.allowedText()) + QStringLiteral("\n") +
                         tr("Command: %1").arg(QString::fromLatin1(p.code()));
     setToolTip(tip);
     if (!p.isWritable()) {
         m_value = new QLabel(this);
         m_value->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        m_value->setAccessibleName(p.meta().name);
+        m_value->setAccessibleName(p.label());
         row->addWidget(m_value, 1);
     } else if (isNumeric(p)) {
         const DisplayFormat f = displayFormat(p.spec(), p.device().temperatureUnit());
         m_spin = new QDoubleSpinBox(this);
-        m_spin->setAccessibleName(p.meta().name);
+        m_spin->setAccessibleName(p.label());
         m_spin->setDecimals(f.decimals);
         m_spin->setSuffix(f.unit.isEmpty() ? QString() : QLatin1Char(' ') + f.unit);
         m_spin->setSingleStep(p.meta().step * f.scale);
@@ -75,16 +75,17 @@ void ParameterEditor::build() {
         connect(m_spin, &QDoubleSpinBox::valueChanged, this, &ParameterEditor::commitSpin);
         row->addWidget(m_spin, 1);
         if (p.meta().special.contains(kDisabledKey)) {
-            m_disabled = new QCheckBox(p.meta().special.value(kDisabledKey), this);
-            m_disabled->setAccessibleName(tr("%1 disabled").arg(p.meta().name));
+            m_disabled =
+                new QCheckBox(protocol::catalogText(p.meta().special.value(kDisabledKey)), this);
+            m_disabled->setAccessibleName(tr("%1 disabled").arg(p.label()));
             connect(m_disabled, &QCheckBox::toggled, this, &ParameterEditor::commitSpin);
             row->addWidget(m_disabled);
         }
     } else {
         m_combo = new QComboBox(this);
-        m_combo->setAccessibleName(p.meta().name);
+        m_combo->setAccessibleName(p.label());
         for (auto it = p.spec().values.begin(); it != p.spec().values.end(); ++it)
-            m_combo->addItem(it.value(), it.key());
+            m_combo->addItem(protocol::catalogText(it.value()), it.key());
         connect(m_combo, &QComboBox::activated, this, &ParameterEditor::commitCombo);
         row->addWidget(m_combo, 1);
     }

@@ -2,6 +2,7 @@
 
 #include "devicepath.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -157,7 +158,8 @@ QString SerialPortEntry::latencyAdvice() const {
         return {};
     // The FTDI chip holds received bytes until its buffer fills or the latency timer expires, so
     // each short answer waits the full timer: the station is polled far slower than it could be.
-    return QStringLiteral(
+    return QCoreApplication::translate(
+               "SerialPortList",
                "%1 is an FTDI adapter with a %2 ms latency timer (the kernel default is 16 ms), "
                "which holds back every short answer and throttles request/answer traffic.\n"
                "Set it to 1 ms now with:\n"
