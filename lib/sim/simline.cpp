@@ -93,6 +93,13 @@ bool SimLine::chance(double share) {
 }
 
 void SimLine::receive(const QByteArray &bytes) {
+    // A request catches the devices up when a tick is due and restarts the timer, so a line
+    // that is polled steadily never wakes the process for the clock.
+    if (m_tickTimer.isActive() &&
+        m_clock.nsecsElapsed() - m_lastTickNs >= m_tickTimer.interval() * kNsPerMs) {
+        tick();
+        m_tickTimer.start();
+    }
     m_stats.bytesReceived += bytes.size();
     const qint64 now = m_clock.nsecsElapsed();
     // On a real wire the chunk starts arriving when it was written (about now) and takes its

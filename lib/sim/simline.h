@@ -72,7 +72,8 @@ public:
     void setChunkMs(int ms) { m_chunkNs = qMax(0, ms) * 1'000'000LL; }
     void setClockRunning(bool running);
     // How often the running clock moves the devices' simulated time (default 20 ms). The
-    // physics steps by the time elapsed, so a coarser tick only makes changes show in steps.
+    // physics steps by the time elapsed, so a coarser tick only makes changes show in steps. A
+    // request arriving when a tick is due takes its place.
     void setTickMs(int ms) { m_tickTimer.setInterval(qMax(1, ms)); }
     void advance(int ms);
     [[nodiscard]] const SimLineStats &stats() const { return m_stats; }

@@ -26,6 +26,8 @@ SimStation::SimStation(const QString &family, int address)
                                                   : family + QStringLiteral("-2C"));
     setSoftwareVersion(QStringLiteral("9996780"));
     const FamilyInfo &f = this->family();
+    // The family decides once whether alarms wait a delay; each step of the physics asked.
+    m_hasAlarmDelays = m_catalog.resolve(f.name, "HD1", Direction::Read).has_value();
     for (int i = 0; i < f.ports; ++i) {
         SimPort p;
         p.tool = f.tools.value(i % f.tools.size(), 0);
@@ -148,10 +150,8 @@ void SimStation::updateSleep(SimPort &p, int n, double) {
 
 void SimStation::updateAlarms(SimPort &p, int n, double dt) {
     const QByteArray port = QByteArray::number(n);
-    const bool hasDelays =
-        m_catalog.resolve(family().name, "HD" + port, Direction::Read).has_value();
     auto delayOf = [&](const QByteArray &code) -> double {
-        if (!hasDelays)
+        if (!m_hasAlarmDelays)
             return 0;
         const qint64 v = settingOr(code + port, kDisabledDelay);
         return v == kDisabledDelay ? -1 : v / 100.0;

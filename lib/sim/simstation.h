@@ -68,6 +68,7 @@ private:
 
     QList<SimPort> m_ports;
     int m_stationError = 0;
+    bool m_hasAlarmDelays = false; // the family has HDx/LDx
     bool m_fusePresent = true;
     bool m_fuseIgnored = false;
     double m_noisePhase = 0;

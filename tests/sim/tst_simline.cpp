@@ -75,6 +75,7 @@ private Q_SLOTS:
     void ddrAnswersOnlyWithoutAddresses();
     void ddrAlarmFlagsClearWhenRead();
     void tipFollowsTheSetpointWithinPowerBudget();
+    void aRequestCatchesTheRunningClockUpWithoutItsTimer();
     void standLeadsToSleepAfterTheDelayAndCounts();
     void coolingAndSuctionAreSeparateDigitsOfStatus();
     void feederFeedsTheSetLengthInDiscontinuousMode();
@@ -247,6 +248,21 @@ void TestSimLine::tipFollowsTheSetpointWithinPowerBudget() {
     w.ask(wr("ST1", "00200"));
     line->advance(30000);
     QVERIFY(qAbs(st->port(1).tip - 200) < 2);
+}
+
+// A polled line moves time with its requests, so the clock's timer need not wake the process;
+// here the event loop never runs, so only the request can have moved the tip.
+void TestSimLine::aRequestCatchesTheRunningClockUpWithoutItsTimer() {
+    auto line = SimLine::demo();
+    line->setTickMs(50);
+    line->setClockRunning(true);
+    Wire w(*line);
+    QElapsedTimer wall;
+    wall.start();
+    while (wall.elapsed() < 300) {
+    }
+    QVERIFY(w.ask(rd("TT1"))->data.toInt() > int(SimStation::kAmbient) + 20);
+    QVERIFY(line->station()->port(1).power > 0);
 }
 
 void TestSimLine::standLeadsToSleepAfterTheDelayAndCounts() {
