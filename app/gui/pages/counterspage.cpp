@@ -1,6 +1,7 @@
 #include "counterspage.h"
 
 #include "model/displayunits.h"
+#include "widgets/deferredrefresh.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -146,7 +147,7 @@ void CountersPage::refresh() {
 void CountersPage::noteReading(const QDateTime &when) {
     m_lastRead = qMax(m_lastRead, when);
     m_waiting = false;
-    updateReadAt();
+    m_deferred->requestPart(kReadAtPart);
 }
 
 void CountersPage::updateReadAt() {
@@ -165,6 +166,17 @@ void CountersPage::rebuild() {
     // The old devices are gone (or going): drop every connection to them before the cells.
     delete m_bindings;
     m_bindings = new QObject(this);
+    m_cellUpdates.clear();
+    // Cells of a hidden page catch up when it is shown; part kReadAtPart is the reading time.
+    m_deferred = new DeferredRefresh(
+        *this,
+        [this](int part) {
+            if (part == kReadAtPart)
+                updateReadAt();
+            else if (part >= 0 && part < m_cellUpdates.size())
+                m_cellUpdates.at(part)();
+        },
+        m_bindings);
     qDeleteAll(m_boxes);
     m_boxes.clear();
     m_resets.clear();
@@ -291,11 +303,13 @@ void CountersPage::bindCell(QTableWidget *table, int row, int column, Parameter 
         item->setToolTip(tip);
     };
     update();
-    connect(parameter, &Parameter::updated, m_bindings, update);
+    const int part = int(m_cellUpdates.size());
+    m_cellUpdates.append(update);
+    // Every reading, changed or not, comes with updated(): the cell shows when it was read.
+    for (auto signal : {&Parameter::updated, &Parameter::stateChanged})
+        connect(parameter, signal, m_deferred, [this, part] { m_deferred->requestPart(part); });
     connect(parameter, &Parameter::updated, m_bindings,
             [this, parameter] { noteReading(parameter->lastUpdate()); });
-    connect(parameter, &Parameter::valueChanged, m_bindings, update);
-    connect(parameter, &Parameter::stateChanged, m_bindings, update);
 }
 
 void CountersPage::resetPartial(const QByteArray &code) {

@@ -19,6 +19,7 @@
 #include "page.h"
 
 #include <QDateTime>
+#include <functional>
 
 class QGroupBox;
 class QLabel;
@@ -27,6 +28,8 @@ class QTableWidget;
 class QVBoxLayout;
 
 namespace tipscope::gui {
+
+class DeferredRefresh;
 
 class CountersPage : public Page {
     Q_OBJECT
@@ -79,6 +82,9 @@ private:
     // Parent of every connection to a device's parameters; replaced on each rebuild so that no
     // connection outlives the table cells it writes to.
     QObject *m_bindings = nullptr;
+    static constexpr int kReadAtPart = -1;
+    QList<std::function<void()>> m_cellUpdates; // a DeferredRefresh part each
+    DeferredRefresh *m_deferred = nullptr;      // in m_bindings
 };
 
 } // namespace tipscope::gui

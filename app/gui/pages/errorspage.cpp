@@ -1,6 +1,7 @@
 #include "errorspage.h"
 
 #include "protocol/catalog.h"
+#include "widgets/deferredrefresh.h"
 
 #include <QAction>
 #include <QApplication>
@@ -490,6 +491,9 @@ void ErrorsPage::rebuildState() {
     // The old devices are gone (or going): drop every connection to them before the rows.
     delete m_bindings;
     m_bindings = new QObject(this);
+    // Status values change with every poll; rows of a hidden page catch up when it is shown.
+    m_stateRefresh = new DeferredRefresh(
+        *m_state, [this](int row) { updateStateRow(row); }, m_bindings);
     m_rows.clear();
     m_state->setRowCount(0);
     for (DeviceModel *device : m_session.devices()) {
@@ -527,8 +531,8 @@ void ErrorsPage::addStateRow(DeviceModel *device, int port) {
     for (Parameter *p : std::as_const(watched)) {
         if (!p)
             continue;
-        connect(p, &Parameter::valueChanged, m_bindings, [this, row] { updateStateRow(row); });
-        connect(p, &Parameter::stateChanged, m_bindings, [this, row] { updateStateRow(row); });
+        for (auto signal : {&Parameter::valueChanged, &Parameter::stateChanged})
+            connect(p, signal, m_stateRefresh, [this, row] { m_stateRefresh->requestPart(row); });
     }
     updateStateRow(row);
 }

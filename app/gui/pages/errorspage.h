@@ -31,6 +31,8 @@ class QTableWidget;
 
 namespace tipscope::gui {
 
+class DeferredRefresh;
+
 class ErrorsPage : public Page {
     Q_OBJECT
 public:
@@ -90,6 +92,7 @@ private:
     // Parent of every connection to a device's parameters; replaced on each rebuild so that no
     // connection outlives the rows it writes to.
     QObject *m_bindings = nullptr;
+    DeferredRefresh *m_stateRefresh = nullptr; // one part per row, in m_bindings
 };
 
 } // namespace tipscope::gui

@@ -1,6 +1,7 @@
 #include "settingspage.h"
 
 #include "dialogs/profiledialog.h"
+#include "widgets/deferredrefresh.h"
 #include "widgets/parametereditor.h"
 
 #include "model/profile.h"
@@ -103,7 +104,8 @@ void SettingsPage::addGroup(const QString &title, const QList<Parameter *> &para
     for (Parameter *p : params) {
         auto *editor = new ParameterEditor(p, box);
         m_editors.append(editor);
-        connect(p, &Parameter::stateChanged, this, &SettingsPage::updateButtons);
+        // In the form's refresh, so the connections end with the form on the next rebuild.
+        connect(p, &Parameter::stateChanged, m_buttonsRefresh, &DeferredRefresh::request);
         auto *label = new QLabel(ParameterEditor::labelFor(*p), box);
         label->setBuddy(editor);
         label->setToolTip(p->description());
@@ -117,6 +119,8 @@ void SettingsPage::rebuild() {
     m_form = new QWidget;
     m_groups = new QVBoxLayout(m_form);
     m_scroll->setWidget(m_form); // deletes the previous form and its editors
+    m_buttonsRefresh = new DeferredRefresh(
+        *this, [this] { updateButtons(); }, m_form);
     m_portBox->clear();
     m_actions->setMenu(nullptr);
     auto *station = qobject_cast<StationModel *>(m_device.data());

@@ -14,6 +14,7 @@ class QToolButton;
 
 namespace tipscope::gui {
 
+class DeferredRefresh;
 class ParameterEditor;
 
 class SettingsPage : public Page {
@@ -52,6 +53,7 @@ private:
     QScrollArea *m_scroll;
     QWidget *m_form = nullptr;
     QVBoxLayout *m_groups = nullptr;
+    DeferredRefresh *m_buttonsRefresh = nullptr; // in m_form
     QList<ParameterEditor *> m_editors;
 };
 

@@ -18,6 +18,12 @@ using namespace tipscope::protocol;
 namespace {
 constexpr int kDisabledKey = 99999;
 
+// Setting a style sheet restyles the widget even when the sheet is the same one.
+void setStyleSheetIfChanged(QWidget *w, const QString &sheet) {
+    if (w->styleSheet() != sheet)
+        w->setStyleSheet(sheet);
+}
+
 bool isNumeric(const Parameter &p) {
     return p.meta().kind == ValueKind::Number || p.meta().kind == ValueKind::Delay;
 }
@@ -27,10 +33,10 @@ ParameterEditor::ParameterEditor(Parameter *parameter, QWidget *parent)
     : QWidget(parent)
     , m_parameter(parameter) {
     build();
-    connect(parameter, &Parameter::valueChanged, this, &ParameterEditor::refreshFromParameter);
-    connect(parameter, &Parameter::editChanged, this, &ParameterEditor::refreshFromParameter);
-    // Every poll takes a value through reading and back to in sync; an editor on a hidden page
-    // catches up when shown.
+    // Live values change with every poll: an editor on a hidden page catches up when shown.
+    auto *valueRefresh = new DeferredRefresh(*this, [this] { refreshFromParameter(); });
+    connect(parameter, &Parameter::valueChanged, valueRefresh, &DeferredRefresh::request);
+    connect(parameter, &Parameter::editChanged, valueRefresh, &DeferredRefresh::request);
     auto *stateRefresh = new DeferredRefresh(*this, [this] { refreshState(); });
     connect(parameter, &Parameter::stateChanged, stateRefresh, &DeferredRefresh::request);
     connect(&parameter->device(), &DeviceModel::temperatureUnitChanged, this, [this] {
@@ -151,16 +157,16 @@ void ParameterEditor::refreshState() {
         style = QStringLiteral("color: #c01c28; font-weight: bold;");
     }
     m_state->setText(text);
-    m_state->setStyleSheet(style);
+    setStyleSheetIfChanged(m_state, style);
     m_state->setToolTip(!m_refusal.isEmpty() ? m_refusal : p.failure());
     const bool edited = p.state() == Parameter::State::Edited;
     const QString editorStyle = !m_refusal.isEmpty() ? QStringLiteral("background: #fbe3e4;")
                                 : edited             ? QStringLiteral("background: #fff4c2;")
                                                      : QString();
     if (m_spin)
-        m_spin->setStyleSheet(editorStyle);
+        setStyleSheetIfChanged(m_spin, editorStyle);
     if (m_combo)
-        m_combo->setStyleSheet(editorStyle);
+        setStyleSheetIfChanged(m_combo, editorStyle);
 }
 
 void ParameterEditor::commitSpin() {
