@@ -60,6 +60,9 @@ public:
     void clear();
     // Shows the entries that arrived since the last batch now.
     void flush();
+    // How long new entries wait to reach the table (kBatchMs unless set). Nothing is lost to a
+    // longer wait; a console nobody looks at takes them in fewer, larger batches.
+    void setBatchMs(int ms) { m_batch.setInterval(qMax(1, ms)); }
 
     [[nodiscard]] int rowCount(const QModelIndex &parent = {}) const override;
     [[nodiscard]] int columnCount(const QModelIndex &parent = {}) const override;

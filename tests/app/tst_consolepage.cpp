@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
@@ -39,6 +40,7 @@ private Q_SLOTS:
     void builtReadOfModelNameShowsTheAnswerInTheTable();
     void rawHexWithABadDigitShowsTheErrorAndSendsNothing();
     void pauseHoldsRowsAndResumeShowsThem();
+    void aHiddenConsoleTakesRowsInLargerBatchesAndCatchesUpWhenShown();
     void addressFilterHidesOtherDevicesRows();
     void monitorOnlyBlocksWritesAndRawBytesButNotReads();
     void saveWritesEveryRowToTheFile();
@@ -240,6 +242,27 @@ void TestConsolePage::pauseHoldsRowsAndResumeShowsThem() {
     pause->trigger();
     QVERIFY(!console.isPaused());
     QVERIFY(console.rowCount() >= rowsAtPause + 3); // the held rows, at once
+}
+
+void TestConsolePage::aHiddenConsoleTakesRowsInLargerBatchesAndCatchesUpWhenShown() {
+    ConsoleModel &console = m_page->consoleModel();
+    m_page->setActive(false);
+    console.flush();
+    qint64 sentAtLastBatch = queue().stats().sent;
+    QSignalSpy batches(&console, &QAbstractItemModel::rowsInserted);
+    connect(&console, &QAbstractItemModel::rowsInserted, this,
+            [&] { sentAtLastBatch = queue().stats().sent; });
+    const qint64 sentAtHide = queue().stats().sent;
+    QTest::qWait(2500);
+    QVERIFY(queue().stats().sent >= sentAtHide + 10); // the line stayed busy
+    // A shown console takes a batch every 100 ms; hidden, at most one a second (a slow machine
+    // only makes them fewer).
+    QVERIFY2(batches.count() <= 3, qPrintable(QString::number(batches.count())));
+    // A request went out since the last batch, so a row waits; showing the page brings it.
+    QTRY_VERIFY_WITH_TIMEOUT(queue().stats().sent > sentAtLastBatch, kTrafficMs);
+    const int rowsBeforeShow = console.rowCount();
+    m_page->setActive(true);
+    QVERIFY(console.rowCount() > rowsBeforeShow);
 }
 
 void TestConsolePage::addressFilterHidesOtherDevicesRows() {

@@ -29,6 +29,10 @@ namespace tipscope::gui {
 
 using model::ConsoleModel;
 
+namespace {
+constexpr int kHiddenBatchMs = 1000;
+} // namespace
+
 ConsoleFilterProxy::ConsoleFilterProxy(ConsoleModel *source, QObject *parent)
     : QSortFilterProxyModel(parent)
     , m_console(source) {
@@ -328,6 +332,13 @@ void ConsolePage::applyFilter() {
         m_address->lineEdit()->setPalette(palette);
     m_proxy->setFilter(filter);
     updateCount();
+}
+
+void ConsolePage::setActive(bool active) {
+    Page::setActive(active);
+    m_model->setBatchMs(active ? ConsoleModel::kBatchMs : kHiddenBatchMs);
+    if (active)
+        m_model->flush();
 }
 
 void ConsolePage::setPaused(bool paused) {

@@ -64,6 +64,8 @@ public:
     explicit ConsolePage(model::Session &session, QWidget *parent = nullptr);
 
     [[nodiscard]] QString title() const override { return tr("Console"); }
+    // Hidden, the table takes new frames once a second; shown, it catches up at once.
+    void setActive(bool active) override;
 
     // Writes every row (not only the filtered ones) as tab-separated text; false with `error`.
     bool saveTo(const QString &path, QString *error);
