@@ -8,6 +8,7 @@
 #include <QPolygonF>
 #include <QRubberBand>
 #include <QToolTip>
+#include <QVarLengthArray>
 #include <QWheelEvent>
 #include <cmath>
 
@@ -55,6 +56,7 @@ void ChartPlotView::drawForeground(QPainter *painter, const QRectF &rect) {
     if (plot.isEmpty())
         return;
     painter->save();
+    drawValueGrid(*painter, plot);
     drawTimeAxis(*painter, plot);
     painter->setClipRect(plot);
     drawTraces(*painter, plot);
@@ -63,28 +65,61 @@ void ChartPlotView::drawForeground(QPainter *painter, const QRectF &rect) {
     painter->restore();
 }
 
+// The left axis' grid: where Qt Charts would put it (dynamic ticks anchored at 0), in its pen.
+void ChartPlotView::drawValueGrid(QPainter &painter, const QRectF &plot) const {
+    const ChartWidgetPrivate &d = *m_owner.d;
+    const double min = d.ranges[0][0], max = d.ranges[0][1];
+    const double step = d.leftAxis->tickInterval();
+    if (!d.leftAxis->isVisible() || !(max > min) || !(step > 0) || (max - min) / step > 1000)
+        return;
+    QVarLengthArray<QLineF, 32> lines;
+    for (double v = std::ceil(min / step) * step; v <= max + step * 1e-9; v += step) {
+        const double y = std::round(d.yAt(ChartAxis::Left, v, plot));
+        lines.append(QLineF(plot.left(), y, plot.right(), y));
+    }
+    painter.setPen(d.leftAxis->gridLinePen());
+    painter.drawLines(lines.constData(), int(lines.size()));
+}
+
 // Grid lines across the plot, tick marks under it and the labels below, in the value axes' pens
 // and font so the three axes look alike.
 void ChartPlotView::drawTimeAxis(QPainter &painter, const QRectF &plot) const {
     const ChartWidgetPrivate &d = *m_owner.d;
-    const QFontMetricsF metrics(d.leftAxis->labelsFont());
-    painter.setFont(d.leftAxis->labelsFont());
+    const QFont font = d.leftAxis->labelsFont();
+    if (d.tickTexts.size() != d.tickLabels.size() || d.tickTextFont != font) {
+        d.tickTexts.clear();
+        d.tickTextFont = font;
+        for (const QString &label : d.tickLabels) {
+            QStaticText text(label);
+            text.setTextFormat(Qt::PlainText);
+            text.prepare(QTransform(), font);
+            d.tickTexts.append(text);
+        }
+    }
+    painter.setFont(font);
     const QRectF scene = sceneRect();
-    for (qsizetype i = 0; i < d.ticks.size(); ++i) {
+    QVarLengthArray<QLineF, 32> grid, marks;
+    QVarLengthArray<QPointF, 32> at;
+    QVarLengthArray<qsizetype, 32> shown;
+    for (qsizetype i = 0; i < d.ticks.size() && i < d.tickTexts.size(); ++i) {
         const double x = std::round(plot.left() + double(d.ticks.at(i) - d.t0) /
                                                       double(d.t1 - d.t0) * plot.width());
         if (x < plot.left() || x > plot.right())
             continue;
-        painter.setPen(d.leftAxis->gridLinePen());
-        painter.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-        painter.setPen(d.leftAxis->linePen());
-        painter.drawLine(QPointF(x, plot.bottom()), QPointF(x, plot.bottom() + 5));
-        const QString &label = d.tickLabels.value(i);
-        const double width = metrics.horizontalAdvance(label);
-        const double left = qBound(scene.left(), x - width / 2, scene.right() - width);
-        painter.setPen(QPen(d.leftAxis->labelsBrush(), 1));
-        painter.drawText(QPointF(left, plot.bottom() + 6 + metrics.ascent()), label);
+        grid.append(QLineF(x, plot.top(), x, plot.bottom()));
+        marks.append(QLineF(x, plot.bottom(), x, plot.bottom() + 5));
+        const double width = d.tickTexts.at(i).size().width();
+        at.append(
+            QPointF(qBound(scene.left(), x - width / 2, scene.right() - width), plot.bottom() + 6));
+        shown.append(i);
     }
+    painter.setPen(d.leftAxis->gridLinePen());
+    painter.drawLines(grid.constData(), int(grid.size()));
+    painter.setPen(d.leftAxis->linePen());
+    painter.drawLines(marks.constData(), int(marks.size()));
+    painter.setPen(QPen(d.leftAxis->labelsBrush(), 1));
+    for (qsizetype k = 0; k < shown.size(); ++k)
+        painter.drawStaticText(at.at(k), d.tickTexts.at(shown.at(k)));
 }
 
 void ChartPlotView::drawTraces(QPainter &painter, const QRectF &plot) const {

@@ -58,6 +58,10 @@ ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
     rightAxis = new QValueAxis(chart);
     styleValueAxis(leftAxis);
     styleValueAxis(rightAxis);
+    // ChartPlotView draws the value grid too: Qt Charts paints it as one item per line, and
+    // walking and painting those items was more than drawing the lines in one call.
+    leftAxis->setGridLineVisible(false);
+    rightAxis->setGridLineVisible(false);
     chart->legend()->setMarkerShape(QLegend::MarkerShapeFromSeries); // dashes tell series apart
     chart->addAxis(timeAxis, Qt::AlignBottom);
     chart->addAxis(leftAxis, Qt::AlignLeft);
@@ -120,7 +124,11 @@ void ChartWidgetPrivate::updateTimeTicks() {
         }
     }
     // Rounded on the local clock, so hours and minutes are the ones people read on the wall.
-    const qint64 offset = qint64(QDateTime::fromMSecsSinceEpoch(t0).offsetFromUtc()) * 1000;
+    if (const qint64 quarter = t0 / 900'000; quarter != utcOffsetQuarter) {
+        utcOffsetQuarter = quarter;
+        utcOffsetMs = qint64(QDateTime::fromMSecsSinceEpoch(t0).offsetFromUtc()) * 1000;
+    }
+    const qint64 offset = utcOffsetMs;
     QList<qint64> wanted;
     for (qint64 t = ((t0 + offset + step - 1) / step) * step - offset; t < t1; t += step)
         wanted.append(t);
@@ -129,6 +137,7 @@ void ChartWidgetPrivate::updateTimeTicks() {
     ticks = wanted;
     tickStep = step;
     tickLabels.clear();
+    tickTexts.clear();
     const QString format = step < 60'000 ? QStringLiteral("HH:mm:ss") : QStringLiteral("HH:mm");
     for (qint64 t : std::as_const(wanted)) {
         const QDateTime time = QDateTime::fromMSecsSinceEpoch(t);

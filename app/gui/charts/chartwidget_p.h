@@ -9,6 +9,7 @@
 #include <QGraphicsLineItem>
 #include <QGraphicsSimpleTextItem>
 #include <QLineSeries>
+#include <QStaticText>
 #include <QValueAxis>
 
 class QRubberBand;
@@ -39,6 +40,7 @@ private:
     // The curves, as polylines in the plot's pixels. QLineSeries is not used for them: for
     // every new set of points it builds a path and strokes a hover outline of it, which cost
     // more than painting the curve itself.
+    void drawValueGrid(QPainter &painter, const QRectF &plot) const;
     void drawTimeAxis(QPainter &painter, const QRectF &plot) const;
     void drawTraces(QPainter &painter, const QRectF &plot) const;
     void drawColumns(QPainter &painter, const QPolygonF &line, const QColor &color) const;
@@ -86,7 +88,15 @@ public:
     double ranges[2][2] = {{qQNaN(), qQNaN()}, {qQNaN(), qQNaN()}}; // [axis][min, max]
     QList<qint64> ticks; // the time axis' current ticks, and their labels
     QStringList tickLabels;
+    // The labels laid out once for as long as they stay: shaping them again on every frame was
+    // a visible share of a following chart's painting.
+    mutable QList<QStaticText> tickTexts;
+    mutable QFont tickTextFont;
     qint64 tickStep = 0;
+    // The local clock's offset from UTC, looked up once per quarter hour of the window's start
+    // (a time zone lookup per frame was another share of it).
+    qint64 utcOffsetMs = 0;
+    qint64 utcOffsetQuarter = -1;
     std::optional<qint64> crosshairTime;
     QList<ChartMarker> markers;
     QList<ChartBand> bands;
