@@ -8,6 +8,8 @@
 #include "charts/chartspage.h"
 #include "charts/chartwidget.h"
 #include "mainwindow.h"
+#include "model/session.h"
+#include "model/stationmodel.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -204,9 +206,40 @@ double cpuPercent(gui::MainWindow &window, gui::Page *page, int seconds) {
     return double(selfCpuUs() - cpu) / (double(wall.nsecsElapsed()) / 1e3) * 100;
 }
 
+// The demo line, its models and the chart's telemetry without any window: the share of the
+// GUI's CPU that no widget can save (the in-process simulator, the link, the parameters).
+double sessionCpuPercent(int seconds) {
+    model::Session session;
+    const gui::AppSettings demo = [] {
+        gui::AppSettings a;
+        a.kind = gui::AppSettings::Kind::Demo;
+        return a;
+    }();
+    session.scheduler().setInterval(model::PollClass::Live, demo.liveMs);
+    session.scheduler().setInterval(model::PollClass::Status, demo.statusMs);
+    session.scheduler().setInterval(model::PollClass::Counter, demo.counterMs);
+    QObject::connect(&session, &model::Session::devicesChanged, &session, [&session] {
+        for (model::DeviceModel *d : session.devices())
+            if (qobject_cast<model::StationModel *>(d))
+                session.scheduler().setVisiblePorts(d, {1, 2, 3, 4});
+    });
+    session.connectTo(*demo.sessionSettings(nullptr));
+    for (int i = 0; i < 300 && session.state() != model::Session::State::Connected; ++i)
+        waitMs(100);
+    waitMs(6000); // discovery, the first reading of every setting, the ports heating up
+    const qint64 cpu = selfCpuUs();
+    QElapsedTimer wall;
+    wall.start();
+    waitMs(seconds * 1000);
+    return double(selfCpuUs() - cpu) / (double(wall.nsecsElapsed()) / 1e3) * 100;
+}
+
 int runGuiCpu(int seconds, bool baseline) {
     // Test mode: the bench's main window must not read or overwrite the user's settings.
     QStandardPaths::setTestModeEnabled(true);
+    if (baseline)
+        printFigure(QStringLiteral("gui.session_cpu_percent"), sessionCpuPercent(seconds),
+                    QStringLiteral("%"), 2);
     gui::MainWindow window;
     window.resize(1360, 860);
     window.show();
@@ -250,7 +283,9 @@ int runGuiCpu(int seconds, bool baseline) {
 int runChartBench(const QStringList &args) {
     if (args.contains(QStringLiteral("--help")) || args.contains(QStringLiteral("-h"))) {
         QTextStream(stdout)
-            << "Usage: tipscope-bench chart [--seconds N] [--no-gui | --gui-only] [--no-baseline]\n"
+            << "Usage: tipscope-bench chart [--seconds N] [--no-gui | --gui-only | "
+               "--session-only]\n"
+               "                            [--no-baseline]\n"
                "                            [--no-naive] [--png-day FILE] [--png FILE]\n"
                "Chart redraw over a day of 4 ports at 1920 px, the naive chart, memory, and the\n"
                "GUI's CPU share with the demo line live (each CPU run N seconds, default 60).\n"
@@ -263,6 +298,11 @@ int runChartBench(const QStringList &args) {
     };
     const int seconds = qMax(1, option("--seconds", QStringLiteral("60")).toInt());
     const bool baseline = !args.contains(QStringLiteral("--no-baseline"));
+    if (args.contains(QStringLiteral("--session-only"))) {
+        printFigure(QStringLiteral("gui.session_cpu_percent"), sessionCpuPercent(seconds),
+                    QStringLiteral("%"), 2);
+        return 0;
+    }
     if (args.contains(QStringLiteral("--gui-only")))
         return runGuiCpu(seconds, baseline);
     printFigure(QStringLiteral("memory.peak_rss_start_mb"), peakRssMb(), QStringLiteral("MB"));
