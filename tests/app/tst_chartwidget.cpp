@@ -4,7 +4,9 @@
 #include "charts/chartframe.h"
 #include "charts/chartwidget.h"
 
+#include <QScreen>
 #include <QTest>
+#include <cmath>
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -45,6 +47,7 @@ private Q_SLOTS:
     void temperaturesAreDrawnOverADensePowerCurve();
     void aGapInDenseDataStaysEmpty();
     void aSparseCurveIsALineThroughItsPoints();
+    void aFollowingChartRepaintsOnlyPartsAndLeavesNothingStale();
 
 private:
     void show(qint64 t0, qint64 t1, const QList<QList<QPointF>> &points);
@@ -135,6 +138,32 @@ void TestChartWidget::aSparseCurveIsALineThroughItsPoints() {
     const QPointF middle = m_chart->seriesPosition(0, QPointF(double(kT0 + 30'000), 400));
     QVERIFY(colorNear(image, middle, kTip));
     QCOMPARE(m_chart->pointCount(0), 2);
+}
+
+// A frame repaints the plot and the time labels' old and new places only. What the window shows
+// (the offscreen platform's backing store) must then still equal a full repaint: no label or
+// grid line left behind where it was a frame ago.
+void TestChartWidget::aFollowingChartRepaintsOnlyPartsAndLeavesNothingStale() {
+    QList<QPointF> tip;
+    for (int i = 0; i <= 600; ++i)
+        tip.append(QPointF(double(kT0 + i * 1000), 300 + 200 * std::sin(i / 20.0)));
+    show(kT0, kT0 + 300'000, {tip, {}});
+    QTest::qWait(50);
+    for (qint64 step = 1; step <= 12; ++step) { // a following window, 7.3 s a step
+        show(kT0 + step * 7300, kT0 + 300'000 + step * 7300, {tip, {}});
+    }
+    QTest::qWait(50);
+    const QImage onScreen = m_chart->screen()
+                                ->grabWindow(m_chart->winId())
+                                .toImage()
+                                .convertToFormat(QImage::Format_RGB32);
+    const QImage repainted = m_chart->grab().toImage().convertToFormat(QImage::Format_RGB32);
+    QCOMPARE(onScreen.size(), repainted.size());
+    int differing = 0;
+    for (int y = 0; y < onScreen.height(); ++y)
+        for (int x = 0; x < onScreen.width(); ++x)
+            differing += onScreen.pixel(x, y) != repainted.pixel(x, y) ? 1 : 0;
+    QCOMPARE(differing, 0);
 }
 
 QTEST_MAIN(TestChartWidget)

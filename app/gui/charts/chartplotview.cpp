@@ -85,41 +85,20 @@ void ChartPlotView::drawValueGrid(QPainter &painter, const QRectF &plot) const {
 // and font so the three axes look alike.
 void ChartPlotView::drawTimeAxis(QPainter &painter, const QRectF &plot) const {
     const ChartWidgetPrivate &d = *m_owner.d;
-    const QFont font = d.leftAxis->labelsFont();
-    if (d.tickTexts.size() != d.tickLabels.size() || d.tickTextFont != font) {
-        d.tickTexts.clear();
-        d.tickTextFont = font;
-        for (const QString &label : d.tickLabels) {
-            QStaticText text(label);
-            text.setTextFormat(Qt::PlainText);
-            text.prepare(QTransform(), font);
-            d.tickTexts.append(text);
-        }
-    }
-    painter.setFont(font);
-    const QRectF scene = sceneRect();
+    const QList<ChartWidgetPrivate::TimeLabel> labels = d.timeLabels(plot);
     QVarLengthArray<QLineF, 32> grid, marks;
-    QVarLengthArray<QPointF, 32> at;
-    QVarLengthArray<qsizetype, 32> shown;
-    for (qsizetype i = 0; i < d.ticks.size() && i < d.tickTexts.size(); ++i) {
-        const double x = std::round(plot.left() + double(d.ticks.at(i) - d.t0) /
-                                                      double(d.t1 - d.t0) * plot.width());
-        if (x < plot.left() || x > plot.right())
-            continue;
-        grid.append(QLineF(x, plot.top(), x, plot.bottom()));
-        marks.append(QLineF(x, plot.bottom(), x, plot.bottom() + 5));
-        const double width = d.tickTexts.at(i).size().width();
-        at.append(
-            QPointF(qBound(scene.left(), x - width / 2, scene.right() - width), plot.bottom() + 6));
-        shown.append(i);
+    for (const ChartWidgetPrivate::TimeLabel &l : labels) {
+        grid.append(QLineF(l.x, plot.top(), l.x, plot.bottom()));
+        marks.append(QLineF(l.x, plot.bottom(), l.x, plot.bottom() + 5));
     }
     painter.setPen(d.leftAxis->gridLinePen());
     painter.drawLines(grid.constData(), int(grid.size()));
     painter.setPen(d.leftAxis->linePen());
     painter.drawLines(marks.constData(), int(marks.size()));
+    painter.setFont(d.tickTextFont);
     painter.setPen(QPen(d.leftAxis->labelsBrush(), 1));
-    for (qsizetype k = 0; k < shown.size(); ++k)
-        painter.drawStaticText(at.at(k), d.tickTexts.at(shown.at(k)));
+    for (const ChartWidgetPrivate::TimeLabel &l : labels)
+        painter.drawStaticText(l.rect.topLeft(), d.tickTexts.at(l.index));
 }
 
 void ChartPlotView::drawTraces(QPainter &painter, const QRectF &plot) const {

@@ -44,6 +44,9 @@ QPen tracePen(const ChartSeriesStyle &style) {
 ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
     chart = new QChart;
     chart->setAnimationOptions(QChart::NoAnimation); // animations re-run on every replace()
+    // The light theme's background is a white-to-white gradient: a plain white fill looks the
+    // same and is the cheapest thing to repaint under the curves on every frame.
+    chart->setBackgroundBrush(QColor(Qt::white));
     chart->setMargins(QMargins(4, 4, 4, 4 + timeLabelStrip()));
     chart->legend()->setAlignment(Qt::AlignTop);
     // The time axis only holds the plot's bottom edge: its range never changes, and the ticks,
@@ -81,10 +84,44 @@ ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
 // Only the plot: Qt Charts repaints the axis labels and the legend itself when they change, and
 // repainting their rich-text items on every frame was most of a live chart's painting.
 void ChartWidgetPrivate::updatePlot() {
-    const QRect p = plot().toAlignedRect();
-    // And the time labels below it, which may reach half a label past either end.
-    const QRect labels(p.left() - 60, p.bottom() + 1, p.width() + 120, timeLabelStrip());
-    view->viewport()->update(QRegion(p.adjusted(-1, -1, 1, 1)) + labels);
+    const QRectF plotArea = plot();
+    const QRect p = plotArea.toAlignedRect();
+    // And the tick marks under it, and the time labels where they were and where they go.
+    QRegion labels;
+    for (const TimeLabel &l : timeLabels(plotArea))
+        labels += l.rect.toAlignedRect().adjusted(-1, -1, 1, 1);
+    const QRect marks(p.left() - 1, p.bottom(), p.width() + 2, 7);
+    view->viewport()->update(QRegion(p.adjusted(-1, -1, 1, 1)) + marks + labels + timeLabelsRegion);
+    timeLabelsRegion = labels;
+}
+
+QList<ChartWidgetPrivate::TimeLabel> ChartWidgetPrivate::timeLabels(const QRectF &plot) const {
+    const QFont font = leftAxis->labelsFont();
+    if (tickTexts.size() != tickLabels.size() || tickTextFont != font) {
+        tickTexts.clear();
+        tickTextFont = font;
+        for (const QString &label : tickLabels) {
+            QStaticText text(label);
+            text.setTextFormat(Qt::PlainText);
+            text.prepare(QTransform(), font);
+            tickTexts.append(text);
+        }
+    }
+    QList<TimeLabel> out;
+    if (t1 <= t0)
+        return out;
+    const QRectF scene = view->sceneRect();
+    for (qsizetype i = 0; i < ticks.size() && i < tickTexts.size(); ++i) {
+        const double x =
+            std::round(plot.left() + double(ticks.at(i) - t0) / double(t1 - t0) * plot.width());
+        if (x < plot.left() || x > plot.right())
+            continue;
+        const QSizeF size = tickTexts.at(i).size();
+        const double left =
+            qBound(scene.left(), x - size.width() / 2, scene.right() - size.width());
+        out.append({x, QRectF(QPointF(left, plot.bottom() + 6), size), i});
+    }
+    return out;
 }
 
 double ChartWidgetPrivate::yAt(ChartAxis axis, double value, const QRectF &plot) const {
@@ -191,6 +228,9 @@ void ChartWidget::setSeries(const QList<ChartSeriesStyle> &styles) {
         s->setName(style.name);
         s->setPen(tracePen(style));
         d->chart->addSeries(s);
+        // Empty, it paints nothing, yet the scene would visit its item on every frame; a fully
+        // transparent item it skips. The legend entry keeps its own opacity.
+        s->setOpacity(0);
         s->attachAxis(d->timeAxis);
         s->attachAxis(style.axis == ChartAxis::Left ? d->leftAxis : d->rightAxis);
         anyRight = anyRight || style.axis == ChartAxis::Right;

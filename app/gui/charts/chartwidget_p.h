@@ -70,6 +70,13 @@ public:
     void updateTimeTicks();
     // Height of the band under the plot that holds the time labels.
     [[nodiscard]] int timeLabelStrip() const;
+    struct TimeLabel {
+        double x;        // the tick, in scene pixels
+        QRectF rect;     // where its text goes
+        qsizetype index; // into ticks and tickTexts
+    };
+    // The ticks inside the plot and their labels' places, the texts laid out if they changed.
+    [[nodiscard]] QList<TimeLabel> timeLabels(const QRectF &plot) const;
 
     QChart *chart;
     ChartPlotView *view;
@@ -92,6 +99,10 @@ public:
     // a visible share of a following chart's painting.
     mutable QList<QStaticText> tickTexts;
     mutable QFont tickTextFont;
+    // Where the time labels were last asked to be repainted: a frame repaints their old places
+    // and their new ones, not the whole strip, whose ends hold the value axes' first labels
+    // (rich text, dear to paint again).
+    QRegion timeLabelsRegion;
     qint64 tickStep = 0;
     // The local clock's offset from UTC, looked up once per quarter hour of the window's start
     // (a time zone lookup per frame was another share of it).
