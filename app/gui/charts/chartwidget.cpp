@@ -117,8 +117,10 @@ QList<ChartWidgetPrivate::TimeLabel> ChartWidgetPrivate::timeLabels(const QRectF
         if (x < plot.left() || x > plot.right())
             continue;
         const QSizeF size = tickTexts.at(i).size();
+        // Centred on the tick, but inside the scene; a scene narrower than the label (a widget
+        // not laid out yet) keeps its left edge.
         const double left =
-            qBound(scene.left(), x - size.width() / 2, scene.right() - size.width());
+            qMax(scene.left(), qMin(x - size.width() / 2, scene.right() - size.width()));
         out.append({x, QRectF(QPointF(left, plot.bottom() + 6), size), i});
     }
     return out;
