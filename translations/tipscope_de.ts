@@ -1213,52 +1213,62 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="76"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
         <source>Tip</source>
         <translation>Lötspitze</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
         <source>Fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="90"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="107"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="92"/>
+        <source>Transistor</source>
+        <translation>Transistor</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="94"/>
+        <source>Transformer</source>
+        <translation>Transformator</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="113"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="122"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="128"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="146"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="157"/>
         <source>P%1 </source>
         <translation>P%1 </translation>
     </message>
@@ -2383,41 +2393,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="26"/>
-        <location filename="../lib/model/session.cpp" line="96"/>
-        <location filename="../lib/model/session.cpp" line="99"/>
+        <location filename="../lib/model/session.cpp" line="39"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="95"/>
-        <location filename="../lib/model/session.cpp" line="106"/>
-        <location filename="../lib/model/session.cpp" line="113"/>
+        <location filename="../lib/model/session.cpp" line="108"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="129"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="197"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="198"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="204"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -2581,7 +2591,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="42"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="43"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Zeitdiagramm. Mausrad oder Plus- und Minustaste zoomen, Ziehen oder Pfeiltasten verschieben, Umschalt+Ziehen wählt einen Bereich, Doppelklick oder Pos1 setzt zurück.</translation>
     </message>
@@ -2589,7 +2599,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="311"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="362"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -2600,73 +2610,73 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="28"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
         <location filename="../app/gui/charts/chartspage.h" line="53"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="44"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="45"/>
         <source>Values under the cursor</source>
         <translation>Werte unter dem Mauszeiger</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="49"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="50"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>Toleranzband für A&amp;ufheizen und Erholung ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="52"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="53"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Toleranzband um den Sollwert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="63"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="64"/>
         <source>Measurements of the visible window</source>
         <translation>Messungen im sichtbaren Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="176"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="179"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="182"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="184"/>
         <source>%1 — feeder</source>
         <translation>%1 — Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="187"/>
         <source>%1 — all ports</source>
         <translation>%1 — alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="192"/>
         <source>Temperature (%1)</source>
         <translation>Temperatur (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
         <source>Power (%)</source>
         <translation>Leistung (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="289"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="291"/>
         <source>No samples in this window</source>
         <translation>Keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -2767,51 +2777,61 @@ Dauerhaft mit dieser udev-Regel:
     </message>
     <message>
         <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
+        <source>Trans&amp;istor, transformer</source>
+        <translation>Trans&amp;istor, Transformator</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="85"/>
+        <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
+        <translation>Auch die Transistortemperatur jedes Ports und die Transformatortemperatur der Station zeichnen (alle paar Sekunden gelesen)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="89"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Sichtbares Zeitfenster als &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Sichtbares Zeitfenster als &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="89"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Aufzeichnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="97"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Jeden neuen Messwert und jedes Ereignis in eine CSV-Datei schreiben, bis abgewählt</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="99"/>
         <source>&amp;Open recording…</source>
         <translation>Aufzeichnung ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="101"/>
         <source>Back to &amp;live</source>
         <translation>Zurück zu &amp;Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="100"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>Data shown</source>
         <translation>Angezeigte Daten</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="103"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
         <source>Recording stopped</source>
         <translation>Aufzeichnung beendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="104"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Writing %1 failed: %2</source>
         <translation>Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
@@ -2831,7 +2851,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Alarm tief</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="125"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Wiedergabe: %1 (%Ln Zeile)</numerusform>
@@ -2839,88 +2859,88 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="121"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="127"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="129"/>
         <source> · recording to %1</source>
         <translation> · Aufzeichnung in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="132"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="138"/>
         <source>there is no chart to export</source>
         <translation>es gibt kein Diagramm zum Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="134"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="140"/>
         <source>could not write %1</source>
         <translation>%1 konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="153"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="159"/>
         <source>Export chart as PNG</source>
         <translation>Diagramm als PNG exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="153"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="159"/>
         <source>Export chart data as CSV</source>
         <translation>Diagrammdaten als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="161"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="188"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="161"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="194"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="166"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="166"/>
         <source>Export failed: %1</source>
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="187"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="193"/>
         <source>Record to CSV file</source>
         <translation>In CSV-Datei aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="191"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="197"/>
         <source>Record</source>
         <translation>Aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="191"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="197"/>
         <source>Cannot record: %1</source>
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="221"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="227"/>
         <source>Open a chart recording</source>
         <translation>Diagrammaufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="223"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="229"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>CSV-Datei (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="228"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
         <source>Replay</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="228"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
         <source>Cannot replay %1</source>
         <translation>%1 kann nicht wiedergegeben werden</translation>
     </message>
@@ -3089,223 +3109,223 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="75"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
         <source>%1: answered %2 after %L3 ms</source>
         <translation>%1: Antwort %2 nach %L3 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
         <source>%1: refused, %2</source>
         <translation>%1: abgelehnt, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="81"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="85"/>
         <source>%1: no answer (timeout)</source>
         <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="95"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="99"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="132"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="137"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
         <source>Relative time</source>
         <translation>Relative Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>Show bytes sent</source>
         <translation>Gesendete Bytes anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>RX chunks</source>
         <translation>RX-Blöcke</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Frames</source>
         <translation>Telegramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show received frames, decoded</source>
         <translation>Empfangene Telegramme dekodiert anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Notes</source>
         <translation>Hinweise</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>De&amp;vice:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>Device address filter</source>
         <translation>Filter für Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="186"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
         <source>Co&amp;mmand:</source>
         <translation>Be&amp;fehl:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="189"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Command filter</source>
         <translation>Befehlsfilter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
         <source>e.g. ST1</source>
         <translation>z. B. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="199"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
         <source>Remove every row, held ones included</source>
         <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="202"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
         <source>Save…</source>
         <translation>Speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="204"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="217"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="221"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="244"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="248"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="252"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="256"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="266"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="270"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="290"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="303"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="321"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="307"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
         <source>paused: new traffic is held</source>
         <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="384"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n Rohbyte</numerusform>
@@ -3313,17 +3333,17 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: nicht gesendet, nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="391"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="404"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: gesendet, warte auf Antwort…</translation>
     </message>
@@ -3336,229 +3356,229 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="37"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
         <source>Plugged hours</source>
         <translation>Einschaltstunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
         <source>Reset partial plugged hours…</source>
         <translation>Teilzähler Einschaltstunden zurücksetzen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
         <source>Feeding hours</source>
         <translation>Vorschubstunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
         <source>Reset partial feeding hours…</source>
         <translation>Teilzähler Vorschubstunden zurücksetzen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
         <source>Fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
         <source>Reset partial fed length…</source>
         <translation>Teilzähler vorgeschobene Länge zurücksetzen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
         <source>When the counters were read</source>
         <translation>Zeitpunkt der Zählerabfrage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="87"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
         <source>Refresh counters</source>
         <translation>Zähler aktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>&amp;Export CSV…</source>
         <translation>CSV e&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="95"/>
         <source>Export counters as CSV</source>
         <translation>Zähler als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="104"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="105"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
         <source>Reading the counters…</source>
         <translation>Zähler werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
         <source>Last reading at %1</source>
         <translation>Letzte Abfrage um %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="161"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="162"/>
         <source>Waiting for the first reading…</source>
         <translation>Warte auf die erste Abfrage…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
         <source>Station %1</source>
         <translation>Station %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="240"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="224"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
         <source>Counters of %1</source>
         <translation>Zähler von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="235"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="238"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="250"/>
         <source>Solder feeder %1</source>
         <translation>Lotdrahtvorschub %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
         <source>Partial</source>
         <translation>Teilzähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="282"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="284"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="296"/>
         <source>Last read failed: %1</source>
         <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="287"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="299"/>
         <source>Read at %1</source>
         <translation>Gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="302"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="314"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="317"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
         <source>Reset partial counter</source>
         <translation>Teilzähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="318"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>Reset “%1” on %2?</source>
         <translation>„%1“ an %2 zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
         <source>It now reads %1.</source>
         <translation>Er steht jetzt auf %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
         <source>The total counter is not affected.</source>
         <translation>Der Gesamtzähler bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>Reset counter</source>
         <translation>Zähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 Es wurde nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 Nicht zurückgesetzt: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="351"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 %2 wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="344"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="358"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="371"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="398"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="396"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="385"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="399"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="37"/>
+        <location filename="../app/gui/pages/counterspage.h" line="40"/>
         <source>Counters</source>
         <translation>Zähler</translation>
     </message>
@@ -3667,365 +3687,365 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="71"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="573"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="588"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="72"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="577"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="592"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="73"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="74"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="75"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="76"/>
         <source>Info</source>
         <translation>Info</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="77"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="78"/>
         <source>Warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="79"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="80"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="119"/>
         <source>Station error</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="120"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="121"/>
         <source>Port error</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="122"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="123"/>
         <source>Feeder error</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="124"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="125"/>
         <source>Alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="126"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="127"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="128"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="129"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="130"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="383"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="132"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="383"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="254"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="255"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="256"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="258"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="259"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="260"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="261"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="262"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="263"/>
         <source>What happened</source>
         <translation>Ereignis</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="337"/>
         <source>Current state</source>
         <translation>Aktueller Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="339"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
         <source>Current errors and alarms</source>
         <translation>Aktuelle Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Where</source>
         <translation>Ort</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Temperature alarm</source>
         <translation>Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
         <source>&amp;Reset feeder error</source>
         <translation>Vorschubfehler &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="354"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="355"/>
         <source>Reset feeder error</source>
         <translation>Vorschubfehler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="356"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="357"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="369"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="370"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="372"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
         <source>Show events of kind</source>
         <translation>Ereignisse dieser Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="375"/>
         <source>Errors and alarms</source>
         <translation>Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
         <source>Station errors</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
         <source>Port errors</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="379"/>
         <source>Feeder errors</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="379"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="381"/>
         <source>Status changes</source>
         <translation>Statuswechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="381"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="382"/>
         <source>Writes</source>
         <translation>Schreibzugriffe</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="388"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="389"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="389"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="390"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="390"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="391"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="392"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="394"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="395"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="396"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="397"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="399"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="400"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="402"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="418"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="419"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="442"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="443"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="448"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="449"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="449"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="450"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="451"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="452"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="452"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="453"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="453"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="454"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="455"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="456"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="456"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="721"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="728"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="457"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="725"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="732"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="458"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="459"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="507"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="511"/>
         <source>No device is connected.</source>
         <translation>Kein Gerät verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="557"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="561"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="575"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="579"/>
         <source>Error code %1: %2</source>
         <translation>Fehlercode %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="582"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="586"/>
         <source>High temperature</source>
         <translation>Übertemperatur</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="584"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="588"/>
         <source>Low temperature</source>
         <translation>Untertemperatur</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="586"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="590"/>
         <source>None</source>
         <translation>Keiner</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="600"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="604"/>
         <source>This device has no temperature alarm</source>
         <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="609"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="613"/>
         <source>Not reset: %1</source>
         <translation>Nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="612"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="616"/>
         <source>Resetting the feeder error…</source>
         <translation>Vorschubfehler wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="619"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="623"/>
         <source>Feeder error reset.</source>
         <translation>Vorschubfehler zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="620"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="624"/>
         <source>The feeder error was not reset: %1</source>
         <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="633"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="637"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="636"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="640"/>
         <source>No feeder is connected</source>
         <translation>Kein Lotdrahtvorschub verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="639"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="643"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="670"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="674"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="672"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="676"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4033,22 +4053,22 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="721"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="725"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="726"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="730"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="729"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="733"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.h" line="40"/>
+        <location filename="../app/gui/pages/errorspage.h" line="42"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
@@ -4581,57 +4601,57 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="56"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="62"/>
         <source>Allowed: %1</source>
         <translation>Zulässig: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="57"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="63"/>
         <source>Command: %1</source>
         <translation>Befehl: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="80"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="86"/>
         <source>%1 disabled</source>
         <translation>%1 deaktiviert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="131"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="137"/>
         <source>reading…</source>
         <translation>wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
         <source>not saved</source>
         <translation>nicht gesichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
         <source>✓ in sync</source>
         <translation>✓ synchron</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="138"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="144"/>
         <source>edited</source>
         <translation>geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="142"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="148"/>
         <source>writing…</source>
         <translation>wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="145"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="151"/>
         <source>✗ failed</source>
         <translation>✗ fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="150"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="156"/>
         <source>✗ refused</source>
         <translation>✗ abgelehnt</translation>
     </message>
@@ -4902,128 +4922,128 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="30"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="186"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Zurücknehmen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
         <source>Save to station &amp;memory</source>
         <translation>Im Stations&amp;speicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>Die eingestellte Temperatur ist flüchtig: W-NVS speichert sie, damit sie einen Neustart übersteht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
         <source>Station actions</source>
         <translation>Stationsaktionen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="42"/>
         <source>Profiles</source>
         <translation>Profile</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="45"/>
         <source>Save device settings to a profile…</source>
         <translation>Geräteeinstellungen in einem Profil speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Profil öffnen (vergleichen, Probelauf, anwenden)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="49"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
         <source>Port:</source>
         <translation>Port:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="126"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="130"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Verbinden Sie sich und wählen Sie ein Gerät, um seine Einstellungen zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="129"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
         <source>Port %1 (%2)</source>
         <translation>Port %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="137"/>
         <source>Station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="139"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
         <source>Alarms, port %1</source>
         <translation>Alarme, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
         <source>Tool %1, port %2</source>
         <translation>Werkzeug %1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
         <source> (connected)</source>
         <translation> (angeschlossen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="156"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dosierung (Drahtvorschub der ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="164"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="186"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
         <source>&amp;Apply (%1)</source>
         <translation>&amp;Anwenden (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="194"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="198"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="219"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>Save to station memory</source>
         <translation>Im Stationsspeicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="230"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="234"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Neue Adresse (1-99) oder 0 für Telegramme ohne Adressen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="237"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="241"/>
         <source>%1
 
 %2
@@ -5036,31 +5056,31 @@ Do you want to continue?</source>
 Möchten Sie fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="252"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="258"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="264"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="253"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Einige Einstellungen wurden noch nicht gelesen (%1). Aktualisieren Sie und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="259"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="271"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="263"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="270"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="277"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="274"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="281"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.h" line="24"/>
+        <location filename="../app/gui/pages/settingspage.h" line="25"/>
         <source>Settings</source>
         <translation>Einstellungen</translation>
     </message>

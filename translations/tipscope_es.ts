@@ -1213,52 +1213,62 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="76"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
         <source>Tip</source>
         <translation>Punta</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
         <source>Setpoint</source>
         <translation>Consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
         <source>Power</source>
         <translation>Potencia</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
         <source>Fed length</source>
         <translation>Longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
         <source>Speed</source>
         <translation>Velocidad</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="90"/>
         <source>Feeding</source>
         <translation>Alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="107"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="92"/>
+        <source>Transistor</source>
+        <translation>Transistor</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="94"/>
+        <source>Transformer</source>
+        <translation>Transformador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartseries.cpp" line="113"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="122"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="128"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="146"/>
+        <location filename="../app/gui/charts/chartseries.cpp" line="157"/>
         <source>P%1 </source>
         <translation>P%1 </translation>
     </message>
@@ -2384,41 +2394,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="26"/>
-        <location filename="../lib/model/session.cpp" line="96"/>
-        <location filename="../lib/model/session.cpp" line="99"/>
+        <location filename="../lib/model/session.cpp" line="39"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="95"/>
-        <location filename="../lib/model/session.cpp" line="106"/>
-        <location filename="../lib/model/session.cpp" line="113"/>
+        <location filename="../lib/model/session.cpp" line="108"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="129"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="197"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="198"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="204"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -2582,7 +2592,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="42"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="43"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Gráfico temporal. La rueda o las teclas más y menos hacen zoom, arrastrar o las flechas desplazan, Mayús+arrastrar selecciona un intervalo, doble clic o Inicio restablece.</translation>
     </message>
@@ -2590,7 +2600,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="311"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="362"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -2601,73 +2611,73 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="28"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
         <location filename="../app/gui/charts/chartspage.h" line="53"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="44"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="45"/>
         <source>Values under the cursor</source>
         <translation>Valores bajo el cursor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="49"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="50"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>&amp;Banda de calentamiento y recuperación ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="52"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="53"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Banda de tolerancia alrededor de la consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="63"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="64"/>
         <source>Measurements of the visible window</source>
         <translation>Mediciones de la ventana visible</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="176"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="179"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="182"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="184"/>
         <source>%1 — feeder</source>
         <translation>%1 — alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="187"/>
         <source>%1 — all ports</source>
         <translation>%1 — todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="192"/>
         <source>Temperature (%1)</source>
         <translation>Temperatura (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
         <source>Power (%)</source>
         <translation>Potencia (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="289"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="291"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>
@@ -2768,51 +2778,61 @@ Hágalo permanente con esta regla de udev:
     </message>
     <message>
         <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
+        <source>Trans&amp;istor, transformer</source>
+        <translation>Trans&amp;istor, transformador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="85"/>
+        <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
+        <translation>Dibujar también la temperatura del transistor de cada puerto y la del transformador de la estación (leídas cada pocos segundos)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="89"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Ventana visible como &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Ventana visible como &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="89"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Grabar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="97"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Escribir cada nueva muestra y evento en un archivo CSV hasta desmarcarlo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="99"/>
         <source>&amp;Open recording…</source>
         <translation>Abrir grabació&amp;n…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="101"/>
         <source>Back to &amp;live</source>
         <translation>Volver a &amp;tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="100"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>Data shown</source>
         <translation>Datos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="103"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
         <source>Recording stopped</source>
         <translation>Grabación detenida</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="104"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Writing %1 failed: %2</source>
         <translation>Falló la escritura de %1: %2</translation>
     </message>
@@ -2832,7 +2852,7 @@ Hágalo permanente con esta regla de udev:
         <translation>Alarma baja</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="125"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Reproducción: %1 (%Ln fila)</numerusform>
@@ -2840,88 +2860,88 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="121"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="127"/>
         <source>Live</source>
         <translation>Tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="129"/>
         <source> · recording to %1</source>
         <translation> · grabando en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="132"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="138"/>
         <source>there is no chart to export</source>
         <translation>no hay ningún gráfico que exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="134"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="140"/>
         <source>could not write %1</source>
         <translation>no se pudo escribir %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="153"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="159"/>
         <source>Export chart as PNG</source>
         <translation>Exportar gráfico como PNG</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="153"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="159"/>
         <source>Export chart data as CSV</source>
         <translation>Exportar datos del gráfico como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="161"/>
         <source>PNG image (*.png)</source>
         <translation>Imagen PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="188"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="161"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="194"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="166"/>
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="166"/>
         <source>Export failed: %1</source>
         <translation>Falló la exportación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="187"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="193"/>
         <source>Record to CSV file</source>
         <translation>Grabar en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="191"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="197"/>
         <source>Record</source>
         <translation>Grabar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="191"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="197"/>
         <source>Cannot record: %1</source>
         <translation>No se puede grabar: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="221"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="227"/>
         <source>Open a chart recording</source>
         <translation>Abrir una grabación de gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="223"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="229"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>Archivo CSV (*.csv);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="228"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
         <source>Replay</source>
         <translation>Reproducción</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="228"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
         <source>Cannot replay %1</source>
         <translation>No se puede reproducir %1</translation>
     </message>
@@ -3090,223 +3110,223 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="75"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
         <source>%1: answered %2 after %L3 ms</source>
         <translation>%1: respondió %2 tras %L3 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
         <source>%1: refused, %2</source>
         <translation>%1: rechazado, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="81"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="85"/>
         <source>%1: no answer (timeout)</source>
         <translation>%1: sin respuesta (tiempo agotado)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="95"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="99"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="132"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="137"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
         <source>Relative time</source>
         <translation>Tiempo relativo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
         <source>Show:</source>
         <translation>Mostrar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>Show bytes sent</source>
         <translation>Mostrar los bytes enviados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>RX chunks</source>
         <translation>Bloques RX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Frames</source>
         <translation>Tramas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show received frames, decoded</source>
         <translation>Mostrar las tramas recibidas, decodificadas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>De&amp;vice:</source>
         <translation>Equi&amp;po:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>Device address filter</source>
         <translation>Filtro de dirección de equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="186"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
         <source>Co&amp;mmand:</source>
         <translation>Co&amp;mando:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="189"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Command filter</source>
         <translation>Filtro de comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
         <source>e.g. ST1</source>
         <translation>p. ej. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="199"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
         <source>Remove every row, held ones included</source>
         <translation>Quitar todas las filas, incluidas las retenidas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="202"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="204"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="217"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="221"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="244"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="248"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="252"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="256"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="266"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="270"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="290"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="303"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="321"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="307"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
         <source>paused: new traffic is held</source>
         <translation>en pausa: el tráfico nuevo se retiene</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="384"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n byte en bruto</numerusform>
@@ -3314,17 +3334,17 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: no enviado, sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="391"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: no enviado, el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="404"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: enviado, esperando la respuesta…</translation>
     </message>
@@ -3337,229 +3357,229 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="37"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
         <source>Plugged hours</source>
         <translation>Horas conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
         <source>Reset partial plugged hours…</source>
         <translation>Poner a cero las horas conectado parciales…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
         <source>Feeding hours</source>
         <translation>Horas de alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
         <source>Reset partial feeding hours…</source>
         <translation>Poner a cero las horas de alimentación parciales…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
         <source>Fed length</source>
         <translation>Longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
         <source>Reset partial fed length…</source>
         <translation>Poner a cero la longitud alimentada parcial…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
         <source>When the counters were read</source>
         <translation>Cuándo se leyeron los contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="87"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
         <source>Refresh counters</source>
         <translation>Actualizar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>&amp;Export CSV…</source>
         <translation>E&amp;xportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="95"/>
         <source>Export counters as CSV</source>
         <translation>Exportar contadores como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="104"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="105"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
         <source>Reading the counters…</source>
         <translation>Leyendo los contadores…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
         <source>Last reading at %1</source>
         <translation>Última lectura a las %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="161"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="162"/>
         <source>Waiting for the first reading…</source>
         <translation>Esperando la primera lectura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
         <source>Station %1</source>
         <translation>Estación %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="240"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="224"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
         <source>Counters of %1</source>
         <translation>Contadores de %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="235"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="238"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="250"/>
         <source>Solder feeder %1</source>
         <translation>Alimentador de estaño %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
         <source>Partial</source>
         <translation>Parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="282"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="284"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="296"/>
         <source>Last read failed: %1</source>
         <translation>Falló la última lectura: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="287"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="299"/>
         <source>Read at %1</source>
         <translation>Leído: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="302"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="314"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="317"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
         <source>Reset partial counter</source>
         <translation>Poner a cero el contador parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="318"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>Reset “%1” on %2?</source>
         <translation>¿Poner a cero «%1» en %2?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
         <source>It now reads %1.</source>
         <translation>Ahora marca %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
         <source>The total counter is not affected.</source>
         <translation>El contador total no se ve afectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>Reset counter</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 No se puso nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 No se puso a cero: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="351"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 Poniendo a cero %2…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 puesto a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="344"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="358"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 no se puso a cero: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="371"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="398"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="396"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="385"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="399"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="37"/>
+        <location filename="../app/gui/pages/counterspage.h" line="40"/>
         <source>Counters</source>
         <translation>Contadores</translation>
     </message>
@@ -3668,365 +3688,365 @@ Continue?</source>
 <context>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="71"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="573"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="588"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="72"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="577"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="592"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="73"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="74"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="75"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="76"/>
         <source>Info</source>
         <translation>Información</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="77"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="78"/>
         <source>Warning</source>
         <translation>Advertencia</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="79"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="80"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="119"/>
         <source>Station error</source>
         <translation>Error de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="120"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="121"/>
         <source>Port error</source>
         <translation>Error de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="122"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="123"/>
         <source>Feeder error</source>
         <translation>Error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="124"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="125"/>
         <source>Alarm</source>
         <translation>Alarma</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="126"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="127"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="128"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="129"/>
         <source>Write</source>
         <translation>Escritura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="130"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="383"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="132"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="383"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="254"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="255"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="256"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="258"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="259"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="260"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="261"/>
         <source>Source</source>
         <translation>Origen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="262"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="263"/>
         <source>What happened</source>
         <translation>Qué ocurrió</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="337"/>
         <source>Current state</source>
         <translation>Estado actual</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="339"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
         <source>Current errors and alarms</source>
         <translation>Errores y alarmas actuales</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Where</source>
         <translation>Dónde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
         <source>Temperature alarm</source>
         <translation>Alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
         <source>&amp;Reset feeder error</source>
         <translation>&amp;Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="354"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="355"/>
         <source>Reset feeder error</source>
         <translation>Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="356"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="357"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="369"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="370"/>
         <source>History</source>
         <translation>Historial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="372"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
         <source>Show events of kind</source>
         <translation>Mostrar eventos del tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
         <source>All kinds</source>
         <translation>Todos los tipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="375"/>
         <source>Errors and alarms</source>
         <translation>Errores y alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
         <source>Station errors</source>
         <translation>Errores de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
         <source>Port errors</source>
         <translation>Errores de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="379"/>
         <source>Feeder errors</source>
         <translation>Errores del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="379"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
         <source>Alarms</source>
         <translation>Alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="381"/>
         <source>Status changes</source>
         <translation>Cambios de estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="381"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="382"/>
         <source>Writes</source>
         <translation>Escrituras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="388"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="389"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="389"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="390"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="390"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="391"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="392"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="394"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="395"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="396"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="397"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="399"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="400"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="402"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="418"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="419"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="442"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="443"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="448"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="449"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="449"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="450"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="451"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="452"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="452"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="453"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="453"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="454"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="455"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="456"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="456"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="721"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="728"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="457"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="725"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="732"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="458"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="459"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="507"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="511"/>
         <source>No device is connected.</source>
         <translation>No hay ningún equipo conectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="557"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="561"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="575"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="579"/>
         <source>Error code %1: %2</source>
         <translation>Código de error %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="582"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="586"/>
         <source>High temperature</source>
         <translation>Temperatura alta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="584"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="588"/>
         <source>Low temperature</source>
         <translation>Temperatura baja</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="586"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="590"/>
         <source>None</source>
         <translation>Ninguna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="600"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="604"/>
         <source>This device has no temperature alarm</source>
         <translation>Este equipo no tiene alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="609"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="613"/>
         <source>Not reset: %1</source>
         <translation>No se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="612"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="616"/>
         <source>Resetting the feeder error…</source>
         <translation>Borrando el error del alimentador…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="619"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="623"/>
         <source>Feeder error reset.</source>
         <translation>Error del alimentador borrado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="620"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="624"/>
         <source>The feeder error was not reset: %1</source>
         <translation>El error del alimentador no se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="633"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="637"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="636"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="640"/>
         <source>No feeder is connected</source>
         <translation>No hay ningún alimentador conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="639"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="643"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="670"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="674"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="672"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="676"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4034,22 +4054,22 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="721"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="725"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="726"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="730"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="729"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="733"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.h" line="40"/>
+        <location filename="../app/gui/pages/errorspage.h" line="42"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
@@ -4582,57 +4602,57 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="56"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="62"/>
         <source>Allowed: %1</source>
         <translation>Permitido: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="57"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="63"/>
         <source>Command: %1</source>
         <translation>Comando: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="80"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="86"/>
         <source>%1 disabled</source>
         <translation>%1 desactivado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="128"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
         <source>not read</source>
         <translation>no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="131"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="137"/>
         <source>reading…</source>
         <translation>leyendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
         <source>not saved</source>
         <translation>no guardado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
         <source>✓ in sync</source>
         <translation>✓ sincronizado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="138"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="144"/>
         <source>edited</source>
         <translation>editado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="142"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="148"/>
         <source>writing…</source>
         <translation>escribiendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="145"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="151"/>
         <source>✗ failed</source>
         <translation>✗ falló</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="150"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="156"/>
         <source>✗ refused</source>
         <translation>✗ rechazado</translation>
     </message>
@@ -4903,128 +4923,128 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="30"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="186"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Revertir</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
         <source>Save to station &amp;memory</source>
         <translation>Guardar en la &amp;memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>La temperatura seleccionada es volátil: W-NVS la guarda para que se conserve tras reiniciar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
         <source>Station actions</source>
         <translation>Acciones de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="42"/>
         <source>Profiles</source>
         <translation>Perfiles</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="45"/>
         <source>Save device settings to a profile…</source>
         <translation>Guardar los ajustes del equipo en un perfil…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Abrir un perfil (comparar, simular, aplicar)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="49"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
         <source>Port:</source>
         <translation>Puerto:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="126"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="130"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Conéctese y seleccione un equipo para ver sus ajustes.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="129"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
         <source>Port %1 (%2)</source>
         <translation>Puerto %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="137"/>
         <source>Station</source>
         <translation>Estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="139"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
         <source>Alarms, port %1</source>
         <translation>Alarmas, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
         <source>Tool %1, port %2</source>
         <translation>Herramienta %1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
         <source> (connected)</source>
         <translation> (conectada)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="156"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dispensado (alimentación de hilo de la ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="164"/>
         <source>Feeding</source>
         <translation>Alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="186"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
         <source>&amp;Apply (%1)</source>
         <translation>A&amp;plicar (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="194"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="198"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="219"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>Save to station memory</source>
         <translation>Guardar en la memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="230"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="234"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Nueva dirección (1-99), o 0 para tramas sin direcciones:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="237"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="241"/>
         <source>%1
 
 %2
@@ -5037,31 +5057,31 @@ Do you want to continue?</source>
 ¿Desea continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="252"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="258"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="264"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="253"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Algunos ajustes aún no se han leído (%1). Actualice y vuelva a intentarlo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="259"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="271"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="263"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="270"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="277"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="274"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="281"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.h" line="24"/>
+        <location filename="../app/gui/pages/settingspage.h" line="25"/>
         <source>Settings</source>
         <translation>Ajustes</translation>
     </message>

@@ -13,8 +13,21 @@ namespace {
 struct Tr {
     Q_DECLARE_TR_FUNCTIONS(Session)
 };
-const QStringList kPortSeries = {QStringLiteral("tip"), QStringLiteral("setpoint"),
-                                 QStringLiteral("power"), QStringLiteral("status")};
+// The hardware temperatures (QTx, TT0) are read with the status values, every few seconds; a
+// sample carries their latest reading. The transformer's is the station's, in every port.
+const QStringList kPortSeries = {QStringLiteral("tip"),        QStringLiteral("setpoint"),
+                                 QStringLiteral("power"),      QStringLiteral("status"),
+                                 QStringLiteral("transistor"), QStringLiteral("transformer")};
+
+// A value the sample can carry: its reading, or 0 for one that cannot be read (a failed
+// read, or a command the family lacks); nullopt while the first reading is still to come.
+std::optional<qint32> carried(const Parameter *p) {
+    if (!p || p->state() == Parameter::State::Failed)
+        return p && p->number() ? qint32(*p->number()) : 0;
+    if (const auto v = p->number())
+        return qint32(*v);
+    return std::nullopt;
+}
 const QStringList kFeederSeries = {QStringLiteral("fed"), QStringLiteral("speed"),
                                    QStringLiteral("feeding")};
 } // namespace
@@ -223,16 +236,19 @@ void Session::recordTelemetry(StationModel *station) {
         const QString key = telemetryKey(*station, port->number());
         m_telemetry.ensureBuffer(key, kPortSeries);
         // A sample per tip-temperature reading; the other series carry their latest values.
-        connect(port->param("TT"), &Parameter::updated, this, [this, port, key] {
+        connect(port->param("TT"), &Parameter::updated, this, [this, station, port, key] {
             const auto status = port->param("PS")->number();
             // A series starting at 0 before its first reading would draw a false drop and spoil
-            // the measurements: record once the setpoint and power are known.
-            if (!port->selectedTemperature() || !port->power())
+            // the measurements: record once the setpoint, power and temperatures are known.
+            const auto transistor = carried(port->param("QT"));
+            const auto transformer = carried(station->parameter("TT0"));
+            if (!port->selectedTemperature() || !port->power() || !transistor || !transformer)
                 return;
             m_telemetry.append(key, sampleTimeMs(),
                                {qint32(port->tipTemperature().value_or(0)),
                                 qint32(port->selectedTemperature().value_or(0)),
-                                qint32(port->power().value_or(0)), qint32(status.value_or(0))});
+                                qint32(port->power().value_or(0)), qint32(status.value_or(0)),
+                                *transistor, *transformer});
         });
     }
 }

@@ -40,6 +40,7 @@ private Q_SLOTS:
     void aOneSampleSpikeIsNeverLost();
     void pointsAreInTimeOrderAndLeadInFromTheLeft();
     void readoutIsTheBuffersNewestSampleAtOrBeforeTheInstant();
+    void hardwareTemperaturesAreTracedOnlyWhenAskedAndTheTransformerOnce();
     void followingWindowMovesWithTheData();
     void zoomKeepsTheInstantUnderTheCursorAndStopsFollowing();
     void windowLengthStaysBetween30SecondsAnd24Hours();
@@ -142,6 +143,29 @@ void TestChartsData::readoutIsTheBuffersNewestSampleAtOrBeforeTheInstant() {
     QCOMPARE(at.at(2).display, 10.0); // 100 per mille is 10 %
     QVERIFY(!readoutAt(telemetry, {channel}, traces, kT0 - 1).at(0).valid);
     QVERIFY(readoutText(traces, at, kT0 + 2600).contains(QStringLiteral("P1 tip 210 °C")));
+}
+
+void TestChartsData::hardwareTemperaturesAreTracedOnlyWhenAskedAndTheTransformerOnce() {
+    const QStringList series =
+        kPortSeries + QStringList{QStringLiteral("transistor"), QStringLiteral("transformer")};
+    QList<ChartChannel> channels(2);
+    for (int i = 0; i < 2; ++i) {
+        channels[i].port = i + 1;
+        channels[i].address = QStringLiteral("01");
+        channels[i].series = series;
+    }
+    const auto names = [&channels](model::TemperatureUnit unit, bool hardware) {
+        QStringList out;
+        for (const ChartTrace &t : tracesFor(channels, {0, 1}, unit, hardware))
+            out.append(t.name + QLatin1Char(' ') + t.format.unit);
+        return out;
+    };
+    QCOMPARE(names(model::TemperatureUnit::Celsius, false).size(), 6);
+    const QStringList on = names(model::TemperatureUnit::Fahrenheit, true);
+    QCOMPARE(on.size(), 6 + 2 + 1);
+    QVERIFY(on.contains(QStringLiteral("P1 transistor °F")));
+    QVERIFY(on.contains(QStringLiteral("P2 transistor °F")));
+    QCOMPARE(on.count(QStringLiteral("transformer °F")), 1);
 }
 
 void TestChartsData::followingWindowMovesWithTheData() {

@@ -14,6 +14,7 @@
 #include <QMouseEvent>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
 #include <QWheelEvent>
 #include <memory>
 
@@ -46,6 +47,7 @@ private Q_SLOTS:
     void recordingWritesTheNewSamplesToTheFile();
     void pngExportWritesAnImageOfThePanes();
     void onePanePerPortOnRequest();
+    void hardwareTemperaturesAreDrawnOnRequest();
 
 private:
     void connectDemo();
@@ -261,6 +263,37 @@ void TestChartsPage::onePanePerPortOnRequest() {
     QCOMPARE(m_page->panes().first()->seriesCount(), 3);
     m_page->setPaneLayout(ChartsPage::Layout::Overlaid);
     QCOMPARE(m_page->panes().size(), 2);
+}
+
+// Off by default; on, every port gets its transistor curve and the station one transformer
+// curve, with the simulator's readings (which follow the power drawn, above ambient).
+void TestChartsPage::hardwareTemperaturesAreDrawnOnRequest() {
+    auto *hardware = m_page->findChild<QToolButton *>(QStringLiteral("hardwareButton"));
+    QVERIFY(hardware);
+    QVERIFY(!hardware->isChecked());
+    hardware->click();
+    QCOMPARE(stationPane()->seriesCount(), 12 + 4 + 1);
+    QStringList names;
+    for (const ChartTrace &t : m_page->traces(0))
+        names.append(t.name);
+    QVERIFY2(names.contains(QStringLiteral("P3 transistor")), qPrintable(names.join(u',')));
+    QCOMPARE(names.count(QStringLiteral("transformer")), 1);
+    QCOMPARE(m_page->traces(1).size(), 2); // the feeder has neither
+    waitForSamples(5);
+    m_page->redrawNow();
+    for (int i = 12; i < 17; ++i)
+        QVERIFY2(stationPane()->pointCount(i) > 0, qPrintable(names.at(i)));
+    const QString key = Session::telemetryKey(*m_session->station(), 1);
+    const model::TelemetryBuffer *b = m_session->telemetry().buffer(key);
+    for (const char *series : {"transistor", "transformer"}) {
+        const qint32 newest =
+            b->samples(b->seriesIndex(QLatin1String(series)), b->firstTime(), b->lastTime() + 1)
+                .back()
+                .value;
+        QVERIFY2(newest >= 30 && newest < 100, series); // °C: a real reading, not a 0 filler
+    }
+    hardware->click();
+    QCOMPARE(stationPane()->seriesCount(), 12);
 }
 
 QTEST_MAIN(TestChartsPage)

@@ -51,10 +51,15 @@ double peakRssMb() {
     return 0;
 }
 
+// The series of a live port buffer (Session's).
+const QStringList kSeries = {QStringLiteral("tip"),        QStringLiteral("setpoint"),
+                             QStringLiteral("power"),      QStringLiteral("status"),
+                             QStringLiteral("transistor"), QStringLiteral("transformer")};
+
 // A working day: heat-up, noise, a dip now and then under load, so extremes are not trivial.
+// The hardware temperatures follow the power, read every 2 s as the status values are.
 void fill(Telemetry &telemetry, QList<ChartChannel> &channels) {
-    const QStringList series = {QStringLiteral("tip"), QStringLiteral("setpoint"),
-                                QStringLiteral("power"), QStringLiteral("status")};
+    const QStringList &series = kSeries;
     for (int p = 1; p <= kPorts; ++p) {
         ChartChannel c;
         c.key = QStringLiteral("01/port%1").arg(p);
@@ -66,16 +71,26 @@ void fill(Telemetry &telemetry, QList<ChartChannel> &channels) {
     }
     quint32 random = 1;
     QList<qint32> tips(kPorts, 25);
+    QList<qint32> transistors(kPorts, 30);
+    qint32 transformer = 35;
     for (int i = 0; i < kSamples; ++i) {
+        const bool statusRead = i % 20 == 0;
+        qint32 totalPower = 0;
         for (int p = 0; p < kPorts; ++p) {
             random = random * 1664525u + 1013904223u;
             qint32 &tip = tips[p];
             tip = std::min(350, tip + 5) + int((random >> 28) % 5) - 2;
             if ((random >> 8) % 1000 == 0)
                 tip -= 40;
+            const qint32 power = std::clamp((350 - tip) * 40, 0, 1000);
+            totalPower += power;
+            if (statusRead)
+                transistors[p] = 30 + power * 3 / 100;
             telemetry.append(channels.at(p).key, kStartMs + i * kStepMs,
-                             {tip, 350, std::clamp((350 - tip) * 40, 0, 1000), tip < 340 ? 1 : 0});
+                             {tip, 350, power, tip < 340 ? 1 : 0, transistors.at(p), transformer});
         }
+        if (statusRead)
+            transformer = 35 + totalPower / 100;
     }
 }
 
@@ -314,7 +329,8 @@ int runChartBench(const QStringList &args) {
         for (const ChartChannel &c : std::as_const(channels))
             bytes += telemetry.buffer(c.key)->memoryBytes();
         printFigure(QStringLiteral("telemetry.bytes_per_sample"),
-                    double(bytes) / (double(kSamples) * kPorts * 4), QStringLiteral("B"), 2);
+                    double(bytes) / (double(kSamples) * kPorts * double(kSeries.size())),
+                    QStringLiteral("B"), 2);
         printFigure(QStringLiteral("telemetry.memory_mb"), double(bytes) / (1 << 20),
                     QStringLiteral("MB"));
         printFigure(QStringLiteral("memory.peak_rss_telemetry_mb"), peakRssMb(),

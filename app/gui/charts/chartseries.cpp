@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 #include <QLocale>
+#include <QSet>
 #include <cmath>
 #include <limits>
 
@@ -18,7 +19,8 @@ struct Tr {
 // The wire unit of each telemetry series, as the catalog names it (TTx, STx: degC; PPx: permille;
 // FDL: dmm; SPD: dmmPerSecond), so the chart scales exactly as the settings pages do.
 QString wireUnit(const QString &series) {
-    if (series == QLatin1String("tip") || series == QLatin1String("setpoint"))
+    if (series == QLatin1String("tip") || series == QLatin1String("setpoint") ||
+        isHardwareSeries(series))
         return QStringLiteral("degC");
     if (series == QLatin1String("power"))
         return QStringLiteral("permille");
@@ -86,6 +88,10 @@ QString seriesTitle(const QString &series) {
         return Tr::tr("Speed");
     if (series == QLatin1String("feeding"))
         return Tr::tr("Feeding");
+    if (series == QLatin1String("transistor"))
+        return Tr::tr("Transistor");
+    if (series == QLatin1String("transformer"))
+        return Tr::tr("Transformer");
     return series;
 }
 
@@ -137,9 +143,14 @@ QColor portColor(int port) {
     return kColors[qMax(0, port - 1) % int(std::size(kColors))];
 }
 
+bool isHardwareSeries(const QString &series) {
+    return series == QLatin1String("transistor") || series == QLatin1String("transformer");
+}
+
 QList<ChartTrace> tracesFor(const QList<ChartChannel> &channels, const QList<int> &which,
-                            model::TemperatureUnit unit) {
+                            model::TemperatureUnit unit, bool hardware) {
     QList<ChartTrace> out;
+    QSet<QString> transformers; // one curve per station, however many of its ports are shown
     for (int index : which) {
         const ChartChannel &c = channels.at(index);
         const QColor base = c.isFeeder() ? portColor(1) : portColor(c.port);
@@ -147,9 +158,19 @@ QList<ChartTrace> tracesFor(const QList<ChartChannel> &channels, const QList<int
         for (const QString &series : c.series) {
             ChartTrace t{index, series,        prefix + seriesTitle(series).toLower(),
                          base,  Qt::SolidLine, seriesFormat(series, unit)};
-            if (!t.format.plotted)
+            if (!t.format.plotted || (isHardwareSeries(series) && !hardware))
                 continue;
-            if (series == QLatin1String("setpoint")) {
+            if (series == QLatin1String("transformer")) {
+                if (transformers.contains(c.address))
+                    continue;
+                transformers.insert(c.address);
+                t.name = seriesTitle(series).toLower();
+                t.color = QColor(0x55, 0x55, 0x55);
+                t.style = Qt::DashDotDotLine;
+            } else if (series == QLatin1String("transistor")) {
+                t.color = base.darker(150);
+                t.style = Qt::DashDotLine;
+            } else if (series == QLatin1String("setpoint")) {
                 t.style = Qt::DashLine;
             } else if (series == QLatin1String("power") || series == QLatin1String("speed")) {
                 t.style = Qt::DotLine;

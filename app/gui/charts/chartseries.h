@@ -77,7 +77,11 @@ struct ChartTrace {
 // or fed length and speed of a feeder channel. Colours follow the port, so overlaid ports differ
 // and a port keeps its colour in its own pane.
 [[nodiscard]] QList<ChartTrace> tracesFor(const QList<ChartChannel> &channels,
-                                          const QList<int> &which, model::TemperatureUnit unit);
+                                          const QList<int> &which, model::TemperatureUnit unit,
+                                          bool hardware = false);
+// The transistor and transformer temperatures, which a pane draws only when asked (`hardware`
+// above); the transformer's is the station's, drawn once per station.
+[[nodiscard]] bool isHardwareSeries(const QString &series);
 [[nodiscard]] QColor portColor(int port);
 
 } // namespace tipscope::gui

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QScrollArea>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <cmath>
 
@@ -169,7 +170,8 @@ void ChartsPage::rebuildPanes() {
     m_tolerance->setSuffix(QLatin1Char(' ') + temp.unit);
     for (Pane &pane : m_panes) {
         const ChartChannel &first = cs.at(pane.channels.first());
-        pane.traces = tracesFor(cs, pane.channels, m_session.temperatureUnit());
+        pane.traces =
+            tracesFor(cs, pane.channels, m_session.temperatureUnit(), m_hardware->isChecked());
         pane.widget = new ChartWidget(m_panesHost);
         QList<ChartSeriesStyle> styles;
         for (const ChartTrace &t : std::as_const(pane.traces))

@@ -125,6 +125,7 @@ private:
     QComboBox *m_window = nullptr;
     QComboBox *m_layoutBox = nullptr;
     QToolButton *m_follow = nullptr;
+    QToolButton *m_hardware = nullptr; // checked: transistor and transformer curves too
     QToolButton *m_record = nullptr;
     QToolButton *m_live = nullptr;
     QLabel *m_source = nullptr;

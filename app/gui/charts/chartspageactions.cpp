@@ -80,6 +80,12 @@ void ChartsPage::buildToolbar(QVBoxLayout *layout) {
     connect(m_layoutBox, &QComboBox::activated, this,
             [this](int i) { setPaneLayout(i == 0 ? Layout::Overlaid : Layout::PerPort); });
 
+    m_hardware = toolButton(tr("Trans&istor, transformer"), QStringLiteral("hardwareButton"), this);
+    m_hardware->setCheckable(true);
+    m_hardware->setToolTip(tr("Also draw each port's transistor temperature and the station's "
+                              "transformer temperature (read every few seconds)"));
+    connect(m_hardware, &QToolButton::toggled, this, &ChartsPage::rebuildPanes);
+
     auto *exportButton = toolButton(tr("&Export"), QStringLiteral("exportButton"), this);
     exportButton->setPopupMode(QToolButton::InstantPopup);
     auto *exportMenu = new QMenu(exportButton);
@@ -106,9 +112,9 @@ void ChartsPage::buildToolbar(QVBoxLayout *layout) {
 
     for (QWidget *w : {static_cast<QWidget *>(windowLabel), static_cast<QWidget *>(m_window),
                        static_cast<QWidget *>(m_follow), static_cast<QWidget *>(reset),
-                       static_cast<QWidget *>(m_layoutBox), static_cast<QWidget *>(exportButton),
-                       static_cast<QWidget *>(m_record), static_cast<QWidget *>(open),
-                       static_cast<QWidget *>(m_live)})
+                       static_cast<QWidget *>(m_layoutBox), static_cast<QWidget *>(m_hardware),
+                       static_cast<QWidget *>(exportButton), static_cast<QWidget *>(m_record),
+                       static_cast<QWidget *>(open), static_cast<QWidget *>(m_live)})
         row->addWidget(w);
     row->addWidget(m_source, 1);
     layout->addLayout(row);
