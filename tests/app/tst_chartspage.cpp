@@ -261,6 +261,8 @@ void TestChartsPage::onePanePerPortOnRequest() {
     m_page->setPaneLayout(ChartsPage::Layout::PerPort);
     QCOMPARE(m_page->panes().size(), 5);
     QCOMPARE(m_page->panes().first()->seriesCount(), 3);
+    QCOMPARE(m_page->panes().first()->legendEntries(),
+             (QStringList{"P1 tip", "P1 setpoint", "P1 power"}));
     m_page->setPaneLayout(ChartsPage::Layout::Overlaid);
     QCOMPARE(m_page->panes().size(), 2);
 }
@@ -271,8 +273,13 @@ void TestChartsPage::hardwareTemperaturesAreDrawnOnRequest() {
     auto *hardware = m_page->findChild<QToolButton *>(QStringLiteral("hardwareButton"));
     QVERIFY(hardware);
     QVERIFY(!hardware->isChecked());
+    QCOMPARE(stationPane()->legendEntries(),
+             (QStringList{"Port 1", "Port 2", "Port 3", "Port 4", "tip", "setpoint", "power"}));
     hardware->click();
     QCOMPARE(stationPane()->seriesCount(), 12 + 4 + 1);
+    // A colour per port and a dash per kind: what fits in one row above the plot.
+    QCOMPARE(stationPane()->legendEntries().mid(4),
+             (QStringList{"tip", "setpoint", "power", "transistor", "transformer"}));
     QStringList names;
     for (const ChartTrace &t : m_page->traces(0))
         names.append(t.name);

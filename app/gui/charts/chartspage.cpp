@@ -177,7 +177,7 @@ void ChartsPage::rebuildPanes() {
         for (const ChartTrace &t : std::as_const(pane.traces))
             styles.append({first.isFeeder() ? tr("%1 (%2)").arg(t.name, t.format.unit) : t.name,
                            t.color, t.style, t.format.axis});
-        pane.widget->setSeries(styles);
+        pane.widget->setSeries(styles, overlaidLegend(cs, pane));
         const QString device = tr("%1 at %2").arg(first.deviceModel, first.address);
         if (first.isFeeder()) {
             // A short pane: the units go in the legend, rotated axis titles would not fit.
@@ -266,6 +266,27 @@ void ChartsPage::redraw() {
     m_window->setCurrentIndex(m_window->findData(m_viewport.windowMs()));
     if (!m_measureTimer.isActive())
         m_measureTimer.start(m_viewport.isFollowing() ? kMeasureFollowingMs : kMeasureSettleMs);
+}
+
+// Ports overlaid: a solid line in each port's colour, then a grey line per kind of value in its
+// dash ("P1 tip", "P1 setpoint"... for every port would not fit above the plot). Empty for a
+// pane of one channel, whose legend names each curve.
+QList<ChartSeriesStyle> ChartsPage::overlaidLegend(const QList<ChartChannel> &cs,
+                                                   const Pane &pane) {
+    QList<ChartSeriesStyle> legend;
+    if (pane.channels.size() < 2)
+        return legend;
+    for (int c : pane.channels)
+        legend.append({cs.at(c).title, portColor(cs.at(c).port), Qt::SolidLine, ChartAxis::Left});
+    QStringList kinds;
+    for (const ChartTrace &t : pane.traces) {
+        if (kinds.contains(t.series))
+            continue;
+        kinds.append(t.series);
+        legend.append(
+            {seriesTitle(t.series).toLower(), QColor(0x60, 0x60, 0x60), t.style, t.format.axis});
+    }
+    return legend;
 }
 
 void ChartsPage::drawPane(Pane &pane) {

@@ -39,6 +39,7 @@ class ChartRecorder;
 class ChartWidget;
 struct ChartBand;
 struct ChartMarker;
+struct ChartSeriesStyle;
 struct ChartRecording;
 
 class ChartsPage : public Page {
@@ -105,6 +106,8 @@ private:
     [[nodiscard]] const ChartEvents &events() const;
     [[nodiscard]] QList<ChartMarker> markersFor(const Pane &pane) const;
     [[nodiscard]] QList<ChartBand> bandsFor(const Pane &pane) const;
+    [[nodiscard]] static QList<ChartSeriesStyle> overlaidLegend(const QList<ChartChannel> &cs,
+                                                                const Pane &pane);
 
     ChartViewport m_viewport;
     QTimer m_redrawTimer;

@@ -211,10 +211,20 @@ void ChartWidget::setTitle(const QString &title) {
 void ChartWidget::setCompact(bool compact) {
     d->compact = compact;
     d->chart->setTitle(compact ? QString() : d->title);
-    d->chart->legend()->setAlignment(compact ? Qt::AlignRight : Qt::AlignTop);
+    d->placeLegend();
 }
 
-void ChartWidget::setSeries(const QList<ChartSeriesStyle> &styles) {
+// Above the plot the legend is one row, and Qt Charts cuts its names short ("P1 …") when they do
+// not fit: a short pane, or more entries than four ports' tip, setpoint and power, list them on
+// the right, one a line.
+void ChartWidgetPrivate::placeLegend() {
+    constexpr qsizetype kOneRow = 12;
+    chart->legend()->setAlignment(compact || series.size() > kOneRow ? Qt::AlignRight
+                                                                     : Qt::AlignTop);
+}
+
+void ChartWidget::setSeries(const QList<ChartSeriesStyle> &styles,
+                            const QList<ChartSeriesStyle> &legend) {
     for (QLineSeries *s : std::as_const(d->series)) {
         d->chart->removeSeries(s);
         delete s;
@@ -223,7 +233,9 @@ void ChartWidget::setSeries(const QList<ChartSeriesStyle> &styles) {
     d->styles = styles;
     d->points = QList<QList<QPointF>>(styles.size());
     bool anyRight = false;
-    for (const ChartSeriesStyle &style : styles) {
+    for (const ChartSeriesStyle &style : styles)
+        anyRight = anyRight || style.axis == ChartAxis::Right;
+    for (const ChartSeriesStyle &style : legend.isEmpty() ? styles : legend) {
         // The series stays empty: it gives the legend its entry and nothing else. The curve is
         // drawn by ChartPlotView (see drawTraces()).
         auto *s = new QLineSeries;
@@ -235,10 +247,10 @@ void ChartWidget::setSeries(const QList<ChartSeriesStyle> &styles) {
         s->setOpacity(0);
         s->attachAxis(d->timeAxis);
         s->attachAxis(style.axis == ChartAxis::Left ? d->leftAxis : d->rightAxis);
-        anyRight = anyRight || style.axis == ChartAxis::Right;
         d->series.append(s);
     }
     d->rightAxis->setVisible(anyRight);
+    d->placeLegend();
 }
 
 void ChartWidget::setAxisTitle(ChartAxis axis, const QString &title) {
@@ -307,7 +319,14 @@ void ChartWidget::setEmptyText(const QString &text) {
 }
 
 int ChartWidget::seriesCount() const {
-    return int(d->series.size());
+    return int(d->styles.size());
+}
+
+QStringList ChartWidget::legendEntries() const {
+    QStringList names;
+    for (const QLineSeries *s : std::as_const(d->series))
+        names.append(s->name());
+    return names;
 }
 
 qsizetype ChartWidget::pointCount(int index) const {

@@ -74,7 +74,10 @@ public:
     void setTitle(const QString &title);
     // For short panes: no title (it stays the accessible name) and the legend at the side.
     void setCompact(bool compact);
-    void setSeries(const QList<ChartSeriesStyle> &series);
+    // The curves, and the legend's entries when they should not be one per curve (ports
+    // overlaid: a colour per port and a dash per kind of value, rather than every pair).
+    void setSeries(const QList<ChartSeriesStyle> &series,
+                   const QList<ChartSeriesStyle> &legend = {});
     void setAxisTitle(ChartAxis axis, const QString &title); // an empty right title hides it
     void setTimeRange(qint64 t0, qint64 t1);
     void setAxisRange(ChartAxis axis, double min, double max);
@@ -91,6 +94,7 @@ public:
     void setEmptyText(const QString &text);
 
     [[nodiscard]] int seriesCount() const;
+    [[nodiscard]] QStringList legendEntries() const;
     [[nodiscard]] qsizetype pointCount(int index) const;
     [[nodiscard]] qint64 timeStart() const;
     [[nodiscard]] qint64 timeEnd() const;

@@ -64,6 +64,7 @@ public:
     [[nodiscard]] QRectF plot() const { return chart->plotArea(); }
     [[nodiscard]] double yAt(ChartAxis axis, double value, const QRectF &plot) const;
     void placeOverlays();
+    void placeLegend();
     void updatePlot();
     // Ticks on round times (every 10 s, 1 min, 1 h...), which QDateTimeAxis cannot do: its
     // ticks divide the range evenly, so a moving window would show 03:10:47, 03:11:30...
@@ -83,7 +84,7 @@ public:
     QValueAxis *timeAxis = nullptr;
     QValueAxis *leftAxis = nullptr;
     QValueAxis *rightAxis = nullptr;
-    QList<QLineSeries *> series; // legend entries only, never given points
+    QList<QLineSeries *> series; // the legend's entries, never given points
     QList<ChartSeriesStyle> styles;
     QList<QList<QPointF>> points; // per series, in display units against time in ms
     QGraphicsLineItem *crosshair;
