@@ -118,8 +118,14 @@ void ParameterEditor::refreshFromParameter() {
         if (!special)
             m_spin->setValue(toDisplay(p.spec(), *shown, t));
     }
-    if (m_combo && shown)
-        m_combo->setCurrentIndex(m_combo->findData(int(*shown)));
+    // Not read yet, a box shows a dash: its minimum there would read as the device's value.
+    if (m_spin) {
+        m_spin->setSpecialValueText(shown ? QString() : QStringLiteral("—"));
+        if (!shown)
+            m_spin->setValue(m_spin->minimum());
+    }
+    if (m_combo)
+        m_combo->setCurrentIndex(shown ? m_combo->findData(int(*shown)) : -1);
     m_updating = false;
     refreshState();
 }
