@@ -1,0 +1,138 @@
+// The command catalog's words (names, descriptions, value labels, error tables) come out in the
+// user interface language wherever people read them, with TipScope's real German catalogue
+// loaded, while what is data keeps the catalog's English. The catalogue is the one embedded by
+// the build, so a text lupdate did not collect (scripts/gen-catalog-strings not run) or a label
+// shown without catalogText() stays English here and fails.
+#include "../model/simfixture.h"
+#include "i18n/translations.h"
+#include "model/supportreport.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QTranslator>
+
+using namespace tipscope;
+using namespace tipscope::model;
+using namespace tipscope::protocol;
+using namespace tipscope::testing;
+
+class TestCatalogTranslation : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+    void parameterNamesDescriptionsAndValuesAreGerman();
+    void specialLabelsAreAcceptedAndRefusalsExplainedInGerman();
+    void actionsExplainThemselvesInGerman();
+    void errorTablesAreGermanForPeopleAndEnglishAsData();
+    void aNakReachesTheParameterInGerman();
+    void supportReportTextNamesParametersInGerman();
+};
+
+void TestCatalogTranslation::initTestCase() {
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), QStringLiteral("de")),
+             QStringLiteral("de"));
+}
+
+void TestCatalogTranslation::cleanupTestCase() {
+    qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
+}
+
+void TestCatalogTranslation::parameterNamesDescriptionsAndValuesAreGerman() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    auto st = f.station();
+    const Parameter *selected = st->parameter("ST1");
+    QCOMPARE(selected->label(), QStringLiteral("Eingestellte Temperatur"));
+    QVERIFY2(selected->description().startsWith(QStringLiteral("Arbeitstemperatur der Spitze")),
+             qPrintable(selected->description()));
+    QCOMPARE(selected->meta().name, QStringLiteral("Selected temperature")); // data stays English
+
+    const Parameter *status = st->parameter("PS1");
+    const TemperatureUnit c = TemperatureUnit::Celsius;
+    QCOMPARE(formatValue(status->spec(), Value::ofNumber(11), c),
+             QStringLiteral("Ablage, Abkühlen"));
+    QCOMPARE(describeValue(status->spec(), Value::ofNumber(11), Wording::Catalog),
+             QStringLiteral("Stand, Cooling"));
+    QCOMPARE(formatValue(st->parameter("HD1")->spec(), Value::ofNumber(99999), c),
+             QStringLiteral("deaktiviert"));
+    QCOMPARE(formatValue(st->parameter("CT1")->spec(), Value::ofNumber(0), c),
+             QStringLiteral("Kein Werkzeug"));
+    QCOMPARE(formatValue(st->parameter("CT1")->spec(), Value::ofNumber(1), c),
+             QStringLiteral("T210")); // model names are not translated
+    QCOMPARE(st->parameter("D12")->allowedText(),
+             QStringLiteral("0 min bis 9 min, oder deaktiviert"));
+}
+
+void TestCatalogTranslation::specialLabelsAreAcceptedAndRefusalsExplainedInGerman() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    auto st = f.station();
+    const ResolvedCommand &status = st->parameter("PS1")->spec();
+    const TemperatureUnit c = TemperatureUnit::Celsius;
+    const ResolvedCommand &delay = st->parameter("D12")->spec();
+    QCOMPARE(parseDisplayText(delay, QStringLiteral("Deaktiviert"), c),
+             std::optional<qint64>(99999));
+    QString error;
+    QVERIFY(!parseUserValue(status, QStringLiteral("Ruhemodus"), &error));
+    QCOMPARE(error,
+             QStringLiteral("'Ruhemodus' ist keine ganze Zahl; für PS1 zulässig: einer der Werte "
+                            "0 (In Betrieb), 1 (Ablage), 10 (Abkühlen)"));
+}
+
+void TestCatalogTranslation::actionsExplainThemselvesInGerman() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    auto st = f.station();
+    const Action *reset = st->action("RSP");
+    QVERIFY(reset);
+    QCOMPARE(reset->name(), QStringLiteral("Werkseinstellungen wiederherstellen"));
+    QVERIFY2(reset->danger().startsWith(QStringLiteral("Alle Einstellungen des Geräts")),
+             qPrintable(reset->danger()));
+}
+
+void TestCatalogTranslation::errorTablesAreGermanForPeopleAndEnglishAsData() {
+    const Catalog &cat = Catalog::builtin();
+    QCOMPARE(cat.portErrorText(QStringLiteral("DME"), 1, Wording::Translated),
+             QStringLiteral("Kurzschluss"));
+    QCOMPARE(cat.portErrorText(QStringLiteral("DME"), 1, Wording::Catalog),
+             QStringLiteral("Short circuit"));
+    QCOMPARE(cat.portErrorText(QStringLiteral("DME"), 42, Wording::Translated),
+             QStringLiteral("Unbekannter Portfehler 42"));
+    QCOMPARE(cat.stationErrorText(QStringLiteral("DME"), 3, Wording::Translated),
+             QStringLiteral("Speicherfehler"));
+    QVERIFY(
+        cat.nakText(3, Wording::Translated).startsWith(QStringLiteral("Außerhalb des Bereichs")));
+    QCOMPARE(cat.feederErrorText(0, Wording::Translated), QStringLiteral("Kein Fehler"));
+}
+
+void TestCatalogTranslation::aNakReachesTheParameterInGerman() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    sim::SimFaults faults;
+    faults.nakAllCode = 3; // out of range
+    f.simLine->setFaults(faults);
+    auto st = f.station();
+    Parameter *p = st->parameter("ST2");
+    QCOMPARE(p->setEdit(300), QString());
+    QSignalSpy done(p, &Parameter::writeFinished);
+    p->apply();
+    QVERIFY(done.wait(10000));
+    QCOMPARE(done.first().at(0).toBool(), false);
+    const QString why = done.first().at(1).toString();
+    QVERIFY2(why.contains(QStringLiteral("NAK 00003: Außerhalb des Bereichs: der Wert liegt")),
+             qPrintable(why));
+    QCOMPARE(p->failure(), why);
+}
+
+void TestCatalogTranslation::supportReportTextNamesParametersInGerman() {
+    // The JSON half of the report carries the catalog's English name; the text half is read by
+    // people and names the parameter in their language.
+    const QJsonObject value{{QStringLiteral("code"), QStringLiteral("ST1")},
+                            {QStringLiteral("name"), QStringLiteral("Selected temperature")},
+                            {QStringLiteral("text"), QStringLiteral("350 °C")}};
+    const QJsonObject device{{QStringLiteral("values"), QJsonArray{value}}};
+    const QString text =
+        supportReportText(QJsonObject{{QStringLiteral("devices"), QJsonArray{device}}});
+    QVERIFY2(text.contains(QStringLiteral("  ST1  Eingestellte Temperatur: 350 °C\n")),
+             qPrintable(text));
+}
+
+QTEST_GUILESS_MAIN(TestCatalogTranslation)
+#include "tst_catalogtranslation.moc"
