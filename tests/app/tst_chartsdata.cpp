@@ -3,6 +3,7 @@
 // heat-up and recovery measurements.
 #include "charts/chartframe.h"
 #include "charts/chartviewport.h"
+#include "charts/measurementreport.h"
 #include "charts/measurements.h"
 
 #include <QSignalSpy>
@@ -48,6 +49,7 @@ private Q_SLOTS:
     void heatUpRunsFromTheSetpointChangeUntilWithinTheBand();
     void recoveryRunsFromLeavingTheBandUntilBackInIt();
     void restsAndAnUnheatedTipAreNoDips();
+    void theReportGivesEachSeriesItsWindowStatsThreeToALine();
 };
 
 void TestChartsData::decimatedPointsKeepEveryColumnsTrueMinAndMax_data() {
@@ -268,6 +270,39 @@ void TestChartsData::restsAndAnUnheatedTipAreNoDips() {
     for (int i = 0; i < 100; ++i)
         fresh.append(kT0 + i * 100, {25 + 3 * i, i < 10 ? 0 : 350, 1000, 0});
     QVERIFY(Measurements::measurePort(fresh, kT0, kT0 + 10'000, 5).heatUps.isEmpty());
+}
+
+void TestChartsData::theReportGivesEachSeriesItsWindowStatsThreeToALine() {
+    const QStringList series =
+        kPortSeries + QStringList{QStringLiteral("transistor"), QStringLiteral("transformer")};
+    model::Telemetry telemetry;
+    telemetry.ensureBuffer(QStringLiteral("01/port1"), series);
+    for (int i = 0; i < 100; ++i) // the tip within the band: no dips
+        telemetry.append(QStringLiteral("01/port1"), kT0 + i * 100,
+                         {346 + i % 9, 350, 100 + i, 0, 40 + i / 10, 55});
+    ChartChannel port;
+    port.key = QStringLiteral("01/port1");
+    port.port = 1;
+    port.title = QStringLiteral("Port 1");
+    port.series = series;
+    ChartChannel missing = port;
+    missing.key = QStringLiteral("01/port2");
+    ChartChannel idle = port;
+    idle.key = QStringLiteral("01/port3");
+    idle.title = QStringLiteral("Port 3");
+    telemetry.ensureBuffer(idle.key, series);
+    MeasurementRequest request;
+    request.t0 = kT0;
+    request.t1 = kT0 + 10'000;
+    const QStringList lines =
+        measurementReport(telemetry, {port, missing, idle}, request).split(QLatin1Char('\n'));
+    QCOMPARE(lines.size(), 3);
+    QCOMPARE(lines.at(0), QStringLiteral("Port 1 — Tip: min 346 °C, max 354 °C, mean 350.0 °C; "
+                                         "Setpoint: min 350 °C, max 350 °C, mean 350.0 °C; "
+                                         "Power: min 10.0 %, max 19.9 %, mean 14.95 %"));
+    QCOMPARE(lines.at(1), QStringLiteral("    Transistor: min 40 °C, max 49 °C, mean 44.5 °C; "
+                                         "Transformer: min 55 °C, max 55 °C, mean 55.0 °C"));
+    QCOMPARE(lines.at(2), QStringLiteral("Port 3: no samples in this window"));
 }
 
 QTEST_GUILESS_MAIN(TestChartsData)

@@ -15,6 +15,9 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(MeasurementReport)
 };
 
+constexpr qsizetype kFactsPerLine = 3;
+const QString kSep = QStringLiteral("; ");
+
 QString clock(qint64 ms) {
     return QDateTime::fromMSecsSinceEpoch(ms).toString(QStringLiteral("HH:mm:ss"));
 }
@@ -92,7 +95,11 @@ QString measurementReport(const model::Telemetry &telemetry, const QList<ChartCh
             lines.append(Tr::tr("%1: no samples in this window").arg(c.title));
             continue;
         }
-        lines.append(c.title + QStringLiteral(" — ") + facts.join(QStringLiteral("; ")));
+        // Three facts a line: with the transistor and transformer curves on, one line of five
+        // would wrap mid-fact in the panel's width.
+        lines.append(c.title + QStringLiteral(" — ") + facts.mid(0, kFactsPerLine).join(kSep));
+        for (qsizetype i = kFactsPerLine; i < facts.size(); i += kFactsPerLine)
+            lines.append(QStringLiteral("    ") + facts.mid(i, kFactsPerLine).join(kSep));
         if (c.isFeeder())
             continue;
         const PortMeasurements m =
