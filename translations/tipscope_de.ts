@@ -1728,6 +1728,49 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>Event</name>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="38"/>
+        <source>Station error</source>
+        <translation>Stationsfehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="40"/>
+        <source>Port error</source>
+        <translation>Portfehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="42"/>
+        <source>Feeder error</source>
+        <translation>Vorschubfehler</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <source>Communication</source>
+        <translation>Kommunikation</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+</context>
+<context>
     <name>FeederModel</name>
     <message>
         <location filename="../lib/model/feedermodel.cpp" line="57"/>
@@ -1938,32 +1981,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="30"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="33"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: Min. %2, Max. %3, Mittel %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="39"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="42"/>
         <source>wake</source>
         <translation>Aufwachen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="39"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="42"/>
         <source>heat-up</source>
         <translation>Aufheizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="41"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="44"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 um %2 auf %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="44"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="47"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 um %2 auf %3: in diesem Zeitfenster nicht erreicht</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="51"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n weiteres Aufheizen</numerusform>
@@ -1971,17 +2014,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="57"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="60"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>Erholung um %1: %2 (Einbruch auf %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="60"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="63"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>Einbruch um %1 auf %2: in diesem Zeitfenster nicht erholt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="67"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n weitere Erholung</numerusform>
@@ -1989,22 +2032,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="72"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="75"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="74"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="77"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="75"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="92"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="95"/>
         <source>%1: no samples in this window</source>
         <translation>%1: keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -2393,41 +2436,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="39"/>
-        <location filename="../lib/model/session.cpp" line="109"/>
-        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="40"/>
+        <location filename="../lib/model/session.cpp" line="110"/>
+        <location filename="../lib/model/session.cpp" line="113"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="108"/>
-        <location filename="../lib/model/session.cpp" line="119"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="120"/>
+        <location filename="../lib/model/session.cpp" line="127"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="142"/>
+        <location filename="../lib/model/session.cpp" line="143"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="211"/>
+        <location filename="../lib/model/session.cpp" line="212"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="217"/>
+        <location filename="../lib/model/session.cpp" line="218"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="226"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -2599,7 +2642,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="362"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="381"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -2611,7 +2654,7 @@ Dauerhaft mit dieser udev-Regel:
     <name>tipscope::gui::ChartsPage</name>
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
-        <location filename="../app/gui/charts/chartspage.h" line="53"/>
+        <location filename="../app/gui/charts/chartspage.h" line="54"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
@@ -2676,7 +2719,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="291"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="312"/>
         <source>No samples in this window</source>
         <translation>Keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -3688,8 +3731,8 @@ Fortfahren?</translation>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
         <location filename="../app/gui/pages/errorspage.cpp" line="72"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="577"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="592"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="555"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="570"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
@@ -3710,342 +3753,310 @@ Fortfahren?</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/errorspage.cpp" line="80"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="119"/>
-        <source>Station error</source>
-        <translation>Stationsfehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="121"/>
-        <source>Port error</source>
-        <translation>Portfehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="123"/>
-        <source>Feeder error</source>
-        <translation>Vorschubfehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="125"/>
-        <source>Alarm</source>
-        <translation>Alarm</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="127"/>
-        <source>Status</source>
-        <translation>Status</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="129"/>
-        <source>Write</source>
-        <translation>Schreiben</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="383"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="361"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="133"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="362"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="233"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="257"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="235"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="259"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="237"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="261"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="239"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="263"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="241"/>
         <source>What happened</source>
         <translation>Ereignis</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="315"/>
         <source>Current state</source>
         <translation>Aktueller Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="318"/>
         <source>Current errors and alarms</source>
         <translation>Aktuelle Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Where</source>
         <translation>Ort</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Temperature alarm</source>
         <translation>Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="331"/>
         <source>&amp;Reset feeder error</source>
         <translation>Vorschubfehler &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="333"/>
         <source>Reset feeder error</source>
         <translation>Vorschubfehler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="335"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="370"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="348"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
         <source>Show events of kind</source>
         <translation>Ereignisse dieser Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="352"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="375"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
         <source>Errors and alarms</source>
         <translation>Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="355"/>
         <source>Station errors</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="356"/>
         <source>Port errors</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="379"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="357"/>
         <source>Feeder errors</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="358"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="381"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="359"/>
         <source>Status changes</source>
         <translation>Statuswechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="360"/>
         <source>Writes</source>
         <translation>Schreibzugriffe</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="389"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="367"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="390"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="368"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="369"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="392"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="370"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="396"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="376"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="400"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="402"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="419"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="397"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="443"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="421"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="449"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="427"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="450"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="428"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="452"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="430"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="453"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="431"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="454"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="432"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="456"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="434"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="457"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="725"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="732"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="703"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="710"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="459"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="511"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="489"/>
         <source>No device is connected.</source>
         <translation>Kein Gerät verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="561"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="539"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="579"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="557"/>
         <source>Error code %1: %2</source>
         <translation>Fehlercode %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="586"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="564"/>
         <source>High temperature</source>
         <translation>Übertemperatur</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="588"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="566"/>
         <source>Low temperature</source>
         <translation>Untertemperatur</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="590"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="568"/>
         <source>None</source>
         <translation>Keiner</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="604"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="582"/>
         <source>This device has no temperature alarm</source>
         <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="613"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="591"/>
         <source>Not reset: %1</source>
         <translation>Nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="616"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="594"/>
         <source>Resetting the feeder error…</source>
         <translation>Vorschubfehler wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="623"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="601"/>
         <source>Feeder error reset.</source>
         <translation>Vorschubfehler zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="624"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="602"/>
         <source>The feeder error was not reset: %1</source>
         <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="637"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="615"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="640"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="618"/>
         <source>No feeder is connected</source>
         <translation>Kein Lotdrahtvorschub verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="643"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="621"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="674"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="652"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="676"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="654"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4053,17 +4064,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="725"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="703"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="730"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="708"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="733"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="711"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>
@@ -4616,42 +4627,42 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>%1 deaktiviert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="137"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="143"/>
         <source>reading…</source>
         <translation>wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="146"/>
         <source>not saved</source>
         <translation>nicht gesichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="146"/>
         <source>✓ in sync</source>
         <translation>✓ synchron</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="144"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="150"/>
         <source>edited</source>
         <translation>geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="148"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="154"/>
         <source>writing…</source>
         <translation>wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="151"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="157"/>
         <source>✗ failed</source>
         <translation>✗ fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="156"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="162"/>
         <source>✗ refused</source>
         <translation>✗ abgelehnt</translation>
     </message>

@@ -1729,6 +1729,49 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>Event</name>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="38"/>
+        <source>Station error</source>
+        <translation>Error de estación</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="40"/>
+        <source>Port error</source>
+        <translation>Error de puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="42"/>
+        <source>Feeder error</source>
+        <translation>Error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <source>Alarm</source>
+        <translation>Alarma</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <source>Write</source>
+        <translation>Escritura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <source>Communication</source>
+        <translation>Comunicación</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <source>Connection</source>
+        <translation>Conexión</translation>
+    </message>
+</context>
+<context>
     <name>FeederModel</name>
     <message>
         <location filename="../lib/model/feedermodel.cpp" line="57"/>
@@ -1939,32 +1982,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="30"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="33"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: mín. %2, máx. %3, media %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="39"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="42"/>
         <source>wake</source>
         <translation>salida del reposo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="39"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="42"/>
         <source>heat-up</source>
         <translation>calentamiento</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="41"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="44"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 a las %2 hasta %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="44"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="47"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 a las %2 hasta %3: no alcanzado en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="51"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n calentamiento más</numerusform>
@@ -1972,17 +2015,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="57"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="60"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>recuperación a las %1: %2 (caída hasta %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="60"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="63"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>caída a las %1 hasta %2: sin recuperar en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="67"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n recuperación más</numerusform>
@@ -1990,22 +2033,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="72"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="75"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="74"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="77"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="75"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="92"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="95"/>
         <source>%1: no samples in this window</source>
         <translation>%1: sin muestras en esta ventana</translation>
     </message>
@@ -2394,41 +2437,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="39"/>
-        <location filename="../lib/model/session.cpp" line="109"/>
-        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="40"/>
+        <location filename="../lib/model/session.cpp" line="110"/>
+        <location filename="../lib/model/session.cpp" line="113"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="108"/>
-        <location filename="../lib/model/session.cpp" line="119"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="120"/>
+        <location filename="../lib/model/session.cpp" line="127"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="142"/>
+        <location filename="../lib/model/session.cpp" line="143"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="211"/>
+        <location filename="../lib/model/session.cpp" line="212"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="217"/>
+        <location filename="../lib/model/session.cpp" line="218"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="226"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -2600,7 +2643,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="362"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="381"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -2612,7 +2655,7 @@ Hágalo permanente con esta regla de udev:
     <name>tipscope::gui::ChartsPage</name>
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
-        <location filename="../app/gui/charts/chartspage.h" line="53"/>
+        <location filename="../app/gui/charts/chartspage.h" line="54"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
@@ -2677,7 +2720,7 @@ Hágalo permanente con esta regla de udev:
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="291"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="312"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>
@@ -3689,8 +3732,8 @@ Continue?</source>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
         <location filename="../app/gui/pages/errorspage.cpp" line="72"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="577"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="592"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="555"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="570"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
@@ -3711,342 +3754,310 @@ Continue?</source>
     </message>
     <message>
         <location filename="../app/gui/pages/errorspage.cpp" line="80"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="119"/>
-        <source>Station error</source>
-        <translation>Error de estación</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="121"/>
-        <source>Port error</source>
-        <translation>Error de puerto</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="123"/>
-        <source>Feeder error</source>
-        <translation>Error del alimentador</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="125"/>
-        <source>Alarm</source>
-        <translation>Alarma</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="127"/>
-        <source>Status</source>
-        <translation>Estado</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="129"/>
-        <source>Write</source>
-        <translation>Escritura</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="383"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="361"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="133"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="362"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="233"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="257"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="235"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="259"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="237"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="261"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="239"/>
         <source>Source</source>
         <translation>Origen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="263"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="241"/>
         <source>What happened</source>
         <translation>Qué ocurrió</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="315"/>
         <source>Current state</source>
         <translation>Estado actual</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="318"/>
         <source>Current errors and alarms</source>
         <translation>Errores y alarmas actuales</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Where</source>
         <translation>Dónde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
         <source>Temperature alarm</source>
         <translation>Alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="331"/>
         <source>&amp;Reset feeder error</source>
         <translation>&amp;Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="333"/>
         <source>Reset feeder error</source>
         <translation>Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="335"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="370"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="348"/>
         <source>History</source>
         <translation>Historial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
         <source>Show events of kind</source>
         <translation>Mostrar eventos del tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="352"/>
         <source>All kinds</source>
         <translation>Todos los tipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="375"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
         <source>Errors and alarms</source>
         <translation>Errores y alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="355"/>
         <source>Station errors</source>
         <translation>Errores de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="356"/>
         <source>Port errors</source>
         <translation>Errores de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="379"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="357"/>
         <source>Feeder errors</source>
         <translation>Errores del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="358"/>
         <source>Alarms</source>
         <translation>Alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="381"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="359"/>
         <source>Status changes</source>
         <translation>Cambios de estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="360"/>
         <source>Writes</source>
         <translation>Escrituras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="389"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="367"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="390"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="368"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="369"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="392"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="370"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="396"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="376"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="400"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="402"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="419"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="397"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="443"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="421"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="449"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="427"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="450"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="428"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="452"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="430"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="453"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="431"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="454"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="432"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="456"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="434"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="457"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="725"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="732"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="703"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="710"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="459"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="511"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="489"/>
         <source>No device is connected.</source>
         <translation>No hay ningún equipo conectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="561"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="539"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="579"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="557"/>
         <source>Error code %1: %2</source>
         <translation>Código de error %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="586"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="564"/>
         <source>High temperature</source>
         <translation>Temperatura alta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="588"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="566"/>
         <source>Low temperature</source>
         <translation>Temperatura baja</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="590"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="568"/>
         <source>None</source>
         <translation>Ninguna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="604"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="582"/>
         <source>This device has no temperature alarm</source>
         <translation>Este equipo no tiene alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="613"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="591"/>
         <source>Not reset: %1</source>
         <translation>No se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="616"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="594"/>
         <source>Resetting the feeder error…</source>
         <translation>Borrando el error del alimentador…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="623"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="601"/>
         <source>Feeder error reset.</source>
         <translation>Error del alimentador borrado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="624"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="602"/>
         <source>The feeder error was not reset: %1</source>
         <translation>El error del alimentador no se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="637"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="615"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="640"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="618"/>
         <source>No feeder is connected</source>
         <translation>No hay ningún alimentador conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="643"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="621"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="674"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="652"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="676"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="654"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4054,17 +4065,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="725"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="703"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="730"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="708"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="733"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="711"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
@@ -4617,42 +4628,42 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>%1 desactivado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="134"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
         <source>not read</source>
         <translation>no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="137"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="143"/>
         <source>reading…</source>
         <translation>leyendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="146"/>
         <source>not saved</source>
         <translation>no guardado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="146"/>
         <source>✓ in sync</source>
         <translation>✓ sincronizado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="144"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="150"/>
         <source>edited</source>
         <translation>editado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="148"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="154"/>
         <source>writing…</source>
         <translation>escribiendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="151"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="157"/>
         <source>✗ failed</source>
         <translation>✗ falló</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="156"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="162"/>
         <source>✗ refused</source>
         <translation>✗ rechazado</translation>
     </message>

@@ -1,6 +1,14 @@
 #include "eventlog.h"
 
+#include <QCoreApplication>
+
 namespace tipscope::model {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(Event)
+};
+} // namespace
 
 QString Event::kindName(Kind kind) {
     switch (kind) {
@@ -24,6 +32,28 @@ QString Event::kindName(Kind kind) {
     return {};
 }
 
+QString Event::kindTitle(Kind kind) {
+    switch (kind) {
+    case Kind::StationError:
+        return Tr::tr("Station error");
+    case Kind::PortError:
+        return Tr::tr("Port error");
+    case Kind::FeederError:
+        return Tr::tr("Feeder error");
+    case Kind::Alarm:
+        return Tr::tr("Alarm");
+    case Kind::Status:
+        return Tr::tr("Status");
+    case Kind::Write:
+        return Tr::tr("Write");
+    case Kind::Communication:
+        return Tr::tr("Communication");
+    case Kind::Connection:
+        return Tr::tr("Connection");
+    }
+    return {};
+}
+
 QString Event::severityName(Severity severity) {
     switch (severity) {
     case Severity::Info:
@@ -42,7 +72,8 @@ EventLog::EventLog(QObject *parent, int capacity)
 
 void EventLog::append(Event event) {
     if (!event.time.isValid())
-        event.time = QDateTime::currentDateTime();
+        event.time =
+            m_clock ? QDateTime::fromMSecsSinceEpoch(m_clock()) : QDateTime::currentDateTime();
     m_events.push_back(event);
     while (int(m_events.size()) > m_capacity) {
         m_events.pop_front();
@@ -53,7 +84,11 @@ void EventLog::append(Event event) {
 
 void EventLog::add(Event::Kind kind, Event::Severity severity, const QString &source,
                    const QString &text) {
-    append({QDateTime::currentDateTime(), kind, severity, source, text});
+    append({QDateTime(), kind, severity, source, text});
+}
+
+void EventLog::setClock(std::function<qint64()> msSinceEpoch) {
+    m_clock = std::move(msSinceEpoch);
 }
 
 QList<Event> EventLog::events() const {

@@ -6,6 +6,7 @@
 #include <QDateTime>
 #include <QObject>
 #include <deque>
+#include <functional>
 
 namespace tipscope::model {
 
@@ -27,8 +28,11 @@ struct Event {
     QString source; // "DME-2C at 01, port 2"
     QString text;   // "Short circuit"
 
+    // Stable English keys, for files other programs read (the support report).
     [[nodiscard]] static QString kindName(Kind kind);
     [[nodiscard]] static QString severityName(Severity severity);
+    // For people, in the user's language: "Station error", "Write".
+    [[nodiscard]] static QString kindTitle(Kind kind);
 };
 
 class EventLog : public QObject {
@@ -44,6 +48,11 @@ public:
     [[nodiscard]] qint64 dropped() const { return m_dropped; }
     void clear();
 
+    // Where an event without a time gets its time (milliseconds since the epoch). The session
+    // hands in the clock its telemetry samples use, so a marker sits on the sample it explains
+    // even after the wall clock was set; the default is the wall clock.
+    void setClock(std::function<qint64()> msSinceEpoch);
+
 Q_SIGNALS:
     void appended(const tipscope::model::Event &event);
     void cleared();
@@ -52,6 +61,7 @@ private:
     std::deque<Event> m_events;
     int m_capacity;
     qint64 m_dropped = 0;
+    std::function<qint64()> m_clock;
 };
 
 } // namespace tipscope::model

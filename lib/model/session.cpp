@@ -36,6 +36,7 @@ Session::Session(QObject *parent)
     : QObject(parent)
     , m_clockBaseMs(QDateTime::currentMSecsSinceEpoch()) {
     m_clock.start();
+    m_log.setClock([this] { return sampleTimeMs(); });
     m_stateText = Tr::tr("disconnected");
 }
 

@@ -125,10 +125,10 @@ void TestChartsPage::statusChangesInjectedInTheSimulatorGetMarkers() {
         return all.join(QLatin1Char('\n'));
     };
     // The demo's tool sleeps at once in the stand, so the first reading may already say Sleep.
-    QTRY_VERIFY2_WITH_TIMEOUT(tooltips().contains(QStringLiteral("Port 2 · status: Working → ")),
+    QTRY_VERIFY2_WITH_TIMEOUT(tooltips().contains(QStringLiteral("Port 2 · Status: Working → ")),
                               qPrintable(tooltips() + QStringLiteral(" | log: ") + logText()),
                               kDataMs);
-    QTRY_VERIFY2_WITH_TIMEOUT(tooltips().contains(QStringLiteral("Port 3 · port error: ")),
+    QTRY_VERIFY2_WITH_TIMEOUT(tooltips().contains(QStringLiteral("Port 3 · Port error: ")),
                               qPrintable(tooltips() + QStringLiteral(" | log: ") + logText()),
                               kDataMs);
     // Port 2's marker is not on the feeder's pane.

@@ -1,8 +1,8 @@
-// The command catalog's words (names, descriptions, value labels, error tables) come out in the
-// user interface language wherever people read them, with TipScope's real German catalogue
-// loaded, while what is data keeps the catalog's English. The catalogue is the one embedded by
-// the build, so a text lupdate did not collect (scripts/gen-catalog-strings not run) or a label
-// shown without catalogText() stays English here and fails.
+// The command catalog's words (names, descriptions, value labels, error tables) and the event
+// log's kinds come out in the user interface language wherever people read them, with TipScope's
+// real German catalogue loaded, while what is data keeps the catalog's English. The catalogue is
+// the one embedded by the build, so a text lupdate did not collect (scripts/gen-catalog-strings not
+// run) or a label shown without catalogText() stays English here and fails.
 #include "../model/simfixture.h"
 #include "i18n/translations.h"
 #include "model/supportreport.h"
@@ -27,6 +27,7 @@ private Q_SLOTS:
     void errorTablesAreGermanForPeopleAndEnglishAsData();
     void aNakReachesTheParameterInGerman();
     void supportReportTextNamesParametersInGerman();
+    void eventKindsAreGermanForPeopleAndEnglishAsData();
 };
 
 void TestCatalogTranslation::initTestCase() {
@@ -132,6 +133,13 @@ void TestCatalogTranslation::supportReportTextNamesParametersInGerman() {
         supportReportText(QJsonObject{{QStringLiteral("devices"), QJsonArray{device}}});
     QVERIFY2(text.contains(QStringLiteral("  ST1  Eingestellte Temperatur: 350 °C\n")),
              qPrintable(text));
+}
+
+void TestCatalogTranslation::eventKindsAreGermanForPeopleAndEnglishAsData() {
+    // The chart markers' tooltips and the Errors page name the kind; the report's JSON keys it.
+    QCOMPARE(Event::kindTitle(Event::Kind::StationError), QStringLiteral("Stationsfehler"));
+    QCOMPARE(Event::kindTitle(Event::Kind::Write), QStringLiteral("Schreiben"));
+    QCOMPARE(Event::kindName(Event::Kind::Write), QStringLiteral("write"));
 }
 
 QTEST_GUILESS_MAIN(TestCatalogTranslation)

@@ -5,8 +5,8 @@
 // Telemetry::samplesAdded (at most 20 a second), flushed each time so a crash loses at most a
 // batch. Each channel keeps a cursor (the last time written and how many samples at that time),
 // so a sample is written exactly once even when two batches share a millisecond. Events are
-// never written before rows already in the file, so the file stays in time order even when the
-// event log's clock and the telemetry's monotonic clock disagree by a few milliseconds.
+// never written before rows already in the file, so the file stays in time order even when an
+// event reaches the recorder after a batch holding samples stamped later than it.
 //
 // A failed write stops the recording and reports why through failed(); the file keeps what was
 // written. The recorder reads the telemetry; it does not own it, and stops writing if the

@@ -46,7 +46,7 @@ QList<ChartMarker> ChartsPage::markersFor(const Pane &pane) const {
                         tr("%1 · %2 · %3: %4")
                             .arg(QDateTime::fromMSecsSinceEpoch(e.timeMs).toString(
                                      QStringLiteral("HH:mm:ss.zzz")),
-                                 where, Event::kindName(e.kind), e.text)});
+                                 where, Event::kindTitle(e.kind), e.text)});
             break;
         }
     }

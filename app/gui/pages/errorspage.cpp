@@ -113,28 +113,6 @@ QVariant levelTint(Level level) {
     }
 }
 
-QString kindText(Event::Kind kind) {
-    switch (kind) {
-    case Event::Kind::StationError:
-        return ErrorsPage::tr("Station error");
-    case Event::Kind::PortError:
-        return ErrorsPage::tr("Port error");
-    case Event::Kind::FeederError:
-        return ErrorsPage::tr("Feeder error");
-    case Event::Kind::Alarm:
-        return ErrorsPage::tr("Alarm");
-    case Event::Kind::Status:
-        return ErrorsPage::tr("Status");
-    case Event::Kind::Write:
-        return ErrorsPage::tr("Write");
-    case Event::Kind::Communication:
-        return ErrorsPage::tr("Communication");
-    case Event::Kind::Connection:
-        return ErrorsPage::tr("Connection");
-    }
-    return {};
-}
-
 constexpr quint32 bit(Event::Kind kind) {
     return 1u << int(kind);
 }
@@ -212,7 +190,7 @@ public:
         case Severity:
             return levelName(levelOf(e.severity));
         case Kind:
-            return kindText(e.kind);
+            return Event::kindTitle(e.kind);
         case Source:
             return e.source;
         case Text:
@@ -437,7 +415,7 @@ QWidget *ErrorsPage::buildHistoryPanel() {
     header->resizeSection(HistoryModel::Severity,
                           fm.horizontalAdvance(levelName(Level::Warning)) + pad);
     header->resizeSection(HistoryModel::Kind,
-                          fm.horizontalAdvance(kindText(Event::Kind::Communication)) + pad);
+                          fm.horizontalAdvance(Event::kindTitle(Event::Kind::Communication)) + pad);
     header->resizeSection(HistoryModel::Source,
                           fm.horizontalAdvance(QStringLiteral("DME-2C at 01, port 4")) + pad);
     auto *copyAction = new QAction(tr("Copy"), m_history);
