@@ -276,33 +276,51 @@ void TestChartsData::theReportGivesEachSeriesItsWindowStatsThreeToALine() {
     const QStringList series =
         kPortSeries + QStringList{QStringLiteral("transistor"), QStringLiteral("transformer")};
     model::Telemetry telemetry;
-    telemetry.ensureBuffer(QStringLiteral("01/port1"), series);
-    for (int i = 0; i < 100; ++i) // the tip within the band: no dips
-        telemetry.append(QStringLiteral("01/port1"), kT0 + i * 100,
-                         {346 + i % 9, 350, 100 + i, 0, 40 + i / 10, 55});
-    ChartChannel port;
-    port.key = QStringLiteral("01/port1");
-    port.port = 1;
-    port.title = QStringLiteral("Port 1");
-    port.series = series;
-    ChartChannel missing = port;
-    missing.key = QStringLiteral("01/port2");
-    ChartChannel idle = port;
+    ChartChannel port1;
+    port1.key = QStringLiteral("01/port1");
+    port1.port = 1;
+    port1.title = QStringLiteral("Port 1");
+    port1.address = QStringLiteral("01");
+    port1.series = series;
+    ChartChannel port2 = port1;
+    port2.key = QStringLiteral("01/port2");
+    port2.port = 2;
+    port2.title = QStringLiteral("Port 2");
+    ChartChannel unrecorded = port1;
+    unrecorded.key = QStringLiteral("01/port4");
+    ChartChannel idle = port1;
     idle.key = QStringLiteral("01/port3");
     idle.title = QStringLiteral("Port 3");
-    telemetry.ensureBuffer(idle.key, series);
+    for (const ChartChannel &c : {port1, port2, idle})
+        telemetry.ensureBuffer(c.key, series);
+    for (int i = 0; i < 100; ++i) { // the tips stay within the band: no dips to list
+        telemetry.append(port1.key, kT0 + i * 100, {346 + i % 9, 350, 100 + i, 0, 40 + i / 10, 55});
+        telemetry.append(port2.key, kT0 + i * 100, {350, 350, 50, 0, 45, 55});
+    }
     MeasurementRequest request;
     request.t0 = kT0;
     request.t1 = kT0 + 10'000;
-    const QStringList lines =
-        measurementReport(telemetry, {port, missing, idle}, request).split(QLatin1Char('\n'));
-    QCOMPARE(lines.size(), 3);
-    QCOMPARE(lines.at(0), QStringLiteral("Port 1 — Tip: min 346 °C, max 354 °C, mean 350.0 °C; "
-                                         "Setpoint: min 350 °C, max 350 °C, mean 350.0 °C; "
-                                         "Power: min 10.0 %, max 19.9 %, mean 14.95 %"));
-    QCOMPARE(lines.at(1), QStringLiteral("    Transistor: min 40 °C, max 49 °C, mean 44.5 °C; "
-                                         "Transformer: min 55 °C, max 55 °C, mean 55.0 °C"));
-    QCOMPARE(lines.at(2), QStringLiteral("Port 3: no samples in this window"));
+    const QList<ChartChannel> channels{port1, port2, unrecorded, idle};
+
+    const QString port1Line = QStringLiteral("Port 1 — Tip: min 346 °C, max 354 °C, mean 350.0 °C; "
+                                             "Setpoint: min 350 °C, max 350 °C, mean 350.0 °C; "
+                                             "Power: min 10.0 %, max 19.9 %, mean 14.95 %");
+    const QString port2Line = QStringLiteral("Port 2 — Tip: min 350 °C, max 350 °C, mean 350.0 °C; "
+                                             "Setpoint: min 350 °C, max 350 °C, mean 350.0 °C; "
+                                             "Power: min 5.0 %, max 5.0 %, mean 5.00 %");
+    const QString idleLine = QStringLiteral("Port 3: no samples in this window");
+    QCOMPARE(measurementReport(telemetry, channels, request).split(QLatin1Char('\n')),
+             (QStringList{port1Line, port2Line, idleLine}));
+
+    // With the hardware curves drawn, their stats too: the transformer once for the station.
+    request.hardware = true;
+    QCOMPARE(measurementReport(telemetry, channels, request).split(QLatin1Char('\n')),
+             (QStringList{port1Line,
+                          QStringLiteral("    Transistor: min 40 °C, max 49 °C, mean 44.5 °C; "
+                                         "Transformer: min 55 °C, max 55 °C, mean 55.0 °C"),
+                          port2Line,
+                          QStringLiteral("    Transistor: min 45 °C, max 45 °C, mean 45.0 °C"),
+                          idleLine}));
 }
 
 QTEST_GUILESS_MAIN(TestChartsData)

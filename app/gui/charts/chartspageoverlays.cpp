@@ -10,6 +10,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QToolButton>
 #include <cmath>
 #include <limits>
 
@@ -130,6 +131,7 @@ void ChartsPage::updateMeasurements() {
     r.t0 = m_viewport.start();
     r.t1 = m_viewport.end();
     r.unit = m_session.temperatureUnit();
+    r.hardware = m_hardware->isChecked();
     // The band is a temperature difference: no 32 °F offset.
     const double scale = seriesFormat(QStringLiteral("tip"), r.unit).scale;
     r.toleranceWire = qMax(1, int(std::lround(m_tolerance->value() / scale)));

@@ -5,6 +5,7 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QLocale>
+#include <QSet>
 
 namespace tipscope::gui {
 
@@ -82,15 +83,24 @@ QString measurementReport(const model::Telemetry &telemetry, const QList<ChartCh
                           const MeasurementRequest &request) {
     QStringList lines;
     const SeriesFormat temp = seriesFormat(QStringLiteral("tip"), request.unit);
+    QSet<QString> transformers; // station addresses whose transformer is already listed
     for (const ChartChannel &c : channels) {
         const TelemetryBuffer *buffer = telemetry.buffer(c.key);
         if (!buffer)
             continue;
         QStringList facts;
-        for (const QString &series : c.series)
-            if (seriesFormat(series, request.unit).plotted)
-                if (const QString line = statsLine(*buffer, series, request); !line.isEmpty())
-                    facts.append(line);
+        for (const QString &series : c.series) {
+            if (!seriesFormat(series, request.unit).plotted ||
+                (isHardwareSeries(series) && !request.hardware))
+                continue;
+            if (series == QLatin1String("transformer") && !c.address.isEmpty()) {
+                if (transformers.contains(c.address))
+                    continue;
+                transformers.insert(c.address);
+            }
+            if (const QString line = statsLine(*buffer, series, request); !line.isEmpty())
+                facts.append(line);
+        }
         if (facts.isEmpty()) {
             lines.append(Tr::tr("%1: no samples in this window").arg(c.title));
             continue;

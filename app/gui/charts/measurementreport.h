@@ -1,6 +1,6 @@
-// The measurement panel's text: for each channel of a window, min/max/mean of every plotted
-// series, then (ports) the heat-ups and recoveries Measurements finds, newest first, in the
-// display units the charts use. Plain text, one line per fact, so it can be copied into a report.
+// The measurement panel's text: for each channel of a window, min/max/mean of every series drawn,
+// then (ports) the heat-ups and recoveries Measurements finds, newest first, in the display units
+// the charts use. Plain text, one line per fact, so it can be copied into a report.
 #pragma once
 
 #include "chartseries.h"
@@ -15,6 +15,8 @@ struct MeasurementRequest {
     qint32 toleranceWire = 5; // °C
     model::TemperatureUnit unit = model::TemperatureUnit::Celsius;
     int maxListed = 5; // heat-ups and recoveries listed per port; the rest are counted
+    // As drawn: the transistor's stats per port, and the transformer's once per station.
+    bool hardware = false;
 };
 
 [[nodiscard]] QString measurementReport(const model::Telemetry &telemetry,
