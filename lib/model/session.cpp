@@ -258,10 +258,14 @@ void Session::recordTelemetry(FeederModel *feeder) {
     const QString key = telemetryKey(*feeder, 0);
     m_telemetry.ensureBuffer(key, kFeederSeries);
     connect(feeder->parameter("FDL"), &Parameter::updated, this, [this, feeder, key] {
-        m_telemetry.append(key, sampleTimeMs(),
-                           {qint32(feeder->fedLength().value_or(0)),
-                            qint32(feeder->parameter("SPD")->number().value_or(0)),
-                            qint32(feeder->isFeeding().value_or(false) ? 1 : 0)});
+        // As for the ports: the speed is a setting read less often than the fed length, and a
+        // 0 before its first reading would draw a false step and spoil the window's mean.
+        const auto fed = carried(feeder->parameter("FDL"));
+        const auto speed = carried(feeder->parameter("SPD"));
+        const auto feeding = carried(feeder->parameter("FDS"));
+        if (!fed || !speed || !feeding)
+            return;
+        m_telemetry.append(key, sampleTimeMs(), {*fed, *speed, *feeding == 1 ? 1 : 0});
     });
 }
 

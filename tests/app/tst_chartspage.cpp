@@ -5,6 +5,7 @@
 #include "charts/chartframe.h"
 #include "charts/chartspage.h"
 #include "charts/chartwidget.h"
+#include "model/feedermodel.h"
 
 #include "sim/simline.h"
 #include "sim/simstation.h"
@@ -48,6 +49,7 @@ private Q_SLOTS:
     void pngExportWritesAnImageOfThePanes();
     void onePanePerPortOnRequest();
     void hardwareTemperaturesAreDrawnOnRequest();
+    void theFeedersSeriesStartAtTheirFirstReadings();
 
 private:
     void connectDemo();
@@ -301,6 +303,22 @@ void TestChartsPage::hardwareTemperaturesAreDrawnOnRequest() {
     }
     hardware->click();
     QCOMPARE(stationPane()->seriesCount(), 12);
+}
+
+void TestChartsPage::theFeedersSeriesStartAtTheirFirstReadings() {
+    model::FeederModel *feeder = m_session->feeder();
+    QVERIFY(feeder);
+    const model::TelemetryBuffer *b =
+        m_session->telemetry().buffer(Session::telemetryKey(*feeder, 0));
+    QVERIFY(b);
+    const model::Parameter *setting = feeder->parameter("SPD");
+    QTRY_VERIFY_WITH_TIMEOUT(setting->number() && b->size() >= 5, kDataMs);
+    const auto speed = setting->number();
+    QVERIFY(*speed > 0);
+    // Every speed sample is the setting as read: no 0 recorded while it was still to be read.
+    for (const auto &s :
+         b->samples(b->seriesIndex(QStringLiteral("speed")), b->firstTime(), b->lastTime() + 1))
+        QCOMPARE(s.value, qint32(*speed));
 }
 
 QTEST_MAIN(TestChartsPage)
