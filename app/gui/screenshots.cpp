@@ -6,6 +6,7 @@
 
 #include "sim/simline.h"
 
+#include <QAbstractButton>
 #include <QApplication>
 #include <QDir>
 #include <QTabWidget>
@@ -17,6 +18,13 @@ namespace tipscope::gui {
 namespace {
 constexpr int kWarmUpMs = 9000;
 constexpr int kPerPageMs = 1500;
+
+void save(MainWindow &window, const QString &path) {
+    if (!window.grab().save(path))
+        QTextStream(stderr) << "tipscope: cannot write " << path << Qt::endl;
+    else
+        QTextStream(stdout) << path << Qt::endl;
+}
 
 void shootPage(MainWindow &window, const QString &folder, int index) {
     QTabWidget &tabs = window.pages();
@@ -46,13 +54,22 @@ void shootPage(MainWindow &window, const QString &folder, int index) {
                                  .toLower()
                                  .remove(QLatin1Char('&'))
                                  .replace(QLatin1Char(' '), QLatin1Char('-'));
-        const QString path = QDir(folder).filePath(
-            QStringLiteral("%1-%2.png").arg(index + 1, 2, 10, QLatin1Char('0')).arg(name));
-        if (!window.grab().save(path))
-            QTextStream(stderr) << "tipscope: cannot write " << path << Qt::endl;
-        else
-            QTextStream(stdout) << path << Qt::endl;
-        shootPage(window, folder, index + 1);
+        const QString stem =
+            QStringLiteral("%1-%2").arg(index + 1, 2, 10, QLatin1Char('0')).arg(name);
+        save(window, QDir(folder).filePath(stem + QStringLiteral(".png")));
+        // The charts once more with the optional hardware curves, whose stats need more room.
+        auto *hardware = window.pages().widget(index)->findChild<QAbstractButton *>(
+            QStringLiteral("hardwareButton"));
+        if (!hardware || hardware->isChecked()) {
+            shootPage(window, folder, index + 1);
+            return;
+        }
+        hardware->click();
+        QTimer::singleShot(kPerPageMs, &window, [&window, folder, index, stem, hardware] {
+            save(window, QDir(folder).filePath(stem + QStringLiteral("-hardware.png")));
+            hardware->click();
+            shootPage(window, folder, index + 1);
+        });
     });
 }
 } // namespace
