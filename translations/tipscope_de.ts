@@ -1771,6 +1771,34 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>EventHistoryModel</name>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="93"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="95"/>
+        <source>Severity</source>
+        <translation>Schweregrad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="97"/>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="99"/>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="101"/>
+        <source>What happened</source>
+        <translation>Ereignis</translation>
+    </message>
+</context>
+<context>
     <name>FeederModel</name>
     <message>
         <location filename="../lib/model/feedermodel.cpp" line="57"/>
@@ -1981,32 +2009,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="33"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="34"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: Min. %2, Max. %3, Mittel %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="42"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
         <source>wake</source>
         <translation>Aufwachen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="42"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
         <source>heat-up</source>
         <translation>Aufheizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="44"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="45"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 um %2 auf %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="47"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 um %2 auf %3: in diesem Zeitfenster nicht erreicht</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="51"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="52"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n weiteres Aufheizen</numerusform>
@@ -2014,17 +2042,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="60"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="61"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>Erholung um %1: %2 (Einbruch auf %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="63"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>Einbruch um %1 auf %2: in diesem Zeitfenster nicht erholt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="67"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="68"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n weitere Erholung</numerusform>
@@ -2032,22 +2060,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="75"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="76"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="77"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="79"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="95"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="105"/>
         <source>%1: no samples in this window</source>
         <translation>%1: keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -2262,6 +2290,34 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <location filename="../lib/model/portmodel.cpp" line="171"/>
         <source>this port has no status command</source>
         <translation>dieser Port hat keinen Statusbefehl</translation>
+    </message>
+</context>
+<context>
+    <name>ProblemLevel</name>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="42"/>
+        <source>Not read yet</source>
+        <translation>Noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="44"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="46"/>
+        <source>Info</source>
+        <translation>Info</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="48"/>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="50"/>
+        <source>Error</source>
+        <translation>Fehler</translation>
     </message>
 </context>
 <context>
@@ -2724,17 +2780,17 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Keine Messwerte in diesem Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="44"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="45"/>
         <source>device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="46"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="47"/>
         <source>%1 · %2 · %3: %4</source>
         <translation>%1 · %2 · %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="112"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="113"/>
         <source>Point at a chart to read every series at that instant. Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
         <translation>Zeigen Sie auf ein Diagramm, um alle Reihen zu diesem Zeitpunkt abzulesen. Mausrad: Zoom · Ziehen: Verschieben · Umschalt+Ziehen: auf einen Bereich zoomen · Doppelklick: Zurücksetzen.</translation>
     </message>
@@ -2879,17 +2935,17 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="74"/>
         <source>P%1</source>
         <translation>P%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="89"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="90"/>
         <source>High alarm</source>
         <translation>Alarm hoch</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="92"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="93"/>
         <source>Low alarm</source>
         <translation>Alarm tief</translation>
     </message>
@@ -3730,333 +3786,295 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="72"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="555"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="570"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="338"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="74"/>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="76"/>
-        <source>Info</source>
-        <translation>Info</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="78"/>
-        <source>Warning</source>
-        <translation>Warnung</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="80"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="361"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="144"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="362"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="145"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="233"/>
-        <source>Time</source>
-        <translation>Zeit</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="235"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="237"/>
-        <source>Kind</source>
-        <translation>Art</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="239"/>
-        <source>Source</source>
-        <translation>Quelle</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="241"/>
-        <source>What happened</source>
-        <translation>Ereignis</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="315"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="98"/>
         <source>Current state</source>
         <translation>Aktueller Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="318"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="101"/>
         <source>Current errors and alarms</source>
         <translation>Aktuelle Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Where</source>
         <translation>Ort</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Temperature alarm</source>
         <translation>Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="114"/>
         <source>&amp;Reset feeder error</source>
         <translation>Vorschubfehler &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="333"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="116"/>
         <source>Reset feeder error</source>
         <translation>Vorschubfehler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="335"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="348"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="134"/>
         <source>Show events of kind</source>
         <translation>Ereignisse dieser Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="135"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="136"/>
         <source>Errors and alarms</source>
         <translation>Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="138"/>
         <source>Station errors</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="356"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="139"/>
         <source>Port errors</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="140"/>
         <source>Feeder errors</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="141"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="359"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="142"/>
         <source>Status changes</source>
         <translation>Statuswechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="360"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="143"/>
         <source>Writes</source>
         <translation>Schreibzugriffe</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="367"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="150"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="368"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="151"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="369"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="152"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="370"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="153"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="156"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="157"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="159"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="161"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="163"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="397"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="180"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="421"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="204"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="427"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="210"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="428"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="211"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="430"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="213"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="431"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="214"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="432"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="215"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="434"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="217"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="703"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="710"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="218"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="493"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="220"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="489"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="272"/>
         <source>No device is connected.</source>
         <translation>Kein Gerät verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="539"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="322"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="557"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
         <source>Error code %1: %2</source>
         <translation>Fehlercode %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="564"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="347"/>
         <source>High temperature</source>
         <translation>Übertemperatur</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="566"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="349"/>
         <source>Low temperature</source>
         <translation>Untertemperatur</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="568"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
         <source>None</source>
         <translation>Keiner</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="582"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="365"/>
         <source>This device has no temperature alarm</source>
         <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="591"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
         <source>Not reset: %1</source>
         <translation>Nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="594"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
         <source>Resetting the feeder error…</source>
         <translation>Vorschubfehler wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="601"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
         <source>Feeder error reset.</source>
         <translation>Vorschubfehler zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="602"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="385"/>
         <source>The feeder error was not reset: %1</source>
         <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="615"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="618"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
         <source>No feeder is connected</source>
         <translation>Kein Lotdrahtvorschub verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="621"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="404"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="652"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="654"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4064,22 +4082,22 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="703"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="708"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="491"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="711"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="494"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.h" line="42"/>
+        <location filename="../app/gui/pages/errorspage.h" line="44"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>

@@ -1772,6 +1772,34 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>EventHistoryModel</name>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="93"/>
+        <source>Time</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="95"/>
+        <source>Severity</source>
+        <translation>Gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="97"/>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="99"/>
+        <source>Source</source>
+        <translation>Origen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="101"/>
+        <source>What happened</source>
+        <translation>Qué ocurrió</translation>
+    </message>
+</context>
+<context>
     <name>FeederModel</name>
     <message>
         <location filename="../lib/model/feedermodel.cpp" line="57"/>
@@ -1982,32 +2010,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="33"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="34"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: mín. %2, máx. %3, media %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="42"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
         <source>wake</source>
         <translation>salida del reposo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="42"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
         <source>heat-up</source>
         <translation>calentamiento</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="44"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="45"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 a las %2 hasta %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="47"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 a las %2 hasta %3: no alcanzado en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="51"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="52"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n calentamiento más</numerusform>
@@ -2015,17 +2043,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="60"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="61"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>recuperación a las %1: %2 (caída hasta %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="63"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>caída a las %1 hasta %2: sin recuperar en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="67"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="68"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n recuperación más</numerusform>
@@ -2033,22 +2061,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="75"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="76"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="77"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="79"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="95"/>
+        <location filename="../app/gui/charts/measurementreport.cpp" line="105"/>
         <source>%1: no samples in this window</source>
         <translation>%1: sin muestras en esta ventana</translation>
     </message>
@@ -2263,6 +2291,34 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <location filename="../lib/model/portmodel.cpp" line="171"/>
         <source>this port has no status command</source>
         <translation>este puerto no tiene comando de estado</translation>
+    </message>
+</context>
+<context>
+    <name>ProblemLevel</name>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="42"/>
+        <source>Not read yet</source>
+        <translation>Aún no leído</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="44"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="46"/>
+        <source>Info</source>
+        <translation>Información</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="48"/>
+        <source>Warning</source>
+        <translation>Advertencia</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/problemlevel.cpp" line="50"/>
+        <source>Error</source>
+        <translation>Error</translation>
     </message>
 </context>
 <context>
@@ -2725,17 +2781,17 @@ Hágalo permanente con esta regla de udev:
         <translation>No hay muestras en esta ventana</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="44"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="45"/>
         <source>device</source>
         <translation>equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="46"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="47"/>
         <source>%1 · %2 · %3: %4</source>
         <translation>%1 · %2 · %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="112"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="113"/>
         <source>Point at a chart to read every series at that instant. Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
         <translation>Señale un gráfico para leer todas las series en ese instante. Rueda: zoom · arrastrar: desplazar · Mayús+arrastrar: ampliar un intervalo · doble clic: restablecer.</translation>
     </message>
@@ -2880,17 +2936,17 @@ Hágalo permanente con esta regla de udev:
         <translation>Falló la escritura de %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="74"/>
         <source>P%1</source>
         <translation>P%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="89"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="90"/>
         <source>High alarm</source>
         <translation>Alarma alta</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="92"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="93"/>
         <source>Low alarm</source>
         <translation>Alarma baja</translation>
     </message>
@@ -3731,333 +3787,295 @@ Continue?</source>
 <context>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="72"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="555"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="570"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="338"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="74"/>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="76"/>
-        <source>Info</source>
-        <translation>Información</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="78"/>
-        <source>Warning</source>
-        <translation>Advertencia</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="80"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="361"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="144"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="362"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="145"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="233"/>
-        <source>Time</source>
-        <translation>Hora</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="235"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="237"/>
-        <source>Kind</source>
-        <translation>Tipo</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="239"/>
-        <source>Source</source>
-        <translation>Origen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="241"/>
-        <source>What happened</source>
-        <translation>Qué ocurrió</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="315"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="98"/>
         <source>Current state</source>
         <translation>Estado actual</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="318"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="101"/>
         <source>Current errors and alarms</source>
         <translation>Errores y alarmas actuales</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Where</source>
         <translation>Dónde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="320"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
         <source>Temperature alarm</source>
         <translation>Alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="114"/>
         <source>&amp;Reset feeder error</source>
         <translation>&amp;Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="333"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="116"/>
         <source>Reset feeder error</source>
         <translation>Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="335"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="348"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
         <source>History</source>
         <translation>Historial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="134"/>
         <source>Show events of kind</source>
         <translation>Mostrar eventos del tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="135"/>
         <source>All kinds</source>
         <translation>Todos los tipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="136"/>
         <source>Errors and alarms</source>
         <translation>Errores y alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="138"/>
         <source>Station errors</source>
         <translation>Errores de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="356"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="139"/>
         <source>Port errors</source>
         <translation>Errores de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="140"/>
         <source>Feeder errors</source>
         <translation>Errores del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="141"/>
         <source>Alarms</source>
         <translation>Alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="359"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="142"/>
         <source>Status changes</source>
         <translation>Cambios de estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="360"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="143"/>
         <source>Writes</source>
         <translation>Escrituras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="367"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="150"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="368"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="151"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="369"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="152"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="370"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="153"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="373"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="156"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="157"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="376"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="159"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="378"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="161"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="380"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="163"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="397"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="180"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="421"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="204"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="427"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="210"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="428"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="211"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="430"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="213"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="431"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="214"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="432"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="215"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="434"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="217"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="703"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="710"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="218"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="493"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="220"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="489"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="272"/>
         <source>No device is connected.</source>
         <translation>No hay ningún equipo conectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="539"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="322"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="557"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
         <source>Error code %1: %2</source>
         <translation>Código de error %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="564"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="347"/>
         <source>High temperature</source>
         <translation>Temperatura alta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="566"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="349"/>
         <source>Low temperature</source>
         <translation>Temperatura baja</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="568"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
         <source>None</source>
         <translation>Ninguna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="582"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="365"/>
         <source>This device has no temperature alarm</source>
         <translation>Este equipo no tiene alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="591"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
         <source>Not reset: %1</source>
         <translation>No se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="594"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
         <source>Resetting the feeder error…</source>
         <translation>Borrando el error del alimentador…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="601"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
         <source>Feeder error reset.</source>
         <translation>Error del alimentador borrado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="602"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="385"/>
         <source>The feeder error was not reset: %1</source>
         <translation>El error del alimentador no se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="615"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="618"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
         <source>No feeder is connected</source>
         <translation>No hay ningún alimentador conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="621"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="404"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="652"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="654"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4065,22 +4083,22 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="703"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="708"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="491"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="711"/>
+        <location filename="../app/gui/pages/errorspage.cpp" line="494"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.h" line="42"/>
+        <location filename="../app/gui/pages/errorspage.h" line="44"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>

@@ -1,5 +1,8 @@
 #include "errorspage.h"
 
+#include "eventhistorymodel.h"
+#include "problemlevel.h"
+
 #include "protocol/catalog.h"
 #include "widgets/deferredrefresh.h"
 
@@ -19,7 +22,6 @@
 #include <QPushButton>
 #include <QSaveFile>
 #include <QScrollBar>
-#include <QSortFilterProxyModel>
 #include <QStandardPaths>
 #include <QStyle>
 #include <QTableView>
@@ -27,7 +29,6 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <deque>
 
 namespace tipscope::gui {
 
@@ -36,89 +37,8 @@ using protocol::Catalog;
 
 namespace {
 
-// The same bound as the session's EventLog: the page never holds more than the log does.
-constexpr int kHistoryCapacity = 10000;
 constexpr int kFlushMs = 100; // new events are shown at most ten times a second
 constexpr int kMaxStateRowsShown = 10;
-
-// How bad something is, in the order a reader ranks it; Unknown = not read yet.
-enum class Level { Unknown, Ok, Info, Warning, Error };
-
-Level levelOf(const QString &catalogSeverity) {
-    if (catalogSeverity == QLatin1String("ok"))
-        return Level::Ok;
-    if (catalogSeverity == QLatin1String("info"))
-        return Level::Info;
-    if (catalogSeverity == QLatin1String("warning"))
-        return Level::Warning;
-    return Level::Error;
-}
-
-Level levelOf(Event::Severity severity) {
-    switch (severity) {
-    case Event::Severity::Info:
-        return Level::Info;
-    case Event::Severity::Warning:
-        return Level::Warning;
-    case Event::Severity::Error:
-        return Level::Error;
-    }
-    return Level::Error;
-}
-
-QString levelName(Level level) {
-    switch (level) {
-    case Level::Unknown:
-        return ErrorsPage::tr("Not read yet");
-    case Level::Ok:
-        return ErrorsPage::tr("OK");
-    case Level::Info:
-        return ErrorsPage::tr("Info");
-    case Level::Warning:
-        return ErrorsPage::tr("Warning");
-    case Level::Error:
-        return ErrorsPage::tr("Error");
-    }
-    return {};
-}
-
-QIcon levelIcon(Level level) {
-    const QStyle *style = QApplication::style();
-    switch (level) {
-    case Level::Unknown:
-        return {};
-    case Level::Ok:
-        return style->standardIcon(QStyle::SP_DialogApplyButton);
-    case Level::Info:
-        return style->standardIcon(QStyle::SP_MessageBoxInformation);
-    case Level::Warning:
-        return style->standardIcon(QStyle::SP_MessageBoxWarning);
-    case Level::Error:
-        return style->standardIcon(QStyle::SP_MessageBoxCritical);
-    }
-    return {};
-}
-
-// Translucent, so the tint reads on light and dark palettes alike.
-QVariant levelTint(Level level) {
-    switch (level) {
-    case Level::Error:
-        return QColor(220, 40, 40, 70);
-    case Level::Warning:
-        return QColor(235, 165, 0, 80);
-    case Level::Info:
-        return QColor(40, 120, 220, 35);
-    default:
-        return {};
-    }
-}
-
-constexpr quint32 bit(Event::Kind kind) {
-    return 1u << int(kind);
-}
-constexpr quint32 kAllKinds = 0xffffffffu;
-constexpr quint32 kErrorKinds = bit(Event::Kind::StationError) | bit(Event::Kind::PortError) |
-                                bit(Event::Kind::FeederError) | bit(Event::Kind::Alarm);
 
 // Tabs and line breaks inside a field would break the one-event-a-line text format.
 QString flat(QString text) {
@@ -141,143 +61,6 @@ void setCell(QTableWidget *table, int row, int column, const QString &text, Leve
 }
 
 } // namespace
-
-// The history as a table: one row per event, oldest first, bounded like the EventLog.
-class ErrorsPage::HistoryModel : public QAbstractTableModel {
-public:
-    enum Column { Time, Severity, Kind, Source, Text, ColumnCount };
-
-    using QAbstractTableModel::QAbstractTableModel;
-
-    void reset(const QList<Event> &events) {
-        beginResetModel();
-        const qsizetype skip = qMax<qsizetype>(0, events.size() - kHistoryCapacity);
-        m_events.assign(events.begin() + skip, events.end());
-        endResetModel();
-    }
-
-    void append(const QList<Event> &events) {
-        const qsizetype skip = qMax<qsizetype>(0, events.size() - kHistoryCapacity);
-        const int incoming = int(events.size() - skip);
-        const int overflow =
-            qMin(int(m_events.size()) + incoming - kHistoryCapacity, int(m_events.size()));
-        if (overflow > 0) {
-            beginRemoveRows({}, 0, overflow - 1);
-            m_events.erase(m_events.begin(), m_events.begin() + overflow);
-            endRemoveRows();
-        }
-        const int first = int(m_events.size());
-        beginInsertRows({}, first, first + incoming - 1);
-        m_events.insert(m_events.end(), events.begin() + skip, events.end());
-        endInsertRows();
-    }
-
-    [[nodiscard]] const Event &event(int row) const { return m_events.at(size_t(row)); }
-
-    int rowCount(const QModelIndex &parent = {}) const override {
-        return parent.isValid() ? 0 : int(m_events.size());
-    }
-    int columnCount(const QModelIndex &parent = {}) const override {
-        return parent.isValid() ? 0 : ColumnCount;
-    }
-
-    // What a cell says; `full` gives the date with the time, for files and the clipboard.
-    [[nodiscard]] static QString text(const Event &e, int column, bool full) {
-        switch (column) {
-        case Time:
-            return e.time.toString(full ? QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")
-                                        : QStringLiteral("HH:mm:ss"));
-        case Severity:
-            return levelName(levelOf(e.severity));
-        case Kind:
-            return Event::kindTitle(e.kind);
-        case Source:
-            return e.source;
-        case Text:
-            return e.text;
-        default:
-            return {};
-        }
-    }
-
-    QVariant data(const QModelIndex &index, int role) const override {
-        if (!index.isValid() || index.row() >= rowCount())
-            return {};
-        const Event &e = event(index.row());
-        switch (role) {
-        case Qt::DisplayRole:
-            return text(e, index.column(), false);
-        case Qt::ToolTipRole:
-            return index.column() == Time ? text(e, Time, true) : text(e, index.column(), false);
-        case Qt::DecorationRole:
-            return index.column() == Severity ? QVariant(levelIcon(levelOf(e.severity)))
-                                              : QVariant();
-        case Qt::BackgroundRole:
-            // Only problems are tinted, so they stand out among status changes and writes.
-            return e.severity == Event::Severity::Info ? QVariant()
-                                                       : levelTint(levelOf(e.severity));
-        default:
-            return {};
-        }
-    }
-
-    QVariant headerData(int section, Qt::Orientation orientation, int role) const override {
-        if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
-            return {};
-        return columnName(section);
-    }
-
-    [[nodiscard]] static QString columnName(int column) {
-        switch (column) {
-        case Time:
-            return ErrorsPage::tr("Time");
-        case Severity:
-            return ErrorsPage::tr("Severity");
-        case Kind:
-            return ErrorsPage::tr("Kind");
-        case Source:
-            return ErrorsPage::tr("Source");
-        case Text:
-            return ErrorsPage::tr("What happened");
-        default:
-            return {};
-        }
-    }
-
-private:
-    std::deque<Event> m_events;
-};
-
-// Kind (a set), minimum severity and free text (any column, case-insensitive).
-class ErrorsPage::HistoryFilter : public QSortFilterProxyModel {
-public:
-    using QSortFilterProxyModel::QSortFilterProxyModel;
-
-    void setFilter(quint32 kinds, Event::Severity minimum, const QString &text) {
-        m_kinds = kinds;
-        m_minimum = minimum;
-        m_text = text.trimmed();
-        invalidateFilter();
-    }
-
-protected:
-    bool filterAcceptsRow(int row, const QModelIndex &) const override {
-        const Event &e = static_cast<const HistoryModel *>(sourceModel())->event(row);
-        if (!(m_kinds & bit(e.kind)) || int(e.severity) < int(m_minimum))
-            return false;
-        if (m_text.isEmpty())
-            return true;
-        for (int c = 0; c < HistoryModel::ColumnCount; ++c)
-            if (HistoryModel::text(e, c, true).contains(m_text, Qt::CaseInsensitive))
-                return true;
-        return false;
-    }
-
-private:
-    quint32 m_kinds = kAllKinds;
-    Event::Severity m_minimum = Event::Severity::Info;
-    QString m_text;
-};
 
 ErrorsPage::ErrorsPage(Session &session, QWidget *parent)
     : Page(session, parent) {
@@ -349,8 +132,8 @@ QWidget *ErrorsPage::buildHistoryPanel() {
     m_kindFilter = new QComboBox(box);
     m_kindFilter->setObjectName(QStringLiteral("kindFilter"));
     m_kindFilter->setAccessibleName(tr("Show events of kind"));
-    m_kindFilter->addItem(tr("All kinds"), kAllKinds);
-    m_kindFilter->addItem(tr("Errors and alarms"), kErrorKinds);
+    m_kindFilter->addItem(tr("All kinds"), kAllEventKinds);
+    m_kindFilter->addItem(tr("Errors and alarms"), kErrorEventKinds);
     const std::pair<Event::Kind, QString> kinds[] = {
         {Event::Kind::StationError, tr("Station errors")},
         {Event::Kind::PortError, tr("Port errors")},
@@ -361,7 +144,7 @@ QWidget *ErrorsPage::buildHistoryPanel() {
         {Event::Kind::Communication, tr("Communication")},
         {Event::Kind::Connection, tr("Connection")}};
     for (const auto &[kind, name] : kinds)
-        m_kindFilter->addItem(name, bit(kind));
+        m_kindFilter->addItem(name, eventKindBit(kind));
     m_severityFilter = new QComboBox(box);
     m_severityFilter->setObjectName(QStringLiteral("severityFilter"));
     m_severityFilter->setAccessibleName(tr("Show events of severity"));
@@ -389,8 +172,8 @@ QWidget *ErrorsPage::buildHistoryPanel() {
     filters->addWidget(textLabel);
     filters->addWidget(m_textFilter, 1);
 
-    m_events = new HistoryModel(this);
-    m_filter = new HistoryFilter(this);
+    m_events = new EventHistoryModel(this);
+    m_filter = new EventHistoryFilter(this);
     m_filter->setSourceModel(m_events);
     m_history = new QTableView(box);
     m_history->setObjectName(QStringLiteral("history"));
@@ -410,13 +193,13 @@ QWidget *ErrorsPage::buildHistoryPanel() {
     header->setStretchLastSection(true);
     const int pad = 24 + style()->pixelMetric(QStyle::PM_SmallIconSize);
     const QFontMetrics fm = fontMetrics();
-    header->resizeSection(HistoryModel::Time,
+    header->resizeSection(EventHistoryModel::Time,
                           fm.horizontalAdvance(QStringLiteral("00:00:00")) + pad);
-    header->resizeSection(HistoryModel::Severity,
+    header->resizeSection(EventHistoryModel::Severity,
                           fm.horizontalAdvance(levelName(Level::Warning)) + pad);
-    header->resizeSection(HistoryModel::Kind,
+    header->resizeSection(EventHistoryModel::Kind,
                           fm.horizontalAdvance(Event::kindTitle(Event::Kind::Communication)) + pad);
-    header->resizeSection(HistoryModel::Source,
+    header->resizeSection(EventHistoryModel::Source,
                           fm.horizontalAdvance(QStringLiteral("DME-2C at 01, port 4")) + pad);
     auto *copyAction = new QAction(tr("Copy"), m_history);
     copyAction->setShortcut(QKeySequence::Copy);
@@ -659,8 +442,8 @@ void ErrorsPage::updateCount() {
 QString ErrorsPage::rowText(int proxyRow) const {
     const Event &e = m_events->event(m_filter->mapToSource(m_filter->index(proxyRow, 0)).row());
     QStringList fields;
-    for (int c = 0; c < HistoryModel::ColumnCount; ++c)
-        fields.append(flat(HistoryModel::text(e, c, true)));
+    for (int c = 0; c < EventHistoryModel::ColumnCount; ++c)
+        fields.append(flat(EventHistoryModel::text(e, c, true)));
     return fields.join(QLatin1Char('\t'));
 }
 
@@ -679,8 +462,8 @@ void ErrorsPage::copySelection() const {
 
 bool ErrorsPage::exportText(const QString &path, QString *error) const {
     QStringList header;
-    for (int c = 0; c < HistoryModel::ColumnCount; ++c)
-        header.append(HistoryModel::columnName(c));
+    for (int c = 0; c < EventHistoryModel::ColumnCount; ++c)
+        header.append(EventHistoryModel::columnName(c));
     QString text = header.join(QLatin1Char('\t')) + QLatin1Char('\n');
     for (int row = 0; row < m_filter->rowCount(); ++row)
         text += rowText(row) + QLatin1Char('\n');

@@ -32,6 +32,8 @@ class QTableWidget;
 namespace tipscope::gui {
 
 class DeferredRefresh;
+class EventHistoryFilter;
+class EventHistoryModel;
 
 class ErrorsPage : public Page {
     Q_OBJECT
@@ -51,8 +53,6 @@ public:
     [[nodiscard]] bool exportText(const QString &path, QString *error) const;
 
 private:
-    class HistoryModel;
-    class HistoryFilter;
     struct StateRow {
         QPointer<model::DeviceModel> device;
         int port = 0; // 0: the device's own error
@@ -84,8 +84,8 @@ private:
     QLabel *m_historyStatus = nullptr;
     QPushButton *m_copy = nullptr;
     QPushButton *m_export = nullptr;
-    HistoryModel *m_events = nullptr;
-    HistoryFilter *m_filter = nullptr;
+    EventHistoryModel *m_events = nullptr;
+    EventHistoryFilter *m_filter = nullptr;
     QList<model::Event> m_pending;
     QTimer m_flush;
 

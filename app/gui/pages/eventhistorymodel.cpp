@@ -1,0 +1,126 @@
+#include "eventhistorymodel.h"
+
+#include "problemlevel.h"
+
+#include <QCoreApplication>
+
+namespace tipscope::gui {
+
+using model::Event;
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(EventHistoryModel)
+};
+} // namespace
+
+void EventHistoryModel::reset(const QList<Event> &events) {
+    beginResetModel();
+    const qsizetype skip = qMax<qsizetype>(0, events.size() - kCapacity);
+    m_events.assign(events.begin() + skip, events.end());
+    endResetModel();
+}
+
+void EventHistoryModel::append(const QList<Event> &events) {
+    const qsizetype skip = qMax<qsizetype>(0, events.size() - kCapacity);
+    const int incoming = int(events.size() - skip);
+    const int overflow = qMin(int(m_events.size()) + incoming - kCapacity, int(m_events.size()));
+    if (overflow > 0) {
+        beginRemoveRows({}, 0, overflow - 1);
+        m_events.erase(m_events.begin(), m_events.begin() + overflow);
+        endRemoveRows();
+    }
+    const int first = int(m_events.size());
+    beginInsertRows({}, first, first + incoming - 1);
+    m_events.insert(m_events.end(), events.begin() + skip, events.end());
+    endInsertRows();
+}
+
+int EventHistoryModel::rowCount(const QModelIndex &parent) const {
+    return parent.isValid() ? 0 : int(m_events.size());
+}
+
+int EventHistoryModel::columnCount(const QModelIndex &parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QString EventHistoryModel::text(const Event &e, int column, bool full) {
+    switch (column) {
+    case Time:
+        return e.time.toString(full ? QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")
+                                    : QStringLiteral("HH:mm:ss"));
+    case Severity:
+        return levelName(levelOf(e.severity));
+    case Kind:
+        return Event::kindTitle(e.kind);
+    case Source:
+        return e.source;
+    case Text:
+        return e.text;
+    default:
+        return {};
+    }
+}
+
+QVariant EventHistoryModel::data(const QModelIndex &index, int role) const {
+    if (!index.isValid() || index.row() >= rowCount())
+        return {};
+    const Event &e = event(index.row());
+    switch (role) {
+    case Qt::DisplayRole:
+        return text(e, index.column(), false);
+    case Qt::ToolTipRole:
+        return index.column() == Time ? text(e, Time, true) : text(e, index.column(), false);
+    case Qt::DecorationRole:
+        return index.column() == Severity ? QVariant(levelIcon(levelOf(e.severity))) : QVariant();
+    case Qt::BackgroundRole:
+        // Only problems are tinted, so they stand out among status changes and writes.
+        return e.severity == Event::Severity::Info ? QVariant() : levelTint(levelOf(e.severity));
+    default:
+        return {};
+    }
+}
+
+QVariant EventHistoryModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    return columnName(section);
+}
+
+QString EventHistoryModel::columnName(int column) {
+    switch (column) {
+    case Time:
+        return Tr::tr("Time");
+    case Severity:
+        return Tr::tr("Severity");
+    case Kind:
+        return Tr::tr("Kind");
+    case Source:
+        return Tr::tr("Source");
+    case Text:
+        return Tr::tr("What happened");
+    default:
+        return {};
+    }
+}
+
+void EventHistoryFilter::setFilter(quint32 kinds, Event::Severity minimum, const QString &text) {
+    m_kinds = kinds;
+    m_minimum = minimum;
+    m_text = text.trimmed();
+    invalidateFilter();
+}
+
+bool EventHistoryFilter::filterAcceptsRow(int row, const QModelIndex &) const {
+    const Event &e = static_cast<const EventHistoryModel *>(sourceModel())->event(row);
+    if (!(m_kinds & eventKindBit(e.kind)) || int(e.severity) < int(m_minimum))
+        return false;
+    if (m_text.isEmpty())
+        return true;
+    for (int c = 0; c < EventHistoryModel::ColumnCount; ++c)
+        if (EventHistoryModel::text(e, c, true).contains(m_text, Qt::CaseInsensitive))
+            return true;
+    return false;
+}
+
+} // namespace tipscope::gui
