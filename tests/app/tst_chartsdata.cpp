@@ -49,6 +49,7 @@ private Q_SLOTS:
     void heatUpRunsFromTheSetpointChangeUntilWithinTheBand();
     void recoveryRunsFromLeavingTheBandUntilBackInIt();
     void restsAndAnUnheatedTipAreNoDips();
+    void aWindowReachingBeforeTheDataIsMeasuredFromItsFirstSample();
     void theReportGivesEachSeriesItsWindowStatsThreeToALine();
 };
 
@@ -270,6 +271,24 @@ void TestChartsData::restsAndAnUnheatedTipAreNoDips() {
     for (int i = 0; i < 100; ++i)
         fresh.append(kT0 + i * 100, {25 + 3 * i, i < 10 ? 0 : 350, 1000, 0});
     QVERIFY(Measurements::measurePort(fresh, kT0, kT0 + 10'000, 5).heatUps.isEmpty());
+}
+
+void TestChartsData::aWindowReachingBeforeTheDataIsMeasuredFromItsFirstSample() {
+    // A session 2 minutes old seen through a 5-minute window: the window starts 3 minutes
+    // before the first sample, and the joint at 60 s must still be found.
+    TelemetryBuffer b(kPortSeries);
+    for (int i = 0; i < 1200; ++i) {
+        const bool dip = i >= 600 && i < 610;
+        b.append(kT0 + i * 100, {dip ? 320 : 350, 350, dip ? 1000 : 200, 0});
+    }
+    const PortMeasurements m = Measurements::measurePort(b, kT0 - 180'000, kT0 + 120'000, 5);
+    QCOMPARE(m.recoveries.size(), 1);
+    QCOMPARE(m.recoveries.first().startMs, kT0 + 60'000);
+    QCOMPARE(*m.recoveries.first().recoveredMs - m.recoveries.first().startMs, 1000);
+    QVERIFY(m.heatUps.isEmpty()); // the first sample is no setpoint change
+    // A window wholly before the data measures nothing.
+    const PortMeasurements none = Measurements::measurePort(b, kT0 - 60'000, kT0 - 1, 5);
+    QVERIFY(none.recoveries.isEmpty() && none.heatUps.isEmpty());
 }
 
 void TestChartsData::theReportGivesEachSeriesItsWindowStatsThreeToALine() {

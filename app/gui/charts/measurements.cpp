@@ -100,7 +100,12 @@ PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64
     const int setpoint = buffer.seriesIndex(QStringLiteral("setpoint"));
     const int status = buffer.seriesIndex(QStringLiteral("status"));
     const int power = buffer.seriesIndex(QStringLiteral("power"));
-    if (tip < 0 || setpoint < 0 || status < 0 || t1 <= t0)
+    if (tip < 0 || setpoint < 0 || status < 0 || buffer.size() == 0)
+        return out;
+    // A window reaching back before the first sample (any window early in a session) is measured
+    // from that sample: at t0 itself there would be no setpoint to measure against.
+    t0 = qMax(t0, buffer.firstTime());
+    if (t1 <= t0)
         return out;
     // A tip cooling with the heater off (no tool, a port error) is no dip to recover from.
     const auto heated = [&](qint64 from, qint64 to) {
