@@ -48,6 +48,7 @@ private Q_SLOTS:
     void aGapInDenseDataStaysEmpty();
     void aSparseCurveIsALineThroughItsPoints();
     void aFollowingChartRepaintsOnlyPartsAndLeavesNothingStale();
+    void aShortPaneLabelsFewerValuesSoTheyDoNotCrowd();
 
 private:
     void show(qint64 t0, qint64 t1, const QList<QList<QPointF>> &points);
@@ -164,6 +165,34 @@ void TestChartWidget::aFollowingChartRepaintsOnlyPartsAndLeavesNothingStale() {
         for (int x = 0; x < onScreen.width(); ++x)
             differing += onScreen.pixel(x, y) != repainted.pixel(x, y) ? 1 : 0;
     QCOMPARE(differing, 0);
+}
+
+void TestChartWidget::aShortPaneLabelsFewerValuesSoTheyDoNotCrowd() {
+    // The feeder's pane is about this short; 0-25 mm in steps of 5 crowded six labels into it.
+    const double labelHeight = QFontMetricsF(m_chart->font()).height();
+    m_chart->showData(ChartData{kT0, kT0 + 60'000, 0, 25, 9.5, 10.5, {}});
+    QCoreApplication::processEvents();
+    QCOMPARE(m_chart->valueTickStep(ChartAxis::Left), 5.0); // a tall pane: five steps
+    QCOMPARE(m_chart->valueTickStep(ChartAxis::Right), 0.2);
+    m_chart->resize(1200, 150);
+    QTRY_VERIFY(m_chart->plotArea().height() < 80);
+    const double height = m_chart->plotArea().height();
+    // The labelled values: multiples of the step within the range, a label height apart at least.
+    const auto labels = [&](ChartAxis axis, double min, double max) {
+        const double step = m_chart->valueTickStep(axis);
+        const double count = std::floor(max / step + 1e-9) - std::ceil(min / step - 1e-9) + 1;
+        const double spacing = step / (max - min) * height;
+        return std::make_pair(count, spacing);
+    };
+    const auto [left, leftSpacing] = labels(ChartAxis::Left, 0, 25);
+    QVERIFY2(left >= 2 && leftSpacing >= 2 * labelHeight,
+             qPrintable(QStringLiteral("%1 labels %2 px apart").arg(left).arg(leftSpacing)));
+    const auto [right, rightSpacing] = labels(ChartAxis::Right, 9.5, 10.5);
+    QVERIFY2(right >= 1 && (right == 1 || rightSpacing >= 2 * labelHeight),
+             qPrintable(QStringLiteral("%1 labels %2 px apart").arg(right).arg(rightSpacing)));
+    // Tall again, the steps come back.
+    m_chart->resize(1200, 600);
+    QTRY_COMPARE(m_chart->valueTickStep(ChartAxis::Left), 5.0);
 }
 
 QTEST_MAIN(TestChartWidget)

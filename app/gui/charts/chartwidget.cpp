@@ -12,16 +12,20 @@ namespace tipscope::gui {
 namespace {
 constexpr double kMarkerHitPx = 5;
 
-// 1, 2 or 5 times a power of ten, about a fifth of `span`: ticks on round values.
-double tickStep(double span) {
+constexpr int kMaxValueSteps = 5;
+
+// 1, 2 or 5 times a power of ten, at least `span / steps`: ticks on round values. A step wider
+// than the span would label one value at most, so the next smaller round step is taken then.
+double valueStep(double span, int steps) {
     if (!(span > 0))
         return 1;
-    const double raw = span / 5;
+    const double raw = span / qMax(1, steps);
     const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-    for (double m : {1.0, 2.0, 5.0})
-        if (magnitude * m >= raw)
-            return magnitude * m;
-    return magnitude * 10;
+    constexpr double kRound[] = {0.5, 1, 2, 5, 10};
+    int k = 1;
+    while (k < 4 && magnitude * kRound[k] < raw)
+        ++k;
+    return magnitude * kRound[magnitude * kRound[k] > span ? k - 1 : k];
 }
 
 void styleValueAxis(QValueAxis *axis) {
@@ -186,6 +190,23 @@ void ChartWidgetPrivate::updateTimeTicks() {
     }
 }
 
+void ChartWidgetPrivate::updateValueTicks() {
+    // A label's height and as much again between labels; until laid out, the most steps.
+    const double labelHeight = QFontMetricsF(leftAxis->labelsFont()).height();
+    const double height = plot().height();
+    const int steps =
+        height > 0 ? qBound(1, int(height / (2 * labelHeight)), kMaxValueSteps) : kMaxValueSteps;
+    for (int i = 0; i < 2; ++i) {
+        const double span = ranges[i][1] - ranges[i][0];
+        if (!(span > 0))
+            continue;
+        QValueAxis *axis = i == 0 ? leftAxis : rightAxis;
+        const double step = valueStep(span, steps);
+        if (axis->tickInterval() != step)
+            axis->setTickInterval(step);
+    }
+}
+
 ChartWidget::ChartWidget(QWidget *parent)
     : QWidget(parent)
     , d(std::make_unique<ChartWidgetPrivate>(*this)) {
@@ -194,6 +215,7 @@ ChartWidget::ChartWidget(QWidget *parent)
     layout->addWidget(d->view);
     setFocusProxy(d->view);
     connect(d->chart, &QChart::plotAreaChanged, this, [this] {
+        d->updateValueTicks();
         d->placeOverlays();
         d->updateTimeTicks();
         Q_EMIT plotResized();
@@ -277,7 +299,7 @@ void ChartWidget::setAxisRange(ChartAxis axis, double min, double max) {
     r[1] = max;
     QValueAxis *a = axis == ChartAxis::Left ? d->leftAxis : d->rightAxis;
     a->setRange(min, max);
-    a->setTickInterval(tickStep(max - min));
+    d->updateValueTicks();
     d->updatePlot();
 }
 
@@ -343,6 +365,10 @@ qint64 ChartWidget::timeEnd() const {
 
 QWidget *ChartWidget::plotSurface() const {
     return d->view->viewport();
+}
+
+double ChartWidget::valueTickStep(ChartAxis axis) const {
+    return (axis == ChartAxis::Left ? d->leftAxis : d->rightAxis)->tickInterval();
 }
 
 QRectF ChartWidget::plotArea() const {

@@ -69,6 +69,10 @@ public:
     // Ticks on round times (every 10 s, 1 min, 1 h...), which QDateTimeAxis cannot do: its
     // ticks divide the range evenly, so a moving window would show 03:10:47, 03:11:30...
     void updateTimeTicks();
+    // Each value axis' tick step for its range and the plot's height: round values, at most
+    // five steps, fewer in a short pane so its labels never crowd (Qt Charts elides crowded
+    // vertical labels to "...").
+    void updateValueTicks();
     // Height of the band under the plot that holds the time labels.
     [[nodiscard]] int timeLabelStrip() const;
     struct TimeLabel {
