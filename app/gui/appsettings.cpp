@@ -100,6 +100,7 @@ std::optional<Session::Settings> AppSettings::sessionSettings(QString *error) co
     switch (kind) {
     case Kind::Demo:
         s.line.kind = link::LineSettings::Kind::Demo;
+        s.demoActivity = true; // people try the demo to see what the charts show
         break;
     case Kind::Serial:
         if (serialPort.trimmed().isEmpty()) {

@@ -29,6 +29,7 @@ struct Options {
     SimFaults faults;
     int pace = 0;
     bool robotModeOff = false;
+    bool activity = false;
 };
 
 QTextStream &out() {
@@ -88,6 +89,7 @@ std::unique_ptr<SimLine> buildLine(const Options &o) {
     }
     line->setFaults(o.faults);
     line->setBaud(o.pace);
+    line->setDemoActivity(o.activity);
     line->setClockRunning(true);
     return line;
 }
@@ -138,6 +140,9 @@ int main(int argc, char *argv[]) {
          QStringLiteral("N")},
         {QStringLiteral("robot-mode-off"),
          QStringLiteral("Start with robot mode off (stations answer NAK 00005).")},
+        {QStringLiteral("activity"),
+         QStringLiteral("Work like the GUI's demo: joints on port 1 every 15 s, port 2 resting "
+                        "in the stand for 30 s of every 70 s, the feeder feeding 2 s every 20 s.")},
         {QStringLiteral("log"),
          QStringLiteral("Append every received and sent chunk in hex to FILE."),
          QStringLiteral("FILE")},
@@ -147,6 +152,7 @@ int main(int argc, char *argv[]) {
     Options o;
     o.model = p.value(QStringLiteral("model")).toUpper();
     o.feeder = p.isSet(QStringLiteral("feeder"));
+    o.activity = p.isSet(QStringLiteral("activity"));
     o.noAddr = p.isSet(QStringLiteral("no-addr"));
     o.address = intOption(p, QStringLiteral("address"), -1, 1, 99);
     o.pace = intOption(p, QStringLiteral("pace"), 0, 0, 4'000'000);

@@ -38,6 +38,8 @@ public:
         Addressing addressing = Addressing::Auto;
         int targetAddress = 1;
         bool scanAllAddresses = false;
+        // On the demo line: its station's ports solder and rest, its feeder feeds.
+        bool demoActivity = false;
     };
 
     explicit Session(QObject *parent = nullptr);

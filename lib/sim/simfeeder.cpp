@@ -39,6 +39,12 @@ void SimFeeder::advance(int ms) {
     }
 }
 
+void SimFeeder::startFeed(bool forward) {
+    m_fedDmm = 0;
+    m_loading = false;
+    m_direction = m_error != 0 ? 0 : forward ? 1 : -1;
+}
+
 std::optional<Value> SimFeeder::readLive(const ResolvedCommand &cmd) {
     const QByteArray code = cmd.code;
     auto hours = [](double s) { return Value::ofNumber(qint64(s / 3600.0)); };
@@ -69,11 +75,9 @@ std::optional<Value> SimFeeder::readLive(const ResolvedCommand &cmd) {
 std::optional<QByteArray> SimFeeder::applyWrite(const ResolvedCommand &cmd, qint64 value) {
     const QByteArray code = cmd.code;
     if (code == "SFD") {
-        m_fedDmm = 0;
-        m_loading = false;
-        m_direction = m_error != 0 ? 0 : value == 1 ? 1 : -1;
+        startFeed(value == 1);
     } else if (code == "SSD") {
-        m_direction = 0;
+        stopFeed();
     } else if (code == "SLD") {
         m_loading = value == 1;
         m_direction = m_loading ? 1 : 0;

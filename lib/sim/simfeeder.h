@@ -17,6 +17,9 @@ public:
     [[nodiscard]] bool isFeeding() const { return m_direction != 0; }
     [[nodiscard]] double fedDmm() const { return m_fedDmm; }
     void setError(int code) { m_error = code; }
+    // As W-SFD and W-SSD; the demo's activity feeds without a request on the line.
+    void startFeed(bool forward = true);
+    void stopFeed() { m_direction = 0; }
     [[nodiscard]] int error() const { return m_error; }
 
     void advance(int ms) override;

@@ -86,6 +86,14 @@ void SimLine::tick() {
 void SimLine::advance(int ms) {
     for (const auto &d : m_devices)
         d->advance(ms);
+    if (m_activity)
+        m_activity->advance(ms);
+}
+
+void SimLine::setDemoActivity(bool on) {
+    if (on == hasDemoActivity())
+        return;
+    m_activity = on ? std::make_unique<DemoActivity>(station(), feeder()) : nullptr;
 }
 
 bool SimLine::chance(double share) {

@@ -10,6 +10,7 @@
 // from a timer while the clock runs, or explicitly through advance().
 #pragma once
 
+#include "demoactivity.h"
 #include "simfeeder.h"
 #include "simstation.h"
 
@@ -76,6 +77,10 @@ public:
     // request arriving when a tick is due takes its place.
     void setTickMs(int ms) { m_tickTimer.setInterval(qMax(1, ms)); }
     void advance(int ms);
+    // The demo's station and feeder at work (DemoActivity); off by default, so tests see
+    // devices that change only when told to.
+    void setDemoActivity(bool on);
+    [[nodiscard]] bool hasDemoActivity() const { return m_activity != nullptr; }
     [[nodiscard]] const SimLineStats &stats() const { return m_stats; }
 
 public Q_SLOTS:
@@ -118,6 +123,7 @@ private:
     QTimer m_tickTimer;
     qint64 m_lastTickNs = 0;
     SimLineStats m_stats;
+    std::unique_ptr<DemoActivity> m_activity;
 };
 
 } // namespace tipscope::sim

@@ -7,9 +7,10 @@ namespace tipscope::sim {
 using namespace tipscope::protocol;
 
 namespace {
-constexpr double kHeatRatePerS = 120.0; // °C/s at full power
-constexpr double kLossPerS = 0.15;      // fraction of (tip - room) lost per second
-constexpr double kGain = 40.0;          // per mille per °C of error
+constexpr double kHeatRatePerS = 120.0;  // °C/s at full power
+constexpr double kLossPerS = 0.15;       // fraction of (tip - room) lost per second
+constexpr double kGain = 40.0;           // per mille per °C of error
+constexpr double kJointDrawPerS = 120.0; // °C/s a joint draws: a dip of about 50 °C a second
 constexpr int kMaxStepMs = 50;
 constexpr int kNoToolError = 4;
 constexpr qint64 kDisabledDelay = 99999;
@@ -70,6 +71,10 @@ void SimStation::setStatus(int port, int status) {
     p.secondsInStatus = 0;
 }
 
+void SimStation::solderJoint(int port, double seconds) {
+    m_ports[port - 1].jointLeftS = qMax(0.0, seconds);
+}
+
 QByteArray SimStation::toolCode(char letter, int port, int tool) const {
     return QByteArray(1, letter) + QByteArray::number(port) + QByteArray::number(tool);
 }
@@ -106,6 +111,10 @@ void SimStation::step(SimPort &p, int n, double dt) {
     }
     p.power = int(qBound(0.0, demand, double(limit)));
     p.tip += dt * (p.power / 1000.0 * kHeatRatePerS - (p.tip - kAmbient) * kLossPerS);
+    if (p.jointLeftS > 0) {
+        p.tip = qMax(kAmbient, p.tip - qMin(dt, p.jointLeftS) * kJointDrawPerS);
+        p.jointLeftS -= dt;
+    }
     p.secondsInStatus += dt;
     if (p.tool == 0) {
         p.noToolS += dt;

@@ -29,6 +29,7 @@ struct SimPort {
     double highFor = 0, lowFor = 0;
     double pluggedS = 0, workS = 0, sleepS = 0, hibernationS = 0, noToolS = 0;
     int sleepCycles = 0, desolderCycles = 0;
+    double jointLeftS = 0;   // a joint drawing heat from the tip (solderJoint())
     double dispensedDmm = 0; // ALE
     int dispensedCycles = 0;
     double dispenseLeftDmm = 0;
@@ -46,6 +47,9 @@ public:
     void latchAlarm(int port, int flags) { m_ports[port - 1].alarmFlags |= flags; }
     void setFuse(bool present) { m_fusePresent = present; }
     void setStatus(int port, int status);
+    // A joint on the tip for `seconds`: it draws heat faster than the heater can give at first,
+    // so the tip dips and the controller brings it back, as at the bench.
+    void solderJoint(int port, double seconds);
 
     void advance(int ms) override;
     void restoreFactorySettings() override;

@@ -50,6 +50,7 @@ private Q_SLOTS:
     void onePanePerPortOnRequest();
     void hardwareTemperaturesAreDrawnOnRequest();
     void theFeedersSeriesStartAtTheirFirstReadings();
+    void theDemoAtWorkShowsAJointsRecoveryAndTheFeederFeeding();
 
 private:
     void connectDemo();
@@ -319,6 +320,26 @@ void TestChartsPage::theFeedersSeriesStartAtTheirFirstReadings() {
     for (const auto &s :
          b->samples(b->seriesIndex(QStringLiteral("speed")), b->firstTime(), b->lastTime() + 1))
         QCOMPARE(s.value, qint32(*speed));
+}
+
+void TestChartsPage::theDemoAtWorkShowsAJointsRecoveryAndTheFeederFeeding() {
+    m_session->disconnectFromLine();
+    Session::Settings settings;
+    settings.line.kind = link::LineSettings::Kind::Demo;
+    settings.demoActivity = true;
+    m_session->connectTo(settings);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);
+    m_session->scheduler().setVisiblePorts(m_session->station(), m_page->visiblePorts());
+    // The first joint is 8 s into the session; it and its recovery reach the panel.
+    const int jointMs = sim::DemoActivity::kJointOffsetMs + 4000;
+    QTRY_VERIFY2_WITH_TIMEOUT(m_page->measurementText().contains(QStringLiteral("recovery at ")),
+                              qPrintable(m_page->measurementText()), jointMs + kDataMs);
+    const model::TelemetryBuffer *feeder =
+        m_session->telemetry().buffer(Session::telemetryKey(*m_session->feeder(), 0));
+    QTRY_VERIFY_WITH_TIMEOUT(feeder->windowStats(feeder->seriesIndex(QStringLiteral("fed")),
+                                                 feeder->firstTime(), feeder->lastTime() + 1)
+                                     .max > 0,
+                             kDataMs);
 }
 
 QTEST_MAIN(TestChartsPage)

@@ -1,0 +1,54 @@
+#include "demoactivity.h"
+
+#include "simfeeder.h"
+#include "simstation.h"
+
+namespace tipscope::sim {
+
+namespace {
+constexpr int kJointPort = 1;
+constexpr int kRestingPort = 2;
+constexpr int kWorking = 0;
+constexpr int kStand = 1;
+} // namespace
+
+DemoActivity::DemoActivity(SimStation *station, SimFeeder *feeder)
+    : m_station(station)
+    , m_feeder(feeder) {}
+
+bool DemoActivity::passed(int ms, qint64 offset, qint64 period) const {
+    const auto count = [&](qint64 t) { return t < offset ? 0 : (t - offset) / period + 1; };
+    return count(m_ms) > count(m_ms - ms);
+}
+
+bool DemoActivity::portInUse(int port) const {
+    if (!m_station || m_station->portCount() < port)
+        return false;
+    const SimPort &p = m_station->port(port);
+    return p.tool != 0 && p.error == 0;
+}
+
+void DemoActivity::advance(int ms) {
+    if (ms <= 0)
+        return;
+    m_ms += ms;
+    if (portInUse(kJointPort) && m_station->port(kJointPort).status == kWorking &&
+        passed(ms, kJointOffsetMs, kJointEveryMs))
+        m_station->solderJoint(kJointPort, kJointSeconds);
+    if (portInUse(kRestingPort)) {
+        if (passed(ms, kRestStartMs, kRestCycleMs) &&
+            m_station->port(kRestingPort).status == kWorking)
+            m_station->setStatus(kRestingPort, kStand);
+        else if (passed(ms, kRestCycleMs, kRestCycleMs) &&
+                 m_station->port(kRestingPort).status != kWorking)
+            m_station->setStatus(kRestingPort, kWorking);
+    }
+    if (m_feeder && m_feeder->error() == 0) {
+        if (passed(ms, kFeedOffsetMs, kFeedEveryMs) && !m_feeder->isFeeding())
+            m_feeder->startFeed();
+        else if (passed(ms, kFeedOffsetMs + kFeedMs, kFeedEveryMs))
+            m_feeder->stopFeed();
+    }
+}
+
+} // namespace tipscope::sim
