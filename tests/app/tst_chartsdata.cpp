@@ -271,6 +271,17 @@ void TestChartsData::restsAndAnUnheatedTipAreNoDips() {
     for (int i = 0; i < 100; ++i)
         fresh.append(kT0 + i * 100, {25 + 3 * i, i < 10 ? 0 : 350, 1000, 0});
     QVERIFY(Measurements::measurePort(fresh, kT0, kT0 + 10'000, 5).heatUps.isEmpty());
+    // A tool pulled while working: the first samples of the fall still carry full power.
+    TelemetryBuffer pulled(kPortSeries);
+    for (int i = 0; i < 600; ++i) {
+        const bool gone = i >= 300;
+        pulled.append(kT0 + i * 100, {gone ? qMax(25, 350 - (i - 299) * 5) : 350, 350,
+                                      gone && i > 302 ? 0
+                                      : gone          ? 1000
+                                                      : 400,
+                                      0});
+    }
+    QVERIFY(Measurements::measurePort(pulled, kT0, kT0 + 60'000, 5).recoveries.isEmpty());
 }
 
 void TestChartsData::aWindowReachingBeforeTheDataIsMeasuredFromItsFirstSample() {

@@ -107,12 +107,14 @@ PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64
     t0 = qMax(t0, buffer.firstTime());
     if (t1 <= t0)
         return out;
-    // A tip cooling with the heater off (no tool, a port error) is no dip to recover from.
+    // A tip cooling with the heater off (no tool, a port error) is no dip to recover from: under
+    // a joint the heater never stops, so one sample without power while below the band rules the
+    // dip out (the first samples after a tool is pulled still carry the power it had).
     const auto heated = [&](qint64 from, qint64 to) {
         if (power < 0)
             return true;
         const QList<MinMaxBucket> p = buffer.decimate(power, from, to, 1);
-        return !p.isEmpty() && p.first().max > 0;
+        return !p.isEmpty() && p.first().min > 0;
     };
 
     // The window splits into segments of one setpoint and one status.
