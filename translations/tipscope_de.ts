@@ -27,12 +27,12 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../app/gui/appsettings.cpp" line="106"/>
+        <location filename="../app/gui/appsettings.cpp" line="107"/>
         <source>choose a serial port</source>
         <translation>wählen Sie eine serielle Schnittstelle</translation>
     </message>
     <message>
-        <location filename="../app/gui/appsettings.cpp" line="116"/>
+        <location filename="../app/gui/appsettings.cpp" line="117"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; hat nicht die Form HOST:PORT (zum Beispiel 192.168.1.20:4001)</translation>
     </message>
@@ -2493,40 +2493,40 @@ Dauerhaft mit dieser udev-Regel:
     <name>Session</name>
     <message>
         <location filename="../lib/model/session.cpp" line="40"/>
-        <location filename="../lib/model/session.cpp" line="110"/>
-        <location filename="../lib/model/session.cpp" line="113"/>
+        <location filename="../lib/model/session.cpp" line="111"/>
+        <location filename="../lib/model/session.cpp" line="114"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="109"/>
-        <location filename="../lib/model/session.cpp" line="120"/>
-        <location filename="../lib/model/session.cpp" line="127"/>
+        <location filename="../lib/model/session.cpp" line="110"/>
+        <location filename="../lib/model/session.cpp" line="121"/>
+        <location filename="../lib/model/session.cpp" line="128"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="143"/>
+        <location filename="../lib/model/session.cpp" line="144"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="211"/>
+        <location filename="../lib/model/session.cpp" line="212"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="213"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="218"/>
+        <location filename="../lib/model/session.cpp" line="219"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="226"/>
+        <location filename="../lib/model/session.cpp" line="227"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -2698,7 +2698,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="381"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>

@@ -27,12 +27,12 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../app/gui/appsettings.cpp" line="106"/>
+        <location filename="../app/gui/appsettings.cpp" line="107"/>
         <source>choose a serial port</source>
         <translation>elija un puerto serie</translation>
     </message>
     <message>
-        <location filename="../app/gui/appsettings.cpp" line="116"/>
+        <location filename="../app/gui/appsettings.cpp" line="117"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; no tiene la forma HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
     </message>
@@ -2494,40 +2494,40 @@ Hágalo permanente con esta regla de udev:
     <name>Session</name>
     <message>
         <location filename="../lib/model/session.cpp" line="40"/>
-        <location filename="../lib/model/session.cpp" line="110"/>
-        <location filename="../lib/model/session.cpp" line="113"/>
+        <location filename="../lib/model/session.cpp" line="111"/>
+        <location filename="../lib/model/session.cpp" line="114"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="109"/>
-        <location filename="../lib/model/session.cpp" line="120"/>
-        <location filename="../lib/model/session.cpp" line="127"/>
+        <location filename="../lib/model/session.cpp" line="110"/>
+        <location filename="../lib/model/session.cpp" line="121"/>
+        <location filename="../lib/model/session.cpp" line="128"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="143"/>
+        <location filename="../lib/model/session.cpp" line="144"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="211"/>
+        <location filename="../lib/model/session.cpp" line="212"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="213"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="218"/>
+        <location filename="../lib/model/session.cpp" line="219"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="226"/>
+        <location filename="../lib/model/session.cpp" line="227"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -2699,7 +2699,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="381"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>

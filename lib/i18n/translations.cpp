@@ -51,10 +51,15 @@ QString installTranslators(QCoreApplication &app, const QString &preference) {
     const QString language = resolveLanguage(preference);
     qCDebug(lcI18n) << "preference" << preference << "system" << QLocale::system().uiLanguages()
                     << "shows" << language;
-    if (language == kSourceLanguage)
-        return language;
-
     auto *own = new QTranslator(&app);
+    if (language == kSourceLanguage) {
+        // Only the English plural forms: every other text is its own English source.
+        if (own->load(catalogue(language)))
+            QCoreApplication::installTranslator(own);
+        else
+            qCWarning(lcI18n) << "cannot load" << catalogue(language);
+        return language;
+    }
     if (own->load(catalogue(language)))
         QCoreApplication::installTranslator(own);
     else

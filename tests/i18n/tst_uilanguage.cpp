@@ -75,6 +75,7 @@ private Q_SLOTS:
     void guiHelpFollowsThePreference();
     void mainWindowShowsGermanWithQtsOwnTexts();
     void catalogTextsAndLinkErrorsAreShownInGermanButDataStaysEnglish();
+    void englishCountsInSingularAndPlural();
 };
 
 void TestUiLanguage::initTestCase() {
@@ -227,6 +228,28 @@ void TestUiLanguage::catalogTextsAndLinkErrorsAreShownInGermanButDataStaysEnglis
     // Back in English, the same call gives the catalog's own words.
     QCOMPARE(protocol::catalogText(QStringLiteral("Selected temperature")),
              QStringLiteral("Selected temperature"));
+}
+
+// English is the source language, but "%n device(s)" would reach people as written without the
+// English plurals catalogue.
+void TestUiLanguage::englishCountsInSingularAndPlural() {
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), QStringLiteral("en")),
+             QStringLiteral("en"));
+    const auto devices = [](int n) {
+        return QCoreApplication::translate("Session", "%1, %n device(s)", nullptr, n)
+            .arg(QStringLiteral("demo"));
+    };
+    const QString one = devices(1);
+    const QString two = devices(2);
+    const QString recoveries =
+        QCoreApplication::translate("MeasurementReport", "… %n more recovery(s)", nullptr, 3);
+    const QString plain = QCoreApplication::translate("tipscope::gui::ChartsPage", "&Follow");
+
+    qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
+    QCOMPARE(one, QStringLiteral("demo, 1 device"));
+    QCOMPARE(two, QStringLiteral("demo, 2 devices"));
+    QCOMPARE(recoveries, QStringLiteral("… 3 more recoveries"));
+    QCOMPARE(plain, QStringLiteral("&Follow")); // everything else is the source itself
 }
 
 QTEST_MAIN(TestUiLanguage)

@@ -1,0 +1,149 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en" sourcelanguage="en">
+<context>
+    <name>FrameDecoder</name>
+    <message numerus="yes">
+        <location filename="../lib/protocol/framedecoder.cpp" line="147"/>
+        <source>%n byte(s) outside any frame</source>
+        <translation>
+            <numerusform>%n byte outside any frame</numerusform>
+            <numerusform>%n bytes outside any frame</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>MeasurementReport</name>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/measurementreport.cpp" line="52"/>
+        <source>… %n more heat-up(s)</source>
+        <translation>
+            <numerusform>… %n more heat-up</numerusform>
+            <numerusform>… %n more heat-ups</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/measurementreport.cpp" line="68"/>
+        <source>… %n more recovery(s)</source>
+        <translation>
+            <numerusform>… %n more recovery</numerusform>
+            <numerusform>… %n more recoveries</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ProfileApplier</name>
+    <message numerus="yes">
+        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <source>%n difference(s)</source>
+        <translation>
+            <numerusform>%n difference</numerusform>
+            <numerusform>%n differences</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>Session</name>
+    <message numerus="yes">
+        <location filename="../lib/model/session.cpp" line="227"/>
+        <source>%1, %n device(s)</source>
+        <translation>
+            <numerusform>%1, %n device</numerusform>
+            <numerusform>%1, %n devices</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ChartWidget</name>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… and %n more</numerusform>
+            <numerusform>… and %n more</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ChartsPage</name>
+    <message numerus="yes">
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="125"/>
+        <source>Replay: %1 (%Ln row(s))</source>
+        <translation>
+            <numerusform>Replay: %1 (%Ln row)</numerusform>
+            <numerusform>Replay: %1 (%Ln rows)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ConsolePage</name>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n raw byte</numerusform>
+            <numerusform>%n raw bytes</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ErrorsPage</name>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <source>%n older events were dropped</source>
+        <translation>
+            <numerusform>%n older event was dropped</numerusform>
+            <numerusform>%n older events were dropped</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FrameBuilder</name>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/framebuilder.cpp" line="392"/>
+        <source>%n byte(s), a valid frame: %1</source>
+        <translation>
+            <numerusform>%n byte, a valid frame: %1</numerusform>
+            <numerusform>%n bytes, a valid frame: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/framebuilder.cpp" line="395"/>
+        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
+        <translation>
+            <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
+            <numerusform>%n bytes, not a valid frame (%1): sent as typed</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::ProfileDialog</name>
+    <message numerus="yes">
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="111"/>
+        <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
+        <translation>
+            <numerusform>Profile from %1 (%2, software %3), created %4: %n setting differs from the device.</numerusform>
+            <numerusform>Profile from %1 (%2, software %3), created %4: %n settings differ from the device.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="117"/>
+        <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
+        <translation>
+            <numerusform>Dry run: %n frame would be sent; nothing was written.</numerusform>
+            <numerusform>Dry run: %n frames would be sent; nothing was written.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::RequestQueue</name>
+    <message numerus="yes">
+        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <source>%1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>%1 after %n attempt</numerusform>
+            <numerusform>%1 after %n attempts</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>
