@@ -19,10 +19,14 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(ConsoleModel)
 };
 
-QString commandName(const Frame &f) {
-    // The name of the command in any family that has it, for people reading raw frames.
+// The command's name for the device's family; for a device not known (yet), in any family that
+// has it.
+QString commandName(const Frame &f, const QString &family) {
     const Catalog &cat = Catalog::builtin();
     const Direction dir = f.header == Header::Write ? Direction::Write : Direction::Read;
+    if (!family.isEmpty())
+        if (auto r = cat.resolve(family, f.command, dir))
+            return catalogText(r->spec->name);
     for (const QString &fam : cat.familyNames())
         if (auto r = cat.resolve(fam, f.command, dir))
             return catalogText(r->spec->name);
@@ -88,6 +92,23 @@ ConsoleEntry ConsoleModel::fromTap(const link::TapEvent &e) {
         break;
     }
     return c;
+}
+
+void ConsoleModel::setDeviceFamilies(const QMap<int, QString> &byAddress) {
+    if (byAddress == m_families)
+        return;
+    m_families = byAddress;
+    if (!m_entries.empty())
+        Q_EMIT dataChanged(index(0, Name), index(rowCount() - 1, Name));
+}
+
+QString ConsoleModel::familyOf(const ConsoleEntry &e) const {
+    if (!e.frame || m_families.isEmpty())
+        return {};
+    // A request names the device it goes to, an answer the device it comes from.
+    const std::optional<int> device =
+        e.direction == ConsoleEntry::Direction::Tx ? e.frame->target : e.frame->source;
+    return m_families.value(device.value_or(-1));
 }
 
 void ConsoleModel::add(const ConsoleEntry &e) {
@@ -208,7 +229,7 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
     case Command:
         return f ? QString::fromLatin1(f->command) : QString();
     case Name:
-        return f ? commandName(*f) : QString();
+        return f ? commandName(*f, familyOf(e)) : QString();
     case Data:
         return f ? QString::fromLatin1(f->data) : QString();
     case Bcc:

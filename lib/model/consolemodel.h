@@ -13,6 +13,7 @@
 #include "link/frametap.h"
 
 #include <QAbstractTableModel>
+#include <QMap>
 #include <QPointer>
 #include <QTimer>
 #include <deque>
@@ -57,6 +58,10 @@ public:
     void setPaused(bool paused);
     [[nodiscard]] bool isPaused() const { return m_paused; }
     void setRelativeTime(bool relative);
+    // The families of the devices on the line by address (-1: the device of a line without
+    // addresses), so a code that families share is named as the device in the frame knows it:
+    // SPD is the feeder's feeding speed and the ALE's dispensing speed.
+    void setDeviceFamilies(const QMap<int, QString> &byAddress);
     void clear();
     // Shows the entries that arrived since the last batch now.
     void flush();
@@ -85,6 +90,7 @@ public:
 private:
     void add(const ConsoleEntry &e);
     [[nodiscard]] QString timeText(const ConsoleEntry &e) const;
+    [[nodiscard]] QString familyOf(const ConsoleEntry &e) const;
 
     std::deque<ConsoleEntry> m_entries;
     QList<ConsoleEntry> m_pending; // arrived, not yet in the table
@@ -94,6 +100,7 @@ private:
     bool m_paused = false;
     bool m_relative = false;
     qint64 m_originUs = -1;
+    QMap<int, QString> m_families;
     QPointer<link::FrameTap> m_tap;
     QMetaObject::Connection m_connection;
 };

@@ -22,6 +22,7 @@ private Q_SLOTS:
     void flushShowsWhatArrivedWithoutWaiting();
     void beyondTheCapacityTheOldestRowsGo();
     void pauseHoldsRowsAndResumeShowsThemAll();
+    void aCodeFamiliesShareIsNamedAsTheDeviceInTheFrameKnowsIt();
 };
 
 void TestConsoleModel::aBurstIsInsertedAtOnceAndInOrder() {
@@ -85,6 +86,32 @@ void TestConsoleModel::pauseHoldsRowsAndResumeShowsThemAll() {
     model.setPaused(false);
     QCOMPARE(model.rowCount(), 21);
     QCOMPARE(noteAt(model, 20), QStringLiteral("19"));
+}
+
+void TestConsoleModel::aCodeFamiliesShareIsNamedAsTheDeviceInTheFrameKnowsIt() {
+    using protocol::Frame;
+    link::FrameTap tap;
+    ConsoleModel model(nullptr, 1000);
+    model.attach(&tap);
+    tap.tx(Frame::read("SPD").addressed(0, 10).encode());
+    protocol::DecodeEvent answer;
+    answer.frame = Frame{10, 0, protocol::Header::Answer, "SPD", "00100"};
+    answer.raw = answer.frame.encode();
+    tap.decoded(answer, false);
+    tap.tx(Frame::read("SPD").addressed(0, 1).encode());
+    model.flush();
+    QCOMPARE(model.rowCount(), 3);
+    const auto name = [&model](int row) {
+        return model.data(model.index(row, ConsoleModel::Name), Qt::DisplayRole).toString();
+    };
+    // Nothing known of the devices yet: the name of some family that has the code.
+    QVERIFY(!name(0).isEmpty());
+    QSignalSpy renamed(&model, &ConsoleModel::dataChanged);
+    model.setDeviceFamilies({{1, QStringLiteral("ALE")}, {10, QStringLiteral("SFR")}});
+    QCOMPARE(renamed.count(), 1);
+    QCOMPARE(name(0), QStringLiteral("Feeding speed"));    // the request to the feeder
+    QCOMPARE(name(1), QStringLiteral("Feeding speed"));    // the feeder's answer
+    QCOMPARE(name(2), QStringLiteral("Dispensing speed")); // the request to the ALE
 }
 
 QTEST_MAIN(TestConsoleModel)

@@ -287,6 +287,7 @@ void ConsolePage::followLine() {
 
 void ConsolePage::updateDevices() {
     QList<FrameBuilder::Target> targets;
+    QMap<int, QString> families;
     const QString current = m_address->currentText();
     {
         const QSignalBlocker block(m_address);
@@ -297,6 +298,7 @@ void ConsolePage::updateDevices() {
                                       ? d->info().addressText() + QLatin1Char(' ') + d->info().model
                                       : tr("%1 (no address)").arg(d->info().model);
             targets.append({label, d->address(), d->family()});
+            families.insert(d->address().value_or(-1), d->family());
             if (d->address())
                 m_address->addItem(targets.last().label, *d->address());
         }
@@ -307,6 +309,7 @@ void ConsolePage::updateDevices() {
             m_address->setEditText(current.isEmpty() ? tr("All") : current);
     }
     m_builder->setTargets(targets);
+    m_model->setDeviceFamilies(families);
 }
 
 void ConsolePage::applyFilter() {
