@@ -252,14 +252,14 @@ void TestCli::profileSavesDiffsAndAppliesWithReadBack() {
     QCOMPARE(runCli({"--port", port, "write", "A22", "-5"}).exitCode, 0);
     const Run diff = runCli({"--port", port, "profile", "diff", file});
     QCOMPARE(diff.exitCode, 0);
-    QVERIFY2(diff.out.contains(QStringLiteral("2 difference(s)")), qPrintable(diff.out));
+    QVERIFY2(diff.out.contains(QStringLiteral("2 differences")), qPrintable(diff.out));
     const Run dry = runCli({"--port", port, "profile", "apply", "--dry-run", file});
     QVERIFY(dry.out.contains(QStringLiteral("would send 02 57 50 4C 4D 30 31 30 30 30")));
     const Run applied = runCli({"--port", port, "profile", "apply", file});
     QCOMPARE(applied.exitCode, 0);
     QVERIFY2(applied.out.contains(QStringLiteral("2 changed")), qPrintable(applied.out));
     QVERIFY(runCli({"--port", port, "profile", "diff", file})
-                .out.contains(QStringLiteral("0 difference(s)")));
+                .out.contains(QStringLiteral("0 differences")));
 
     QFile bad(dir.filePath(QStringLiteral("bad.json")));
     QVERIFY(bad.open(QIODevice::WriteOnly));
