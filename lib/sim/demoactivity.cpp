@@ -35,19 +35,26 @@ void DemoActivity::advance(int ms) {
     if (portInUse(kJointPort) && m_station->port(kJointPort).status == kWorking &&
         passed(ms, kJointOffsetMs, kJointEveryMs))
         m_station->solderJoint(kJointPort, kJointSeconds);
-    if (portInUse(kRestingPort)) {
-        if (passed(ms, kRestStartMs, kRestCycleMs) &&
-            m_station->port(kRestingPort).status == kWorking)
-            m_station->setStatus(kRestingPort, kStand);
-        else if (passed(ms, kRestCycleMs, kRestCycleMs) &&
-                 m_station->port(kRestingPort).status != kWorking)
+    // Ends before starts: a tick long enough to hold both must not leave a start running.
+    if (m_resting && passed(ms, kRestCycleMs, kRestCycleMs)) {
+        m_resting = false;
+        if (portInUse(kRestingPort) && m_station->port(kRestingPort).status != kWorking)
             m_station->setStatus(kRestingPort, kWorking);
     }
-    if (m_feeder && m_feeder->error() == 0) {
-        if (passed(ms, kFeedOffsetMs, kFeedEveryMs) && !m_feeder->isFeeding())
-            m_feeder->startFeed();
-        else if (passed(ms, kFeedOffsetMs + kFeedMs, kFeedEveryMs))
-            m_feeder->stopFeed();
+    if (portInUse(kRestingPort) && passed(ms, kRestStartMs, kRestCycleMs) &&
+        m_station->port(kRestingPort).status == kWorking) {
+        m_station->setStatus(kRestingPort, kStand);
+        m_resting = true;
+    }
+    const bool feedEnds = passed(ms, kFeedOffsetMs + kFeedMs, kFeedEveryMs);
+    if (m_feeding && feedEnds) {
+        m_feeding = false;
+        m_feeder->stopFeed();
+    }
+    if (m_feeder && m_feeder->error() == 0 && !m_feeder->isFeeding() && !feedEnds &&
+        passed(ms, kFeedOffsetMs, kFeedEveryMs)) {
+        m_feeder->startFeed();
+        m_feeding = true;
     }
 }
 

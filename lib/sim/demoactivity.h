@@ -3,7 +3,8 @@
 // 40 s, rests in the stand for 30 s (where the demo's tool sleeps at once) and is picked up again
 // (a wake and its heat-up); the feeder feeds for 2 s every 20 s. Ports 3 and 4 are left alone
 // for what tests and people set on them. A port without a tool or in error, and a feeder in
-// error, are skipped. It runs on the devices' simulated time, so it is as repeatable as they are.
+// error, are skipped; a rest or a feed it did not start is left to whoever started it. It runs on
+// the devices' simulated time, so it is as repeatable as they are.
 #pragma once
 
 #include <QtGlobal>
@@ -38,6 +39,10 @@ private:
     SimStation *m_station;
     SimFeeder *m_feeder;
     qint64 m_ms = 0;
+    // What the activity itself started: it ends only that, never a rest or a feed someone else
+    // asked for on the line.
+    bool m_resting = false;
+    bool m_feeding = false;
 };
 
 } // namespace tipscope::sim

@@ -30,6 +30,8 @@ private Q_SLOTS:
     void port2RestsInTheStandAndIsPickedUpAgain();
     void theFeederFeedsTwoSecondsAndStops();
     void aPortWithoutAToolIsLeftAlone();
+    void whatSomeoneElseStartedIsLeftToThem();
+    void aStallLongerThanAFeedStartsNoFeed();
     void withoutTheActivityTheDemoChangesNothingByItself();
 };
 
@@ -94,6 +96,29 @@ void TestDemoActivity::aPortWithoutAToolIsLeftAlone() {
     const double lowest = runTo(*line, 0, DemoActivity::kJointOffsetMs + 3000, 1);
     QCOMPARE(lowest, SimStation::kAmbient);
     QCOMPARE(line->station()->port(1).jointLeftS, 0.0);
+}
+
+void TestDemoActivity::whatSomeoneElseStartedIsLeftToThem() {
+    auto line = SimLine::demo();
+    line->setDemoActivity(true);
+    // A feed started on the line (W-SFD) before the activity's own: it keeps feeding past the
+    // activity's stop time, and the activity starts none of its own over it.
+    line->feeder()->startFeed();
+    runTo(*line, 0, DemoActivity::kFeedOffsetMs + DemoActivity::kFeedMs + 1000, 1);
+    QVERIFY(line->feeder()->isFeeding());
+    // Port 2 put in the stand by someone else stays there when the activity's rest would end.
+    line->station()->setStatus(2, 1);
+    runTo(*line, DemoActivity::kFeedOffsetMs + DemoActivity::kFeedMs + 1000,
+          DemoActivity::kRestCycleMs + 1000, 2);
+    QVERIFY(line->station()->port(2).status != 0);
+}
+
+void TestDemoActivity::aStallLongerThanAFeedStartsNoFeed() {
+    auto line = SimLine::demo();
+    line->setDemoActivity(true);
+    runTo(*line, 0, DemoActivity::kFeedOffsetMs - kStepMs, 1);
+    line->advance(DemoActivity::kFeedMs + 2 * kStepMs); // start and stop in one step
+    QVERIFY(!line->feeder()->isFeeding());
 }
 
 void TestDemoActivity::withoutTheActivityTheDemoChangesNothingByItself() {
