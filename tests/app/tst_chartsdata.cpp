@@ -282,6 +282,18 @@ void TestChartsData::restsAndAnUnheatedTipAreNoDips() {
                                       0});
     }
     QVERIFY(Measurements::measurePort(pulled, kT0, kT0 + 60'000, 5).recoveries.isEmpty());
+    // But a joint whose first sample still carries the idle power of a tip just above its
+    // setpoint (0: power and tip are read one after the other) is a dip all the same.
+    TelemetryBuffer joint(kPortSeries);
+    for (int i = 0; i < 300; ++i) {
+        const bool dip = i >= 100 && i < 110;
+        joint.append(kT0 + i * 100, {dip ? 330 - (i == 105 ? 10 : 0) : 352, 350,
+                                     i == 100 ? 0
+                                     : dip    ? 1000
+                                              : 0,
+                                     0});
+    }
+    QCOMPARE(Measurements::measurePort(joint, kT0, kT0 + 30'000, 5).recoveries.size(), 1);
 }
 
 void TestChartsData::aWindowReachingBeforeTheDataIsMeasuredFromItsFirstSample() {

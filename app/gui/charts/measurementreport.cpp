@@ -93,7 +93,7 @@ QString measurementReport(const model::Telemetry &telemetry, const QList<ChartCh
             if (!seriesFormat(series, request.unit).plotted ||
                 (isHardwareSeries(series) && !request.hardware))
                 continue;
-            if (series == QLatin1String("transformer") && !c.address.isEmpty()) {
+            if (series == QLatin1String("transformer")) { // as the chart draws it: once
                 if (transformers.contains(c.address))
                     continue;
                 transformers.insert(c.address);

@@ -107,14 +107,17 @@ PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64
     t0 = qMax(t0, buffer.firstTime());
     if (t1 <= t0)
         return out;
-    // A tip cooling with the heater off (no tool, a port error) is no dip to recover from: under
-    // a joint the heater never stops, so one sample without power while below the band rules the
-    // dip out (the first samples after a tool is pulled still carry the power it had).
-    const auto heated = [&](qint64 from, qint64 to) {
+    // A tip cooling with the heater off (no tool, a port error) is no dip to recover from. Under
+    // a joint the heater is at work where the tip is lowest and until it is back; with the heater
+    // off, the power reads 0 there. Either end of the dip alone could mislead: power and tip are
+    // read one after the other, so the first sample of a joint may still carry an idle 0 and the
+    // first samples after a tool is pulled the power it had.
+    const auto heated = [&](qint64 lowestMs, qint64 lastMs) {
         if (power < 0)
             return true;
-        const QList<MinMaxBucket> p = buffer.decimate(power, from, to, 1);
-        return !p.isEmpty() && p.first().min > 0;
+        const auto atLowest = buffer.valueAt(power, lowestMs);
+        const auto atLast = buffer.valueAt(power, lastMs);
+        return (atLowest && atLowest->value > 0) || (atLast && atLast->value > 0);
     };
 
     // The window splits into segments of one setpoint and one status.
@@ -154,7 +157,7 @@ PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64
                 out.truncated = out.truncated || !whole.isEmpty();
                 break;
             }
-            if (heated(*dip, back.value_or(end)))
+            if (heated(whole.first().minTimeMs, back.value_or(end) - 1))
                 out.recoveries.append(Recovery{*dip, target->value, whole.first().min,
                                                whole.first().minTimeMs, back});
             from = back;

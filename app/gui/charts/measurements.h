@@ -5,8 +5,8 @@
 //   until the tip is first within ±tolerance of the setpoint;
 // - recovery: while working at a steady setpoint and after the tip had settled, from the first
 //   sample under setpoint − tolerance (a joint drew heat) until it is back within the band, with
-//   the lowest temperature of the dip. A dip during which the power drops to 0 is the heater
-//   off (no tool, a port error), not a joint: it is left out.
+//   the lowest temperature of the dip. A dip with no power where the tip is lowest and none at
+//   its end is the heater off (no tool, a port error), not a joint: it is left out.
 //
 // Rests (stand, sleep, hibernation, cooling) are no dips. A setpoint of 0 is "not read yet" (the
 // session records 0 until the station answered), so changes from it are no heat-ups. A change or
