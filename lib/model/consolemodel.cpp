@@ -98,8 +98,30 @@ void ConsoleModel::setDeviceFamilies(const QMap<int, QString> &byAddress) {
     if (byAddress == m_families)
         return;
     m_families = byAddress;
-    if (!m_entries.empty())
-        Q_EMIT dataChanged(index(0, Name), index(rowCount() - 1, Name));
+    // Rows from before the devices were known (discovery's probes) get their names now.
+    int first = -1, last = -1;
+    for (int row = 0; row < int(m_entries.size()); ++row) {
+        ConsoleEntry &e = m_entries[size_t(row)];
+        if (!e.family.isEmpty() || !e.frame)
+            continue;
+        e.family = familyOf(e);
+        if (e.family.isEmpty())
+            continue;
+        first = first < 0 ? row : first;
+        last = row;
+    }
+    for (QList<ConsoleEntry> *queue : {&m_pending, &m_held})
+        for (ConsoleEntry &e : *queue)
+            if (e.family.isEmpty())
+                e.family = familyOf(e);
+    if (first >= 0)
+        Q_EMIT dataChanged(index(first, Name), index(last, Name));
+}
+
+ConsoleEntry ConsoleModel::withFamily(ConsoleEntry e) const {
+    if (e.family.isEmpty())
+        e.family = familyOf(e);
+    return e;
 }
 
 QString ConsoleModel::familyOf(const ConsoleEntry &e) const {
@@ -113,7 +135,7 @@ QString ConsoleModel::familyOf(const ConsoleEntry &e) const {
 
 void ConsoleModel::add(const ConsoleEntry &e) {
     QList<ConsoleEntry> &queue = m_paused ? m_held : m_pending;
-    queue.append(e);
+    queue.append(withFamily(e));
     if (queue.size() > m_capacity) // older than anything the table could still show
         queue.removeFirst();
     if (!m_paused && !m_batch.isActive())
@@ -229,7 +251,7 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
     case Command:
         return f ? QString::fromLatin1(f->command) : QString();
     case Name:
-        return f ? commandName(*f, familyOf(e)) : QString();
+        return f ? commandName(*f, e.family) : QString();
     case Data:
         return f ? QString::fromLatin1(f->data) : QString();
     case Bcc:

@@ -30,6 +30,9 @@ struct ConsoleEntry {
     QString remark;
     bool bccOk = true;
     bool stray = false;
+    // The family of the device in the frame, as known when the entry arrived (or when the
+    // devices were found, for the frames that found them); empty when not known.
+    QString family;
 };
 
 class ConsoleModel : public QAbstractTableModel {
@@ -60,7 +63,8 @@ public:
     void setRelativeTime(bool relative);
     // The families of the devices on the line by address (-1: the device of a line without
     // addresses), so a code that families share is named as the device in the frame knows it:
-    // SPD is the feeder's feeding speed and the ALE's dispensing speed.
+    // SPD is the feeder's feeding speed and the ALE's dispensing speed. Each entry keeps the
+    // family it got, so rows stay named after a disconnect or when other devices are found.
     void setDeviceFamilies(const QMap<int, QString> &byAddress);
     void clear();
     // Shows the entries that arrived since the last batch now.
@@ -91,6 +95,8 @@ private:
     void add(const ConsoleEntry &e);
     [[nodiscard]] QString timeText(const ConsoleEntry &e) const;
     [[nodiscard]] QString familyOf(const ConsoleEntry &e) const;
+    // The entry as it enters the table: its device's family looked up.
+    [[nodiscard]] ConsoleEntry withFamily(ConsoleEntry e) const;
 
     std::deque<ConsoleEntry> m_entries;
     QList<ConsoleEntry> m_pending; // arrived, not yet in the table

@@ -112,6 +112,14 @@ void TestConsoleModel::aCodeFamiliesShareIsNamedAsTheDeviceInTheFrameKnowsIt() {
     QCOMPARE(name(0), QStringLiteral("Feeding speed"));    // the request to the feeder
     QCOMPARE(name(1), QStringLiteral("Feeding speed"));    // the feeder's answer
     QCOMPARE(name(2), QStringLiteral("Dispensing speed")); // the request to the ALE
+    // Disconnected, then other devices at those addresses: the rows keep what they were.
+    model.setDeviceFamilies({});
+    model.setDeviceFamilies({{1, QStringLiteral("DME")}, {10, QStringLiteral("ALE")}});
+    QCOMPARE(name(0), QStringLiteral("Feeding speed"));
+    QCOMPARE(name(2), QStringLiteral("Dispensing speed"));
+    tap.tx(Frame::read("SPD").addressed(0, 10).encode());
+    model.flush();
+    QCOMPARE(name(3), QStringLiteral("Dispensing speed")); // the new device at 10 is an ALE
 }
 
 QTEST_MAIN(TestConsoleModel)
