@@ -169,7 +169,7 @@ void TestChartWidget::aFollowingChartRepaintsOnlyPartsAndLeavesNothingStale() {
 
 void TestChartWidget::aShortPaneLabelsFewerValuesSoTheyDoNotCrowd() {
     // The feeder's pane is about this short; 0-25 mm in steps of 5 crowded six labels into it.
-    const double labelHeight = QFontMetricsF(m_chart->font()).height();
+    const double labelHeight = QFontMetricsF(m_chart->valueLabelFont()).height();
     m_chart->showData(ChartData{kT0, kT0 + 60'000, 0, 25, 9.5, 10.5, {}});
     QCoreApplication::processEvents();
     QCOMPARE(m_chart->valueTickStep(ChartAxis::Left), 5.0); // a tall pane: five steps

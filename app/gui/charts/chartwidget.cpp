@@ -371,6 +371,10 @@ double ChartWidget::valueTickStep(ChartAxis axis) const {
     return (axis == ChartAxis::Left ? d->leftAxis : d->rightAxis)->tickInterval();
 }
 
+QFont ChartWidget::valueLabelFont() const {
+    return d->leftAxis->labelsFont();
+}
+
 QRectF ChartWidget::plotArea() const {
     return d->plot();
 }

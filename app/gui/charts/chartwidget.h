@@ -103,8 +103,9 @@ public:
     // The plot area, and its width in whole pixels (at least 1).
     [[nodiscard]] QRectF plotArea() const;
     [[nodiscard]] int plotWidth() const;
-    // The step between the labelled values of an axis.
+    // The step between the labelled values of an axis, and the font of those labels.
     [[nodiscard]] double valueTickStep(ChartAxis axis) const;
+    [[nodiscard]] QFont valueLabelFont() const;
     [[nodiscard]] qint64 timeAt(double x) const;
     [[nodiscard]] double xAt(qint64 timeMs) const;
     // Where Qt Charts itself draws `value` (x in ms) of series `index`: tests hold the
