@@ -33,9 +33,7 @@ const QStringList kFeederSeries = {QStringLiteral("fed"), QStringLiteral("speed"
 } // namespace
 
 Session::Session(QObject *parent)
-    : QObject(parent)
-    , m_clockBaseMs(QDateTime::currentMSecsSinceEpoch()) {
-    m_clock.start();
+    : QObject(parent) {
     m_log.setClock([this] { return sampleTimeMs(); });
     m_stateText = Tr::tr("disconnected");
 }
@@ -229,8 +227,7 @@ QString Session::connectedText() const {
 }
 
 qint64 Session::sampleTimeMs() const {
-    // Monotonic: a wall clock set back must not make every new sample look out of order.
-    return m_clockBaseMs + m_clock.elapsed();
+    return m_clock.nowMs();
 }
 
 void Session::recordTelemetry(StationModel *station) {

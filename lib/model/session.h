@@ -10,13 +10,13 @@
 #include "eventlog.h"
 #include "feedermodel.h"
 #include "pollscheduler.h"
+#include "sessionclock.h"
 #include "stationmodel.h"
 #include "telemetry/telemetry.h"
 
 #include "link/discovery.h"
 #include "link/line.h"
 
-#include <QElapsedTimer>
 #include <QObject>
 #include <memory>
 
@@ -98,8 +98,8 @@ private:
     QString m_stateText;
     TemperatureUnit m_unit = TemperatureUnit::Celsius;
     bool m_monitorOnly = false;
-    qint64 m_clockBaseMs = 0;
-    QElapsedTimer m_clock;
+    // Stamps samples and events alike; mutable as it catches up after a sleep when read.
+    mutable SessionClock m_clock;
 };
 
 } // namespace tipscope::model
