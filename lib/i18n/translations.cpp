@@ -51,19 +51,15 @@ QString installTranslators(QCoreApplication &app, const QString &preference) {
     const QString language = resolveLanguage(preference);
     qCDebug(lcI18n) << "preference" << preference << "system" << QLocale::system().uiLanguages()
                     << "shows" << language;
+    // For English, only the plural forms: every other text is its own English source, and Qt's
+    // own texts are English already.
     auto *own = new QTranslator(&app);
-    if (language == kSourceLanguage) {
-        // Only the English plural forms: every other text is its own English source.
-        if (own->load(catalogue(language)))
-            QCoreApplication::installTranslator(own);
-        else
-            qCWarning(lcI18n) << "cannot load" << catalogue(language);
-        return language;
-    }
     if (own->load(catalogue(language)))
         QCoreApplication::installTranslator(own);
     else
         qCWarning(lcI18n) << "cannot load" << catalogue(language);
+    if (language == kSourceLanguage)
+        return language;
 
     auto *qt = new QTranslator(&app);
     const QString qtDir = QLibraryInfo::path(QLibraryInfo::TranslationsPath);

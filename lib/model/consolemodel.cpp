@@ -118,12 +118,6 @@ void ConsoleModel::setDeviceFamilies(const QMap<int, QString> &byAddress) {
         Q_EMIT dataChanged(index(first, Name), index(last, Name));
 }
 
-ConsoleEntry ConsoleModel::withFamily(ConsoleEntry e) const {
-    if (e.family.isEmpty())
-        e.family = familyOf(e);
-    return e;
-}
-
 QString ConsoleModel::familyOf(const ConsoleEntry &e) const {
     if (!e.frame || m_families.isEmpty())
         return {};
@@ -135,7 +129,8 @@ QString ConsoleModel::familyOf(const ConsoleEntry &e) const {
 
 void ConsoleModel::add(const ConsoleEntry &e) {
     QList<ConsoleEntry> &queue = m_paused ? m_held : m_pending;
-    queue.append(withFamily(e));
+    queue.append(e);
+    queue.last().family = familyOf(e);
     if (queue.size() > m_capacity) // older than anything the table could still show
         queue.removeFirst();
     if (!m_paused && !m_batch.isActive())

@@ -95,8 +95,6 @@ private:
     void add(const ConsoleEntry &e);
     [[nodiscard]] QString timeText(const ConsoleEntry &e) const;
     [[nodiscard]] QString familyOf(const ConsoleEntry &e) const;
-    // The entry as it enters the table: its device's family looked up.
-    [[nodiscard]] ConsoleEntry withFamily(ConsoleEntry e) const;
 
     std::deque<ConsoleEntry> m_entries;
     QList<ConsoleEntry> m_pending; // arrived, not yet in the table

@@ -29,7 +29,6 @@ public:
     DemoActivity(SimStation *station, SimFeeder *feeder);
 
     void advance(int ms);
-    [[nodiscard]] qint64 elapsedMs() const { return m_ms; }
 
 private:
     // Whether `offset + k * period` (k >= 0) lies in (m_ms - ms, m_ms].
