@@ -1371,27 +1371,27 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="65"/>
+        <location filename="../app/cli/climonitor.cpp" line="66"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="72"/>
+        <location filename="../app/cli/climonitor.cpp" line="73"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="79"/>
+        <location filename="../app/cli/climonitor.cpp" line="80"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="88"/>
+        <location filename="../app/cli/climonitor.cpp" line="89"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="112"/>
+        <location filename="../app/cli/climonitor.cpp" line="113"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -1591,102 +1591,102 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="61"/>
+        <location filename="../lib/model/consolemodel.cpp" line="65"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>unverändert gesendet (kein gültiges Telegramm)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="77"/>
+        <location filename="../lib/model/consolemodel.cpp" line="81"/>
         <source>stray: answers no pending request</source>
         <translation>verwaist: beantwortet keine offene Anfrage</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="167"/>
+        <location filename="../lib/model/consolemodel.cpp" line="205"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="169"/>
+        <location filename="../lib/model/consolemodel.cpp" line="207"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="171"/>
+        <location filename="../lib/model/consolemodel.cpp" line="209"/>
         <source>frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="173"/>
+        <location filename="../lib/model/consolemodel.cpp" line="211"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="175"/>
+        <location filename="../lib/model/consolemodel.cpp" line="213"/>
         <source>note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="239"/>
+        <location filename="../lib/model/consolemodel.cpp" line="277"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -2492,41 +2492,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="40"/>
-        <location filename="../lib/model/session.cpp" line="111"/>
-        <location filename="../lib/model/session.cpp" line="114"/>
+        <location filename="../lib/model/session.cpp" line="38"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="110"/>
-        <location filename="../lib/model/session.cpp" line="121"/>
-        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="108"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="144"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="227"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -2698,7 +2698,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="411"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -3234,7 +3234,7 @@ Dauerhaft mit dieser udev-Regel:
     </message>
     <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
@@ -3379,52 +3379,52 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="307"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="309"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="328"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="299"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="366"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="367"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="390"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="392"/>
         <source>paused: new traffic is held</source>
         <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n Rohbyte</numerusform>
@@ -3432,17 +3432,17 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="401"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: nicht gesendet, nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="405"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="418"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: gesendet, warte auf Antwort…</translation>
     </message>
@@ -5198,47 +5198,52 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="60"/>
+        <location filename="../lib/link/requestqueue.cpp" line="68"/>
         <source>the connection was closed</source>
         <translation>die Verbindung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="106"/>
+        <location filename="../lib/link/requestqueue.cpp" line="114"/>
         <source>the connection is closing</source>
         <translation>die Verbindung wird geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="110"/>
+        <location filename="../lib/link/requestqueue.cpp" line="118"/>
         <source>not sent: the line is not connected</source>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="257"/>
+        <location filename="../lib/link/requestqueue.cpp" line="266"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="268"/>
+        <location filename="../lib/link/requestqueue.cpp" line="285"/>
+        <source>unreadable data field &apos;%1&apos; in the answer</source>
+        <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="294"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="272"/>
+        <location filename="../lib/link/requestqueue.cpp" line="298"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="290"/>
+        <location filename="../lib/link/requestqueue.cpp" line="316"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <location filename="../lib/link/requestqueue.cpp" line="336"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <location filename="../lib/link/requestqueue.cpp" line="351"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -5246,17 +5251,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="327"/>
+        <location filename="../lib/link/requestqueue.cpp" line="353"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="388"/>
+        <location filename="../lib/link/requestqueue.cpp" line="414"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="389"/>
+        <location filename="../lib/link/requestqueue.cpp" line="415"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>

@@ -1371,27 +1371,27 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="65"/>
+        <location filename="../app/cli/climonitor.cpp" line="66"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="72"/>
+        <location filename="../app/cli/climonitor.cpp" line="73"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="79"/>
+        <location filename="../app/cli/climonitor.cpp" line="80"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="88"/>
+        <location filename="../app/cli/climonitor.cpp" line="89"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="112"/>
+        <location filename="../app/cli/climonitor.cpp" line="113"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -1592,102 +1592,102 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="61"/>
+        <location filename="../lib/model/consolemodel.cpp" line="65"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>enviado tal cual (no es una trama válida)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="77"/>
+        <location filename="../lib/model/consolemodel.cpp" line="81"/>
         <source>stray: answers no pending request</source>
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="167"/>
+        <location filename="../lib/model/consolemodel.cpp" line="205"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="169"/>
+        <location filename="../lib/model/consolemodel.cpp" line="207"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="171"/>
+        <location filename="../lib/model/consolemodel.cpp" line="209"/>
         <source>frame</source>
         <translation>trama</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="173"/>
+        <location filename="../lib/model/consolemodel.cpp" line="211"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="175"/>
+        <location filename="../lib/model/consolemodel.cpp" line="213"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="239"/>
+        <location filename="../lib/model/consolemodel.cpp" line="277"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -2493,41 +2493,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="40"/>
-        <location filename="../lib/model/session.cpp" line="111"/>
-        <location filename="../lib/model/session.cpp" line="114"/>
+        <location filename="../lib/model/session.cpp" line="38"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="110"/>
-        <location filename="../lib/model/session.cpp" line="121"/>
-        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="108"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="144"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="227"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -2699,7 +2699,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="411"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -3235,7 +3235,7 @@ Hágalo permanente con esta regla de udev:
     </message>
     <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
@@ -3380,52 +3380,52 @@ Hágalo permanente con esta regla de udev:
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="307"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="309"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="328"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="299"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="366"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="367"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="390"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="392"/>
         <source>paused: new traffic is held</source>
         <translation>en pausa: el tráfico nuevo se retiene</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n byte en bruto</numerusform>
@@ -3433,17 +3433,17 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="401"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: no enviado, sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="405"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: no enviado, el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="418"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: enviado, esperando la respuesta…</translation>
     </message>
@@ -5199,47 +5199,52 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="60"/>
+        <location filename="../lib/link/requestqueue.cpp" line="68"/>
         <source>the connection was closed</source>
         <translation>se cerró la conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="106"/>
+        <location filename="../lib/link/requestqueue.cpp" line="114"/>
         <source>the connection is closing</source>
         <translation>la conexión se está cerrando</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="110"/>
+        <location filename="../lib/link/requestqueue.cpp" line="118"/>
         <source>not sent: the line is not connected</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="257"/>
+        <location filename="../lib/link/requestqueue.cpp" line="266"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="268"/>
+        <location filename="../lib/link/requestqueue.cpp" line="285"/>
+        <source>unreadable data field &apos;%1&apos; in the answer</source>
+        <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="294"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="272"/>
+        <location filename="../lib/link/requestqueue.cpp" line="298"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="290"/>
+        <location filename="../lib/link/requestqueue.cpp" line="316"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <location filename="../lib/link/requestqueue.cpp" line="336"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <location filename="../lib/link/requestqueue.cpp" line="351"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -5247,17 +5252,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="327"/>
+        <location filename="../lib/link/requestqueue.cpp" line="353"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="388"/>
+        <location filename="../lib/link/requestqueue.cpp" line="414"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="389"/>
+        <location filename="../lib/link/requestqueue.cpp" line="415"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>

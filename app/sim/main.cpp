@@ -134,6 +134,9 @@ int main(int argc, char *argv[]) {
          QStringLiteral("SHARE")},
         {QStringLiteral("garbage"), QStringLiteral("Share of answers preceded by noise (0-1)."),
          QStringLiteral("SHARE")},
+        {QStringLiteral("bad-data"),
+         QStringLiteral("Share of answers to reads whose data field cannot be read (0-1)."),
+         QStringLiteral("SHARE")},
         {QStringLiteral("nak"), QStringLiteral("Answer every request with this NAK code."),
          QStringLiteral("CODE")},
         {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator."),
@@ -160,6 +163,7 @@ int main(int argc, char *argv[]) {
     o.faults.dropShare = shareOption(p, QStringLiteral("drop"));
     o.faults.corruptShare = shareOption(p, QStringLiteral("corrupt"));
     o.faults.garbageShare = shareOption(p, QStringLiteral("garbage"));
+    o.faults.badDataShare = shareOption(p, QStringLiteral("bad-data"));
     o.faults.nakAllCode = intOption(p, QStringLiteral("nak"), 0, 0, 99999);
     o.faults.seed = quint32(intOption(p, QStringLiteral("seed"), 1, 0, 1 << 30));
     o.robotModeOff = p.isSet(QStringLiteral("robot-mode-off"));

@@ -4,6 +4,7 @@
 
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"
+#include "protocol/valuecodec.h"
 
 #include <QtMath>
 
@@ -23,6 +24,13 @@ Request Request::read(std::optional<int> target, const QByteArray &command, Prio
     r.command = command;
     r.target = target;
     r.priority = priority;
+    return r;
+}
+
+Request Request::read(std::optional<int> target, const ResolvedCommand &command,
+                      Priority priority) {
+    Request r = read(target, command.code, priority);
+    r.format = command;
     return r;
 }
 
@@ -136,6 +144,8 @@ bool RequestQueue::tryCoalesce(const Request &r, Reply *reply) {
                 o.target != r.target)
                 continue;
             it->replies.append(reply);
+            if (!it->request.format)
+                it->request.format = r.format;
             ++m_stats.coalesced;
             if (size_t(r.priority) < p) { // the more urgent asker decides where it waits
                 Entry moved = std::move(*it);
@@ -238,8 +248,7 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
         switch (ev.kind) {
         case DecodeEvent::Kind::Frame:
             if (waiting && matches(*m_current, ev.frame)) {
-                m_tap.decoded(ev, false);
-                complete(ev.frame);
+                onFrame(ev);
             } else {
                 ++m_stats.stray;
                 m_tap.decoded(ev, true);
@@ -259,6 +268,23 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
         }
     }
     Q_EMIT statsChanged();
+}
+
+void RequestQueue::onFrame(const DecodeEvent &ev) {
+    m_tap.decoded(ev, false);
+    const Request &r = m_current->request;
+    const bool checked = r.format && r.header == Header::Read && ev.frame.header == Header::Answer;
+    if (!checked || decodeAnswer(*r.format, ev.frame.data)) {
+        complete(ev.frame);
+        return;
+    }
+    // A well-framed answer whose data field means nothing for the command is as good as a
+    // garbled one: taking it would print or store nonsense.
+    ++m_stats.corrupted;
+    const QString why =
+        tr("unreadable data field '%1' in the answer").arg(QString::fromLatin1(ev.frame.data));
+    m_tap.note(why);
+    attemptFailed(ReplyError::Corrupted, why);
 }
 
 void RequestQueue::onTimer() {

@@ -8,9 +8,12 @@
 //  - The answer budget starts when the transport reports the request's last byte written, and is
 //    the wire time of the request and of the longest answer at the line's baud rate (bytesWritten
 //    means "handed to the driver", not "on the wire") plus the device turnaround.
-//  - A timeout, a corrupted answer (BCC or format error) or NAK 00001 (the device saw our frame
-//    garbled) is retried up to `retries` times for reads and for writes marked repeatable; any
-//    other NAK is final and reported with its code and meaning.
+//  - An answer to a read that names the catalog's view of its command (Request::format) must
+//    carry a data field that decodes for that command's kind; one that does not ("ABCDE" for a
+//    temperature) is no valid answer: it is counted as corrupted, like a BCC error.
+//  - A timeout, a corrupted answer (BCC or format error, or an unreadable data field) or NAK 00001
+//    (the device saw our frame garbled) is retried up to `retries` times for reads and for writes
+//    marked repeatable; any other NAK is final and reported with its code and meaning.
 //  - Priorities: writes > user reads > live polling > background. Every write goes into the
 //    write class, first in first out, so writes are never reordered among themselves. A read
 //    identical to one still waiting in the queue joins it instead of being sent twice.
@@ -25,6 +28,8 @@
 #include "frametap.h"
 #include "linkstats.h"
 #include "reply.h"
+
+#include "protocol/catalog.h"
 
 #include <QElapsedTimer>
 #include <QPointer>
@@ -49,8 +54,14 @@ struct Request {
     QByteArray raw;             // when set, sent verbatim (the console's raw frames)
     std::optional<int> retries; // overrides QueueSettings::retries (discovery probes use fewer)
     bool probe = false; // silence is a normal answer (discovery): not counted towards a lost line
+    // The catalog's view of a read's command: an answer whose data field does not decode for it
+    // is corrupted. Unset (raw frames, identification before the family is known): any data.
+    std::optional<protocol::ResolvedCommand> format;
 
     [[nodiscard]] static Request read(std::optional<int> target, const QByteArray &command,
+                                      Priority priority = Priority::UserRead);
+    [[nodiscard]] static Request read(std::optional<int> target,
+                                      const protocol::ResolvedCommand &command,
                                       Priority priority = Priority::UserRead);
     [[nodiscard]] static Request write(std::optional<int> target, const QByteArray &command,
                                        const QByteArray &data, bool repeatable = true);
@@ -114,6 +125,7 @@ private:
     void onReceived(const QByteArray &bytes);
     void onTimer();
     void onGapElapsed();
+    void onFrame(const protocol::DecodeEvent &event);
     void complete(const protocol::Frame &answer);
     void attemptFailed(ReplyError error, const QString &why);
     void finishCurrent(ReplyError error, const QString &why, const protocol::Frame &answer = {});

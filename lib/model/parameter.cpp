@@ -159,7 +159,7 @@ Reply *Parameter::refresh(Priority priority) {
     if (m_state == State::Unknown || m_state == State::Failed)
         setState(State::Reading);
     Reply *reply =
-        m_device.queue().enqueue(Request::read(m_device.address(), code(), priority), this);
+        m_device.queue().enqueue(Request::read(m_device.address(), *m_read, priority), this);
     connect(reply, &Reply::finished, this, [this, reply] {
         reply->deleteLater();
         if (reply->ok()) {
@@ -251,7 +251,7 @@ void Parameter::apply() {
 }
 
 void Parameter::readBack(const QByteArray &written) {
-    Reply *reply = m_device.queue().enqueue(Request::read(m_device.address(), code()), this);
+    Reply *reply = m_device.queue().enqueue(Request::read(m_device.address(), *m_read), this);
     connect(reply, &Reply::finished, this, [this, reply, written] {
         reply->deleteLater();
         if (!reply->ok()) {

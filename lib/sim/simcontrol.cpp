@@ -12,13 +12,14 @@ QString usage() {
     return QStringLiteral(
         "commands: port-error PORT CODE | station-error CODE | tool PORT TOOL | alarm PORT FLAGS "
         "| status PORT STATUS | robot-mode on|off | fuse on|off | feeder-error CODE | drop SHARE "
-        "| corrupt SHARE | garbage SHARE | nak CODE | latency MS | pace BAUD | stats");
+        "| corrupt SHARE | garbage SHARE | bad-data SHARE | nak CODE | latency MS | pace BAUD "
+        "| stats");
 }
 
 QString stats(const SimLine &line) {
     const SimLineStats &s = line.stats();
     return QStringLiteral("requests %1 writes %2 answers %3 dropped %4 corrupted %5 garbled %6 "
-                          "bad-requests %7 bytes-in %8 bytes-out %9")
+                          "bad-requests %7 bytes-in %8 bytes-out %9 bad-data %10")
         .arg(s.requests)
         .arg(s.writeRequests)
         .arg(s.answers)
@@ -27,7 +28,8 @@ QString stats(const SimLine &line) {
         .arg(s.garbled)
         .arg(s.badRequests)
         .arg(s.bytesReceived)
-        .arg(s.bytesSent);
+        .arg(s.bytesSent)
+        .arg(s.badData);
 }
 
 struct Args {
@@ -102,6 +104,8 @@ QString applyLineCommand(SimLine &line, const QString &verb, Args &a) {
         f.corruptShare = a.share(1);
     else if (verb == QLatin1String("garbage"))
         f.garbageShare = a.share(1);
+    else if (verb == QLatin1String("bad-data"))
+        f.badDataShare = a.share(1);
     else if (verb == QLatin1String("nak"))
         f.nakAllCode = a.integer(1);
     else if (verb == QLatin1String("latency"))
@@ -128,8 +132,9 @@ QString executeSimCommand(SimLine &line, const QString &command) {
         QStringLiteral("alarm"),      QStringLiteral("status"),        QStringLiteral("robot-mode"),
         QStringLiteral("fuse")};
     static const QStringList lineVerbs = {QStringLiteral("drop"),    QStringLiteral("corrupt"),
-                                          QStringLiteral("garbage"), QStringLiteral("nak"),
-                                          QStringLiteral("latency"), QStringLiteral("pace")};
+                                          QStringLiteral("garbage"), QStringLiteral("bad-data"),
+                                          QStringLiteral("nak"),     QStringLiteral("latency"),
+                                          QStringLiteral("pace")};
     if (verb.isEmpty() || verb == QLatin1String("help"))
         return usage();
     if (verb == QLatin1String("stats"))

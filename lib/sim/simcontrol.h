@@ -3,7 +3,8 @@
 //
 //   port-error PORT CODE    station-error CODE     tool PORT TOOL       alarm PORT FLAGS
 //   status PORT STATUS      robot-mode on|off      fuse on|off          feeder-error CODE
-//   drop SHARE   corrupt SHARE   garbage SHARE   nak CODE   latency MS   pace BAUD
+//   drop SHARE   corrupt SHARE   garbage SHARE   bad-data SHARE   nak CODE   latency MS
+//   pace BAUD
 //   stats                   help
 // execute() returns the reply line; an unknown or malformed command gets a reply that starts
 // with "error:" and changes nothing.

@@ -7,6 +7,8 @@ using namespace tipscope::protocol;
 namespace {
 constexpr int kTickMs = 20;
 constexpr qint64 kNsPerMs = 1'000'000;
+// Framed like any data field, but neither a number, a delay nor a hex counter.
+constexpr char kUnreadableData[] = "?BAD?";
 
 bool isDigit(char c) {
     return c >= '0' && c <= '9';
@@ -139,7 +141,20 @@ void SimLine::handleEvent(const DecodeEvent &e, qint64 arrivedNs) {
     const int address = device->address(); // a W-SAD answers from the old address
     Frame answer = m_faults.nakAllCode ? device->nak(e.frame.command, m_faults.nakAllCode)
                                        : device->handle(e.frame);
+    if (spoilData(*device, e.frame, answer)) {
+        ++m_stats.badData;
+        answer.data = kUnreadableData;
+    }
     sendAnswer(device, address, e.frame, std::move(answer), arrivedNs);
+}
+
+bool SimLine::spoilData(const SimDevice &device, const Frame &request, const Frame &answer) {
+    if (request.header != Header::Read || answer.header != Header::Answer)
+        return false;
+    // Any printable text is a valid model name, so only values can be spoiled.
+    const auto cmd =
+        Catalog::builtin().resolve(device.family().name, request.command, Direction::Read);
+    return cmd && cmd->spec->kind != ValueKind::Text && chance(m_faults.badDataShare);
 }
 
 void SimLine::answerMalformed(const DecodeEvent &e, qint64 arrivedNs) {

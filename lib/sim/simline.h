@@ -30,6 +30,7 @@ struct SimFaults {
     double dropShare = 0;    // requests that get no answer
     double corruptShare = 0; // answers with a flipped bit, cut short, or a wrong BCC
     double garbageShare = 0; // answers preceded by noise bytes
+    double badDataShare = 0; // answers to reads whose data field no client can read ("?BAD?")
     double delayShare = 0;   // answers held back by delayMs (past a client's timeout)
     int delayMs = 0;
     int nakAllCode = 0; // when set, every request is answered with this NAK code
@@ -46,6 +47,7 @@ struct SimLineStats {
     qint64 corrupted = 0;
     qint64 garbled = 0;
     qint64 delayed = 0;
+    qint64 badData = 0;
     qint64 badRequests = 0;
 };
 
@@ -98,6 +100,8 @@ private:
     };
 
     void handleEvent(const protocol::DecodeEvent &event, qint64 arrivedNs);
+    [[nodiscard]] bool spoilData(const SimDevice &device, const protocol::Frame &request,
+                                 const protocol::Frame &answer);
     void answerMalformed(const protocol::DecodeEvent &event, qint64 arrivedNs);
     SimDevice *route(std::optional<int> target) const;
     void sendAnswer(SimDevice *device, int deviceAddress, const protocol::Frame &request,

@@ -116,6 +116,8 @@ private Q_SLOTS:
     void nak1MeansGarbledAndIsRetried();
     void corruptedAnswerIsRetriedBeforeTheTimeout_data();
     void corruptedAnswerIsRetriedBeforeTheTimeout();
+    void unreadableDataFieldIsCorruptedAndRetried_data();
+    void unreadableDataFieldIsCorruptedAndRetried();
     void answerBudgetStartsWhenTheRequestIsWritten();
     void answerLaterThanTheBudgetIsStray();
     void unconfirmedWriteFailsOnTheWriteWatchdog();
@@ -523,6 +525,66 @@ void TestRequestQueue::corruptedAnswerIsRetriedBeforeTheTimeout() {
     QCOMPARE(b.queue.stats().corrupted, qMin(corruptedAttempts, expectedWrites));
     // Retried on the corrupted answer itself, not after waiting for the budget to run out.
     QCOMPARE(b.queue.stats().timeouts, 0);
+}
+
+void TestRequestQueue::unreadableDataFieldIsCorruptedAndRetried_data() {
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<QByteArray>("code");
+    QTest::addColumn<QByteArray>("bad");
+    QTest::addColumn<QByteArray>("good");
+    QTest::addColumn<int>("badAnswers"); // the first attempts that get the bad field
+    QTest::addColumn<bool>("ok");
+    QTest::newRow("number, then a good answer")
+        << QStringLiteral("DME") << QByteArray("ST1") << QByteArray("ABCDE") << QByteArray("00350")
+        << 1 << true;
+    QTest::newRow("number, every attempt")
+        << QStringLiteral("DME") << QByteArray("ST1") << QByteArray("ABCDE") << QByteArray("00350")
+        << 3 << false;
+    QTest::newRow("empty number") << QStringLiteral("DME") << QByteArray("TT1") << QByteArray()
+                                  << QByteArray("00120") << 3 << false;
+    QTest::newRow("delay") << QStringLiteral("DME") << QByteArray("HD1") << QByteArray("1.6")
+                           << QByteArray("01.60") << 2 << true;
+    QTest::newRow("hex counter") << QStringLiteral("ALE") << QByteArray("DL1") << QByteArray("XYZ")
+                                 << QByteArray("0000002A") << 3 << false;
+}
+
+void TestRequestQueue::unreadableDataFieldIsCorruptedAndRetried() {
+    QFETCH(QString, family);
+    QFETCH(QByteArray, code);
+    QFETCH(QByteArray, bad);
+    QFETCH(QByteArray, good);
+    QFETCH(int, badAnswers);
+    QFETCH(bool, ok);
+
+    const auto cmd = Catalog::builtin().resolve(family, code, Direction::Read);
+    QVERIFY(cmd);
+    Bench b(quickSettings(2));
+    b.transport.setResponder([&](const Frame &request, int attempt) {
+        return answerTo(request, attempt <= badAnswers ? bad : good).encode();
+    });
+    Reply *reply = b.send(Request::read(1, *cmd));
+    QTRY_VERIFY_WITH_TIMEOUT(reply->isFinished(), kNoAnswerWaitMs);
+
+    QCOMPARE(reply->ok(), ok);
+    QCOMPARE(b.queue.stats().corrupted, qMin(badAnswers, 3));
+    QCOMPARE(b.transport.writeCount(reply->request().encode()), qMin(badAnswers + 1, 3));
+    if (ok) {
+        QCOMPARE(reply->answer().data, good);
+        return;
+    }
+    QCOMPARE(reply->error(), ReplyError::Corrupted);
+    QVERIFY2(reply->errorString().contains(
+                 QStringLiteral("unreadable data field '%1'").arg(QString::fromLatin1(bad))),
+             qPrintable(reply->errorString()));
+    QCOMPARE(b.queue.stats().timeouts, 0);
+
+    // The same field for a read that names no format (a raw frame, identification) is its answer.
+    b.transport.setResponder(
+        [&](const Frame &request, int) { return answerTo(request, bad).encode(); });
+    Reply *plain = b.read("SMN");
+    QTRY_VERIFY_WITH_TIMEOUT(plain->isFinished(), kNoAnswerWaitMs);
+    QVERIFY2(plain->ok(), qPrintable(plain->errorString()));
+    QCOMPARE(plain->answer().data, bad);
 }
 
 void TestRequestQueue::answerBudgetStartsWhenTheRequestIsWritten() {

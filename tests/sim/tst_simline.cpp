@@ -1,5 +1,6 @@
 // The simulator answers as the guides say, in-process and deterministic.
 #include "protocol/framedecoder.h"
+#include "protocol/valuecodec.h"
 #include "sim/simcontrol.h"
 #include "sim/simline.h"
 
@@ -83,6 +84,7 @@ private Q_SLOTS:
     void factoryResetRestoresDefaults();
     void nvsKeepsSelectedTemperatureAcrossRestart();
     void dropAndCorruptFaultsAreCountedAndVisible();
+    void badDataFaultSpoilsReadValuesButNotTextOrWrites();
     void pacedAnswersTakeAtLeastTheWireTime();
     void chunkedAnswersArriveInFewerPiecesAtTheSameTime_data();
     void chunkedAnswersArriveInFewerPiecesAtTheSameTime();
@@ -363,6 +365,27 @@ void TestSimLine::dropAndCorruptFaultsAreCountedAndVisible() {
     QVERIFY(qint64(silent) >= line->stats().dropped);
     QVERIFY(line->stats().corrupted > 30);
     QVERIFY(bad > 0 && good > 100);
+}
+
+void TestSimLine::badDataFaultSpoilsReadValuesButNotTextOrWrites() {
+    auto line = SimLine::demo();
+    QCOMPARE(executeSimCommand(*line, "bad-data 1"), QStringLiteral("ok"));
+    QCOMPARE(line->faults().badDataShare, 1.0);
+    QVERIFY(executeSimCommand(*line, "bad-data 1.5").startsWith("error:"));
+    Wire w(*line);
+    const Catalog &cat = Catalog::builtin();
+    for (const char *code : {"ST1", "HD1", "TT2"}) {
+        const auto answer = w.ask(rd(code));
+        QVERIFY(answer);
+        QCOMPARE(answer->header, Header::Answer);
+        const auto cmd = cat.resolve(QStringLiteral("DME"), code, Direction::Read);
+        QVERIFY2(!decodeAnswer(*cmd, answer->data), code);
+    }
+    QCOMPARE(w.ask(rd("SMN"))->data, QByteArray("DME-2C"));
+    QCOMPARE(w.ask(wr("ST1", "00400"))->header, Header::Answer);
+    QCOMPARE(line->station()->setting("ST1"), 400);
+    QCOMPARE(line->stats().badData, 3);
+    QVERIFY(executeSimCommand(*line, "stats").endsWith(QStringLiteral("bad-data 3")));
 }
 
 void TestSimLine::pacedAnswersTakeAtLeastTheWireTime() {
