@@ -62,6 +62,8 @@ RequestQueue::RequestQueue(QObject *parent)
     m_gapTimer.setSingleShot(true);
     m_gapTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_gapTimer, &QTimer::timeout, this, &RequestQueue::onGapElapsed);
+    m_holdTimer.setSingleShot(true);
+    connect(&m_holdTimer, &QTimer::timeout, this, &RequestQueue::sendNext);
 }
 
 RequestQueue::~RequestQueue() {
@@ -178,21 +180,65 @@ void RequestQueue::sendNext() {
     const std::array<size_t, 4> order =
         pollsFirst ? std::array<size_t, 4>{2, 3, 0, 1} : std::array<size_t, 4>{0, 1, 2, 3};
     for (size_t p : order) {
-        auto &q = m_queues[p];
-        while (!q.empty()) {
-            Entry e = std::move(q.front());
-            q.pop_front();
-            if (!e.wanted()) {
-                ++m_stats.skipped;
-                continue;
-            }
-            const bool urgent = p <= size_t(Priority::UserRead);
-            m_urgentRun = urgent && pollsWaiting ? m_urgentRun + 1 : 0;
-            m_current = std::move(e);
-            transmit();
-            return;
+        std::optional<Entry> e = takeSendable(m_queues[p], p == size_t(Priority::UserWrite));
+        if (!e)
+            continue;
+        const bool urgent = p <= size_t(Priority::UserRead);
+        m_urgentRun = urgent && pollsWaiting ? m_urgentRun + 1 : 0;
+        m_current = std::move(e);
+        transmit();
+        return;
+    }
+    armHoldTimer();
+}
+
+std::optional<RequestQueue::Entry> RequestQueue::takeSendable(std::deque<Entry> &q,
+                                                              bool keepOrder) {
+    for (auto it = q.begin(); it != q.end();) {
+        if (!it->wanted()) {
+            ++m_stats.skipped;
+            it = q.erase(it);
+        } else if (!isHeld(*it)) {
+            Entry e = std::move(*it);
+            q.erase(it);
+            return e;
+        } else if (keepOrder) {
+            return std::nullopt; // a held write keeps the writes behind it waiting
+        } else {
+            ++it;
         }
     }
+    return std::nullopt;
+}
+
+bool RequestQueue::isHeld(const Entry &e) const {
+    return e.attempts == 0 && !e.matchAnything &&
+           m_late.holds(e.frame.command, e.frame.target, nowMs());
+}
+
+void RequestQueue::hold(const QByteArray &command, std::optional<int> target, int requestBytes) {
+    const int window = qMax(m_settings.lateAnswerWindowMs, answerBudgetMs(requestBytes));
+    m_late.expect(command, target, nowMs() + window);
+}
+
+void RequestQueue::holdAfterTimeout(const Entry &e) {
+    if (!e.matchAnything)
+        hold(e.frame.command, e.frame.target,
+             int(e.request.raw.isEmpty() ? e.frame.encode().size() : e.request.raw.size()));
+}
+
+void RequestQueue::holdForLateAnswer(std::optional<int> target, const QByteArray &command) {
+    Frame read = Frame::read(command);
+    if (target)
+        read = read.addressed(m_settings.robotAddress, *target);
+    hold(command, target, int(read.encode().size()));
+}
+
+void RequestQueue::armHoldTimer() {
+    if (pendingCount() == 0)
+        return;
+    if (const auto deadline = m_late.nextDeadline(nowMs()))
+        m_holdTimer.start(int(qMax<qint64>(0, *deadline - nowMs())));
 }
 
 void RequestQueue::transmit() {
@@ -250,8 +296,7 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
             if (waiting && matches(*m_current, ev.frame)) {
                 onFrame(ev);
             } else {
-                ++m_stats.stray;
-                m_tap.decoded(ev, true);
+                onStray(ev);
             }
             break;
         case DecodeEvent::Kind::Garbage:
@@ -268,6 +313,16 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
         }
     }
     Q_EMIT statsChanged();
+}
+
+void RequestQueue::onStray(const DecodeEvent &ev) {
+    ++m_stats.stray;
+    m_tap.decoded(ev, true);
+    if (!m_late.absorb(ev.frame, m_settings.robotAddress))
+        return;
+    ++m_stats.lateAnswers;
+    if (m_state == State::Idle)
+        sendNext(); // what the late answers held back may go now
 }
 
 void RequestQueue::onFrame(const DecodeEvent &ev) {
@@ -332,6 +387,7 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
     Entry &e = *m_current;
     const bool timeout = error == ReplyError::Timeout;
     if (timeout) {
+        holdAfterTimeout(e);
         ++(e.request.probe ? m_stats.probesUnanswered : m_stats.timeouts);
         m_tap.note(tr("%1: %2 (attempt %3)").arg(e.frame.toString(), why).arg(e.attempts));
     } else {
@@ -386,6 +442,7 @@ void RequestQueue::onGapElapsed() {
 void RequestQueue::failEverything(ReplyError error, const QString &why) {
     m_timer.stop();
     m_gapTimer.stop();
+    m_holdTimer.stop();
     m_state = State::Idle;
     m_decoder.reset();
     m_timeoutRun = 0;

@@ -14,6 +14,15 @@
 //  - A timeout, a corrupted answer (BCC or format error, or an unreadable data field) or NAK 00001
 //    (the device saw our frame garbled) is retried up to `retries` times for reads and for writes
 //    marked repeatable; any other NAK is final and reported with its code and meaning.
+//  - Late answers: the frames carry no sequence number, so an answer that comes after its
+//    request timed out would be taken for the next request of the same command and device.
+//    After a timeout, no other request of that command to that device goes out until the late
+//    answer's window has passed (lateAnswerWindowMs, or the answer budget if longer) or every
+//    answer still expected arrived in it and was discarded as stray. Other requests go on
+//    meanwhile, writes still in their order. The request's own retries are not held: a late
+//    answer to an earlier attempt answers the same question, and nothing of that command went
+//    out in between. holdForLateAnswer() opens the same window when a caller suspects that an
+//    answer it got was a late one (a read-back that differs).
 //  - Priorities: writes > user reads > live polling > background. Every write goes into the
 //    write class, first in first out, so writes are never reordered among themselves. A read
 //    identical to one still waiting in the queue joins it instead of being sent twice.
@@ -26,6 +35,7 @@
 #pragma once
 
 #include "frametap.h"
+#include "lateanswers.h"
 #include "linkstats.h"
 #include "reply.h"
 
@@ -73,6 +83,8 @@ struct QueueSettings {
     int urgentBurst = 3; // user requests in a row before a waiting poll gets one turn
     int retries = 2;
     int interFrameGapMs = 0;
+    // After a timeout, how long a late answer is still expected (see the contract above).
+    int lateAnswerWindowMs = 500;
 };
 
 class RequestQueue : public QObject {
@@ -87,6 +99,10 @@ public:
 
     // The Reply is parented to `owner` (may be null: then the caller deletes it).
     Reply *enqueue(const Request &request, QObject *owner);
+
+    // The answer to the last request of `command` to `target` may have been the late answer of an
+    // earlier one: hold the next such request as after a timeout.
+    void holdForLateAnswer(std::optional<int> target, const QByteArray &command);
 
     void lineOpened();
     void lineLost(const QString &reason);
@@ -120,12 +136,18 @@ private:
     enum class State { Idle, Writing, Waiting, Gap };
 
     void sendNext();
+    [[nodiscard]] std::optional<Entry> takeSendable(std::deque<Entry> &queue, bool keepOrder);
+    [[nodiscard]] bool isHeld(const Entry &e) const;
+    void hold(const QByteArray &command, std::optional<int> target, int requestBytes);
+    void holdAfterTimeout(const Entry &e);
+    void armHoldTimer();
     void transmit();
     void onBytesWritten(qint64 count);
     void onReceived(const QByteArray &bytes);
     void onTimer();
     void onGapElapsed();
     void onFrame(const protocol::DecodeEvent &event);
+    void onStray(const protocol::DecodeEvent &event);
     void complete(const protocol::Frame &answer);
     void attemptFailed(ReplyError error, const QString &why);
     void finishCurrent(ReplyError error, const QString &why, const protocol::Frame &answer = {});
@@ -149,6 +171,8 @@ private:
     int m_urgentRun = 0;
     QTimer m_timer;
     QTimer m_gapTimer;
+    QTimer m_holdTimer;
+    LateAnswers m_late;
     protocol::FrameDecoder m_decoder;
     QElapsedTimer m_clock;
     LinkStats m_stats;

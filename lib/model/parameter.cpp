@@ -241,7 +241,7 @@ void Parameter::apply() {
             return;
         }
         if (m_read)
-            readBack(data);
+            readBack(data, false);
         else {
             m_edit.reset();
             setState(State::InSync);
@@ -250,16 +250,24 @@ void Parameter::apply() {
     });
 }
 
-void Parameter::readBack(const QByteArray &written) {
+void Parameter::readBack(const QByteArray &written, bool again) {
     Reply *reply = m_device.queue().enqueue(Request::read(m_device.address(), *m_read), this);
-    connect(reply, &Reply::finished, this, [this, reply, written] {
+    connect(reply, &Reply::finished, this, [this, reply, written, again] {
         reply->deleteLater();
         if (!reply->ok()) {
             fail(Tr::tr("written, but the read-back failed: %1").arg(reply->errorString()));
             return;
         }
-        deviceReported(reply->answer().data);
         const auto wrote = decodeAnswer(*m_read, written);
+        const auto read = decodeAnswer(*m_read, reply->answer().data);
+        if (!again && wrote && read && !confirms(*m_read, *wrote, *read)) {
+            // Frames carry no sequence number: this may be the late answer of an earlier read of
+            // the code, from before the write. Read once more, after such an answer's window.
+            m_device.queue().holdForLateAnswer(m_device.address(), code());
+            readBack(written, true);
+            return;
+        }
+        deviceReported(reply->answer().data);
         if (!wrote || !m_value || !confirms(*m_read, *wrote, *m_value)) {
             fail(Tr::tr("the device reports %1 after %2 was written")
                      .arg(displayText(), formatValue(*m_read, wrote.value_or(Value()),
@@ -267,7 +275,6 @@ void Parameter::readBack(const QByteArray &written) {
             return;
         }
         m_edit.reset();
-        m_unsavedWrite = meta().isVolatile;
         m_unsavedWrite = meta().isVolatile;
         Q_EMIT editChanged();
         setState(State::InSync);

@@ -4,8 +4,10 @@
 // Writing, Failed with the reason). There are two write paths, as in QGroundControl's Fact:
 // setEdit() + apply() is a person's edit, validated before anything reaches the wire, written,
 // and proved by a read-back (only then InSync); deviceReported() is the device's own value from
-// a poll and only updates what is shown. Limits that depend on the device (the selected
-// temperature between MIT and MAT) follow the current values of the limiting parameters.
+// a poll and only updates what is shown. A read-back that differs is read once more, after the
+// window in which a late answer to an earlier read could still arrive, before the write fails.
+// Limits that depend on the device (the selected temperature between MIT and MAT) follow the
+// current values of the limiting parameters.
 #pragma once
 
 #include "displayunits.h"
@@ -88,7 +90,8 @@ Q_SIGNALS:
 
 private:
     void setState(State s, const QString &failure = {});
-    void readBack(const QByteArray &written);
+    // `again`: the first read-back differed and this is the one more read that decides.
+    void readBack(const QByteArray &written, bool again);
     void fail(const QString &reason);
 
     DeviceModel &m_device;

@@ -3,6 +3,7 @@
 // message that says what happened.
 #include "programrun.h"
 
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace tipscope::testing;
@@ -21,6 +22,8 @@ private Q_SLOTS:
     void unreadableDataFieldIsExitFourForReadAndDump_data();
     void unreadableDataFieldIsExitFourForReadAndDump();
     void unreadableDataFieldIsRetriedLikeABadBcc();
+    void lateAnswersAreNeverTakenForTheReadBack_data();
+    void lateAnswersAreNeverTakenForTheReadBack();
 
 private:
     QString startSim(const QStringList &simArgs) {
@@ -66,6 +69,38 @@ void TestCliWire::unreadableDataFieldIsRetriedLikeABadBcc() {
     QCOMPARE(r.out.count(QStringLiteral("350 °C")), 4);
     const QString stats = m_line.sim().command(QStringLiteral("stats"));
     QVERIFY2(!stats.endsWith(QStringLiteral("bad-data 0")), qPrintable(stats));
+}
+
+void TestCliWire::lateAnswersAreNeverTakenForTheReadBack_data() {
+    // The answer budget of an addressed read at 19200 baud: about 20 ms on the wire plus the
+    // default turnaround of 100 ms.
+    QTest::addColumn<int>("latencyMs");
+    QTest::newRow("at the answer budget") << 120;
+    QTest::newRow("twice the answer budget") << 250;
+}
+
+// The device applies every write, but answers late: every timed-out request's answer is still on
+// its way when the next request of the same code would go out (the frames carry no sequence
+// number). A profile apply must verify each write, never report an old value as the device's.
+void TestCliWire::lateAnswersAreNeverTakenForTheReadBack() {
+    QFETCH(int, latencyMs);
+    const QString port = startSim({"--model", "DME", "--latency", QString::number(latencyMs)});
+    QVERIFY(!port.isEmpty());
+    QTemporaryDir dir;
+    QFile file(dir.filePath(QStringLiteral("p.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "tipscope-profile", "schema": 1, "family": "DME", "model": "DME-2C",
+        "values": {"ST1": "00360", "ST2": "00365", "ST3": "00370", "ST4": "00375",
+                   "A11": "00010", "A21": "00011", "A31": "00012", "A41": "00013"}})");
+    file.close();
+    const ProgramRun r =
+        runCli({"--port", port, "--addr", "00:01", "profile", "apply", file.fileName()});
+    QVERIFY2(r.exitCode == 0 && r.out.contains(QStringLiteral("8 changed, 0 already right, 0 "
+                                                              "failed")),
+             qPrintable(r.out + r.err));
+    const ProgramRun check = runCli({"--port", port, "--addr", "00:01", "--timeout", "1000", "read",
+                                     "--raw", "ST1", "ST4", "A11", "A41"});
+    QCOMPARE(check.out, QStringLiteral("ST1 00360\nST4 00375\nA11 00010\nA41 00013\n"));
 }
 
 QTEST_GUILESS_MAIN(TestCliWire)

@@ -54,6 +54,8 @@ private Q_SLOTS:
     void selectedTemperatureFollowsTheStationsLimits();
     void fahrenheitIsShownAndTypedButCelsiusIsSent();
     void aNakLeavesTheParameterFailedWithTheReasonAndKeepsTheEdit();
+    void aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails_data();
+    void aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails();
     void monitorOnlyBlocksEveryWrite();
     void dangerousActionsNeedConfirmation();
     void saveToMemoryMarksSelectedTemperaturesSaved();
@@ -181,6 +183,53 @@ void TestParameters::aNakLeavesTheParameterFailedWithTheReasonAndKeepsTheEdit() 
     QCOMPARE(p->edit().value(), 300);
     f.simLine->setFaults({});
     QVERIFY(writeAndWait(*p, 300, &why));
+}
+
+void TestParameters::aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails_data() {
+    QTest::addColumn<int>("staleAnswers");
+    QTest::addColumn<bool>("verified");
+    QTest::newRow("one stale answer") << 1 << true;
+    QTest::newRow("the device keeps the old value") << 1000 << false;
+}
+
+// Frames carry no sequence number: a read-back may get the late answer of an earlier read, from
+// before the write. The simulator answers the read-backs with the old value, as such a late
+// answer would.
+void TestParameters::aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails() {
+    QFETCH(int, staleAnswers);
+    QFETCH(bool, verified);
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    auto st = f.station();
+    st->refreshAll();
+    f.settle();
+    sim::SimStation *device = f.simLine->station();
+    const qint64 before = device->setting("ST2").value();
+    bool written = false;
+    int readsAfterWrite = 0;
+    connect(f.simLine.get(), &sim::SimLine::requestReceived, this, [&](const Frame &request) {
+        if (request.command != "ST2")
+            return;
+        written = written || request.header == Header::Write;
+        if (!written || request.header != Header::Read)
+            return;
+        if (++readsAfterWrite > staleAnswers)
+            return;
+        const qint64 now = device->setting("ST2").value();
+        device->setSetting("ST2", before);
+        QTimer::singleShot(0, this, [device, now] { device->setSetting("ST2", now); });
+    });
+    Parameter *p = st->parameter("ST2");
+    QString why;
+    QCOMPARE(writeAndWait(*p, 300, &why), verified);
+    QCOMPARE(readsAfterWrite, 2);
+    QCOMPARE(device->setting("ST2").value(), 300);
+    if (verified) {
+        QCOMPARE(p->state(), Parameter::State::InSync);
+        QCOMPARE(p->number().value(), 300);
+    } else {
+        QVERIFY2(why.contains(QStringLiteral("the device reports")), qPrintable(why));
+        QCOMPARE(p->number().value(), before);
+    }
 }
 
 void TestParameters::monitorOnlyBlocksEveryWrite() {
