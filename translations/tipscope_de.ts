@@ -2160,17 +2160,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="264"/>
+        <location filename="../lib/model/parameter.cpp" line="272"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="275"/>
+        <location filename="../lib/model/parameter.cpp" line="282"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="282"/>
+        <location filename="../lib/model/parameter.cpp" line="289"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -5117,42 +5117,42 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="23"/>
+        <location filename="../lib/link/line.cpp" line="22"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="43"/>
+        <location filename="../lib/link/line.cpp" line="45"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="45"/>
+        <location filename="../lib/link/line.cpp" line="47"/>
         <source>connecting to %1</source>
         <translation>Verbindung mit %1 wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="47"/>
+        <location filename="../lib/link/line.cpp" line="49"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="49"/>
+        <location filename="../lib/link/line.cpp" line="51"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>getrennt, neuer Versuch alle %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="53"/>
+        <location filename="../lib/link/line.cpp" line="55"/>
         <source>cannot connect: %1</source>
         <translation>Verbindung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="73"/>
+        <location filename="../lib/link/line.cpp" line="75"/>
         <source>disconnected by the user</source>
         <translation>vom Benutzer getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="115"/>
+        <location filename="../lib/link/line.cpp" line="117"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>keine Antwort auf %1 Anfragen in Folge (Kabel abgezogen, Gerät aus oder falsche Adressierung?)</translation>
     </message>
@@ -5198,52 +5198,52 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="68"/>
+        <location filename="../lib/link/requestqueue.cpp" line="70"/>
         <source>the connection was closed</source>
         <translation>die Verbindung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="114"/>
+        <location filename="../lib/link/requestqueue.cpp" line="116"/>
         <source>the connection is closing</source>
         <translation>die Verbindung wird geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="118"/>
+        <location filename="../lib/link/requestqueue.cpp" line="120"/>
         <source>not sent: the line is not connected</source>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="266"/>
+        <location filename="../lib/link/requestqueue.cpp" line="311"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="285"/>
+        <location filename="../lib/link/requestqueue.cpp" line="340"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="294"/>
+        <location filename="../lib/link/requestqueue.cpp" line="349"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="298"/>
+        <location filename="../lib/link/requestqueue.cpp" line="353"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="316"/>
+        <location filename="../lib/link/requestqueue.cpp" line="371"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="336"/>
+        <location filename="../lib/link/requestqueue.cpp" line="392"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="351"/>
+        <location filename="../lib/link/requestqueue.cpp" line="407"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -5251,17 +5251,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="353"/>
+        <location filename="../lib/link/requestqueue.cpp" line="409"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="414"/>
+        <location filename="../lib/link/requestqueue.cpp" line="471"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="415"/>
+        <location filename="../lib/link/requestqueue.cpp" line="472"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>
@@ -5300,14 +5300,19 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::TcpTransport</name>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="23"/>
+        <location filename="../lib/link/tcptransport.cpp" line="27"/>
         <source>the connection to %1 dropped (%2)</source>
         <translation>die Verbindung zu %1 ist abgebrochen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="29"/>
+        <location filename="../lib/link/tcptransport.cpp" line="34"/>
         <source>cannot connect to %1: %2</source>
         <translation>Verbindung zu %1 nicht möglich: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/tcptransport.cpp" line="63"/>
+        <source>cannot connect to %1: no connection within %2 s</source>
+        <translation>Verbindung zu %1 nicht möglich: keine Verbindung innerhalb von %2 s</translation>
     </message>
 </context>
 </TS>

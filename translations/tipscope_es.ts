@@ -2161,17 +2161,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="264"/>
+        <location filename="../lib/model/parameter.cpp" line="272"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="275"/>
+        <location filename="../lib/model/parameter.cpp" line="282"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="282"/>
+        <location filename="../lib/model/parameter.cpp" line="289"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -5118,42 +5118,42 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="23"/>
+        <location filename="../lib/link/line.cpp" line="22"/>
         <source>the line was closed</source>
         <translation>se cerró la línea</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="43"/>
+        <location filename="../lib/link/line.cpp" line="45"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="45"/>
+        <location filename="../lib/link/line.cpp" line="47"/>
         <source>connecting to %1</source>
         <translation>conectando con %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="47"/>
+        <location filename="../lib/link/line.cpp" line="49"/>
         <source>connected: %1</source>
         <translation>conectado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="49"/>
+        <location filename="../lib/link/line.cpp" line="51"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>desconectado, reintentando cada %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="53"/>
+        <location filename="../lib/link/line.cpp" line="55"/>
         <source>cannot connect: %1</source>
         <translation>no se puede conectar: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="73"/>
+        <location filename="../lib/link/line.cpp" line="75"/>
         <source>disconnected by the user</source>
         <translation>desconectado por el usuario</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="115"/>
+        <location filename="../lib/link/line.cpp" line="117"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>sin respuesta a %1 peticiones seguidas (¿cable desenchufado, equipo apagado o direccionamiento incorrecto?)</translation>
     </message>
@@ -5199,52 +5199,52 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="68"/>
+        <location filename="../lib/link/requestqueue.cpp" line="70"/>
         <source>the connection was closed</source>
         <translation>se cerró la conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="114"/>
+        <location filename="../lib/link/requestqueue.cpp" line="116"/>
         <source>the connection is closing</source>
         <translation>la conexión se está cerrando</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="118"/>
+        <location filename="../lib/link/requestqueue.cpp" line="120"/>
         <source>not sent: the line is not connected</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="266"/>
+        <location filename="../lib/link/requestqueue.cpp" line="311"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="285"/>
+        <location filename="../lib/link/requestqueue.cpp" line="340"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="294"/>
+        <location filename="../lib/link/requestqueue.cpp" line="349"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="298"/>
+        <location filename="../lib/link/requestqueue.cpp" line="353"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="316"/>
+        <location filename="../lib/link/requestqueue.cpp" line="371"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="336"/>
+        <location filename="../lib/link/requestqueue.cpp" line="392"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="351"/>
+        <location filename="../lib/link/requestqueue.cpp" line="407"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -5252,17 +5252,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="353"/>
+        <location filename="../lib/link/requestqueue.cpp" line="409"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="414"/>
+        <location filename="../lib/link/requestqueue.cpp" line="471"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="415"/>
+        <location filename="../lib/link/requestqueue.cpp" line="472"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
@@ -5301,14 +5301,19 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::TcpTransport</name>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="23"/>
+        <location filename="../lib/link/tcptransport.cpp" line="27"/>
         <source>the connection to %1 dropped (%2)</source>
         <translation>se cortó la conexión con %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="29"/>
+        <location filename="../lib/link/tcptransport.cpp" line="34"/>
         <source>cannot connect to %1: %2</source>
         <translation>no se puede conectar con %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/tcptransport.cpp" line="63"/>
+        <source>cannot connect to %1: no connection within %2 s</source>
+        <translation>no se puede conectar con %1: sin conexión en %2 s</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,7 @@
 // tipscope-cli against a misbehaving device and a bad wire: the real binary and tipscope-sim over
 // a socat PTY pair (or TCP). Every case ends with the exit status the manual promises and a
 // message that says what happened.
+#include "fullbacklog.h"
 #include "programrun.h"
 
 #include <QTemporaryDir>
@@ -24,6 +25,7 @@ private Q_SLOTS:
     void unreadableDataFieldIsRetriedLikeABadBcc();
     void lateAnswersAreNeverTakenForTheReadBack_data();
     void lateAnswersAreNeverTakenForTheReadBack();
+    void tcpServerThatNeverAcceptsIsExitFiveAfterTheConnectTimeout();
 
 private:
     QString startSim(const QStringList &simArgs) {
@@ -101,6 +103,19 @@ void TestCliWire::lateAnswersAreNeverTakenForTheReadBack() {
     const ProgramRun check = runCli({"--port", port, "--addr", "00:01", "--timeout", "1000", "read",
                                      "--raw", "ST1", "ST4", "A11", "A41"});
     QCOMPARE(check.out, QStringLiteral("ST1 00360\nST4 00375\nA11 00010\nA41 00013\n"));
+}
+
+// A serial device server whose accept queue is full held the CLI for the system's own connect
+// limit (a minute and more). The connection has 5 s.
+void TestCliWire::tcpServerThatNeverAcceptsIsExitFiveAfterTheConnectTimeout() {
+    FullBacklog server;
+    QVERIFY(server.port() != 0);
+    const ProgramRun r = runProgram(QStringLiteral("tipscope-cli"),
+                                    {"--tcp", QStringLiteral("127.0.0.1:%1").arg(server.port()),
+                                     "--addr", "00:01", "read", "ST1"},
+                                    30000);
+    QCOMPARE(r.exitCode, 5);
+    QVERIFY2(r.err.contains(QStringLiteral("no connection within 5 s")), qPrintable(r.err));
 }
 
 QTEST_GUILESS_MAIN(TestCliWire)
