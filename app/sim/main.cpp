@@ -137,8 +137,13 @@ int main(int argc, char *argv[]) {
         {QStringLiteral("bad-data"),
          QStringLiteral("Share of answers to reads whose data field cannot be read (0-1)."),
          QStringLiteral("SHARE")},
-        {QStringLiteral("nak"), QStringLiteral("Answer every request with this NAK code."),
+        {QStringLiteral("nak"),
+         QStringLiteral("Answer the requests --nak-for names with this NAK code."),
          QStringLiteral("CODE")},
+        {QStringLiteral("nak-for"),
+         QStringLiteral("What --nak applies to: all (the default), writes, or one command such as "
+                        "ST1."),
+         QStringLiteral("WHAT")},
         {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator."),
          QStringLiteral("N")},
         {QStringLiteral("robot-mode-off"),
@@ -164,7 +169,12 @@ int main(int argc, char *argv[]) {
     o.faults.corruptShare = shareOption(p, QStringLiteral("corrupt"));
     o.faults.garbageShare = shareOption(p, QStringLiteral("garbage"));
     o.faults.badDataShare = shareOption(p, QStringLiteral("bad-data"));
-    o.faults.nakAllCode = intOption(p, QStringLiteral("nak"), 0, 0, 99999);
+    o.faults.nakCode = intOption(p, QStringLiteral("nak"), 0, 0, 99999);
+    if (!parseNakScope(p.value(QStringLiteral("nak-for")).isEmpty()
+                           ? QStringLiteral("all")
+                           : p.value(QStringLiteral("nak-for")),
+                       &o.faults))
+        die(QStringLiteral("--nak-for takes all, writes or a command such as ST1"));
     o.faults.seed = quint32(intOption(p, QStringLiteral("seed"), 1, 0, 1 << 30));
     o.robotModeOff = p.isSet(QStringLiteral("robot-mode-off"));
     auto line = buildLine(o);

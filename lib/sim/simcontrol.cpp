@@ -3,6 +3,7 @@
 #include "simline.h"
 
 #include <QStringList>
+#include <algorithm>
 
 namespace tipscope::sim {
 
@@ -12,14 +13,15 @@ QString usage() {
     return QStringLiteral(
         "commands: port-error PORT CODE | station-error CODE | tool PORT TOOL | alarm PORT FLAGS "
         "| status PORT STATUS | robot-mode on|off | fuse on|off | feeder-error CODE | drop SHARE "
-        "| corrupt SHARE | garbage SHARE | bad-data SHARE | nak CODE | latency MS | pace BAUD "
-        "| stats");
+        "| corrupt SHARE | garbage SHARE | bad-data SHARE | nak CODE [all|writes|COMMAND] "
+        "| latency MS | pace BAUD | stats");
 }
 
 QString stats(const SimLine &line) {
     const SimLineStats &s = line.stats();
     return QStringLiteral("requests %1 writes %2 answers %3 dropped %4 corrupted %5 garbled %6 "
-                          "bad-requests %7 bytes-in %8 bytes-out %9 bad-data %10")
+                          "bad-requests %7 bytes-in %8 bytes-out %9 bad-data %10 overrun %11 "
+                          "unsent %12")
         .arg(s.requests)
         .arg(s.writeRequests)
         .arg(s.answers)
@@ -29,7 +31,9 @@ QString stats(const SimLine &line) {
         .arg(s.badRequests)
         .arg(s.bytesReceived)
         .arg(s.bytesSent)
-        .arg(s.badData);
+        .arg(s.badData)
+        .arg(s.overrunBytes)
+        .arg(s.unsentBytes);
 }
 
 struct Args {
@@ -106,9 +110,11 @@ QString applyLineCommand(SimLine &line, const QString &verb, Args &a) {
         f.garbageShare = a.share(1);
     else if (verb == QLatin1String("bad-data"))
         f.badDataShare = a.share(1);
-    else if (verb == QLatin1String("nak"))
-        f.nakAllCode = a.integer(1);
-    else if (verb == QLatin1String("latency"))
+    else if (verb == QLatin1String("nak")) {
+        f.nakCode = a.integer(1);
+        a.ok = a.ok && f.nakCode >= 0 && f.nakCode <= 99999 && a.words.size() <= 3 &&
+               parseNakScope(a.words.value(2, QStringLiteral("all")), &f);
+    } else if (verb == QLatin1String("latency"))
         f.latencyMs = a.integer(1);
     else if (verb == QLatin1String("pace")) {
         const int baud = a.integer(1);
@@ -123,6 +129,23 @@ QString applyLineCommand(SimLine &line, const QString &verb, Args &a) {
 }
 
 } // namespace
+
+bool parseNakScope(const QString &text, SimFaults *faults) {
+    if (text == QLatin1String("all") || text == QLatin1String("writes")) {
+        faults->nakFor = text == QLatin1String("all") ? NakScope::All : NakScope::Writes;
+        faults->nakCommand.clear();
+        return true;
+    }
+    const QByteArray code = text.toUpper().toLatin1();
+    const bool isCode = code.size() == 3 && std::all_of(code.begin(), code.end(), [](char c) {
+                            return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+                        });
+    if (!isCode)
+        return false;
+    faults->nakFor = NakScope::Command;
+    faults->nakCommand = code;
+    return true;
+}
 
 QString executeSimCommand(SimLine &line, const QString &command) {
     Args a{command.simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts)};

@@ -173,7 +173,7 @@ void TestParameters::aNakLeavesTheParameterFailedWithTheReasonAndKeepsTheEdit() 
     st->refreshAll();
     f.settle();
     sim::SimFaults faults;
-    faults.nakAllCode = 3;
+    faults.nakCode = 3;
     f.simLine->setFaults(faults);
     Parameter *p = st->parameter("ST2");
     QString why;

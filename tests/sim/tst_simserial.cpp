@@ -9,6 +9,10 @@
 #include <QTcpSocket>
 #include <QtTest>
 
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
 using namespace tipscope::protocol;
 using namespace tipscope::testing;
 
@@ -77,6 +81,8 @@ private Q_SLOTS:
     void sfrAnswersTheGuidesWorkedFrame();
     void ownPtyServesAPlainSerialClient();
     void tcpServesRawFrames();
+    void tcpClientThatNeverReadsCostsABoundedBuffer();
+    void pacedJunkDoesNotSilenceTheSimulator();
 
 private:
     void withSocatSim(const QStringList &simArgs, const QList<Step> &script);
@@ -174,6 +180,85 @@ void TestSimSerial::tcpServesRawFrames() {
     socket.connectToHost(QStringLiteral("127.0.0.1"), quint16(where.section(':', 1).toInt()));
     QVERIFY(socket.waitForConnected(3000));
     runScript(socket, {{rd("SMN", std::nullopt), "AHDR-2C"}, {rd("ST2", std::nullopt), "N00004"}});
+}
+
+namespace {
+
+// A loopback client with a tiny receive buffer that it never reads: what it is sent piles up on
+// the sending side.
+int connectNonReader(quint16 port) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    const int tiny = 4096;
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &tiny, sizeof tiny);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    a.sin_port = htons(port);
+    if (::connect(fd, reinterpret_cast<sockaddr *>(&a), sizeof a) != 0) {
+        ::close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+qint64 statsField(const QString &stats, const QString &name) {
+    const QStringList words = stats.split(QLatin1Char(' '));
+    const qsizetype at = words.indexOf(name);
+    return at < 0 ? -1 : words.value(at + 1).toLongLong();
+}
+
+} // namespace
+
+// Before, a client that sent requests and never read made the simulator buffer every answer
+// (13 MB to 386 MB in 10 s).
+void TestSimSerial::tcpClientThatNeverReadsCostsABoundedBuffer() {
+    SimProcess sim;
+    QString error;
+    const QString where = sim.start({"--model", "DME", "--tcp", "127.0.0.1:0"}, &error);
+    QVERIFY2(where.startsWith(QStringLiteral("127.0.0.1:")), qPrintable(error + where));
+    const quint16 port = quint16(where.section(':', 1).toInt());
+    const int fd = connectNonReader(port);
+    QVERIFY(fd >= 0);
+    QByteArray burst;
+    for (int i = 0; i < 10000; ++i)
+        burst += rd("ST1", 1).encode();
+    for (int i = 0; i < 40; ++i) // 4.4 MB of requests, 6.4 MB of answers
+        QCOMPARE(::send(fd, burst.constData(), size_t(burst.size()), 0), ssize_t(burst.size()));
+    qint64 unsent = 0;
+    QTRY_VERIFY_WITH_TIMEOUT((unsent = statsField(sim.command("stats"), "unsent")) > 0, 30000);
+    ::close(fd);
+
+    // The next client is served as usual.
+    QTcpSocket next;
+    next.connectToHost(QStringLiteral("127.0.0.1"), port);
+    QVERIFY(next.waitForConnected(3000));
+    runScript(next, {{rd("SMN", 1), "ADME-2C"}});
+}
+
+// With --pace, 10 MB of junk pushed the simulated wire hours ahead, and nothing was answered again
+// for any client. A receiver keeps a buffer; what comes faster than the wire beyond it is lost.
+void TestSimSerial::pacedJunkDoesNotSilenceTheSimulator() {
+    SimProcess sim;
+    QString error;
+    const QString where =
+        sim.start({"--model", "DME", "--tcp", "127.0.0.1:0", "--pace", "19200"}, &error);
+    QVERIFY2(where.startsWith(QStringLiteral("127.0.0.1:")), qPrintable(error + where));
+    const quint16 port = quint16(where.section(':', 1).toInt());
+    QTcpSocket junk;
+    junk.connectToHost(QStringLiteral("127.0.0.1"), port);
+    QVERIFY(junk.waitForConnected(3000));
+    junk.write(QByteArray(10 << 20, 'x'));
+    QTRY_VERIFY_WITH_TIMEOUT(junk.bytesToWrite() == 0 &&
+                                 statsField(sim.command("stats"), "bytes-in") == (10 << 20),
+                             30000);
+    QVERIFY(statsField(sim.command("stats"), "overrun") >= (9 << 20));
+    // The same client, once the buffer's 2 s of wire time have passed, and the next one.
+    QTest::qWait(2500);
+    runScript(junk, {{rd("SMN", 1), "ADME-2C"}});
+    QTcpSocket next;
+    next.connectToHost(QStringLiteral("127.0.0.1"), port);
+    QVERIFY(next.waitForConnected(3000));
+    runScript(next, {{rd("SVR", 1), "A9996780"}});
 }
 
 QTEST_GUILESS_MAIN(TestSimSerial)
