@@ -5198,70 +5198,78 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="70"/>
+        <location filename="../lib/link/requestqueue.cpp" line="71"/>
         <source>the connection was closed</source>
         <translation>die Verbindung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="116"/>
+        <location filename="../lib/link/requestqueue.cpp" line="117"/>
         <source>the connection is closing</source>
         <translation>die Verbindung wird geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="120"/>
+        <location filename="../lib/link/requestqueue.cpp" line="121"/>
         <source>not sent: the line is not connected</source>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="311"/>
+        <location filename="../lib/link/requestqueue.cpp" line="314"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="340"/>
+        <location filename="../lib/link/requestqueue.cpp" line="343"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="349"/>
+        <location filename="../lib/link/requestqueue.cpp" line="352"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="353"/>
+        <location filename="../lib/link/requestqueue.cpp" line="356"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="371"/>
+        <location filename="../lib/link/requestqueue.cpp" line="374"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="392"/>
+        <location filename="../lib/link/requestqueue.cpp" line="395"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="407"/>
+        <location filename="../lib/link/requestqueue.cpp" line="410"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
             <numerusform>%1 nach %n Versuchen</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../lib/link/requestqueue.cpp" line="413"/>
+        <source>%n byte(s) of garbage came instead</source>
+        <translation>
+            <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
+            <numerusform>stattdessen kamen %n Bytes Datenmüll</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="409"/>
+        <location filename="../lib/link/requestqueue.cpp" line="416"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="471"/>
+        <location filename="../lib/link/requestqueue.cpp" line="478"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="472"/>
+        <location filename="../lib/link/requestqueue.cpp" line="479"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>
@@ -5269,12 +5277,12 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::SerialTransport</name>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="74"/>
-        <source>the port went away (%1)</source>
-        <translation>der Port ist verschwunden (%1)</translation>
+        <location filename="../lib/link/serialtransport.cpp" line="82"/>
+        <source>the port %1 disappeared (unplugged?)</source>
+        <translation>der Port %1 ist verschwunden (ausgesteckt?)</translation>
     </message>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="79"/>
+        <location filename="../lib/link/serialtransport.cpp" line="84"/>
         <source>the port stopped responding (%1)</source>
         <translation>der Port reagiert nicht mehr (%1)</translation>
     </message>

@@ -5199,70 +5199,78 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="70"/>
+        <location filename="../lib/link/requestqueue.cpp" line="71"/>
         <source>the connection was closed</source>
         <translation>se cerró la conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="116"/>
+        <location filename="../lib/link/requestqueue.cpp" line="117"/>
         <source>the connection is closing</source>
         <translation>la conexión se está cerrando</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="120"/>
+        <location filename="../lib/link/requestqueue.cpp" line="121"/>
         <source>not sent: the line is not connected</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="311"/>
+        <location filename="../lib/link/requestqueue.cpp" line="314"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="340"/>
+        <location filename="../lib/link/requestqueue.cpp" line="343"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="349"/>
+        <location filename="../lib/link/requestqueue.cpp" line="352"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="353"/>
+        <location filename="../lib/link/requestqueue.cpp" line="356"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="371"/>
+        <location filename="../lib/link/requestqueue.cpp" line="374"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="392"/>
+        <location filename="../lib/link/requestqueue.cpp" line="395"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="407"/>
+        <location filename="../lib/link/requestqueue.cpp" line="410"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
             <numerusform>%1 tras %n intentos</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../lib/link/requestqueue.cpp" line="413"/>
+        <source>%n byte(s) of garbage came instead</source>
+        <translation>
+            <numerusform>en su lugar llegó %n byte de basura</numerusform>
+            <numerusform>en su lugar llegaron %n bytes de basura</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="409"/>
+        <location filename="../lib/link/requestqueue.cpp" line="416"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="471"/>
+        <location filename="../lib/link/requestqueue.cpp" line="478"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="472"/>
+        <location filename="../lib/link/requestqueue.cpp" line="479"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
@@ -5270,12 +5278,12 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::SerialTransport</name>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="74"/>
-        <source>the port went away (%1)</source>
-        <translation>el puerto desapareció (%1)</translation>
+        <location filename="../lib/link/serialtransport.cpp" line="82"/>
+        <source>the port %1 disappeared (unplugged?)</source>
+        <translation>el puerto %1 ha desaparecido (¿desconectado?)</translation>
     </message>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="79"/>
+        <location filename="../lib/link/serialtransport.cpp" line="84"/>
         <source>the port stopped responding (%1)</source>
         <translation>el puerto dejó de responder (%1)</translation>
     </message>

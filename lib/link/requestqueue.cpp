@@ -7,6 +7,7 @@
 #include "protocol/valuecodec.h"
 
 #include <QtMath>
+#include <limits>
 
 namespace tipscope::link {
 
@@ -301,6 +302,8 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
             break;
         case DecodeEvent::Kind::Garbage:
             m_stats.discardedBytes += ev.raw.size();
+            if (m_current)
+                m_current->garbageBytes += ev.raw.size();
             m_tap.decoded(ev, false);
             break;
         default:
@@ -405,6 +408,10 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
         ++m_timeoutRun;
     const int run = m_timeoutRun;
     QString text = tr("%1 after %n attempt(s)", nullptr, e.attempts).arg(why);
+    if (timeout && e.garbageBytes > 0) // "no answer" alone would hide a wrong baud rate or noise
+        text += QStringLiteral("; ") +
+                tr("%n byte(s) of garbage came instead", nullptr,
+                   int(qMin<qint64>(e.garbageBytes, std::numeric_limits<int>::max())));
     if (e.request.header == Header::Write && !e.request.repeatable)
         text += tr("; the device may have carried it out: check before repeating");
     finishCurrent(error, text);

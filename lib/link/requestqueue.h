@@ -29,6 +29,7 @@
 //  - Fairness: after urgentBurst requests in a row from the two user classes while polls were
 //    waiting, one poll goes first, so a long user operation (a profile apply, a dump) cannot
 //    freeze the live values; a single user request still never waits behind more than one poll.
+//  - A request that got no answer but bytes outside any frame says how many in its reason.
 //  - Deleting a Reply (or the owner it was parented to) before its request is sent withdraws
 //    the request. A lost line fails every pending request with the reason; nothing is dropped
 //    silently. Requests made while the line is closed fail at once with NotOpen.
@@ -131,6 +132,7 @@ private:
         int attempts = 0;
         qint64 firstSentUs = 0;
         qint64 lastSentUs = 0;
+        qint64 garbageBytes = 0; // bytes outside any frame while it was open, for the reason
         [[nodiscard]] bool wanted() const;
     };
     enum class State { Idle, Writing, Waiting, Gap };

@@ -4,6 +4,8 @@
 #include "fullbacklog.h"
 #include "programrun.h"
 
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -28,6 +30,7 @@ private Q_SLOTS:
     void tcpServerThatNeverAcceptsIsExitFiveAfterTheConnectTimeout();
     void aNakForWritesOnlyLetsTheDeviceBeFoundAndRefusesTheWrite_data();
     void aNakForWritesOnlyLetsTheDeviceBeFoundAndRefusesTheWrite();
+    void junkInsteadOfAnAnswerIsExitFourWithItsSize();
 
 private:
     QString startSim(const QStringList &simArgs) {
@@ -137,6 +140,31 @@ void TestCliWire::aNakForWritesOnlyLetsTheDeviceBeFoundAndRefusesTheWrite() {
     const ProgramRun r = runCli({"--port", port, "read", "ST2"});
     QCOMPARE(r.exitCode, 0);
     QCOMPARE(r.out, QStringLiteral("ST2 350 °C\n"));
+}
+
+// A device (or a wrong baud rate) that sends 10 MB of junk was reported as "no answer".
+void TestCliWire::junkInsteadOfAnAnswerIsExitFourWithItsSize() {
+    QTcpServer device;
+    QVERIFY(device.listen(QHostAddress::LocalHost));
+    bool sent = false;
+    connect(&device, &QTcpServer::newConnection, this, [&] {
+        QTcpSocket *s = device.nextPendingConnection();
+        connect(s, &QTcpSocket::readyRead, s, [s, &sent] {
+            s->readAll();
+            if (!std::exchange(sent, true))
+                s->write(QByteArray(10 << 20, 'x'));
+        });
+    });
+    QProcess cli; // asynchronous: this test's event loop is the device
+    cli.start(binaryPath(QStringLiteral("tipscope-cli")),
+              {"--tcp", QStringLiteral("127.0.0.1:%1").arg(device.serverPort()), "--addr", "00:01",
+               "read", "ST1"});
+    QTRY_VERIFY_WITH_TIMEOUT(cli.state() == QProcess::NotRunning, 60000);
+    QCOMPARE(cli.exitCode(), 4);
+    const QString err = QString::fromUtf8(cli.readAllStandardError());
+    QVERIFY2(err.contains(QStringLiteral("no answer after 3 attempts; ")) &&
+                 err.contains(QStringLiteral(" bytes of garbage came instead")),
+             qPrintable(err));
 }
 
 QTEST_GUILESS_MAIN(TestCliWire)

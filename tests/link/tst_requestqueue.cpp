@@ -128,6 +128,7 @@ private Q_SLOTS:
     void unreadableDataFieldIsCorruptedAndRetried();
     void answerBudgetStartsWhenTheRequestIsWritten();
     void answerLaterThanTheBudgetIsStray();
+    void garbageInsteadOfAnAnswerIsCountedInTheReason();
     void afterATimeoutTheSameCommandWaitsForTheLateAnswer();
     void aRetryTakesTheLateAnswerOfTheAttemptBeforeAndHoldsTheNextRequest();
     void aHeldWriteKeepsTheWritesBehindItWaiting();
@@ -640,6 +641,27 @@ void TestRequestQueue::answerLaterThanTheBudgetIsStray() {
     QTRY_COMPARE_WITH_TIMEOUT(b.queue.stats().stray, 1, kNoAnswerWaitMs);
     QVERIFY(!reply->ok());
     QCOMPARE(b.transport.writes().size(), 1);
+}
+
+// 10 MB of junk on the line was reported as "no answer", which hides a wrong baud rate or noise.
+void TestRequestQueue::garbageInsteadOfAnAnswerIsCountedInTheReason() {
+    Bench b(quickSettings(2));
+    b.transport.setResponder([](const Frame &, int) { return QByteArray(100000, 'x'); });
+    Reply *reply = b.read("ST1");
+    QTRY_VERIFY_WITH_TIMEOUT(reply->isFinished(), kNoAnswerWaitMs);
+    QCOMPARE(reply->error(), ReplyError::Timeout);
+    // No translator is installed here: the English plural forms come with the programs'.
+    const QString why = reply->errorString();
+    QVERIFY2(why.startsWith(QStringLiteral("no answer after 3 attempt")) &&
+                 why.contains(QStringLiteral("; 300000 byte")) &&
+                 why.endsWith(QStringLiteral(" of garbage came instead")),
+             qPrintable(why));
+
+    b.transport.setResponder({});
+    Reply *silent = b.read("ST2");
+    QTRY_VERIFY_WITH_TIMEOUT(silent->isFinished(), kNoAnswerWaitMs);
+    QVERIFY2(!silent->errorString().contains(QStringLiteral("garbage")),
+             qPrintable(silent->errorString()));
 }
 
 // The frames carry no sequence number: a late answer to a read of ST1 would be taken for the
