@@ -128,11 +128,18 @@ int main(int argc, char *argv[]) {
          QStringLiteral("BAUD")},
         {QStringLiteral("latency"), QStringLiteral("Answer turnaround in ms."),
          QStringLiteral("MS")},
-        {QStringLiteral("drop"), QStringLiteral("Share of requests left unanswered (0-1)."),
+        {QStringLiteral("drop"),
+         QStringLiteral("Share of requests carried out whose answer is lost (0-1)."),
          QStringLiteral("SHARE")},
         {QStringLiteral("corrupt"), QStringLiteral("Share of answers corrupted (0-1)."),
          QStringLiteral("SHARE")},
         {QStringLiteral("garbage"), QStringLiteral("Share of answers preceded by noise (0-1)."),
+         QStringLiteral("SHARE")},
+        {QStringLiteral("drop-requests"),
+         QStringLiteral("Share of requests lost on their way: the device never sees them (0-1)."),
+         QStringLiteral("SHARE")},
+        {QStringLiteral("corrupt-requests"),
+         QStringLiteral("Share of requests with a bit flipped on their way (0-1)."),
          QStringLiteral("SHARE")},
         {QStringLiteral("bad-data"),
          QStringLiteral("Share of answers to reads whose data field cannot be read (0-1)."),
@@ -169,6 +176,8 @@ int main(int argc, char *argv[]) {
     o.faults.corruptShare = shareOption(p, QStringLiteral("corrupt"));
     o.faults.garbageShare = shareOption(p, QStringLiteral("garbage"));
     o.faults.badDataShare = shareOption(p, QStringLiteral("bad-data"));
+    o.faults.requestDropShare = shareOption(p, QStringLiteral("drop-requests"));
+    o.faults.requestCorruptShare = shareOption(p, QStringLiteral("corrupt-requests"));
     o.faults.nakCode = intOption(p, QStringLiteral("nak"), 0, 0, 99999);
     if (!parseNakScope(p.value(QStringLiteral("nak-for")).isEmpty()
                            ? QStringLiteral("all")

@@ -3,9 +3,9 @@
 //
 //   port-error PORT CODE    station-error CODE     tool PORT TOOL       alarm PORT FLAGS
 //   status PORT STATUS      robot-mode on|off      fuse on|off          feeder-error CODE
-//   drop SHARE   corrupt SHARE   garbage SHARE   bad-data SHARE   nak CODE [all|writes|COMMAND]
-//   latency MS   pace BAUD
-//   stats                   help
+//   drop SHARE   corrupt SHARE   garbage SHARE   bad-data SHARE   drop-requests SHARE
+//   corrupt-requests SHARE   nak CODE [all|writes|COMMAND]   latency MS   pace BAUD
+//   get [CODE...]           stats                  help
 // execute() returns the reply line; an unknown or malformed command gets a reply that starts
 // with "error:" and changes nothing.
 #pragma once

@@ -151,6 +151,30 @@ void SimLine::clearWire() {
 }
 
 void SimLine::handleEvent(const DecodeEvent &e, qint64 arrivedNs) {
+    if (e.kind == DecodeEvent::Kind::Frame && spoilRequest(e, arrivedNs))
+        return;
+    deliver(e, arrivedNs);
+}
+
+bool SimLine::spoilRequest(const DecodeEvent &e, qint64 arrivedNs) {
+    if (chance(m_faults.requestDropShare)) {
+        ++m_stats.requestsLost;
+        return true;
+    }
+    if (!chance(m_faults.requestCorruptShare))
+        return false;
+    ++m_stats.requestsGarbled;
+    // One bit flipped anywhere: the device's own decoder makes of it what it can (mostly a BCC
+    // error, answered NAK 00001; a flipped STX or ETX leaves it nothing to answer).
+    QByteArray raw = e.raw;
+    raw[m_rng.bounded(int(raw.size()))] ^= char(1 << m_rng.bounded(8));
+    FrameDecoder decoder;
+    for (const DecodeEvent &spoiled : decoder.feed(raw))
+        deliver(spoiled, arrivedNs);
+    return true;
+}
+
+void SimLine::deliver(const DecodeEvent &e, qint64 arrivedNs) {
     if (e.kind == DecodeEvent::Kind::Garbage || e.kind == DecodeEvent::Kind::Overflow)
         return;
     if (e.kind != DecodeEvent::Kind::Frame) {

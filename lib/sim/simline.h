@@ -30,10 +30,12 @@ namespace tipscope::sim {
 enum class NakScope { All, Writes, Command };
 
 struct SimFaults {
-    int latencyMs = 0;       // device turnaround added to every answer
-    double dropShare = 0;    // requests that get no answer
-    double corruptShare = 0; // answers with a flipped bit, cut short, or a wrong BCC
-    double garbageShare = 0; // answers preceded by noise bytes
+    int latencyMs = 0;              // device turnaround added to every answer
+    double dropShare = 0;           // requests the device carries out but whose answer is lost
+    double requestDropShare = 0;    // requests lost on their way: the device never sees them
+    double requestCorruptShare = 0; // requests with a bit flipped on their way
+    double corruptShare = 0;        // answers with a flipped bit, cut short, or a wrong BCC
+    double garbageShare = 0;        // answers preceded by noise bytes
     double badDataShare = 0; // answers to reads whose data field no client can read ("?BAD?")
     double delayShare = 0;   // answers held back by delayMs (past a client's timeout)
     int delayMs = 0;
@@ -57,8 +59,10 @@ struct SimLineStats {
     qint64 delayed = 0;
     qint64 badData = 0;
     qint64 badRequests = 0;
-    qint64 overrunBytes = 0; // came faster than the paced wire carries them, beyond the buffer
-    qint64 unsentBytes = 0;  // answers a client did not take (not reading), dropped
+    qint64 requestsLost = 0;    // requestDropShare
+    qint64 requestsGarbled = 0; // requestCorruptShare
+    qint64 overrunBytes = 0;    // came faster than the paced wire carries them, beyond the buffer
+    qint64 unsentBytes = 0;     // answers a client did not take (not reading), dropped
 };
 
 class SimLine : public QObject {
@@ -115,6 +119,9 @@ private:
     };
 
     void handleEvent(const protocol::DecodeEvent &event, qint64 arrivedNs);
+    // A request frame that a fault on the way spoiled or lost; true when it did.
+    bool spoilRequest(const protocol::DecodeEvent &event, qint64 arrivedNs);
+    void deliver(const protocol::DecodeEvent &event, qint64 arrivedNs);
     [[nodiscard]] bool spoilData(const SimDevice &device, const protocol::Frame &request,
                                  const protocol::Frame &answer);
     void answerMalformed(const protocol::DecodeEvent &event, qint64 arrivedNs);

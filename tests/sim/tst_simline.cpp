@@ -88,6 +88,8 @@ private Q_SLOTS:
     void nakFaultCanBeLimitedToWritesOrOneCommand_data();
     void nakFaultCanBeLimitedToWritesOrOneCommand();
     void pacedJunkCostsAtMostTheReceiversBufferOfWireTime();
+    void requestFaultsLoseOrGarbleTheRequestBeforeTheDeviceSeesIt();
+    void getTellsTheStoredSettingsOffTheWire();
     void pacedAnswersTakeAtLeastTheWireTime();
     void chunkedAnswersArriveInFewerPiecesAtTheSameTime_data();
     void chunkedAnswersArriveInFewerPiecesAtTheSameTime();
@@ -435,6 +437,39 @@ void TestSimLine::pacedJunkCostsAtMostTheReceiversBufferOfWireTime() {
     QTRY_VERIFY_WITH_TIMEOUT(got.contains("DME-2C"), 10000);
     QVERIFY(line->stats().overrunBytes >= (1 << 20) - 4096);
     QVERIFY(executeSimCommand(*line, "stats").contains(QStringLiteral(" overrun ")));
+}
+
+// "drop" loses the answer of a request the device carried out; these lose the request itself.
+void TestSimLine::requestFaultsLoseOrGarbleTheRequestBeforeTheDeviceSeesIt() {
+    auto line = SimLine::demo();
+    Wire w(*line);
+    QCOMPARE(executeSimCommand(*line, "drop-requests 1"), QStringLiteral("ok"));
+    QVERIFY(!w.ask(wr("ST1", "00400")));
+    QCOMPARE(line->stats().requestsLost, 1);
+    QCOMPARE(line->stats().requests, 0);
+
+    QCOMPARE(executeSimCommand(*line, "drop-requests 0"), QStringLiteral("ok"));
+    QCOMPARE(executeSimCommand(*line, "corrupt-requests 1"), QStringLiteral("ok"));
+    int naks = 0;
+    for (int i = 0; i < 50; ++i) {
+        w.decoder.reset();
+        const auto answer = w.ask(wr("ST1", "00400"));
+        QVERIFY(!answer || nakCode(answer) == 1);
+        naks += answer ? 1 : 0;
+    }
+    QVERIFY2(naks > 25, qPrintable(QString::number(naks))); // mostly a BCC error, NAK 00001
+    QCOMPARE(line->stats().requestsGarbled, 50);
+    QCOMPARE(line->station()->setting("ST1"), 350);
+    QVERIFY(executeSimCommand(*line, "stats").contains(" lost-requests 1 garbled-requests 50"));
+}
+
+void TestSimLine::getTellsTheStoredSettingsOffTheWire() {
+    auto line = SimLine::demo();
+    QCOMPARE(executeSimCommand(*line, "get ST1 a12 LEN"), QStringLiteral("ST1=350 A12=0 LEN=200"));
+    line->station()->setSetting("ST1", 400);
+    QCOMPARE(executeSimCommand(*line, "get st1"), QStringLiteral("ST1=400"));
+    QVERIFY(executeSimCommand(*line, "get").contains(QStringLiteral("MAT=")));
+    QVERIFY(executeSimCommand(*line, "get XYZ").startsWith("error:"));
 }
 
 void TestSimLine::pacedAnswersTakeAtLeastTheWireTime() {
