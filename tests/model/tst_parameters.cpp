@@ -56,6 +56,7 @@ private Q_SLOTS:
     void aNakLeavesTheParameterFailedWithTheReasonAndKeepsTheEdit();
     void aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails_data();
     void aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails();
+    void eachWriteEndsOnceWithItsOwnId();
     void monitorOnlyBlocksEveryWrite();
     void dangerousActionsNeedConfirmation();
     void saveToMemoryMarksSelectedTemperaturesSaved();
@@ -230,6 +231,43 @@ void TestParameters::aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails() {
         QVERIFY2(why.contains(QStringLiteral("the device reports")), qPrintable(why));
         QCOMPARE(p->number().value(), before);
     }
+}
+
+// A caller tells its writes' outcomes apart by id: a finish can never be taken for another
+// write's, and apply() says at once when it started nothing.
+void TestParameters::eachWriteEndsOnceWithItsOwnId() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    auto st = f.station();
+    st->refreshAll();
+    f.settle();
+    Parameter *p = st->parameter("ST3");
+    QSignalSpy done(p, &Parameter::writeFinished);
+    QVERIFY(done.isValid());
+    QCOMPARE(p->apply(), quint64(0)); // nothing pending
+    QVERIFY(p->setEdit(p->number().value()).isEmpty());
+    QCOMPARE(p->apply(), quint64(0)); // the device holds it already
+
+    QVERIFY(p->setEdit(300).isEmpty());
+    const quint64 first = p->apply();
+    QVERIFY(first != 0);
+    QVERIFY(p->setEdit(310).isEmpty()); // edited while the write runs
+    QCOMPARE(p->apply(), quint64(0));   // one write of a parameter at a time
+    QVERIFY(done.wait(10000));
+    QCOMPARE(done.count(), 1);
+    QCOMPARE(done.first().at(0).toBool(), true);
+    QCOMPARE(done.first().at(2).value<quint64>(), first);
+
+    QVERIFY(p->setEdit(320).isEmpty());
+    st->setWritesBlocked(true); // refused inside apply(): still told after apply() returned
+    const quint64 refused = p->apply();
+    QVERIFY(refused != 0 && refused != first);
+    QCOMPARE(done.count(), 1);
+    QTRY_COMPARE(done.count(), 2);
+    QCOMPARE(done.last().at(0).toBool(), false);
+    QCOMPARE(done.last().at(2).value<quint64>(), refused);
+    QTest::qWait(100);
+    f.settle();
+    QCOMPARE(done.count(), 2);
 }
 
 void TestParameters::monitorOnlyBlocksEveryWrite() {
