@@ -1999,6 +1999,74 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>Journal</name>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="28"/>
+        <source>No journal is open.</source>
+        <translation>Kein Journal ist geöffnet.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="86"/>
+        <source>There is no journal at %1.</source>
+        <translation>Unter %1 gibt es kein Journal.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="81"/>
+        <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
+        <translation>Das Journal %1 wurde von einem neueren TipScope geschrieben (Schema %2; dieses kennt bis %3). Es wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="96"/>
+        <source>The file %1 is not a TipScope journal. It was left untouched.</source>
+        <translation>Die Datei %1 ist kein TipScope-Journal. Sie wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="162"/>
+        <source>Cannot create the folder %1 for the journal.</source>
+        <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="221"/>
+        <source>Records lost: %1. Reason: %2</source>
+        <translation>Verlorene Einträge: %1. Grund: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="305"/>
+        <source>The journal was closed before it could write them: %1</source>
+        <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="41"/>
+        <source>The journal %1 cannot grow: the disk is full or the journal reached its size limit.</source>
+        <translation>Das Journal %1 kann nicht wachsen: Der Datenträger ist voll oder das Journal hat seine Größengrenze erreicht.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="51"/>
+        <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
+        <translation>Das Journal %1 ist beschädigt oder kein Journal; es wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="55"/>
+        <source>The journal %1 is locked by another program.</source>
+        <translation>Das Journal %1 ist von einem anderen Programm gesperrt.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
+        <source>The disk holding the journal %1 reported an error.</source>
+        <translation>Der Datenträger des Journals %1 hat einen Fehler gemeldet.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
+        <source>The journal %1 reported an error: %2</source>
+        <translation>Das Journal %1 hat einen Fehler gemeldet: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="64"/>
+        <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
+        <translation>Das Journal %1 kann nicht geschrieben werden: Sein Ordner oder die Datei ist schreibgeschützt oder nicht zugänglich.</translation>
+    </message>
+</context>
+<context>
     <name>LinkStats</name>
     <message>
         <location filename="../lib/link/linkstats.cpp" line="60"/>
@@ -5112,6 +5180,25 @@ Möchten Sie fortfahren?</translation>
         <location filename="../app/gui/pages/settingspage.h" line="25"/>
         <source>Settings</source>
         <translation>Einstellungen</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::journal::Journal</name>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="85"/>
+        <location filename="../lib/journal/journal.cpp" line="99"/>
+        <source>The journal is closed.</source>
+        <translation>Das Journal ist geschlossen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="89"/>
+        <source>The journal cannot keep up: %1 records wait to be written.</source>
+        <translation>Das Journal kommt nicht nach: %1 Einträge warten darauf, geschrieben zu werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="137"/>
+        <source>Work order: %1, board: %2, operator: %3</source>
+        <translation>Auftrag: %1, Platine: %2, Bediener: %3</translation>
     </message>
 </context>
 <context>

@@ -2000,6 +2000,74 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>Journal</name>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="28"/>
+        <source>No journal is open.</source>
+        <translation>No hay ningún diario abierto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="86"/>
+        <source>There is no journal at %1.</source>
+        <translation>No hay ningún diario en %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="81"/>
+        <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
+        <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="96"/>
+        <source>The file %1 is not a TipScope journal. It was left untouched.</source>
+        <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="162"/>
+        <source>Cannot create the folder %1 for the journal.</source>
+        <translation>No se puede crear la carpeta %1 para el diario.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="221"/>
+        <source>Records lost: %1. Reason: %2</source>
+        <translation>Registros perdidos: %1. Motivo: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="305"/>
+        <source>The journal was closed before it could write them: %1</source>
+        <translation>El diario se cerró antes de poder escribirlos: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="41"/>
+        <source>The journal %1 cannot grow: the disk is full or the journal reached its size limit.</source>
+        <translation>El diario %1 no puede crecer: el disco está lleno o el diario alcanzó su tamaño máximo.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="51"/>
+        <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
+        <translation>El diario %1 está dañado o no es un diario; no se ha modificado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="55"/>
+        <source>The journal %1 is locked by another program.</source>
+        <translation>Otro programa tiene bloqueado el diario %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
+        <source>The disk holding the journal %1 reported an error.</source>
+        <translation>El disco del diario %1 ha informado de un error.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
+        <source>The journal %1 reported an error: %2</source>
+        <translation>El diario %1 ha informado de un error: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="64"/>
+        <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
+        <translation>No se puede escribir el diario %1: su carpeta o el archivo es de solo lectura o no es accesible.</translation>
+    </message>
+</context>
+<context>
     <name>LinkStats</name>
     <message>
         <location filename="../lib/link/linkstats.cpp" line="60"/>
@@ -5113,6 +5181,25 @@ Do you want to continue?</source>
         <location filename="../app/gui/pages/settingspage.h" line="25"/>
         <source>Settings</source>
         <translation>Ajustes</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::journal::Journal</name>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="85"/>
+        <location filename="../lib/journal/journal.cpp" line="99"/>
+        <source>The journal is closed.</source>
+        <translation>El diario está cerrado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="89"/>
+        <source>The journal cannot keep up: %1 records wait to be written.</source>
+        <translation>El diario no da abasto: %1 registros esperan a ser escritos.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="137"/>
+        <source>Work order: %1, board: %2, operator: %3</source>
+        <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
     </message>
 </context>
 <context>
