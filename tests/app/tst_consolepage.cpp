@@ -1,5 +1,6 @@
 // The raw frame console page, driven through its real widgets against the demo line (a
-// simulated DME at 01 and an SFR feeder at 10), plus the builder's encoding rules on their own.
+// simulated DME at 01 and an SFR feeder at 10). The builder's rules are tested on their own in
+// tests/model/tst_framecomposer.cpp.
 #include "pages/consolepage.h"
 #include "pages/framebuilder.h"
 
@@ -35,8 +36,6 @@ private Q_SLOTS:
     void init();
     void cleanup();
 
-    void composeFrameEncodesWhatCanBeEncoded_data();
-    void composeFrameEncodesWhatCanBeEncoded();
     void builtReadOfModelNameShowsTheAnswerInTheTable();
     void rawHexWithABadDigitShowsTheErrorAndSendsNothing();
     void pauseHoldsRowsAndResumeShowsThem();
@@ -101,76 +100,6 @@ void TestConsolePage::selectDevice(const QString &address) {
         if (device->itemText(i).startsWith(address))
             device->setCurrentIndex(i);
     QVERIFY2(device->currentText().startsWith(address), qPrintable(device->currentText()));
-}
-
-void TestConsolePage::composeFrameEncodesWhatCanBeEncoded_data() {
-    QTest::addColumn<int>("target"); // -1: no addresses
-    QTest::addColumn<QChar>("header");
-    QTest::addColumn<QString>("command");
-    QTest::addColumn<QString>("data");
-    QTest::addColumn<bool>("encodable");
-    QTest::addColumn<bool>("warning");
-    QTest::addColumn<QByteArray>("hex"); // empty: not checked
-
-    const QChar w(QLatin1Char('W')), r(QLatin1Char('R'));
-    // The guide's worked frames.
-    QTest::newRow("addressed write, guide example")
-        << 1 << w << "MAT"
-        << "00375" << true << false << QByteArray("0230303031574D41543030333735033E");
-    QTest::newRow("write without addresses, guide example")
-        << -1 << w << "MAT"
-        << "00375" << true << false << QByteArray("02574D41543030333735033F");
-    QTest::newRow("read of the model name") << 1 << r << "SMN"
-                                            << "" << true << false << QByteArray();
-    QTest::newRow("out of range is sent but warned") << 1 << w << "MAT"
-                                                     << "00900" << true << true << QByteArray();
-    QTest::newRow("off the step is sent but warned") << 1 << w << "MAT"
-                                                     << "00377" << true << true << QByteArray();
-    QTest::newRow("short number is sent as typed but warned")
-        << 1 << w << "MAT"
-        << "375" << true << true << QByteArray();
-    QTest::newRow("unknown command is sent but warned") << 1 << r << "XYZ"
-                                                        << "" << true << true << QByteArray();
-    QTest::newRow("read with data is sent but warned") << 1 << r << "SMN"
-                                                       << "1" << true << true << QByteArray();
-    QTest::newRow("two-character command is refused") << 1 << r << "SM"
-                                                      << "" << false << false << QByteArray();
-    QTest::newRow("four-character command is refused") << 1 << r << "SMNX"
-                                                       << "" << false << false << QByteArray();
-    QTest::newRow("control character in data is refused") << 1 << w << "MAT"
-                                                          << QString::fromLatin1("003\x03"
-                                                                                 "5")
-                                                          << false << false << QByteArray();
-    QTest::newRow("non-ASCII data is refused")
-        << 1 << w << "MAT" << QStringLiteral("00°75") << false << false << QByteArray();
-}
-
-void TestConsolePage::composeFrameEncodesWhatCanBeEncoded() {
-    QFETCH(int, target);
-    QFETCH(QChar, header);
-    QFETCH(QString, command);
-    QFETCH(QString, data);
-    QFETCH(bool, encodable);
-    QFETCH(bool, warning);
-    QFETCH(QByteArray, hex);
-
-    gui::FrameInput in;
-    in.source = 0;
-    if (target >= 0)
-        in.target = target;
-    in.family = QStringLiteral("DME");
-    in.header = header == QLatin1Char('W') ? protocol::Header::Write : protocol::Header::Read;
-    in.command = command;
-    in.data = data;
-    const gui::FrameDraft draft = gui::composeFrame(in);
-    QCOMPARE(draft.encodable, encodable);
-    QCOMPARE(draft.problem.isEmpty(), encodable);
-    if (encodable) {
-        QVERIFY2(draft.warning == warning, qPrintable(draft.hint));
-        QCOMPARE(draft.frame.data, data.toLatin1()); // verbatim, never "corrected"
-    }
-    if (!hex.isEmpty())
-        QCOMPARE(draft.frame.encode().toHex().toUpper(), hex);
 }
 
 void TestConsolePage::builtReadOfModelNameShowsTheAnswerInTheTable() {

@@ -286,7 +286,7 @@ void ConsolePage::followLine() {
 }
 
 void ConsolePage::updateDevices() {
-    QList<FrameBuilder::Target> targets;
+    QList<model::FrameTarget> targets;
     QMap<int, QString> families;
     const QString current = m_address->currentText();
     {
@@ -294,10 +294,7 @@ void ConsolePage::updateDevices() {
         m_address->clear();
         m_address->addItem(tr("All"));
         for (const model::DeviceModel *d : m_session.devices()) {
-            const QString label = d->address()
-                                      ? d->info().addressText() + QLatin1Char(' ') + d->info().model
-                                      : tr("%1 (no address)").arg(d->info().model);
-            targets.append({label, d->address(), d->family()});
+            targets.append(model::FrameTarget::of(*d));
             families.insert(d->address().value_or(-1), d->family());
             if (d->address())
                 m_address->addItem(targets.last().label, *d->address());

@@ -1,14 +1,9 @@
 #include "framebuilder.h"
 
-#include "protocol/catalog.h"
-#include "protocol/datafield.h"
-#include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
-#include "protocol/valuecodec.h"
 
 #include <QComboBox>
 #include <QCompleter>
-#include <QCoreApplication>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QLabel>
@@ -21,84 +16,6 @@ namespace tipscope::gui {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(FrameBuilder)
-};
-
-const QString kSeparator = QStringLiteral(" — ");
-
-bool isPrintable(const QString &text) {
-    for (QChar c : text)
-        if (c.unicode() < 0x20 || c.unicode() > 0x7e)
-            return false;
-    return true;
-}
-
-// What is wrong with `data` for a catalog write, in words; empty when the catalog agrees.
-QString writeProblem(const ResolvedCommand &cmd, const QString &data) {
-    const CommandSpec &spec = *cmd.spec;
-    if (spec.kind == ValueKind::Action)
-        return data.toLatin1() == spec.fixedData
-                   ? QString()
-                   : Tr::tr("%1 carries the data field %2.")
-                         .arg(QString::fromLatin1(cmd.code), QString::fromLatin1(spec.fixedData));
-    if (data.isEmpty())
-        return Tr::tr("A write needs a data field: %1.").arg(allowedText(cmd));
-    QString error;
-    const std::optional<qint64> value = parseUserValue(cmd, data, &error);
-    if (!value)
-        return error;
-    if (const QString why = validate(cmd, *value); !why.isEmpty())
-        return why;
-    // The device parses fixed-width fields, so "375" is not the same frame as "00375".
-    const bool delay = spec.kind == ValueKind::Delay && !spec.special.contains(int(*value));
-    const auto wire = delay ? encodeDelay(int(*value)) : encodeNumber(*value);
-    if (wire && *wire != data.toLatin1())
-        return Tr::tr("On the wire this value is written %1.").arg(QString::fromLatin1(*wire));
-    return {};
-}
-
-// "Name: description", as the catalog says it in the user interface language.
-QString describe(const CommandSpec &spec) {
-    return QStringLiteral("%1: %2").arg(catalogText(spec.name), catalogText(spec.description));
-}
-
-void addCatalogAdvice(const FrameInput &in, const QString &code, FrameDraft &draft) {
-    auto warn = [&draft](const QString &text) {
-        draft.hint = text;
-        draft.warning = true;
-    };
-    if (in.family.isEmpty())
-        return warn(Tr::tr("Unknown device family: the catalog cannot check this frame."));
-    const Catalog &catalog = Catalog::builtin();
-    const bool write = in.header == Header::Write;
-    const Direction dir = write ? Direction::Write : Direction::Read;
-    const auto cmd = catalog.resolve(in.family, code.toLatin1(), dir);
-    if (!cmd) {
-        QString text = write ? Tr::tr("%1 is not a %2 write command in the catalog.")
-                             : Tr::tr("%1 is not a %2 read command in the catalog.");
-        text = text.arg(code, in.family);
-        if (code != code.toUpper() && catalog.resolve(in.family, code.toUpper().toLatin1(), dir))
-            text += QLatin1Char(' ') + Tr::tr("Did you mean %1?").arg(code.toUpper());
-        return warn(text + QLatin1Char(' ') + Tr::tr("It is sent as typed."));
-    }
-    const CommandSpec &spec = *cmd->spec;
-    if (!write) {
-        if (!in.data.isEmpty())
-            return warn(Tr::tr("Reads carry no data field; the device may refuse this frame."));
-        draft.hint = describe(spec);
-        return;
-    }
-    const QString problem = writeProblem(*cmd, in.data);
-    if (spec.dangerous)
-        return warn(Tr::tr("Dangerous: %1")
-                        .arg(catalogText(spec.danger.isEmpty() ? spec.description : spec.danger)) +
-                    (problem.isEmpty() ? QString() : QLatin1Char(' ') + problem));
-    if (!problem.isEmpty())
-        return warn(Tr::tr("Catalog check: %1").arg(problem));
-    draft.hint = describe(spec);
-}
-
 enum class Tone { Normal, Warning, Error };
 
 void setTone(QLabel *label, Tone tone) {
@@ -112,33 +29,6 @@ void setTone(QLabel *label, Tone tone) {
     label->setPalette(p);
 }
 } // namespace
-
-FrameDraft composeFrame(const FrameInput &in) {
-    FrameDraft draft;
-    const QString code = in.command.trimmed();
-    if (code.size() != 3 || !isPrintable(code)) {
-        draft.problem =
-            Tr::tr("Not sendable: the command must be 3 printable characters, e.g. SMN.");
-        return draft;
-    }
-    if (!isPrintable(in.data)) {
-        draft.problem = Tr::tr("Not sendable: the data field may only hold printable ASCII.");
-        return draft;
-    }
-    if (in.target &&
-        (*in.target < 0 || *in.target > kMaxAddress || in.source < 0 || in.source > kMaxAddress)) {
-        draft.problem = Tr::tr("Not sendable: addresses go from 00 to 99.");
-        return draft;
-    }
-    Frame frame;
-    frame.header = in.header;
-    frame.command = code.toLatin1();
-    frame.data = in.data.toLatin1();
-    draft.frame = in.target ? frame.addressed(in.source, *in.target) : frame;
-    draft.encodable = true;
-    addCatalogAdvice(in, code, draft);
-    return draft;
-}
 
 FrameBuilder::FrameBuilder(QWidget *parent)
     : QGroupBox(tr("Send a frame"), parent) {
@@ -240,13 +130,13 @@ void FrameBuilder::buildLayout() {
     setTabOrder(m_rawHex, m_sendRaw);
 }
 
-void FrameBuilder::setTargets(const QList<Target> &targets) {
+void FrameBuilder::setTargets(const QList<model::FrameTarget> &targets) {
     const QString current = m_device->currentText();
     {
         const QSignalBlocker block(m_device);
-        m_targets = targets;
+        m_composer.setTargets(targets);
         m_device->clear();
-        for (const Target &t : targets)
+        for (const model::FrameTarget &t : targets)
             m_device->addItem(t.label);
         m_device->setCurrentIndex(qMax(0, m_device->findText(current)));
     }
@@ -254,7 +144,7 @@ void FrameBuilder::setTargets(const QList<Target> &targets) {
 }
 
 void FrameBuilder::setRobotAddress(int address) {
-    m_robotAddress = address;
+    m_composer.setRobotAddress(address);
     updateDraft();
 }
 
@@ -277,48 +167,22 @@ Header FrameBuilder::header() const {
     return m_header->currentData().toChar() == QLatin1Char('W') ? Header::Write : Header::Read;
 }
 
-QString FrameBuilder::commandCode() const {
-    const QString text = m_command->currentText();
-    const int i = m_command->currentIndex();
-    if (i >= 0 && m_command->itemText(i) == text)
-        return m_command->itemData(i).toString();
-    return text.section(kSeparator, 0, 0).trimmed();
-}
-
-FrameDraft FrameBuilder::draft() const {
-    const int i = m_device->currentIndex();
-    if (i < 0 || i >= m_targets.size()) {
-        FrameDraft none;
-        none.problem = tr("No device is known on this line: connect first, or send raw hex.");
-        return none;
-    }
-    FrameInput in;
-    in.source = m_robotAddress;
-    in.target = m_targets.at(i).address;
-    in.family = m_targets.at(i).family;
-    in.header = header();
-    in.command = commandCode();
-    in.data = m_data->text();
-    return composeFrame(in);
+model::FrameDraft FrameBuilder::draft() const {
+    return m_composer.compose(m_device->currentIndex(), header(), m_command->currentText(),
+                              m_data->text());
 }
 
 void FrameBuilder::fillCommands() {
-    const QString keep = commandCode();
-    const int i = m_device->currentIndex();
-    const QString family = i >= 0 && i < m_targets.size() ? m_targets.at(i).family : QString();
-    const Direction dir = header() == Header::Write ? Direction::Write : Direction::Read;
+    const QString keep = model::FrameComposer::codeOf(m_command->currentText());
+    const int target = m_device->currentIndex();
     {
         const QSignalBlocker block(m_command);
         m_command->clear();
-        for (const ResolvedCommand &c : Catalog::builtin().expand(family, dir)) {
-            const QString code = QString::fromLatin1(c.code);
-            m_command->addItem(code + kSeparator + catalogText(c.spec->name), code);
-        }
-        // Keep what the person chose; with nothing chosen yet, start from the model-name read
-        // every device answers.
-        int found = m_command->findData(keep.isEmpty() ? QStringLiteral("SMN") : keep);
-        if (found < 0 && keep.isEmpty() && m_command->count() > 0)
-            found = 0;
+        for (const model::CommandChoice &c : m_composer.commands(target, header()))
+            m_command->addItem(c.label, c.code);
+        // Keep what the person chose; with nothing chosen yet, start where the composer says.
+        const int found =
+            m_command->findData(keep.isEmpty() ? m_composer.firstCommand(target, header()) : keep);
         m_command->setCurrentIndex(found);
         if (found < 0)
             m_command->setEditText(keep);
@@ -329,22 +193,14 @@ void FrameBuilder::fillCommands() {
 void FrameBuilder::onCommandPicked() {
     // Picking from the list fills the data field with what the command takes by construction;
     // typed values are left alone.
-    const FrameDraft d = draft();
-    if (header() == Header::Read) {
-        m_data->clear();
-        return;
-    }
-    const int i = m_device->currentIndex();
-    if (!d.encodable || i < 0 || i >= m_targets.size())
-        return;
-    const auto cmd =
-        Catalog::builtin().resolve(m_targets.at(i).family, d.frame.command, Direction::Write);
-    if (cmd && cmd->spec->kind == ValueKind::Action)
-        m_data->setText(QString::fromLatin1(cmd->spec->fixedData));
+    const std::optional<QString> data =
+        m_composer.dataOfPicked(m_device->currentIndex(), header(), m_command->currentText());
+    if (data)
+        m_data->setText(*data);
 }
 
 void FrameBuilder::updateDraft() {
-    const FrameDraft d = draft();
+    const model::FrameDraft d = draft();
     if (d.encodable) {
         const QByteArray bytes = d.frame.encode();
         // The BCC apart: as ASCII it would read as data ("<ETX>6").
@@ -377,28 +233,17 @@ void FrameBuilder::updateDraft() {
 }
 
 void FrameBuilder::updateRawHex() {
-    const QString text = m_rawHex->text();
-    QString error;
-    const auto bytes = text.trimmed().isEmpty() ? std::nullopt : parseHexBytes(text, &error);
-    if (!bytes) {
-        m_rawStatus->setText(error);
-        setTone(m_rawStatus, Tone::Error);
+    if (m_rawHex->text().trimmed().isEmpty()) {
+        m_rawStatus->clear();
         return;
     }
-    QString why;
-    const auto frame = parseFrame(*bytes, nullptr, &why);
-    if (frame)
-        m_rawStatus->setText(
-            tr("%n byte(s), a valid frame: %1", "", int(bytes->size())).arg(frame->toString()));
-    else
-        m_rawStatus->setText(
-            tr("%n byte(s), not a valid frame (%1): sent as typed", "", int(bytes->size()))
-                .arg(why));
-    setTone(m_rawStatus, frame ? Tone::Normal : Tone::Warning);
+    const model::RawHex raw = model::FrameComposer::readHex(m_rawHex->text());
+    m_rawStatus->setText(raw.text);
+    setTone(m_rawStatus, !raw.bytes ? Tone::Error : raw.warning ? Tone::Warning : Tone::Normal);
 }
 
 void FrameBuilder::sendFrame() {
-    const FrameDraft d = draft();
+    const model::FrameDraft d = draft();
     if (!d.encodable || (m_monitorOnly && d.frame.header == Header::Write))
         return;
     Q_EMIT sendRequested(d.frame.encode(), d.frame.header == Header::Write);
@@ -407,16 +252,14 @@ void FrameBuilder::sendFrame() {
 void FrameBuilder::sendRaw() {
     if (m_monitorOnly)
         return;
-    QString error;
-    const auto bytes = parseHexBytes(m_rawHex->text(), &error);
-    if (!bytes) {
-        m_rawStatus->setText(tr("Not sent: %1").arg(error));
+    const model::RawHex raw = model::FrameComposer::readHex(m_rawHex->text());
+    if (!raw.bytes) {
+        m_rawStatus->setText(tr("Not sent: %1").arg(raw.text));
         setTone(m_rawStatus, Tone::Error);
         return;
     }
     // Bytes that are not a valid frame could be anything, a write included.
-    const auto frame = parseFrame(*bytes);
-    Q_EMIT sendRequested(*bytes, !frame || frame->header != Header::Read);
+    Q_EMIT sendRequested(*raw.bytes, !raw.frame || raw.frame->header != Header::Read);
 }
 
 } // namespace tipscope::gui
