@@ -1591,102 +1591,102 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="65"/>
+        <location filename="../lib/model/consolemodel.cpp" line="102"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>unverändert gesendet (kein gültiges Telegramm)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="81"/>
+        <location filename="../lib/model/consolemodel.cpp" line="118"/>
         <source>stray: answers no pending request</source>
         <translation>verwaist: beantwortet keine offene Anfrage</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="205"/>
+        <location filename="../lib/model/consolemodel.cpp" line="242"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="207"/>
+        <location filename="../lib/model/consolemodel.cpp" line="244"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="209"/>
+        <location filename="../lib/model/consolemodel.cpp" line="246"/>
         <source>frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="211"/>
+        <location filename="../lib/model/consolemodel.cpp" line="248"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="213"/>
+        <location filename="../lib/model/consolemodel.cpp" line="250"/>
         <source>note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="293"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="293"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="309"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="309"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="310"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="310"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="311"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="311"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="312"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="312"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="313"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="313"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="277"/>
+        <location filename="../lib/model/consolemodel.cpp" line="314"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -1874,32 +1874,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Katalogprüfung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="117"/>
+        <location filename="../lib/model/framecomposer.cpp" line="116"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="159"/>
+        <location filename="../lib/model/framecomposer.cpp" line="158"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="177"/>
+        <location filename="../lib/model/framecomposer.cpp" line="176"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>Nicht sendbar: der Befehl muss aus 3 druckbaren Zeichen bestehen, z. B. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="181"/>
+        <location filename="../lib/model/framecomposer.cpp" line="180"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>Nicht sendbar: das Datenfeld darf nur druckbare ASCII-Zeichen enthalten.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="186"/>
+        <location filename="../lib/model/framecomposer.cpp" line="185"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>Nicht sendbar: Adressen gehen von 00 bis 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="215"/>
+        <location filename="../lib/model/framecomposer.cpp" line="214"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
@@ -1907,7 +1907,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="217"/>
+        <location filename="../lib/model/framecomposer.cpp" line="216"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
@@ -3235,240 +3235,197 @@ Dauerhaft mit dieser udev-Regel:
     <name>tipscope::gui::ConsolePage</name>
     <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
-        <source>%1: answered %2 after %L3 ms</source>
-        <translation>%1: Antwort %2 nach %L3 ms</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
-        <source>%1: refused, %2</source>
-        <translation>%1: abgelehnt, %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="85"/>
-        <source>%1: no answer (timeout)</source>
-        <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
-        <source>%1: %2 (%3)</source>
-        <translation>%1: %2 (%3)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="99"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="116"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="313"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="121"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="125"/>
         <source>Relative time</source>
         <translation>Relative Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="128"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>Show bytes sent</source>
         <translation>Gesendete Bytes anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="147"/>
         <source>RX chunks</source>
         <translation>RX-Blöcke</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Frames</source>
         <translation>Telegramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Show received frames, decoded</source>
         <translation>Empfangene Telegramme dekodiert anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="153"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="153"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="154"/>
         <source>Notes</source>
         <translation>Hinweise</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="154"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="157"/>
         <source>De&amp;vice:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
         <source>Device address filter</source>
         <translation>Filter für Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>Co&amp;mmand:</source>
         <translation>Be&amp;fehl:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Command filter</source>
         <translation>Befehlsfilter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>e.g. ST1</source>
         <translation>z. B. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="185"/>
         <source>Remove every row, held ones included</source>
         <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="186"/>
         <source>Save…</source>
         <translation>Speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="221"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="248"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="228"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="256"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="236"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="270"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="250"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="306"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="264"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="292"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="313"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="330"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="336"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="331"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
         <source>paused: new traffic is held</source>
         <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
-        <source>%n raw byte(s)</source>
-        <translation>
-            <numerusform>%n Rohbyte</numerusform>
-            <numerusform>%n Rohbytes</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
-        <source>%1: not sent, not connected</source>
-        <translation>%1: nicht gesendet, nicht verbunden</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
-        <source>%1: not sent, monitor-only mode is on</source>
-        <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
-        <source>%1: sent, waiting for the answer…</source>
-        <translation>%1: gesendet, warte auf Antwort…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.h" line="66"/>
+        <location filename="../app/gui/pages/consolepage.h" line="62"/>
         <source>Console</source>
         <translation>Konsole</translation>
     </message>
@@ -4291,152 +4248,142 @@ Zurücksetzen?</translation>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="57"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="60"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="64"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="65"/>
         <source>R (read)</source>
         <translation>R (lesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="62"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
         <source>W (write)</source>
         <translation>W (schreiben)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="64"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>Command</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="74"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
         <source>Data field</source>
         <translation>Datenfeld</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
         <source>&amp;Send frame</source>
         <translation>Telegramm &amp;senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="79"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
         <source>Send frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="81"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
         <source>Frame to be sent</source>
         <translation>Zu sendendes Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="89"/>
         <source>Catalog check</source>
         <translation>Katalogprüfung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="92"/>
         <source>Raw bytes in hex</source>
         <translation>Rohbytes hexadezimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="92"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="96"/>
         <source>Send ra&amp;w hex</source>
         <translation>Roh-He&amp;x senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="93"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
         <source>Send raw hex</source>
         <translation>Roh-Hex senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="95"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
         <source>Raw bytes check</source>
         <translation>Prüfung der Rohbytes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="96"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="100"/>
         <source>Nothing sent yet.</source>
         <translation>Noch nichts gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Outcome of the last send</source>
         <translation>Ergebnis des letzten Sendens</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="110"/>
         <source>&amp;Device</source>
         <translation>Ger&amp;ät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="108"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
         <source>&amp;Header</source>
         <translation>&amp;Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="110"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
         <source>C&amp;ommand</source>
         <translation>Befeh&amp;l</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
         <source>D&amp;ata</source>
         <translation>Date&amp;n</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="115"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>Frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="118"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="122"/>
         <source>&amp;Raw hex</source>
         <translation>&amp;Roh-Hex</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="122"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="126"/>
         <source>Last send</source>
         <translation>Letztes Senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="155"/>
-        <source>Monitor-only mode is on: raw bytes are not sent, since they may be a write. Reads can still be sent with Send frame.</source>
-        <translation>Der Modus „Nur beobachten“ ist aktiv: Rohbytes werden nicht gesendet, da sie ein Schreibbefehl sein könnten. Lesebefehle können weiterhin mit „Telegramm senden“ gesendet werden.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="157"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="235"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Diese Bytes genau wie eingegeben senden; die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
         <source>(nothing to send)</source>
         <translation>(nichts zu senden)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>none for reads</source>
         <translation>keins bei Lesebefehlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>e.g. 00350</source>
         <translation>z. B. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="219"/>
-        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
-        <translation>Der Modus „Nur beobachten“ ist aktiv: W-Telegramme werden nicht gesendet, Lesebefehle schon.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="231"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Dieses Telegramm einmal wie angezeigt senden (ohne Wiederholungen; Katalogwarnungen halten es nicht auf). Die Antwort erscheint in der Tabelle.</translation>
     </message>
@@ -5303,6 +5250,62 @@ Möchten Sie fortfahren?</translation>
         <location filename="../lib/link/tcptransport.cpp" line="29"/>
         <source>cannot connect to %1: %2</source>
         <translation>Verbindung zu %1 nicht möglich: %2</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::ConsoleSender</name>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="15"/>
+        <source>%1: answered %2 after %L3 ms</source>
+        <translation>%1: Antwort %2 nach %L3 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="19"/>
+        <source>%1: refused, %2</source>
+        <translation>%1: abgelehnt, %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="21"/>
+        <source>%1: no answer (timeout)</source>
+        <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="23"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="52"/>
+        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: W-Telegramme werden nicht gesendet, Lesebefehle schon.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="58"/>
+        <source>Monitor-only mode is on: bytes that are not one valid R frame may be a write, so they are not sent.</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: Bytes, die kein gültiges R-Telegramm sind, könnten ein Schreibbefehl sein und werden daher nicht gesendet.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n Rohbyte</numerusform>
+            <numerusform>%n Rohbytes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="75"/>
+        <source>%1: not sent, not connected</source>
+        <translation>%1: nicht gesendet, nicht verbunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="79"/>
+        <source>%1: not sent, monitor-only mode is on</source>
+        <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="91"/>
+        <source>%1: sent, waiting for the answer…</source>
+        <translation>%1: gesendet, warte auf Antwort…</translation>
     </message>
 </context>
 </TS>

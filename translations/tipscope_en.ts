@@ -4,7 +4,7 @@
 <context>
     <name>FrameComposer</name>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="215"/>
+        <location filename="../lib/model/framecomposer.cpp" line="214"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, a valid frame: %1</numerusform>
@@ -12,7 +12,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="217"/>
+        <location filename="../lib/model/framecomposer.cpp" line="216"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
@@ -95,17 +95,6 @@
     </message>
 </context>
 <context>
-    <name>tipscope::gui::ConsolePage</name>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
-        <source>%n raw byte(s)</source>
-        <translation>
-            <numerusform>%n raw byte</numerusform>
-            <numerusform>%n raw bytes</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>tipscope::gui::ErrorsPage</name>
     <message numerus="yes">
         <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
@@ -143,6 +132,17 @@
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
             <numerusform>%1 after %n attempts</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::ConsoleSender</name>
+    <message numerus="yes">
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n raw byte</numerusform>
+            <numerusform>%n raw bytes</numerusform>
         </translation>
     </message>
 </context>

@@ -1592,102 +1592,102 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="65"/>
+        <location filename="../lib/model/consolemodel.cpp" line="102"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>enviado tal cual (no es una trama válida)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="81"/>
+        <location filename="../lib/model/consolemodel.cpp" line="118"/>
         <source>stray: answers no pending request</source>
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="205"/>
+        <location filename="../lib/model/consolemodel.cpp" line="242"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="207"/>
+        <location filename="../lib/model/consolemodel.cpp" line="244"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="209"/>
+        <location filename="../lib/model/consolemodel.cpp" line="246"/>
         <source>frame</source>
         <translation>trama</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="211"/>
+        <location filename="../lib/model/consolemodel.cpp" line="248"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="213"/>
+        <location filename="../lib/model/consolemodel.cpp" line="250"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="293"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="293"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="309"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="309"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="310"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="310"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="311"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="311"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="312"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="312"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="313"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="313"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="277"/>
+        <location filename="../lib/model/consolemodel.cpp" line="314"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -1875,32 +1875,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>Comprobación del catálogo: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="117"/>
+        <location filename="../lib/model/framecomposer.cpp" line="116"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="159"/>
+        <location filename="../lib/model/framecomposer.cpp" line="158"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="177"/>
+        <location filename="../lib/model/framecomposer.cpp" line="176"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="181"/>
+        <location filename="../lib/model/framecomposer.cpp" line="180"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="186"/>
+        <location filename="../lib/model/framecomposer.cpp" line="185"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="215"/>
+        <location filename="../lib/model/framecomposer.cpp" line="214"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, una trama válida: %1</numerusform>
@@ -1908,7 +1908,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="217"/>
+        <location filename="../lib/model/framecomposer.cpp" line="216"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
@@ -3236,240 +3236,197 @@ Hágalo permanente con esta regla de udev:
     <name>tipscope::gui::ConsolePage</name>
     <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
-        <source>%1: answered %2 after %L3 ms</source>
-        <translation>%1: respondió %2 tras %L3 ms</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
-        <source>%1: refused, %2</source>
-        <translation>%1: rechazado, %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="85"/>
-        <source>%1: no answer (timeout)</source>
-        <translation>%1: sin respuesta (tiempo agotado)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
-        <source>%1: %2 (%3)</source>
-        <translation>%1: %2 (%3)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="99"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="116"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="313"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="121"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="125"/>
         <source>Relative time</source>
         <translation>Tiempo relativo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="128"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
         <source>Show:</source>
         <translation>Mostrar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>Show bytes sent</source>
         <translation>Mostrar los bytes enviados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="147"/>
         <source>RX chunks</source>
         <translation>Bloques RX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Frames</source>
         <translation>Tramas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Show received frames, decoded</source>
         <translation>Mostrar las tramas recibidas, decodificadas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="153"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="153"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="154"/>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="154"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="157"/>
         <source>De&amp;vice:</source>
         <translation>Equi&amp;po:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
         <source>Device address filter</source>
         <translation>Filtro de dirección de equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>Co&amp;mmand:</source>
         <translation>Co&amp;mando:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Command filter</source>
         <translation>Filtro de comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>e.g. ST1</source>
         <translation>p. ej. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="185"/>
         <source>Remove every row, held ones included</source>
         <translation>Quitar todas las filas, incluidas las retenidas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="186"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="221"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="248"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="228"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="256"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="236"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="270"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="250"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="306"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="264"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="292"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="313"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="330"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="336"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="331"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
         <source>paused: new traffic is held</source>
         <translation>en pausa: el tráfico nuevo se retiene</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
-        <source>%n raw byte(s)</source>
-        <translation>
-            <numerusform>%n byte en bruto</numerusform>
-            <numerusform>%n bytes en bruto</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
-        <source>%1: not sent, not connected</source>
-        <translation>%1: no enviado, sin conexión</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
-        <source>%1: not sent, monitor-only mode is on</source>
-        <translation>%1: no enviado, el modo solo supervisión está activado</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
-        <source>%1: sent, waiting for the answer…</source>
-        <translation>%1: enviado, esperando la respuesta…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.h" line="66"/>
+        <location filename="../app/gui/pages/consolepage.h" line="62"/>
         <source>Console</source>
         <translation>Consola</translation>
     </message>
@@ -4292,152 +4249,142 @@ Reset it?</source>
         <translation>Enviar una trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="57"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="60"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="64"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="65"/>
         <source>R (read)</source>
         <translation>R (lectura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="62"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
         <source>W (write)</source>
         <translation>W (escritura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="64"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>Command</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="74"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
         <source>Data field</source>
         <translation>Campo de datos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
         <source>&amp;Send frame</source>
         <translation>&amp;Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="79"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
         <source>Send frame</source>
         <translation>Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="81"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
         <source>Frame to be sent</source>
         <translation>Trama que se enviará</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="89"/>
         <source>Catalog check</source>
         <translation>Comprobación del catálogo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="92"/>
         <source>Raw bytes in hex</source>
         <translation>Bytes en bruto en hexadecimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="92"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="96"/>
         <source>Send ra&amp;w hex</source>
         <translation>Enviar he&amp;x en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="93"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
         <source>Send raw hex</source>
         <translation>Enviar hex en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="95"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
         <source>Raw bytes check</source>
         <translation>Comprobación de los bytes en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="96"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="100"/>
         <source>Nothing sent yet.</source>
         <translation>Aún no se ha enviado nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Outcome of the last send</source>
         <translation>Resultado del último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="110"/>
         <source>&amp;Device</source>
         <translation>E&amp;quipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="108"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
         <source>&amp;Header</source>
         <translation>Ca&amp;becera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="110"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
         <source>C&amp;ommand</source>
         <translation>C&amp;omando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
         <source>D&amp;ata</source>
         <translation>Da&amp;tos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="115"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>Frame</source>
         <translation>Trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="118"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="122"/>
         <source>&amp;Raw hex</source>
         <translation>Hex en b&amp;ruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="122"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="126"/>
         <source>Last send</source>
         <translation>Último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="155"/>
-        <source>Monitor-only mode is on: raw bytes are not sent, since they may be a write. Reads can still be sent with Send frame.</source>
-        <translation>El modo solo supervisión está activado: los bytes en bruto no se envían, ya que podrían ser una escritura. Las lecturas aún se pueden enviar con Enviar trama.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="157"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="235"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Enviar estos bytes exactamente como se han escrito; la respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
         <source>(nothing to send)</source>
         <translation>(nada que enviar)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>none for reads</source>
         <translation>ninguno en lecturas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>e.g. 00350</source>
         <translation>p. ej. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="219"/>
-        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
-        <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="231"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Enviar esta trama una vez, tal como se muestra (sin reintentos; los avisos del catálogo no la detienen). Su respuesta aparece en la tabla.</translation>
     </message>
@@ -5304,6 +5251,62 @@ Do you want to continue?</source>
         <location filename="../lib/link/tcptransport.cpp" line="29"/>
         <source>cannot connect to %1: %2</source>
         <translation>no se puede conectar con %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::ConsoleSender</name>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="15"/>
+        <source>%1: answered %2 after %L3 ms</source>
+        <translation>%1: respondió %2 tras %L3 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="19"/>
+        <source>%1: refused, %2</source>
+        <translation>%1: rechazado, %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="21"/>
+        <source>%1: no answer (timeout)</source>
+        <translation>%1: sin respuesta (tiempo agotado)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="23"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="52"/>
+        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
+        <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="58"/>
+        <source>Monitor-only mode is on: bytes that are not one valid R frame may be a write, so they are not sent.</source>
+        <translation>El modo solo supervisión está activado: los bytes que no forman una trama R válida podrían ser una escritura, así que no se envían.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n byte en bruto</numerusform>
+            <numerusform>%n bytes en bruto</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="75"/>
+        <source>%1: not sent, not connected</source>
+        <translation>%1: no enviado, sin conexión</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="79"/>
+        <source>%1: not sent, monitor-only mode is on</source>
+        <translation>%1: no enviado, el modo solo supervisión está activado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="91"/>
+        <source>%1: sent, waiting for the answer…</source>
+        <translation>%1: enviado, esperando la respuesta…</translation>
     </message>
 </context>
 </TS>

@@ -1,5 +1,7 @@
 #include "consolemodel.h"
 
+#include "session.h"
+
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"
 #include "protocol/hexbytes.h"
@@ -49,6 +51,41 @@ void ConsoleModel::attach(link::FrameTap *tap) {
     if (tap)
         m_connection = connect(tap, &link::FrameTap::event, this,
                                [this](const link::TapEvent &e) { add(fromTap(e)); });
+}
+
+void ConsoleModel::follow(Session *session) {
+    for (const QMetaObject::Connection &c : std::as_const(m_sessionConnections))
+        disconnect(c);
+    m_sessionConnections.clear();
+    m_session = session;
+    if (session)
+        m_sessionConnections = {
+            connect(session, &Session::stateChanged, this, &ConsoleModel::followLine),
+            connect(session, &Session::devicesChanged, this, &ConsoleModel::followDevices),
+            connect(session, &Session::monitorOnlyChanged, &m_sender,
+                    &ConsoleSender::setMonitorOnly)};
+    m_sender.setMonitorOnly(session && session->monitorOnly());
+    followLine();
+    followDevices();
+}
+
+void ConsoleModel::followLine() {
+    link::Line *line = m_session ? m_session->line() : nullptr;
+    link::RequestQueue *queue = line ? &line->queue() : nullptr;
+    // The tap is gone with its line, so a new line (a new connectTo()) is never taken for the
+    // old one, even when it reuses the old one's address.
+    if (queue && &queue->tap() == m_tap)
+        return;
+    attach(queue ? &queue->tap() : nullptr);
+    m_sender.attach(queue);
+}
+
+void ConsoleModel::followDevices() {
+    QMap<int, QString> families;
+    if (m_session)
+        for (const DeviceModel *d : m_session->devices())
+            families.insert(d->address().value_or(-1), d->family());
+    setDeviceFamilies(families);
 }
 
 ConsoleEntry ConsoleModel::fromTap(const link::TapEvent &e) {

@@ -6,9 +6,12 @@
 // paused, new entries wait in a buffer and appear on resume, so pausing loses nothing. Entries
 // reach the table in batches, at most every kBatchMs (or at flush()): a busy line taps a few
 // hundred events a second, and a row inserted at a time kept the filter proxy and the view busy
-// even with the console hidden. Filters
-// (direction, device address, command text) act on the view through filterAccepts().
+// even with the console hidden. Filters (direction, device address, command text) act on the
+// view through filterAccepts(). Sending goes through sender(), which owns the monitor-only gate;
+// follow() keeps the table, the sender and the commands' names with a Session's current line.
 #pragma once
+
+#include "consolesender.h"
 
 #include "link/frametap.h"
 
@@ -19,6 +22,8 @@
 #include <deque>
 
 namespace tipscope::model {
+
+class Session;
 
 struct ConsoleEntry {
     enum class Direction { Tx, Rx, Decoded, Error, Note };
@@ -58,6 +63,11 @@ public:
     explicit ConsoleModel(QObject *parent = nullptr, int capacity = 20000);
 
     void attach(link::FrameTap *tap);
+    // Shows the tap of the session's line and sends on it, from now on and after every
+    // reconnection, names commands by its devices' families and takes its monitor-only setting.
+    // Null: none of it (the rows stay).
+    void follow(Session *session);
+    [[nodiscard]] ConsoleSender &sender() { return m_sender; }
     void setPaused(bool paused);
     [[nodiscard]] bool isPaused() const { return m_paused; }
     void setRelativeTime(bool relative);
@@ -93,6 +103,8 @@ public:
 
 private:
     void add(const ConsoleEntry &e);
+    void followLine();
+    void followDevices();
     [[nodiscard]] QString timeText(const ConsoleEntry &e) const;
     [[nodiscard]] QString familyOf(const ConsoleEntry &e) const;
 
@@ -107,6 +119,9 @@ private:
     QMap<int, QString> m_families;
     QPointer<link::FrameTap> m_tap;
     QMetaObject::Connection m_connection;
+    QPointer<Session> m_session;
+    QList<QMetaObject::Connection> m_sessionConnections;
+    ConsoleSender m_sender;
 };
 
 } // namespace tipscope::model

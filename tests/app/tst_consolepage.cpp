@@ -41,7 +41,7 @@ private Q_SLOTS:
     void pauseHoldsRowsAndResumeShowsThem();
     void aHiddenConsoleTakesRowsInLargerBatchesAndCatchesUpWhenShown();
     void addressFilterHidesOtherDevicesRows();
-    void monitorOnlyBlocksWritesAndRawBytesButNotReads();
+    void monitorOnlyRefusesWritesAndSaysWhyButReadsGoOut();
     void saveWritesEveryRowToTheFile();
     void saveToAnUnwritablePathReportsTheError();
     void pageFollowsTheNewLineAfterReconnecting();
@@ -224,12 +224,14 @@ void TestConsolePage::addressFilterHidesOtherDevicesRows() {
     QCOMPARE(shown->rowCount(), m_page->consoleModel().rowCount());
 }
 
-void TestConsolePage::monitorOnlyBlocksWritesAndRawBytesButNotReads() {
+void TestConsolePage::monitorOnlyRefusesWritesAndSaysWhyButReadsGoOut() {
     quietLine();
     selectDevice(QStringLiteral("01"));
     auto *header = child<QComboBox>("headerCombo");
     auto *send = child<QPushButton>("sendFrameButton");
     auto *sendRaw = child<QPushButton>("sendRawButton");
+    auto *hint = child<QLabel>("hintLabel");
+    auto *rawStatus = child<QLabel>("rawStatusLabel");
     header->setCurrentIndex(1); // W
     child<QComboBox>("commandCombo")->setEditText(QStringLiteral("MAT"));
     child<QLineEdit>("dataEdit")->setText(QStringLiteral("00450"));
@@ -241,18 +243,31 @@ void TestConsolePage::monitorOnlyBlocksWritesAndRawBytesButNotReads() {
     QVERIFY(send->toolTip().contains(QLatin1String("Monitor-only")));
     QVERIFY(!sendRaw->isEnabled());
     QVERIFY(sendRaw->toolTip().contains(QLatin1String("Monitor-only")));
+    // Where the person looks, not only in a tooltip.
+    QVERIFY2(hint->text().startsWith(QLatin1String("Monitor-only")), qPrintable(hint->text()));
+    QVERIFY2(rawStatus->text().startsWith(QLatin1String("Monitor-only")),
+             qPrintable(rawStatus->text()));
 
-    // Return in the fields must not get around the disabled buttons.
+    // Return in the fields does not get around the disabled buttons, and says so.
     const qint64 sentBefore = queue().stats().sent;
     QTest::keyClick(child<QLineEdit>("dataEdit"), Qt::Key_Return);
+    QVERIFY2(
+        child<QLabel>("outcomeLabel")->text().endsWith(QLatin1String("monitor-only mode is on")),
+        qPrintable(child<QLabel>("outcomeLabel")->text()));
     auto *raw = child<QLineEdit>("rawHexEdit");
     raw->setText(
         protocol::toHexText(protocol::Frame::write("MAT", "00450").addressed(0, 1).encode()));
+    QVERIFY(!sendRaw->isEnabled());
     QTest::keyClick(raw, Qt::Key_Return);
     QTest::qWait(300);
     QCOMPARE(queue().stats().sent, sentBefore);
 
-    header->setCurrentIndex(0); // R stays allowed
+    // Reads go out, composed or typed.
+    raw->setText(protocol::toHexText(protocol::Frame::read("SMN").addressed(0, 1).encode()));
+    QVERIFY(sendRaw->isEnabled());
+    QTest::mouseClick(sendRaw, Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(queue().stats().sent, sentBefore + 1, kTrafficMs);
+    header->setCurrentIndex(0); // R
     child<QComboBox>("commandCombo")->setEditText(QStringLiteral("SMN"));
     child<QLineEdit>("dataEdit")->clear();
     QVERIFY(send->isEnabled());

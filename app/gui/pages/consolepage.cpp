@@ -2,9 +2,7 @@
 
 #include "framebuilder.h"
 
-#include "link/line.h"
 #include "protocol/catalogtext.h"
-#include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 
 #include <QAction>
@@ -72,24 +70,6 @@ QVariant ConsoleFilterProxy::data(const QModelIndex &index, int role) const {
     return QSortFilterProxyModel::data(index, role);
 }
 
-namespace {
-QString describeReply(const link::Reply &reply, const QString &what) {
-    switch (reply.error()) {
-    case link::ReplyError::None:
-        return ConsolePage::tr("%1: answered %2 after %L3 ms")
-            .arg(what, reply.answer().toString())
-            .arg(double(reply.latencyUs()) / 1000.0, 0, 'f', 1);
-    case link::ReplyError::Nak:
-        return ConsolePage::tr("%1: refused, %2").arg(what, reply.errorString());
-    case link::ReplyError::Timeout:
-        return ConsolePage::tr("%1: no answer (timeout)").arg(what);
-    default:
-        return ConsolePage::tr("%1: %2 (%3)")
-            .arg(what, link::replyErrorName(reply.error()), reply.errorString());
-    }
-}
-} // namespace
-
 ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     : Page(session, parent)
     , m_model(new ConsoleModel(this))
@@ -99,7 +79,7 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     bar->setAccessibleName(tr("Console tools"));
     buildToolBar(bar);
     buildTable();
-    m_builder = new FrameBuilder(this);
+    m_builder = new FrameBuilder(m_model->sender(), this);
     m_builder->setObjectName(QStringLiteral("frameBuilder"));
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(bar);
@@ -120,16 +100,16 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     connect(m_proxy, &QAbstractItemModel::modelReset, this, countLater);
     connect(m_proxy, &QAbstractItemModel::layoutChanged, this, countLater);
 
-    connect(m_builder, &FrameBuilder::sendRequested, this, &ConsolePage::send);
-    connect(&m_session, &model::Session::stateChanged, this, &ConsolePage::followLine);
+    m_model->follow(&m_session);
     connect(&m_session, &model::Session::devicesChanged, this, &ConsolePage::updateDevices);
-    connect(&m_session, &model::Session::monitorOnlyChanged, m_builder,
-            &FrameBuilder::setMonitorOnly);
-    m_builder->setMonitorOnly(m_session.monitorOnly());
-    followLine();
     updateDevices();
     applyFilter();
     updateCount();
+}
+
+ConsolePage::~ConsolePage() {
+    // The builder sends through the model's sender, and children go in the order they came.
+    delete m_builder;
 }
 
 void ConsolePage::buildToolBar(QToolBar *bar) {
@@ -275,19 +255,8 @@ void ConsolePage::buildTable() {
     m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
 }
 
-void ConsolePage::followLine() {
-    link::Line *line = m_session.line();
-    if (line == m_line)
-        return;
-    m_line = line;
-    m_model->attach(line ? &line->queue().tap() : nullptr);
-    if (line)
-        m_builder->setRobotAddress(line->queue().settings().robotAddress);
-}
-
 void ConsolePage::updateDevices() {
     QList<model::FrameTarget> targets;
-    QMap<int, QString> families;
     const QString current = m_address->currentText();
     {
         const QSignalBlocker block(m_address);
@@ -295,7 +264,6 @@ void ConsolePage::updateDevices() {
         m_address->addItem(tr("All"));
         for (const model::DeviceModel *d : m_session.devices()) {
             targets.append(model::FrameTarget::of(*d));
-            families.insert(d->address().value_or(-1), d->family());
             if (d->address())
                 m_address->addItem(targets.last().label, *d->address());
         }
@@ -306,7 +274,6 @@ void ConsolePage::updateDevices() {
             m_address->setEditText(current.isEmpty() ? tr("All") : current);
     }
     m_builder->setTargets(targets);
-    m_model->setDeviceFamilies(families);
 }
 
 void ConsolePage::applyFilter() {
@@ -388,35 +355,6 @@ void ConsolePage::updateCount() {
     if (m_model->isPaused())
         text += QStringLiteral(" · ") + tr("paused: new traffic is held");
     m_count->setText(text);
-}
-
-void ConsolePage::send(const QByteArray &bytes, bool write) {
-    const auto frame = protocol::parseFrame(bytes);
-    const QString what = frame ? frame->toString() : tr("%n raw byte(s)", "", int(bytes.size()));
-    link::Line *line = m_session.line();
-    if (!line) {
-        m_builder->showOutcome(tr("%1: not sent, not connected").arg(what), true);
-        return;
-    }
-    if (write && m_session.monitorOnly()) {
-        m_builder->showOutcome(tr("%1: not sent, monitor-only mode is on").arg(what), true);
-        return;
-    }
-    link::Request request;
-    request.raw = bytes;
-    // Once, as typed: retries would put frames on the wire that the person did not ask for.
-    request.retries = 0;
-    request.repeatable = false;
-    if (write) {
-        request.header = protocol::Header::Write;
-        request.priority = link::Priority::UserWrite;
-    }
-    link::Reply *reply = line->queue().enqueue(request, this);
-    m_builder->showOutcome(tr("%1: sent, waiting for the answer…").arg(what), false);
-    connect(reply, &link::Reply::finished, this, [this, reply, what] {
-        reply->deleteLater();
-        m_builder->showOutcome(describeReply(*reply, what), !reply->ok());
-    });
 }
 
 } // namespace tipscope::gui

@@ -30,8 +30,9 @@ void setTone(QLabel *label, Tone tone) {
 }
 } // namespace
 
-FrameBuilder::FrameBuilder(QWidget *parent)
-    : QGroupBox(tr("Send a frame"), parent) {
+FrameBuilder::FrameBuilder(model::ConsoleSender &sender, QWidget *parent)
+    : QGroupBox(tr("Send a frame"), parent)
+    , m_sender(sender) {
     buildLayout();
     connect(m_device, &QComboBox::currentIndexChanged, this, &FrameBuilder::fillCommands);
     connect(m_header, &QComboBox::currentIndexChanged, this, &FrameBuilder::fillCommands);
@@ -43,8 +44,11 @@ FrameBuilder::FrameBuilder(QWidget *parent)
     connect(m_rawHex, &QLineEdit::textChanged, this, &FrameBuilder::updateRawHex);
     connect(m_rawHex, &QLineEdit::returnPressed, this, &FrameBuilder::sendRaw);
     connect(m_sendRaw, &QPushButton::clicked, this, &FrameBuilder::sendRaw);
-    setMonitorOnly(false);
+    connect(&m_sender, &model::ConsoleSender::gateChanged, this, &FrameBuilder::onGateChanged);
+    connect(&m_sender, &model::ConsoleSender::outcome, this, &FrameBuilder::showOutcome);
+    m_composer.setRobotAddress(m_sender.robotAddress());
     fillCommands();
+    updateRawHex();
 }
 
 void FrameBuilder::buildLayout() {
@@ -143,19 +147,10 @@ void FrameBuilder::setTargets(const QList<model::FrameTarget> &targets) {
     fillCommands();
 }
 
-void FrameBuilder::setRobotAddress(int address) {
-    m_composer.setRobotAddress(address);
+void FrameBuilder::onGateChanged() {
+    m_composer.setRobotAddress(m_sender.robotAddress());
     updateDraft();
-}
-
-void FrameBuilder::setMonitorOnly(bool on) {
-    m_monitorOnly = on;
-    m_sendRaw->setEnabled(!on);
-    m_sendRaw->setToolTip(
-        on ? tr("Monitor-only mode is on: raw bytes are not sent, since they "
-                "may be a write. Reads can still be sent with Send frame.")
-           : tr("Send these bytes exactly as typed; the answer appears in the table."));
-    updateDraft();
+    updateRawHex();
 }
 
 void FrameBuilder::showOutcome(const QString &text, bool failed) {
@@ -213,53 +208,57 @@ void FrameBuilder::updateDraft() {
     m_hint->setText(d.encodable ? d.hint : d.problem);
     setTone(m_hint, !d.encodable ? Tone::Error : d.warning ? Tone::Warning : Tone::Normal);
     m_data->setPlaceholderText(header() == Header::Read ? tr("none for reads") : tr("e.g. 00350"));
-    const bool blocked = m_monitorOnly && header() == Header::Write;
-    m_sendFrame->setEnabled(d.encodable && !blocked);
-    const QString blockedText =
-        tr("Monitor-only mode is on: W frames are not sent. Reads still are.");
-    if (blocked && d.encodable) {
+    const QString refusal = d.encodable ? m_sender.refusal(d.frame) : QString();
+    m_sendFrame->setEnabled(d.encodable && refusal.isEmpty());
+    if (!refusal.isEmpty()) {
         // Said in the panel too: a greyed-out button alone does not tell anyone why.
-        m_hint->setText(blockedText + QLatin1Char(' ') + d.hint);
+        m_hint->setText(refusal + QLatin1Char(' ') + d.hint);
         setTone(m_hint, Tone::Warning);
-    }
-    if (blocked)
-        m_sendFrame->setToolTip(blockedText);
-    else if (!d.encodable)
+        m_sendFrame->setToolTip(refusal);
+    } else if (!d.encodable) {
         m_sendFrame->setToolTip(d.problem);
-    else
+    } else {
         m_sendFrame->setToolTip(
             tr("Send this frame once, as shown (no retries; catalog warnings do not stop it). "
                "Its answer appears in the table."));
+    }
 }
 
 void FrameBuilder::updateRawHex() {
-    if (m_rawHex->text().trimmed().isEmpty()) {
-        m_rawStatus->clear();
-        return;
-    }
+    const bool empty = m_rawHex->text().trimmed().isEmpty();
     const model::RawHex raw = model::FrameComposer::readHex(m_rawHex->text());
-    m_rawStatus->setText(raw.text);
-    setTone(m_rawStatus, !raw.bytes ? Tone::Error : raw.warning ? Tone::Warning : Tone::Normal);
+    const QString refusal = m_sender.refusal(raw.bytes.value_or(QByteArray()));
+    m_sendRaw->setEnabled(refusal.isEmpty());
+    m_sendRaw->setToolTip(
+        !refusal.isEmpty()
+            ? refusal
+            : tr("Send these bytes exactly as typed; the answer appears in the table."));
+    if (!empty && !raw.bytes) {
+        m_rawStatus->setText(raw.text);
+        setTone(m_rawStatus, Tone::Error);
+    } else if (!refusal.isEmpty()) {
+        m_rawStatus->setText(refusal);
+        setTone(m_rawStatus, Tone::Warning);
+    } else {
+        m_rawStatus->setText(empty ? QString() : raw.text);
+        setTone(m_rawStatus, raw.warning ? Tone::Warning : Tone::Normal);
+    }
 }
 
 void FrameBuilder::sendFrame() {
     const model::FrameDraft d = draft();
-    if (!d.encodable || (m_monitorOnly && d.frame.header == Header::Write))
-        return;
-    Q_EMIT sendRequested(d.frame.encode(), d.frame.header == Header::Write);
+    if (d.encodable)
+        m_sender.send(d.frame); // refusals are reported like any outcome
 }
 
 void FrameBuilder::sendRaw() {
-    if (m_monitorOnly)
-        return;
     const model::RawHex raw = model::FrameComposer::readHex(m_rawHex->text());
     if (!raw.bytes) {
         m_rawStatus->setText(tr("Not sent: %1").arg(raw.text));
         setTone(m_rawStatus, Tone::Error);
         return;
     }
-    // Bytes that are not a valid frame could be anything, a write included.
-    Q_EMIT sendRequested(*raw.bytes, !raw.frame || raw.frame->header != Header::Read);
+    m_sender.send(*raw.bytes);
 }
 
 } // namespace tipscope::gui

@@ -5,14 +5,14 @@
 // would go on the wire, BCC included, and what the catalog thinks of them. Because this is a raw
 // console, catalog advice (value out of range, unknown command) never blocks sending; only what
 // cannot be encoded at all is refused (a command that is not 3 characters, non-printable data).
-// A second field takes any bytes as hex. In monitor-only mode writes and raw bytes (which may be
-// writes) cannot be sent, and the disabled buttons say why in their tooltips.
-//
-// The panel does not talk to the line: it emits sendRequested() with the bytes, and its owner
-// queues them and reports back through showOutcome(). The rules (which commands, addressing,
-// the catalog's checks, reading hex) are model::FrameComposer's; the panel shows its choices.
+// A second field takes any bytes as hex. Both go through the console's ConsoleSender, which owns
+// the monitor-only gate: what it would refuse (W frames, bytes that are not one valid R frame)
+// disables the button, and the panel says why next to it; the outcome of the last send is shown
+// under the fields. The rules (which commands, addressing, the catalog's checks, reading hex)
+// are model::FrameComposer's; the panel shows its choices.
 #pragma once
 
+#include "model/consolesender.h"
 #include "model/framecomposer.h"
 
 #include <QGroupBox>
@@ -28,21 +28,16 @@ namespace tipscope::gui {
 class FrameBuilder : public QGroupBox {
     Q_OBJECT
 public:
-    explicit FrameBuilder(QWidget *parent = nullptr);
+    // Sends through `sender`, which must outlive the panel.
+    explicit FrameBuilder(model::ConsoleSender &sender, QWidget *parent = nullptr);
 
     void setTargets(const QList<model::FrameTarget> &targets);
-    void setRobotAddress(int address);
-    void setMonitorOnly(bool on);
-    // The result of the last send, as one line; `failed` shows it as an error.
-    void showOutcome(const QString &text, bool failed);
     [[nodiscard]] model::FrameDraft draft() const;
-
-Q_SIGNALS:
-    // `write`: the bytes are (or may be) a write, so they belong to the writes' queue class.
-    void sendRequested(const QByteArray &bytes, bool write);
 
 private:
     void buildLayout();
+    void onGateChanged();
+    void showOutcome(const QString &text, bool failed);
     void fillCommands();
     void onCommandPicked();
     void updateDraft();
@@ -62,8 +57,8 @@ private:
     QPushButton *m_sendRaw = nullptr;
     QLabel *m_rawStatus = nullptr;
     QLabel *m_outcome = nullptr;
+    model::ConsoleSender &m_sender;
     model::FrameComposer m_composer;
-    bool m_monitorOnly = false;
 };
 
 } // namespace tipscope::gui
