@@ -5,6 +5,7 @@
 #include "pages/framebuilder.h"
 
 #include "link/line.h"
+#include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 
 #include <QAction>
@@ -14,6 +15,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -38,6 +40,8 @@ private Q_SLOTS:
 
     void builtReadOfModelNameShowsTheAnswerInTheTable();
     void rawHexWithABadDigitShowsTheErrorAndSendsNothing();
+    void everyExampleFrameThePageShowsDecodes();
+    void theRawHexExampleIsAReadTheDeviceAnswers();
     void pauseHoldsRowsAndResumeShowsThem();
     void aHiddenConsoleTakesRowsInLargerBatchesAndCatchesUpWhenShown();
     void addressFilterHidesOtherDevicesRows();
@@ -153,6 +157,43 @@ void TestConsolePage::rawHexWithABadDigitShowsTheErrorAndSendsNothing() {
     raw->setText(protocol::toHexText(protocol::Frame::read("SMN").addressed(0, 1).encode()));
     QTest::mouseClick(child<QPushButton>("sendRawButton"), Qt::LeftButton);
     QTRY_COMPARE_WITH_TIMEOUT(queue().stats().sent, sentBefore + 1, kTrafficMs);
+}
+
+void TestConsolePage::everyExampleFrameThePageShowsDecodes() {
+    // Hex that starts with STX, wherever the page shows it: placeholders, labels, tooltips.
+    static const QRegularExpression frameHex(QStringLiteral("\\b02( [0-9A-Fa-f]{2}){4,}\\b"));
+    QStringList shown;
+    for (const QWidget *w : m_page->findChildren<QWidget *>()) {
+        shown << w->toolTip();
+        if (const auto *edit = qobject_cast<const QLineEdit *>(w))
+            shown << edit->placeholderText() << edit->text();
+        if (const auto *label = qobject_cast<const QLabel *>(w))
+            shown << label->text();
+    }
+    int examples = 0;
+    for (const QString &text : std::as_const(shown)) {
+        for (const QRegularExpressionMatch &m : frameHex.globalMatch(text)) {
+            ++examples;
+            const auto bytes = protocol::parseHexBytes(m.captured());
+            QVERIFY2(bytes, qPrintable(m.captured()));
+            QString why;
+            QVERIFY2(protocol::parseFrame(*bytes, nullptr, &why),
+                     qPrintable(m.captured() + QStringLiteral(": ") + why));
+        }
+    }
+    QVERIFY2(examples >= 2, qPrintable(QString::number(examples))); // raw hex and the preview
+}
+
+void TestConsolePage::theRawHexExampleIsAReadTheDeviceAnswers() {
+    quietLine();
+    auto *raw = child<QLineEdit>("rawHexEdit");
+    raw->setText(raw->placeholderText());
+    QTest::mouseClick(child<QPushButton>("sendRawButton"), Qt::LeftButton);
+    auto *outcome = child<QLabel>("outcomeLabel");
+    QTRY_VERIFY_WITH_TIMEOUT(!outcome->text().contains(QLatin1String("waiting")), kTrafficMs);
+    QVERIFY2(outcome->text().contains(QLatin1String("answered")) &&
+                 outcome->text().contains(QLatin1String("DME-2C")),
+             qPrintable(outcome->text()));
 }
 
 void TestConsolePage::pauseHoldsRowsAndResumeShowsThem() {

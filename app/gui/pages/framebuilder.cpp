@@ -91,7 +91,7 @@ void FrameBuilder::buildLayout() {
     m_rawHex = new QLineEdit(this);
     named(m_rawHex, "rawHexEdit", tr("Raw bytes in hex"));
     m_rawHex->setFont(mono);
-    m_rawHex->setPlaceholderText(QStringLiteral("02 30 30 30 31 52 53 4D 4E 03 5E"));
+    m_rawHex->setPlaceholderText(model::FrameComposer::exampleHex());
     m_rawHex->setClearButtonEnabled(true);
     m_sendRaw = new QPushButton(tr("Send ra&w hex"), this);
     named(m_sendRaw, "sendRawButton", tr("Send raw hex"));
