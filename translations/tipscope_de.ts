@@ -1607,13 +1607,13 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/consolemodel.cpp" line="244"/>
-        <source>RX</source>
-        <translation>RX</translation>
+        <source>RX chunk</source>
+        <translation>RX-Block</translation>
     </message>
     <message>
         <location filename="../lib/model/consolemodel.cpp" line="246"/>
-        <source>frame</source>
-        <translation>Telegramm</translation>
+        <source>RX</source>
+        <translation>RX</translation>
     </message>
     <message>
         <location filename="../lib/model/consolemodel.cpp" line="248"/>
@@ -1626,67 +1626,82 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="293"/>
+        <location filename="../lib/model/consolemodel.cpp" line="258"/>
+        <source>Read</source>
+        <translation>Lesen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="260"/>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="262"/>
+        <source>Answer</source>
+        <translation>Antwort</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="307"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="293"/>
+        <location filename="../lib/model/consolemodel.cpp" line="307"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="309"/>
+        <location filename="../lib/model/consolemodel.cpp" line="323"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="309"/>
+        <location filename="../lib/model/consolemodel.cpp" line="323"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="310"/>
+        <location filename="../lib/model/consolemodel.cpp" line="324"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="310"/>
+        <location filename="../lib/model/consolemodel.cpp" line="324"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="311"/>
+        <location filename="../lib/model/consolemodel.cpp" line="325"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="311"/>
+        <location filename="../lib/model/consolemodel.cpp" line="325"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="312"/>
+        <location filename="../lib/model/consolemodel.cpp" line="326"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="312"/>
+        <location filename="../lib/model/consolemodel.cpp" line="326"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="313"/>
+        <location filename="../lib/model/consolemodel.cpp" line="327"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="313"/>
+        <location filename="../lib/model/consolemodel.cpp" line="327"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="314"/>
+        <location filename="../lib/model/consolemodel.cpp" line="328"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -3234,193 +3249,188 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="116"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="313"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="124"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="121"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="129"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="125"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="133"/>
         <source>Relative time</source>
         <translation>Relative Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="128"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="152"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="152"/>
         <source>Show bytes sent</source>
         <translation>Gesendete Bytes anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="147"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="155"/>
         <source>RX chunks</source>
         <translation>RX-Blöcke</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="156"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
         <source>Frames</source>
         <translation>Telegramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
         <source>Show received frames, decoded</source>
         <translation>Empfangene Telegramme dekodiert anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="153"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="153"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="154"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
         <source>Notes</source>
         <translation>Hinweise</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="154"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="157"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
         <source>De&amp;vice:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
         <source>Device address filter</source>
         <translation>Filter für Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="178"/>
         <source>Co&amp;mmand:</source>
         <translation>Be&amp;fehl:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
         <source>Command filter</source>
         <translation>Befehlsfilter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="182"/>
         <source>e.g. ST1</source>
         <translation>z. B. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="191"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="185"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Remove every row, held ones included</source>
         <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="186"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
         <source>Save…</source>
         <translation>Speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="209"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="228"/>
-        <source>error</source>
-        <translation>Fehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="236"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="255"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="250"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="269"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="264"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="292"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="283"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="293"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="311"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="313"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="330"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="336"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="331"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
         <source>paused: new traffic is held</source>
         <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
     </message>

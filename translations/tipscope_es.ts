@@ -1608,13 +1608,13 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/consolemodel.cpp" line="244"/>
-        <source>RX</source>
-        <translation>RX</translation>
+        <source>RX chunk</source>
+        <translation>Bloque RX</translation>
     </message>
     <message>
         <location filename="../lib/model/consolemodel.cpp" line="246"/>
-        <source>frame</source>
-        <translation>trama</translation>
+        <source>RX</source>
+        <translation>RX</translation>
     </message>
     <message>
         <location filename="../lib/model/consolemodel.cpp" line="248"/>
@@ -1627,67 +1627,82 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="293"/>
+        <location filename="../lib/model/consolemodel.cpp" line="258"/>
+        <source>Read</source>
+        <translation>Lectura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="260"/>
+        <source>Write</source>
+        <translation>Escritura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="262"/>
+        <source>Answer</source>
+        <translation>Respuesta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="307"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="293"/>
+        <location filename="../lib/model/consolemodel.cpp" line="307"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="309"/>
+        <location filename="../lib/model/consolemodel.cpp" line="323"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="309"/>
+        <location filename="../lib/model/consolemodel.cpp" line="323"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="310"/>
+        <location filename="../lib/model/consolemodel.cpp" line="324"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="310"/>
+        <location filename="../lib/model/consolemodel.cpp" line="324"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="311"/>
+        <location filename="../lib/model/consolemodel.cpp" line="325"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="311"/>
+        <location filename="../lib/model/consolemodel.cpp" line="325"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="312"/>
+        <location filename="../lib/model/consolemodel.cpp" line="326"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="312"/>
+        <location filename="../lib/model/consolemodel.cpp" line="326"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="313"/>
+        <location filename="../lib/model/consolemodel.cpp" line="327"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="313"/>
+        <location filename="../lib/model/consolemodel.cpp" line="327"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="314"/>
+        <location filename="../lib/model/consolemodel.cpp" line="328"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -3235,193 +3250,188 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="116"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="313"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="124"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="121"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="129"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="125"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="133"/>
         <source>Relative time</source>
         <translation>Tiempo relativo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="128"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Show:</source>
         <translation>Mostrar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="152"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="152"/>
         <source>Show bytes sent</source>
         <translation>Mostrar los bytes enviados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="147"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="155"/>
         <source>RX chunks</source>
         <translation>Bloques RX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="156"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
         <source>Frames</source>
         <translation>Tramas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
         <source>Show received frames, decoded</source>
         <translation>Mostrar las tramas recibidas, decodificadas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="153"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="153"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="154"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="154"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="157"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
         <source>De&amp;vice:</source>
         <translation>Equi&amp;po:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="160"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
         <source>Device address filter</source>
         <translation>Filtro de dirección de equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="178"/>
         <source>Co&amp;mmand:</source>
         <translation>Co&amp;mando:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
         <source>Command filter</source>
         <translation>Filtro de comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="182"/>
         <source>e.g. ST1</source>
         <translation>p. ej. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="191"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="185"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Remove every row, held ones included</source>
         <translation>Quitar todas las filas, incluidas las retenidas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="186"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="209"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="228"/>
-        <source>error</source>
-        <translation>error</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="236"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="255"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="250"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="269"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="264"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="292"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="283"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="293"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="311"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="313"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="330"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="336"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="331"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
         <source>paused: new traffic is held</source>
         <translation>en pausa: el tráfico nuevo se retiene</translation>
     </message>

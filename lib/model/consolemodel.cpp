@@ -236,20 +236,34 @@ QString ConsoleModel::timeText(const ConsoleEntry &e) const {
     return QDateTime::fromMSecsSinceEpoch(e.wallMs).toString(QStringLiteral("HH:mm:ss.zzz"));
 }
 
-static QString directionText(ConsoleEntry::Direction d) {
+QString ConsoleModel::directionText(ConsoleEntry::Direction d) {
     switch (d) {
     case ConsoleEntry::Direction::Tx:
         return Tr::tr("TX");
     case ConsoleEntry::Direction::Rx:
-        return Tr::tr("RX");
+        return Tr::tr("RX chunk");
     case ConsoleEntry::Direction::Decoded:
-        return Tr::tr("frame");
+        return Tr::tr("RX");
     case ConsoleEntry::Direction::Error:
         return Tr::tr("error");
     case ConsoleEntry::Direction::Note:
         return Tr::tr("note");
     }
     return {};
+}
+
+QString ConsoleModel::headerText(protocol::Header h) {
+    switch (h) {
+    case protocol::Header::Read:
+        return Tr::tr("Read");
+    case protocol::Header::Write:
+        return Tr::tr("Write");
+    case protocol::Header::Answer:
+        return Tr::tr("Answer");
+    case protocol::Header::Nak:
+        break;
+    }
+    return headerName(h); // "NAK" is the protocol's word in every language
 }
 
 QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
@@ -279,7 +293,7 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
                                            .arg(*f->target, 2, 10, QLatin1Char('0'))
                                      : QString();
     case Header:
-        return f ? headerName(f->header) : QString();
+        return f ? headerText(f->header) : QString();
     case Command:
         return f ? QString::fromLatin1(f->command) : QString();
     case Name:

@@ -7,7 +7,9 @@
 // reach the table in batches, at most every kBatchMs (or at flush()): a busy line taps a few
 // hundred events a second, and a row inserted at a time kept the filter proxy and the view busy
 // even with the console hidden. Filters (direction, device address, command text) act on the
-// view through filterAccepts(). Sending goes through sender(), which owns the monitor-only gate;
+// view through filterAccepts(). Received frames are labelled RX, the chunks they arrived in
+// "RX chunk", and headers are named in the user interface language. Sending goes through
+// sender(), which owns the monitor-only gate;
 // follow() keeps the table, the sender and the commands' names with a Session's current line.
 #pragma once
 
@@ -90,6 +92,10 @@ public:
 
     [[nodiscard]] const ConsoleEntry &entry(int row) const { return m_entries.at(size_t(row)); }
     [[nodiscard]] static ConsoleEntry fromTap(const link::TapEvent &e);
+    // What the Dir column says for a kind of row ("TX", "RX", "RX chunk", ...).
+    [[nodiscard]] static QString directionText(ConsoleEntry::Direction d);
+    // What the Header column says, in the user interface language ("Read", "Answer", ...).
+    [[nodiscard]] static QString headerText(protocol::Header h);
     // One line per entry, as shown; for "save to file".
     [[nodiscard]] QString lineText(int row) const;
     bool saveText(const QString &path, QString *error) const;

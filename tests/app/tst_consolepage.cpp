@@ -128,7 +128,7 @@ void TestConsolePage::builtReadOfModelNameShowsTheAnswerInTheTable() {
     auto answerRow = [this] {
         const QAbstractItemModel *rows = m_page->visibleRows();
         for (int r = 0; r < rows->rowCount(); ++r)
-            if (cell(r, ConsoleModel::Direction) == QLatin1String("frame") &&
+            if (cell(r, ConsoleModel::Direction) == QLatin1String("RX") &&
                 cell(r, ConsoleModel::Command) == QLatin1String("SMN") &&
                 cell(r, ConsoleModel::Data).contains(QLatin1String("DME-2C")))
                 return r;

@@ -29,6 +29,14 @@ using model::ConsoleModel;
 
 namespace {
 constexpr int kHiddenBatchMs = 1000;
+
+QString widest(const QFontMetrics &fm, const QStringList &texts) {
+    QString out;
+    for (const QString &t : texts)
+        if (fm.horizontalAdvance(t) > fm.horizontalAdvance(out))
+            out = t;
+    return out;
+}
 } // namespace
 
 ConsoleFilterProxy::ConsoleFilterProxy(ConsoleModel *source, QObject *parent)
@@ -225,9 +233,20 @@ void ConsolePage::buildTable() {
             column, qMax(fm.horizontalAdvance(sample), text.horizontalAdvance(title)) + 18);
     };
     width(ConsoleModel::Time, text, QStringLiteral("+0000.0000 s"));
-    width(ConsoleModel::Direction, text, tr("error"));
+    using Direction = model::ConsoleEntry::Direction;
+    width(ConsoleModel::Direction, text,
+          widest(text, {ConsoleModel::directionText(Direction::Tx),
+                        ConsoleModel::directionText(Direction::Rx),
+                        ConsoleModel::directionText(Direction::Decoded),
+                        ConsoleModel::directionText(Direction::Error),
+                        ConsoleModel::directionText(Direction::Note)}));
     width(ConsoleModel::Device, fixed, QStringLiteral("00→00"));
-    width(ConsoleModel::Header, text, QStringLiteral("Answer"));
+    using protocol::Header;
+    width(
+        ConsoleModel::Header, text,
+        widest(text,
+               {ConsoleModel::headerText(Header::Read), ConsoleModel::headerText(Header::Write),
+                ConsoleModel::headerText(Header::Answer), ConsoleModel::headerText(Header::Nak)}));
     width(ConsoleModel::Command, fixed, QStringLiteral("WWW"));
     // One of the longest command names, in the interface language.
     width(ConsoleModel::Name, text,
