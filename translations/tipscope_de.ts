@@ -1601,107 +1601,107 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>verwaist: beantwortet keine offene Anfrage</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="242"/>
+        <location filename="../lib/model/consolemodel.cpp" line="250"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="244"/>
+        <location filename="../lib/model/consolemodel.cpp" line="252"/>
         <source>RX chunk</source>
         <translation>RX-Block</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="246"/>
+        <location filename="../lib/model/consolemodel.cpp" line="254"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="248"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="250"/>
+        <location filename="../lib/model/consolemodel.cpp" line="258"/>
         <source>note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="258"/>
+        <location filename="../lib/model/consolemodel.cpp" line="266"/>
         <source>Read</source>
         <translation>Lesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="260"/>
+        <location filename="../lib/model/consolemodel.cpp" line="268"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="262"/>
+        <location filename="../lib/model/consolemodel.cpp" line="270"/>
         <source>Answer</source>
         <translation>Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="307"/>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="307"/>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="323"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="323"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="324"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="324"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="325"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="325"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="326"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="326"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="327"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="327"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="328"/>
+        <location filename="../lib/model/consolemodel.cpp" line="336"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -3249,190 +3249,198 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="88"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="124"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="97"/>
+        <source>While paused, new rows are held; they appear on resume.</source>
+        <translation>Solange angehalten ist, werden neue Zeilen zurückgehalten; sie erscheinen beim Fortsetzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="134"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="129"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="139"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="133"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
         <source>Relative time</source>
         <translation>Relative Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="146"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="152"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="152"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
         <source>Show bytes sent</source>
         <translation>Gesendete Bytes anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="155"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
         <source>RX chunks</source>
         <translation>RX-Blöcke</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="156"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Frames</source>
         <translation>Telegramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Show received frames, decoded</source>
         <translation>Empfangene Telegramme dekodiert anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
         <source>Notes</source>
         <translation>Hinweise</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
         <source>De&amp;vice:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="178"/>
         <source>Device address filter</source>
         <translation>Filter für Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="179"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="178"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
         <source>Co&amp;mmand:</source>
         <translation>Be&amp;fehl:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="191"/>
         <source>Command filter</source>
         <translation>Befehlsfilter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="182"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="192"/>
         <source>e.g. ST1</source>
         <translation>z. B. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="191"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
         <source>Remove every row, held ones included</source>
         <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="204"/>
         <source>Save…</source>
         <translation>Speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="209"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="212"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="255"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="258"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="269"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="272"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="283"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="293"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="311"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="286"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="296"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="314"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
-        <source>paused: new traffic is held</source>
-        <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <source>paused: %n held</source>
+        <translation>
+            <numerusform>angehalten: %n zurückgehalten</numerusform>
+            <numerusform>angehalten: %n zurückgehalten</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../app/gui/pages/consolepage.h" line="62"/>

@@ -95,6 +95,17 @@
     </message>
 </context>
 <context>
+    <name>tipscope::gui::ConsolePage</name>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <source>paused: %n held</source>
+        <translation>
+            <numerusform>paused: %n held</numerusform>
+            <numerusform>paused: %n held</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::ErrorsPage</name>
     <message numerus="yes">
         <location filename="../app/gui/pages/errorspage.cpp" line="437"/>

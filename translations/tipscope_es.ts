@@ -1602,107 +1602,107 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="242"/>
+        <location filename="../lib/model/consolemodel.cpp" line="250"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="244"/>
+        <location filename="../lib/model/consolemodel.cpp" line="252"/>
         <source>RX chunk</source>
         <translation>Bloque RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="246"/>
+        <location filename="../lib/model/consolemodel.cpp" line="254"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="248"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="250"/>
+        <location filename="../lib/model/consolemodel.cpp" line="258"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="258"/>
+        <location filename="../lib/model/consolemodel.cpp" line="266"/>
         <source>Read</source>
         <translation>Lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="260"/>
+        <location filename="../lib/model/consolemodel.cpp" line="268"/>
         <source>Write</source>
         <translation>Escritura</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="262"/>
+        <location filename="../lib/model/consolemodel.cpp" line="270"/>
         <source>Answer</source>
         <translation>Respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="307"/>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="307"/>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="323"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="323"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="324"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="324"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="325"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="325"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="326"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="326"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="327"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="327"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="328"/>
+        <location filename="../lib/model/consolemodel.cpp" line="336"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -3250,190 +3250,198 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="88"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="124"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="97"/>
+        <source>While paused, new rows are held; they appear on resume.</source>
+        <translation>En pausa, las filas nuevas se retienen; aparecen al reanudar.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="134"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="129"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="139"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="133"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
         <source>Relative time</source>
         <translation>Tiempo relativo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="146"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
         <source>Show:</source>
         <translation>Mostrar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="152"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="152"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
         <source>Show bytes sent</source>
         <translation>Mostrar los bytes enviados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="155"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
         <source>RX chunks</source>
         <translation>Bloques RX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="156"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Frames</source>
         <translation>Tramas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="159"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
         <source>Show received frames, decoded</source>
         <translation>Mostrar las tramas recibidas, decodificadas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
         <source>De&amp;vice:</source>
         <translation>Equi&amp;po:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="178"/>
         <source>Device address filter</source>
         <translation>Filtro de dirección de equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="179"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="178"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
         <source>Co&amp;mmand:</source>
         <translation>Co&amp;mando:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="191"/>
         <source>Command filter</source>
         <translation>Filtro de comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="182"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="192"/>
         <source>e.g. ST1</source>
         <translation>p. ej. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="191"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
         <source>Remove every row, held ones included</source>
         <translation>Quitar todas las filas, incluidas las retenidas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="204"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="209"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="212"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="255"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="258"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="269"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="272"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="283"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="293"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="311"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="286"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="296"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="314"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="332"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
-        <source>paused: new traffic is held</source>
-        <translation>en pausa: el tráfico nuevo se retiene</translation>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <source>paused: %n held</source>
+        <translation>
+            <numerusform>en pausa: %n retenida</numerusform>
+            <numerusform>en pausa: %n retenidas</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../app/gui/pages/consolepage.h" line="62"/>

@@ -170,7 +170,9 @@ void ConsoleModel::add(const ConsoleEntry &e) {
     queue.last().family = familyOf(e);
     if (queue.size() > m_capacity) // older than anything the table could still show
         queue.removeFirst();
-    if (!m_paused && !m_batch.isActive())
+    if (m_paused)
+        Q_EMIT heldCountChanged(heldCount());
+    else if (!m_batch.isActive())
         m_batch.start();
 }
 
@@ -200,10 +202,13 @@ void ConsoleModel::setPaused(bool paused) {
     m_paused = paused;
     if (paused)
         return;
+    const bool held = !m_held.isEmpty();
     m_pending.append(std::exchange(m_held, {}));
     while (m_pending.size() > m_capacity)
         m_pending.removeFirst();
     flush();
+    if (held)
+        Q_EMIT heldCountChanged(0);
 }
 
 void ConsoleModel::setRelativeTime(bool relative) {
@@ -216,10 +221,13 @@ void ConsoleModel::clear() {
     beginResetModel();
     m_entries.clear();
     m_pending.clear();
+    const bool held = !m_held.isEmpty();
     m_held.clear();
     m_batch.stop();
     m_originUs = -1;
     endResetModel();
+    if (held)
+        Q_EMIT heldCountChanged(0);
 }
 
 int ConsoleModel::rowCount(const QModelIndex &parent) const {

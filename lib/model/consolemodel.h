@@ -72,6 +72,8 @@ public:
     [[nodiscard]] ConsoleSender &sender() { return m_sender; }
     void setPaused(bool paused);
     [[nodiscard]] bool isPaused() const { return m_paused; }
+    // Rows that arrived while paused and appear on resume; heldCountChanged() says each change.
+    [[nodiscard]] int heldCount() const { return int(m_held.size()); }
     void setRelativeTime(bool relative);
     // The families of the devices on the line by address (-1: the device of a line without
     // addresses), so a code that families share is named as the device in the frame knows it:
@@ -106,6 +108,9 @@ public:
         QString command;
     };
     [[nodiscard]] bool filterAccepts(int row, const Filter &filter) const;
+
+Q_SIGNALS:
+    void heldCountChanged(int held);
 
 private:
     void add(const ConsoleEntry &e);

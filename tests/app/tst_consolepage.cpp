@@ -208,6 +208,24 @@ void TestConsolePage::pauseHoldsRowsAndResumeShowsThem() {
                              kTrafficMs); // polling goes on
     QCOMPARE(console.rowCount(), rowsAtPause);
     QCOMPARE(m_page->visibleRows()->rowCount(), shownAtPause);
+    // The count of held rows is shown as they come, and stays in sight on a narrow page, where
+    // the toolbar folds its last items away.
+    auto *count = child<QLabel>("rowCountLabel");
+    const auto heldShown = [&] {
+        return count->text().endsWith(QStringLiteral("paused: %1 held").arg(console.heldCount()));
+    };
+    quietLine(); // a count that stands still, to compare with
+    QVERIFY(console.heldCount() >= 3);
+    QTRY_VERIFY2(heldShown(), qPrintable(count->text()));
+    const int heldBefore = console.heldCount();
+    QObject owner;
+    queue().enqueue(link::Request::read(1, "SMN"), &owner);
+    QTRY_VERIFY_WITH_TIMEOUT(console.heldCount() > heldBefore && queue().pendingCount() == 0,
+                             kTrafficMs);
+    QTRY_VERIFY2(heldShown(), qPrintable(count->text()));
+    m_page->resize(700, 800);
+    QTRY_VERIFY(count->isVisible());
+    QVERIFY(m_page->rect().contains(count->geometry()));
 
     pause->trigger();
     QVERIFY(!console.isPaused());

@@ -43,6 +43,7 @@ private Q_SLOTS:
     void pauseHoldsRowsAndResumeShowsThemAll();
     void aCodeFamiliesShareIsNamedAsTheDeviceInTheFrameKnowsIt();
     void receivedFramesAreLabelledRx();
+    void theHeldCountFollowsWhatArrivesWhilePaused();
     void headersAreNamedInTheInterfaceLanguage_data();
     void headersAreNamedInTheInterfaceLanguage();
 };
@@ -157,6 +158,33 @@ void TestConsoleModel::receivedFramesAreLabelledRx() {
     QCOMPARE(directions, QStringList({"TX", "RX chunk", "RX", "error", "note"}));
     QCOMPARE(cell(model, 2, ConsoleModel::Header), QStringLiteral("Answer"));
     QCOMPARE(cell(model, 3, ConsoleModel::Bcc), QStringLiteral("bad"));
+}
+
+void TestConsoleModel::theHeldCountFollowsWhatArrivesWhilePaused() {
+    link::FrameTap tap;
+    ConsoleModel model;
+    model.attach(&tap);
+    QSignalSpy held(&model, &ConsoleModel::heldCountChanged);
+    QVERIFY(held.isValid());
+    tap.note(QStringLiteral("shown"));
+    QCOMPARE(model.heldCount(), 0);
+    model.setPaused(true);
+    for (int i = 1; i <= 3; ++i) {
+        tap.note(QString::number(i));
+        QCOMPARE(model.heldCount(), i);
+        QCOMPARE(held.constLast().at(0).toInt(), i); // said as it happens, not on resume
+    }
+    model.setPaused(false);
+    QCOMPARE(model.heldCount(), 0);
+    QCOMPARE(held.constLast().at(0).toInt(), 0);
+    QCOMPARE(model.rowCount(), 4);
+
+    model.setPaused(true);
+    tap.note(QStringLiteral("held, then cleared"));
+    QCOMPARE(model.heldCount(), 1);
+    model.clear();
+    QCOMPARE(model.heldCount(), 0);
+    QCOMPARE(held.constLast().at(0).toInt(), 0);
 }
 
 void TestConsoleModel::headersAreNamedInTheInterfaceLanguage_data() {

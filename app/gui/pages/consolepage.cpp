@@ -13,6 +13,7 @@
 #include <QFileDialog>
 #include <QFontDatabase>
 #include <QGuiApplication>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
@@ -89,8 +90,16 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     buildTable();
     m_builder = new FrameBuilder(m_model->sender(), this);
     m_builder->setObjectName(QStringLiteral("frameBuilder"));
+    // The count sits beside the toolbar, not in it: a toolbar too narrow for the window folds
+    // its last items away, and the count of held rows must stay in sight while paused.
+    m_count = new QLabel(this);
+    m_count->setObjectName(QStringLiteral("rowCountLabel"));
+    m_count->setToolTip(tr("While paused, new rows are held; they appear on resume."));
+    auto *top = new QHBoxLayout;
+    top->addWidget(bar, 1);
+    top->addWidget(m_count);
     auto *layout = new QVBoxLayout(this);
-    layout->addWidget(bar);
+    layout->addLayout(top);
     layout->addWidget(m_table, 1);
     layout->addWidget(m_builder);
 
@@ -107,6 +116,7 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     connect(m_proxy, &QAbstractItemModel::rowsRemoved, this, countLater);
     connect(m_proxy, &QAbstractItemModel::modelReset, this, countLater);
     connect(m_proxy, &QAbstractItemModel::layoutChanged, this, countLater);
+    connect(m_model, &ConsoleModel::heldCountChanged, this, countLater);
 
     m_model->follow(&m_session);
     connect(&m_session, &model::Session::devicesChanged, this, &ConsolePage::updateDevices);
@@ -194,13 +204,6 @@ void ConsolePage::buildToolBar(QToolBar *bar) {
     QAction *save = bar->addAction(tr("Save…"), this, &ConsolePage::save);
     save->setObjectName(QStringLiteral("saveAction"));
     save->setToolTip(tr("Save every row (not only the shown ones) to a text file"));
-
-    auto *spacer = new QWidget(bar);
-    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
-    bar->addWidget(spacer);
-    m_count = new QLabel(bar);
-    m_count->setObjectName(QStringLiteral("rowCountLabel"));
-    bar->addWidget(m_count);
 }
 
 void ConsolePage::buildTable() {
@@ -372,7 +375,7 @@ void ConsolePage::copySelection() {
 void ConsolePage::updateCount() {
     QString text = tr("%1 of %2 rows shown").arg(m_proxy->rowCount()).arg(m_model->rowCount());
     if (m_model->isPaused())
-        text += QStringLiteral(" · ") + tr("paused: new traffic is held");
+        text += QStringLiteral(" · ") + tr("paused: %n held", "", m_model->heldCount());
     m_count->setText(text);
 }
 
