@@ -13,7 +13,6 @@
 #include <QFileDialog>
 #include <QFontDatabase>
 #include <QGuiApplication>
-#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
@@ -90,17 +89,15 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     buildTable();
     m_builder = new FrameBuilder(m_model->sender(), this);
     m_builder->setObjectName(QStringLiteral("frameBuilder"));
-    // The count sits beside the toolbar, not in it: a toolbar too narrow for the window folds
-    // its last items away, and the count of held rows must stay in sight while paused.
+    // The count goes under the table, not at the end of the toolbar: a toolbar too narrow for
+    // the page folds its last items away, and the count of held rows must stay in sight.
     m_count = new QLabel(this);
     m_count->setObjectName(QStringLiteral("rowCountLabel"));
     m_count->setToolTip(tr("While paused, new rows are held; they appear on resume."));
-    auto *top = new QHBoxLayout;
-    top->addWidget(bar, 1);
-    top->addWidget(m_count);
     auto *layout = new QVBoxLayout(this);
-    layout->addLayout(top);
+    layout->addWidget(bar);
     layout->addWidget(m_table, 1);
+    layout->addWidget(m_count, 0, Qt::AlignRight);
     layout->addWidget(m_builder);
 
     // The count is for reading, not for every row of a burst.

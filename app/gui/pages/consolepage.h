@@ -3,12 +3,11 @@
 // The table shows the session line's FrameTap through a ConsoleModel: TX and RX chunks, decoded
 // frames with their catalog names and BCC check, decode errors and line notes, newest at the
 // bottom and followed unless the user scrolled up. The toolbar pauses (nothing is lost: held
-// rows appear on resume, and their count stays in sight beside the toolbar), switches
+// rows appear on resume, and their count stays in sight under the table), switches
 // absolute/relative time, filters by kind, device address and command, clears, and saves every
-// row to a text file. The FrameBuilder below composes a frame
-// from the catalog or takes raw hex; both are sent once, verbatim, by the model's ConsoleSender,
-// so the answer shows up in the table like any other traffic, and the outcome of the last send
-// is shown under the builder.
+// row to a text file. The FrameBuilder below composes a frame from the catalog or takes raw hex;
+// both are sent once, verbatim, by the model's ConsoleSender, so the answer shows up in the table
+// like any other traffic, and the outcome of the last send is shown under the builder.
 //
 // The model follows the session (ConsoleModel::follow()): a new line's traffic is shown and
 // sends go to it; history stays until Clear. In monitor-only mode the sender refuses W frames
