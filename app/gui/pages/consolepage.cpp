@@ -123,8 +123,13 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
 }
 
 ConsolePage::~ConsolePage() {
-    // The builder sends through the model's sender, and children go in the order they came.
-    delete m_builder;
+    // Children would go after this destructor, in the order they came: the model first, whose
+    // end empties the table, which moves its scroll bar into a handler of this half-destroyed
+    // page. They go now, while the page is whole: the widgets before what they show.
+    delete m_builder; // sends through the model's sender
+    delete m_table;
+    delete m_proxy;
+    delete m_model;
 }
 
 void ConsolePage::buildToolBar(QToolBar *bar) {
@@ -247,7 +252,7 @@ void ConsolePage::buildTable() {
         widest(text,
                {ConsoleModel::headerText(Header::Read), ConsoleModel::headerText(Header::Write),
                 ConsoleModel::headerText(Header::Answer), ConsoleModel::headerText(Header::Nak)}));
-    width(ConsoleModel::Command, fixed, QStringLiteral("WWW"));
+    width(ConsoleModel::Command, fixed, QString(3, QLatin1Char('W'))); // a command's width
     // One of the longest command names, in the interface language.
     width(ConsoleModel::Name, text,
           protocol::catalogText(QStringLiteral("Time to sleep/hibernation")));
