@@ -271,7 +271,7 @@ QString ConsoleModel::headerText(protocol::Header h) {
     case protocol::Header::Nak:
         break;
     }
-    return headerName(h); // "NAK" is the protocol's word in every language
+    return headerName(h); // the protocol's word for a refusal, the same in every language
 }
 
 QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
