@@ -3249,193 +3249,193 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="88"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="97"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="96"/>
         <source>While paused, new rows are held; they appear on resume.</source>
         <translation>Solange angehalten ist, werden neue Zeilen zurückgehalten; sie erscheinen beim Fortsetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="134"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="139"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
         <source>Relative time</source>
         <translation>Relative Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="146"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>Show bytes sent</source>
         <translation>Gesendete Bytes anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>RX chunks</source>
         <translation>RX-Blöcke</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Frames</source>
         <translation>Telegramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show received frames, decoded</source>
         <translation>Empfangene Telegramme dekodiert anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Notes</source>
         <translation>Hinweise</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>De&amp;vice:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="178"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>Device address filter</source>
         <translation>Filter für Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="179"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
         <source>Co&amp;mmand:</source>
         <translation>Be&amp;fehl:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="191"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Command filter</source>
         <translation>Befehlsfilter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="192"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
         <source>e.g. ST1</source>
         <translation>z. B. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
         <source>Remove every row, held ones included</source>
         <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="204"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
         <source>Save…</source>
         <translation>Speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="212"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="214"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="258"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="260"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="272"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="286"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="296"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="314"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="288"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="316"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="361"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>angehalten: %n zurückgehalten</numerusform>

@@ -97,7 +97,7 @@
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>paused: %n held</numerusform>

@@ -3250,193 +3250,193 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="88"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="97"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="96"/>
         <source>While paused, new rows are held; they appear on resume.</source>
         <translation>En pausa, las filas nuevas se retienen; aparecen al reanudar.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="134"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="139"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
         <source>Relative time</source>
         <translation>Tiempo relativo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="146"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="161"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
         <source>Show:</source>
         <translation>Mostrar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="162"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>Show bytes sent</source>
         <translation>Mostrar los bytes enviados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>RX chunks</source>
         <translation>Bloques RX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Frames</source>
         <translation>Tramas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show received frames, decoded</source>
         <translation>Mostrar las tramas recibidas, decodificadas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="172"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>De&amp;vice:</source>
         <translation>Equi&amp;po:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="178"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>Device address filter</source>
         <translation>Filtro de dirección de equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="179"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="188"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
         <source>Co&amp;mmand:</source>
         <translation>Co&amp;mando:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="191"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Command filter</source>
         <translation>Filtro de comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="192"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
         <source>e.g. ST1</source>
         <translation>p. ej. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="201"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
         <source>Remove every row, held ones included</source>
         <translation>Quitar todas las filas, incluidas las retenidas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="204"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="212"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="214"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="258"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="260"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="272"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="286"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="296"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="314"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="288"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="316"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="335"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="361"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>en pausa: %n retenida</numerusform>
