@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>FrameComposer</name>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="214"/>
+        <source>%n byte(s), a valid frame: %1</source>
+        <translation>
+            <numerusform>%n byte, a valid frame: %1</numerusform>
+            <numerusform>%n bytes, a valid frame: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="216"/>
+        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
+        <translation>
+            <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
+            <numerusform>%n bytes, not a valid frame (%1): sent as typed</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>FrameDecoder</name>
     <message numerus="yes">
         <location filename="../lib/protocol/framedecoder.cpp" line="147"/>
@@ -78,11 +97,11 @@
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
-        <source>%n raw byte(s)</source>
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <source>paused: %n held</source>
         <translation>
-            <numerusform>%n raw byte</numerusform>
-            <numerusform>%n raw bytes</numerusform>
+            <numerusform>paused: %n held</numerusform>
+            <numerusform>paused: %n held</numerusform>
         </translation>
     </message>
 </context>
@@ -94,25 +113,6 @@
         <translation>
             <numerusform>%n older event was dropped</numerusform>
             <numerusform>%n older events were dropped</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>tipscope::gui::FrameBuilder</name>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="392"/>
-        <source>%n byte(s), a valid frame: %1</source>
-        <translation>
-            <numerusform>%n byte, a valid frame: %1</numerusform>
-            <numerusform>%n bytes, a valid frame: %1</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="395"/>
-        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
-        <translation>
-            <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
-            <numerusform>%n bytes, not a valid frame (%1): sent as typed</numerusform>
         </translation>
     </message>
 </context>
@@ -138,7 +138,7 @@
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="410"/>
+        <location filename="../lib/link/requestqueue.cpp" line="304"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
@@ -146,11 +146,22 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="413"/>
+        <location filename="../lib/link/requestqueue.cpp" line="307"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>%n byte of garbage came instead</numerusform>
             <numerusform>%n bytes of garbage came instead</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::ConsoleSender</name>
+    <message numerus="yes">
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n raw byte</numerusform>
+            <numerusform>%n raw bytes</numerusform>
         </translation>
     </message>
 </context>

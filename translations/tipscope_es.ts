@@ -1592,102 +1592,117 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="65"/>
+        <location filename="../lib/model/consolemodel.cpp" line="102"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>enviado tal cual (no es una trama válida)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="81"/>
+        <location filename="../lib/model/consolemodel.cpp" line="118"/>
         <source>stray: answers no pending request</source>
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="205"/>
+        <location filename="../lib/model/consolemodel.cpp" line="250"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="207"/>
+        <location filename="../lib/model/consolemodel.cpp" line="252"/>
+        <source>RX chunk</source>
+        <translation>Bloque RX</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="254"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="209"/>
-        <source>frame</source>
-        <translation>trama</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/consolemodel.cpp" line="211"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="213"/>
+        <location filename="../lib/model/consolemodel.cpp" line="258"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="266"/>
+        <source>Read</source>
+        <translation>Lectura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="268"/>
+        <source>Write</source>
+        <translation>Escritura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="270"/>
+        <source>Answer</source>
+        <translation>Respuesta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="277"/>
+        <location filename="../lib/model/consolemodel.cpp" line="336"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -1818,76 +1833,102 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
-    <name>FrameBuilder</name>
+    <name>FrameComposer</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="43"/>
+        <location filename="../lib/model/framecomposer.cpp" line="43"/>
         <source>%1 carries the data field %2.</source>
         <translation>%1 lleva el campo de datos %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="46"/>
+        <location filename="../lib/model/framecomposer.cpp" line="46"/>
         <source>A write needs a data field: %1.</source>
         <translation>Una escritura necesita un campo de datos: %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="57"/>
+        <location filename="../lib/model/framecomposer.cpp" line="57"/>
         <source>On the wire this value is written %1.</source>
         <translation>En la línea este valor se escribe %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="72"/>
+        <location filename="../lib/model/framecomposer.cpp" line="72"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Familia de equipo desconocida: el catálogo no puede comprobar esta trama.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
+        <location filename="../lib/model/framecomposer.cpp" line="80"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 no es un comando de escritura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="79"/>
+        <location filename="../lib/model/framecomposer.cpp" line="81"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 no es un comando de lectura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
+        <location filename="../lib/model/framecomposer.cpp" line="84"/>
         <source>Did you mean %1?</source>
         <translation>¿Quería decir %1?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
+        <location filename="../lib/model/framecomposer.cpp" line="85"/>
         <source>It is sent as typed.</source>
         <translation>Se envía tal cual.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../lib/model/framecomposer.cpp" line="90"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Las lecturas no llevan campo de datos; el equipo puede rechazar esta trama.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
+        <location filename="../lib/model/framecomposer.cpp" line="96"/>
         <source>Dangerous: %1</source>
         <translation>Peligroso: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
+        <location filename="../lib/model/framecomposer.cpp" line="100"/>
         <source>Catalog check: %1</source>
         <translation>Comprobación del catálogo: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
+        <location filename="../lib/model/framecomposer.cpp" line="116"/>
+        <source>%1 (no address)</source>
+        <translation>%1 (sin dirección)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/framecomposer.cpp" line="158"/>
+        <source>No device is known on this line: connect first, or send raw hex.</source>
+        <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/framecomposer.cpp" line="176"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="125"/>
+        <location filename="../lib/model/framecomposer.cpp" line="180"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="130"/>
+        <location filename="../lib/model/framecomposer.cpp" line="185"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="214"/>
+        <source>%n byte(s), a valid frame: %1</source>
+        <translation>
+            <numerusform>%n byte, una trama válida: %1</numerusform>
+            <numerusform>%n bytes, una trama válida: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="216"/>
+        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
+        <translation>
+            <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
+            <numerusform>%n bytes, no es una trama válida (%1): se envía tal cual</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2000,6 +2041,74 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>Journal</name>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="28"/>
+        <source>No journal is open.</source>
+        <translation>No hay ningún diario abierto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="86"/>
+        <source>There is no journal at %1.</source>
+        <translation>No hay ningún diario en %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="81"/>
+        <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
+        <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="96"/>
+        <source>The file %1 is not a TipScope journal. It was left untouched.</source>
+        <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="162"/>
+        <source>Cannot create the folder %1 for the journal.</source>
+        <translation>No se puede crear la carpeta %1 para el diario.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="221"/>
+        <source>Records lost: %1. Reason: %2</source>
+        <translation>Registros perdidos: %1. Motivo: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="305"/>
+        <source>The journal was closed before it could write them: %1</source>
+        <translation>El diario se cerró antes de poder escribirlos: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="41"/>
+        <source>The journal %1 cannot grow: the disk is full or the journal reached its size limit.</source>
+        <translation>El diario %1 no puede crecer: el disco está lleno o el diario alcanzó su tamaño máximo.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="51"/>
+        <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
+        <translation>El diario %1 está dañado o no es un diario; no se ha modificado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="55"/>
+        <source>The journal %1 is locked by another program.</source>
+        <translation>Otro programa tiene bloqueado el diario %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
+        <source>The disk holding the journal %1 reported an error.</source>
+        <translation>El disco del diario %1 ha informado de un error.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
+        <source>The journal %1 reported an error: %2</source>
+        <translation>El diario %1 ha informado de un error: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="64"/>
+        <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
+        <translation>No se puede escribir el diario %1: su carpeta o el archivo es de solo lectura o no es accesible.</translation>
+    </message>
+</context>
+<context>
     <name>LinkStats</name>
     <message>
         <location filename="../lib/link/linkstats.cpp" line="60"/>
@@ -2084,94 +2193,94 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="69"/>
+        <location filename="../lib/model/parameter.cpp" line="70"/>
         <source>read-only</source>
         <translation>solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="75"/>
+        <location filename="../lib/model/parameter.cpp" line="76"/>
         <source>%1 to %2</source>
         <translation>de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="78"/>
+        <location filename="../lib/model/parameter.cpp" line="79"/>
         <source> in steps of %1 %2</source>
         <translation> en pasos de %1 %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="85"/>
+        <location filename="../lib/model/parameter.cpp" line="86"/>
         <source>, or %1</source>
         <translation>, o %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="91"/>
-        <location filename="../lib/model/parameter.cpp" line="132"/>
+        <location filename="../lib/model/parameter.cpp" line="92"/>
+        <location filename="../lib/model/parameter.cpp" line="133"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="100"/>
+        <location filename="../lib/model/parameter.cpp" line="101"/>
         <source>%1 is not allowed for %2: allowed is %3</source>
         <translation>%1 no está permitido para %2: se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="105"/>
+        <location filename="../lib/model/parameter.cpp" line="106"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="117"/>
-        <location filename="../lib/model/parameter.cpp" line="213"/>
+        <location filename="../lib/model/parameter.cpp" line="118"/>
+        <location filename="../lib/model/parameter.cpp" line="216"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="136"/>
+        <location filename="../lib/model/parameter.cpp" line="137"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="172"/>
+        <location filename="../lib/model/parameter.cpp" line="173"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="184"/>
+        <location filename="../lib/model/parameter.cpp" line="185"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="185"/>
+        <location filename="../lib/model/parameter.cpp" line="186"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="236"/>
+        <location filename="../lib/model/parameter.cpp" line="235"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="239"/>
+        <location filename="../lib/model/parameter.cpp" line="238"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="258"/>
+        <location filename="../lib/model/parameter.cpp" line="259"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="272"/>
+        <location filename="../lib/model/parameter.cpp" line="273"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="282"/>
+        <location filename="../lib/model/parameter.cpp" line="284"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="289"/>
+        <location filename="../lib/model/parameter.cpp" line="297"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -3209,33 +3318,18 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
-        <source>%1: answered %2 after %L3 ms</source>
-        <translation>%1: respondió %2 tras %L3 ms</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
-        <source>%1: refused, %2</source>
-        <translation>%1: rechazado, %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="85"/>
-        <source>%1: no answer (timeout)</source>
-        <translation>%1: sin respuesta (tiempo agotado)</translation>
-    </message>
-    <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
-        <source>%1: %2 (%3)</source>
-        <translation>%1: %2 (%3)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="99"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="96"/>
+        <source>While paused, new rows are held; they appear on resume.</source>
+        <translation>En pausa, las filas nuevas se retienen; aparecen al reanudar.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
@@ -3360,95 +3454,65 @@ Hágalo permanente con esta regla de udev:
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="221"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="214"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="248"/>
-        <source>error</source>
-        <translation>error</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="256"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="260"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="270"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="309"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="328"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="288"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="316"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="299"/>
-        <source>%1 (no address)</source>
-        <translation>%1 (sin dirección)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="366"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="367"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="361"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="390"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="392"/>
-        <source>paused: new traffic is held</source>
-        <translation>en pausa: el tráfico nuevo se retiene</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
-        <source>%n raw byte(s)</source>
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <source>paused: %n held</source>
         <translation>
-            <numerusform>%n byte en bruto</numerusform>
-            <numerusform>%n bytes en bruto</numerusform>
+            <numerusform>en pausa: %n retenida</numerusform>
+            <numerusform>en pausa: %n retenidas</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="401"/>
-        <source>%1: not sent, not connected</source>
-        <translation>%1: no enviado, sin conexión</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="405"/>
-        <source>%1: not sent, monitor-only mode is on</source>
-        <translation>%1: no enviado, el modo solo supervisión está activado</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="418"/>
-        <source>%1: sent, waiting for the answer…</source>
-        <translation>%1: enviado, esperando la respuesta…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.h" line="66"/>
+        <location filename="../app/gui/pages/consolepage.h" line="62"/>
         <source>Console</source>
         <translation>Consola</translation>
     </message>
@@ -4266,183 +4330,152 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="144"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
         <source>Send a frame</source>
         <translation>Enviar una trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="167"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="170"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="64"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="171"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="65"/>
         <source>R (read)</source>
         <translation>R (lectura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="172"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
         <source>W (write)</source>
         <translation>W (escritura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="174"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>Command</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="184"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
         <source>Data field</source>
         <translation>Campo de datos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="188"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
         <source>&amp;Send frame</source>
         <translation>&amp;Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="189"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
         <source>Send frame</source>
         <translation>Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="191"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
         <source>Frame to be sent</source>
         <translation>Trama que se enviará</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="195"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="89"/>
         <source>Catalog check</source>
         <translation>Comprobación del catálogo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="198"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="92"/>
         <source>Raw bytes in hex</source>
         <translation>Bytes en bruto en hexadecimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="202"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="96"/>
         <source>Send ra&amp;w hex</source>
         <translation>Enviar he&amp;x en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="203"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
         <source>Send raw hex</source>
         <translation>Enviar hex en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="205"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
         <source>Raw bytes check</source>
         <translation>Comprobación de los bytes en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="100"/>
         <source>Nothing sent yet.</source>
         <translation>Aún no se ha enviado nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="207"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Outcome of the last send</source>
         <translation>Resultado del último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="216"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="110"/>
         <source>&amp;Device</source>
         <translation>E&amp;quipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="218"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
         <source>&amp;Header</source>
         <translation>Ca&amp;becera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="220"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
         <source>C&amp;ommand</source>
         <translation>C&amp;omando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
         <source>D&amp;ata</source>
         <translation>Da&amp;tos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="225"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>Frame</source>
         <translation>Trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="228"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="122"/>
         <source>&amp;Raw hex</source>
         <translation>Hex en b&amp;ruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="232"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="126"/>
         <source>Last send</source>
         <translation>Último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="265"/>
-        <source>Monitor-only mode is on: raw bytes are not sent, since they may be a write. Reads can still be sent with Send frame.</source>
-        <translation>El modo solo supervisión está activado: los bytes en bruto no se envían, ya que podrían ser una escritura. Las lecturas aún se pueden enviar con Enviar trama.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="267"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="235"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Enviar estos bytes exactamente como se han escrito; la respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="292"/>
-        <source>No device is known on this line: connect first, or send raw hex.</source>
-        <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="355"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
         <source>(nothing to send)</source>
         <translation>(nada que enviar)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>none for reads</source>
         <translation>ninguno en lecturas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>e.g. 00350</source>
         <translation>p. ej. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="363"/>
-        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
-        <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="375"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Enviar esta trama una vez, tal como se muestra (sin reintentos; los avisos del catálogo no la detienen). Su respuesta aparece en la tabla.</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="392"/>
-        <source>%n byte(s), a valid frame: %1</source>
-        <translation>
-            <numerusform>%n byte, una trama válida: %1</numerusform>
-            <numerusform>%n bytes, una trama válida: %1</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="395"/>
-        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
-        <translation>
-            <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
-            <numerusform>%n bytes, no es una trama válida (%1): se envía tal cual</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="413"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="257"/>
         <source>Not sent: %1</source>
         <translation>No enviado: %1</translation>
     </message>
@@ -5116,6 +5149,25 @@ Do you want to continue?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::journal::Journal</name>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="85"/>
+        <location filename="../lib/journal/journal.cpp" line="99"/>
+        <source>The journal is closed.</source>
+        <translation>El diario está cerrado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="89"/>
+        <source>The journal cannot keep up: %1 records wait to be written.</source>
+        <translation>El diario no da abasto: %1 registros esperan a ser escritos.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="137"/>
+        <source>Work order: %1, board: %2, operator: %3</source>
+        <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::link::Line</name>
     <message>
         <location filename="../lib/link/line.cpp" line="22"/>
@@ -5214,37 +5266,37 @@ Do you want to continue?</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="314"/>
+        <location filename="../lib/link/requestqueue.cpp" line="208"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="343"/>
+        <location filename="../lib/link/requestqueue.cpp" line="237"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="352"/>
+        <location filename="../lib/link/requestqueue.cpp" line="246"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="356"/>
+        <location filename="../lib/link/requestqueue.cpp" line="250"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="374"/>
+        <location filename="../lib/link/requestqueue.cpp" line="268"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="395"/>
+        <location filename="../lib/link/requestqueue.cpp" line="289"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="410"/>
+        <location filename="../lib/link/requestqueue.cpp" line="304"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -5252,7 +5304,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="413"/>
+        <location filename="../lib/link/requestqueue.cpp" line="307"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>en su lugar llegó %n byte de basura</numerusform>
@@ -5260,17 +5312,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="416"/>
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="478"/>
+        <location filename="../lib/link/requestqueue.cpp" line="372"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="479"/>
+        <location filename="../lib/link/requestqueue.cpp" line="373"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
@@ -5322,6 +5374,62 @@ Do you want to continue?</source>
         <location filename="../lib/link/tcptransport.cpp" line="63"/>
         <source>cannot connect to %1: no connection within %2 s</source>
         <translation>no se puede conectar con %1: sin conexión en %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::ConsoleSender</name>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="15"/>
+        <source>%1: answered %2 after %L3 ms</source>
+        <translation>%1: respondió %2 tras %L3 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="19"/>
+        <source>%1: refused, %2</source>
+        <translation>%1: rechazado, %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="21"/>
+        <source>%1: no answer (timeout)</source>
+        <translation>%1: sin respuesta (tiempo agotado)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="23"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="52"/>
+        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
+        <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="58"/>
+        <source>Monitor-only mode is on: bytes that are not one valid R frame may be a write, so they are not sent.</source>
+        <translation>El modo solo supervisión está activado: los bytes que no forman una trama R válida podrían ser una escritura, así que no se envían.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n byte en bruto</numerusform>
+            <numerusform>%n bytes en bruto</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="75"/>
+        <source>%1: not sent, not connected</source>
+        <translation>%1: no enviado, sin conexión</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="79"/>
+        <source>%1: not sent, monitor-only mode is on</source>
+        <translation>%1: no enviado, el modo solo supervisión está activado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="91"/>
+        <source>%1: sent, waiting for the answer…</source>
+        <translation>%1: enviado, esperando la respuesta…</translation>
     </message>
 </context>
 </TS>

@@ -6,6 +6,7 @@
 // subcommand's figures, one "name: value unit" per line.
 #include "benchsupport.h"
 #include "chartbench.h"
+#include "journalbench.h"
 #include "linkbench.h"
 #include "soakbench.h"
 
@@ -31,6 +32,8 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runSoakBench},
     {"chart", "chart redraw over a day of 4 ports, naive chart, memory, GUI CPU (--seconds N)",
      tipscope::bench::runChartBench, true},
+    {"journal", "journal inserts under polling, a year's file: size and queries (--rows N)",
+     tipscope::bench::runJournalBench},
 };
 
 void printUsage(QTextStream &s) {
