@@ -108,6 +108,7 @@ SerialDeviceEndpoint::SerialDeviceEndpoint(SimLine &line, const QString &device,
     : QObject(parent)
     , m_line(line)
     , m_port(new QSerialPort(device, this)) {
+    m_port->setReadBufferSize(kMaxUnreadBytes);
     connect(m_port, &QSerialPort::readyRead, this, [this] { m_line.receive(m_port->readAll()); });
     connect(&m_line, &SimLine::transmit, m_port, [this](const QByteArray &b) {
         if (m_port->isOpen())
@@ -163,6 +164,7 @@ void TcpEndpoint::onNewConnection() {
     if (m_client)
         m_client->deleteLater();
     m_client = next;
+    m_client->setReadBufferSize(kMaxUnreadBytes);
     m_line.clearWire();
     connect(m_client, &QTcpSocket::readyRead, this, [this, next] {
         if (next == m_client)

@@ -2,7 +2,9 @@
 // end of a socat pair, or a real port), or a raw TCP server like a serial device server. Each
 // endpoint forwards received bytes to the SimLine and the line's answers back out. A client that
 // does not read its answers costs at most kMaxUnsentBytes: answers beyond that are dropped and
-// counted (SimLineStats::unsentBytes), as a device's small output buffer would overflow.
+// counted (SimLineStats::unsentBytes), as a device's small output buffer would overflow. What a
+// client sends is taken kMaxUnreadBytes at a time; the rest waits with the sender, so a flood of
+// requests costs no more memory than that either.
 #pragma once
 
 #include <QObject>
@@ -18,6 +20,7 @@ namespace tipscope::sim {
 class SimLine;
 
 inline constexpr qint64 kMaxUnsentBytes = 64 * 1024;
+inline constexpr qint64 kMaxUnreadBytes = 64 * 1024;
 
 // A PTY pair created with posix_openpt. The slave side is what a client opens; its path is
 // printed, and optionally kept as a symbolic link so that it survives unplug()/plug().
