@@ -1,5 +1,6 @@
 #include "clicommands.h"
 
+#include "protocol/elide.h"
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 #include "protocol/valuecodec.h"
@@ -84,7 +85,8 @@ int runRead(CliSession &s) {
         const QByteArray code = arg.toUpper().toLatin1();
         const DeviceInfo *d = s.deviceFor(code, Direction::Read);
         if (!d) {
-            s.err() << Tr::tr("tipscope-cli: no device here can read '%1'").arg(arg) << Qt::endl;
+            s.err() << Tr::tr("tipscope-cli: no device here can read '%1'").arg(elided(arg))
+                    << Qt::endl;
             worst = qMax(worst, int(kRefused));
             continue;
         }
@@ -141,8 +143,9 @@ int runWrite(CliSession &s) {
     const QByteArray code = args.at(0).toUpper().toLatin1();
     const DeviceInfo *d = s.deviceFor(code, Direction::Write);
     if (!d) {
-        s.err() << Tr::tr("tipscope-cli: no device here accepts writes of '%1'").arg(args.at(0))
-                << Qt::endl;
+        s.err()
+            << Tr::tr("tipscope-cli: no device here accepts writes of '%1'").arg(elided(args.at(0)))
+            << Qt::endl;
         return kRefused;
     }
     const auto cmd = *Catalog::builtin().resolve(d->family, code, Direction::Write);
@@ -254,7 +257,7 @@ int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const QString family = o.values.value(QStringLiteral("family")).toUpper();
     if (!family.isEmpty() && !cat.family(family)) {
         err << Tr::tr("tipscope-cli: unknown family '%1'; known: %2")
-                   .arg(family, cat.familyNames().join(QLatin1String(", ")))
+                   .arg(elided(family), cat.familyNames().join(QLatin1String(", ")))
             << Qt::endl;
         return kUsage;
     }

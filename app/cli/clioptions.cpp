@@ -1,6 +1,7 @@
 #include "clioptions.h"
 
 #include "link/tcptransport.h"
+#include "protocol/elide.h"
 
 namespace tipscope::cli {
 
@@ -82,7 +83,7 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
         if (!isOption) {
             if (o.command.isEmpty()) {
                 if (!kCommands.contains(a))
-                    return fail(tr("unknown command '%1'").arg(a));
+                    return fail(tr("unknown command '%1'").arg(protocol::elided(a)));
                 o.command = a;
             } else {
                 o.args.append(a);
@@ -174,8 +175,9 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
                 o.flags.append(name);
             }
         } else {
-            return fail(o.command.isEmpty() ? tr("unknown option --%1").arg(name)
-                                            : tr("'%1' has no option --%2").arg(o.command, name));
+            const QString shown = protocol::elided(name);
+            return fail(o.command.isEmpty() ? tr("unknown option --%1").arg(shown)
+                                            : tr("'%1' has no option --%2").arg(o.command, shown));
         }
     }
     if (o.showHelp || o.showVersion)

@@ -43,6 +43,7 @@ public:
 
 private:
     void waitForLine();
+    [[nodiscard]] QString withPortElided(QString message) const;
     int identify(std::optional<int> address);
 
     CliOptions m_options;

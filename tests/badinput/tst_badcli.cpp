@@ -92,6 +92,8 @@ private Q_SLOTS:
     void rawWriteRefusesEmptyAndNonAsciiData();
     void monitorRefusesDurationsThatAreNotFinite_data();
     void monitorRefusesDurationsThatAreNotFinite();
+    void hugeArgumentsAreEchoedCutWithTheirLength_data();
+    void hugeArgumentsAreEchoedCutWithTheirLength();
 
 private:
     [[nodiscard]] WireCount wire();
@@ -305,6 +307,45 @@ void TestBadCli::monitorRefusesDurationsThatAreNotFinite() {
                                    "50", "--duration", duration}));
     QVERIFY2(!sanitizerReported(r), qPrintable(r.err));
     QCOMPARE(r.exitCode, 1);
+}
+
+void TestBadCli::hugeArgumentsAreEchoedCutWithTheirLength_data() {
+    // Every message that quotes what was typed shows its start and its length, never 100 kB.
+    QTest::addColumn<QByteArrayList>("args");
+    QTest::addColumn<int>("exitCode");
+    const QByteArray p = "@PORT";
+    const QByteArray h = big('x');
+    const QByteArrayList st = {"--port", p, "--addr", "00:01"};
+    QTest::newRow("command") << QByteArrayList{"--port", p, h} << 1;
+    QTest::newRow("option") << QByteArrayList{"--port", p, "--" + h, "read", "ST1"} << 1;
+    QTest::newRow("command option") << QByteArrayList{"--port", p, "read", "--" + h} << 1;
+    QTest::newRow("value") << st + QByteArrayList{"write", "ST1", "9" + h} << 2;
+    QTest::newRow("delay") << st + QByteArrayList{"write", "HD1", h} << 2;
+    QTest::newRow("code to write") << st + QByteArrayList{"write", h, "350"} << 2;
+    QTest::newRow("code to read") << st + QByteArrayList{"read", h} << 2;
+    QTest::newRow("family") << QByteArrayList{"commands", "--family", h} << 1;
+    QTest::newRow("profile file") << st + QByteArrayList{"profile", "apply", "/tmp/" + h} << 2;
+    QTest::newRow("csv file") << st + QByteArrayList{"monitor", "--duration", "1", "--csv",
+                                                     "/nonexistent/" + h}
+                              << 1;
+    QTest::newRow("port") << QByteArrayList{"--port", "/tmp/" + h, "read", "ST1"} << 5;
+}
+
+void TestBadCli::hugeArgumentsAreEchoedCutWithTheirLength() {
+    QFETCH(QByteArrayList, args);
+    QFETCH(int, exitCode);
+    const WireCount before = wire();
+    const Run r = runCli(withPort(args));
+    const QString first = r.err.section(QLatin1Char('\n'), 0, 0);
+    QVERIFY2(!sanitizerReported(r), qPrintable(r.err.left(400)));
+    QVERIFY2(r.exitCode == exitCode,
+             qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(first.left(400))));
+    QVERIFY2(first.startsWith(QStringLiteral("tipscope-cli: ")), qPrintable(first.left(400)));
+    QVERIFY2(first.size() < 500, qPrintable(first.left(400)));
+    QVERIFY2(r.err.size() < 3000, qPrintable(r.err.left(400)));
+    static const QRegularExpression length(QStringLiteral("… \\(1024\\d\\d characters\\)"));
+    QVERIFY2(first.contains(length), qPrintable(first));
+    QCOMPARE(wire().writes, before.writes);
 }
 
 QTEST_GUILESS_MAIN(TestBadCli)
