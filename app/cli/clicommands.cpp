@@ -131,6 +131,35 @@ static int verifyWrite(CliSession &s, const DeviceInfo &d, const ResolvedCommand
     return kOk;
 }
 
+// The device's own limits (MIT and MAT for a selected temperature) are read now and the value
+// is checked with the Parameter logic the GUI's editors use. kOk, or the exit code after saying
+// why nothing was sent.
+static int checkDeviceLimits(CliSession &s, const DeviceInfo &d, const QByteArray &code,
+                             qint64 wire) {
+    const auto device = s.model(d);
+    model::Parameter *p = device->parameter(code);
+    if (!p)
+        return kOk; // an action or a write-only command: the catalog's check is all there is
+    for (const QString &limit : {p->meta().limitMin, p->meta().limitMax}) {
+        model::Parameter *l = limit.isEmpty() ? nullptr : device->parameter(limit.toLatin1());
+        if (!l)
+            continue;
+        Reply *r = s.ask(Request::read(d.address, l->code()));
+        if (!r->ok()) {
+            s.err() << Tr::tr("tipscope-cli: %1 was not sent: its limit %2 could not be read: %3")
+                           .arg(QString::fromLatin1(code), limit, r->errorString())
+                    << Qt::endl;
+            return CliSession::exitCodeFor(*r);
+        }
+        l->deviceReported(r->answer().data);
+    }
+    if (const QString why = p->validate(wire); !why.isEmpty()) {
+        s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(why) << Qt::endl;
+        return kRefused;
+    }
+    return kOk;
+}
+
 int runWrite(CliSession &s) {
     const QStringList &args = s.options().args;
     const bool raw = s.options().flags.contains(QStringLiteral("raw"));
@@ -150,6 +179,7 @@ int runWrite(CliSession &s) {
     }
     const auto cmd = *Catalog::builtin().resolve(d->family, code, Direction::Write);
     QByteArray data;
+    std::optional<qint64> wire;
     QString error;
     if (raw) {
         // Checked before toLatin1(), which would turn anything outside Latin-1 into '?'.
@@ -165,14 +195,17 @@ int runWrite(CliSession &s) {
     } else if (cmd.spec->kind == ValueKind::Action && args.size() == 1) {
         data = cmd.spec->fixedData;
     } else {
-        const auto value = parseUserValue(cmd, args.value(1), &error);
-        if (value)
-            data = encodeWrite(cmd, *value, &error).value_or(QByteArray());
+        wire = parseUserValue(cmd, args.value(1), &error);
+        if (wire)
+            data = encodeWrite(cmd, *wire, &error).value_or(QByteArray());
     }
     if (!error.isEmpty()) {
         s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(error) << Qt::endl;
         return kRefused;
     }
+    if (wire)
+        if (const int rc = checkDeviceLimits(s, *d, code, *wire); rc != kOk)
+            return rc;
     Reply *reply = s.ask(Request::write(d->address, code, data, !cmd.spec->dangerous));
     if (!reply->ok()) {
         reportFailure(s, *reply);

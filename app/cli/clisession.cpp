@@ -1,5 +1,7 @@
 #include "clisession.h"
 
+#include "model/feedermodel.h"
+#include "model/stationmodel.h"
 #include "protocol/elide.h"
 #include "sim/simline.h"
 
@@ -166,6 +168,12 @@ const DeviceInfo *CliSession::firstStation() const {
         if (const FamilyInfo *f = Catalog::builtin().family(d.family); f && !f->isFeeder())
             return &d;
     return nullptr;
+}
+
+std::unique_ptr<model::DeviceModel> CliSession::model(const DeviceInfo &device) {
+    if (Catalog::builtin().family(device.family)->isFeeder())
+        return std::make_unique<model::FeederModel>(m_line->queue(), device);
+    return std::make_unique<model::StationModel>(m_line->queue(), device);
 }
 
 } // namespace tipscope::cli

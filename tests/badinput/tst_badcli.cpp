@@ -94,6 +94,8 @@ private Q_SLOTS:
     void monitorRefusesDurationsThatAreNotFinite();
     void hugeArgumentsAreEchoedCutWithTheirLength_data();
     void hugeArgumentsAreEchoedCutWithTheirLength();
+    void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite_data();
+    void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite();
 
 private:
     [[nodiscard]] WireCount wire();
@@ -346,6 +348,80 @@ void TestBadCli::hugeArgumentsAreEchoedCutWithTheirLength() {
     static const QRegularExpression length(QStringLiteral("… \\(1024\\d\\d characters\\)"));
     QVERIFY2(first.contains(length), qPrintable(first));
     QCOMPARE(wire().writes, before.writes);
+}
+
+void TestBadCli::whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite_data() {
+    // setup: writes that put the station in the state the row needs (MIT 90, MAT 500 and ST1
+    // 350 come first); @FILE: a profile file with `profile` as its values.
+    QTest::addColumn<QByteArrayList>("setup");
+    QTest::addColumn<QByteArray>("profile");
+    QTest::addColumn<QByteArrayList>("args");
+    QTest::addColumn<QString>("needle");
+    const QByteArray dme = R"("format":"tipscope-profile","schema":1,"family":"DME")";
+    const QByteArrayList apply = {"profile", "apply", "@FILE"};
+    const QString inProfile =
+        QStringLiteral("ST1 450 °C (in the profile) is above MAT 400 °C (in the profile)");
+    QTest::newRow("profile: MAT below ST1, each in range")
+        << QByteArrayList{}
+        << "{" + dme + R"(,"values":{"MAT":"00400","A11":"00005","ST1":"00450"}})" << apply
+        << inProfile;
+    QTest::newRow("profile: ST1 already 450 on the device")
+        << QByteArrayList{"ST1 450"} << "{" + dme + R"(,"values":{"MAT":"00400","ST1":"00450"}})"
+        << apply << inProfile;
+    QTest::newRow("profile: ST1 450 on the device, not in the profile")
+        << QByteArrayList{"ST1 450"} << "{" + dme + R"(,"values":{"MAT":"00400"}})" << apply
+        << "ST1 450 °C (on the device now) is above MAT 400 °C (in the profile)";
+    QTest::newRow("profile: the dry run is refused too")
+        << QByteArrayList{} << "{" + dme + R"(,"values":{"MAT":"00400","ST1":"00450"}})"
+        << QByteArrayList{"profile", "apply", "--dry-run", "@FILE"} << inProfile;
+    QTest::newRow("profile: the diff says it would be refused")
+        << QByteArrayList{} << "{" + dme + R"(,"values":{"MAT":"00400","ST1":"00450"}})"
+        << QByteArrayList{"profile", "diff", "@FILE"} << "would be refused";
+    QTest::newRow("profile: forced, nothing in common")
+        << QByteArrayList{}
+        << QByteArray(R"({"format":"tipscope-profile","schema":1,"family":"DDR",)"
+                      R"("values":{"PLM":"00800"}})")
+        << QByteArrayList{"profile", "apply", "--force", "@FILE"}
+        << "none of the profile's settings exists on this DME (skipped: PLM)";
+    QTest::newRow("write: ST1 above the device's MAT")
+        << QByteArrayList{"MAT 400"} << QByteArray() << QByteArrayList{"write", "ST1", "450"}
+        << "450 °C is not allowed for Selected temperature: allowed is 90 °C to 400 °C";
+    QTest::newRow("write: ST1 below the device's MIT")
+        << QByteArrayList{"MIT 300", "ST1 350"} << QByteArray()
+        << QByteArrayList{"write", "ST1", "250"} << "allowed is 300 °C to 500 °C";
+    QTest::newRow("write: MIT above the device's MAT")
+        << QByteArrayList{"MAT 400"} << QByteArray() << QByteArrayList{"write", "MIT", "450"}
+        << "450 °C is not allowed for Minimum temperature";
+}
+
+void TestBadCli::whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite() {
+    QFETCH(QByteArrayList, setup);
+    QFETCH(QByteArray, profile);
+    QFETCH(QByteArrayList, args);
+    QFETCH(QString, needle);
+    const QByteArrayList station = {"--port", "@PORT", "--addr", "00:01"};
+    for (const QByteArray &w : QByteArrayList{"MIT 90", "MAT 500", "ST1 350"} + setup) {
+        const Run r = runCli(withPort(station + QByteArrayList{"write"} + w.split(' ')));
+        QVERIFY2(r.exitCode == 0, qPrintable(w + ": " + r.err));
+    }
+    QTemporaryDir dir;
+    const QByteArray file = dir.filePath(QStringLiteral("p.json")).toLocal8Bit();
+    QFile f(QString::fromLocal8Bit(file));
+    QVERIFY(f.open(QIODevice::WriteOnly) && f.write(profile) == profile.size());
+    f.close();
+    for (QByteArray &a : args)
+        a.replace("@FILE", file);
+    const WireCount before = wire();
+    const Run r = runCli(withPort(station + args));
+    const QString what = QStringLiteral("exit %1, stderr: %2").arg(r.exitCode).arg(r.err);
+    QVERIFY2(!sanitizerReported(r), qPrintable(what));
+    QVERIFY2(r.exitCode == 2, qPrintable(what));
+    QVERIFY2(r.err.contains(needle), qPrintable(what));
+    QVERIFY2(r.err.contains(QStringLiteral("nothing was written")) ||
+                 r.err.contains(QStringLiteral("nothing was sent")) ||
+                 r.err.contains(QStringLiteral("would be refused")),
+             qPrintable(what));
+    QCOMPARE(wire().writes, before.writes); // the simulator's own count: no write frame came
 }
 
 QTEST_GUILESS_MAIN(TestBadCli)
