@@ -1,5 +1,6 @@
 #include "clioptions.h"
 
+#include "link/ports/devicepath.h"
 #include "link/tcptransport.h"
 #include "protocol/elide.h"
 
@@ -124,7 +125,7 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
                 return fail(tr("--port takes a device, and only one of --port, --tcp, --demo"));
             haveTransport = true;
             o.line.kind = link::LineSettings::Kind::Serial;
-            o.line.serial.portName = v;
+            o.line.serial.portName = link::typedPortName(v);
         } else if (name == QLatin1String("tcp")) {
             if (haveTransport || !takeValue(&v) ||
                 !link::TcpTransport::parseHostPort(v, &o.line.tcpHost, &o.line.tcpPort))
