@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>CliCommands</name>
+    <message numerus="yes">
+        <location filename="../app/cli/clicommands.cpp" line="50"/>
+        <source>%n raw byte(s), not a frame (%1)</source>
+        <translation>
+            <numerusform>%n raw byte, not a frame (%1)</numerusform>
+            <numerusform>%n raw bytes, not a frame (%1)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>FrameDecoder</name>
     <message numerus="yes">
         <location filename="../lib/protocol/framedecoder.cpp" line="147"/>
@@ -34,7 +45,7 @@
 <context>
     <name>ProfileApplier</name>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -45,7 +56,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="227"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -56,7 +67,7 @@
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="411"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… and %n more</numerusform>
@@ -78,7 +89,7 @@
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n raw byte</numerusform>
@@ -119,7 +130,7 @@
 <context>
     <name>tipscope::gui::ProfileDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="111"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="123"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Profile from %1 (%2, software %3), created %4: %n setting differs from the device.</numerusform>
@@ -127,7 +138,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="117"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="129"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Dry run: %n frame would be sent; nothing was written.</numerusform>

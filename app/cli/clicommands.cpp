@@ -34,9 +34,20 @@ QJsonObject deviceJson(const DeviceInfo &d) {
             {QStringLiteral("softwareVersion"), d.softwareVersion}};
 }
 
+void reportFailure(CliSession &s, const Reply &reply, const QString &what) {
+    s.err() << Tr::tr("tipscope-cli: %1: %2").arg(what, reply.errorString()) << Qt::endl;
+}
+
 void reportFailure(CliSession &s, const Reply &reply) {
-    s.err() << Tr::tr("tipscope-cli: %1: %2").arg(reply.request().toString(), reply.errorString())
-            << Qt::endl;
+    reportFailure(s, reply, reply.request().toString());
+}
+
+// Raw bytes as people read them: decoded when they are a frame, else why they are not one.
+QString describeRaw(const QByteArray &bytes) {
+    QString why;
+    if (const auto frame = parseFrame(bytes, nullptr, &why))
+        return frame->toString();
+    return Tr::tr("%n raw byte(s), not a frame (%1)", nullptr, int(bytes.size())).arg(why);
 }
 
 } // namespace
@@ -233,7 +244,7 @@ int runSend(CliSession &s) {
     s.out() << "TX " << toHexText(*bytes) << "  " << toAsciiText(*bytes) << Qt::endl;
     Reply *reply = s.ask(r);
     if (reply->error() != ReplyError::None && reply->error() != ReplyError::Nak) {
-        reportFailure(s, *reply);
+        reportFailure(s, *reply, describeRaw(*bytes));
         return CliSession::exitCodeFor(*reply);
     }
     const Frame &a = reply->answer();

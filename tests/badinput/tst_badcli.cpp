@@ -94,6 +94,8 @@ private Q_SLOTS:
     void monitorRefusesDurationsThatAreNotFinite();
     void hugeArgumentsAreEchoedCutWithTheirLength_data();
     void hugeArgumentsAreEchoedCutWithTheirLength();
+    void sendOfBytesThatAreNoFrameSaysSoWhenUnanswered_data();
+    void sendOfBytesThatAreNoFrameSaysSoWhenUnanswered();
     void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite_data();
     void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite();
 
@@ -348,6 +350,26 @@ void TestBadCli::hugeArgumentsAreEchoedCutWithTheirLength() {
     static const QRegularExpression length(QStringLiteral("… \\(1024\\d\\d characters\\)"));
     QVERIFY2(first.contains(length), qPrintable(first));
     QCOMPARE(wire().writes, before.writes);
+}
+
+void TestBadCli::sendOfBytesThatAreNoFrameSaysSoWhenUnanswered_data() {
+    QTest::addColumn<QByteArray>("hex");
+    QTest::addColumn<QString>("described");
+    QTest::newRow("letters") << QByteArray("41 42 43") << "3 raw bytes, not a frame (";
+    QTest::newRow("wrong BCC, to nobody") << QByteArray("02 30 30 35 35 52 53 4D 4E 03 07")
+                                          << "11 raw bytes, not a frame (BCC is 07, expected 03)";
+    QTest::newRow("a frame to nobody")
+        << QByteArray("02 30 30 35 35 52 53 4D 4E 03 03") << "00→55 R SMN: no answer";
+}
+
+void TestBadCli::sendOfBytesThatAreNoFrameSaysSoWhenUnanswered() {
+    // The device ignores them; the message must describe what was sent, not "R :".
+    QFETCH(QByteArray, hex);
+    QFETCH(QString, described);
+    const Run r = runCli(withPort({"--port", "@PORT", "--timeout", "50", "send", hex}));
+    QVERIFY2(!sanitizerReported(r), qPrintable(r.err));
+    QCOMPARE(r.exitCode, 4);
+    QVERIFY2(r.err.contains(QStringLiteral("tipscope-cli: ") + described), qPrintable(r.err));
 }
 
 void TestBadCli::whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite_data() {
