@@ -67,6 +67,9 @@ void TestBadProfile::editorHabitsAreAccepted_data() {
     QTest::newRow("lower-case family and codes")
         << QByteArray(kGood).replace("DME", "dme").replace("ST1", "st1");
     QTest::newRow("unknown extra key") << profileWith(R"({"ST1": "00350"})", R"("editor": 1, )");
+    QTest::newRow("a code and values as keys of another object")
+        << profileWith(R"({"ST1": "00350"})",
+                       R"("editor": {"ST1": "x", "values": [{"ST1": 1}], "s": "\"ST1\": 1"}, )");
     QTest::newRow("UTF-8 comment")
         << profileWith(R"({"ST1": "00350"})", "\"comment\": \"Lötstation\", ");
 }
