@@ -125,7 +125,9 @@ void ProfileApplier::readAll() {
         if (!r)
             continue;
         ++m_pendingReads;
-        connect(r, &Reply::finished, this, [this, total] {
+        connect(r, &Reply::finished, this, [this, total, r, code] {
+            if (!r->ok())
+                m_unread.insert(code);
             Q_EMIT progress(total - m_pendingReads + 1, total, Tr::tr("reading the device"));
             if (--m_pendingReads == 0)
                 compare();
@@ -138,7 +140,7 @@ void ProfileApplier::readAll() {
 void ProfileApplier::compare() {
     m_report.differences = diffProfile(m_profile, m_device);
     m_report.unchanged = int(m_profile.values.size() - m_report.differences.size());
-    m_report.conflicts = limitConflicts(m_profile, m_device);
+    m_report.conflicts = limitConflicts(m_profile, m_device, m_unread);
     if (!m_report.conflicts.isEmpty() && m_mode != Mode::Diff) {
         m_report.refused = true;
         m_report.reason = m_report.conflictReason();

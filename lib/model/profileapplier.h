@@ -17,6 +17,7 @@
 
 #include <QObject>
 #include <QPointer>
+#include <QSet>
 
 namespace tipscope::model {
 
@@ -83,6 +84,7 @@ private:
     bool m_force;
     bool m_cancelled = false;
     int m_pendingReads = 0;
+    QSet<QByteArray> m_unread; // codes whose read for this run failed
     QList<QByteArray> m_toWrite;
     int m_next = 0;
     ApplyReport m_report;

@@ -52,12 +52,12 @@ struct EndValue {
     bool fromProfile = false;
 };
 
-EndValue endValue(const Profile &profile, const Parameter &p) {
+EndValue endValue(const Profile &profile, const Parameter &p, const QSet<QByteArray> &unread = {}) {
     if (const auto data = profileData(profile, p.code())) {
         const auto v = decodeAnswer(p.spec(), *data);
         return {v && !v->isText ? std::optional<qint64>(v->number) : std::nullopt, true};
     }
-    return {p.number(), false};
+    return {unread.contains(p.code()) ? std::nullopt : p.number(), false};
 }
 
 QString describe(const Parameter &p, const EndValue &v, TemperatureUnit unit) {
@@ -71,11 +71,12 @@ bool isSpecial(const Parameter &p, qint64 v) {
 }
 
 // Empty when the bound holds at the end.
-QString check(const Bound &b, const Profile &profile, const DeviceModel &device) {
+QString check(const Bound &b, const Profile &profile, const DeviceModel &device,
+              const QSet<QByteArray> &unread) {
     const Parameter &lo = *device.parameter(b.lower);
     const Parameter &hi = *device.parameter(b.upper);
-    const EndValue l = endValue(profile, lo);
-    const EndValue h = endValue(profile, hi);
+    const EndValue l = endValue(profile, lo, unread);
+    const EndValue h = endValue(profile, hi, unread);
     if (!l.number || !h.number) {
         const Parameter &unknown = l.number ? hi : lo;
         const Parameter &other = l.number ? lo : hi;
@@ -110,19 +111,22 @@ QList<QByteArray> limitRelatedCodes(const Profile &profile, const DeviceModel &d
     return codes;
 }
 
-QStringList limitConflicts(const Profile &profile, const DeviceModel &device) {
+QStringList limitConflicts(const Profile &profile, const DeviceModel &device,
+                           const QSet<QByteArray> &unread) {
     QStringList conflicts;
     for (const Bound &b : boundsOf(device))
         if (touches(b, profile))
-            if (const QString why = check(b, profile, device); !why.isEmpty())
+            if (const QString why = check(b, profile, device, unread); !why.isEmpty())
                 conflicts.append(why);
     return conflicts;
 }
 
 QList<QByteArray> limitSafeOrder(const QList<QByteArray> &codes, const Profile &profile,
                                  const DeviceModel &device) {
+    // A code only ever on the lower side of a bound (MIT) widens what is allowed by going down,
+    // one only on the upper side (MAT) by going up; one on both sides (STx) is what is bounded.
     const QList<Bound> bounds = boundsOf(device);
-    auto bounding = [&bounds](const QByteArray &code, bool asLower) {
+    auto onSide = [&bounds](const QByteArray &code, bool asLower) {
         return std::any_of(bounds.begin(), bounds.end(), [&](const Bound &b) {
             return (asLower ? b.lower : b.upper) == code && (asLower ? b.upper : b.lower) != code;
         });
@@ -130,8 +134,8 @@ QList<QByteArray> limitSafeOrder(const QList<QByteArray> &codes, const Profile &
     QList<QByteArray> widen, middle, narrow;
     for (const QByteArray &code : codes) {
         const Parameter *p = device.parameter(code);
-        const bool lower = p && bounding(code, true) && !bounding(code, false);
-        const bool upper = p && bounding(code, false) && !bounding(code, true);
+        const bool lower = p && onSide(code, true) && !onSide(code, false);
+        const bool upper = p && onSide(code, false) && !onSide(code, true);
         const auto now = p ? p->number() : std::nullopt;
         const auto end = p ? endValue(profile, *p).number : std::nullopt;
         if ((!lower && !upper) || !now || !end)

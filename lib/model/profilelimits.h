@@ -15,6 +15,8 @@
 
 #include "profile.h"
 
+#include <QSet>
+
 namespace tipscope::model {
 
 class DeviceModel;
@@ -26,8 +28,10 @@ class DeviceModel;
 
 // One line per bound the state after `profile` would break or cannot prove, e.g.
 // "ST1 450 °C (in the profile) is above MAT 400 °C (in the profile)"; empty when all hold.
-// Uses the device's current values, so read limitRelatedCodes() first.
-[[nodiscard]] QStringList limitConflicts(const Profile &profile, const DeviceModel &device);
+// Uses the device's current values, so read limitRelatedCodes() first; `unread` are codes whose
+// read failed, whose older value (from a poll, say) must not count as current.
+[[nodiscard]] QStringList limitConflicts(const Profile &profile, const DeviceModel &device,
+                                         const QSet<QByteArray> &unread = {});
 
 // `codes` (settings of `profile` to write) in an order that keeps every limit after each write,
 // for a profile without limitConflicts().

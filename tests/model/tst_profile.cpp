@@ -72,6 +72,7 @@ private Q_SLOTS:
     void aProfileThatBreaksALimitIsRefusedWhole();
     void everyStateBetweenTwoWritesKeepsTheLimits_data();
     void everyStateBetweenTwoWritesKeepsTheLimits();
+    void aLimitThatCannotBeReadRefusesTheProfile_data();
     void aLimitThatCannotBeReadRefusesTheProfile();
     void aForcedProfileWithNothingInCommonIsRefused();
     void liveValuesKeepUpdatingWhileAProfileIsApplied();
@@ -316,9 +317,22 @@ void TestProfile::everyStateBetweenTwoWritesKeepsTheLimits() {
     }
 }
 
+void TestProfile::aLimitThatCannotBeReadRefusesTheProfile_data() {
+    QTest::addColumn<bool>("polledBefore");
+    QTest::newRow("never read") << false;
+    // A value from an earlier poll is not the device's state now: it must not count.
+    QTest::newRow("read by an earlier poll") << true;
+}
+
 void TestProfile::aLimitThatCannotBeReadRefusesTheProfile() {
+    QFETCH(bool, polledBefore);
     SimFixture f(singleDevice(QStringLiteral("DME")));
     auto st = f.station();
+    if (polledBefore) {
+        st->refreshAll();
+        f.settle();
+        QCOMPARE(st->parameter("MAT")->number(), 500);
+    }
     QString error;
     const auto p = Profile::fromJson(profileJson("DME", R"("ST1":"00400")"), &error);
     QVERIFY2(p, qPrintable(error));
