@@ -98,11 +98,17 @@ private Q_SLOTS:
     void sendOfBytesThatAreNoFrameSaysSoWhenUnanswered();
     void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite_data();
     void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite();
+    void profilesThatMeanTwoThingsAreRefusedByName_data();
+    void profilesThatMeanTwoThingsAreRefusedByName();
 
 private:
     [[nodiscard]] WireCount wire();
     [[nodiscard]] QByteArrayList withPort(QByteArrayList args) const;
     void check(const QByteArrayList &args, int exitCode, const QString &needle);
+    // Runs `args` against station 01 with @FILE a file holding `profile`; expects exit 2, the
+    // needle, "nothing was written/sent" (or "would be refused") and no write on the wire.
+    void checkRefusedWithoutAWrite(const QByteArray &profile, QByteArrayList args,
+                                   const QString &needle);
 
     SocatPair m_pair;
     SimProcess m_sim;
@@ -421,11 +427,37 @@ void TestBadCli::whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite() {
     QFETCH(QByteArray, profile);
     QFETCH(QByteArrayList, args);
     QFETCH(QString, needle);
-    const QByteArrayList station = {"--port", "@PORT", "--addr", "00:01"};
     for (const QByteArray &w : QByteArrayList{"MIT 90", "MAT 500", "ST1 350"} + setup) {
-        const Run r = runCli(withPort(station + QByteArrayList{"write"} + w.split(' ')));
+        const Run r =
+            runCli(withPort({"--port", "@PORT", "--addr", "00:01", "write"}) + w.split(' '));
         QVERIFY2(r.exitCode == 0, qPrintable(w + ": " + r.err));
     }
+    checkRefusedWithoutAWrite(profile, args, needle);
+}
+
+void TestBadCli::profilesThatMeanTwoThingsAreRefusedByName_data() {
+    QTest::addColumn<QByteArray>("profile");
+    QTest::addColumn<QString>("needle");
+    const QByteArray head = R"({"format":"tipscope-profile","schema":1,"family":"DME",)";
+    QTest::newRow("ST1 twice") << head + R"("values":{"ST1":"00300","ST1":"00450"}})"
+                               << "given more than once, so which value is meant is unclear: ST1";
+    QTest::newRow("two values objects")
+        << head + R"("values":{"ST1":"00300"},"values":{"ST1":"00450"}})"
+        << "given more than once, so which value is meant is unclear: values";
+    QTest::newRow("a NUL inside the format")
+        << QByteArray(R"({"format":"tipscope-)") + '\0' + R"(profile","schema":1})"
+        << "not a valid JSON file: a NUL byte at byte 21";
+}
+
+void TestBadCli::profilesThatMeanTwoThingsAreRefusedByName() {
+    QFETCH(QByteArray, profile);
+    QFETCH(QString, needle);
+    checkRefusedWithoutAWrite(profile, {"profile", "apply", "@FILE"}, needle);
+}
+
+void TestBadCli::checkRefusedWithoutAWrite(const QByteArray &profile, QByteArrayList args,
+                                           const QString &needle) {
+    const QByteArrayList station = {"--port", "@PORT", "--addr", "00:01"};
     QTemporaryDir dir;
     const QByteArray file = dir.filePath(QStringLiteral("p.json")).toLocal8Bit();
     QFile f(QString::fromLocal8Bit(file));
@@ -440,7 +472,9 @@ void TestBadCli::whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite() {
     QVERIFY2(r.exitCode == 2, qPrintable(what));
     QVERIFY2(r.err.contains(needle), qPrintable(what));
     QVERIFY2(r.err.contains(QStringLiteral("nothing was written")) ||
+                 r.err.contains(QStringLiteral("nothing will be written")) ||
                  r.err.contains(QStringLiteral("nothing was sent")) ||
+                 r.err.contains(QStringLiteral("not a valid JSON file")) ||
                  r.err.contains(QStringLiteral("would be refused")),
              qPrintable(what));
     QCOMPARE(wire().writes, before.writes); // the simulator's own count: no write frame came
