@@ -1060,12 +1060,12 @@
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="226"/>
         <source>unknown (%1)</source>
         <translation>unbekannt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="233"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
@@ -1276,122 +1276,136 @@
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="37"/>
+        <location filename="../app/cli/clicommands.cpp" line="38"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="49"/>
+        <location filename="../app/cli/clicommands.cpp" line="61"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="76"/>
+        <location filename="../app/cli/clicommands.cpp" line="88"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="87"/>
+        <location filename="../app/cli/clicommands.cpp" line="99"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="109"/>
+        <location filename="../app/cli/clicommands.cpp" line="122"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="114"/>
+        <location filename="../app/cli/clicommands.cpp" line="127"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="122"/>
+        <location filename="../app/cli/clicommands.cpp" line="135"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127"/>
+        <location filename="../app/cli/clicommands.cpp" line="140"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="136"/>
+        <location filename="../app/cli/clicommands.cpp" line="178"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="144"/>
+        <location filename="../app/cli/clicommands.cpp" line="187"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="156"/>
-        <location filename="../app/cli/clicommands.cpp" line="158"/>
+        <location filename="../app/cli/clicommands.cpp" line="200"/>
+        <location filename="../app/cli/clicommands.cpp" line="202"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="161"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="170"/>
-        <location filename="../app/cli/clicommands.cpp" line="191"/>
+        <location filename="../app/cli/clicommands.cpp" line="168"/>
+        <location filename="../app/cli/clicommands.cpp" line="214"/>
+        <location filename="../app/cli/clicommands.cpp" line="238"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="183"/>
+        <location filename="../app/cli/clicommands.cpp" line="230"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="256"/>
+        <location filename="../app/cli/clicommands.cpp" line="303"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="279"/>
+        <location filename="../app/cli/clicommands.cpp" line="326"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="282"/>
+        <location filename="../app/cli/clicommands.cpp" line="329"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="283"/>
+        <location filename="../app/cli/clicommands.cpp" line="330"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/cli/clicommands.cpp" line="50"/>
+        <source>%n raw byte(s), not a frame (%1)</source>
+        <translation>
+            <numerusform>%n Rohbyte, kein Telegramm (%1)</numerusform>
+            <numerusform>%n Rohbytes, kein Telegramm (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
+        <translation>tipscope-cli: %1 wurde nicht gesendet: seine Grenze %2 ließ sich nicht lesen: %3</translation>
     </message>
 </context>
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="65"/>
+        <location filename="../app/cli/climonitor.cpp" line="66"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="72"/>
+        <location filename="../app/cli/climonitor.cpp" line="73"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="79"/>
+        <location filename="../app/cli/climonitor.cpp" line="80"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="88"/>
+        <location filename="../app/cli/climonitor.cpp" line="89"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="112"/>
+        <location filename="../app/cli/climonitor.cpp" line="113"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -1399,7 +1413,7 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="40"/>
+        <location filename="../app/cli/clioptions.cpp" line="42"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
@@ -1457,82 +1471,82 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="85"/>
+        <location filename="../app/cli/clioptions.cpp" line="87"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="118"/>
+        <location filename="../app/cli/clioptions.cpp" line="120"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="123"/>
+        <location filename="../app/cli/clioptions.cpp" line="125"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="130"/>
+        <location filename="../app/cli/clioptions.cpp" line="132"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="135"/>
+        <location filename="../app/cli/clioptions.cpp" line="137"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud erwartet eine Baudrate wie 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
+        <location filename="../app/cli/clioptions.cpp" line="144"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity erwartet none, even oder odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="146"/>
+        <location filename="../app/cli/clioptions.cpp" line="148"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits erwartet 1 oder 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
+        <location filename="../app/cli/clioptions.cpp" line="156"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="162"/>
+        <location filename="../app/cli/clioptions.cpp" line="164"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="165"/>
+        <location filename="../app/cli/clioptions.cpp" line="167"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="169"/>
+        <location filename="../app/cli/clioptions.cpp" line="171"/>
         <source>--%1 needs a value</source>
         <translation>--%1 braucht einen Wert</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="173"/>
+        <location filename="../app/cli/clioptions.cpp" line="175"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <location filename="../app/cli/clioptions.cpp" line="180"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="178"/>
+        <location filename="../app/cli/clioptions.cpp" line="181"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="184"/>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <location filename="../app/cli/clioptions.cpp" line="189"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -1540,50 +1554,55 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliProfile</name>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="49"/>
+        <location filename="../app/cli/cliprofile.cpp" line="43"/>
         <source>tipscope-cli: could not read %1; no profile written</source>
         <translation>tipscope-cli: %1 konnte nicht gelesen werden; kein Profil geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="59"/>
+        <location filename="../app/cli/cliprofile.cpp" line="53"/>
         <source>saved %1 settings of %2 to %3</source>
         <translation>%1 Einstellungen von %2 in %3 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="73"/>
+        <location filename="../app/cli/cliprofile.cpp" line="67"/>
         <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
         <translation>tipscope-cli: profile erwartet save DATEI, diff DATEI oder apply DATEI</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <source>tipscope-cli: applying this profile would be refused: %1</source>
+        <translation>tipscope-cli: das Anwenden dieses Profils würde abgelehnt: %1</translation>
     </message>
 </context>
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="56"/>
+        <location filename="../app/cli/clisession.cpp" line="68"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="92"/>
+        <location filename="../app/cli/clisession.cpp" line="104"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="93"/>
+        <location filename="../app/cli/clisession.cpp" line="105"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="103"/>
+        <location filename="../app/cli/clisession.cpp" line="115"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134"/>
+        <location filename="../app/cli/clisession.cpp" line="146"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="137"/>
+        <location filename="../app/cli/clisession.cpp" line="151"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -1740,6 +1759,14 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <location filename="../lib/model/displayunits.cpp" line="89"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 hat mehr Nachkommastellen, als %2 zulässt</translation>
+    </message>
+</context>
+<context>
+    <name>Elide</name>
+    <message>
+        <location filename="../lib/protocol/elide.cpp" line="39"/>
+        <source>%1… (%2 characters)</source>
+        <translation>%1… (%2 Zeichen)</translation>
     </message>
 </context>
 <context>
@@ -2432,119 +2459,138 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="69"/>
-        <location filename="../lib/model/profile.cpp" line="123"/>
+        <location filename="../lib/model/profile.cpp" line="72"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: keine Einstellung von %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="75"/>
+        <location filename="../lib/model/profile.cpp" line="77"/>
         <source>%1: &apos;%2&apos; is not a valid data field</source>
         <translation>%1: &apos;%2&apos; ist kein gültiges Datenfeld</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="79"/>
-        <location filename="../lib/model/profile.cpp" line="160"/>
+        <location filename="../lib/model/profile.cpp" line="82"/>
+        <location filename="../lib/model/profile.cpp" line="170"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="94"/>
+        <location filename="../lib/model/profile.cpp" line="100"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="97"/>
+        <location filename="../lib/model/profile.cpp" line="111"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="100"/>
+        <location filename="../lib/model/profile.cpp" line="114"/>
         <source>profile schema %1 is not supported (this version reads schema %2)</source>
         <translation>Profilschema %1 wird nicht unterstützt (diese Version liest Schema %2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="106"/>
+        <location filename="../lib/model/profile.cpp" line="120"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="114"/>
+        <location filename="../lib/model/profile.cpp" line="128"/>
         <source>the profile has no values</source>
         <translation>das Profil enthält keine Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="118"/>
+        <location filename="../lib/model/profile.cpp" line="132"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="128"/>
+        <location filename="../lib/model/profile.cpp" line="138"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="146"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="145"/>
+        <location filename="../lib/model/profile.cpp" line="155"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="151"/>
+        <location filename="../lib/model/profile.cpp" line="161"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="175"/>
+        <location filename="../lib/model/profile.cpp" line="185"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="95"/>
+        <source>not a valid JSON file: %1</source>
+        <translation>keine gültige JSON-Datei: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="105"/>
+        <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
+        <translation>mehr als einmal angegeben, daher ist unklar, welcher Wert gemeint ist: %1; es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilejson.cpp" line="101"/>
+        <source>a NUL byte at byte %1</source>
+        <translation>ein NUL-Byte bei Byte %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilejson.cpp" line="102"/>
+        <source>control character 0x%1 at byte %2</source>
+        <translation>Steuerzeichen 0x%1 bei Byte %2</translation>
     </message>
 </context>
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="29"/>
+        <location filename="../lib/model/profileapplier.cpp" line="30"/>
         <source>refused, nothing was written: %1</source>
         <translation>abgelehnt, nichts wurde geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="33"/>
+        <location filename="../lib/model/profileapplier.cpp" line="34"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="37"/>
+        <location filename="../lib/model/profileapplier.cpp" line="38"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>geändert %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="39"/>
+        <location filename="../lib/model/profileapplier.cpp" line="40"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FEHLER %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="41"/>
+        <location filename="../lib/model/profileapplier.cpp" line="42"/>
         <source>would send %1</source>
         <translation>würde %1 senden</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="43"/>
+        <location filename="../lib/model/profileapplier.cpp" line="44"/>
         <source>skipped %1</source>
         <translation>%1 übersprungen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <location filename="../lib/model/profileapplier.cpp" line="46"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>abgebrochen: die übrigen Werte wurden nicht geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n Unterschied</numerusform>
@@ -2552,34 +2598,74 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profileapplier.cpp" line="48"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 geändert, %2 bereits richtig, %3 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="69"/>
+        <location filename="../lib/model/profileapplier.cpp" line="77"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>das Profil ist für %1, dieses Gerät ist %2 (erzwingen, um die gemeinsamen Einstellungen anzuwenden)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="91"/>
+        <location filename="../lib/model/profileapplier.cpp" line="90"/>
         <source>monitor-only mode is on</source>
         <translation>der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="108"/>
+        <location filename="../lib/model/profileapplier.cpp" line="131"/>
         <source>reading the device</source>
         <translation>Gerät wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="180"/>
+        <location filename="../lib/model/profileapplier.cpp" line="188"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="182"/>
+        <location filename="../lib/model/profileapplier.cpp" line="190"/>
         <source>unreadable value</source>
         <translation>unlesbarer Wert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="58"/>
+        <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
+%1</source>
+        <translation>das Profil würde die Grenzen seiner Einstellungen verletzen (MIT ≤ MAT, MIT ≤ ausgewählte Temperatur ≤ MAT):
+%1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="84"/>
+        <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
+        <translation>keine der Einstellungen des Profils gibt es an diesem %1 (übersprungen: %2)</translation>
+    </message>
+</context>
+<context>
+    <name>ProfileLimits</name>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <source>in the profile</source>
+        <translation>im Profil</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <source>on the device now</source>
+        <translation>jetzt am Gerät</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="65"/>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="83"/>
+        <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
+        <translation>%1 ist unbekannt (das Gerät hat nicht geantwortet), daher lässt sich %2 nicht dagegen prüfen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="90"/>
+        <source>%1 is above %2</source>
+        <translation>%1 liegt über %2</translation>
     </message>
 </context>
 <context>
@@ -2717,53 +2803,53 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>ValueCodec</name>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="42"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="43"/>
         <source>%1 to %2%3</source>
         <translation>%1 bis %2%3</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="46"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="47"/>
         <source> in steps of %1</source>
         <translation> in Schritten von %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="48"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="49"/>
         <source>, or %1</source>
         <translation>, oder %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="56"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="57"/>
         <source>one of %1</source>
         <translation>einer der Werte %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="59"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="60"/>
         <source>no value (the command carries %1)</source>
         <translation>kein Wert (der Befehl enthält %1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="62"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="63"/>
         <source>nothing: it is read-only</source>
         <translation>nichts: schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="71"/>
-        <location filename="../lib/protocol/valuecodec.cpp" line="77"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="72"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="91"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="92"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 für %2 (%3) abgelehnt: zulässig ist %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="183"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; ist keine Verzögerung in Sekunden wie 1.6 oder 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="188"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; ist keine ganze Zahl; für %2 zulässig: %3</translation>
     </message>
@@ -4946,16 +5032,17 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="66"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="104"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="109"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="118"/>
         <source>&lt;b&gt;Refused:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Abgelehnt:&lt;/b&gt; %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="111"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="123"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Profil von %1 (%2, Software %3), erstellt: %4. %n Einstellung weicht vom Gerät ab.</numerusform>
@@ -4963,7 +5050,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="117"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="129"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Probelauf: %n Telegramm würde gesendet; nichts wurde geschrieben.</numerusform>
@@ -4971,14 +5058,24 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="121"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="133"/>
         <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches.</source>
         <translation>&lt;b&gt;Angewendet.&lt;/b&gt; Jeder geschriebene Wert wurde zurückgelesen und stimmt überein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="122"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="134"/>
         <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; See the report below.</source>
         <translation>&lt;b&gt;Nicht alles wurde angewendet.&lt;/b&gt; Siehe Bericht unten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="102"/>
+        <source>The profile would break the device&apos;s limits; see above</source>
+        <translation>Das Profil würde die Grenzen des Geräts verletzen; siehe oben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="120"/>
+        <source>&lt;b&gt;This profile cannot be applied to this device:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Dieses Profil lässt sich auf dieses Gerät nicht anwenden:&lt;/b&gt; %1</translation>
     </message>
 </context>
 <context>
