@@ -40,22 +40,22 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="196"/>
+        <location filename="../lib/protocol/catalog.cpp" line="206"/>
         <source>Unknown NAK code %1</source>
         <translation>Unbekannter NAK-Code %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="201"/>
+        <location filename="../lib/protocol/catalog.cpp" line="211"/>
         <source>Unknown station error %1</source>
         <translation>Unbekannter Stationsfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="210"/>
+        <location filename="../lib/protocol/catalog.cpp" line="220"/>
         <source>Unknown port error %1</source>
         <translation>Unbekannter Portfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <location filename="../lib/protocol/catalog.cpp" line="225"/>
         <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
         <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt; mit W-ECV zurücksetzen und im SFR-Handbuch nachsehen)</translation>
     </message>
@@ -225,12 +225,12 @@
         <translation>Stunden mit am Port angeschlossenem Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
         <source>No-tool hours</source>
         <translation>Stunden ohne Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
         <source>Hours the port was powered with no tool</source>
         <translation>Stunden, in denen der Port ohne Werkzeug eingeschaltet war</translation>
     </message>
@@ -255,12 +255,12 @@
         <translation>Stunden im Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
         <source>Work hours</source>
         <translation>Arbeitsstunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
         <source>Hours working</source>
         <translation>Stunden in Betrieb</translation>
     </message>
@@ -675,22 +675,22 @@
         <translation>Stoppt den Vorschub (kontinuierlicher Modus)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
         <source>Feeding length</source>
         <translation>Vorschublänge</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
         <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
         <translation>Vorschublänge pro Start im diskontinuierlichen Modus, in Zehntelmillimetern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
         <source>Feeding speed</source>
         <translation>Vorschubgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
         <source>Feeding speed, in tenths of a millimetre per second</source>
         <translation>Vorschubgeschwindigkeit, in Zehntelmillimetern pro Sekunde</translation>
     </message>
@@ -846,216 +846,236 @@
     </message>
     <message>
         <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <source>Reset partial plugged hours</source>
+        <translation>Teilzähler Einschaltstunden zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
         <source>Feeding hours (total)</source>
         <translation>Vorschubstunden (gesamt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
         <source>Hours feeding, total counter</source>
         <translation>Stunden mit Vorschub, Gesamtzähler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <source>Feeding hours</source>
+        <translation>Vorschubstunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
         <source>Feeding hours (partial)</source>
         <translation>Vorschubstunden (Teilzähler)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
         <source>Hours feeding since the partial counter was reset</source>
         <translation>Stunden mit Vorschub seit dem Zurücksetzen des Teilzählers</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
         <source>Reset feeding hours (partial)</source>
         <translation>Vorschubstunden (Teilzähler) zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
         <source>Resets the partial feeding-hours counter</source>
         <translation>Setzt den Teilzähler der Vorschubstunden zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
         <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>Der Teilzähler der Vorschubstunden wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <source>Reset partial feeding hours</source>
+        <translation>Teilzähler Vorschubstunden zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
         <source>Fed length (total)</source>
         <translation>Vorgeschobene Länge (gesamt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
         <source>Metres of wire fed, total counter</source>
         <translation>Vorgeschobener Draht in Metern, Gesamtzähler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
         <source>Fed length (partial)</source>
         <translation>Vorgeschobene Länge (Teilzähler)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
         <source>Metres of wire fed since the partial counter was reset</source>
         <translation>Vorgeschobener Draht in Metern seit dem Zurücksetzen des Teilzählers</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
         <source>Reset fed length (partial)</source>
         <translation>Vorgeschobene Länge (Teilzähler) zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
         <source>Resets the partial fed-length counter</source>
         <translation>Setzt den Teilzähler der vorgeschobenen Länge zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
         <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
         <translation>Der Teilzähler der vorgeschobenen Länge wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <source>Reset partial fed length</source>
+        <translation>Teilzähler vorgeschobene Länge zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
         <source>No tool</source>
         <translation>Kein Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
         <source>BCC error: the frame failed the sum check</source>
         <translation>BCC-Fehler: das Telegramm hat die Prüfsummenkontrolle nicht bestanden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
         <source>Format error: the frame has the wrong size or layout</source>
         <translation>Formatfehler: das Telegramm hat die falsche Länge oder den falschen Aufbau</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
         <source>Out of range: the value is outside the allowed limits or off-step</source>
         <translation>Außerhalb des Bereichs: der Wert liegt außerhalb der zulässigen Grenzen oder nicht im Schrittraster</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
         <source>Control error: the command is not accepted by this device</source>
         <translation>Steuerungsfehler: dieses Gerät nimmt den Befehl nicht an</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
         <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
         <translation>Der Robotermodus ist aus: schalten Sie im Stationsmenü &quot;Robot mode&quot; ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
         <source>Device model error: the device model is unknown</source>
         <translation>Gerätemodellfehler: das Gerätemodell ist unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
         <source>Undefined error</source>
         <translation>Undefinierter Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
         <source>Stopped by transformer overload</source>
         <translation>Wegen Überlast des Transformators gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
         <source>Temperature sensor error</source>
         <translation>Fehler des Temperatursensors</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
         <source>Memory error</source>
         <translation>Speicherfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
         <source>Mains frequency error</source>
         <translation>Netzfrequenzfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
         <source>Device model error</source>
         <translation>Gerätemodellfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
         <source>MCU tools not connected</source>
         <translation>Werkzeug-MCU nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
         <source>Warning: transformer overload</source>
         <translation>Warnung: Überlast des Transformators</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
         <source>Short circuit</source>
         <translation>Kurzschluss</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
         <source>Short circuit, not recoverable: restart the station</source>
         <translation>Kurzschluss, nicht behebbar: Station neu starten</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
         <source>Open circuit</source>
         <translation>Leitungsunterbrechung</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
         <source>Tool not accepted</source>
         <translation>Werkzeug nicht akzeptiert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
         <source>Detecting tool</source>
         <translation>Werkzeug wird erkannt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
         <source>Stopped at maximum power</source>
         <translation>Bei maximaler Leistung gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
         <source>Stopped by transistor (MOS) overload</source>
         <translation>Wegen Überlast des Transistors (MOS) gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
         <source>Warning: transistor (MOS) overload</source>
         <translation>Warnung: Überlast des Transistors (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
         <source>No error</source>
         <translation>Kein Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
         <source>Sleep</source>
         <translation>Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>Hibernation</source>
         <translation>Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>Suction on</source>
         <translation>Absaugung ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor vorwärts (Dosieren)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
         <source>Motor backward</source>
         <translation>Motor rückwärts</translation>
     </message>
@@ -1591,102 +1611,102 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="61"/>
+        <location filename="../lib/model/consolemodel.cpp" line="65"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>unverändert gesendet (kein gültiges Telegramm)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="77"/>
+        <location filename="../lib/model/consolemodel.cpp" line="81"/>
         <source>stray: answers no pending request</source>
         <translation>verwaist: beantwortet keine offene Anfrage</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="167"/>
+        <location filename="../lib/model/consolemodel.cpp" line="205"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="169"/>
+        <location filename="../lib/model/consolemodel.cpp" line="207"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="171"/>
+        <location filename="../lib/model/consolemodel.cpp" line="209"/>
         <source>frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="173"/>
+        <location filename="../lib/model/consolemodel.cpp" line="211"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="175"/>
+        <location filename="../lib/model/consolemodel.cpp" line="213"/>
         <source>note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="239"/>
+        <location filename="../lib/model/consolemodel.cpp" line="277"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -2492,41 +2512,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="40"/>
-        <location filename="../lib/model/session.cpp" line="111"/>
-        <location filename="../lib/model/session.cpp" line="114"/>
+        <location filename="../lib/model/session.cpp" line="38"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="110"/>
-        <location filename="../lib/model/session.cpp" line="121"/>
-        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="108"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="144"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="227"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -2698,7 +2718,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="411"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -3234,7 +3254,7 @@ Dauerhaft mit dieser udev-Regel:
     </message>
     <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
@@ -3379,52 +3399,52 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="307"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="309"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="328"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="299"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="366"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="367"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="390"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="392"/>
         <source>paused: new traffic is held</source>
         <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n Rohbyte</numerusform>
@@ -3432,17 +3452,17 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="401"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: nicht gesendet, nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="405"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="418"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: gesendet, warte auf Antwort…</translation>
     </message>

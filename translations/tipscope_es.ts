@@ -40,22 +40,22 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="196"/>
+        <location filename="../lib/protocol/catalog.cpp" line="206"/>
         <source>Unknown NAK code %1</source>
         <translation>Código NAK desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="201"/>
+        <location filename="../lib/protocol/catalog.cpp" line="211"/>
         <source>Unknown station error %1</source>
         <translation>Error de estación desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="210"/>
+        <location filename="../lib/protocol/catalog.cpp" line="220"/>
         <source>Unknown port error %1</source>
         <translation>Error de puerto desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <location filename="../lib/protocol/catalog.cpp" line="225"/>
         <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
         <translation>Error del alimentador %1 (no figura en la guía del SFR; bórrelo con W-ECV y consulte el manual del SFR)</translation>
     </message>
@@ -225,12 +225,12 @@
         <translation>Horas con una herramienta conectada al puerto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
         <source>No-tool hours</source>
         <translation>Horas sin herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
         <source>Hours the port was powered with no tool</source>
         <translation>Horas que el puerto estuvo con tensión sin herramienta</translation>
     </message>
@@ -255,12 +255,12 @@
         <translation>Horas en modo hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
         <source>Work hours</source>
         <translation>Horas de trabajo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
         <source>Hours working</source>
         <translation>Horas trabajando</translation>
     </message>
@@ -675,22 +675,22 @@
         <translation>Detiene la alimentación (modo continuo)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
         <source>Feeding length</source>
         <translation>Longitud de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
         <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
         <translation>Longitud alimentada en cada inicio en modo discontinuo, en décimas de milímetro</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
         <source>Feeding speed</source>
         <translation>Velocidad de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
         <source>Feeding speed, in tenths of a millimetre per second</source>
         <translation>Velocidad de alimentación, en décimas de milímetro por segundo</translation>
     </message>
@@ -846,216 +846,236 @@
     </message>
     <message>
         <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <source>Reset partial plugged hours</source>
+        <translation>Poner a cero las horas conectado parciales</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
         <source>Feeding hours (total)</source>
         <translation>Horas de alimentación (total)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
         <source>Hours feeding, total counter</source>
         <translation>Horas alimentando, contador total</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <source>Feeding hours</source>
+        <translation>Horas de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
         <source>Feeding hours (partial)</source>
         <translation>Horas de alimentación (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
         <source>Hours feeding since the partial counter was reset</source>
         <translation>Horas alimentando desde la última puesta a cero del contador parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
         <source>Reset feeding hours (partial)</source>
         <translation>Poner a cero horas de alimentación (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
         <source>Resets the partial feeding-hours counter</source>
         <translation>Pone a cero el contador parcial de horas de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
         <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>El contador parcial de horas de alimentación vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <source>Reset partial feeding hours</source>
+        <translation>Poner a cero las horas de alimentación parciales</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
         <source>Fed length (total)</source>
         <translation>Longitud alimentada (total)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
         <source>Metres of wire fed, total counter</source>
         <translation>Metros de hilo alimentados, contador total</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
         <source>Fed length (partial)</source>
         <translation>Longitud alimentada (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
         <source>Metres of wire fed since the partial counter was reset</source>
         <translation>Metros de hilo alimentados desde la última puesta a cero del contador parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
         <source>Reset fed length (partial)</source>
         <translation>Poner a cero longitud alimentada (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
         <source>Resets the partial fed-length counter</source>
         <translation>Pone a cero el contador parcial de longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
         <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
         <translation>El contador parcial de longitud alimentada vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <source>Reset partial fed length</source>
+        <translation>Poner a cero la longitud alimentada parcial</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
         <source>No tool</source>
         <translation>Sin herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
         <source>BCC error: the frame failed the sum check</source>
         <translation>Error de BCC: la trama no superó la comprobación de suma</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
         <source>Format error: the frame has the wrong size or layout</source>
         <translation>Error de formato: la trama tiene un tamaño o una estructura incorrectos</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
         <source>Out of range: the value is outside the allowed limits or off-step</source>
         <translation>Fuera de rango: el valor está fuera de los límites permitidos o no respeta el paso</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
         <source>Control error: the command is not accepted by this device</source>
         <translation>Error de control: este equipo no acepta el comando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
         <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
         <translation>El modo robot está desactivado: active &quot;Robot mode&quot; en el menú de la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
         <source>Device model error: the device model is unknown</source>
         <translation>Error de modelo de equipo: el modelo del equipo es desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
         <source>Undefined error</source>
         <translation>Error no definido</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
         <source>Stopped by transformer overload</source>
         <translation>Detenido por sobrecarga del transformador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
         <source>Temperature sensor error</source>
         <translation>Error del sensor de temperatura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
         <source>Memory error</source>
         <translation>Error de memoria</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
         <source>Mains frequency error</source>
         <translation>Error de frecuencia de red</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
         <source>Device model error</source>
         <translation>Error de modelo de equipo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
         <source>MCU tools not connected</source>
         <translation>Herramientas MCU no conectadas</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
         <source>Warning: transformer overload</source>
         <translation>Advertencia: sobrecarga del transformador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
         <source>Short circuit</source>
         <translation>Cortocircuito</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
         <source>Short circuit, not recoverable: restart the station</source>
         <translation>Cortocircuito no recuperable: reinicie la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
         <source>Open circuit</source>
         <translation>Circuito abierto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
         <source>Tool not accepted</source>
         <translation>Herramienta no aceptada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
         <source>Detecting tool</source>
         <translation>Detectando herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
         <source>Stopped at maximum power</source>
         <translation>Detenido a potencia máxima</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
         <source>Stopped by transistor (MOS) overload</source>
         <translation>Detenido por sobrecarga del transistor (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
         <source>Warning: transistor (MOS) overload</source>
         <translation>Advertencia: sobrecarga del transistor (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
         <source>No error</source>
         <translation>Sin error</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
         <source>Sleep</source>
         <translation>Reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>Hibernation</source>
         <translation>Hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>Suction on</source>
         <translation>Succión activada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor adelante (dispensado)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
         <source>Motor backward</source>
         <translation>Motor atrás</translation>
     </message>
@@ -1592,102 +1612,102 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="61"/>
+        <location filename="../lib/model/consolemodel.cpp" line="65"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>enviado tal cual (no es una trama válida)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="77"/>
+        <location filename="../lib/model/consolemodel.cpp" line="81"/>
         <source>stray: answers no pending request</source>
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="167"/>
+        <location filename="../lib/model/consolemodel.cpp" line="205"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="169"/>
+        <location filename="../lib/model/consolemodel.cpp" line="207"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="171"/>
+        <location filename="../lib/model/consolemodel.cpp" line="209"/>
         <source>frame</source>
         <translation>trama</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="173"/>
+        <location filename="../lib/model/consolemodel.cpp" line="211"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="175"/>
+        <location filename="../lib/model/consolemodel.cpp" line="213"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="239"/>
+        <location filename="../lib/model/consolemodel.cpp" line="277"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -2493,41 +2513,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="40"/>
-        <location filename="../lib/model/session.cpp" line="111"/>
-        <location filename="../lib/model/session.cpp" line="114"/>
+        <location filename="../lib/model/session.cpp" line="38"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="110"/>
-        <location filename="../lib/model/session.cpp" line="121"/>
-        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="108"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="144"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="227"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -2699,7 +2719,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="411"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -3235,7 +3255,7 @@ Hágalo permanente con esta regla de udev:
     </message>
     <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
@@ -3380,52 +3400,52 @@ Hágalo permanente con esta regla de udev:
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="307"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="309"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="328"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="299"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="366"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="367"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="390"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="392"/>
         <source>paused: new traffic is held</source>
         <translation>en pausa: el tráfico nuevo se retiene</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n byte en bruto</numerusform>
@@ -3433,17 +3453,17 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="401"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: no enviado, sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="405"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: no enviado, el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="418"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: enviado, esperando la respuesta…</translation>
     </message>

@@ -40,7 +40,7 @@ QList<Parameter *> StationModel::stationSettings() const {
 QList<Parameter *> StationModel::dispensingSettings() const {
     QList<Parameter *> out;
     for (Parameter *p : parameters())
-        if (p->meta().group == QLatin1String("dispensing"))
+        if (p->meta().group == Group::Dispensing)
             out.append(p);
     return out;
 }

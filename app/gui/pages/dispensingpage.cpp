@@ -95,7 +95,7 @@ void DispensingPage::rebuild() {
     layout->addWidget(m_feedback);
     layout->addStretch(1);
     for (Parameter *p : st->parameters())
-        if (p->meta().group == QLatin1String("dispensing") || p->code() == "FST")
+        if (p->meta().group == protocol::Group::Dispensing || p->code() == "FST")
             connect(p, &Parameter::valueChanged, this, &DispensingPage::refreshLive);
     for (QPushButton *b : std::as_const(m_writeButtons))
         b->setEnabled(!m_session.monitorOnly());
