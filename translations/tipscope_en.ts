@@ -45,7 +45,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="234"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -87,9 +87,9 @@
     </message>
 </context>
 <context>
-    <name>tipscope::gui::ErrorsPage</name>
+    <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>
