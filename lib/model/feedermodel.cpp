@@ -37,6 +37,24 @@ QList<Parameter *> FeederModel::counters() const {
     return parameters(Group::Counter);
 }
 
+QList<FeederModel::CounterRow> FeederModel::counterRows() const {
+    QList<CounterRow> rows;
+    QStringList keys;
+    for (Parameter *p : counters()) {
+        const CommandSpec &s = p->meta();
+        const QString key = s.quantity.isEmpty() ? s.name : s.quantity;
+        if (!keys.contains(key)) {
+            keys.append(key);
+            rows.append(CounterRow{key, nullptr, nullptr, nullptr});
+        }
+        CounterRow &row = rows[keys.indexOf(key)];
+        (s.partial ? row.partial : row.total) = p;
+        if (s.partial)
+            row.reset = action(p->code());
+    }
+    return rows;
+}
+
 QList<Parameter *> FeederModel::liveParameters() const {
     return writable(parameters(Group::Feeder), false);
 }

@@ -12,12 +12,23 @@ namespace tipscope::model {
 class FeederModel : public DeviceModel {
     Q_OBJECT
 public:
+    // The counters as a table shows them: what is counted (the catalog's English "quantity",
+    // or the counter's name), its total and its partial counter as the catalog pairs them
+    // (either may be missing), and the action that resets the partial.
+    struct CounterRow {
+        QString quantity;
+        Parameter *total = nullptr;
+        Parameter *partial = nullptr;
+        Action *reset = nullptr;
+    };
+
     FeederModel(link::RequestQueue &queue, const link::DeviceInfo &info, QObject *parent = nullptr);
     FeederModel(link::RequestQueue &queue, const link::DeviceInfo &info,
                 const protocol::Catalog &catalog, QObject *parent = nullptr);
 
-    [[nodiscard]] QList<Parameter *> settings() const;       // what the feeder group can set
-    [[nodiscard]] QList<Parameter *> counters() const;       // totals and partials
+    [[nodiscard]] QList<Parameter *> settings() const; // what the feeder group can set
+    [[nodiscard]] QList<Parameter *> counters() const; // totals and partials
+    [[nodiscard]] QList<CounterRow> counterRows() const;
     [[nodiscard]] QList<Parameter *> liveParameters() const; // feeding status, fed length
     [[nodiscard]] std::optional<bool> isFeeding() const;
     [[nodiscard]] std::optional<qint64> fedLength() const; // tenths of a millimetre

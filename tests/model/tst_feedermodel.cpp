@@ -12,6 +12,7 @@ class TestFeederModel : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void listsAreTheCatalogsFeederAndCounterGroups();
+    void countersPairIntoRowsWithThePartialsReset();
     void valuesAreFoundByRole();
     void feedingCommandsReachTheFeeder();
     void errorHasItsWordsLevelAndReset();
@@ -25,6 +26,20 @@ void TestFeederModel::listsAreTheCatalogsFeederAndCounterGroups() {
     QCOMPARE(codesOf(fd->liveParameters()), (QList<QByteArray>{"FDS", "FDL"}));
     QCOMPARE(codesOf(fd->counters()),
              (QList<QByteArray>{"CPT", "CPP", "CFT", "CFP", "CTT", "CTP"}));
+}
+
+void TestFeederModel::countersPairIntoRowsWithThePartialsReset() {
+    SimFixture f(singleDevice(QStringLiteral("SFR")));
+    auto fd = f.feeder();
+    QStringList rows;
+    for (const FeederModel::CounterRow &r : fd->counterRows())
+        rows.append(QStringLiteral("%1: %2 %3 %4")
+                        .arg(r.quantity, QString::fromLatin1(r.total->code()),
+                             QString::fromLatin1(r.partial->code()),
+                             QString::fromLatin1(r.reset->code())));
+    QCOMPARE(rows, (QStringList{"Plugged hours: CPT CPP CPP", "Feeding hours: CFT CFP CFP",
+                                "Fed length: CTT CTP CTP"}));
+    QVERIFY(fd->counterRows().first().reset->isDangerous());
 }
 
 void TestFeederModel::valuesAreFoundByRole() {

@@ -24,31 +24,6 @@ using namespace tipscope::model;
 
 namespace {
 
-// One row of a feeder table: a quantity with its total and its resettable partial counter, as
-// the catalog pairs them (the same "quantity"; "partial" marks the second). A counter without a
-// quantity is a row of its own, named by itself.
-struct CounterRow {
-    QString label;
-    Parameter *total = nullptr;
-    Parameter *partial = nullptr;
-};
-
-QList<CounterRow> counterRows(const QList<Parameter *> &counters) {
-    QList<CounterRow> rows;
-    QStringList keys;
-    for (Parameter *p : counters) {
-        const protocol::CommandSpec &s = p->meta();
-        const QString key = s.quantity.isEmpty() ? s.name : s.quantity;
-        if (!keys.contains(key)) {
-            keys.append(key);
-            rows.append(CounterRow{protocol::catalogText(key), nullptr, nullptr});
-        }
-        CounterRow &row = rows[keys.indexOf(key)];
-        (s.partial ? row.partial : row.total) = p;
-    }
-    return rows;
-}
-
 // The port's counter from the same catalog entry as `row` (another port's), if it has one.
 Parameter *sameCounter(const PortModel &port, const Parameter &row) {
     if (row.spec().port == 0)
@@ -275,19 +250,19 @@ void CountersPage::addFeeder(FeederModel *feeder) {
     auto *box = new QGroupBox(tr("Solder feeder %1").arg(feeder->displayName()));
     QTableWidget *table = makeTable(QStringLiteral("feederCounters"),
                                     tr("Counters of %1").arg(feeder->displayName()));
-    const QList<CounterRow> rows = counterRows(feeder->counters());
+    const QList<FeederModel::CounterRow> rows = feeder->counterRows();
     table->setRowCount(int(rows.size()));
     table->setColumnCount(2);
     table->setHorizontalHeaderLabels({tr("Total"), tr("Partial")});
     auto *buttons = new QHBoxLayout;
     for (int r = 0; r < rows.size(); ++r) {
-        const CounterRow &row = rows.at(r);
-        table->setVerticalHeaderItem(r, new QTableWidgetItem(row.label));
+        const FeederModel::CounterRow &row = rows.at(r);
+        table->setVerticalHeaderItem(r, new QTableWidgetItem(protocol::catalogText(row.quantity)));
         if (row.total)
             bindCell(table, r, 0, row.total);
         if (row.partial)
             bindCell(table, r, 1, row.partial);
-        const Action *reset = row.partial ? feeder->action(row.partial->code()) : nullptr;
+        const Action *reset = row.reset;
         if (!reset)
             continue;
         auto *button = new QPushButton(buttonText(*reset) + QStringLiteral("…"));
