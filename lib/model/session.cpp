@@ -168,9 +168,9 @@ void Session::identify(std::optional<int> address) {
         for (const DeviceInfo &d : m_discovery->devices())
             if (d.address == address)
                 found.append(d);
-        if (found.isEmpty() && address) {
-            // Not a factory address: ask it directly.
-            const protocol::CommandSpec *modelName = m_catalog.command(protocol::Role::ModelName);
+        // Not a factory address: ask it directly (a catalog without a model name cannot).
+        const protocol::CommandSpec *modelName = m_catalog.command(protocol::Role::ModelName);
+        if (found.isEmpty() && address && modelName) {
             Reply *r = m_line->queue().enqueue(
                 Request::read(address, modelName->pattern.toLatin1()), this);
             connect(r, &Reply::finished, this, [this, r, address] {
