@@ -1826,17 +1826,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="64"/>
+        <location filename="../lib/model/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="82"/>
+        <location filename="../lib/model/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 hat keinen Befehl %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="99"/>
+        <location filename="../lib/model/feedermodel.cpp" line="117"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -3495,194 +3495,194 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="106"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>When the counters were read</source>
         <translation>Zeitpunkt der Zählerabfrage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="108"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="110"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="111"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="113"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
         <source>Refresh counters</source>
         <translation>Zähler aktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="115"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
         <source>&amp;Export CSV…</source>
         <translation>CSV e&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="116"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="117"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
         <source>Export counters as CSV</source>
         <translation>Zähler als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="127"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="102"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="179"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="154"/>
         <source>Reading the counters…</source>
         <translation>Zähler werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="182"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
         <source>Last reading at %1</source>
         <translation>Letzte Abfrage um %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="184"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
         <source>Waiting for the first reading…</source>
         <translation>Warte auf die erste Abfrage…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="244"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="219"/>
         <source>Station %1</source>
         <translation>Station %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="277"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="221"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
         <source>Counters of %1</source>
         <translation>Zähler von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="262"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="275"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="250"/>
         <source>Solder feeder %1</source>
         <translation>Lotdrahtvorschub %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
         <source>Partial</source>
         <translation>Teilzähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="298"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="325"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="300"/>
         <source>Last read failed: %1</source>
         <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="303"/>
         <source>Read at %1</source>
         <translation>Gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="306"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="360"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="335"/>
         <source>Reset partial counter</source>
         <translation>Teilzähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="361"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
         <source>Reset “%1” on %2?</source>
         <translation>„%1“ an %2 zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="363"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="338"/>
         <source>It now reads %1.</source>
         <translation>Er steht jetzt auf %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="365"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="340"/>
         <source>The total counter is not affected.</source>
         <translation>Der Gesamtzähler bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="341"/>
         <source>Reset counter</source>
         <translation>Zähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 Es wurde nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 Nicht zurückgesetzt: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="380"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="355"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 %2 wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="361"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="400"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="375"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="420"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="427"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="402"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="420"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="425"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="400"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="428"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="403"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>

@@ -1827,17 +1827,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="64"/>
+        <location filename="../lib/model/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="82"/>
+        <location filename="../lib/model/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 no tiene el comando %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="99"/>
+        <location filename="../lib/model/feedermodel.cpp" line="117"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -3496,194 +3496,194 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="106"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>When the counters were read</source>
         <translation>Cuándo se leyeron los contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="108"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="110"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="111"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="113"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
         <source>Refresh counters</source>
         <translation>Actualizar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="115"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
         <source>&amp;Export CSV…</source>
         <translation>E&amp;xportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="116"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="117"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
         <source>Export counters as CSV</source>
         <translation>Exportar contadores como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="127"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="102"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="179"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="154"/>
         <source>Reading the counters…</source>
         <translation>Leyendo los contadores…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="182"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
         <source>Last reading at %1</source>
         <translation>Última lectura a las %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="184"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
         <source>Waiting for the first reading…</source>
         <translation>Esperando la primera lectura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="244"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="219"/>
         <source>Station %1</source>
         <translation>Estación %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="277"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="221"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
         <source>Counters of %1</source>
         <translation>Contadores de %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="262"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="275"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="250"/>
         <source>Solder feeder %1</source>
         <translation>Alimentador de estaño %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
         <source>Partial</source>
         <translation>Parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="298"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="325"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="300"/>
         <source>Last read failed: %1</source>
         <translation>Falló la última lectura: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="303"/>
         <source>Read at %1</source>
         <translation>Leído: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="306"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="360"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="335"/>
         <source>Reset partial counter</source>
         <translation>Poner a cero el contador parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="361"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
         <source>Reset “%1” on %2?</source>
         <translation>¿Poner a cero «%1» en %2?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="363"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="338"/>
         <source>It now reads %1.</source>
         <translation>Ahora marca %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="365"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="340"/>
         <source>The total counter is not affected.</source>
         <translation>El contador total no se ve afectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="341"/>
         <source>Reset counter</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 No se puso nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 No se puso a cero: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="380"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="355"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 Poniendo a cero %2…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="361"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 puesto a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 no se puso a cero: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="400"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="375"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="420"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="427"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="402"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="420"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="425"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="400"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="428"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="403"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>
