@@ -40,22 +40,22 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="196"/>
+        <location filename="../lib/protocol/catalog.cpp" line="206"/>
         <source>Unknown NAK code %1</source>
         <translation>Unbekannter NAK-Code %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="201"/>
+        <location filename="../lib/protocol/catalog.cpp" line="211"/>
         <source>Unknown station error %1</source>
         <translation>Unbekannter Stationsfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="210"/>
+        <location filename="../lib/protocol/catalog.cpp" line="220"/>
         <source>Unknown port error %1</source>
         <translation>Unbekannter Portfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <location filename="../lib/protocol/catalog.cpp" line="225"/>
         <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
         <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt; mit W-ECV zurücksetzen und im SFR-Handbuch nachsehen)</translation>
     </message>
@@ -225,12 +225,12 @@
         <translation>Stunden mit am Port angeschlossenem Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
         <source>No-tool hours</source>
         <translation>Stunden ohne Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
         <source>Hours the port was powered with no tool</source>
         <translation>Stunden, in denen der Port ohne Werkzeug eingeschaltet war</translation>
     </message>
@@ -255,12 +255,12 @@
         <translation>Stunden im Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
         <source>Work hours</source>
         <translation>Arbeitsstunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
         <source>Hours working</source>
         <translation>Stunden in Betrieb</translation>
     </message>
@@ -675,22 +675,22 @@
         <translation>Stoppt den Vorschub (kontinuierlicher Modus)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
         <source>Feeding length</source>
         <translation>Vorschublänge</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
         <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
         <translation>Vorschublänge pro Start im diskontinuierlichen Modus, in Zehntelmillimetern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
         <source>Feeding speed</source>
         <translation>Vorschubgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
         <source>Feeding speed, in tenths of a millimetre per second</source>
         <translation>Vorschubgeschwindigkeit, in Zehntelmillimetern pro Sekunde</translation>
     </message>
@@ -845,217 +845,217 @@
         <translation>Der Teilzähler der Einschaltstunden wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
         <source>Feeding hours (total)</source>
         <translation>Vorschubstunden (gesamt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
         <source>Hours feeding, total counter</source>
         <translation>Stunden mit Vorschub, Gesamtzähler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
         <source>Feeding hours (partial)</source>
         <translation>Vorschubstunden (Teilzähler)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
         <source>Hours feeding since the partial counter was reset</source>
         <translation>Stunden mit Vorschub seit dem Zurücksetzen des Teilzählers</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
         <source>Reset feeding hours (partial)</source>
         <translation>Vorschubstunden (Teilzähler) zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
         <source>Resets the partial feeding-hours counter</source>
         <translation>Setzt den Teilzähler der Vorschubstunden zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
         <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>Der Teilzähler der Vorschubstunden wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
         <source>Fed length (total)</source>
         <translation>Vorgeschobene Länge (gesamt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
         <source>Metres of wire fed, total counter</source>
         <translation>Vorgeschobener Draht in Metern, Gesamtzähler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
         <source>Fed length (partial)</source>
         <translation>Vorgeschobene Länge (Teilzähler)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
         <source>Metres of wire fed since the partial counter was reset</source>
         <translation>Vorgeschobener Draht in Metern seit dem Zurücksetzen des Teilzählers</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
         <source>Reset fed length (partial)</source>
         <translation>Vorgeschobene Länge (Teilzähler) zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
         <source>Resets the partial fed-length counter</source>
         <translation>Setzt den Teilzähler der vorgeschobenen Länge zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
         <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
         <translation>Der Teilzähler der vorgeschobenen Länge wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
         <source>No tool</source>
         <translation>Kein Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
         <source>BCC error: the frame failed the sum check</source>
         <translation>BCC-Fehler: das Telegramm hat die Prüfsummenkontrolle nicht bestanden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
         <source>Format error: the frame has the wrong size or layout</source>
         <translation>Formatfehler: das Telegramm hat die falsche Länge oder den falschen Aufbau</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
         <source>Out of range: the value is outside the allowed limits or off-step</source>
         <translation>Außerhalb des Bereichs: der Wert liegt außerhalb der zulässigen Grenzen oder nicht im Schrittraster</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
         <source>Control error: the command is not accepted by this device</source>
         <translation>Steuerungsfehler: dieses Gerät nimmt den Befehl nicht an</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
         <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
         <translation>Der Robotermodus ist aus: schalten Sie im Stationsmenü &quot;Robot mode&quot; ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
         <source>Device model error: the device model is unknown</source>
         <translation>Gerätemodellfehler: das Gerätemodell ist unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
         <source>Undefined error</source>
         <translation>Undefinierter Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
         <source>Stopped by transformer overload</source>
         <translation>Wegen Überlast des Transformators gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
         <source>Temperature sensor error</source>
         <translation>Fehler des Temperatursensors</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
         <source>Memory error</source>
         <translation>Speicherfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
         <source>Mains frequency error</source>
         <translation>Netzfrequenzfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
         <source>Device model error</source>
         <translation>Gerätemodellfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
         <source>MCU tools not connected</source>
         <translation>Werkzeug-MCU nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
         <source>Warning: transformer overload</source>
         <translation>Warnung: Überlast des Transformators</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
         <source>Short circuit</source>
         <translation>Kurzschluss</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
         <source>Short circuit, not recoverable: restart the station</source>
         <translation>Kurzschluss, nicht behebbar: Station neu starten</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
         <source>Open circuit</source>
         <translation>Leitungsunterbrechung</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
         <source>Tool not accepted</source>
         <translation>Werkzeug nicht akzeptiert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
         <source>Detecting tool</source>
         <translation>Werkzeug wird erkannt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
         <source>Stopped at maximum power</source>
         <translation>Bei maximaler Leistung gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
         <source>Stopped by transistor (MOS) overload</source>
         <translation>Wegen Überlast des Transistors (MOS) gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
         <source>Warning: transistor (MOS) overload</source>
         <translation>Warnung: Überlast des Transistors (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
         <source>No error</source>
         <translation>Kein Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
         <source>Sleep</source>
         <translation>Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>Hibernation</source>
         <translation>Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>Suction on</source>
         <translation>Absaugung ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor vorwärts (Dosieren)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
         <source>Motor backward</source>
         <translation>Motor rückwärts</translation>
     </message>
@@ -1068,6 +1068,26 @@
         <location filename="../lib/protocol/valuecodec.cpp" line="233"/>
         <source>none</source>
         <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <source>Reset partial plugged hours</source>
+        <translation>Teilzähler Einschaltstunden zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <source>Feeding hours</source>
+        <translation>Vorschubstunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <source>Reset partial feeding hours</source>
+        <translation>Teilzähler Vorschubstunden zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <source>Reset partial fed length</source>
+        <translation>Teilzähler vorgeschobene Länge zurücksetzen</translation>
     </message>
 </context>
 <context>
@@ -1728,24 +1748,29 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="61"/>
+        <location filename="../lib/model/devicemodel.cpp" line="69"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="62"/>
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="66"/>
+        <location filename="../lib/model/devicemodel.cpp" line="74"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <location filename="../lib/model/devicemodel.cpp" line="147"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <source>—</source>
+        <translation>—</translation>
     </message>
 </context>
 <context>
@@ -1815,27 +1840,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="93"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="86"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="95"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="88"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="97"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="90"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="99"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="92"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="101"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="94"/>
         <source>What happened</source>
         <translation>Ereignis</translation>
     </message>
@@ -1843,17 +1868,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="57"/>
+        <location filename="../lib/model/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="63"/>
+        <location filename="../lib/model/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 hat keinen Befehl %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="80"/>
+        <location filename="../lib/model/feedermodel.cpp" line="117"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -1861,87 +1886,87 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>FrameComposer</name>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="43"/>
+        <location filename="../lib/model/framecomposer.cpp" line="40"/>
         <source>%1 carries the data field %2.</source>
         <translation>%1 enthält das Datenfeld %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="46"/>
+        <location filename="../lib/model/framecomposer.cpp" line="43"/>
         <source>A write needs a data field: %1.</source>
         <translation>Ein Schreibbefehl braucht ein Datenfeld: %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="57"/>
+        <location filename="../lib/model/framecomposer.cpp" line="54"/>
         <source>On the wire this value is written %1.</source>
         <translation>Auf der Leitung wird dieser Wert als %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="72"/>
+        <location filename="../lib/model/framecomposer.cpp" line="69"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Unbekannte Gerätefamilie: der Katalog kann dieses Telegramm nicht prüfen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="80"/>
+        <location filename="../lib/model/framecomposer.cpp" line="77"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 ist im Katalog kein Schreibbefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="81"/>
+        <location filename="../lib/model/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 ist im Katalog kein Lesebefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="84"/>
+        <location filename="../lib/model/framecomposer.cpp" line="81"/>
         <source>Did you mean %1?</source>
         <translation>Meinten Sie %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="85"/>
+        <location filename="../lib/model/framecomposer.cpp" line="82"/>
         <source>It is sent as typed.</source>
         <translation>Es wird unverändert gesendet.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="90"/>
+        <location filename="../lib/model/framecomposer.cpp" line="87"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Lesebefehle haben kein Datenfeld; das Gerät kann dieses Telegramm ablehnen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="96"/>
+        <location filename="../lib/model/framecomposer.cpp" line="93"/>
         <source>Dangerous: %1</source>
         <translation>Gefährlich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="100"/>
+        <location filename="../lib/model/framecomposer.cpp" line="97"/>
         <source>Catalog check: %1</source>
         <translation>Katalogprüfung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="116"/>
+        <location filename="../lib/model/framecomposer.cpp" line="111"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="158"/>
+        <location filename="../lib/model/framecomposer.cpp" line="153"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="176"/>
+        <location filename="../lib/model/framecomposer.cpp" line="171"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>Nicht sendbar: der Befehl muss aus 3 druckbaren Zeichen bestehen, z. B. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="180"/>
+        <location filename="../lib/model/framecomposer.cpp" line="175"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>Nicht sendbar: das Datenfeld darf nur druckbare ASCII-Zeichen enthalten.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="185"/>
+        <location filename="../lib/model/framecomposer.cpp" line="180"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>Nicht sendbar: Adressen gehen von 00 bis 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="214"/>
+        <location filename="../lib/model/framecomposer.cpp" line="209"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
@@ -1949,7 +1974,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="216"/>
+        <location filename="../lib/model/framecomposer.cpp" line="211"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
@@ -2372,86 +2397,101 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>PortModel</name>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="30"/>
+        <location filename="../lib/model/portmodel.cpp" line="29"/>
         <source>Working</source>
         <translation>In Betrieb</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="32"/>
+        <location filename="../lib/model/portmodel.cpp" line="31"/>
         <source>Stand</source>
         <translation>In der Ablage</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="34"/>
+        <location filename="../lib/model/portmodel.cpp" line="33"/>
         <source>Sleep</source>
         <translation>Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="36"/>
+        <location filename="../lib/model/portmodel.cpp" line="35"/>
         <source>Hibernation</source>
         <translation>Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="44"/>
+        <location filename="../lib/model/portmodel.cpp" line="43"/>
         <source>Cooling</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="46"/>
+        <location filename="../lib/model/portmodel.cpp" line="45"/>
         <source>Suction</source>
         <translation>Absaugung</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="48"/>
+        <location filename="../lib/model/portmodel.cpp" line="47"/>
         <source>Motor forward</source>
         <translation>Motor vorwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="50"/>
+        <location filename="../lib/model/portmodel.cpp" line="49"/>
         <source>Motor backward</source>
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="100"/>
-        <location filename="../lib/model/portmodel.cpp" line="114"/>
+        <location filename="../lib/model/portmodel.cpp" line="109"/>
+        <location filename="../lib/model/portmodel.cpp" line="126"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="103"/>
+        <location filename="../lib/model/portmodel.cpp" line="115"/>
         <source>tool %1</source>
         <translation>Werkzeug %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="171"/>
-        <source>this port has no status command</source>
-        <translation>dieser Port hat keinen Statusbefehl</translation>
+        <location filename="../lib/model/portmodel.cpp" line="60"/>
+        <source>High temperature</source>
+        <translation>Übertemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="62"/>
+        <source>Low temperature</source>
+        <translation>Untertemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="63"/>
+        <source>None</source>
+        <translation>Keiner</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="187"/>
+        <source>this port has no %1 command</source>
+        <translation>dieser Port hat keinen Befehl %1</translation>
     </message>
 </context>
 <context>
     <name>ProblemLevel</name>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="42"/>
+        <location filename="../lib/model/problemlevel.cpp" line="44"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="44"/>
+        <location filename="../lib/model/problemlevel.cpp" line="46"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="46"/>
+        <location filename="../lib/model/problemlevel.cpp" line="48"/>
         <source>Info</source>
         <translation>Info</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="48"/>
+        <location filename="../lib/model/problemlevel.cpp" line="50"/>
         <source>Warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="50"/>
+        <location filename="../lib/model/problemlevel.cpp" line="52"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
@@ -2687,41 +2727,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="38"/>
-        <location filename="../lib/model/session.cpp" line="109"/>
-        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="42"/>
+        <location filename="../lib/model/session.cpp" line="113"/>
+        <location filename="../lib/model/session.cpp" line="116"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="108"/>
-        <location filename="../lib/model/session.cpp" line="119"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="123"/>
+        <location filename="../lib/model/session.cpp" line="130"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="142"/>
+        <location filename="../lib/model/session.cpp" line="146"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="219"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="211"/>
+        <location filename="../lib/model/session.cpp" line="220"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="217"/>
+        <location filename="../lib/model/session.cpp" line="226"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="234"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -2737,22 +2777,22 @@ Dauerhaft mit dieser udev-Regel:
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="71"/>
+        <location filename="../lib/model/stationmodel.cpp" line="74"/>
         <source>%1 does not support %2</source>
         <translation>%1 unterstützt %2 nicht</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="78"/>
+        <location filename="../lib/model/stationmodel.cpp" line="81"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 kann nicht im Speicher sichern</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="115"/>
+        <location filename="../lib/model/stationmodel.cpp" line="117"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="129"/>
+        <location filename="../lib/model/stationmodel.cpp" line="131"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -3605,108 +3645,78 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
-        <source>Plugged hours</source>
-        <translation>Einschaltstunden</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
-        <source>Reset partial plugged hours…</source>
-        <translation>Teilzähler Einschaltstunden zurücksetzen…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
-        <source>Feeding hours</source>
-        <translation>Vorschubstunden</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
-        <source>Reset partial feeding hours…</source>
-        <translation>Teilzähler Vorschubstunden zurücksetzen…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
-        <source>Fed length</source>
-        <translation>Vorgeschobene Länge</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
-        <source>Reset partial fed length…</source>
-        <translation>Teilzähler vorgeschobene Länge zurücksetzen…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>When the counters were read</source>
         <translation>Zeitpunkt der Zählerabfrage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
         <source>Refresh counters</source>
         <translation>Zähler aktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
         <source>&amp;Export CSV…</source>
         <translation>CSV e&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="95"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
         <source>Export counters as CSV</source>
         <translation>Zähler als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="105"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="102"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="154"/>
         <source>Reading the counters…</source>
         <translation>Zähler werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
         <source>Last reading at %1</source>
         <translation>Letzte Abfrage um %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
         <source>Waiting for the first reading…</source>
         <translation>Warte auf die erste Abfrage…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="219"/>
         <source>Station %1</source>
         <translation>Station %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="224"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="221"/>
         <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
         <source>Counters of %1</source>
         <translation>Zähler von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="235"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
@@ -3716,118 +3726,118 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Lotdrahtvorschub %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
         <source>Partial</source>
         <translation>Teilzähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="298"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="296"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="300"/>
         <source>Last read failed: %1</source>
         <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="299"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="303"/>
         <source>Read at %1</source>
         <translation>Gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="302"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="306"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="335"/>
         <source>Reset partial counter</source>
         <translation>Teilzähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
         <source>Reset “%1” on %2?</source>
         <translation>„%1“ an %2 zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="338"/>
         <source>It now reads %1.</source>
         <translation>Er steht jetzt auf %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="340"/>
         <source>The total counter is not affected.</source>
         <translation>Der Gesamtzähler bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="341"/>
         <source>Reset counter</source>
         <translation>Zähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 Es wurde nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 Nicht zurückgesetzt: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="351"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="355"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 %2 wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="361"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="375"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="402"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="396"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="400"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="399"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="403"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="40"/>
+        <location filename="../app/gui/pages/counterspage.h" line="42"/>
         <source>Counters</source>
         <translation>Zähler</translation>
     </message>
@@ -3863,27 +3873,27 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::DispensingPage</name>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="45"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="47"/>
         <source>Only the ALE has a built-in wire feed.</source>
         <translation>Nur die ALE hat einen eingebauten Drahtvorschub.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="55"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
         <source>&amp;Start dispensing</source>
         <translation>Dosieren &amp;starten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="56"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="58"/>
         <source>S&amp;top dispensing</source>
         <translation>Dosieren sto&amp;ppen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="59"/>
         <source>Ignore fuse error…</source>
         <translation>Sicherungsfehler ignorieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="63"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="65"/>
         <source>
 
 Continue?</source>
@@ -3892,38 +3902,38 @@ Continue?</source>
 Fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="75"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="77"/>
         <source>Wire feed settings</source>
         <translation>Einstellungen des Drahtvorschubs</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="87"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="110"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="112"/>
         <source>%1 · dispensed %2 in %3 cycles · %4</source>
         <translation>%1 · %2 in %3 Zyklen dosiert · %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="114"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
         <source>fuse unknown</source>
         <translation>Sicherung unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="115"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="117"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="118"/>
         <source>fuse missing or blown</source>
         <translation>Sicherung fehlt oder ist durchgebrannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="122"/>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="132"/>
         <source>no ALE</source>
         <translation>keine ALE</translation>
     </message>
@@ -3934,297 +3944,293 @@ Fortfahren?</translation>
     </message>
 </context>
 <context>
-    <name>tipscope::gui::ErrorsPage</name>
+    <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="338"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
-        <source>Not read yet</source>
-        <translation>Noch nicht gelesen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Error</source>
-        <translation>Fehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="144"/>
-        <source>Communication</source>
-        <translation>Kommunikation</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="145"/>
-        <source>Connection</source>
-        <translation>Verbindung</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Severity</source>
-        <translation>Schweregrad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="98"/>
-        <source>Current state</source>
-        <translation>Aktueller Zustand</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="101"/>
-        <source>Current errors and alarms</source>
-        <translation>Aktuelle Fehler und Alarme</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Where</source>
-        <translation>Ort</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Tool</source>
-        <translation>Werkzeug</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Temperature alarm</source>
-        <translation>Temperaturalarm</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="114"/>
-        <source>&amp;Reset feeder error</source>
-        <translation>Vorschubfehler &amp;zurücksetzen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="116"/>
-        <source>Reset feeder error</source>
-        <translation>Vorschubfehler zurücksetzen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
-        <source>Result of the last action</source>
-        <translation>Ergebnis der letzten Aktion</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
-        <source>History</source>
-        <translation>Verlauf</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="134"/>
-        <source>Show events of kind</source>
-        <translation>Ereignisse dieser Art anzeigen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="135"/>
-        <source>All kinds</source>
-        <translation>Alle Arten</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="136"/>
-        <source>Errors and alarms</source>
-        <translation>Fehler und Alarme</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="138"/>
-        <source>Station errors</source>
-        <translation>Stationsfehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="139"/>
-        <source>Port errors</source>
-        <translation>Portfehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="140"/>
-        <source>Feeder errors</source>
-        <translation>Vorschubfehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="141"/>
-        <source>Alarms</source>
-        <translation>Alarme</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="142"/>
-        <source>Status changes</source>
-        <translation>Statuswechsel</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="143"/>
-        <source>Writes</source>
-        <translation>Schreibzugriffe</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="150"/>
-        <source>Show events of severity</source>
-        <translation>Ereignisse dieses Schweregrads anzeigen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="151"/>
-        <source>Any severity</source>
-        <translation>Jeder Schweregrad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="152"/>
-        <source>Warnings and errors</source>
-        <translation>Warnungen und Fehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="153"/>
-        <source>Errors only</source>
-        <translation>Nur Fehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="156"/>
-        <source>Show events containing</source>
-        <translation>Ereignisse mit diesem Text anzeigen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="157"/>
-        <source>Text in any column</source>
-        <translation>Text in beliebiger Spalte</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="159"/>
-        <source>&amp;Kind:</source>
-        <translation>&amp;Art:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="161"/>
-        <source>Se&amp;verity:</source>
-        <translation>&amp;Schweregrad:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="163"/>
-        <source>&amp;Search:</source>
-        <translation>S&amp;uchen:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="180"/>
-        <source>Event history</source>
-        <translation>Ereignisverlauf</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="204"/>
-        <source>Copy</source>
-        <translation>Kopieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="210"/>
-        <source>Events shown</source>
-        <translation>Angezeigte Ereignisse</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="211"/>
-        <source>&amp;Copy</source>
-        <translation>&amp;Kopieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="213"/>
-        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
-        <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="214"/>
-        <source>Copy selected events</source>
-        <translation>Ausgewählte Ereignisse kopieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="215"/>
-        <source>E&amp;xport…</source>
-        <translation>E&amp;xportieren…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="217"/>
-        <source>Save the events shown as a tab-separated text file</source>
-        <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="218"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="493"/>
-        <source>Export events</source>
-        <translation>Ereignisse exportieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="220"/>
-        <source>Result of the last export</source>
-        <translation>Ergebnis des letzten Exports</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="272"/>
-        <source>No device is connected.</source>
-        <translation>Kein Gerät verbunden.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
+        <source>Current state</source>
+        <translation>Aktueller Zustand</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
+        <source>Current errors and alarms</source>
+        <translation>Aktuelle Fehler und Alarme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Where</source>
+        <translation>Ort</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Severity</source>
+        <translation>Schweregrad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Temperature alarm</source>
+        <translation>Temperaturalarm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
+        <source>&amp;Reset feeder error</source>
+        <translation>Vorschubfehler &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
+        <source>Reset feeder error</source>
+        <translation>Vorschubfehler zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
+        <source>Result of the last action</source>
+        <translation>Ergebnis der letzten Aktion</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="139"/>
+        <source>No device is connected.</source>
+        <translation>Kein Gerät verbunden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="169"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="174"/>
+        <source>Not read yet</source>
+        <translation>Noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="171"/>
         <source>Error code %1: %2</source>
         <translation>Fehlercode %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="347"/>
-        <source>High temperature</source>
-        <translation>Übertemperatur</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="349"/>
-        <source>Low temperature</source>
-        <translation>Untertemperatur</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
-        <source>None</source>
-        <translation>Keiner</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="365"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
         <source>This device has no temperature alarm</source>
         <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="194"/>
         <source>Not reset: %1</source>
         <translation>Nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="197"/>
         <source>Resetting the feeder error…</source>
         <translation>Vorschubfehler wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="204"/>
         <source>Feeder error reset.</source>
         <translation>Vorschubfehler zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="385"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="205"/>
         <source>The feeder error was not reset: %1</source>
         <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="218"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="221"/>
         <source>No feeder is connected</source>
         <translation>Kein Lotdrahtvorschub verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="404"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="224"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
     </message>
+</context>
+<context>
+    <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
+        <location filename="../app/gui/pages/errorspage.h" line="18"/>
+        <source>Errors</source>
+        <translation>Fehler</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::EventHistoryPanel</name>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="45"/>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="72"/>
+        <source>Show events of kind</source>
+        <translation>Ereignisse dieser Art anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="73"/>
+        <source>All kinds</source>
+        <translation>Alle Arten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="74"/>
+        <source>Errors and alarms</source>
+        <translation>Fehler und Alarme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="76"/>
+        <source>Station errors</source>
+        <translation>Stationsfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="77"/>
+        <source>Port errors</source>
+        <translation>Portfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="78"/>
+        <source>Feeder errors</source>
+        <translation>Vorschubfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="79"/>
+        <source>Alarms</source>
+        <translation>Alarme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="80"/>
+        <source>Status changes</source>
+        <translation>Statuswechsel</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="81"/>
+        <source>Writes</source>
+        <translation>Schreibzugriffe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="82"/>
+        <source>Communication</source>
+        <translation>Kommunikation</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="83"/>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <source>Show events of severity</source>
+        <translation>Ereignisse dieses Schweregrads anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <source>Any severity</source>
+        <translation>Jeder Schweregrad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <source>Warnings and errors</source>
+        <translation>Warnungen und Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <source>Errors only</source>
+        <translation>Nur Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <source>Show events containing</source>
+        <translation>Ereignisse mit diesem Text anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <source>Text in any column</source>
+        <translation>Text in beliebiger Spalte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Art:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <source>Se&amp;verity:</source>
+        <translation>&amp;Schweregrad:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <source>&amp;Search:</source>
+        <translation>S&amp;uchen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
+        <source>Event history</source>
+        <translation>Ereignisverlauf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="152"/>
+        <source>Copy</source>
+        <translation>Kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="158"/>
+        <source>Events shown</source>
+        <translation>Angezeigte Ereignisse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="161"/>
+        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
+        <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="162"/>
+        <source>Copy selected events</source>
+        <translation>Ausgewählte Ereignisse kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <source>E&amp;xport…</source>
+        <translation>E&amp;xportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="165"/>
+        <source>Save the events shown as a tab-separated text file</source>
+        <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="166"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
+        <source>Export events</source>
+        <translation>Ereignisse exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="168"/>
+        <source>Result of the last export</source>
+        <translation>Ergebnis des letzten Exports</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="206"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4232,24 +4238,19 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="491"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="266"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="494"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.h" line="44"/>
-        <source>Errors</source>
-        <translation>Fehler</translation>
     </message>
 </context>
 <context>
@@ -4681,62 +4682,62 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="77"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="78"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="84"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
         <source>family %1</source>
         <translation>Familie %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="87"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="88"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="89"/>
         <source>transformer %1</source>
         <translation>Transformator %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="90"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="92"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="95"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="96"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Stationsfehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
         <source>feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="108"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="109"/>
         <source>fed %1</source>
         <translation>vorgeschoben %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="110"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="111"/>
         <source>speed %1</source>
         <translation>Geschwindigkeit %1</translation>
     </message>
@@ -4807,102 +4808,102 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="23"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="24"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="34"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="35"/>
         <source>Tip temperature, port %1</source>
         <translation>Spitzentemperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="41"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="42"/>
         <source>Power, port %1</source>
         <translation>Leistung, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Work</source>
         <translation>Arbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
         <source>Cool</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="52"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="53"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="54"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
         <source>New selected temperature, port %1</source>
         <translation>Neue eingestellte Temperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="59"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="97"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="104"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="105"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="132"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="134"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="137"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="140"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="139"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="143"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="142"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="145"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="144"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
     </message>
@@ -5081,83 +5082,83 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Zurücknehmen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
         <source>Save to station &amp;memory</source>
         <translation>Im Stations&amp;speicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>Die eingestellte Temperatur ist flüchtig: W-NVS speichert sie, damit sie einen Neustart übersteht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Station actions</source>
         <translation>Stationsaktionen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="42"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="43"/>
         <source>Profiles</source>
         <translation>Profile</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="45"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
         <source>Save device settings to a profile…</source>
         <translation>Geräteeinstellungen in einem Profil speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="48"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Profil öffnen (vergleichen, Probelauf, anwenden)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="51"/>
         <source>Port:</source>
         <translation>Port:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="131"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Verbinden Sie sich und wählen Sie ein Gerät, um seine Einstellungen zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="134"/>
         <source>Port %1 (%2)</source>
         <translation>Port %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="137"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="138"/>
         <source>Station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
         <source>Alarms, port %1</source>
         <translation>Alarme, Port %1</translation>
     </message>
@@ -5167,42 +5168,42 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Werkzeug %1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
         <source> (connected)</source>
         <translation> (angeschlossen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="154"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dosierung (Drahtvorschub der ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="162"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
         <source>&amp;Apply (%1)</source>
         <translation>&amp;Anwenden (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="198"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="196"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="221"/>
         <source>Save to station memory</source>
         <translation>Im Stationsspeicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="234"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Neue Adresse (1-99) oder 0 für Telegramme ohne Adressen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="241"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="239"/>
         <source>%1
 
 %2
@@ -5215,26 +5216,26 @@ Do you want to continue?</source>
 Möchten Sie fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="254"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="260"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="266"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="255"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Einige Einstellungen wurden noch nicht gelesen (%1). Aktualisieren Sie und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="263"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="261"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="273"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="274"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="272"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="279"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>

@@ -15,7 +15,7 @@
 <context>
     <name>FrameComposer</name>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="214"/>
+        <location filename="../lib/model/framecomposer.cpp" line="209"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, a valid frame: %1</numerusform>
@@ -23,7 +23,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="216"/>
+        <location filename="../lib/model/framecomposer.cpp" line="211"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
@@ -75,7 +75,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="234"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -117,9 +117,9 @@
     </message>
 </context>
 <context>
-    <name>tipscope::gui::ErrorsPage</name>
+    <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>
