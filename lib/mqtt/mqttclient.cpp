@@ -29,6 +29,7 @@ MqttClient::MqttClient(QObject *parent)
     m_stopTimer.setSingleShot(true);
     connect(&m_stopTimer, &QTimer::timeout, this, &MqttClient::finishStop);
     connect(m_pump, &MqttPump::serviced, this, &MqttClient::onServiced);
+    connect(m_pump, &MqttPump::hungUp, this, &MqttClient::onHungUp);
 }
 
 MqttClient::~MqttClient() {
@@ -75,7 +76,6 @@ void MqttClient::start() {
         return;
     }
     MqttCallbacks::install(m_mosquitto.get());
-    m_pump->attach(m_mosquitto.get());
     m_pending.clear();
     m_nextDelayMs = qMax(1, m_settings.retryMinMs);
     attempt();
@@ -105,6 +105,7 @@ void MqttClient::onLookedUp(const QHostInfo &info) {
 }
 
 void MqttClient::connectNow() {
+    m_pump->attach(m_mosquitto.get());
     const QByteArray host = m_settings.host.toUtf8();
     errno = 0;
     const int rc = mosquitto_connect_async(m_mosquitto.get(), host.constData(), m_settings.port,
@@ -123,18 +124,38 @@ void MqttClient::onServiced(int rc, int errnoValue) {
     dispatchEvents();
     if (!m_mosquitto)
         return;
-    const bool closed = mosquitto_socket(m_mosquitto.get()) < 0;
-    if (closed && m_state == State::Stopping) {
+    m_pump->sync();
+    if (m_pump->watching())
+        return;
+    if (m_state == State::Stopping) {
         finishStop();
         return;
     }
-    if (closed && (m_state == State::Connecting || m_state == State::Connected)) {
-        if (!m_connackSeen || m_problem.problem == MqttProblem::None)
-            setProblem(describeLibraryError(rc == MOSQ_ERR_SUCCESS ? MOSQ_ERR_CONN_LOST : rc,
-                                            errnoValue, where(), m_tlsDetail));
-        afterConnectionEnded();
+    if (m_state != State::Connecting && m_state != State::Connected)
+        return;
+    // A refusal in the CONNACK was reported already; anything else is reported now. A TLS
+    // alert from the broker (no client certificate) ends the connection as a plain loss.
+    if (!m_connackSeen && !m_tlsDetail.isEmpty())
+        rc = MOSQ_ERR_TLS;
+    else if (rc == MOSQ_ERR_SUCCESS || rc == MOSQ_ERR_CONN_REFUSED)
+        rc = MOSQ_ERR_CONN_LOST;
+    if (!m_connackSeen || m_problem.problem == MqttProblem::None)
+        setProblem(describeLibraryError(rc, errnoValue, where(), m_tlsDetail));
+    afterConnectionEnded();
+}
+
+void MqttClient::onHungUp() {
+    if (m_state == State::Stopping) {
+        finishStop();
+        return;
     }
-    m_pump->sync();
+    if (m_connackSeen)
+        setProblem(describeLibraryError(MOSQ_ERR_CONN_LOST, 0, where(), {}));
+    else if (!m_tlsDetail.isEmpty()) // the broker's TLS alert, such as "certificate required"
+        setProblem(describeLibraryError(MOSQ_ERR_TLS, 0, where(), m_tlsDetail));
+    else
+        setProblem(describeHangUp(where()));
+    afterConnectionEnded();
 }
 
 void MqttClient::afterConnectionEnded() {

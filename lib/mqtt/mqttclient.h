@@ -111,6 +111,7 @@ private:
     void onLookedUp(const QHostInfo &info);
     void connectNow();
     void onServiced(int rc, int errnoValue);
+    void onHungUp();
     void afterConnectionEnded();
     void serviceSoon();
     void scheduleRetry();

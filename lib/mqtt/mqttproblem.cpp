@@ -104,7 +104,9 @@ MqttProblemReport describeLibraryError(int rc, int errnoValue, const QString &wh
     case MOSQ_ERR_SUCCESS:
         return {};
     case MOSQ_ERR_ERRNO:
-        return describeErrno(errnoValue, where);
+        // libmosquitto sets EPROTO when OpenSSL failed, whether or not OpenSSL said why.
+        return errnoValue == EPROTO ? describeLibraryError(MOSQ_ERR_TLS, 0, where, detail)
+                                    : describeErrno(errnoValue, where);
     case MOSQ_ERR_EAI:
         return {MqttProblem::HostNotFound,
                 Tr::tr("The broker's address %1 cannot be resolved.").arg(where)};
@@ -129,6 +131,12 @@ MqttProblemReport describeLibraryError(int rc, int errnoValue, const QString &wh
                 Tr::tr("The connection to the broker %1 failed: %2.")
                     .arg(where, QString::fromUtf8(mosquitto_strerror(rc)))};
     }
+}
+
+MqttProblemReport describeHangUp(const QString &where) {
+    return {
+        MqttProblem::Unreachable,
+        Tr::tr("The broker %1 cannot be reached: the connection was refused or reset.").arg(where)};
 }
 
 MqttProblemReport describeLookupFailure(const QString &host, const QString &detail) {

@@ -36,6 +36,8 @@ struct MqttProblemReport {
 // `errnoValue` matters for MOSQ_ERR_ERRNO; `detail` for MOSQ_ERR_TLS (may be empty).
 [[nodiscard]] MqttProblemReport describeLibraryError(int rc, int errnoValue, const QString &where,
                                                      const QString &detail);
+// A connection that was refused or reset before the broker answered (during the TLS handshake).
+[[nodiscard]] MqttProblemReport describeHangUp(const QString &where);
 [[nodiscard]] MqttProblemReport describeLookupFailure(const QString &host, const QString &detail);
 
 } // namespace tipscope::mqtt

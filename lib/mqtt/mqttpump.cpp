@@ -3,6 +3,7 @@
 #include <QSocketNotifier>
 #include <cerrno>
 #include <mosquitto.h>
+#include <poll.h>
 
 namespace tipscope::mqtt {
 
@@ -19,6 +20,11 @@ void retire(std::unique_ptr<QSocketNotifier> &notifier) {
     notifier.release()->deleteLater();
 }
 
+bool isHungUp(int socket) {
+    pollfd entry{socket, 0, 0}; // hang-ups and errors are reported whatever is asked for
+    return ::poll(&entry, 1, 0) == 1 && (entry.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
+}
+
 } // namespace
 
 MqttPump::MqttPump(QObject *parent)
@@ -32,6 +38,7 @@ MqttPump::~MqttPump() = default;
 void MqttPump::attach(mosquitto *client) {
     dropNotifiers();
     m_client = client;
+    m_abandoned = -1;
     sync();
 }
 
@@ -43,7 +50,9 @@ void MqttPump::dropNotifiers() {
 }
 
 void MqttPump::sync() {
-    const int socket = m_client ? mosquitto_socket(m_client) : -1;
+    int socket = m_client ? mosquitto_socket(m_client) : -1;
+    if (socket == m_abandoned)
+        socket = -1;
     if (socket != m_socket) {
         dropNotifiers();
         if (socket < 0)
@@ -60,7 +69,21 @@ void MqttPump::sync() {
 }
 
 void MqttPump::report(int rc) {
-    Q_EMIT serviced(rc, errno);
+    const int errnoValue = errno;
+    const int socket = m_client ? mosquitto_socket(m_client) : -1;
+    if (rc == MOSQ_ERR_SUCCESS && socket >= 0 && socket == m_socket && isHungUp(socket)) {
+        // What the broker sent before it hung up (a TLS alert) may still wait to be read.
+        const int readRc = mosquitto_loop_read(m_client, 1);
+        if (mosquitto_socket(m_client) != socket) {
+            Q_EMIT serviced(readRc, errno);
+            return;
+        }
+        dropNotifiers();
+        m_abandoned = socket;
+        Q_EMIT hungUp();
+        return;
+    }
+    Q_EMIT serviced(rc, errnoValue);
 }
 
 void MqttPump::onReadable() {

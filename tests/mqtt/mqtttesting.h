@@ -49,6 +49,16 @@ inline mqtt::MqttSettings brokerSettings(const MosquittoBroker &broker, const QS
     return waitForState(client, mqtt::MqttClient::State::Connected);
 }
 
+// Starts the client and waits for its first problem (a failed attempt); false if none came.
+[[nodiscard]] inline bool startUntilProblem(mqtt::MqttClient &client,
+                                            const mqtt::MqttSettings &settings,
+                                            int timeoutMs = 10000) {
+    QSignalSpy problems(&client, &mqtt::MqttClient::problemOccurred);
+    client.setSettings(settings);
+    client.start();
+    return problems.isValid() && problems.wait(timeoutMs);
+}
+
 // Subscribes to `filter` (sent on connecting), connects, and waits until the broker granted it.
 [[nodiscard]] inline bool subscribeAndConnect(mqtt::MqttClient &client,
                                               const mqtt::MqttSettings &settings,

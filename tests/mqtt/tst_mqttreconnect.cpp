@@ -146,11 +146,7 @@ void TstMqttReconnect::closedPortIsReportedAsUnreachable() {
     const MqttSettings settings = brokerSettings(broker, QStringLiteral("agent"));
     broker.stop();
     MqttClient client;
-    QSignalSpy problems(&client, &MqttClient::problemOccurred);
-    QVERIFY(problems.isValid());
-    client.setSettings(settings);
-    client.start();
-    QVERIFY(problems.wait(5000));
+    QVERIFY(startUntilProblem(client, settings));
     QCOMPARE(client.problem(), MqttProblem::Unreachable);
     QVERIFY2(client.problemText().contains(QString::number(settings.port)),
              qPrintable(client.problemText()));

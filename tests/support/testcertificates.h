@@ -1,7 +1,9 @@
 // Throwaway TLS certificates for tests, made with the openssl command at test time: a CA, a
 // server certificate for localhost and 127.0.0.1, and a client certificate, all signed by the
 // CA (elliptic-curve keys, valid two days), plus a second CA that signed none of them, for tests
-// that a wrong CA is refused. A test without openssl QSKIPs with skipReason().
+// that a wrong CA is refused. The server certificate names only localhost: a client that
+// connects to 127.0.0.1 and checks the host name must refuse it. A test without openssl QSKIPs with
+// skipReason().
 #pragma once
 
 #include <QString>
