@@ -62,9 +62,11 @@ bool runTool(const QString &program, const QStringList &arguments, QString *erro
 
 MosquittoBroker::MosquittoBroker(BrokerOptions options)
     : m_options(std::move(options)) {
-    // A file, not a pipe: a broker logging everything must never wait for a test to read.
+    // Files, not a pipe: a broker logging everything must never wait for a test to read. Its log
+    // goes to a file of its own, written line by line; what it prints before (a configuration
+    // error) to another.
     m_process.setProcessChannelMode(QProcess::MergedChannels);
-    m_process.setStandardOutputFile(m_dir.filePath(QStringLiteral("mosquitto.log")),
+    m_process.setStandardOutputFile(m_dir.filePath(QStringLiteral("mosquitto.out")),
                                     QIODevice::Append);
 }
 
@@ -100,7 +102,7 @@ bool MosquittoBroker::writeConfiguration(QString *error) {
         QStringLiteral("listener %1 127.0.0.1").arg(m_port),
         QStringLiteral("user ") + currentUserName(),
         QStringLiteral("persistence false"),
-        QStringLiteral("log_dest stdout"),
+        QStringLiteral("log_dest file ") + m_dir.filePath(QStringLiteral("mosquitto.log")),
         QStringLiteral("log_type all"),
         QStringLiteral("allow_anonymous %1").arg(m_options.users.isEmpty() ? "true" : "false")};
     if (!m_options.users.isEmpty()) {
@@ -187,8 +189,13 @@ void MosquittoBroker::thaw() {
 }
 
 QString MosquittoBroker::output() const {
-    QFile log(m_dir.filePath(QStringLiteral("mosquitto.log")));
-    return log.open(QIODevice::ReadOnly) ? QString::fromLocal8Bit(log.readAll()) : QString();
+    QString text;
+    for (const QString &name : {QStringLiteral("mosquitto.out"), QStringLiteral("mosquitto.log")}) {
+        QFile file(m_dir.filePath(name));
+        if (file.open(QIODevice::ReadOnly))
+            text += QString::fromLocal8Bit(file.readAll());
+    }
+    return text;
 }
 
 } // namespace tipscope::testing
