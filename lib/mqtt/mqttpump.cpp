@@ -10,6 +10,9 @@ namespace tipscope::mqtt {
 namespace {
 
 constexpr int kTickMs = 1000;
+// libmosquitto reads about one packet a call: a burst (PUBACKs of a backlog, a subscriber's
+// messages) is read up to this many packets a turn of the event loop rather than one.
+constexpr int kReadBurst = 64;
 
 // Qt may still be delivering an activation of the notifier being replaced; deleting it later
 // is always safe, and disabling it first keeps the event loop off the closed descriptor.
@@ -23,6 +26,11 @@ void retire(std::unique_ptr<QSocketNotifier> &notifier) {
 bool isHungUp(int socket) {
     pollfd entry{socket, 0, 0}; // hang-ups and errors are reported whatever is asked for
     return ::poll(&entry, 1, 0) == 1 && (entry.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
+}
+
+bool hasInput(int socket) {
+    pollfd entry{socket, POLLIN, 0};
+    return ::poll(&entry, 1, 0) == 1 && entry.revents == POLLIN;
 }
 
 } // namespace
@@ -87,8 +95,14 @@ void MqttPump::report(int rc) {
 }
 
 void MqttPump::onReadable() {
-    if (m_client)
-        report(mosquitto_loop_read(m_client, 1));
+    if (!m_client)
+        return;
+    int rc = mosquitto_loop_read(m_client, 1);
+    for (int i = 1; i < kReadBurst && rc == MOSQ_ERR_SUCCESS &&
+                    mosquitto_socket(m_client) == m_socket && hasInput(m_socket);
+         ++i)
+        rc = mosquitto_loop_read(m_client, 1);
+    report(rc);
 }
 
 void MqttPump::onWritable() {
