@@ -257,7 +257,9 @@ void MqttClient::resubscribe() {
 
 void MqttClient::serviceSoon() {
     m_pump->sync();
-    if (!m_events.empty())
+    // Events of the call (a QoS 0 message written), or a socket it found closed, are handled
+    // once the caller has its result.
+    if (!m_events.empty() || !m_pump->watching())
         QMetaObject::invokeMethod(
             this, [this] { onServiced(MOSQ_ERR_SUCCESS, 0); }, Qt::QueuedConnection);
 }

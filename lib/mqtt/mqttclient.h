@@ -9,8 +9,9 @@
 // step inside it, the host-name lookup, is done first by QHostInfo on Qt's own lookup thread
 // (skipped for an address literal), so a dead DNS server never freezes the caller.
 //
-// Contract:
-// - start() connects and keeps the connection: after any failure or loss it waits
+// Contract (use it from the thread it lives in only):
+// - start() (from Stopped; otherwise it does nothing) connects and keeps the connection: after any
+// failure or loss it waits
 //   (settings.retryMinMs, doubled each failure up to retryMaxMs, reset by a good connection)
 //   and tries again, until stop(). state() and problemText() say where it stands and why.
 // - stop() sends DISCONNECT (the broker then discards the will) after whatever is already

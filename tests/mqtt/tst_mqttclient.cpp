@@ -13,7 +13,10 @@ using namespace tipscope::testing;
 class TstMqttClient : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void messageFromOneClientReachesAnotherThatSubscribed_data();
     void messageFromOneClientReachesAnotherThatSubscribed();
+    void messageTheBrokerRefusesIsRejectedWithMqtt5_data();
+    void messageTheBrokerRefusesIsRejectedWithMqtt5();
     void qos1MessageIsPublishedOnlyWhenTheBrokerAcknowledges();
     void retainedMessageReachesLateSubscribers();
     void messageFromMosquittoPubReachesOurSubscriber();
@@ -22,23 +25,68 @@ private Q_SLOTS:
     void invalidTopicsAndFiltersAreRefused();
 };
 
+void TstMqttClient::messageFromOneClientReachesAnotherThatSubscribed_data() {
+    QTest::addColumn<MqttProtocol>("protocol");
+    QTest::newRow("MQTT 3.1.1") << MqttProtocol::V311;
+    QTest::newRow("MQTT 5") << MqttProtocol::V5;
+}
+
 void TstMqttClient::messageFromOneClientReachesAnotherThatSubscribed() {
+    QFETCH(MqttProtocol, protocol);
     MosquittoBroker broker;
     TIPSCOPE_START_BROKER(broker);
+    MqttSettings settings = brokerSettings(broker, QStringLiteral("subscriber"));
+    settings.protocol = protocol;
     MqttClient subscriber;
     QSignalSpy received(&subscriber, &MqttClient::messageReceived);
     QVERIFY(received.isValid());
-    QVERIFY(subscribeAndConnect(subscriber, brokerSettings(broker, QStringLiteral("subscriber")),
-                                QStringLiteral("tipscope/test/#")));
+    // Subscribed before connecting: sent once connected.
+    QVERIFY(subscribeAndConnect(subscriber, settings, QStringLiteral("tipscope/test/#")));
 
     MqttClient publisher;
-    QVERIFY(connectClient(publisher, brokerSettings(broker, QStringLiteral("publisher"))));
+    settings.clientId = QStringLiteral("publisher");
+    QVERIFY(connectClient(publisher, settings));
     const MqttResult sent = publisher.publish(QStringLiteral("tipscope/test/a"), "hello", 1, false);
     QVERIFY2(sent.ok(), qPrintable(sent.error));
     QVERIFY(received.wait(5000));
     QCOMPARE(received.first().at(0).toString(), QStringLiteral("tipscope/test/a"));
     QCOMPARE(received.first().at(1).toByteArray(), QByteArray("hello"));
     QCOMPARE(received.first().at(2).toBool(), false);
+}
+
+void TstMqttClient::messageTheBrokerRefusesIsRejectedWithMqtt5_data() {
+    QTest::addColumn<MqttProtocol>("protocol");
+    QTest::addColumn<bool>("rejected");
+    // MQTT 3.1.1 has no way to say no: the broker acknowledges and drops the message.
+    QTest::newRow("MQTT 3.1.1") << MqttProtocol::V311 << false;
+    QTest::newRow("MQTT 5") << MqttProtocol::V5 << true;
+}
+
+void TstMqttClient::messageTheBrokerRefusesIsRejectedWithMqtt5() {
+    QFETCH(MqttProtocol, protocol);
+    QFETCH(bool, rejected);
+    BrokerOptions options;
+    options.acl = QStringLiteral("topic readwrite tipscope/v1/#\n");
+    MosquittoBroker broker(options);
+    TIPSCOPE_START_BROKER(broker);
+    MqttSettings settings = brokerSettings(broker, QStringLiteral("agent"));
+    settings.protocol = protocol;
+    MqttClient client;
+    QSignalSpy published(&client, &MqttClient::published);
+    QSignalSpy refused(&client, &MqttClient::publishRejected);
+    QVERIFY(published.isValid() && refused.isValid());
+    QVERIFY(connectClient(client, settings));
+
+    const MqttResult sent = client.publish(QStringLiteral("elsewhere/joint"), "j", 1, false);
+    QVERIFY(sent.ok());
+    QTRY_COMPARE_WITH_TIMEOUT(published.count() + refused.count(), 1, 5000);
+    QCOMPARE(refused.count(), rejected ? 1 : 0);
+    if (rejected) {
+        QCOMPARE(refused.first().at(0).toInt(), sent.messageId);
+        QVERIFY2(refused.first().at(1).toString().contains(QLatin1String("authori")),
+                 qPrintable(refused.first().at(1).toString()));
+    }
+    QCOMPARE(client.pendingCount(), 0);
 }
 
 void TstMqttClient::qos1MessageIsPublishedOnlyWhenTheBrokerAcknowledges() {
@@ -150,9 +198,12 @@ void TstMqttClient::publishingIsRefusedOnceTooManyMessagesWait() {
 
 void TstMqttClient::invalidTopicsAndFiltersAreRefused() {
     MqttClient client;
-    QVERIFY(!client.publish(QStringLiteral("tipscope/+/status"), "x", 0, false).ok());
-    QVERIFY(!client.publish(QString(), "x", 0, false).ok());
-    QVERIFY(!client.publish(QStringLiteral("tipscope/status"), "x", 3, false).ok());
+    const auto refusal = [&](const QString &topic, int qos) {
+        return client.publish(topic, "x", qos, false).error;
+    };
+    QVERIFY(refusal(QStringLiteral("tipscope/+/status"), 0).contains(QLatin1String("not a topic")));
+    QVERIFY(refusal(QString(), 0).contains(QLatin1String("not a topic")));
+    QVERIFY(refusal(QStringLiteral("tipscope/status"), 3).contains(QLatin1String("QoS 3")));
     QVERIFY(!client.subscribe(QStringLiteral("tipscope/#/status")).ok());
     QVERIFY(!client.unsubscribe(QStringLiteral("never/subscribed")).ok());
 }

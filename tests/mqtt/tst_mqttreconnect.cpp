@@ -46,6 +46,7 @@ QList<int> retryDelays(MqttClient &client, int attempts) {
 class TstMqttReconnect : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void wrongPasswordIsReportedAndRetriedWithGrowingWaits_data();
     void wrongPasswordIsReportedAndRetriedWithGrowingWaits();
     void rightPasswordConnects();
     void clientFindsARestartedBrokerAndItsSubscriptionsAgain();
@@ -55,17 +56,27 @@ private Q_SLOTS:
     void stopEndsTheRetries();
 };
 
+void TstMqttReconnect::wrongPasswordIsReportedAndRetriedWithGrowingWaits_data() {
+    QTest::addColumn<MqttProtocol>("protocol");
+    QTest::newRow("MQTT 3.1.1") << MqttProtocol::V311;
+    QTest::newRow("MQTT 5") << MqttProtocol::V5;
+}
+
 void TstMqttReconnect::wrongPasswordIsReportedAndRetriedWithGrowingWaits() {
+    QFETCH(MqttProtocol, protocol);
     MosquittoBroker broker(withUser());
     TIPSCOPE_START_BROKER(broker);
+    MqttSettings settings = withPassword(broker, "not-the-password");
+    settings.protocol = protocol;
     MqttClient client;
     QSignalSpy problems(&client, &MqttClient::problemOccurred);
     QVERIFY(problems.isValid());
-    client.setSettings(withPassword(broker, "not-the-password"));
+    client.setSettings(settings);
     client.start();
 
     QCOMPARE(retryDelays(client, 4), (QList<int>{100, 200, 400, 400}));
     QVERIFY(problems.count() >= 4);
+    // Mosquitto answers "not authorised" to a wrong password (3.1.1 code 5, MQTT 5 code 135).
     QCOMPARE(problems.first().at(0).value<MqttProblem>(), MqttProblem::NotAuthorised);
     QVERIFY2(client.problemText().contains(QLatin1String("user name or password")),
              qPrintable(client.problemText()));
