@@ -4,6 +4,7 @@
 #include "mqttpump.h"
 #include "mqtttopic.h"
 
+#include <QCoreApplication>
 #include <QHostAddress>
 #include <QHostInfo>
 #include <QLoggingCategory>
@@ -15,6 +16,11 @@ namespace tipscope::mqtt {
 Q_LOGGING_CATEGORY(lcMqtt, "tipscope.mqtt")
 
 namespace {
+
+// One translation context for every text of the client: here, mqttproblem.cpp, mqttsetup.cpp.
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(MqttClient)
+};
 
 // How long stop() waits for the DISCONNECT to be written before closing the socket anyway.
 constexpr int kStopTimeoutMs = 3000;
@@ -273,15 +279,15 @@ MqttResult MqttClient::refuse(const QString &reason) {
 MqttResult MqttClient::publish(const QString &topic, const QByteArray &payload, int qos,
                                bool retain) {
     if (!isValidTopicName(topic))
-        return refuse(tr("'%1' is not a topic a message can be published to.").arg(topic));
+        return refuse(Tr::tr("'%1' is not a topic a message can be published to.").arg(topic));
     if (qos < 0 || qos > 2)
-        return refuse(tr("QoS %1 does not exist; MQTT has 0, 1 and 2.").arg(qos));
+        return refuse(Tr::tr("QoS %1 does not exist; MQTT has 0, 1 and 2.").arg(qos));
     if (m_state != State::Connected)
-        return refuse(tr("Not connected to the broker %1: the message to %2 is dropped.")
+        return refuse(Tr::tr("Not connected to the broker %1: the message to %2 is dropped.")
                           .arg(where(), topic));
     if (m_pending.size() >= m_settings.maxPendingMessages)
-        return refuse(tr("%1 messages wait to be taken by the broker %2: the message to %3 is "
-                         "dropped.")
+        return refuse(Tr::tr("%1 messages wait to be taken by the broker %2: the message to %3 is "
+                             "dropped.")
                           .arg(m_pending.size())
                           .arg(where(), topic));
     const QByteArray name = topic.toUtf8();
@@ -290,7 +296,7 @@ MqttResult MqttClient::publish(const QString &topic, const QByteArray &payload, 
                                      int(payload.size()), payload.constData(), qos, retain);
     serviceSoon();
     if (rc != MOSQ_ERR_SUCCESS)
-        return refuse(tr("The message to %1 was not sent: %2")
+        return refuse(Tr::tr("The message to %1 was not sent: %2")
                           .arg(topic, QString::fromUtf8(mosquitto_strerror(rc))));
     m_pending.insert(messageId, qos);
     return {messageId, {}};
@@ -298,9 +304,9 @@ MqttResult MqttClient::publish(const QString &topic, const QByteArray &payload, 
 
 MqttResult MqttClient::subscribe(const QString &filter, int qos) {
     if (!isValidTopicFilter(filter))
-        return {0, tr("'%1' is not a valid subscription filter.").arg(filter)};
+        return {0, Tr::tr("'%1' is not a valid subscription filter.").arg(filter)};
     if (qos < 0 || qos > 2)
-        return {0, tr("QoS %1 does not exist; MQTT has 0, 1 and 2.").arg(qos)};
+        return {0, Tr::tr("QoS %1 does not exist; MQTT has 0, 1 and 2.").arg(qos)};
     m_subscriptions.insert(filter, qos);
     if (m_state != State::Connected)
         return {};
@@ -309,14 +315,14 @@ MqttResult MqttClient::subscribe(const QString &filter, int qos) {
     const int rc = mosquitto_subscribe(m_mosquitto.get(), &messageId, name.constData(), qos);
     serviceSoon();
     if (rc != MOSQ_ERR_SUCCESS)
-        return {0, tr("The subscription to %1 was not sent: %2")
+        return {0, Tr::tr("The subscription to %1 was not sent: %2")
                        .arg(filter, QString::fromUtf8(mosquitto_strerror(rc)))};
     return {messageId, {}};
 }
 
 MqttResult MqttClient::unsubscribe(const QString &filter) {
     if (!m_subscriptions.remove(filter))
-        return {0, tr("There is no subscription to %1.").arg(filter)};
+        return {0, Tr::tr("There is no subscription to %1.").arg(filter)};
     if (m_state != State::Connected)
         return {};
     const QByteArray name = filter.toUtf8();
@@ -324,7 +330,7 @@ MqttResult MqttClient::unsubscribe(const QString &filter) {
     const int rc = mosquitto_unsubscribe(m_mosquitto.get(), &messageId, name.constData());
     serviceSoon();
     if (rc != MOSQ_ERR_SUCCESS)
-        return {0, tr("The subscription to %1 was not ended: %2")
+        return {0, Tr::tr("The subscription to %1 was not ended: %2")
                        .arg(filter, QString::fromUtf8(mosquitto_strerror(rc)))};
     return {messageId, {}};
 }
