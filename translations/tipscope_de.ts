@@ -2151,48 +2151,53 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MqttClient</name>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="282"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="232"/>
+        <source>The broker %1 refused the message: %2.</source>
+        <translation>Der Broker %1 hat die Nachricht abgelehnt: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
         <source>&apos;%1&apos; is not a topic a message can be published to.</source>
         <translation>„%1“ ist kein Topic, an das eine Nachricht veröffentlicht werden kann.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="311"/>
         <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
         <translation>QoS %1 gibt es nicht; MQTT kennt 0, 1 und 2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="288"/>
         <source>Not connected to the broker %1: the message to %2 is dropped.</source>
         <translation>Nicht mit dem Broker %1 verbunden: die Nachricht an %2 wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="289"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="291"/>
         <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
         <translation>%1 Nachrichten warten darauf, vom Broker %2 angenommen zu werden: die Nachricht an %3 wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="299"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="301"/>
         <source>The message to %1 was not sent: %2</source>
         <translation>Die Nachricht an %1 wurde nicht gesendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="307"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
         <source>&apos;%1&apos; is not a valid subscription filter.</source>
         <translation>„%1“ ist kein gültiger Abonnement-Filter.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="318"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
         <source>The subscription to %1 was not sent: %2</source>
         <translation>Das Abonnement von %1 wurde nicht gesendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="325"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="327"/>
         <source>There is no subscription to %1.</source>
         <translation>Es gibt kein Abonnement von %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="333"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="335"/>
         <source>The subscription to %1 was not ended: %2</source>
         <translation>Das Abonnement von %1 wurde nicht beendet: %2</translation>
     </message>

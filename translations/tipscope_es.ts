@@ -2152,48 +2152,53 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>MqttClient</name>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="282"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="232"/>
+        <source>The broker %1 refused the message: %2.</source>
+        <translation>El broker %1 rechazó el mensaje: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
         <source>&apos;%1&apos; is not a topic a message can be published to.</source>
         <translation>«%1» no es un tema en el que se pueda publicar un mensaje.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="311"/>
         <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
         <translation>QoS %1 no existe; MQTT tiene 0, 1 y 2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="288"/>
         <source>Not connected to the broker %1: the message to %2 is dropped.</source>
         <translation>Sin conexión con el broker %1: se descarta el mensaje a %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="289"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="291"/>
         <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
         <translation>%1 mensajes esperan a que el broker %2 los acepte: se descarta el mensaje a %3.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="299"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="301"/>
         <source>The message to %1 was not sent: %2</source>
         <translation>No se envió el mensaje a %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="307"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
         <source>&apos;%1&apos; is not a valid subscription filter.</source>
         <translation>«%1» no es un filtro de suscripción válido.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="318"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
         <source>The subscription to %1 was not sent: %2</source>
         <translation>No se envió la suscripción a %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="325"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="327"/>
         <source>There is no subscription to %1.</source>
         <translation>No hay ninguna suscripción a %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="333"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="335"/>
         <source>The subscription to %1 was not ended: %2</source>
         <translation>No se terminó la suscripción a %1: %2</translation>
     </message>

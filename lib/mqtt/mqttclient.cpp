@@ -214,7 +214,7 @@ void MqttClient::finishStop() {
 void MqttClient::dispatchEvents() {
     QPointer<MqttClient> self(this);
     while (self && !m_events.empty()) {
-        const Event event = std::move(m_events.front());
+        Event event = std::move(m_events.front());
         m_events.erase(m_events.begin());
         switch (event.kind) {
         case Event::Kind::Connack:
@@ -227,8 +227,10 @@ void MqttClient::dispatchEvents() {
             if (event.code < 0x80)
                 Q_EMIT published(event.messageId);
             else
-                Q_EMIT publishRejected(event.messageId,
-                                       QString::fromUtf8(mosquitto_reason_string(event.code)));
+                Q_EMIT publishRejected(
+                    event.messageId,
+                    Tr::tr("The broker %1 refused the message: %2.")
+                        .arg(where(), QString::fromUtf8(mosquitto_reason_string(event.code))));
             break;
         case Event::Kind::Subscribed:
             Q_EMIT subscribed(event.messageId, event.code == 0);
