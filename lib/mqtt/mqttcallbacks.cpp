@@ -46,6 +46,9 @@ void MqttCallbacks::install(mosquitto *client) {
                         message->retain});
         });
     mosquitto_log_callback_set(client, [](mosquitto *, void *data, int level, const char *text) {
+        // It logs every packet: not worth a string unless someone reads it.
+        if (level != MOSQ_LOG_ERR && !lcMqttLibrary().isDebugEnabled())
+            return;
         const QString line = QString::fromUtf8(text);
         qCDebug(lcMqttLibrary).noquote() << line;
         // libmosquitto logs OpenSSL's reason for a failed handshake and returns only MOSQ_ERR_TLS.
