@@ -111,14 +111,14 @@ void MqttClient::onLookedUp(const QHostInfo &info) {
 }
 
 void MqttClient::connectNow() {
-    m_pump->attach(m_mosquitto.get());
     const QByteArray host = m_settings.host.toUtf8();
     errno = 0;
+    // Closes the previous socket (one the pump gave up on included) and opens a new one.
     const int rc = mosquitto_connect_async(m_mosquitto.get(), host.constData(), m_settings.port,
                                            m_settings.keepAliveSeconds);
     const int errnoValue = errno;
+    m_pump->attach(m_mosquitto.get());
     if (rc != MOSQ_ERR_SUCCESS) {
-        m_pump->sync();
         setProblem(describeLibraryError(rc, errnoValue, where(), m_tlsDetail));
         scheduleRetry();
         return;

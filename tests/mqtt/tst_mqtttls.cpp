@@ -116,7 +116,8 @@ void TstMqttTls::brokerRequiringACertificateAcceptsOursAndRefusesNone() {
 }
 
 // libmosquitto alone would wait out the keep-alive in its TLS handshake (and wake the event loop
-// without end meanwhile); the client notices the refused connection itself.
+// without end meanwhile); the client notices the refused connection itself, and connects once
+// the broker is back.
 void TstMqttTls::closedPortIsReportedAtOnceAlsoWithTls() {
     BrokerOptions options;
     options.tls = &m_certificates;
@@ -129,6 +130,10 @@ void TstMqttTls::closedPortIsReportedAtOnceAlsoWithTls() {
     QVERIFY(startUntilProblem(client, settings));
     QCOMPARE(client.problem(), MqttProblem::Unreachable);
     QVERIFY(waitForState(client, State::Connecting)); // tries again
+
+    QString error;
+    QVERIFY2(broker.start(&error), qPrintable(error));
+    QVERIFY(waitForState(client, State::Connected)); // on a new socket, found again
 }
 
 void TstMqttTls::unreadableCaFileIsASettingsProblem() {
