@@ -40,22 +40,22 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="196"/>
+        <location filename="../lib/protocol/catalog.cpp" line="206"/>
         <source>Unknown NAK code %1</source>
         <translation>Código NAK desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="201"/>
+        <location filename="../lib/protocol/catalog.cpp" line="211"/>
         <source>Unknown station error %1</source>
         <translation>Error de estación desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="210"/>
+        <location filename="../lib/protocol/catalog.cpp" line="220"/>
         <source>Unknown port error %1</source>
         <translation>Error de puerto desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <location filename="../lib/protocol/catalog.cpp" line="225"/>
         <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
         <translation>Error del alimentador %1 (no figura en la guía del SFR; bórrelo con W-ECV y consulte el manual del SFR)</translation>
     </message>
@@ -225,12 +225,12 @@
         <translation>Horas con una herramienta conectada al puerto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
         <source>No-tool hours</source>
         <translation>Horas sin herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
         <source>Hours the port was powered with no tool</source>
         <translation>Horas que el puerto estuvo con tensión sin herramienta</translation>
     </message>
@@ -255,12 +255,12 @@
         <translation>Horas en modo hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
         <source>Work hours</source>
         <translation>Horas de trabajo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
         <source>Hours working</source>
         <translation>Horas trabajando</translation>
     </message>
@@ -675,22 +675,22 @@
         <translation>Detiene la alimentación (modo continuo)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
         <source>Feeding length</source>
         <translation>Longitud de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
         <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
         <translation>Longitud alimentada en cada inicio en modo discontinuo, en décimas de milímetro</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
         <source>Feeding speed</source>
         <translation>Velocidad de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
         <source>Feeding speed, in tenths of a millimetre per second</source>
         <translation>Velocidad de alimentación, en décimas de milímetro por segundo</translation>
     </message>
@@ -845,229 +845,249 @@
         <translation>El contador parcial de horas conectado vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
         <source>Feeding hours (total)</source>
         <translation>Horas de alimentación (total)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
         <source>Hours feeding, total counter</source>
         <translation>Horas alimentando, contador total</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
         <source>Feeding hours (partial)</source>
         <translation>Horas de alimentación (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
         <source>Hours feeding since the partial counter was reset</source>
         <translation>Horas alimentando desde la última puesta a cero del contador parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
         <source>Reset feeding hours (partial)</source>
         <translation>Poner a cero horas de alimentación (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
         <source>Resets the partial feeding-hours counter</source>
         <translation>Pone a cero el contador parcial de horas de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
         <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>El contador parcial de horas de alimentación vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
         <source>Fed length (total)</source>
         <translation>Longitud alimentada (total)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
         <source>Metres of wire fed, total counter</source>
         <translation>Metros de hilo alimentados, contador total</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
         <source>Fed length (partial)</source>
         <translation>Longitud alimentada (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
         <source>Metres of wire fed since the partial counter was reset</source>
         <translation>Metros de hilo alimentados desde la última puesta a cero del contador parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
         <source>Reset fed length (partial)</source>
         <translation>Poner a cero longitud alimentada (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
         <source>Resets the partial fed-length counter</source>
         <translation>Pone a cero el contador parcial de longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
         <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
         <translation>El contador parcial de longitud alimentada vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
         <source>No tool</source>
         <translation>Sin herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
         <source>BCC error: the frame failed the sum check</source>
         <translation>Error de BCC: la trama no superó la comprobación de suma</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
         <source>Format error: the frame has the wrong size or layout</source>
         <translation>Error de formato: la trama tiene un tamaño o una estructura incorrectos</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
         <source>Out of range: the value is outside the allowed limits or off-step</source>
         <translation>Fuera de rango: el valor está fuera de los límites permitidos o no respeta el paso</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
         <source>Control error: the command is not accepted by this device</source>
         <translation>Error de control: este equipo no acepta el comando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
         <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
         <translation>El modo robot está desactivado: active &quot;Robot mode&quot; en el menú de la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
         <source>Device model error: the device model is unknown</source>
         <translation>Error de modelo de equipo: el modelo del equipo es desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
         <source>Undefined error</source>
         <translation>Error no definido</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
         <source>Stopped by transformer overload</source>
         <translation>Detenido por sobrecarga del transformador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
         <source>Temperature sensor error</source>
         <translation>Error del sensor de temperatura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
         <source>Memory error</source>
         <translation>Error de memoria</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
         <source>Mains frequency error</source>
         <translation>Error de frecuencia de red</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
         <source>Device model error</source>
         <translation>Error de modelo de equipo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
         <source>MCU tools not connected</source>
         <translation>Herramientas MCU no conectadas</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
         <source>Warning: transformer overload</source>
         <translation>Advertencia: sobrecarga del transformador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
         <source>Short circuit</source>
         <translation>Cortocircuito</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
         <source>Short circuit, not recoverable: restart the station</source>
         <translation>Cortocircuito no recuperable: reinicie la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
         <source>Open circuit</source>
         <translation>Circuito abierto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
         <source>Tool not accepted</source>
         <translation>Herramienta no aceptada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
         <source>Detecting tool</source>
         <translation>Detectando herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
         <source>Stopped at maximum power</source>
         <translation>Detenido a potencia máxima</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
         <source>Stopped by transistor (MOS) overload</source>
         <translation>Detenido por sobrecarga del transistor (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
         <source>Warning: transistor (MOS) overload</source>
         <translation>Advertencia: sobrecarga del transistor (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
         <source>No error</source>
         <translation>Sin error</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
         <source>Sleep</source>
         <translation>Reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>Hibernation</source>
         <translation>Hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>Suction on</source>
         <translation>Succión activada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor adelante (dispensado)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
         <source>Motor backward</source>
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="226"/>
         <source>unknown (%1)</source>
         <translation>desconocido (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="233"/>
         <source>none</source>
         <translation>ninguno</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <source>Reset partial plugged hours</source>
+        <translation>Poner a cero las horas conectado parciales</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <source>Feeding hours</source>
+        <translation>Horas de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <source>Reset partial feeding hours</source>
+        <translation>Poner a cero las horas de alimentación parciales</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <source>Reset partial fed length</source>
+        <translation>Poner a cero la longitud alimentada parcial</translation>
     </message>
 </context>
 <context>
@@ -1276,122 +1296,136 @@
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="37"/>
+        <location filename="../app/cli/clicommands.cpp" line="38"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="49"/>
+        <location filename="../app/cli/clicommands.cpp" line="61"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="76"/>
+        <location filename="../app/cli/clicommands.cpp" line="88"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="87"/>
+        <location filename="../app/cli/clicommands.cpp" line="99"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="109"/>
+        <location filename="../app/cli/clicommands.cpp" line="122"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="114"/>
+        <location filename="../app/cli/clicommands.cpp" line="127"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="122"/>
+        <location filename="../app/cli/clicommands.cpp" line="135"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127"/>
+        <location filename="../app/cli/clicommands.cpp" line="140"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="136"/>
+        <location filename="../app/cli/clicommands.cpp" line="178"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="144"/>
+        <location filename="../app/cli/clicommands.cpp" line="187"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="156"/>
-        <location filename="../app/cli/clicommands.cpp" line="158"/>
+        <location filename="../app/cli/clicommands.cpp" line="200"/>
+        <location filename="../app/cli/clicommands.cpp" line="202"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="161"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="170"/>
-        <location filename="../app/cli/clicommands.cpp" line="191"/>
+        <location filename="../app/cli/clicommands.cpp" line="168"/>
+        <location filename="../app/cli/clicommands.cpp" line="214"/>
+        <location filename="../app/cli/clicommands.cpp" line="238"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="183"/>
+        <location filename="../app/cli/clicommands.cpp" line="230"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="256"/>
+        <location filename="../app/cli/clicommands.cpp" line="303"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="279"/>
+        <location filename="../app/cli/clicommands.cpp" line="326"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="282"/>
+        <location filename="../app/cli/clicommands.cpp" line="329"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="283"/>
+        <location filename="../app/cli/clicommands.cpp" line="330"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/cli/clicommands.cpp" line="50"/>
+        <source>%n raw byte(s), not a frame (%1)</source>
+        <translation>
+            <numerusform>%n byte en bruto, no es una trama (%1)</numerusform>
+            <numerusform>%n bytes en bruto, no es una trama (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
+        <translation>tipscope-cli: %1 no se envió: no se pudo leer su límite %2: %3</translation>
     </message>
 </context>
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="66"/>
+        <location filename="../app/cli/climonitor.cpp" line="67"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="73"/>
+        <location filename="../app/cli/climonitor.cpp" line="74"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="80"/>
+        <location filename="../app/cli/climonitor.cpp" line="81"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="89"/>
+        <location filename="../app/cli/climonitor.cpp" line="90"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="113"/>
+        <location filename="../app/cli/climonitor.cpp" line="114"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -1399,7 +1433,7 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="40"/>
+        <location filename="../app/cli/clioptions.cpp" line="42"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
@@ -1458,82 +1492,82 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="85"/>
+        <location filename="../app/cli/clioptions.cpp" line="87"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>comando desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="118"/>
+        <location filename="../app/cli/clioptions.cpp" line="120"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>indique solo una de --port, --tcp y --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="123"/>
+        <location filename="../app/cli/clioptions.cpp" line="125"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="130"/>
+        <location filename="../app/cli/clioptions.cpp" line="132"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="135"/>
+        <location filename="../app/cli/clioptions.cpp" line="137"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud requiere una velocidad como 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
+        <location filename="../app/cli/clioptions.cpp" line="144"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity admite none, even u odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="146"/>
+        <location filename="../app/cli/clioptions.cpp" line="148"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits admite 1 o 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
+        <location filename="../app/cli/clioptions.cpp" line="156"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="162"/>
+        <location filename="../app/cli/clioptions.cpp" line="164"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout requiere milisegundos de 1 a 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="165"/>
+        <location filename="../app/cli/clioptions.cpp" line="167"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries requiere un número de 0 a 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="169"/>
+        <location filename="../app/cli/clioptions.cpp" line="171"/>
         <source>--%1 needs a value</source>
         <translation>--%1 necesita un valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="173"/>
+        <location filename="../app/cli/clioptions.cpp" line="175"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <location filename="../app/cli/clioptions.cpp" line="180"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="178"/>
+        <location filename="../app/cli/clioptions.cpp" line="181"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="184"/>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <location filename="../app/cli/clioptions.cpp" line="189"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -1541,50 +1575,55 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliProfile</name>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="49"/>
+        <location filename="../app/cli/cliprofile.cpp" line="43"/>
         <source>tipscope-cli: could not read %1; no profile written</source>
         <translation>tipscope-cli: no se pudo leer %1; no se escribió ningún perfil</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="59"/>
+        <location filename="../app/cli/cliprofile.cpp" line="53"/>
         <source>saved %1 settings of %2 to %3</source>
         <translation>se guardaron %1 ajustes de %2 en %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="73"/>
+        <location filename="../app/cli/cliprofile.cpp" line="67"/>
         <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
         <translation>tipscope-cli: profile requiere save ARCHIVO, diff ARCHIVO o apply ARCHIVO</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <source>tipscope-cli: applying this profile would be refused: %1</source>
+        <translation>tipscope-cli: aplicar este perfil se rechazaría: %1</translation>
     </message>
 </context>
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="56"/>
+        <location filename="../app/cli/clisession.cpp" line="68"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="92"/>
+        <location filename="../app/cli/clisession.cpp" line="104"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="93"/>
+        <location filename="../app/cli/clisession.cpp" line="105"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="103"/>
+        <location filename="../app/cli/clisession.cpp" line="115"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134"/>
+        <location filename="../app/cli/clisession.cpp" line="146"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="137"/>
+        <location filename="../app/cli/clisession.cpp" line="151"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -1710,24 +1749,29 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="61"/>
+        <location filename="../lib/model/devicemodel.cpp" line="69"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="62"/>
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="66"/>
+        <location filename="../lib/model/devicemodel.cpp" line="74"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <location filename="../lib/model/devicemodel.cpp" line="147"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <source>—</source>
+        <translation>—</translation>
     </message>
 </context>
 <context>
@@ -1741,6 +1785,14 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <location filename="../lib/model/displayunits.cpp" line="89"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 tiene más decimales de los que admite %2</translation>
+    </message>
+</context>
+<context>
+    <name>Elide</name>
+    <message>
+        <location filename="../lib/protocol/elide.cpp" line="39"/>
+        <source>%1… (%2 characters)</source>
+        <translation>%1… (%2 caracteres)</translation>
     </message>
 </context>
 <context>
@@ -1789,27 +1841,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="93"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="86"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="95"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="88"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="97"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="90"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="99"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="92"/>
         <source>Source</source>
         <translation>Origen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="101"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="94"/>
         <source>What happened</source>
         <translation>Qué ocurrió</translation>
     </message>
@@ -1817,17 +1869,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="57"/>
+        <location filename="../lib/model/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="63"/>
+        <location filename="../lib/model/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 no tiene el comando %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="80"/>
+        <location filename="../lib/model/feedermodel.cpp" line="117"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -1835,87 +1887,87 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>FrameComposer</name>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="43"/>
+        <location filename="../lib/model/framecomposer.cpp" line="40"/>
         <source>%1 carries the data field %2.</source>
         <translation>%1 lleva el campo de datos %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="46"/>
+        <location filename="../lib/model/framecomposer.cpp" line="43"/>
         <source>A write needs a data field: %1.</source>
         <translation>Una escritura necesita un campo de datos: %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="57"/>
+        <location filename="../lib/model/framecomposer.cpp" line="54"/>
         <source>On the wire this value is written %1.</source>
         <translation>En la línea este valor se escribe %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="72"/>
+        <location filename="../lib/model/framecomposer.cpp" line="69"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Familia de equipo desconocida: el catálogo no puede comprobar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="80"/>
+        <location filename="../lib/model/framecomposer.cpp" line="77"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 no es un comando de escritura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="81"/>
+        <location filename="../lib/model/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 no es un comando de lectura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="84"/>
+        <location filename="../lib/model/framecomposer.cpp" line="81"/>
         <source>Did you mean %1?</source>
         <translation>¿Quería decir %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="85"/>
+        <location filename="../lib/model/framecomposer.cpp" line="82"/>
         <source>It is sent as typed.</source>
         <translation>Se envía tal cual.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="90"/>
+        <location filename="../lib/model/framecomposer.cpp" line="87"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Las lecturas no llevan campo de datos; el equipo puede rechazar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="96"/>
+        <location filename="../lib/model/framecomposer.cpp" line="93"/>
         <source>Dangerous: %1</source>
         <translation>Peligroso: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="100"/>
+        <location filename="../lib/model/framecomposer.cpp" line="97"/>
         <source>Catalog check: %1</source>
         <translation>Comprobación del catálogo: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="116"/>
+        <location filename="../lib/model/framecomposer.cpp" line="111"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="158"/>
+        <location filename="../lib/model/framecomposer.cpp" line="153"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="176"/>
+        <location filename="../lib/model/framecomposer.cpp" line="171"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="180"/>
+        <location filename="../lib/model/framecomposer.cpp" line="175"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="185"/>
+        <location filename="../lib/model/framecomposer.cpp" line="180"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="214"/>
+        <location filename="../lib/model/framecomposer.cpp" line="209"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, una trama válida: %1</numerusform>
@@ -1923,7 +1975,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="216"/>
+        <location filename="../lib/model/framecomposer.cpp" line="211"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
@@ -2191,6 +2243,245 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>MqttClient</name>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="232"/>
+        <source>The broker %1 refused the message: %2.</source>
+        <translation>El broker %1 rechazó el mensaje: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
+        <source>&apos;%1&apos; is not a topic a message can be published to.</source>
+        <translation>«%1» no es un tema en el que se pueda publicar un mensaje.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="311"/>
+        <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
+        <translation>QoS %1 no existe; MQTT tiene 0, 1 y 2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="288"/>
+        <source>Not connected to the broker %1: the message to %2 is dropped.</source>
+        <translation>Sin conexión con el broker %1: se descarta el mensaje a %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="291"/>
+        <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
+        <translation>%1 mensajes esperan a que el broker %2 los acepte: se descarta el mensaje a %3.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="301"/>
+        <source>The message to %1 was not sent: %2</source>
+        <translation>No se envió el mensaje a %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
+        <source>&apos;%1&apos; is not a valid subscription filter.</source>
+        <translation>«%1» no es un filtro de suscripción válido.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
+        <source>The subscription to %1 was not sent: %2</source>
+        <translation>No se envió la suscripción a %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="327"/>
+        <source>There is no subscription to %1.</source>
+        <translation>No hay ninguna suscripción a %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="335"/>
+        <source>The subscription to %1 was not ended: %2</source>
+        <translation>No se terminó la suscripción a %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="27"/>
+        <source>The broker %1 refused the connection: bad user name or password.</source>
+        <translation>El broker %1 rechazó la conexión: nombre de usuario o contraseña incorrectos.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="32"/>
+        <source>The broker %1 refused the connection: not authorised (wrong user name or password, or this user may not connect).</source>
+        <translation>El broker %1 rechazó la conexión: no autorizado (nombre de usuario o contraseña incorrectos, o este usuario no puede conectarse).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="39"/>
+        <source>The broker %1 refused the connection: %2.</source>
+        <translation>El broker %1 rechazó la conexión: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="45"/>
+        <source>it does not speak MQTT 3.1.1</source>
+        <translation>no habla MQTT 3.1.1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="69"/>
+        <source>it does not accept this client id</source>
+        <translation>no acepta este identificador de cliente</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="49"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="72"/>
+        <source>the service is unavailable</source>
+        <translation>el servicio no está disponible</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="55"/>
+        <source>return code %1</source>
+        <translation>código de retorno %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="67"/>
+        <source>it does not speak MQTT 5</source>
+        <translation>no habla MQTT 5</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="74"/>
+        <source>reason code %1</source>
+        <translation>código de motivo %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="84"/>
+        <source>No MQTT broker accepts connections at %1 (connection refused).</source>
+        <translation>Ningún broker MQTT acepta conexiones en %1 (conexión rechazada).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="88"/>
+        <source>The broker %1 closed the connection (%2).</source>
+        <translation>El broker %1 cerró la conexión (%2).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="91"/>
+        <source>The broker %1 cannot be reached: %2.</source>
+        <translation>No se puede llegar al broker %1: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="112"/>
+        <source>The broker&apos;s address %1 cannot be resolved.</source>
+        <translation>No se puede resolver la dirección %1 del broker.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="116"/>
+        <source>The TLS handshake with the broker %1 failed.</source>
+        <translation>Falló el establecimiento de TLS con el broker %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="117"/>
+        <source>The TLS handshake with the broker %1 failed: %2</source>
+        <translation>Falló el establecimiento de TLS con el broker %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="120"/>
+        <source>The broker %1 stopped answering within the keep-alive time.</source>
+        <translation>El broker %1 dejó de responder dentro del tiempo de keep-alive.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="124"/>
+        <source>The connection to the broker %1 was lost.</source>
+        <translation>Se perdió la conexión con el broker %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="128"/>
+        <source>The broker %1 sent data that is not valid MQTT.</source>
+        <translation>El broker %1 envió datos que no son MQTT válido.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="131"/>
+        <source>The connection to the broker %1 failed: %2.</source>
+        <translation>Falló la conexión con el broker %1: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="139"/>
+        <source>The broker %1 cannot be reached: the connection was refused or reset.</source>
+        <translation>No se puede llegar al broker %1: la conexión fue rechazada o restablecida.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="144"/>
+        <source>The broker&apos;s host name %1 cannot be resolved: %2</source>
+        <translation>No se puede resolver el nombre de host %1 del broker: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="38"/>
+        <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
+        <translation>Hay una contraseña pero ningún nombre de usuario: MQTT solo envía una contraseña con un nombre de usuario.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
+        <source>The user name %1 is not accepted: %2</source>
+        <translation>No se acepta el nombre de usuario %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
+        <source>The last will on %1 is not accepted: %2</source>
+        <translation>No se acepta la última voluntad en %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
+        <source>The CA certificate file %1 cannot be read.</source>
+        <translation>No se puede leer el archivo de certificado de la CA %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="70"/>
+        <source>A client certificate needs both its certificate file and its key file.</source>
+        <translation>Un certificado de cliente necesita tanto su archivo de certificado como su archivo de clave.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
+        <source>The file %1 cannot be read.</source>
+        <translation>No se puede leer el archivo %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="96"/>
+        <source>TLS cannot be set up: %1</source>
+        <translation>No se puede configurar TLS: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="104"/>
+        <source>The MQTT version cannot be set: %1</source>
+        <translation>No se puede fijar la versión de MQTT: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
+        <source>The client id %1 is not accepted.</source>
+        <translation>No se acepta el identificador de cliente %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="129"/>
+        <source>Out of memory for an MQTT client.</source>
+        <translation>Sin memoria para un cliente MQTT.</translation>
+    </message>
+</context>
+<context>
+    <name>MqttSecret</name>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="30"/>
+        <source>The password file %1 does not exist.</source>
+        <translation>El archivo de contraseña %1 no existe.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
+        <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
+        <translation>El archivo de contraseña %1 tiene más de %2 bytes; ¿es el archivo correcto?</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="41"/>
+        <source>The password file %1 cannot be read: %2</source>
+        <translation>No se puede leer el archivo de contraseña %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="46"/>
+        <source>The password file %1 is empty.</source>
+        <translation>El archivo de contraseña %1 está vacío.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="55"/>
+        <source>The environment variable %1 that should hold the password is not set or empty.</source>
+        <translation>La variable de entorno %1, que debería contener la contraseña, no está definida o está vacía.</translation>
+    </message>
+</context>
+<context>
     <name>Parameter</name>
     <message>
         <location filename="../lib/model/parameter.cpp" line="70"/>
@@ -2346,86 +2637,101 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>PortModel</name>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="30"/>
+        <location filename="../lib/model/portmodel.cpp" line="29"/>
         <source>Working</source>
         <translation>Trabajando</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="32"/>
+        <location filename="../lib/model/portmodel.cpp" line="31"/>
         <source>Stand</source>
         <translation>En soporte</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="34"/>
+        <location filename="../lib/model/portmodel.cpp" line="33"/>
         <source>Sleep</source>
         <translation>Reposo</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="36"/>
+        <location filename="../lib/model/portmodel.cpp" line="35"/>
         <source>Hibernation</source>
         <translation>Hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="44"/>
+        <location filename="../lib/model/portmodel.cpp" line="43"/>
         <source>Cooling</source>
         <translation>Enfriando</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="46"/>
+        <location filename="../lib/model/portmodel.cpp" line="45"/>
         <source>Suction</source>
         <translation>Succión</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="48"/>
+        <location filename="../lib/model/portmodel.cpp" line="47"/>
         <source>Motor forward</source>
         <translation>Motor adelante</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="50"/>
+        <location filename="../lib/model/portmodel.cpp" line="49"/>
         <source>Motor backward</source>
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="100"/>
-        <location filename="../lib/model/portmodel.cpp" line="114"/>
+        <location filename="../lib/model/portmodel.cpp" line="109"/>
+        <location filename="../lib/model/portmodel.cpp" line="126"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="103"/>
+        <location filename="../lib/model/portmodel.cpp" line="115"/>
         <source>tool %1</source>
         <translation>herramienta %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="171"/>
-        <source>this port has no status command</source>
-        <translation>este puerto no tiene comando de estado</translation>
+        <location filename="../lib/model/portmodel.cpp" line="60"/>
+        <source>High temperature</source>
+        <translation>Temperatura alta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="62"/>
+        <source>Low temperature</source>
+        <translation>Temperatura baja</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="63"/>
+        <source>None</source>
+        <translation>Ninguna</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="187"/>
+        <source>this port has no %1 command</source>
+        <translation>este puerto no tiene el comando %1</translation>
     </message>
 </context>
 <context>
     <name>ProblemLevel</name>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="42"/>
+        <location filename="../lib/model/problemlevel.cpp" line="44"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="44"/>
+        <location filename="../lib/model/problemlevel.cpp" line="46"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="46"/>
+        <location filename="../lib/model/problemlevel.cpp" line="48"/>
         <source>Info</source>
         <translation>Información</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="48"/>
+        <location filename="../lib/model/problemlevel.cpp" line="50"/>
         <source>Warning</source>
         <translation>Advertencia</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="50"/>
+        <location filename="../lib/model/problemlevel.cpp" line="52"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
@@ -2433,119 +2739,138 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="69"/>
-        <location filename="../lib/model/profile.cpp" line="123"/>
+        <location filename="../lib/model/profile.cpp" line="72"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: no es un ajuste de %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="75"/>
+        <location filename="../lib/model/profile.cpp" line="77"/>
         <source>%1: &apos;%2&apos; is not a valid data field</source>
         <translation>%1: &apos;%2&apos; no es un campo de datos válido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="79"/>
-        <location filename="../lib/model/profile.cpp" line="160"/>
+        <location filename="../lib/model/profile.cpp" line="82"/>
+        <location filename="../lib/model/profile.cpp" line="170"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="94"/>
+        <location filename="../lib/model/profile.cpp" line="100"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="97"/>
+        <location filename="../lib/model/profile.cpp" line="111"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="100"/>
+        <location filename="../lib/model/profile.cpp" line="114"/>
         <source>profile schema %1 is not supported (this version reads schema %2)</source>
         <translation>el esquema de perfil %1 no es compatible (esta versión lee el esquema %2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="106"/>
+        <location filename="../lib/model/profile.cpp" line="120"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>familia de equipo desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="114"/>
+        <location filename="../lib/model/profile.cpp" line="128"/>
         <source>the profile has no values</source>
         <translation>el perfil no tiene valores</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="118"/>
+        <location filename="../lib/model/profile.cpp" line="132"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="128"/>
+        <location filename="../lib/model/profile.cpp" line="138"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>el perfil se rechaza, no se escribirá nada:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="146"/>
         <source>cannot write %1: %2</source>
         <translation>no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="145"/>
+        <location filename="../lib/model/profile.cpp" line="155"/>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="151"/>
+        <location filename="../lib/model/profile.cpp" line="161"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="175"/>
+        <location filename="../lib/model/profile.cpp" line="185"/>
         <source>unknown</source>
         <translation>desconocido</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="95"/>
+        <source>not a valid JSON file: %1</source>
+        <translation>no es un archivo JSON válido: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="105"/>
+        <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
+        <translation>indicado más de una vez, así que no está claro qué valor se quiere: %1; no se escribirá nada</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilejson.cpp" line="101"/>
+        <source>a NUL byte at byte %1</source>
+        <translation>un byte NUL en el byte %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilejson.cpp" line="102"/>
+        <source>control character 0x%1 at byte %2</source>
+        <translation>carácter de control 0x%1 en el byte %2</translation>
     </message>
 </context>
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="29"/>
+        <location filename="../lib/model/profileapplier.cpp" line="30"/>
         <source>refused, nothing was written: %1</source>
         <translation>rechazado, no se escribió nada: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="33"/>
+        <location filename="../lib/model/profileapplier.cpp" line="34"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="37"/>
+        <location filename="../lib/model/profileapplier.cpp" line="38"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>cambiado %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="39"/>
+        <location filename="../lib/model/profileapplier.cpp" line="40"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FALLÓ %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="41"/>
+        <location filename="../lib/model/profileapplier.cpp" line="42"/>
         <source>would send %1</source>
         <translation>se enviaría %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="43"/>
+        <location filename="../lib/model/profileapplier.cpp" line="44"/>
         <source>skipped %1</source>
         <translation>omitido %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <location filename="../lib/model/profileapplier.cpp" line="46"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>cancelado: los valores restantes no se escribieron</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n diferencia</numerusform>
@@ -2553,34 +2878,74 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profileapplier.cpp" line="48"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 cambiados, %2 ya correctos, %3 fallidos</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="69"/>
+        <location filename="../lib/model/profileapplier.cpp" line="77"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>el perfil es para %1 y este equipo es %2 (fuerce la aplicación para escribir los ajustes que comparten)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="91"/>
+        <location filename="../lib/model/profileapplier.cpp" line="90"/>
         <source>monitor-only mode is on</source>
         <translation>el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="108"/>
+        <location filename="../lib/model/profileapplier.cpp" line="131"/>
         <source>reading the device</source>
         <translation>leyendo el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="180"/>
+        <location filename="../lib/model/profileapplier.cpp" line="188"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="182"/>
+        <location filename="../lib/model/profileapplier.cpp" line="190"/>
         <source>unreadable value</source>
         <translation>valor ilegible</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="58"/>
+        <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
+%1</source>
+        <translation>el perfil rompería los límites de sus ajustes (MIT ≤ MAT, MIT ≤ temperatura seleccionada ≤ MAT):
+%1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="84"/>
+        <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
+        <translation>ninguno de los ajustes del perfil existe en este %1 (omitidos: %2)</translation>
+    </message>
+</context>
+<context>
+    <name>ProfileLimits</name>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <source>in the profile</source>
+        <translation>en el perfil</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <source>on the device now</source>
+        <translation>ahora en el equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="65"/>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="83"/>
+        <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
+        <translation>%1 es desconocido (el equipo no respondió), así que %2 no se puede comprobar con él</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="90"/>
+        <source>%1 is above %2</source>
+        <translation>%1 está por encima de %2</translation>
     </message>
 </context>
 <context>
@@ -2602,41 +2967,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="38"/>
-        <location filename="../lib/model/session.cpp" line="109"/>
-        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="42"/>
+        <location filename="../lib/model/session.cpp" line="113"/>
+        <location filename="../lib/model/session.cpp" line="116"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="108"/>
-        <location filename="../lib/model/session.cpp" line="119"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="123"/>
+        <location filename="../lib/model/session.cpp" line="130"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="142"/>
+        <location filename="../lib/model/session.cpp" line="146"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="219"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="211"/>
+        <location filename="../lib/model/session.cpp" line="220"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="217"/>
+        <location filename="../lib/model/session.cpp" line="226"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="234"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -2652,22 +3017,22 @@ Hágalo permanente con esta regla de udev:
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="71"/>
+        <location filename="../lib/model/stationmodel.cpp" line="74"/>
         <source>%1 does not support %2</source>
         <translation>%1 no admite %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="78"/>
+        <location filename="../lib/model/stationmodel.cpp" line="81"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 no puede guardar en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="115"/>
+        <location filename="../lib/model/stationmodel.cpp" line="117"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="129"/>
+        <location filename="../lib/model/stationmodel.cpp" line="131"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -2718,53 +3083,53 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>ValueCodec</name>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="42"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="43"/>
         <source>%1 to %2%3</source>
         <translation>de %1 a %2%3</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="46"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="47"/>
         <source> in steps of %1</source>
         <translation> en pasos de %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="48"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="49"/>
         <source>, or %1</source>
         <translation>, o %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="56"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="57"/>
         <source>one of %1</source>
         <translation>uno de %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="59"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="60"/>
         <source>no value (the command carries %1)</source>
         <translation>ningún valor (el comando lleva %1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="62"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="63"/>
         <source>nothing: it is read-only</source>
         <translation>nada: es de solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="71"/>
-        <location filename="../lib/protocol/valuecodec.cpp" line="77"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="72"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="91"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="92"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 rechazado para %2 (%3): se permite %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="183"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; no es un retardo en segundos como 1.6 o 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="188"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; no es un número entero; %2 admite %3</translation>
     </message>
@@ -3520,108 +3885,78 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
-        <source>Plugged hours</source>
-        <translation>Horas conectado</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
-        <source>Reset partial plugged hours…</source>
-        <translation>Poner a cero las horas conectado parciales…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
-        <source>Feeding hours</source>
-        <translation>Horas de alimentación</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
-        <source>Reset partial feeding hours…</source>
-        <translation>Poner a cero las horas de alimentación parciales…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
-        <source>Fed length</source>
-        <translation>Longitud alimentada</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
-        <source>Reset partial fed length…</source>
-        <translation>Poner a cero la longitud alimentada parcial…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>When the counters were read</source>
         <translation>Cuándo se leyeron los contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
         <source>Refresh counters</source>
         <translation>Actualizar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
         <source>&amp;Export CSV…</source>
         <translation>E&amp;xportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="95"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
         <source>Export counters as CSV</source>
         <translation>Exportar contadores como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="105"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="102"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="154"/>
         <source>Reading the counters…</source>
         <translation>Leyendo los contadores…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
         <source>Last reading at %1</source>
         <translation>Última lectura a las %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
         <source>Waiting for the first reading…</source>
         <translation>Esperando la primera lectura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="219"/>
         <source>Station %1</source>
         <translation>Estación %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="224"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="221"/>
         <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
         <source>Counters of %1</source>
         <translation>Contadores de %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="235"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
@@ -3631,118 +3966,118 @@ Hágalo permanente con esta regla de udev:
         <translation>Alimentador de estaño %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
         <source>Partial</source>
         <translation>Parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="298"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="296"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="300"/>
         <source>Last read failed: %1</source>
         <translation>Falló la última lectura: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="299"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="303"/>
         <source>Read at %1</source>
         <translation>Leído: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="302"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="306"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="335"/>
         <source>Reset partial counter</source>
         <translation>Poner a cero el contador parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
         <source>Reset “%1” on %2?</source>
         <translation>¿Poner a cero «%1» en %2?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="338"/>
         <source>It now reads %1.</source>
         <translation>Ahora marca %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="340"/>
         <source>The total counter is not affected.</source>
         <translation>El contador total no se ve afectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="341"/>
         <source>Reset counter</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 No se puso nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 No se puso a cero: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="351"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="355"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 Poniendo a cero %2…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="361"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 puesto a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 no se puso a cero: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="375"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="402"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="396"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="400"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="399"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="403"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="40"/>
+        <location filename="../app/gui/pages/counterspage.h" line="42"/>
         <source>Counters</source>
         <translation>Contadores</translation>
     </message>
@@ -3778,27 +4113,27 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::DispensingPage</name>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="45"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="47"/>
         <source>Only the ALE has a built-in wire feed.</source>
         <translation>Solo la ALE tiene alimentación de hilo integrada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="55"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
         <source>&amp;Start dispensing</source>
         <translation>&amp;Iniciar dispensado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="56"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="58"/>
         <source>S&amp;top dispensing</source>
         <translation>De&amp;tener dispensado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="59"/>
         <source>Ignore fuse error…</source>
         <translation>Ignorar error de fusible…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="63"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="65"/>
         <source>
 
 Continue?</source>
@@ -3807,38 +4142,38 @@ Continue?</source>
 ¿Continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="75"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="77"/>
         <source>Wire feed settings</source>
         <translation>Ajustes de alimentación de hilo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="87"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="110"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="112"/>
         <source>%1 · dispensed %2 in %3 cycles · %4</source>
         <translation>%1 · dispensado %2 en %3 ciclos · %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="114"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
         <source>fuse unknown</source>
         <translation>fusible desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="115"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="117"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="118"/>
         <source>fuse missing or blown</source>
         <translation>fusible ausente o fundido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="122"/>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="132"/>
         <source>no ALE</source>
         <translation>sin ALE</translation>
     </message>
@@ -3849,297 +4184,293 @@ Continue?</source>
     </message>
 </context>
 <context>
-    <name>tipscope::gui::ErrorsPage</name>
+    <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="338"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
-        <source>Not read yet</source>
-        <translation>Aún no leído</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Error</source>
-        <translation>Error</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="144"/>
-        <source>Communication</source>
-        <translation>Comunicación</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="145"/>
-        <source>Connection</source>
-        <translation>Conexión</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Severity</source>
-        <translation>Gravedad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="98"/>
-        <source>Current state</source>
-        <translation>Estado actual</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="101"/>
-        <source>Current errors and alarms</source>
-        <translation>Errores y alarmas actuales</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Where</source>
-        <translation>Dónde</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Tool</source>
-        <translation>Herramienta</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Temperature alarm</source>
-        <translation>Alarma de temperatura</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="114"/>
-        <source>&amp;Reset feeder error</source>
-        <translation>&amp;Borrar error del alimentador</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="116"/>
-        <source>Reset feeder error</source>
-        <translation>Borrar error del alimentador</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
-        <source>Result of the last action</source>
-        <translation>Resultado de la última acción</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
-        <source>History</source>
-        <translation>Historial</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="134"/>
-        <source>Show events of kind</source>
-        <translation>Mostrar eventos del tipo</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="135"/>
-        <source>All kinds</source>
-        <translation>Todos los tipos</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="136"/>
-        <source>Errors and alarms</source>
-        <translation>Errores y alarmas</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="138"/>
-        <source>Station errors</source>
-        <translation>Errores de estación</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="139"/>
-        <source>Port errors</source>
-        <translation>Errores de puerto</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="140"/>
-        <source>Feeder errors</source>
-        <translation>Errores del alimentador</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="141"/>
-        <source>Alarms</source>
-        <translation>Alarmas</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="142"/>
-        <source>Status changes</source>
-        <translation>Cambios de estado</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="143"/>
-        <source>Writes</source>
-        <translation>Escrituras</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="150"/>
-        <source>Show events of severity</source>
-        <translation>Mostrar eventos de la gravedad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="151"/>
-        <source>Any severity</source>
-        <translation>Cualquier gravedad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="152"/>
-        <source>Warnings and errors</source>
-        <translation>Advertencias y errores</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="153"/>
-        <source>Errors only</source>
-        <translation>Solo errores</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="156"/>
-        <source>Show events containing</source>
-        <translation>Mostrar eventos que contengan</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="157"/>
-        <source>Text in any column</source>
-        <translation>Texto en cualquier columna</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="159"/>
-        <source>&amp;Kind:</source>
-        <translation>&amp;Tipo:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="161"/>
-        <source>Se&amp;verity:</source>
-        <translation>&amp;Gravedad:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="163"/>
-        <source>&amp;Search:</source>
-        <translation>B&amp;uscar:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="180"/>
-        <source>Event history</source>
-        <translation>Historial de eventos</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="204"/>
-        <source>Copy</source>
-        <translation>Copiar</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="210"/>
-        <source>Events shown</source>
-        <translation>Eventos mostrados</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="211"/>
-        <source>&amp;Copy</source>
-        <translation>Co&amp;piar</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="213"/>
-        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
-        <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="214"/>
-        <source>Copy selected events</source>
-        <translation>Copiar eventos seleccionados</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="215"/>
-        <source>E&amp;xport…</source>
-        <translation>E&amp;xportar…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="217"/>
-        <source>Save the events shown as a tab-separated text file</source>
-        <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="218"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="493"/>
-        <source>Export events</source>
-        <translation>Exportar eventos</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="220"/>
-        <source>Result of the last export</source>
-        <translation>Resultado de la última exportación</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="272"/>
-        <source>No device is connected.</source>
-        <translation>No hay ningún equipo conectado.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
+        <source>Current state</source>
+        <translation>Estado actual</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
+        <source>Current errors and alarms</source>
+        <translation>Errores y alarmas actuales</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Where</source>
+        <translation>Dónde</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Severity</source>
+        <translation>Gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Temperature alarm</source>
+        <translation>Alarma de temperatura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
+        <source>&amp;Reset feeder error</source>
+        <translation>&amp;Borrar error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
+        <source>Reset feeder error</source>
+        <translation>Borrar error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
+        <source>Result of the last action</source>
+        <translation>Resultado de la última acción</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="139"/>
+        <source>No device is connected.</source>
+        <translation>No hay ningún equipo conectado.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="169"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="174"/>
+        <source>Not read yet</source>
+        <translation>Aún no leído</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="171"/>
         <source>Error code %1: %2</source>
         <translation>Código de error %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="347"/>
-        <source>High temperature</source>
-        <translation>Temperatura alta</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="349"/>
-        <source>Low temperature</source>
-        <translation>Temperatura baja</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
-        <source>None</source>
-        <translation>Ninguna</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="365"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
         <source>This device has no temperature alarm</source>
         <translation>Este equipo no tiene alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="194"/>
         <source>Not reset: %1</source>
         <translation>No se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="197"/>
         <source>Resetting the feeder error…</source>
         <translation>Borrando el error del alimentador…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="204"/>
         <source>Feeder error reset.</source>
         <translation>Error del alimentador borrado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="385"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="205"/>
         <source>The feeder error was not reset: %1</source>
         <translation>El error del alimentador no se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="218"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="221"/>
         <source>No feeder is connected</source>
         <translation>No hay ningún alimentador conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="404"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="224"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
     </message>
+</context>
+<context>
+    <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
+        <location filename="../app/gui/pages/errorspage.h" line="18"/>
+        <source>Errors</source>
+        <translation>Errores</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::EventHistoryPanel</name>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="45"/>
+        <source>History</source>
+        <translation>Historial</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="72"/>
+        <source>Show events of kind</source>
+        <translation>Mostrar eventos del tipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="73"/>
+        <source>All kinds</source>
+        <translation>Todos los tipos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="74"/>
+        <source>Errors and alarms</source>
+        <translation>Errores y alarmas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="76"/>
+        <source>Station errors</source>
+        <translation>Errores de estación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="77"/>
+        <source>Port errors</source>
+        <translation>Errores de puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="78"/>
+        <source>Feeder errors</source>
+        <translation>Errores del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="79"/>
+        <source>Alarms</source>
+        <translation>Alarmas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="80"/>
+        <source>Status changes</source>
+        <translation>Cambios de estado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="81"/>
+        <source>Writes</source>
+        <translation>Escrituras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="82"/>
+        <source>Communication</source>
+        <translation>Comunicación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="83"/>
+        <source>Connection</source>
+        <translation>Conexión</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <source>Show events of severity</source>
+        <translation>Mostrar eventos de la gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <source>Any severity</source>
+        <translation>Cualquier gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <source>Warnings and errors</source>
+        <translation>Advertencias y errores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <source>Errors only</source>
+        <translation>Solo errores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <source>Show events containing</source>
+        <translation>Mostrar eventos que contengan</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <source>Text in any column</source>
+        <translation>Texto en cualquier columna</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Tipo:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <source>Se&amp;verity:</source>
+        <translation>&amp;Gravedad:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <source>&amp;Search:</source>
+        <translation>B&amp;uscar:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
+        <source>Event history</source>
+        <translation>Historial de eventos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="152"/>
+        <source>Copy</source>
+        <translation>Copiar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="158"/>
+        <source>Events shown</source>
+        <translation>Eventos mostrados</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
+        <source>&amp;Copy</source>
+        <translation>Co&amp;piar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="161"/>
+        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
+        <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="162"/>
+        <source>Copy selected events</source>
+        <translation>Copiar eventos seleccionados</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <source>E&amp;xport…</source>
+        <translation>E&amp;xportar…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="165"/>
+        <source>Save the events shown as a tab-separated text file</source>
+        <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="166"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
+        <source>Export events</source>
+        <translation>Exportar eventos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="168"/>
+        <source>Result of the last export</source>
+        <translation>Resultado de la última exportación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="206"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4147,24 +4478,19 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="491"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="266"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="494"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.h" line="44"/>
-        <source>Errors</source>
-        <translation>Errores</translation>
     </message>
 </context>
 <context>
@@ -4596,62 +4922,62 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="77"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="78"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="84"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
         <source>family %1</source>
         <translation>familia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="87"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="88"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="89"/>
         <source>transformer %1</source>
         <translation>transformador %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="90"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="92"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="95"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="96"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Error de estación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
         <source>idle</source>
         <translation>en espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="108"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="109"/>
         <source>fed %1</source>
         <translation>alimentado %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="110"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="111"/>
         <source>speed %1</source>
         <translation>velocidad %1</translation>
     </message>
@@ -4722,102 +5048,102 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="23"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="24"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="34"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="35"/>
         <source>Tip temperature, port %1</source>
         <translation>Temperatura de la punta, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="41"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="42"/>
         <source>Power, port %1</source>
         <translation>Potencia, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Work</source>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Stand</source>
         <translation>Soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
         <source>Cool</source>
         <translation>Enfriar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: calentar a la temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="52"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: soporte; el reposo y la hibernación siguen tras sus retardos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="53"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="54"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: enfriamiento (extractor en espera)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
         <source>New selected temperature, port %1</source>
         <translation>Nueva temperatura seleccionada, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="59"/>
         <source>Set</source>
         <translation>Fijar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="97"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="104"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="105"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="132"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
         <source>Port %1 — %2</source>
         <translation>Puerto %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="134"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
         <source>set %1</source>
         <translation>consigna %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="137"/>
         <source>power %1</source>
         <translation>potencia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="140"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="139"/>
         <source>status unknown</source>
         <translation>estado desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="143"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="142"/>
         <source>transistor %1</source>
         <translation>transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="145"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="144"/>
         <source>%1 until the next mode</source>
         <translation>%1 hasta el siguiente modo</translation>
     </message>
@@ -4947,16 +5273,17 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="66"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="104"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="109"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="118"/>
         <source>&lt;b&gt;Refused:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Rechazado:&lt;/b&gt; %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="111"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="123"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Perfil de %1 (%2, software %3), creado: %4. %n ajuste difiere del equipo.</numerusform>
@@ -4964,7 +5291,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="117"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="129"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Simulación: se enviaría %n trama; no se escribió nada.</numerusform>
@@ -4972,96 +5299,106 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="121"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="133"/>
         <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches.</source>
         <translation>&lt;b&gt;Aplicado.&lt;/b&gt; Todos los valores escritos se volvieron a leer y coinciden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="122"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="134"/>
         <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; See the report below.</source>
         <translation>&lt;b&gt;No se aplicó todo.&lt;/b&gt; Consulte el informe de abajo.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="102"/>
+        <source>The profile would break the device&apos;s limits; see above</source>
+        <translation>El perfil rompería los límites del equipo; véase arriba</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="120"/>
+        <source>&lt;b&gt;This profile cannot be applied to this device:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Este perfil no se puede aplicar a este equipo:&lt;/b&gt; %1</translation>
     </message>
 </context>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Revertir</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
         <source>Save to station &amp;memory</source>
         <translation>Guardar en la &amp;memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>La temperatura seleccionada es volátil: W-NVS la guarda para que se conserve tras reiniciar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Station actions</source>
         <translation>Acciones de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="42"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="43"/>
         <source>Profiles</source>
         <translation>Perfiles</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="45"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
         <source>Save device settings to a profile…</source>
         <translation>Guardar los ajustes del equipo en un perfil…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="48"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Abrir un perfil (comparar, simular, aplicar)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="51"/>
         <source>Port:</source>
         <translation>Puerto:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="131"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Conéctese y seleccione un equipo para ver sus ajustes.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="134"/>
         <source>Port %1 (%2)</source>
         <translation>Puerto %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="137"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="138"/>
         <source>Station</source>
         <translation>Estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
         <source>Alarms, port %1</source>
         <translation>Alarmas, puerto %1</translation>
     </message>
@@ -5071,42 +5408,42 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Herramienta %1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
         <source> (connected)</source>
         <translation> (conectada)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="154"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dispensado (alimentación de hilo de la ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="162"/>
         <source>Feeding</source>
         <translation>Alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
         <source>&amp;Apply (%1)</source>
         <translation>A&amp;plicar (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="198"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="196"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="221"/>
         <source>Save to station memory</source>
         <translation>Guardar en la memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="234"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Nueva dirección (1-99), o 0 para tramas sin direcciones:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="241"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="239"/>
         <source>%1
 
 %2
@@ -5119,26 +5456,26 @@ Do you want to continue?</source>
 ¿Desea continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="254"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="260"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="266"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="255"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Algunos ajustes aún no se han leído (%1). Actualice y vuelva a intentarlo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="263"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="261"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="273"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="274"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="272"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="279"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>

@@ -20,9 +20,6 @@ struct Tr {
 };
 
 const QString kSeparator = QStringLiteral(" — ");
-// The catalog group of the reads that identify a device (model name, software version).
-const QString kIdentityGroup = QStringLiteral("identity");
-
 bool isPrintable(const QString &text) {
     for (QChar c : text)
         if (c.unicode() < 0x20 || c.unicode() > 0x7e)
@@ -103,10 +100,8 @@ void addCatalogAdvice(const FrameInput &in, const QString &code, FrameDraft &dra
 
 // The first read that identifies a device, for every family: the model name.
 QByteArray identityRead() {
-    for (const CommandSpec &spec : Catalog::builtin().commands())
-        if (spec.group == kIdentityGroup && spec.readable && !spec.usesPort() && !spec.usesTool())
-            return spec.pattern.toLatin1();
-    return {};
+    const CommandSpec *spec = Catalog::builtin().command(Role::ModelName);
+    return spec ? spec->pattern.toLatin1() : QByteArray();
 }
 } // namespace
 
