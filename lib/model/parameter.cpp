@@ -1,6 +1,7 @@
 #include "parameter.h"
 
 #include "devicemodel.h"
+#include "settingname.h"
 
 #include <QCoreApplication>
 
@@ -169,7 +170,7 @@ Reply *Parameter::refresh(Priority priority) {
         if (m_state == State::Reading)
             setState(m_value ? State::InSync : State::Unknown);
         m_device.logCommunication(
-            Tr::tr("reading %1 (%2)").arg(label(), QString::fromLatin1(code())),
+            Tr::tr("reading %1 (%2)").arg(settingName(*this), QString::fromLatin1(code())),
             reply->errorString());
     });
     return reply;
@@ -181,7 +182,7 @@ void Parameter::deviceReported(const QByteArray &data) {
     const auto v = decodeAnswer(*m_read, data);
     if (!v) {
         m_device.logCommunication(
-            Tr::tr("reading %1").arg(label()),
+            Tr::tr("reading %1").arg(settingName(*this)),
             Tr::tr("unreadable data field '%1'").arg(QString::fromLatin1(data)));
         return;
     }
@@ -272,14 +273,16 @@ void Parameter::readBack(const QByteArray &written) {
         Q_EMIT editChanged();
         setState(State::InSync);
         Q_EMIT stateChanged();
-        m_device.logWrite(Tr::tr("%1 set to %2").arg(label(), displayText()));
+        m_device.logWrite(
+            spec().port,
+            Tr::tr("%1 set to %2").arg(settingName(*this, NameParts::ToolOnly), displayText()));
         Q_EMIT writeFinished(true, {});
     });
 }
 
 void Parameter::fail(const QString &reason) {
     setState(State::Failed, reason);
-    m_device.logCommunication(Tr::tr("writing %1").arg(label()), reason);
+    m_device.logCommunication(Tr::tr("writing %1").arg(settingName(*this)), reason);
     Q_EMIT writeFinished(false, reason);
 }
 
