@@ -55,11 +55,6 @@
         <translation>Unbekannter Portfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="225"/>
-        <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
-        <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt; mit W-ECV zurücksetzen und im SFR-Handbuch nachsehen)</translation>
-    </message>
-    <message>
         <location filename="../lib/protocol/catalogstrings.cpp" line="13"/>
         <source>Port status</source>
         <translation>Portstatus</translation>
@@ -1035,27 +1030,27 @@
         <translation>Kein Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="230"/>
         <source>Sleep</source>
         <translation>Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="231"/>
         <source>Hibernation</source>
         <translation>Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="232"/>
         <source>Suction on</source>
         <translation>Absaugung ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="233"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor vorwärts (Dosieren)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="234"/>
         <source>Motor backward</source>
         <translation>Motor rückwärts</translation>
     </message>
@@ -1088,6 +1083,101 @@
         <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
         <source>Reset partial fed length</source>
         <translation>Teilzähler vorgeschobene Länge zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="225"/>
+        <source>Feeder error %1 (not listed in the SFR guide)</source>
+        <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <source>The station switched off its power because the transformer was overloaded. Let it cool for a few minutes with the ventilation slots free, then switch it off and on. Check that the tools working at once do not need more than the station can give (large heat sinks, high temperatures, several ports at full power). If it stops again with one tool at normal work, the station needs JBC service.</source>
+        <translation>Die Station hat ihre Leistung abgeschaltet, weil der Transformator überlastet war. Lassen Sie sie einige Minuten mit freien Lüftungsschlitzen abkühlen, dann aus- und wieder einschalten. Prüfen Sie, ob die gleichzeitig arbeitenden Werkzeuge mehr brauchen, als die Station liefern kann (große Wärmesenken, hohe Temperaturen, mehrere Ports mit voller Leistung). Schaltet sie mit einem Werkzeug bei normaler Arbeit wieder ab, muss die Station zum JBC-Service.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
+        <source>The station cannot read its internal temperature sensor. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
+        <translation>Die Station kann ihren internen Temperatursensor nicht lesen. Aus- und wieder einschalten; bleibt der Fehler, muss die Steuereinheit zum JBC-Service.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
+        <source>The station&apos;s memory failed its check. Switch it off and on. If the error stays, restore the factory settings and set the station up again (save a profile first if the settings can still be read); if it still stays, the control unit needs JBC service.</source>
+        <translation>Der Speicher der Station hat seine Prüfung nicht bestanden. Aus- und wieder einschalten. Bleibt der Fehler, die Werkseinstellungen wiederherstellen und die Station neu einrichten (vorher ein Profil speichern, wenn sich die Einstellungen noch lesen lassen); bleibt er dann noch, muss die Steuereinheit zum JBC-Service.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
+        <source>The station does not accept the mains frequency. Check that the voltage and frequency on the station&apos;s label match the supply, and that no generator, UPS or long extension cord makes it unstable; then switch the station off and on.</source>
+        <translation>Die Station akzeptiert die Netzfrequenz nicht. Prüfen Sie, ob Spannung und Frequenz auf dem Typenschild der Station zur Versorgung passen und ob kein Generator, keine USV und kein langes Verlängerungskabel sie instabil macht; dann die Station aus- und wieder einschalten.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
+        <source>The station does not recognise its own model: its configuration is damaged. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
+        <translation>Die Station erkennt ihr eigenes Modell nicht: Ihre Konfiguration ist beschädigt. Aus- und wieder einschalten; bleibt der Fehler, muss die Steuereinheit zum JBC-Service.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="217"/>
+        <source>The station&apos;s tool control board does not answer. Switch the station off, wait ten seconds and switch it on; if the error stays, the control unit needs JBC service.</source>
+        <translation>Die Werkzeug-Steuerplatine der Station antwortet nicht. Station ausschalten, zehn Sekunden warten und einschalten; bleibt der Fehler, muss die Steuereinheit zum JBC-Service.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="218"/>
+        <source>The transformer is close to overload; the station stops if this goes on. Reduce the load: fewer tools heating at once, lower temperatures, no tip resting on a large heat sink; keep the ventilation slots free.</source>
+        <translation>Der Transformator ist nahe an der Überlast; hält das an, schaltet die Station ab. Verringern Sie die Last: weniger Werkzeuge gleichzeitig heizen, niedrigere Temperaturen, keine Spitze auf einer großen Wärmesenke liegen lassen; Lüftungsschlitze frei halten.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="219"/>
+        <source>The guide&apos;s table does not list this code. Note the code and the time, switch the station off and on, and give the code to JBC service if it comes back.</source>
+        <translation>Die Tabelle der Anleitung führt diesen Code nicht. Notieren Sie Code und Uhrzeit, schalten Sie die Station aus und wieder ein, und geben Sie den Code an den JBC-Service, wenn er wiederkommt.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="220"/>
+        <source>The heater circuit of the tool is short-circuited. Check that the cartridge is seated fully and is not damaged, then try another cartridge. If the error stays, check the tool&apos;s cable and connector for damage and try the tool on another port.</source>
+        <translation>Der Heizkreis des Werkzeugs ist kurzgeschlossen. Prüfen Sie, ob die Kartusche ganz eingesetzt und unbeschädigt ist, und versuchen Sie dann eine andere Kartusche. Bleibt der Fehler, Kabel und Stecker des Werkzeugs auf Schäden prüfen und das Werkzeug an einem anderen Port versuchen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="221"/>
+        <source>The port was switched off after a short circuit and stays off until the station restarts. Switch the station off, change the cartridge, check the tool&apos;s cable and connector for damage, then switch it on again.</source>
+        <translation>Der Port wurde nach einem Kurzschluss abgeschaltet und bleibt aus, bis die Station neu startet. Station ausschalten, Kartusche wechseln, Kabel und Stecker des Werkzeugs auf Schäden prüfen, dann wieder einschalten.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="222"/>
+        <source>The station finds no heater in the tool. Check that the cartridge is seated fully in the handle, then try another cartridge. If the error stays, check the tool&apos;s cable and connector and try the tool on another port.</source>
+        <translation>Die Station findet keine Heizung im Werkzeug. Prüfen Sie, ob die Kartusche ganz im Handgriff sitzt, und versuchen Sie dann eine andere Kartusche. Bleibt der Fehler, Kabel und Stecker des Werkzeugs prüfen und das Werkzeug an einem anderen Port versuchen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="223"/>
+        <source>No tool is connected to this port. If one is plugged in, push its connector fully home, then try it on another port.</source>
+        <translation>An diesem Port ist kein Werkzeug angeschlossen. Ist eines eingesteckt, den Stecker ganz eindrücken, dann an einem anderen Port versuchen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="224"/>
+        <source>The station cannot drive the tool plugged into this port. Check the tool&apos;s model against the station&apos;s list of compatible tools and use a tool that is on it, or another station.</source>
+        <translation>Die Station kann das an diesem Port eingesteckte Werkzeug nicht betreiben. Vergleichen Sie das Werkzeugmodell mit der Liste kompatibler Werkzeuge der Station und verwenden Sie ein Werkzeug daraus oder eine andere Station.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="225"/>
+        <source>The station is identifying the tool; this takes a few seconds. If it does not end, unplug the tool, check its connector and plug it in again.</source>
+        <translation>Die Station erkennt gerade das Werkzeug; das dauert einige Sekunden. Endet es nicht, das Werkzeug ausstecken, den Stecker prüfen und wieder einstecken.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="226"/>
+        <source>The port stopped after giving its maximum power for too long. Check that the tip suits the work (a larger tip for large joints) and is not resting on a large heat sink; lower the load and restart the tool.</source>
+        <translation>Der Port hat abgeschaltet, nachdem er zu lange seine Höchstleistung gab. Prüfen Sie, ob die Spitze zur Arbeit passt (eine größere Spitze für große Lötstellen) und nicht auf einer großen Wärmesenke liegt; Last verringern und das Werkzeug neu starten.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="227"/>
+        <source>The port&apos;s power transistor overheated and the port stopped. Let the station cool with the ventilation slots free, then reduce the load on this port (a larger tip, a lower temperature, shorter contact with large heat sinks). If it happens at normal work, the station needs JBC service.</source>
+        <translation>Der Leistungstransistor des Ports war überhitzt, und der Port hat abgeschaltet. Station mit freien Lüftungsschlitzen abkühlen lassen, dann die Last an diesem Port verringern (eine größere Spitze, eine niedrigere Temperatur, kürzerer Kontakt mit großen Wärmesenken). Geschieht das bei normaler Arbeit, muss die Station zum JBC-Service.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="228"/>
+        <source>The port&apos;s power transistor is close to overload; the port stops if this goes on. Reduce the load on this port: a lower temperature, shorter contact with large heat sinks; keep the ventilation slots free.</source>
+        <translation>Der Leistungstransistor des Ports ist nahe an der Überlast; hält das an, schaltet der Port ab. Verringern Sie die Last an diesem Port: eine niedrigere Temperatur, kürzerer Kontakt mit großen Wärmesenken; Lüftungsschlitze frei halten.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="229"/>
+        <source>The SFR guide does not say what the feeder&apos;s error codes mean. Check that the solder wire is loaded and runs freely from the reel to the tool (no knot, no jam, the reel not empty) and that the wire thickness setting matches the wire; then reset the error. If it comes back at once, note the code and see the SFR manual.</source>
+        <translation>Die SFR-Anleitung sagt nicht, was die Fehlercodes des Vorschubs bedeuten. Prüfen Sie, ob Lötdraht eingelegt ist und frei von der Rolle zum Werkzeug läuft (kein Knoten, kein Stau, die Rolle nicht leer) und ob die eingestellte Drahtstärke zum Draht passt; dann den Fehler zurücksetzen. Kommt er sofort wieder, den Code notieren und im SFR-Handbuch nachsehen.</translation>
     </message>
 </context>
 <context>
@@ -1763,12 +1853,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="147"/>
+        <location filename="../lib/model/devicemodel.cpp" line="153"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <location filename="../lib/model/devicemodel.cpp" line="106"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -1840,29 +1930,37 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="86"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="107"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="88"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="109"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="90"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="111"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="92"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="113"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="94"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="115"/>
         <source>What happened</source>
         <translation>Ereignis</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/eventhistorymodel.cpp" line="72"/>
+        <source>%1 (%n times, until %2)</source>
+        <translation>
+            <numerusform>%1 (%n-mal, bis %2)</numerusform>
+            <numerusform>%1 (%n-mal, bis %2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2483,94 +2581,94 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="70"/>
+        <location filename="../lib/model/parameter.cpp" line="71"/>
         <source>read-only</source>
         <translation>schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="76"/>
+        <location filename="../lib/model/parameter.cpp" line="77"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="79"/>
+        <location filename="../lib/model/parameter.cpp" line="80"/>
         <source> in steps of %1 %2</source>
         <translation> in Schritten von %1 %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="86"/>
+        <location filename="../lib/model/parameter.cpp" line="87"/>
         <source>, or %1</source>
         <translation>, oder %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="92"/>
-        <location filename="../lib/model/parameter.cpp" line="133"/>
+        <location filename="../lib/model/parameter.cpp" line="93"/>
+        <location filename="../lib/model/parameter.cpp" line="134"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="101"/>
+        <location filename="../lib/model/parameter.cpp" line="102"/>
         <source>%1 is not allowed for %2: allowed is %3</source>
         <translation>%1 ist für %2 nicht zulässig: zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="106"/>
+        <location filename="../lib/model/parameter.cpp" line="107"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="118"/>
-        <location filename="../lib/model/parameter.cpp" line="216"/>
+        <location filename="../lib/model/parameter.cpp" line="119"/>
+        <location filename="../lib/model/parameter.cpp" line="217"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="137"/>
+        <location filename="../lib/model/parameter.cpp" line="138"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="173"/>
+        <location filename="../lib/model/parameter.cpp" line="174"/>
         <source>reading %1 (%2)</source>
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="185"/>
+        <location filename="../lib/model/parameter.cpp" line="186"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="186"/>
+        <location filename="../lib/model/parameter.cpp" line="187"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="235"/>
+        <location filename="../lib/model/parameter.cpp" line="236"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="238"/>
+        <location filename="../lib/model/parameter.cpp" line="239"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="259"/>
+        <location filename="../lib/model/parameter.cpp" line="260"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="273"/>
+        <location filename="../lib/model/parameter.cpp" line="274"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="284"/>
+        <location filename="../lib/model/parameter.cpp" line="287"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="297"/>
+        <location filename="../lib/model/parameter.cpp" line="300"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -3009,6 +3107,19 @@ Dauerhaft mit dieser udev-Regel:
     </message>
 </context>
 <context>
+    <name>SettingName</name>
+    <message>
+        <location filename="../lib/model/settingname.cpp" line="22"/>
+        <source>tool %1</source>
+        <translation>Werkzeug %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/settingname.cpp" line="33"/>
+        <source>port %1</source>
+        <translation>Port %1</translation>
+    </message>
+</context>
+<context>
     <name>StationModel</name>
     <message>
         <location filename="../lib/model/stationmodel.cpp" line="55"/>
@@ -3039,44 +3150,67 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="93"/>
+        <location filename="../lib/model/supportreport.cpp" line="142"/>
         <source>TipScope support report, %1</source>
         <translation>TipScope-Supportbericht, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="94"/>
+        <location filename="../lib/model/supportreport.cpp" line="143"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="100"/>
+        <location filename="../lib/model/supportreport.cpp" line="149"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="101"/>
+        <location filename="../lib/model/supportreport.cpp" line="150"/>
         <source>State: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="102"/>
+        <location filename="../lib/model/supportreport.cpp" line="151"/>
         <source>Statistics: %1</source>
         <translation>Statistik: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="106"/>
-        <source>Device %1: %2 (%3), software %4</source>
-        <translation>Gerät %1: %2 (%3), Software %4</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/supportreport.cpp" line="121"/>
+        <location filename="../lib/model/supportreport.cpp" line="176"/>
         <source>Recent events:</source>
         <translation>Letzte Ereignisse:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="146"/>
+        <location filename="../lib/model/supportreport.cpp" line="205"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="79"/>
+        <source>Device %1</source>
+        <translation>Gerät %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="84"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="86"/>
+        <source>, software %1</source>
+        <translation>, Software %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="166"/>
+        <source>  What to check:</source>
+        <translation>  Was zu prüfen ist:</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/supportreport.cpp" line="182"/>
+        <source>%1 (%n times, until %2)</source>
+        <translation>
+            <numerusform>%1 (%n-mal, bis %2)</numerusform>
+            <numerusform>%1 (%n-mal, bis %2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4240,60 +4374,75 @@ Fortfahren?</translation>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="139"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149"/>
         <source>No device is connected.</source>
         <translation>Kein Gerät verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="169"/>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="174"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="171"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182"/>
         <source>Error code %1: %2</source>
         <translation>Fehlercode %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
         <source>This device has no temperature alarm</source>
         <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="194"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="227"/>
         <source>Not reset: %1</source>
         <translation>Nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="197"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="230"/>
         <source>Resetting the feeder error…</source>
         <translation>Vorschubfehler wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="204"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="237"/>
         <source>Feeder error reset.</source>
         <translation>Vorschubfehler zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="205"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="238"/>
         <source>The feeder error was not reset: %1</source>
         <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="218"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="251"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="221"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
         <source>No feeder is connected</source>
         <translation>Kein Lotdrahtvorschub verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="224"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="257"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106"/>
+        <source>What to check</source>
+        <translation>Was zu prüfen ist</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="201"/>
+        <source>%1, %2: %3</source>
+        <translation>%1, %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
+        <source>What to check:</source>
+        <translation>Was zu prüfen ist:</translation>
     </message>
 </context>
 <context>
@@ -4312,164 +4461,164 @@ Fortfahren?</translation>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="72"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="85"/>
         <source>Show events of kind</source>
         <translation>Ereignisse dieser Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="73"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="74"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
         <source>Errors and alarms</source>
         <translation>Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="76"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
         <source>Station errors</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="77"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>Port errors</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="78"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Feeder errors</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="79"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="80"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Status changes</source>
         <translation>Statuswechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="81"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Writes</source>
         <translation>Schreibzugriffe</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="82"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="83"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="141"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="152"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="158"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="169"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="170"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="161"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="172"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="162"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="173"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="174"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="165"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="176"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="166"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="295"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="168"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="206"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="233"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="235"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4477,17 +4626,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="266"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="293"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>

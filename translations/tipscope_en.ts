@@ -13,6 +13,17 @@
     </message>
 </context>
 <context>
+    <name>EventHistoryModel</name>
+    <message numerus="yes">
+        <location filename="../lib/model/eventhistorymodel.cpp" line="72"/>
+        <source>%1 (%n times, until %2)</source>
+        <translation>
+            <numerusform>%1 (%n time, until %2)</numerusform>
+            <numerusform>%1 (%n times, until %2)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>FrameComposer</name>
     <message numerus="yes">
         <location filename="../lib/model/framecomposer.cpp" line="209"/>
@@ -84,6 +95,17 @@
     </message>
 </context>
 <context>
+    <name>SupportReport</name>
+    <message numerus="yes">
+        <location filename="../lib/model/supportreport.cpp" line="182"/>
+        <source>%1 (%n times, until %2)</source>
+        <translation>
+            <numerusform>%1 (%n time, until %2)</numerusform>
+            <numerusform>%1 (%n times, until %2)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
         <location filename="../app/gui/charts/chartwidget.cpp" line="411"/>
@@ -119,7 +141,7 @@
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="235"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>

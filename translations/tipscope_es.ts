@@ -55,11 +55,6 @@
         <translation>Error de puerto desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="225"/>
-        <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
-        <translation>Error del alimentador %1 (no figura en la guía del SFR; bórrelo con W-ECV y consulte el manual del SFR)</translation>
-    </message>
-    <message>
         <location filename="../lib/protocol/catalogstrings.cpp" line="13"/>
         <source>Port status</source>
         <translation>Estado del puerto</translation>
@@ -1035,27 +1030,27 @@
         <translation>Sin error</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="230"/>
         <source>Sleep</source>
         <translation>Reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="231"/>
         <source>Hibernation</source>
         <translation>Hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="232"/>
         <source>Suction on</source>
         <translation>Succión activada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="233"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor adelante (dispensado)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="234"/>
         <source>Motor backward</source>
         <translation>Motor atrás</translation>
     </message>
@@ -1088,6 +1083,101 @@
         <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
         <source>Reset partial fed length</source>
         <translation>Poner a cero la longitud alimentada parcial</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalog.cpp" line="225"/>
+        <source>Feeder error %1 (not listed in the SFR guide)</source>
+        <translation>Error del alimentador %1 (no figura en la guía del SFR)</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <source>The station switched off its power because the transformer was overloaded. Let it cool for a few minutes with the ventilation slots free, then switch it off and on. Check that the tools working at once do not need more than the station can give (large heat sinks, high temperatures, several ports at full power). If it stops again with one tool at normal work, the station needs JBC service.</source>
+        <translation>La estación cortó su potencia porque el transformador se sobrecargó. Déjela enfriar unos minutos con las rejillas de ventilación libres y luego apáguela y enciéndala. Compruebe que las herramientas que trabajan a la vez no necesitan más de lo que la estación puede dar (disipadores grandes, temperaturas altas, varios puertos a plena potencia). Si vuelve a pararse con una herramienta en trabajo normal, la estación necesita el servicio técnico de JBC.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
+        <source>The station cannot read its internal temperature sensor. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
+        <translation>La estación no puede leer su sensor de temperatura interno. Apáguela y enciéndala; si el error sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
+        <source>The station&apos;s memory failed its check. Switch it off and on. If the error stays, restore the factory settings and set the station up again (save a profile first if the settings can still be read); if it still stays, the control unit needs JBC service.</source>
+        <translation>La memoria de la estación no superó su comprobación. Apáguela y enciéndala. Si el error sigue, restaure los ajustes de fábrica y vuelva a configurar la estación (guarde antes un perfil si aún se pueden leer los ajustes); si aun así sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
+        <source>The station does not accept the mains frequency. Check that the voltage and frequency on the station&apos;s label match the supply, and that no generator, UPS or long extension cord makes it unstable; then switch the station off and on.</source>
+        <translation>La estación no acepta la frecuencia de la red. Compruebe que la tensión y la frecuencia de la etiqueta de la estación coinciden con la alimentación y que ningún generador, SAI o alargador largo la vuelve inestable; luego apague y encienda la estación.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
+        <source>The station does not recognise its own model: its configuration is damaged. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
+        <translation>La estación no reconoce su propio modelo: su configuración está dañada. Apáguela y enciéndala; si el error sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="217"/>
+        <source>The station&apos;s tool control board does not answer. Switch the station off, wait ten seconds and switch it on; if the error stays, the control unit needs JBC service.</source>
+        <translation>La placa de control de herramientas de la estación no responde. Apague la estación, espere diez segundos y enciéndala; si el error sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="218"/>
+        <source>The transformer is close to overload; the station stops if this goes on. Reduce the load: fewer tools heating at once, lower temperatures, no tip resting on a large heat sink; keep the ventilation slots free.</source>
+        <translation>El transformador está cerca de la sobrecarga; la estación se parará si esto continúa. Reduzca la carga: menos herramientas calentando a la vez, temperaturas más bajas, ninguna punta apoyada en un disipador grande; mantenga libres las rejillas de ventilación.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="219"/>
+        <source>The guide&apos;s table does not list this code. Note the code and the time, switch the station off and on, and give the code to JBC service if it comes back.</source>
+        <translation>La tabla de la guía no incluye este código. Anote el código y la hora, apague y encienda la estación y, si vuelve a aparecer, comunique el código al servicio técnico de JBC.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="220"/>
+        <source>The heater circuit of the tool is short-circuited. Check that the cartridge is seated fully and is not damaged, then try another cartridge. If the error stays, check the tool&apos;s cable and connector for damage and try the tool on another port.</source>
+        <translation>El circuito calefactor de la herramienta está en cortocircuito. Compruebe que el cartucho está bien insertado y no está dañado, y pruebe otro cartucho. Si el error sigue, revise si el cable y el conector de la herramienta están dañados y pruebe la herramienta en otro puerto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="221"/>
+        <source>The port was switched off after a short circuit and stays off until the station restarts. Switch the station off, change the cartridge, check the tool&apos;s cable and connector for damage, then switch it on again.</source>
+        <translation>El puerto se apagó tras un cortocircuito y sigue apagado hasta que la estación se reinicie. Apague la estación, cambie el cartucho, revise si el cable y el conector de la herramienta están dañados y vuelva a encenderla.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="222"/>
+        <source>The station finds no heater in the tool. Check that the cartridge is seated fully in the handle, then try another cartridge. If the error stays, check the tool&apos;s cable and connector and try the tool on another port.</source>
+        <translation>La estación no encuentra calefactor en la herramienta. Compruebe que el cartucho está bien insertado en el mango y pruebe otro cartucho. Si el error sigue, revise el cable y el conector de la herramienta y pruébela en otro puerto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="223"/>
+        <source>No tool is connected to this port. If one is plugged in, push its connector fully home, then try it on another port.</source>
+        <translation>No hay ninguna herramienta conectada a este puerto. Si hay una enchufada, introduzca su conector hasta el fondo y luego pruébela en otro puerto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="224"/>
+        <source>The station cannot drive the tool plugged into this port. Check the tool&apos;s model against the station&apos;s list of compatible tools and use a tool that is on it, or another station.</source>
+        <translation>La estación no puede controlar la herramienta enchufada en este puerto. Compare el modelo de la herramienta con la lista de herramientas compatibles de la estación y use una que figure en ella, u otra estación.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="225"/>
+        <source>The station is identifying the tool; this takes a few seconds. If it does not end, unplug the tool, check its connector and plug it in again.</source>
+        <translation>La estación está identificando la herramienta; tarda unos segundos. Si no termina, desenchufe la herramienta, revise su conector y vuelva a enchufarla.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="226"/>
+        <source>The port stopped after giving its maximum power for too long. Check that the tip suits the work (a larger tip for large joints) and is not resting on a large heat sink; lower the load and restart the tool.</source>
+        <translation>El puerto se paró tras dar su potencia máxima demasiado tiempo. Compruebe que la punta es adecuada para el trabajo (una punta mayor para soldaduras grandes) y que no está apoyada en un disipador grande; reduzca la carga y reinicie la herramienta.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="227"/>
+        <source>The port&apos;s power transistor overheated and the port stopped. Let the station cool with the ventilation slots free, then reduce the load on this port (a larger tip, a lower temperature, shorter contact with large heat sinks). If it happens at normal work, the station needs JBC service.</source>
+        <translation>El transistor de potencia del puerto se sobrecalentó y el puerto se paró. Deje enfriar la estación con las rejillas de ventilación libres y luego reduzca la carga de este puerto (una punta mayor, una temperatura más baja, menos contacto con disipadores grandes). Si ocurre en trabajo normal, la estación necesita el servicio técnico de JBC.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="228"/>
+        <source>The port&apos;s power transistor is close to overload; the port stops if this goes on. Reduce the load on this port: a lower temperature, shorter contact with large heat sinks; keep the ventilation slots free.</source>
+        <translation>El transistor de potencia del puerto está cerca de la sobrecarga; el puerto se parará si esto continúa. Reduzca la carga de este puerto: una temperatura más baja, menos contacto con disipadores grandes; mantenga libres las rejillas de ventilación.</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="229"/>
+        <source>The SFR guide does not say what the feeder&apos;s error codes mean. Check that the solder wire is loaded and runs freely from the reel to the tool (no knot, no jam, the reel not empty) and that the wire thickness setting matches the wire; then reset the error. If it comes back at once, note the code and see the SFR manual.</source>
+        <translation>La guía del SFR no dice qué significan los códigos de error del alimentador. Compruebe que el hilo de soldadura está cargado y corre libremente del carrete a la herramienta (sin nudos, sin atascos, el carrete no vacío) y que el grosor de hilo ajustado coincide con el hilo; luego restablezca el error. Si vuelve enseguida, anote el código y consulte el manual del SFR.</translation>
     </message>
 </context>
 <context>
@@ -1764,12 +1854,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="147"/>
+        <location filename="../lib/model/devicemodel.cpp" line="153"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <location filename="../lib/model/devicemodel.cpp" line="106"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -1841,29 +1931,37 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="86"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="107"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="88"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="109"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="90"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="111"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="92"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="113"/>
         <source>Source</source>
         <translation>Origen</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="94"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="115"/>
         <source>What happened</source>
         <translation>Qué ocurrió</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/eventhistorymodel.cpp" line="72"/>
+        <source>%1 (%n times, until %2)</source>
+        <translation>
+            <numerusform>%1 (%n vez, hasta %2)</numerusform>
+            <numerusform>%1 (%n veces, hasta %2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2484,94 +2582,94 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="70"/>
+        <location filename="../lib/model/parameter.cpp" line="71"/>
         <source>read-only</source>
         <translation>solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="76"/>
+        <location filename="../lib/model/parameter.cpp" line="77"/>
         <source>%1 to %2</source>
         <translation>de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="79"/>
+        <location filename="../lib/model/parameter.cpp" line="80"/>
         <source> in steps of %1 %2</source>
         <translation> en pasos de %1 %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="86"/>
+        <location filename="../lib/model/parameter.cpp" line="87"/>
         <source>, or %1</source>
         <translation>, o %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="92"/>
-        <location filename="../lib/model/parameter.cpp" line="133"/>
+        <location filename="../lib/model/parameter.cpp" line="93"/>
+        <location filename="../lib/model/parameter.cpp" line="134"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="101"/>
+        <location filename="../lib/model/parameter.cpp" line="102"/>
         <source>%1 is not allowed for %2: allowed is %3</source>
         <translation>%1 no está permitido para %2: se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="106"/>
+        <location filename="../lib/model/parameter.cpp" line="107"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="118"/>
-        <location filename="../lib/model/parameter.cpp" line="216"/>
+        <location filename="../lib/model/parameter.cpp" line="119"/>
+        <location filename="../lib/model/parameter.cpp" line="217"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="137"/>
+        <location filename="../lib/model/parameter.cpp" line="138"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="173"/>
+        <location filename="../lib/model/parameter.cpp" line="174"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="185"/>
+        <location filename="../lib/model/parameter.cpp" line="186"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="186"/>
+        <location filename="../lib/model/parameter.cpp" line="187"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="235"/>
+        <location filename="../lib/model/parameter.cpp" line="236"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="238"/>
+        <location filename="../lib/model/parameter.cpp" line="239"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="259"/>
+        <location filename="../lib/model/parameter.cpp" line="260"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="273"/>
+        <location filename="../lib/model/parameter.cpp" line="274"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="284"/>
+        <location filename="../lib/model/parameter.cpp" line="287"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="297"/>
+        <location filename="../lib/model/parameter.cpp" line="300"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -3010,6 +3108,19 @@ Hágalo permanente con esta regla de udev:
     </message>
 </context>
 <context>
+    <name>SettingName</name>
+    <message>
+        <location filename="../lib/model/settingname.cpp" line="22"/>
+        <source>tool %1</source>
+        <translation>herramienta %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/settingname.cpp" line="33"/>
+        <source>port %1</source>
+        <translation>puerto %1</translation>
+    </message>
+</context>
+<context>
     <name>StationModel</name>
     <message>
         <location filename="../lib/model/stationmodel.cpp" line="55"/>
@@ -3040,44 +3151,67 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="93"/>
+        <location filename="../lib/model/supportreport.cpp" line="142"/>
         <source>TipScope support report, %1</source>
         <translation>Informe de soporte de TipScope, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="94"/>
+        <location filename="../lib/model/supportreport.cpp" line="143"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="100"/>
+        <location filename="../lib/model/supportreport.cpp" line="149"/>
         <source>Line: %1</source>
         <translation>Línea: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="101"/>
+        <location filename="../lib/model/supportreport.cpp" line="150"/>
         <source>State: %1</source>
         <translation>Estado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="102"/>
+        <location filename="../lib/model/supportreport.cpp" line="151"/>
         <source>Statistics: %1</source>
         <translation>Estadísticas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="106"/>
-        <source>Device %1: %2 (%3), software %4</source>
-        <translation>Equipo %1: %2 (%3), software %4</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/supportreport.cpp" line="121"/>
+        <location filename="../lib/model/supportreport.cpp" line="176"/>
         <source>Recent events:</source>
         <translation>Eventos recientes:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="146"/>
+        <location filename="../lib/model/supportreport.cpp" line="205"/>
         <source>cannot write %1: %2</source>
         <translation>no se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="79"/>
+        <source>Device %1</source>
+        <translation>Equipo %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="84"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="86"/>
+        <source>, software %1</source>
+        <translation>, software %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="166"/>
+        <source>  What to check:</source>
+        <translation>  Qué comprobar:</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/supportreport.cpp" line="182"/>
+        <source>%1 (%n times, until %2)</source>
+        <translation>
+            <numerusform>%1 (%n vez, hasta %2)</numerusform>
+            <numerusform>%1 (%n veces, hasta %2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4241,60 +4375,75 @@ Continue?</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="139"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149"/>
         <source>No device is connected.</source>
         <translation>No hay ningún equipo conectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="169"/>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="174"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="171"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182"/>
         <source>Error code %1: %2</source>
         <translation>Código de error %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
         <source>This device has no temperature alarm</source>
         <translation>Este equipo no tiene alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="194"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="227"/>
         <source>Not reset: %1</source>
         <translation>No se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="197"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="230"/>
         <source>Resetting the feeder error…</source>
         <translation>Borrando el error del alimentador…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="204"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="237"/>
         <source>Feeder error reset.</source>
         <translation>Error del alimentador borrado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="205"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="238"/>
         <source>The feeder error was not reset: %1</source>
         <translation>El error del alimentador no se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="218"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="251"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="221"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
         <source>No feeder is connected</source>
         <translation>No hay ningún alimentador conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="224"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="257"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106"/>
+        <source>What to check</source>
+        <translation>Qué comprobar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="201"/>
+        <source>%1, %2: %3</source>
+        <translation>%1, %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
+        <source>What to check:</source>
+        <translation>Qué comprobar:</translation>
     </message>
 </context>
 <context>
@@ -4313,164 +4462,164 @@ Continue?</source>
         <translation>Historial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="72"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="85"/>
         <source>Show events of kind</source>
         <translation>Mostrar eventos del tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="73"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
         <source>All kinds</source>
         <translation>Todos los tipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="74"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
         <source>Errors and alarms</source>
         <translation>Errores y alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="76"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
         <source>Station errors</source>
         <translation>Errores de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="77"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>Port errors</source>
         <translation>Errores de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="78"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Feeder errors</source>
         <translation>Errores del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="79"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
         <source>Alarms</source>
         <translation>Alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="80"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Status changes</source>
         <translation>Cambios de estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="81"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Writes</source>
         <translation>Escrituras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="82"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="83"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="141"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="152"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="158"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="169"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="170"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="161"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="172"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="162"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="173"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="174"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="165"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="176"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="166"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="295"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="168"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="206"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="233"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="235"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4478,17 +4627,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="266"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="293"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>

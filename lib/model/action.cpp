@@ -41,7 +41,7 @@ QString Action::trigger(Confirmation confirmation, qint64 argument) {
         reply->deleteLater();
         m_running = false;
         if (reply->ok()) {
-            m_device.logWrite(Tr::tr("%1 done").arg(name()));
+            m_device.logWrite(m_command.port, Tr::tr("%1 done").arg(name()));
             // A reset's result is worth seeing at once (ECV, CPP, CFP, CTP share their code).
             if (Parameter *same = m_device.parameter(code()))
                 same->refresh();

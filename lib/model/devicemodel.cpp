@@ -95,6 +95,12 @@ std::optional<qint64> DeviceModel::number(Role role, int port) const {
     return p ? p->number() : std::nullopt;
 }
 
+QString DeviceModel::errorAdvice(int port, Wording wording) const {
+    const Parameter *p = parameter(Role::Error, port);
+    const auto code = p ? p->number() : std::nullopt;
+    return code ? catalog().errorAdvice(p->spec(), int(*code), wording) : QString();
+}
+
 QString DeviceModel::displayText(Role role, int port) const {
     const Parameter *p = parameter(role, port);
     return p ? p->displayText() : Tr::tr("—");
@@ -144,12 +150,12 @@ void DeviceModel::refreshAll(Priority priority) {
 void DeviceModel::logCommunication(const QString &what, const QString &reason) {
     if (m_log)
         m_log->add(Event::Kind::Communication, Event::Severity::Warning, displayName(),
-                   Tr::tr("%1: %2").arg(what, reason));
+                   m_queue.isOpen() ? Tr::tr("%1: %2").arg(what, reason) : reason);
 }
 
-void DeviceModel::logWrite(const QString &what) {
+void DeviceModel::logWrite(int port, const QString &what) {
     if (m_log)
-        m_log->add(Event::Kind::Write, Event::Severity::Info, displayName(), what);
+        m_log->add(Event::Kind::Write, Event::Severity::Info, sourceName(port), what);
 }
 
 } // namespace tipscope::model

@@ -51,6 +51,10 @@ public:
     // The value as last read, as a number: nullopt before the first reading, for a text, or
     // when the family has no such value.
     [[nodiscard]] std::optional<qint64> number(protocol::Role role, int port = 0) const;
+    // What to check for the error the device (port 0) or a port last reported, from the
+    // catalog's advice for its error table; empty while no error is known.
+    [[nodiscard]] QString
+    errorAdvice(int port = 0, protocol::Wording wording = protocol::Wording::Translated) const;
     // The value as people read it: "—" before the first reading or when the family has none.
     [[nodiscard]] QString displayText(protocol::Role role, int port = 0) const;
     // In catalog order: every parameter of the group, whatever its port or tool; or those of one
@@ -71,8 +75,11 @@ public:
     // Reads every readable parameter once (settings pages, profiles, the support report).
     void refreshAll(link::Priority priority = link::Priority::Background);
     // Called by parameters and actions when a request of theirs failed or a write was done.
+    // While the line is down every request fails alike, so the entry says the reason only and
+    // a flood of them collapses into one (EventLog). A write names the port it was on (0: the
+    // device's own), so that the history's Source column does.
     void logCommunication(const QString &what, const QString &reason);
-    void logWrite(const QString &what);
+    void logWrite(int port, const QString &what);
 
 Q_SIGNALS:
     void temperatureUnitChanged();

@@ -1,6 +1,9 @@
 #include "eventhistorymodel.h"
 
+#include "timetext.h"
+
 #include <QCoreApplication>
+#include <algorithm>
 
 namespace tipscope::model {
 
@@ -32,6 +35,19 @@ void EventHistoryModel::append(const QList<Event> &events) {
     endInsertRows();
 }
 
+void EventHistoryModel::update(const QList<Event> &events) {
+    for (const Event &e : events) {
+        const auto at =
+            std::lower_bound(m_events.begin(), m_events.end(), e.id,
+                             [](const Event &shown, quint64 id) { return shown.id < id; });
+        if (at == m_events.end() || at->id != e.id)
+            continue;
+        *at = e;
+        const int row = int(at - m_events.begin());
+        Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
+    }
+}
+
 int EventHistoryModel::rowCount(const QModelIndex &parent) const {
     return parent.isValid() ? 0 : int(m_events.size());
 }
@@ -43,8 +59,8 @@ int EventHistoryModel::columnCount(const QModelIndex &parent) const {
 QString EventHistoryModel::text(const Event &e, int column, bool full) {
     switch (column) {
     case Time:
-        return e.time.toString(full ? QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")
-                                    : QStringLiteral("HH:mm:ss"));
+        return full ? e.time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
+                    : clockText(e.time);
     case Severity:
         return levelName(levelOf(e.severity));
     case Kind:
@@ -52,7 +68,12 @@ QString EventHistoryModel::text(const Event &e, int column, bool full) {
     case Source:
         return e.source;
     case Text:
-        return e.text;
+        return e.count > 1
+                   ? Tr::tr("%1 (%n times, until %2)", nullptr, e.count)
+                         .arg(e.text,
+                              full ? e.lastTime.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
+                                   : clockText(e.lastTime))
+                   : e.text;
     default:
         return {};
     }

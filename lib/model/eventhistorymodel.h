@@ -1,7 +1,8 @@
-// The session's EventLog as a table (EventHistoryModel), one row per event, oldest first and
+// The session's EventLog as a table (EventHistoryModel), one row per entry, oldest first and
 // bounded like the log, and a filter over it (EventHistoryFilter) by a set of kinds, a minimum
 // severity and free text in any column. Any front end can show it: each cell has its text and
 // the event's Level (LevelRole); how a level looks (icon, tint) is the front end's business.
+// A collapsed flood (EventLog::repeated) is one row whose text says how often and until when.
 #pragma once
 
 #include "eventlog.h"
@@ -34,6 +35,9 @@ public:
     void reset(const QList<Event> &events);
     // Appends in one insertion; above the capacity the oldest rows go first.
     void append(const QList<Event> &events);
+    // Entries already shown that happened again (EventLog::repeated): found by id and replaced;
+    // an entry no longer in the table is ignored.
+    void update(const QList<Event> &events);
     [[nodiscard]] const Event &event(int row) const { return m_events.at(size_t(row)); }
 
     int rowCount(const QModelIndex &parent = {}) const override;
@@ -41,7 +45,9 @@ public:
     QVariant data(const QModelIndex &index, int role) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
 
-    // What a cell says; `full` gives the date with the time, for files and the clipboard.
+    // What a cell says; `full` gives the date with the time, for files and the clipboard; else
+    // the date shows only when it is not today. A repeated event's text ends with its count
+    // and its last time: "… (75 times, until 10:02:13)".
     [[nodiscard]] static QString text(const Event &e, int column, bool full);
     [[nodiscard]] static QString columnName(int column);
 

@@ -66,6 +66,11 @@ QString Event::severityName(Severity severity) {
     return {};
 }
 
+bool Event::isSaidAgainBy(const Event &later) const {
+    return later.kind == kind && later.severity == severity && later.source == source &&
+           later.text == text;
+}
+
 EventLog::EventLog(QObject *parent, int capacity)
     : QObject(parent)
     , m_capacity(qMax(1, capacity)) {}
@@ -74,6 +79,17 @@ void EventLog::append(Event event) {
     if (!event.time.isValid())
         event.time =
             m_clock ? QDateTime::fromMSecsSinceEpoch(m_clock()) : QDateTime::currentDateTime();
+    if (Event *earlier = repeatTarget(event)) {
+        earlier->count += qMax(1, event.count);
+        earlier->lastTime =
+            qMax(earlier->lastTime, event.lastTime.isValid() ? event.lastTime : event.time);
+        Q_EMIT repeated(*earlier);
+        return;
+    }
+    if (!event.lastTime.isValid())
+        event.lastTime = event.time;
+    event.count = qMax(1, event.count);
+    event.id = ++m_lastId;
     m_events.push_back(event);
     while (int(m_events.size()) > m_capacity) {
         m_events.pop_front();
@@ -82,9 +98,24 @@ void EventLog::append(Event event) {
     Q_EMIT appended(event);
 }
 
+Event *EventLog::repeatTarget(const Event &event) {
+    // Bounded, so that an event from a quiet source does not walk the whole log.
+    int looked = 0;
+    for (auto it = m_events.rbegin(); it != m_events.rend() && looked < kRepeatLookback;
+         ++it, ++looked) {
+        if (it->source != event.source || it->kind != event.kind)
+            continue;
+        if (!it->isSaidAgainBy(event))
+            return nullptr;
+        const qint64 quiet = it->lastTime.msecsTo(event.time);
+        return quiet <= kRepeatWindowMs ? &*it : nullptr;
+    }
+    return nullptr;
+}
+
 void EventLog::add(Event::Kind kind, Event::Severity severity, const QString &source,
                    const QString &text) {
-    append({QDateTime(), kind, severity, source, text});
+    append(Event(QDateTime(), kind, severity, source, text));
 }
 
 void EventLog::setClock(std::function<qint64()> msSinceEpoch) {

@@ -1,6 +1,7 @@
 #include "parameter.h"
 
 #include "devicemodel.h"
+#include "settingname.h"
 
 #include <QCoreApplication>
 #include <QTimer>
@@ -170,7 +171,7 @@ Reply *Parameter::refresh(Priority priority) {
         if (m_state == State::Reading)
             setState(m_value ? State::InSync : State::Unknown);
         m_device.logCommunication(
-            Tr::tr("reading %1 (%2)").arg(label(), QString::fromLatin1(code())),
+            Tr::tr("reading %1 (%2)").arg(settingName(*this), QString::fromLatin1(code())),
             reply->errorString());
     });
     return reply;
@@ -182,7 +183,7 @@ void Parameter::deviceReported(const QByteArray &data) {
     const auto v = decodeAnswer(*m_read, data);
     if (!v) {
         m_device.logCommunication(
-            Tr::tr("reading %1").arg(label()),
+            Tr::tr("reading %1").arg(settingName(*this)),
             Tr::tr("unreadable data field '%1'").arg(QString::fromLatin1(data)));
         return;
     }
@@ -281,7 +282,9 @@ void Parameter::readBack(const QByteArray &written, quint64 id, bool again) {
         Q_EMIT editChanged();
         setState(State::InSync);
         Q_EMIT stateChanged(); // isSavedToMemory() changed even if the state did not
-        m_device.logWrite(Tr::tr("%1 set to %2").arg(label(), displayText()));
+        m_device.logWrite(
+            spec().port,
+            Tr::tr("%1 set to %2").arg(settingName(*this, NameParts::ToolOnly), displayText()));
         succeed(id);
     });
 }
@@ -294,7 +297,7 @@ void Parameter::succeed(quint64 id) {
 void Parameter::fail(const QString &reason, quint64 id) {
     m_runningWrite = 0;
     setState(State::Failed, reason);
-    m_device.logCommunication(Tr::tr("writing %1").arg(label()), reason);
+    m_device.logCommunication(Tr::tr("writing %1").arg(settingName(*this)), reason);
     Q_EMIT writeFinished(false, reason, id);
 }
 

@@ -1,6 +1,8 @@
 #include "supportreport.h"
 
 #include "session.h"
+#include "settingname.h"
+#include "timetext.h"
 
 #include "protocol/catalogtext.h"
 
@@ -19,7 +21,26 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(SupportReport)
 };
 
+// Ports in the order a person reads them: the device's own (0) first.
+QList<int> errorPorts(const DeviceModel &d) {
+    QList<int> ports{0};
+    if (const auto *station = qobject_cast<const StationModel *>(&d))
+        for (const PortModel *port : station->ports())
+            ports.append(port->number());
+    return ports;
+}
+
 QJsonObject deviceJson(const DeviceModel &d) {
+    QJsonArray advice;
+    for (int port : errorPorts(d)) {
+        const QString text = d.errorAdvice(port);
+        const Parameter *error = d.parameter(protocol::Role::Error, port);
+        if (!text.isEmpty() && error)
+            advice.append(QJsonObject{{QStringLiteral("code"), QString::fromLatin1(error->code())},
+                                      {QStringLiteral("label"), settingName(*error)},
+                                      {QStringLiteral("error"), error->displayText()},
+                                      {QStringLiteral("check"), text}});
+    }
     QJsonArray values;
     for (const Parameter *p : d.parameters()) {
         if (!p->value())
@@ -27,19 +48,43 @@ QJsonObject deviceJson(const DeviceModel &d) {
         values.append(
             QJsonObject{{QStringLiteral("code"), QString::fromLatin1(p->code())},
                         {QStringLiteral("name"), p->meta().name},
+                        {QStringLiteral("label"), settingName(*p)},
                         {QStringLiteral("group"), protocol::groupName(p->meta().group)},
                         {QStringLiteral("data"), QString::fromLatin1(p->rawValue())},
                         {QStringLiteral("text"), p->displayText()},
                         {QStringLiteral("state"),
                          QString::fromLatin1(
                              QMetaEnum::fromType<Parameter::State>().valueToKey(int(p->state())))},
-                        {QStringLiteral("updated"), p->lastUpdate().toString(Qt::ISODateWithMs)}});
+                        {QStringLiteral("updated"), isoTimeWithOffset(p->lastUpdate())}});
     }
     return {{QStringLiteral("address"), d.info().addressText()},
             {QStringLiteral("model"), d.info().model},
             {QStringLiteral("family"), d.family()},
             {QStringLiteral("softwareVersion"), d.info().softwareVersion},
-            {QStringLiteral("values"), values}};
+            {QStringLiteral("values"), values},
+            {QStringLiteral("whatToCheck"), advice}};
+}
+// A report written before values had labels names them by the catalog's name alone.
+QString label(const QJsonObject &value) {
+    const QString label = value.value(QStringLiteral("label")).toString();
+    return label.isEmpty() ? protocol::catalogText(value.value(QStringLiteral("name")).toString())
+                           : label;
+}
+
+// "Device 01: DME-2C (DME), software 1.02"; what is not known is left out, not left blank.
+QString deviceHeading(const QJsonObject &d) {
+    const QString model = d.value(QStringLiteral("model")).toString();
+    const QString family = d.value(QStringLiteral("family")).toString();
+    const QString software = d.value(QStringLiteral("softwareVersion")).toString();
+    QString heading = Tr::tr("Device %1").arg(d.value(QStringLiteral("address")).toString());
+    if (!model.isEmpty() || !family.isEmpty())
+        heading += QStringLiteral(": ") + (model.isEmpty() ? family
+                                           : family.isEmpty() || family == model
+                                               ? model
+                                               : Tr::tr("%1 (%2)").arg(model, family));
+    if (!software.isEmpty())
+        heading += Tr::tr(", software %1").arg(software);
+    return heading;
 }
 } // namespace
 
@@ -72,15 +117,19 @@ QJsonObject supportReportJson(Session &session, int recentEvents) {
     const QList<Event> all = session.eventLog().events();
     for (qsizetype i = qMax<qsizetype>(0, all.size() - recentEvents); i < all.size(); ++i) {
         const Event &e = all.at(i);
-        events.append(QJsonObject{{QStringLiteral("time"), e.time.toString(Qt::ISODateWithMs)},
-                                  {QStringLiteral("kind"), Event::kindName(e.kind)},
-                                  {QStringLiteral("severity"), Event::severityName(e.severity)},
-                                  {QStringLiteral("source"), e.source},
-                                  {QStringLiteral("text"), e.text}});
+        QJsonObject event{{QStringLiteral("time"), isoTimeWithOffset(e.time)},
+                          {QStringLiteral("kind"), Event::kindName(e.kind)},
+                          {QStringLiteral("severity"), Event::severityName(e.severity)},
+                          {QStringLiteral("source"), e.source},
+                          {QStringLiteral("text"), e.text},
+                          {QStringLiteral("count"), e.count}};
+        if (e.count > 1)
+            event.insert(QStringLiteral("lastTime"), isoTimeWithOffset(e.lastTime));
+        events.append(event);
     }
     return {{QStringLiteral("format"), QStringLiteral("tipscope-support-report")},
-            {QStringLiteral("created"), QDateTime::currentDateTime().toString(Qt::ISODateWithMs)},
-            {QStringLiteral("tipscopeVersion"), QCoreApplication::applicationVersion()},
+            {QStringLiteral("created"), isoTimeWithOffset(QDateTime::currentDateTime())},
+            {QStringLiteral("tipscopeVersion"), QStringLiteral(TIPSCOPE_VERSION)},
             {QStringLiteral("qtVersion"), QString::fromLatin1(qVersion())},
             {QStringLiteral("system"), QSysInfo::prettyProductName()},
             {QStringLiteral("line"), line},
@@ -103,30 +152,40 @@ QString supportReportText(const QJsonObject &r) {
         << QString();
     for (const QJsonValue &dv : r.value(QStringLiteral("devices")).toArray()) {
         const QJsonObject d = dv.toObject();
-        out << Tr::tr("Device %1: %2 (%3), software %4")
-                   .arg(d.value(QStringLiteral("address")).toString(),
-                        d.value(QStringLiteral("model")).toString(),
-                        d.value(QStringLiteral("family")).toString(),
-                        d.value(QStringLiteral("softwareVersion")).toString());
+        out << deviceHeading(d);
         for (const QJsonValue &vv : d.value(QStringLiteral("values")).toArray()) {
             const QJsonObject v = vv.toObject();
-            // The JSON keeps the catalog's English name for machines; people read theirs.
+            // The JSON keeps the catalog's English name for machines; people read the label,
+            // which names the tool and port of a per-tool or per-port setting.
             out << QStringLiteral("  %1 %2: %3")
                        .arg(v.value(QStringLiteral("code")).toString(), -4)
-                       .arg(protocol::catalogText(v.value(QStringLiteral("name")).toString()),
-                            v.value(QStringLiteral("text")).toString());
+                       .arg(label(v), v.value(QStringLiteral("text")).toString());
+        }
+        const QJsonArray advice = d.value(QStringLiteral("whatToCheck")).toArray();
+        if (!advice.isEmpty())
+            out << Tr::tr("  What to check:");
+        for (const QJsonValue &av : advice) {
+            const QJsonObject a = av.toObject();
+            out << QStringLiteral("    %1 (%2): %3")
+                       .arg(a.value(QStringLiteral("label")).toString(),
+                            a.value(QStringLiteral("error")).toString(),
+                            a.value(QStringLiteral("check")).toString());
         }
         out << QString();
     }
     out << Tr::tr("Recent events:");
     for (const QJsonValue &ev : r.value(QStringLiteral("events")).toArray()) {
         const QJsonObject e = ev.toObject();
+        QString text = e.value(QStringLiteral("text")).toString();
+        const int count = e.value(QStringLiteral("count")).toInt(1);
+        if (count > 1)
+            text = Tr::tr("%1 (%n times, until %2)", nullptr, count)
+                       .arg(text, e.value(QStringLiteral("lastTime")).toString());
         out << QStringLiteral("  %1 [%2] %3 %4: %5")
                    .arg(e.value(QStringLiteral("time")).toString(),
                         e.value(QStringLiteral("severity")).toString(),
                         e.value(QStringLiteral("kind")).toString(),
-                        e.value(QStringLiteral("source")).toString(),
-                        e.value(QStringLiteral("text")).toString());
+                        e.value(QStringLiteral("source")).toString(), text);
     }
     return out.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }

@@ -222,9 +222,28 @@ QString Catalog::portErrorText(const QString &familyName, int code, Wording word
 
 QString Catalog::feederErrorText(int code, Wording wording) const {
     return lookup(m_tables.value(QStringLiteral("feederErrors")), code,
-                  QT_TRANSLATE_NOOP("Catalog", "Feeder error %1 (not listed in the SFR guide; "
-                                               "reset it with W-ECV and see the SFR manual)"),
+                  QT_TRANSLATE_NOOP("Catalog", "Feeder error %1 (not listed in the SFR guide)"),
                   wording);
+}
+
+QString Catalog::errorAdvice(const ResolvedCommand &command, int code, Wording wording) const {
+    if (code == 0 || !command.spec)
+        return {};
+    const QString name = command.spec->table;
+    QString key = name;
+    if (const FamilyInfo *f = family(command.family)) {
+        if (name == QLatin1String("$portErrors")) {
+            key = f->portErrors;
+            code = canonicalPortError(code);
+        } else if (name == QLatin1String("$stationErrors")) {
+            key = f->stationErrors;
+        }
+    }
+    const auto advice = m_advice.constFind(key);
+    if (advice == m_advice.constEnd())
+        return {};
+    const QString text = advice->value(code, advice->value(-1));
+    return text.isEmpty() ? QString() : catalogText(text, wording);
 }
 
 QString Catalog::severity(const QString &tableName, int code) const {

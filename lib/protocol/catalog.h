@@ -151,6 +151,12 @@ public:
     [[nodiscard]] QString portErrorText(const QString &family, int code, Wording wording) const;
     [[nodiscard]] QString feederErrorText(int code, Wording wording) const;
     [[nodiscard]] QString severity(const QString &tableName, int code) const;
+    // What support staff should check, in order, for an error code read with `command` (whose
+    // table is an error table: $stationErrors, $portErrors, feederErrors), from the guides'
+    // meanings; the table's advice for codes it does not list; empty for 0 (no error) or a
+    // table without advice.
+    [[nodiscard]] QString errorAdvice(const ResolvedCommand &command, int code,
+                                      Wording wording) const;
     // Maps a misprinted code (the guides' 80000) to its table entry.
     [[nodiscard]] int canonicalPortError(int code) const;
 
@@ -161,6 +167,7 @@ private:
     QMap<QString, QMap<int, QString>> m_tables;
     QMap<QString, QList<DigitField>> m_digits;
     QMap<QString, QMap<int, QString>> m_severity;
+    QMap<QString, QMap<int, QString>> m_advice; // code -1: any code the table does not list
     QMap<int, int> m_portErrorAliases;
     QMap<QString, Unit> m_units;
     QMap<QString, int> m_addresses;

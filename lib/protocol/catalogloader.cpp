@@ -24,6 +24,7 @@ private:
         return false;
     }
     static QMap<int, QString> intMap(const QJsonObject &o);
+    bool loadAdvice(const QJsonObject &advice);
     bool parseCommand(const QJsonObject &o, const QJsonObject &groups, CommandSpec &spec);
     Catalog &m_c;
 };
@@ -33,6 +34,24 @@ QMap<int, QString> CatalogLoader::intMap(const QJsonObject &o) {
     for (auto it = o.begin(); it != o.end(); ++it)
         m.insert(it.key().toInt(), it.value().toString());
     return m;
+}
+
+// What to check, per error table and code; "other" (kept as -1) for codes the table lacks.
+bool CatalogLoader::loadAdvice(const QJsonObject &advice) {
+    for (auto table = advice.begin(); table != advice.end(); ++table) {
+        const QJsonObject codes = table.value().toObject();
+        QMap<int, QString> byCode;
+        for (auto it = codes.begin(); it != codes.end(); ++it) {
+            bool isNumber = false;
+            const int code = it.key().toInt(&isNumber);
+            if (!isNumber && it.key() != QLatin1String("other"))
+                return fail(
+                    QStringLiteral("advice for %1 has a bad code '%2'").arg(table.key(), it.key()));
+            byCode.insert(isNumber ? code : -1, it.value().toString());
+        }
+        m_c.m_advice.insert(table.key(), byCode);
+    }
+    return true;
 }
 
 static QList<int> intList(const QJsonArray &a) {
@@ -85,6 +104,9 @@ bool CatalogLoader::loadFamilies(const QJsonObject &root) {
             const QJsonObject sev = it.value().toObject();
             for (auto s = sev.begin(); s != sev.end(); ++s)
                 m_c.m_severity.insert(s.key(), intMap(s.value().toObject()));
+        } else if (it.key() == QLatin1String("advice")) {
+            if (!loadAdvice(it.value().toObject()))
+                return false;
         } else if (it.key() == QLatin1String("portErrorAliases")) {
             const QJsonObject al = it.value().toObject();
             for (auto a = al.begin(); a != al.end(); ++a)

@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QScrollBar>
@@ -71,6 +72,7 @@ private Q_SLOTS:
     void newestEventStaysVisibleUnlessTheReaderScrolledUp();
     void copyPutsTheSelectedRowsOnTheClipboard();
     void exportTextWritesTheShownRowsTabSeparated();
+    void aFloodOfOneWarningIsOneRowWithItsCountAndSpan();
 
 private:
     void connectDemo();
@@ -136,6 +138,13 @@ void TestErrorsPage::injectedPortErrorShowsInCurrentStateAndHistory() {
                               QStringLiteral("Short circuit"), kReadMs);
     QCOMPARE(stateText(state(), portName(2), Severity), QStringLiteral("Error"));
     QCOMPARE(stateText(state(), portName(1), Severity), QStringLiteral("OK"));
+    // What to check is said in words under the table, not hidden in a tooltip.
+    auto *advice = m_page->findChild<QLabel *>(QStringLiteral("errorAdvice"));
+    QVERIFY(advice);
+    QVERIFY(advice->isVisibleTo(m_page.get()));
+    QVERIFY2(advice->text().contains(portName(2)) &&
+                 advice->text().contains(QStringLiteral("cartridge is seated")),
+             qPrintable(advice->text()));
     QTRY_COMPARE_WITH_TIMEOUT(historyRows(history(), portName(2), QStringLiteral("Short circuit")),
                               1, kReadMs);
     const QAbstractItemModel *m = history()->model();
@@ -154,6 +163,7 @@ void TestErrorsPage::injectedPortErrorShowsInCurrentStateAndHistory() {
                               kReadMs);
     QTRY_COMPARE_WITH_TIMEOUT(historyRows(history(), portName(2), QStringLiteral("error cleared")),
                               1, kReadMs);
+    QVERIFY(!advice->isVisibleTo(m_page.get()));
 }
 
 void TestErrorsPage::latchedAlarmShowsAsWarningOnItsPort() {
@@ -353,6 +363,19 @@ void TestErrorsPage::exportTextWritesTheShownRowsTabSeparated() {
 
     QVERIFY(!m_page->exportText(QStringLiteral("/nonexistent-dir/events.txt"), &error));
     QVERIFY(!error.isEmpty());
+}
+
+void TestErrorsPage::aFloodOfOneWarningIsOneRowWithItsCountAndSpan() {
+    const int before = history()->model()->rowCount();
+    for (int i = 0; i < 75; ++i)
+        m_session->eventLog().add(Event::Kind::Communication, Event::Severity::Warning,
+                                  QStringLiteral("DME-2C at 01"),
+                                  QStringLiteral("not sent: the line is not connected"));
+    QTRY_COMPARE(history()->model()->rowCount(), before + 1);
+    const QString text = history()->model()->index(before, Text).data().toString();
+    QVERIFY2(
+        text.startsWith(QStringLiteral("not sent: the line is not connected (75 times, until ")),
+        qPrintable(text));
 }
 
 QTEST_MAIN(TestErrorsPage)

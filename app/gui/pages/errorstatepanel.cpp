@@ -101,8 +101,17 @@ ErrorStatePanel::ErrorStatePanel(Session &session, QWidget *parent)
     row->addWidget(m_resetFeeder);
     row->addWidget(m_status, 1);
 
+    m_advice = new QLabel(this);
+    m_advice->setObjectName(QStringLiteral("errorAdvice"));
+    m_advice->setAccessibleName(tr("What to check"));
+    m_advice->setWordWrap(true);
+    m_advice->setTextFormat(Qt::PlainText);
+    m_advice->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_advice->hide();
+
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_table);
+    layout->addWidget(m_advice);
     layout->addLayout(row);
     connect(m_resetFeeder, &QPushButton::clicked, this, &ErrorStatePanel::resetFeederError);
     connect(&m_session, &Session::devicesChanged, this, &ErrorStatePanel::rebuild);
@@ -123,6 +132,7 @@ void ErrorStatePanel::rebuild() {
     m_refresh = new DeferredRefresh(
         *m_table, [this](int row) { updateRow(row); }, m_bindings);
     m_rows.clear();
+    m_rowAdvice.clear();
     m_table->setRowCount(0);
     for (DeviceModel *device : m_session.devices()) {
         addRow(device, 0);
@@ -138,6 +148,7 @@ void ErrorStatePanel::rebuild() {
         m_table->setRowCount(1);
         setCell(m_table, 0, 0, tr("No device is connected."), Level::Unknown);
     }
+    updateAdvice();
     updateButtons();
 }
 
@@ -183,6 +194,28 @@ void ErrorStatePanel::updateRow(int row) {
     setCell(m_table, row, 3, s.explanation, s.errorLevel, errorTip);
     setCell(m_table, row, 4, alarmText, alarmLevel,
             s.hasAlarm ? QString() : tr("This device has no temperature alarm"));
+    // "No tool" on an empty port is information, not a fault to chase.
+    const QString advice =
+        s.errorLevel >= Level::Warning ? device->errorAdvice(m_rows.at(row).port) : QString();
+    const QString said =
+        advice.isEmpty() ? QString() : tr("%1, %2: %3").arg(s.where, s.explanation, advice);
+    if (said != m_rowAdvice.value(row)) {
+        if (said.isEmpty())
+            m_rowAdvice.remove(row);
+        else
+            m_rowAdvice.insert(row, said);
+        updateAdvice();
+    }
+}
+
+void ErrorStatePanel::updateAdvice() {
+    QStringList lines;
+    for (const QString &said : std::as_const(m_rowAdvice))
+        lines.append(QStringLiteral("• ") + said);
+    m_advice->setText(lines.isEmpty() ? QString()
+                                      : tr("What to check:") + QLatin1Char('\n') +
+                                            lines.join(QLatin1Char('\n')));
+    m_advice->setVisible(!lines.isEmpty());
 }
 
 void ErrorStatePanel::resetFeederError() {

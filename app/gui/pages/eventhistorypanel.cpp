@@ -56,12 +56,25 @@ EventHistoryPanel::EventHistoryPanel(Session &session, QWidget *parent)
         if (!m_flush.isActive())
             m_flush.start();
     });
+    connect(&m_session.eventLog(), &EventLog::repeated, this, [this](const Event &e) {
+        // Not yet shown: the pending copy takes the new count; else the row does at the flush.
+        for (Event &pending : m_pending)
+            if (pending.id == e.id) {
+                pending = e;
+                return;
+            }
+        m_repeats.insert(e.id, e);
+        if (!m_flush.isActive())
+            m_flush.start();
+    });
     connect(&m_session.eventLog(), &EventLog::cleared, this, [this] {
         m_pending.clear();
+        m_repeats.clear();
         m_events->reset({});
         updateCount();
     });
     m_events->reset(m_session.eventLog().events());
+    fitTimeColumn();
     m_history->scrollToBottom();
     updateCount();
 }
@@ -141,8 +154,6 @@ void EventHistoryPanel::buildView(QVBoxLayout &layout) {
     header->setStretchLastSection(true);
     const int pad = 24 + style()->pixelMetric(QStyle::PM_SmallIconSize);
     const QFontMetrics fm = fontMetrics();
-    header->resizeSection(EventHistoryModel::Time,
-                          fm.horizontalAdvance(QStringLiteral("00:00:00")) + pad);
     header->resizeSection(EventHistoryModel::Severity,
                           fm.horizontalAdvance(levelName(Level::Warning)) + pad);
     header->resizeSection(EventHistoryModel::Kind,
@@ -182,6 +193,10 @@ void EventHistoryPanel::buildView(QVBoxLayout &layout) {
 }
 
 void EventHistoryPanel::flushEvents() {
+    if (!m_repeats.isEmpty()) {
+        m_events->update(m_repeats.values());
+        m_repeats.clear();
+    }
     if (m_pending.isEmpty())
         return;
     // Follow the newest event only while the reader is at the bottom, not while reading back.
@@ -189,9 +204,21 @@ void EventHistoryPanel::flushEvents() {
     const bool follow = bar->value() >= bar->maximum();
     m_events->append(m_pending);
     m_pending.clear();
+    fitTimeColumn();
     if (follow)
         m_history->scrollToBottom();
     updateCount();
+}
+
+void EventHistoryPanel::fitTimeColumn() {
+    // Today's times are short; the date shows (and needs the room) only for older events.
+    const bool dated = m_events->rowCount() > 0 &&
+                       m_events->event(0).time.toLocalTime().date() != QDate::currentDate();
+    const QString widest =
+        dated ? QStringLiteral("0000-00-00 00:00:00") : QStringLiteral("00:00:00");
+    const int pad = 24 + style()->pixelMetric(QStyle::PM_SmallIconSize);
+    m_history->horizontalHeader()->resizeSection(EventHistoryModel::Time,
+                                                 fontMetrics().horizontalAdvance(widest) + pad);
 }
 
 void EventHistoryPanel::applyFilters() {

@@ -1,7 +1,8 @@
 // EventHistoryPanel: the Errors page's history: the session's EventLog (errors, alarms, status
 // changes, writes, communication errors, connection) with time, severity, kind, source and text,
-// filtered by kind, severity and free text. New events arrive through EventLog::appended, are
-// shown in batches at most ten times a second, and keep the newest row in view unless the reader
+// filtered by kind, severity and free text. New events arrive through EventLog::appended (and
+// new counts of a collapsed flood through EventLog::repeated), are shown in batches at most ten
+// times a second, and keep the newest row in view unless the reader
 // has scrolled up. Copy puts the selected rows on the clipboard; exportText() writes the rows
 // shown, tab-separated. The table is model::EventHistoryModel, which any front end can use.
 #pragma once
@@ -10,6 +11,7 @@
 #include "model/session.h"
 
 #include <QGroupBox>
+#include <QHash>
 #include <QTimer>
 
 class QComboBox;
@@ -37,6 +39,7 @@ private:
     [[nodiscard]] QLayout *buildFilters();
     void buildView(QVBoxLayout &layout);
     void flushEvents();
+    void fitTimeColumn();
     void applyFilters();
     void updateCount();
     void updateButtons();
@@ -55,6 +58,7 @@ private:
     model::EventHistoryModel *m_events = nullptr;
     model::EventHistoryFilter *m_filter = nullptr;
     QList<model::Event> m_pending;
+    QHash<quint64, model::Event> m_repeats; // by id: rows whose count grew since the last flush
     QTimer m_flush;
 };
 
