@@ -1073,7 +1073,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../app/gui/charts/chartcsv.cpp" line="192"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="189"/>
         <source>the file could not be written</source>
         <translation>die Datei konnte nicht geschrieben werden</translation>
     </message>
@@ -1081,123 +1081,123 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="62"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="62"/>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="91"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="91"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>die Zeile ist länger als %1 Bytes (ist das eine Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="98"/>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="273"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="98"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="273"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>die Datei enthält Binärdaten, keinen CSV-Text</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="102"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="102"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="123"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="123"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>die Kopfzeile muss mit &quot;time&quot; beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="126"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="126"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 Spalten; die Wiedergabe liest höchstens %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="137"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="137"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>Spalte %1 &quot;%2&quot; ist weder &quot;port&lt;n&gt; &lt;Reihe&gt; [Einheit]&quot; noch &quot;feeder &lt;Reihe&gt; [Einheit]&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="148"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="148"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>Spalte %1 &quot;%2&quot;: die Einheit muss &quot;%3&quot; sein</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="150"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="150"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="159"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="159"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="174"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="174"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>Spalte %1 &quot;%2&quot; kommt zweimal vor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="179"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="179"/>
         <source>the header names no series columns</source>
         <translation>die Kopfzeile nennt keine Spalten mit Datenreihen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="200"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="200"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>Spalte %1: &quot;%2&quot; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="205"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="205"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 hat nur in einem Teil seiner Spalten Werte</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="212"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="212"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 Zellen, aber die Kopfzeile hat %2 Spalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="217"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="217"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; ist keine Zeitangabe nach ISO 8601</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="220"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="220"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>die Zeit %1 liegt vor der der vorigen Zeile (die Zeilen müssen zeitlich geordnet sein)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="231"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="231"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 hat mehr als %2 Messwerte, mehr als die Wiedergabe fasst; teilen Sie die Datei auf</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="244"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="244"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>das Ereignis &quot;%1&quot; hat nicht die Form &quot;&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="290"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="290"/>
         <source>a quoted cell is not closed</source>
         <translation>eine Zelle in Anführungszeichen ist nicht geschlossen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="300"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="300"/>
         <source>the file has a header but no rows</source>
         <translation>die Datei hat eine Kopfzeile, aber keine Zeilen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="301"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="301"/>
         <source>the file is empty or holds only comments</source>
         <translation>die Datei ist leer oder enthält nur Kommentare</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="319"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="319"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>die Datei ist %1 MB groß; die Wiedergabe liest Dateien bis %2 MB</translation>
     </message>
@@ -1205,7 +1205,7 @@
 <context>
     <name>ChartRecorder</name>
     <message>
-        <location filename="../app/gui/charts/chartrecorder.cpp" line="31"/>
+        <location filename="../lib/model/recording/chartrecorder.cpp" line="31"/>
         <source>nothing to record: no station or feeder is connected</source>
         <translation>nichts aufzuzeichnen: weder Station noch Lotdrahtvorschub verbunden</translation>
     </message>
@@ -1213,62 +1213,62 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="78"/>
         <source>Tip</source>
         <translation>Lötspitze</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="80"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="82"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="84"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="86"/>
         <source>Fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="88"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="90"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="90"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="92"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="92"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="94"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="94"/>
         <source>Transformer</source>
         <translation>Transformator</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="113"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="128"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="128"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="157"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="157"/>
         <source>P%1 </source>
         <translation>P%1 </translation>
     </message>
@@ -1591,102 +1591,102 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="61"/>
+        <location filename="../lib/model/consolemodel.cpp" line="65"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>unverändert gesendet (kein gültiges Telegramm)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="77"/>
+        <location filename="../lib/model/consolemodel.cpp" line="81"/>
         <source>stray: answers no pending request</source>
         <translation>verwaist: beantwortet keine offene Anfrage</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="167"/>
+        <location filename="../lib/model/consolemodel.cpp" line="205"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="169"/>
+        <location filename="../lib/model/consolemodel.cpp" line="207"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="171"/>
+        <location filename="../lib/model/consolemodel.cpp" line="209"/>
         <source>frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="173"/>
+        <location filename="../lib/model/consolemodel.cpp" line="211"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="175"/>
+        <location filename="../lib/model/consolemodel.cpp" line="213"/>
         <source>note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="239"/>
+        <location filename="../lib/model/consolemodel.cpp" line="277"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -2009,32 +2009,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="34"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="32"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: Min. %2, Max. %3, Mittel %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>wake</source>
         <translation>Aufwachen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>heat-up</source>
         <translation>Aufheizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="45"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="43"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 um %2 auf %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 um %2 auf %3: in diesem Zeitfenster nicht erreicht</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="52"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n weiteres Aufheizen</numerusform>
@@ -2042,17 +2042,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="61"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="59"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>Erholung um %1: %2 (Einbruch auf %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="62"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>Einbruch um %1 auf %2: in diesem Zeitfenster nicht erholt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="68"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n weitere Erholung</numerusform>
@@ -2060,22 +2060,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="76"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="74"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="76"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="79"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="77"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="105"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="103"/>
         <source>%1: no samples in this window</source>
         <translation>%1: keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -2492,41 +2492,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="40"/>
-        <location filename="../lib/model/session.cpp" line="111"/>
-        <location filename="../lib/model/session.cpp" line="114"/>
+        <location filename="../lib/model/session.cpp" line="38"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="110"/>
-        <location filename="../lib/model/session.cpp" line="121"/>
-        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="108"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="144"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="227"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -2690,7 +2690,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="43"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="45"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Zeitdiagramm. Mausrad oder Plus- und Minustaste zoomen, Ziehen oder Pfeiltasten verschieben, Umschalt+Ziehen wählt einen Bereich, Doppelklick oder Pos1 setzt zurück.</translation>
     </message>
@@ -2698,7 +2698,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="413"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -2710,7 +2710,7 @@ Dauerhaft mit dieser udev-Regel:
     <name>tipscope::gui::ChartsPage</name>
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
-        <location filename="../app/gui/charts/chartspage.h" line="54"/>
+        <location filename="../app/gui/charts/chartspage.h" line="57"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
@@ -3234,7 +3234,7 @@ Dauerhaft mit dieser udev-Regel:
     </message>
     <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
@@ -3379,52 +3379,52 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="307"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="309"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="328"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="299"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="366"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="367"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="390"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="392"/>
         <source>paused: new traffic is held</source>
         <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n Rohbyte</numerusform>
@@ -3432,17 +3432,17 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="401"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: nicht gesendet, nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="405"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="418"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: gesendet, warte auf Antwort…</translation>
     </message>

@@ -1073,7 +1073,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../app/gui/charts/chartcsv.cpp" line="192"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="189"/>
         <source>the file could not be written</source>
         <translation>no se pudo escribir el archivo</translation>
     </message>
@@ -1081,123 +1081,123 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="62"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="62"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="91"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="91"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>la línea supera los %1 bytes (¿es un CSV de gráficos?)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="98"/>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="273"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="98"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="273"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>el archivo contiene datos binarios, no texto CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="102"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="102"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>el texto no está en UTF-8 (guarde el archivo como &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="123"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="123"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>la fila de cabecera debe empezar por &quot;time&quot; (¿es un CSV de gráficos escrito por TipScope?)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="126"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="126"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 columnas; la reproducción lee como máximo %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="137"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="137"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>la columna %1 &quot;%2&quot; no es &quot;port&lt;n&gt; &lt;serie&gt; [unidad]&quot; ni &quot;feeder &lt;serie&gt; [unidad]&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="148"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="148"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>columna %1 &quot;%2&quot;: la unidad debería ser &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="150"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="150"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="159"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="159"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="174"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="174"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>la columna %1 &quot;%2&quot; aparece dos veces</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="179"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="179"/>
         <source>the header names no series columns</source>
         <translation>la cabecera no nombra ninguna columna de serie</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="200"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="200"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>columna %1: &quot;%2&quot; no es un número</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="205"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="205"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 tiene valores en algunas de sus columnas, pero no en todas</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="212"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="212"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 celdas, pero la cabecera tiene %2 columnas</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="217"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="217"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; no es una hora ISO 8601</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="220"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="220"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>la hora %1 es anterior a la de la fila precedente (las filas deben estar en orden cronológico)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="231"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="231"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 tiene más de %2 muestras, más de las que admite la reproducción; divida el archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="244"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="244"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>el evento &quot;%1&quot; no tiene la forma &quot;&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="290"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="290"/>
         <source>a quoted cell is not closed</source>
         <translation>una celda entre comillas no está cerrada</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="300"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="300"/>
         <source>the file has a header but no rows</source>
         <translation>el archivo tiene cabecera pero ninguna fila</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="301"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="301"/>
         <source>the file is empty or holds only comments</source>
         <translation>el archivo está vacío o solo contiene comentarios</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="319"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="319"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>el archivo ocupa %1 MB; la reproducción lee archivos de hasta %2 MB</translation>
     </message>
@@ -1205,7 +1205,7 @@
 <context>
     <name>ChartRecorder</name>
     <message>
-        <location filename="../app/gui/charts/chartrecorder.cpp" line="31"/>
+        <location filename="../lib/model/recording/chartrecorder.cpp" line="31"/>
         <source>nothing to record: no station or feeder is connected</source>
         <translation>nada que grabar: no hay ninguna estación ni alimentador conectados</translation>
     </message>
@@ -1213,62 +1213,62 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="78"/>
         <source>Tip</source>
         <translation>Punta</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="80"/>
         <source>Setpoint</source>
         <translation>Consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="82"/>
         <source>Power</source>
         <translation>Potencia</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="84"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="86"/>
         <source>Fed length</source>
         <translation>Longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="88"/>
         <source>Speed</source>
         <translation>Velocidad</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="90"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="90"/>
         <source>Feeding</source>
         <translation>Alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="92"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="92"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="94"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="94"/>
         <source>Transformer</source>
         <translation>Transformador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="113"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="128"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="128"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="157"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="157"/>
         <source>P%1 </source>
         <translation>P%1 </translation>
     </message>
@@ -1592,102 +1592,102 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="61"/>
+        <location filename="../lib/model/consolemodel.cpp" line="65"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>enviado tal cual (no es una trama válida)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="77"/>
+        <location filename="../lib/model/consolemodel.cpp" line="81"/>
         <source>stray: answers no pending request</source>
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="167"/>
+        <location filename="../lib/model/consolemodel.cpp" line="205"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="169"/>
+        <location filename="../lib/model/consolemodel.cpp" line="207"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="171"/>
+        <location filename="../lib/model/consolemodel.cpp" line="209"/>
         <source>frame</source>
         <translation>trama</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="173"/>
+        <location filename="../lib/model/consolemodel.cpp" line="211"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="175"/>
+        <location filename="../lib/model/consolemodel.cpp" line="213"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="218"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="234"/>
+        <location filename="../lib/model/consolemodel.cpp" line="272"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="235"/>
+        <location filename="../lib/model/consolemodel.cpp" line="273"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="236"/>
+        <location filename="../lib/model/consolemodel.cpp" line="274"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="237"/>
+        <location filename="../lib/model/consolemodel.cpp" line="275"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="238"/>
+        <location filename="../lib/model/consolemodel.cpp" line="276"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="239"/>
+        <location filename="../lib/model/consolemodel.cpp" line="277"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -2010,32 +2010,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="34"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="32"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: mín. %2, máx. %3, media %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>wake</source>
         <translation>salida del reposo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>heat-up</source>
         <translation>calentamiento</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="45"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="43"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 a las %2 hasta %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 a las %2 hasta %3: no alcanzado en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="52"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n calentamiento más</numerusform>
@@ -2043,17 +2043,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="61"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="59"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>recuperación a las %1: %2 (caída hasta %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="62"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>caída a las %1 hasta %2: sin recuperar en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="68"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n recuperación más</numerusform>
@@ -2061,22 +2061,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="76"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="74"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="76"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="79"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="77"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="105"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="103"/>
         <source>%1: no samples in this window</source>
         <translation>%1: sin muestras en esta ventana</translation>
     </message>
@@ -2493,41 +2493,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="40"/>
-        <location filename="../lib/model/session.cpp" line="111"/>
-        <location filename="../lib/model/session.cpp" line="114"/>
+        <location filename="../lib/model/session.cpp" line="38"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="110"/>
-        <location filename="../lib/model/session.cpp" line="121"/>
-        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="108"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="144"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="212"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="211"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="217"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="227"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -2691,7 +2691,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="43"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="45"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Gráfico temporal. La rueda o las teclas más y menos hacen zoom, arrastrar o las flechas desplazan, Mayús+arrastrar selecciona un intervalo, doble clic o Inicio restablece.</translation>
     </message>
@@ -2699,7 +2699,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="407"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="413"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -2711,7 +2711,7 @@ Hágalo permanente con esta regla de udev:
     <name>tipscope::gui::ChartsPage</name>
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
-        <location filename="../app/gui/charts/chartspage.h" line="54"/>
+        <location filename="../app/gui/charts/chartspage.h" line="57"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
@@ -3235,7 +3235,7 @@ Hágalo permanente con esta regla de udev:
     </message>
     <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
@@ -3380,52 +3380,52 @@ Hágalo permanente con esta regla de udev:
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="294"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="307"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="325"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="309"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="328"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="299"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="346"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="363"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="369"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="366"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="364"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="367"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="370"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="387"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="390"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="389"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="392"/>
         <source>paused: new traffic is held</source>
         <translation>en pausa: el tráfico nuevo se retiene</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="395"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n byte en bruto</numerusform>
@@ -3433,17 +3433,17 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="401"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: no enviado, sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="402"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="405"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: no enviado, el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="415"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="418"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: enviado, esperando la respuesta…</translation>
     </message>

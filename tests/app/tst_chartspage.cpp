@@ -2,9 +2,9 @@
 // an SFR at 10 on a 19200 Bd wire, so the tests wait for real polls): panes and curves, event
 // markers for status changes injected in the simulator, the crosshair readout after zoom and pan,
 // export, recording and replay.
-#include "charts/chartframe.h"
 #include "charts/chartspage.h"
 #include "charts/chartwidget.h"
+#include "model/chart/chartframe.h"
 #include "model/feedermodel.h"
 
 #include "sim/simline.h"
@@ -21,7 +21,7 @@
 
 using namespace tipscope;
 using namespace tipscope::gui;
-using model::Session;
+using namespace tipscope::model;
 
 namespace {
 constexpr int kConnectMs = 30000;

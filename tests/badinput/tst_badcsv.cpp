@@ -3,12 +3,12 @@
 // names the line; nothing partial comes back. The reader is young and its format may still move:
 // if the minimal valid file below stops replaying, the cases are skipped with the reader's own
 // message, so this file is updated with the format instead of failing someone else's build.
-#include "charts/chartcsvreader.h"
+#include "model/recording/chartcsvreader.h"
 
 #include <QBuffer>
 #include <QtTest>
 
-using namespace tipscope::gui;
+using namespace tipscope::model;
 
 namespace {
 

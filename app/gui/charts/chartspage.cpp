@@ -1,9 +1,9 @@
 #include "chartspage.h"
 
-#include "chartcsvreader.h"
-#include "chartframe.h"
-#include "chartrecorder.h"
 #include "chartwidget.h"
+#include "model/chart/chartframe.h"
+#include "model/recording/chartcsvreader.h"
+#include "model/recording/chartrecorder.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -2,10 +2,10 @@
 // window, continuous recording, and replay of a recording.
 #include "chartspage.h"
 
-#include "chartcsv.h"
-#include "chartcsvreader.h"
-#include "chartrecorder.h"
 #include "chartwidget.h"
+#include "model/recording/chartcsv.h"
+#include "model/recording/chartcsvreader.h"
+#include "model/recording/chartrecorder.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

@@ -1,15 +1,13 @@
-#include "measurementreport.h"
+#include "model/analysis/measurementreport.h"
 
-#include "measurements.h"
+#include "model/analysis/measurements.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QLocale>
 #include <QSet>
 
-namespace tipscope::gui {
-
-using model::TelemetryBuffer;
+namespace tipscope::model {
 
 namespace {
 struct Tr {
@@ -79,7 +77,7 @@ QString durationText(qint64 ms) {
     return Tr::tr("%1 h %2 min").arg(ms / 3600'000).arg(ms / 60'000 % 60, 2, 10, QLatin1Char('0'));
 }
 
-QString measurementReport(const model::Telemetry &telemetry, const QList<ChartChannel> &channels,
+QString measurementReport(const Telemetry &telemetry, const QList<ChartChannel> &channels,
                           const MeasurementRequest &request) {
     QStringList lines;
     const SeriesFormat temp = seriesFormat(QStringLiteral("tip"), request.unit);
@@ -121,4 +119,4 @@ QString measurementReport(const model::Telemetry &telemetry, const QList<ChartCh
     return lines.join(QLatin1Char('\n'));
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

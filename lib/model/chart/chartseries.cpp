@@ -1,4 +1,4 @@
-#include "chartseries.h"
+#include "model/chart/chartseries.h"
 
 #include "model/session.h"
 #include "protocol/catalog.h"
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 namespace {
 struct Tr {
@@ -31,7 +31,7 @@ QString wireUnit(const QString &series) {
     return {};
 }
 
-std::optional<qint64> numberOf(const model::Parameter *p) {
+std::optional<qint64> numberOf(const Parameter *p) {
     return p ? p->number() : std::nullopt;
 }
 } // namespace
@@ -51,11 +51,11 @@ QString SeriesFormat::format(double display) const {
     return unit.isEmpty() ? number : number + QLatin1Char(' ') + unit;
 }
 
-SeriesFormat seriesFormat(const QString &series, model::TemperatureUnit unit) {
+SeriesFormat seriesFormat(const QString &series, TemperatureUnit unit) {
     SeriesFormat f;
     const QString key = wireUnit(series);
     if (key == QLatin1String("degC")) {
-        const bool fahrenheit = unit == model::TemperatureUnit::Fahrenheit;
+        const bool fahrenheit = unit == TemperatureUnit::Fahrenheit;
         f.scale = fahrenheit ? 1.8 : 1;
         f.offset = fahrenheit ? 32 : 0;
         // °F of a whole °C has a fraction; one decimal keeps the CSV exact.
@@ -95,19 +95,19 @@ QString seriesTitle(const QString &series) {
     return series;
 }
 
-QList<ChartChannel> sessionChannels(model::Session &session) {
+QList<ChartChannel> sessionChannels(Session &session) {
     QList<ChartChannel> out;
-    const auto describe = [](const model::DeviceModel &d, ChartChannel &c) {
+    const auto describe = [](const DeviceModel &d, ChartChannel &c) {
         c.deviceModel = d.info().model;
         c.deviceName = d.displayName();
         c.address = d.info().addressText();
         c.softwareVersion = d.info().softwareVersion;
     };
-    for (model::DeviceModel *d : session.devices()) {
-        if (auto *station = qobject_cast<model::StationModel *>(d)) {
-            for (model::PortModel *port : station->ports()) {
+    for (DeviceModel *d : session.devices()) {
+        if (auto *station = qobject_cast<StationModel *>(d)) {
+            for (PortModel *port : station->ports()) {
                 ChartChannel c;
-                c.key = model::Session::telemetryKey(*station, port->number());
+                c.key = Session::telemetryKey(*station, port->number());
                 c.port = port->number();
                 c.id = QStringLiteral("port%1").arg(c.port);
                 c.title = Tr::tr("Port %1").arg(c.port);
@@ -121,9 +121,9 @@ QList<ChartChannel> sessionChannels(model::Session &session) {
                     c.series = buffer->seriesNames();
                 out.append(c);
             }
-        } else if (auto *feeder = qobject_cast<model::FeederModel *>(d)) {
+        } else if (auto *feeder = qobject_cast<FeederModel *>(d)) {
             ChartChannel c;
-            c.key = model::Session::telemetryKey(*feeder, 0);
+            c.key = Session::telemetryKey(*feeder, 0);
             c.id = QStringLiteral("feeder");
             c.title = Tr::tr("Feeder");
             describe(*feeder, c);
@@ -148,7 +148,7 @@ bool isHardwareSeries(const QString &series) {
 }
 
 QList<ChartTrace> tracesFor(const QList<ChartChannel> &channels, const QList<int> &which,
-                            model::TemperatureUnit unit, bool hardware) {
+                            TemperatureUnit unit, bool hardware) {
     QList<ChartTrace> out;
     QSet<QString> transformers; // one curve per station, however many of its ports are shown
     for (int index : which) {
@@ -182,4 +182,4 @@ QList<ChartTrace> tracesFor(const QList<ChartChannel> &channels, const QList<int
     return out;
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

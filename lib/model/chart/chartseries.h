@@ -18,7 +18,7 @@ namespace tipscope::model {
 class Session;
 }
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 enum class ChartAxis { Left, Right };
 
@@ -38,7 +38,7 @@ struct SeriesFormat {
 
 // The format of a telemetry series ("tip", "setpoint", "power", "status", "fed", "speed",
 // "feeding"); an unknown series is a plain number.
-[[nodiscard]] SeriesFormat seriesFormat(const QString &series, model::TemperatureUnit unit);
+[[nodiscard]] SeriesFormat seriesFormat(const QString &series, TemperatureUnit unit);
 // The person-readable name of a series ("Tip", "Setpoint", "Power", "Fed length"...).
 [[nodiscard]] QString seriesTitle(const QString &series);
 
@@ -62,7 +62,7 @@ struct ChartChannel {
 
 // The channels of the session's station ports and feeder, in that order, with the tools and
 // alarm limits as last read (call again to refresh them).
-[[nodiscard]] QList<ChartChannel> sessionChannels(model::Session &session);
+[[nodiscard]] QList<ChartChannel> sessionChannels(Session &session);
 
 struct ChartTrace {
     int channel = 0; // index into the channel list
@@ -77,11 +77,11 @@ struct ChartTrace {
 // or fed length and speed of a feeder channel. Colours follow the port, so overlaid ports differ
 // and a port keeps its colour in its own pane.
 [[nodiscard]] QList<ChartTrace> tracesFor(const QList<ChartChannel> &channels,
-                                          const QList<int> &which, model::TemperatureUnit unit,
+                                          const QList<int> &which, TemperatureUnit unit,
                                           bool hardware = false);
 // The transistor and transformer temperatures, which a pane draws only when asked (`hardware`
 // above); the transformer's is the station's, drawn once per station.
 [[nodiscard]] bool isHardwareSeries(const QString &series);
 [[nodiscard]] QColor portColor(int port);
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

@@ -8,19 +8,19 @@
 // an event is one cell, "port3 status: Working → Stand" (scope, kind token, text).
 #pragma once
 
-#include "chartseries.h"
+#include "model/chart/chartseries.h"
 
 #include "model/eventlog.h"
 
 #include <deque>
 #include <optional>
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 struct ChartEvent {
     qint64 timeMs = 0;
-    model::Event::Kind kind = model::Event::Kind::Status;
-    model::Event::Severity severity = model::Event::Severity::Info;
+    Event::Kind kind = Event::Kind::Status;
+    Event::Severity severity = Event::Severity::Info;
     QString scope;
     QString text;
 
@@ -29,7 +29,7 @@ struct ChartEvent {
     // nullopt when the cell is not "scope kind: text" with a known kind.
     [[nodiscard]] static std::optional<ChartEvent> fromCsvCell(qint64 timeMs, const QString &cell);
     // Whether events of this kind get a marker (connection and communication notes do not).
-    [[nodiscard]] static bool isMarked(model::Event::Kind kind);
+    [[nodiscard]] static bool isMarked(Event::Kind kind);
 };
 
 class ChartEvents {
@@ -38,8 +38,7 @@ public:
 
     // Adds a marked kind of event from the log, scoped by matching its source to `channels`, and
     // returns it; other kinds, and events of no known channel, are ignored (nullopt).
-    std::optional<ChartEvent> addFromLog(const model::Event &event,
-                                         const QList<ChartChannel> &channels);
+    std::optional<ChartEvent> addFromLog(const Event &event, const QList<ChartChannel> &channels);
     void add(ChartEvent event);
     void clear() { m_events.clear(); }
     [[nodiscard]] int size() const { return int(m_events.size()); }
@@ -52,4 +51,4 @@ private:
     std::deque<ChartEvent> m_events;
 };
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

@@ -1,9 +1,9 @@
 // The charts' CSV: what an export or a recording writes reads back exactly for replay, files the
 // reader cannot use fully are refused with a message naming the line and the problem, and the
 // recorder writes each new sample once, in time order.
-#include "charts/chartcsv.h"
-#include "charts/chartcsvreader.h"
-#include "charts/chartrecorder.h"
+#include "model/recording/chartcsv.h"
+#include "model/recording/chartcsvreader.h"
+#include "model/recording/chartrecorder.h"
 
 #include <QBuffer>
 #include <QSignalSpy>
@@ -11,10 +11,7 @@
 #include <QTest>
 
 using namespace tipscope;
-using namespace tipscope::gui;
-using model::Event;
-using model::Telemetry;
-using model::TemperatureUnit;
+using namespace tipscope::model;
 
 namespace {
 constexpr qint64 kT0 = 1'700'000'000'000;

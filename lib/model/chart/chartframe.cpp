@@ -1,15 +1,11 @@
-#include "chartframe.h"
+#include "model/chart/chartframe.h"
 
 #include <QDateTime>
 #include <QLocale>
 #include <cmath>
 #include <optional>
 
-namespace tipscope::gui {
-
-using model::MinMaxBucket;
-using model::Telemetry;
-using model::TelemetryBuffer;
+namespace tipscope::model {
 
 void ValueSpan::include(double v) {
     if (!valid) {
@@ -104,7 +100,7 @@ ChartFrame buildFrame(const Telemetry &telemetry, const QList<ChartChannel> &cha
         // Block edges: a column's extremes are drawn at their true times, so a column edge moved
         // by a few samples changes no pixel, and the day window costs a quarter as much.
         const QList<QList<MinMaxBucket>> buckets =
-            buffer->decimate(series, t0, t1, qMax(1, columns), model::ColumnEdges::Blocks);
+            buffer->decimate(series, t0, t1, qMax(1, columns), ColumnEdges::Blocks);
         for (qsizetype g = 0; g < group.size(); ++g) {
             const ChartTrace &trace = traces.at(group.at(g));
             ValueSpan span;
@@ -177,4 +173,4 @@ ValueSpan niceRange(const ValueSpan &span, double minimumWidth) {
     return {std::floor(bottom / step) * step, std::ceil((high + pad) / step) * step, true};
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

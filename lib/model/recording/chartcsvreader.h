@@ -10,8 +10,8 @@
 // returned: a file either replays whole or not at all.
 #pragma once
 
-#include "chartevents.h"
-#include "chartseries.h"
+#include "model/chart/chartevents.h"
+#include "model/chart/chartseries.h"
 
 #include "model/telemetry/telemetry.h"
 
@@ -19,11 +19,11 @@
 
 class QIODevice;
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 // A recording read back: its own telemetry (keys are the channel ids), channels and events.
 struct ChartRecording {
-    std::unique_ptr<model::Telemetry> telemetry;
+    std::unique_ptr<Telemetry> telemetry;
     QList<ChartChannel> channels;
     ChartEvents events;
     QString software; // "TipScope 0.1.0", as the header says
@@ -36,7 +36,7 @@ class ChartCsvReader {
 public:
     static constexpr qint64 kMaxFileBytes = 1LL << 30;
     static constexpr int kMaxLineBytes = 64 * 1024;
-    static constexpr int kMaxSamplesPerChannel = 2 * model::TelemetryBuffer::kDefaultCapacity;
+    static constexpr int kMaxSamplesPerChannel = 2 * TelemetryBuffer::kDefaultCapacity;
     static constexpr int kMaxColumns = 256;
 
     // nullptr with `error` set ("recording.csv, line 12: ...") when the file cannot be replayed.
@@ -46,4 +46,4 @@ public:
     [[nodiscard]] static std::unique_ptr<ChartRecording> read(QIODevice &device, QString *error);
 };
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

@@ -1,6 +1,6 @@
-#include "chartcsvreader.h"
+#include "model/recording/chartcsvreader.h"
 
-#include "chartcsv.h"
+#include "model/recording/chartcsv.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -9,7 +9,7 @@
 #include <QRegularExpression>
 #include <QStringDecoder>
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 namespace {
 struct Tr {
@@ -141,9 +141,9 @@ bool Parser::header(const QStringList &cells) {
         const QString id = m.captured(1);
         const QString series = m.captured(3);
         const QString unit = m.captured(4);
-        SeriesFormat format = seriesFormat(series, model::TemperatureUnit::Celsius);
+        SeriesFormat format = seriesFormat(series, TemperatureUnit::Celsius);
         if (unit == QStringLiteral("°F") && format.unit == QStringLiteral("°C"))
-            format = seriesFormat(series, model::TemperatureUnit::Fahrenheit);
+            format = seriesFormat(series, TemperatureUnit::Fahrenheit);
         if (unit != format.unit)
             return fail(Tr::tr("column %1 \"%2\": the unit should be \"%3\"")
                             .arg(i + 1)
@@ -251,7 +251,7 @@ bool Parser::row(const QStringList &cells) {
 }
 
 std::unique_ptr<ChartRecording> Parser::finish() {
-    m_out->telemetry = std::make_unique<model::Telemetry>();
+    m_out->telemetry = std::make_unique<Telemetry>();
     for (qsizetype c = 0; c < m_channels.size(); ++c) {
         const ChartChannel &channel = m_channels.at(c);
         const ChannelData &data = m_data.at(c);
@@ -328,4 +328,4 @@ std::unique_ptr<ChartRecording> ChartCsvReader::readFile(const QString &path, QS
     return result;
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

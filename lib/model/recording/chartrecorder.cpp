@@ -1,9 +1,9 @@
-#include "chartrecorder.h"
+#include "model/recording/chartrecorder.h"
 
 #include <QCoreApplication>
 #include <limits>
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 namespace {
 struct Tr {
@@ -11,10 +11,10 @@ struct Tr {
 };
 } // namespace
 
-ChartRecorder::ChartRecorder(model::Telemetry &telemetry, QObject *parent)
+ChartRecorder::ChartRecorder(Telemetry &telemetry, QObject *parent)
     : QObject(parent)
     , m_telemetry(&telemetry) {
-    connect(&telemetry, &model::Telemetry::samplesAdded, this, [this] {
+    connect(&telemetry, &Telemetry::samplesAdded, this, [this] {
         if (isRecording())
             flush();
     });
@@ -25,7 +25,7 @@ ChartRecorder::~ChartRecorder() {
 }
 
 QString ChartRecorder::start(const QString &path, const QList<ChartChannel> &channels,
-                             model::TemperatureUnit unit, const QString &softwareVersion) {
+                             TemperatureUnit unit, const QString &softwareVersion) {
     stop();
     if (channels.isEmpty())
         return Tr::tr("nothing to record: no station or feeder is connected");
@@ -118,4 +118,4 @@ void ChartRecorder::flush() {
     }
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

@@ -13,24 +13,24 @@
 // telemetry is destroyed first (the main window destroys the session before its pages).
 #pragma once
 
-#include "chartcsv.h"
+#include "model/recording/chartcsv.h"
 
 #include <QFile>
 #include <QObject>
 #include <QPointer>
 #include <memory>
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 class ChartRecorder : public QObject {
     Q_OBJECT
 public:
-    explicit ChartRecorder(model::Telemetry &telemetry, QObject *parent = nullptr);
+    explicit ChartRecorder(Telemetry &telemetry, QObject *parent = nullptr);
     ~ChartRecorder() override;
 
     // Empty when recording started; otherwise why not (the file could not be created...).
-    QString start(const QString &path, const QList<ChartChannel> &channels,
-                  model::TemperatureUnit unit, const QString &softwareVersion);
+    QString start(const QString &path, const QList<ChartChannel> &channels, TemperatureUnit unit,
+                  const QString &softwareVersion);
     void stop();
     [[nodiscard]] bool isRecording() const { return m_writer != nullptr; }
     [[nodiscard]] QString path() const { return m_file.fileName(); }
@@ -49,7 +49,7 @@ private:
         qsizetype doneAtTime = 0; // samples at `time` already written
     };
 
-    QPointer<model::Telemetry> m_telemetry;
+    QPointer<Telemetry> m_telemetry;
     QFile m_file;
     std::unique_ptr<ChartCsvWriter> m_writer;
     QList<ChartChannel> m_channels;
@@ -59,4 +59,4 @@ private:
     qint64 m_rows = 0;
 };
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

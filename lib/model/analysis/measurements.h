@@ -21,7 +21,7 @@
 #include <QList>
 #include <optional>
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 struct HeatUp {
     qint64 startMs = 0; // the setpoint change or the wake
@@ -49,18 +49,17 @@ public:
     static constexpr int kMaxResults = 200;
 
     // Times in [t0, t1) of the samples whose value differs from the sample before them.
-    [[nodiscard]] static QList<qint64> changeTimes(const model::TelemetryBuffer &buffer, int series,
+    [[nodiscard]] static QList<qint64> changeTimes(const TelemetryBuffer &buffer, int series,
                                                    qint64 t0, qint64 t1);
     // The first sample of [t0, t1) within [low, high], or under `low` for firstBelow().
-    [[nodiscard]] static std::optional<qint64> firstWithin(const model::TelemetryBuffer &buffer,
+    [[nodiscard]] static std::optional<qint64> firstWithin(const TelemetryBuffer &buffer,
                                                            int series, qint64 t0, qint64 t1,
                                                            qint32 low, qint32 high);
-    [[nodiscard]] static std::optional<qint64> firstBelow(const model::TelemetryBuffer &buffer,
-                                                          int series, qint64 t0, qint64 t1,
-                                                          qint32 limit);
+    [[nodiscard]] static std::optional<qint64> firstBelow(const TelemetryBuffer &buffer, int series,
+                                                          qint64 t0, qint64 t1, qint32 limit);
     // `tolerance` in wire units (°C). Empty unless the buffer has tip, setpoint and status.
-    [[nodiscard]] static PortMeasurements measurePort(const model::TelemetryBuffer &buffer,
-                                                      qint64 t0, qint64 t1, qint32 tolerance);
+    [[nodiscard]] static PortMeasurements measurePort(const TelemetryBuffer &buffer, qint64 t0,
+                                                      qint64 t1, qint32 tolerance);
 };
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

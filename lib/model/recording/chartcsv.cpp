@@ -1,14 +1,11 @@
-#include "chartcsv.h"
+#include "model/recording/chartcsv.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QIODevice>
 #include <cmath>
 
-namespace tipscope::gui {
-
-using model::Telemetry;
-using model::TelemetryBuffer;
+namespace tipscope::model {
 
 namespace {
 struct Tr {
@@ -72,7 +69,7 @@ QString chartcsv::quoted(const QString &cell) {
 }
 
 ChartCsvWriter::ChartCsvWriter(QIODevice &device, const QList<ChartChannel> &channels,
-                               model::TemperatureUnit unit)
+                               TemperatureUnit unit)
     : m_device(device)
     , m_out(&device)
     , m_channels(channels) {
@@ -192,4 +189,4 @@ QString ChartCsvWriter::errorString() const {
     return why.isEmpty() ? Tr::tr("the file could not be written") : why;
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

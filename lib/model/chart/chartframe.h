@@ -12,13 +12,13 @@
 // it, straight from the buffer (not from the decimated points), in display units.
 #pragma once
 
-#include "chartseries.h"
+#include "model/chart/chartseries.h"
 
 #include "model/telemetry/telemetry.h"
 
 #include <QPointF>
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 struct ValueSpan {
     double min = 0;
@@ -38,12 +38,11 @@ struct ChartFrame {
 };
 
 // The points of one series over [t0, t1) at `columns` columns, in display units.
-[[nodiscard]] QList<QPointF> minMaxPoints(const model::TelemetryBuffer &buffer, int series,
-                                          qint64 t0, qint64 t1, int columns,
-                                          const SeriesFormat &format, ValueSpan *span = nullptr);
+[[nodiscard]] QList<QPointF> minMaxPoints(const TelemetryBuffer &buffer, int series, qint64 t0,
+                                          qint64 t1, int columns, const SeriesFormat &format,
+                                          ValueSpan *span = nullptr);
 
-[[nodiscard]] ChartFrame buildFrame(const model::Telemetry &telemetry,
-                                    const QList<ChartChannel> &channels,
+[[nodiscard]] ChartFrame buildFrame(const Telemetry &telemetry, const QList<ChartChannel> &channels,
                                     const QList<ChartTrace> &traces, qint64 t0, qint64 t1,
                                     int columns);
 
@@ -55,7 +54,7 @@ struct ReadoutValue {
     double display = 0;
 };
 
-[[nodiscard]] QList<ReadoutValue> readoutAt(const model::Telemetry &telemetry,
+[[nodiscard]] QList<ReadoutValue> readoutAt(const Telemetry &telemetry,
                                             const QList<ChartChannel> &channels,
                                             const QList<ChartTrace> &traces, qint64 timeMs);
 // "12:03:04.250  P1 tip 351 °C · P1 setpoint 350 °C · P1 power 12.5 %".
@@ -66,4 +65,4 @@ struct ReadoutValue {
 // follow-mode axis does not twitch with every new sample.
 [[nodiscard]] ValueSpan niceRange(const ValueSpan &span, double minimumWidth);
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

@@ -12,8 +12,8 @@
 // The writer does not own the device. Rows must be written in non-decreasing time.
 #pragma once
 
-#include "chartevents.h"
-#include "chartseries.h"
+#include "model/chart/chartevents.h"
+#include "model/chart/chartseries.h"
 
 #include "model/telemetry/telemetry.h"
 
@@ -21,7 +21,7 @@
 
 class QIODevice;
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 namespace chartcsv {
 inline constexpr char kMagic[] = "# TipScope chart data, format 1";
@@ -42,14 +42,12 @@ struct ChannelRows {
 
 class ChartCsvWriter {
 public:
-    ChartCsvWriter(QIODevice &device, const QList<ChartChannel> &channels,
-                   model::TemperatureUnit unit);
+    ChartCsvWriter(QIODevice &device, const QList<ChartChannel> &channels, TemperatureUnit unit);
 
     bool writeHeader(const QString &softwareVersion);
     // Every sample of [t0, t1) of every channel, and the events of that window, read a slice
     // at a time so an export of a day does not copy the day into memory at once.
-    bool writeWindow(const model::Telemetry &telemetry, const ChartEvents &events, qint64 t0,
-                     qint64 t1);
+    bool writeWindow(const Telemetry &telemetry, const ChartEvents &events, qint64 t0, qint64 t1);
     // Rows for samples and events gathered by a caller (the recorder); rows[i] is channel i's.
     bool writeRows(const QList<ChannelRows> &rows, const QList<ChartEvent> &events);
 
@@ -57,7 +55,7 @@ public:
     [[nodiscard]] QString errorString() const;
 
     // The samples of [t0, t1) of `channel` from the telemetry, for writeRows().
-    [[nodiscard]] static ChannelRows collect(const model::Telemetry &telemetry,
+    [[nodiscard]] static ChannelRows collect(const Telemetry &telemetry,
                                              const ChartChannel &channel, qint64 t0, qint64 t1);
 
 private:
@@ -70,4 +68,4 @@ private:
     qint64 m_rows = 0;
 };
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

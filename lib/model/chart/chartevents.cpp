@@ -1,10 +1,8 @@
-#include "chartevents.h"
+#include "model/chart/chartevents.h"
 
 #include <algorithm>
 
-namespace tipscope::gui {
-
-using model::Event;
+namespace tipscope::model {
 
 namespace {
 // Stable tokens for the CSV, independent of the interface language.
@@ -113,4 +111,4 @@ QList<ChartEvent> ChartEvents::between(qint64 t0, qint64 t1, const ChartChannel 
     return out;
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

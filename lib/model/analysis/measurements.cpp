@@ -1,14 +1,10 @@
-#include "measurements.h"
+#include "model/analysis/measurements.h"
 
 #include "model/portmodel.h"
 
 #include <algorithm>
 
-namespace tipscope::gui {
-
-using model::MinMaxBucket;
-using model::PortStatus;
-using model::TelemetryBuffer;
+namespace tipscope::model {
 
 namespace {
 // Columns used to locate changes and crossings; only columns that can hold one are read raw.
@@ -166,4 +162,4 @@ PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64
     return out;
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

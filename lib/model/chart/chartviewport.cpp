@@ -1,8 +1,8 @@
-#include "chartviewport.h"
+#include "model/chart/chartviewport.h"
 
 #include <cmath>
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 ChartViewport::ChartViewport(QObject *parent)
     : QObject(parent) {}
@@ -77,4 +77,4 @@ void ChartViewport::place(qint64 end, qint64 window, bool following) {
         Q_EMIT followingChanged(following);
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

@@ -13,7 +13,7 @@
 
 #include <QObject>
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 class ChartViewport : public QObject {
     Q_OBJECT
@@ -61,4 +61,4 @@ private:
     bool m_following = true;
 };
 
-} // namespace tipscope::gui
+} // namespace tipscope::model
