@@ -1,5 +1,7 @@
 #include "model/recording/chartcsv.h"
 
+#include "model/io/csv.h"
+
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QIODevice>
@@ -56,16 +58,6 @@ QString chartcsv::columnName(const QString &channelId, const QString &series,
 
 QString chartcsv::timeText(qint64 ms) {
     return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs);
-}
-
-QString chartcsv::quoted(const QString &cell) {
-    QString flat = cell;
-    flat.replace(QLatin1Char('\n'), QLatin1Char(' ')).replace(QLatin1Char('\r'), QLatin1Char(' '));
-    if (!flat.contains(QLatin1Char(',')) && !flat.contains(QLatin1Char('"')) &&
-        flat.trimmed() == flat)
-        return flat;
-    flat.replace(QStringLiteral("\""), QStringLiteral("\"\""));
-    return QLatin1Char('"') + flat + QLatin1Char('"');
 }
 
 ChartCsvWriter::ChartCsvWriter(QIODevice &device, const QList<ChartChannel> &channels,
@@ -178,7 +170,7 @@ void ChartCsvWriter::writeRow(qint64 timeMs, const QList<const QList<qint32> *> 
                 m_out << formatValue(cells.at(c)->at(s), m_formats.at(c).at(s));
         }
     }
-    m_out << ',' << chartcsv::quoted(event) << '\n';
+    m_out << ',' << csv::quoted(event) << '\n';
     ++m_rows;
 }
 

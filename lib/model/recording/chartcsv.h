@@ -31,7 +31,6 @@ inline constexpr char kEventsColumn[] = "events";
 [[nodiscard]] QString columnName(const QString &channelId, const QString &series,
                                  const SeriesFormat &format);
 [[nodiscard]] QString timeText(qint64 ms);
-[[nodiscard]] QString quoted(const QString &cell);
 } // namespace chartcsv
 
 // The new samples of one channel, all series sampled together (as Telemetry stores them).

@@ -1,5 +1,6 @@
 #include "model/recording/chartcsvreader.h"
 
+#include "model/io/csv.h"
 #include "model/recording/chartcsv.h"
 
 #include <QCoreApplication>
@@ -25,33 +26,6 @@ struct ChannelData {
     QList<qint64> times;
     QList<qint32> values; // row-major, one per series
 };
-
-// Splits one CSV line; quoted cells may hold commas and doubled quotes. False on a bad quote.
-bool splitCells(const QString &line, QStringList &cells) {
-    cells.clear();
-    QString cell;
-    bool quoted = false;
-    for (qsizetype i = 0; i < line.size(); ++i) {
-        const QChar c = line.at(i);
-        if (quoted) {
-            if (c != QLatin1Char('"'))
-                cell.append(c);
-            else if (i + 1 < line.size() && line.at(i + 1) == QLatin1Char('"'))
-                cell.append(line.at(++i));
-            else
-                quoted = false;
-        } else if (c == QLatin1Char(',')) {
-            cells.append(cell);
-            cell.clear();
-        } else if (c == QLatin1Char('"') && cell.isEmpty()) {
-            quoted = true;
-        } else {
-            cell.append(c);
-        }
-    }
-    cells.append(cell);
-    return !quoted;
-}
 
 class Parser {
 public:
@@ -286,7 +260,7 @@ std::unique_ptr<ChartRecording> Parser::run(QIODevice &device, QString *error) {
         }
         if (ok && text.trimmed().isEmpty())
             continue;
-        if (ok && !splitCells(text, cells))
+        if (ok && !csv::splitLine(text, cells))
             ok = fail(Tr::tr("a quoted cell is not closed"));
         if (ok)
             ok = m_haveHeader ? row(cells) : header(cells);
