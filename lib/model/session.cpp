@@ -57,7 +57,7 @@ FeederModel *Session::feeder() const {
     return nullptr;
 }
 
-QString Session::telemetryKey(const DeviceModel &device, int port) {
+TelemetryKey Session::telemetryKey(const DeviceModel &device, int port) {
     const QString who = device.info().addressText();
     return port > 0 ? QStringLiteral("%1/port%2").arg(who).arg(port)
                     : who + QStringLiteral("/feeder");
@@ -232,7 +232,7 @@ qint64 Session::sampleTimeMs() const {
 
 void Session::recordTelemetry(StationModel *station) {
     for (PortModel *port : station->ports()) {
-        const QString key = telemetryKey(*station, port->number());
+        const TelemetryKey key = telemetryKey(*station, port->number());
         m_telemetry.ensureBuffer(key, kPortSeries);
         // A sample per tip-temperature reading; the other series carry their latest values.
         connect(port->param("TT"), &Parameter::updated, this, [this, station, port, key] {
@@ -253,7 +253,7 @@ void Session::recordTelemetry(StationModel *station) {
 }
 
 void Session::recordTelemetry(FeederModel *feeder) {
-    const QString key = telemetryKey(*feeder, 0);
+    const TelemetryKey key = telemetryKey(*feeder, 0);
     m_telemetry.ensureBuffer(key, kFeederSeries);
     connect(feeder->parameter("FDL"), &Parameter::updated, this, [this, feeder, key] {
         // As for the ports: the speed is a setting read less often than the fed length, and a

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "model/displayunits.h"
+#include "model/telemetry/telemetry.h"
 
 #include <QColor>
 #include <QList>
@@ -43,7 +44,7 @@ struct SeriesFormat {
 [[nodiscard]] QString seriesTitle(const QString &series);
 
 struct ChartChannel {
-    QString key;             // telemetry key ("01/port1", "10/feeder")
+    TelemetryKey key;        // its history ("01/port1", "10/feeder"; the id in a replay)
     QString id;              // CSV column prefix ("port1", "feeder"): letters and digits
     int port = 0;            // 0 for a feeder
     QString title;           // "Port 1", "Feeder"
