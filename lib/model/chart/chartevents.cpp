@@ -18,10 +18,6 @@ constexpr KindToken kKindTokens[] = {
     {Event::Kind::Alarm, "alarm"},
     {Event::Kind::Write, "write"},
 };
-
-bool byTime(const ChartEvent &a, const ChartEvent &b) {
-    return a.timeMs < b.timeMs;
-}
 } // namespace
 
 bool ChartEvent::isMarked(Event::Kind kind) {
@@ -92,22 +88,75 @@ std::optional<ChartEvent> ChartEvents::addFromLog(const Event &event,
     return added;
 }
 
-void ChartEvents::add(ChartEvent event) {
+void ChartEvents::add(const ChartEvent &event) {
+    const QByteArray scope = event.scope.toUtf8().left(0xffff);
+    const QByteArray text = event.text.toUtf8();
+    Entry entry;
+    entry.timeMs = event.timeMs;
+    entry.offset = quint32(m_texts.size());
+    entry.scopeBytes = quint16(scope.size());
+    entry.textBytes = quint32(text.size());
+    entry.kind = quint8(event.kind);
+    entry.severity = quint8(event.severity);
+    m_texts.append(scope).append(text);
     // Events come in time order, so this is an append but for the odd late one.
-    const auto at = std::upper_bound(m_events.begin(), m_events.end(), event, byTime);
-    m_events.insert(at, std::move(event));
-    while (int(m_events.size()) > kCapacity)
-        m_events.pop_front();
+    const auto at = std::upper_bound(m_entries.begin(), m_entries.end(), entry.timeMs,
+                                     [](qint64 t, const Entry &e) { return t < e.timeMs; });
+    m_entries.insert(at, entry);
+    while (m_capacity >= 0 && qsizetype(m_entries.size()) > m_capacity)
+        dropOldest();
+}
+
+void ChartEvents::clear() {
+    m_entries.clear();
+    m_texts.clear();
+    m_deadBytes = 0;
+}
+
+void ChartEvents::dropOldest() {
+    const Entry &oldest = m_entries.front();
+    m_deadBytes += qint64(oldest.scopeBytes) + qint64(oldest.textBytes);
+    m_entries.pop_front();
+    // The live store drops one event for each it adds: copy the texts still in use now and then
+    // rather than let the dropped ones pile up.
+    if (m_deadBytes > 64 * 1024 && m_deadBytes * 2 > m_texts.size())
+        compactTexts();
+}
+
+void ChartEvents::compactTexts() {
+    QByteArray kept;
+    kept.reserve(m_texts.size() - m_deadBytes);
+    for (Entry &e : m_entries) {
+        const quint32 offset = quint32(kept.size());
+        kept.append(m_texts.constData() + e.offset, qsizetype(e.scopeBytes) + e.textBytes);
+        e.offset = offset;
+    }
+    m_texts = kept;
+    m_deadBytes = 0;
+}
+
+ChartEvent ChartEvents::eventAt(const Entry &e) const {
+    const char *scope = m_texts.constData() + e.offset;
+    return ChartEvent{e.timeMs, Event::Kind(e.kind), Event::Severity(e.severity),
+                      QString::fromUtf8(scope, e.scopeBytes),
+                      QString::fromUtf8(scope + e.scopeBytes, qsizetype(e.textBytes))};
+}
+
+qint64 ChartEvents::memoryBytes() const {
+    // A deque allocates its entries in blocks of 512 bytes, plus a map of those blocks.
+    const qint64 blocks = qint64(m_entries.size()) * qint64(sizeof(Entry)) / 512 + 1;
+    return blocks * (512 + qint64(sizeof(void *))) + m_texts.capacity();
 }
 
 QList<ChartEvent> ChartEvents::between(qint64 t0, qint64 t1, const ChartChannel *channel) const {
     QList<ChartEvent> out;
-    ChartEvent key;
-    key.timeMs = t0;
-    auto it = std::lower_bound(m_events.begin(), m_events.end(), key, byTime);
-    for (; it != m_events.end() && it->timeMs < t1; ++it)
-        if (!channel || it->concerns(*channel))
-            out.append(*it);
+    auto it = std::lower_bound(m_entries.begin(), m_entries.end(), t0,
+                               [](const Entry &e, qint64 t) { return e.timeMs < t; });
+    for (; it != m_entries.end() && it->timeMs < t1; ++it) {
+        ChartEvent event = eventAt(*it);
+        if (!channel || event.concerns(*channel))
+            out.append(std::move(event));
+    }
     return out;
 }
 

@@ -1,6 +1,10 @@
 // ChartEvents: the events worth a marker on the time axis (status changes, errors, alarms,
-// parameter writes), kept sorted by time and bounded, so a redraw finds the markers of its window
-// by binary search instead of copying the event log.
+// parameter writes), kept sorted by time, so a redraw finds the markers of its window by binary
+// search instead of copying the event log.
+//
+// The live chart keeps the newest kLiveCapacity events, as the event log itself is bounded. A
+// replay keeps every event of its file (Unbounded): the file's size bounds them, and an event
+// takes about its CSV size in memory (its texts are held as UTF-8, one allocation for all).
 //
 // Each event has a scope: the channel it concerns ("port3", "feeder") or a whole device
 // ("@01": station errors and writes, which name no port). Live events get their scope from the
@@ -34,21 +38,46 @@ struct ChartEvent {
 
 class ChartEvents {
 public:
-    static constexpr int kCapacity = 10000;
+    static constexpr qsizetype kLiveCapacity = 10000;
+    static constexpr qsizetype kUnbounded = -1;
+
+    // The newest `capacity` events are kept (all with kUnbounded).
+    explicit ChartEvents(qsizetype capacity = kLiveCapacity)
+        : m_capacity(capacity) {}
 
     // Adds a marked kind of event from the log, scoped by matching its source to `channels`, and
     // returns it; other kinds, and events of no known channel, are ignored (nullopt).
     std::optional<ChartEvent> addFromLog(const Event &event, const QList<ChartChannel> &channels);
-    void add(ChartEvent event);
-    void clear() { m_events.clear(); }
-    [[nodiscard]] int size() const { return int(m_events.size()); }
+    void add(const ChartEvent &event);
+    void clear();
+    [[nodiscard]] qsizetype size() const { return qsizetype(m_entries.size()); }
+    [[nodiscard]] qsizetype capacity() const { return m_capacity; }
+    // Heap bytes held for the events.
+    [[nodiscard]] qint64 memoryBytes() const;
 
     // The events of [t0, t1), oldest first; with `channel`, only those concerning it.
     [[nodiscard]] QList<ChartEvent> between(qint64 t0, qint64 t1,
                                             const ChartChannel *channel = nullptr) const;
 
 private:
-    std::deque<ChartEvent> m_events;
+    // An event's scope and text sit in m_texts (UTF-8, the scope first).
+    struct Entry {
+        qint64 timeMs = 0;
+        quint32 offset = 0;
+        quint32 textBytes = 0;
+        quint16 scopeBytes = 0;
+        quint8 kind = 0;     // Event::Kind
+        quint8 severity = 0; // Event::Severity
+    };
+
+    [[nodiscard]] ChartEvent eventAt(const Entry &entry) const;
+    void dropOldest();
+    void compactTexts();
+
+    qsizetype m_capacity;
+    std::deque<Entry> m_entries;
+    QByteArray m_texts;
+    qint64 m_deadBytes = 0; // of m_texts, no longer used by an entry
 };
 
 } // namespace tipscope::model

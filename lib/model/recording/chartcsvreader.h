@@ -25,7 +25,7 @@ namespace tipscope::model {
 struct ChartRecording {
     std::unique_ptr<Telemetry> telemetry;
     QList<ChartChannel> channels;
-    ChartEvents events;
+    ChartEvents events{ChartEvents::kUnbounded}; // every event of the file
     QString software; // "TipScope 0.1.0", as the header says
     qint64 rows = 0;
     qint64 firstMs = 0; // of the samples and events

@@ -1,5 +1,7 @@
 // The charts' non-widget logic on hand-made telemetry: decimation to points (every column's true
-// min and max reach the screen), the crosshair readout and the time window's gestures.
+// min and max reach the screen), the crosshair readout, the time window's gestures and the event
+// markers' store.
+#include "model/chart/chartevents.h"
 #include "model/chart/chartframe.h"
 #include "model/chart/chartviewport.h"
 
@@ -42,6 +44,7 @@ private Q_SLOTS:
     void zoomKeepsTheInstantUnderTheCursorAndStopsFollowing();
     void windowLengthStaysBetween30SecondsAnd24Hours();
     void panStopsAtTheData();
+    void liveEventsKeepTheNewestWithTheirTextsAndAReplayKeepsAll();
 };
 
 void TestChartsData::decimatedPointsKeepEveryColumnsTrueMinAndMax_data() {
@@ -211,6 +214,33 @@ void TestChartsData::panStopsAtTheData() {
     QVERIFY(v.end() > kT0); // some of the data stays in view
     v.pan(1000 * 3600'000LL);
     QVERIFY(v.start() < kT0 + 3600'000);
+}
+
+void TestChartsData::liveEventsKeepTheNewestWithTheirTextsAndAReplayKeepsAll() {
+    ChartEvents live;
+    ChartEvents replay(ChartEvents::kUnbounded);
+    constexpr int kCount = 3 * ChartEvents::kLiveCapacity;
+    for (int i = 0; i < kCount; ++i) {
+        // Now and then one arrives late, stamped before the one added just before it.
+        const qint64 t = kT0 + i * 100 - (i % 7 == 0 ? 150 : 0);
+        const ChartEvent e{t, model::Event::Kind::Write, model::Event::Severity::Info,
+                           QStringLiteral("@01"), QStringLiteral("ST1 = %1 °C").arg(i)};
+        live.add(e);
+        replay.add(e);
+    }
+    QCOMPARE(live.size(), ChartEvents::kLiveCapacity);
+    QCOMPARE(replay.size(), qsizetype(kCount));
+    const QList<ChartEvent> kept = live.between(kT0, kT0 + kCount * 100LL);
+    QCOMPARE(kept.size(), ChartEvents::kLiveCapacity);
+    for (qsizetype i = 1; i < kept.size(); ++i)
+        QVERIFY(kept.at(i - 1).timeMs <= kept.at(i).timeMs);
+    QCOMPARE(kept.last().text, QStringLiteral("ST1 = %1 °C").arg(kCount - 1));
+    QCOMPARE(kept.last().scope, QStringLiteral("@01"));
+    const QList<ChartEvent> all = replay.between(kT0 - 1000, kT0 + kCount * 100LL);
+    QCOMPARE(all.size(), qsizetype(kCount));
+    QCOMPARE(all.first().text, QStringLiteral("ST1 = 0 °C"));
+    // Held as UTF-8 with a small entry each: about what the texts take in a CSV.
+    QVERIFY2(replay.memoryBytes() < kCount * 60, qPrintable(QString::number(replay.memoryBytes())));
 }
 
 QTEST_GUILESS_MAIN(TestChartsData)
