@@ -14,5 +14,6 @@ target_sources(tipscope_gui PRIVATE
     ${CMAKE_CURRENT_LIST_DIR}/chartspage.cpp
     ${CMAKE_CURRENT_LIST_DIR}/chartspageactions.cpp
     ${CMAKE_CURRENT_LIST_DIR}/chartspageoverlays.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/chartspagereplay.cpp
 )
 target_link_libraries(tipscope_gui PUBLIC Qt6::Charts tipscope_analysis tipscope_recording)

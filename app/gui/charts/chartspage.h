@@ -4,7 +4,8 @@
 // errors, alarms, writes) with tooltips; a time window of 30 s to 24 h that follows the newest
 // data or stays paused; wheel zoom, drag pan, rubber-band zoom and reset; a crosshair readout of
 // every series under the cursor; heat-up, recovery and min/max/mean of the visible window; PNG
-// and CSV export of the window, continuous CSV recording, and replay of a recorded CSV.
+// and CSV export of the window, continuous CSV recording, and replay of a recorded CSV, read on a
+// thread of its own behind a progress dialog with Cancel, so the page stays live meanwhile.
 //
 // Bounded work: redraws are coalesced on a timer, at most kMaxRedrawsPerSecond and, while
 // following, no more often than the window moves by a pixel column; each asks the telemetry for
@@ -33,9 +34,12 @@ class QPlainTextEdit;
 class QToolButton;
 class QVBoxLayout;
 
+class QProgressDialog;
+
 namespace tipscope::model {
 class ChartRecorder;
 struct ChartRecording;
+class RecordingLoader;
 } // namespace tipscope::model
 
 namespace tipscope::gui {
@@ -77,12 +81,19 @@ public:
     QString startRecording(const QString &path);
     void stopRecording();
     [[nodiscard]] bool isRecording() const;
-    QString openReplay(const QString &path);
+    // Starts reading a recording; replayOpened() follows. The live view stays until it is read.
+    void openReplay(const QString &path);
+    [[nodiscard]] bool isLoadingReplay() const;
+    void cancelReplayLoad();
     void showLive();
     [[nodiscard]] bool isReplay() const { return m_replay != nullptr; }
     // What the charts show: the session's telemetry live, the recording's in replay.
     [[nodiscard]] const model::Telemetry &shownTelemetry() const;
     [[nodiscard]] const QList<model::ChartChannel> &shownChannels() const;
+
+Q_SIGNALS:
+    // After openReplay(): empty when the recording is shown, else why not (cancelled included).
+    void replayOpened(const QString &error);
 
 private:
     struct Pane {
@@ -106,6 +117,8 @@ private:
     void chooseAndExport(bool png);
     void toggleRecording(bool on);
     void chooseReplay();
+    void showReplayProgress();
+    void onReplayLoaded(const QString &error);
     [[nodiscard]] const model::ChartEvents &events() const;
     [[nodiscard]] QList<ChartMarker> markersFor(const Pane &pane) const;
     [[nodiscard]] QList<ChartBand> bandsFor(const Pane &pane) const;
@@ -122,6 +135,8 @@ private:
     model::ChartEvents m_liveEvents;
     std::unique_ptr<model::ChartRecording> m_replay;
     QString m_replayPath;
+    model::RecordingLoader *m_loader;
+    QProgressDialog *m_loadProgress = nullptr;
     model::ChartRecorder *m_recorder;
     QList<Pane> m_panes;
     std::optional<qint64> m_hover;

@@ -30,6 +30,10 @@ const TelemetryBuffer &Telemetry::ensureBuffer(const TelemetryKey &key, const QS
     return existing;
 }
 
+bool Telemetry::adoptBuffer(const TelemetryKey &key, TelemetryBuffer &&buffer) {
+    return m_entries.try_emplace(key, std::move(buffer)).second;
+}
+
 const TelemetryBuffer *Telemetry::buffer(const TelemetryKey &key) const {
     const auto it = m_entries.find(key);
     return it == m_entries.end() ? nullptr : &it->second.buffer;

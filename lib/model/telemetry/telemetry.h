@@ -37,6 +37,9 @@ public:
     // existing buffer keeps its series and capacity (a different request is logged).
     const TelemetryBuffer &ensureBuffer(const TelemetryKey &key, const QStringList &series,
                                         int capacity = TelemetryBuffer::kDefaultCapacity);
+    // Installs a buffer filled elsewhere (a replay reads its file on another thread into plain
+    // buffers); false, and the buffer dropped, when `key` already has one.
+    bool adoptBuffer(const TelemetryKey &key, TelemetryBuffer &&buffer);
     // nullptr when no buffer of that key exists.
     [[nodiscard]] const TelemetryBuffer *buffer(const TelemetryKey &key) const;
     // Sorted.
