@@ -1073,7 +1073,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="189"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="181"/>
         <source>the file could not be written</source>
         <translation>die Datei konnte nicht geschrieben werden</translation>
     </message>
@@ -1081,123 +1081,144 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="62"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="77"/>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="91"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="96"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="119"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>die Zeile ist länger als %1 Bytes (ist das eine Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="98"/>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="273"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="85"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="124"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>die Datei enthält Binärdaten, keinen CSV-Text</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="102"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="128"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="123"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="131"/>
+        <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
+        <translation>mehr als %1 Kommentarzeilen („#“); eine Aufzeichnung hat wenige, und eine je Kanal</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="166"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>die Kopfzeile muss mit &quot;time&quot; beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="126"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="169"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 Spalten; die Wiedergabe liest höchstens %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="137"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="182"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>Spalte %1 &quot;%2&quot; ist weder &quot;port&lt;n&gt; &lt;Reihe&gt; [Einheit]&quot; noch &quot;feeder &lt;Reihe&gt; [Einheit]&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="148"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="195"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>Spalte %1 &quot;%2&quot;: die Einheit muss &quot;%3&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="150"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="224"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="224"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="174"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="204"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>Spalte %1 &quot;%2&quot; kommt zweimal vor</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="179"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="210"/>
         <source>the header names no series columns</source>
         <translation>die Kopfzeile nennt keine Spalten mit Datenreihen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="200"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="253"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>Spalte %1: &quot;%2&quot; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="205"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="258"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 hat nur in einem Teil seiner Spalten Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="212"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="265"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 Zellen, aber die Kopfzeile hat %2 Spalten</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="217"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="270"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; ist keine Zeitangabe nach ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="220"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="273"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>die Zeit %1 liegt vor der der vorigen Zeile (die Zeilen müssen zeitlich geordnet sein)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="231"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 hat mehr als %2 Messwerte, mehr als die Wiedergabe fasst; teilen Sie die Datei auf</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="244"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="305"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>das Ereignis &quot;%1&quot; hat nicht die Form &quot;&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="290"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="140"/>
         <source>a quoted cell is not closed</source>
         <translation>eine Zelle in Anführungszeichen ist nicht geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="300"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="322"/>
         <source>the file has a header but no rows</source>
         <translation>die Datei hat eine Kopfzeile, aber keine Zeilen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="301"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="320"/>
         <source>the file is empty or holds only comments</source>
         <translation>die Datei ist leer oder enthält nur Kommentare</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="319"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27"/>
+        <source>the file is larger than %1 MB; replay reads files up to %1 MB</source>
+        <translation>die Datei ist größer als %1 MB; die Wiedergabe liest Dateien bis %1 MB</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114"/>
+        <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
+        <translation>ihre Messwerte belegen nach %2 MB Gelesenem %1 MB Speicher, mehr als die Wiedergabe erlaubt (das Doppelte der Dateigröße); eine von TipScope geschriebene Aufzeichnung braucht weit weniger</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151"/>
+        <source>reading was cancelled</source>
+        <translation>das Lesen wurde abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>die Datei ist %1 MB groß; die Wiedergabe liest Dateien bis %2 MB</translation>
     </message>
@@ -2709,73 +2730,73 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
-        <location filename="../app/gui/charts/chartspage.h" line="57"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
+        <location filename="../app/gui/charts/chartspage.h" line="61"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="45"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="47"/>
         <source>Values under the cursor</source>
         <translation>Werte unter dem Mauszeiger</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="52"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>Toleranzband für A&amp;ufheizen und Erholung ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="53"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="55"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Toleranzband um den Sollwert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="64"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="66"/>
         <source>Measurements of the visible window</source>
         <translation>Messungen im sichtbaren Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="180"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="183"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="184"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
         <source>%1 — feeder</source>
         <translation>%1 — Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="187"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>%1 — all ports</source>
         <translation>%1 — alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="192"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="194"/>
         <source>Temperature (%1)</source>
         <translation>Temperatur (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
         <source>Power (%)</source>
         <translation>Leistung (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="312"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="314"/>
         <source>No samples in this window</source>
         <translation>Keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -3024,22 +3045,37 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="227"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
+        <source>Open recording</source>
+        <translation>Aufzeichnung öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
+        <source>Reading %1: %2 MB</source>
+        <translation>Lese %1: %2 MB</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
+        <source>Reading %1…</source>
+        <translation>Lese %1 …</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
         <source>Open a chart recording</source>
         <translation>Diagrammaufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="229"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>CSV-Datei (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Replay</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Cannot replay %1</source>
         <translation>%1 kann nicht wiedergegeben werden</translation>
     </message>
@@ -3455,224 +3491,224 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
         <source>Plugged hours</source>
         <translation>Einschaltstunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
         <source>Reset partial plugged hours…</source>
         <translation>Teilzähler Einschaltstunden zurücksetzen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
         <source>Feeding hours</source>
         <translation>Vorschubstunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
         <source>Reset partial feeding hours…</source>
         <translation>Teilzähler Vorschubstunden zurücksetzen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
         <source>Fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="44"/>
         <source>Reset partial fed length…</source>
         <translation>Teilzähler vorgeschobene Länge zurücksetzen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="75"/>
         <source>When the counters were read</source>
         <translation>Zeitpunkt der Zählerabfrage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="80"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>Refresh counters</source>
         <translation>Zähler aktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
         <source>&amp;Export CSV…</source>
         <translation>CSV e&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="95"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
         <source>Export counters as CSV</source>
         <translation>Zähler als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="105"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="96"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
         <source>Reading the counters…</source>
         <translation>Zähler werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="151"/>
         <source>Last reading at %1</source>
         <translation>Letzte Abfrage um %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="153"/>
         <source>Waiting for the first reading…</source>
         <translation>Warte auf die erste Abfrage…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="213"/>
         <source>Station %1</source>
         <translation>Station %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="224"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="215"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Counters of %1</source>
         <translation>Zähler von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="235"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="226"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="250"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="241"/>
         <source>Solder feeder %1</source>
         <translation>Lotdrahtvorschub %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
         <source>Partial</source>
         <translation>Teilzähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="285"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="296"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="287"/>
         <source>Last read failed: %1</source>
         <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="299"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
         <source>Read at %1</source>
         <translation>Gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="302"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="293"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="319"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
         <source>Reset partial counter</source>
         <translation>Teilzähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>Reset “%1” on %2?</source>
         <translation>„%1“ an %2 zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="325"/>
         <source>It now reads %1.</source>
         <translation>Er steht jetzt auf %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>The total counter is not affected.</source>
         <translation>Der Gesamtzähler bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
         <source>Reset counter</source>
         <translation>Zähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 Es wurde nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="339"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 Nicht zurückgesetzt: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="351"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 %2 wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="349"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="389"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="396"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="399"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>

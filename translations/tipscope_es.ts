@@ -1073,7 +1073,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="189"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="181"/>
         <source>the file could not be written</source>
         <translation>no se pudo escribir el archivo</translation>
     </message>
@@ -1081,123 +1081,144 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="62"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="77"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="91"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="96"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="119"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>la línea supera los %1 bytes (¿es un CSV de gráficos?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="98"/>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="273"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="85"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="124"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>el archivo contiene datos binarios, no texto CSV</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="102"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="128"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>el texto no está en UTF-8 (guarde el archivo como &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="123"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="131"/>
+        <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
+        <translation>más de %1 líneas de comentario («#»); una grabación tiene unas pocas, y una por canal</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="166"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>la fila de cabecera debe empezar por &quot;time&quot; (¿es un CSV de gráficos escrito por TipScope?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="126"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="169"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 columnas; la reproducción lee como máximo %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="137"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="182"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>la columna %1 &quot;%2&quot; no es &quot;port&lt;n&gt; &lt;serie&gt; [unidad]&quot; ni &quot;feeder &lt;serie&gt; [unidad]&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="148"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="195"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>columna %1 &quot;%2&quot;: la unidad debería ser &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="150"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="224"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="224"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="174"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="204"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>la columna %1 &quot;%2&quot; aparece dos veces</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="179"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="210"/>
         <source>the header names no series columns</source>
         <translation>la cabecera no nombra ninguna columna de serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="200"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="253"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>columna %1: &quot;%2&quot; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="205"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="258"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 tiene valores en algunas de sus columnas, pero no en todas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="212"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="265"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 celdas, pero la cabecera tiene %2 columnas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="217"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="270"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; no es una hora ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="220"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="273"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>la hora %1 es anterior a la de la fila precedente (las filas deben estar en orden cronológico)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="231"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 tiene más de %2 muestras, más de las que admite la reproducción; divida el archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="244"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="305"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>el evento &quot;%1&quot; no tiene la forma &quot;&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="290"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="140"/>
         <source>a quoted cell is not closed</source>
         <translation>una celda entre comillas no está cerrada</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="300"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="322"/>
         <source>the file has a header but no rows</source>
         <translation>el archivo tiene cabecera pero ninguna fila</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="301"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="320"/>
         <source>the file is empty or holds only comments</source>
         <translation>el archivo está vacío o solo contiene comentarios</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="319"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27"/>
+        <source>the file is larger than %1 MB; replay reads files up to %1 MB</source>
+        <translation>el archivo ocupa más de %1 MB; la reproducción lee archivos de hasta %1 MB</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114"/>
+        <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
+        <translation>sus muestras ocupan %1 MB de memoria tras leer %2 MB, más de lo que permite la reproducción (el doble del tamaño del archivo); una grabación escrita por TipScope ocupa mucho menos</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151"/>
+        <source>reading was cancelled</source>
+        <translation>se canceló la lectura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>el archivo ocupa %1 MB; la reproducción lee archivos de hasta %2 MB</translation>
     </message>
@@ -2710,73 +2731,73 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
-        <location filename="../app/gui/charts/chartspage.h" line="57"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
+        <location filename="../app/gui/charts/chartspage.h" line="61"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="45"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="47"/>
         <source>Values under the cursor</source>
         <translation>Valores bajo el cursor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="52"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>&amp;Banda de calentamiento y recuperación ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="53"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="55"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Banda de tolerancia alrededor de la consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="64"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="66"/>
         <source>Measurements of the visible window</source>
         <translation>Mediciones de la ventana visible</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="180"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="183"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="184"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
         <source>%1 — feeder</source>
         <translation>%1 — alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="187"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>%1 — all ports</source>
         <translation>%1 — todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="192"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="194"/>
         <source>Temperature (%1)</source>
         <translation>Temperatura (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
         <source>Power (%)</source>
         <translation>Potencia (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="312"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="314"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>
@@ -3025,22 +3046,37 @@ Hágalo permanente con esta regla de udev:
         <translation>No se puede grabar: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="227"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
+        <source>Open recording</source>
+        <translation>Abrir grabación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
+        <source>Reading %1: %2 MB</source>
+        <translation>Leyendo %1: %2 MB</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
+        <source>Reading %1…</source>
+        <translation>Leyendo %1…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
         <source>Open a chart recording</source>
         <translation>Abrir una grabación de gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="229"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>Archivo CSV (*.csv);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Replay</source>
         <translation>Reproducción</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Cannot replay %1</source>
         <translation>No se puede reproducir %1</translation>
     </message>
@@ -3456,224 +3492,224 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
         <source>Plugged hours</source>
         <translation>Horas conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
         <source>Reset partial plugged hours…</source>
         <translation>Poner a cero las horas conectado parciales…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
         <source>Feeding hours</source>
         <translation>Horas de alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
         <source>Reset partial feeding hours…</source>
         <translation>Poner a cero las horas de alimentación parciales…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
         <source>Fed length</source>
         <translation>Longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="44"/>
         <source>Reset partial fed length…</source>
         <translation>Poner a cero la longitud alimentada parcial…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="75"/>
         <source>When the counters were read</source>
         <translation>Cuándo se leyeron los contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="89"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="80"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>Refresh counters</source>
         <translation>Actualizar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
         <source>&amp;Export CSV…</source>
         <translation>E&amp;xportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="95"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
         <source>Export counters as CSV</source>
         <translation>Exportar contadores como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="105"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="96"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
         <source>Reading the counters…</source>
         <translation>Leyendo los contadores…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="151"/>
         <source>Last reading at %1</source>
         <translation>Última lectura a las %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="153"/>
         <source>Waiting for the first reading…</source>
         <translation>Esperando la primera lectura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="222"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="213"/>
         <source>Station %1</source>
         <translation>Estación %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="224"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="215"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Counters of %1</source>
         <translation>Contadores de %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="235"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="226"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="250"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="241"/>
         <source>Solder feeder %1</source>
         <translation>Alimentador de estaño %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
         <source>Partial</source>
         <translation>Parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="285"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="296"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="287"/>
         <source>Last read failed: %1</source>
         <translation>Falló la última lectura: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="299"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
         <source>Read at %1</source>
         <translation>Leído: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="302"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="293"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="319"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
         <source>Reset partial counter</source>
         <translation>Poner a cero el contador parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>Reset “%1” on %2?</source>
         <translation>¿Poner a cero «%1» en %2?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="334"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="325"/>
         <source>It now reads %1.</source>
         <translation>Ahora marca %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>The total counter is not affected.</source>
         <translation>El contador total no se ve afectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
         <source>Reset counter</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 No se puso nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="339"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 No se puso a cero: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="351"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 Poniendo a cero %2…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="357"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 puesto a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="349"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 no se puso a cero: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="389"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="396"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="399"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>
