@@ -3,6 +3,7 @@
 #include "model/portmodel.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace tipscope::model {
 
@@ -50,13 +51,13 @@ bool wasResting(const TelemetryBuffer &buffer, int status, qint64 timeMs) {
 } // namespace
 
 QList<qint64> Measurements::changeTimes(const TelemetryBuffer &buffer, int series, qint64 t0,
-                                        qint64 t1) {
+                                        qint64 t1, int maxChanges) {
     QList<qint64> out;
     std::optional<qint32> previous;
     if (const auto lead = buffer.valueAt(series, t0 - 1))
         previous = lead->value;
     const QList<MinMaxBucket> buckets = buffer.decimate(series, t0, t1, kSearchColumns);
-    for (qsizetype i = 0; i < buckets.size() && out.size() < kMaxResults * 4; ++i) {
+    for (qsizetype i = 0; i < buckets.size() && out.size() < maxChanges; ++i) {
         const MinMaxBucket &b = buckets.at(i);
         if (b.min == b.max) {
             // A constant column: only its first sample can be a change.
@@ -90,7 +91,7 @@ std::optional<qint64> Measurements::firstBelow(const TelemetryBuffer &buffer, in
 }
 
 PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64 t0, qint64 t1,
-                                           qint32 tolerance) {
+                                           qint32 tolerance, int maxResults) {
     PortMeasurements out;
     const int tip = buffer.seriesIndex(QStringLiteral("tip"));
     const int setpoint = buffer.seriesIndex(QStringLiteral("setpoint"));
@@ -117,8 +118,9 @@ PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64
     };
 
     // The window splits into segments of one setpoint and one status.
-    const QList<qint64> setpointChanges = changeTimes(buffer, setpoint, t0, t1);
-    QList<qint64> edges = setpointChanges + changeTimes(buffer, status, t0, t1);
+    const int maxChanges = int(qMin<qint64>(4LL * maxResults, std::numeric_limits<int>::max()));
+    const QList<qint64> setpointChanges = changeTimes(buffer, setpoint, t0, t1, maxChanges);
+    QList<qint64> edges = setpointChanges + changeTimes(buffer, status, t0, t1, maxChanges);
     edges.append(t0);
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
@@ -137,7 +139,7 @@ PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64
         const bool wake = !newSetpoint && start != t0 && wasResting(buffer, status, start);
         const auto settled = firstWithin(buffer, tip, start, end, low, high);
         if (newSetpoint || wake) {
-            if (out.heatUps.size() < kMaxResults)
+            if (out.heatUps.size() < maxResults)
                 out.heatUps.append(HeatUp{start, target->value, wake, settled});
             else
                 out.truncated = true;
@@ -149,7 +151,7 @@ PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64
                 break;
             const auto back = firstWithin(buffer, tip, *dip, end, low, high);
             const QList<MinMaxBucket> whole = buffer.decimate(tip, *dip, back.value_or(end), 1);
-            if (out.recoveries.size() >= kMaxResults || whole.isEmpty()) {
+            if (out.recoveries.size() >= maxResults || whole.isEmpty()) {
                 out.truncated = out.truncated || !whole.isEmpty();
                 break;
             }

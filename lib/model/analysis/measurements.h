@@ -41,25 +41,30 @@ struct Recovery {
 struct PortMeasurements {
     QList<HeatUp> heatUps;
     QList<Recovery> recoveries;
-    bool truncated = false; // more than kMaxResults of either; the first ones are kept
+    bool truncated = false; // more than the results asked for of either; the first are kept
 };
 
 class Measurements {
 public:
     static constexpr int kMaxResults = 200;
 
-    // Times in [t0, t1) of the samples whose value differs from the sample before them.
+    // Times in [t0, t1) of the samples whose value differs from the sample before them, the
+    // first `maxChanges` of them.
     [[nodiscard]] static QList<qint64> changeTimes(const TelemetryBuffer &buffer, int series,
-                                                   qint64 t0, qint64 t1);
+                                                   qint64 t0, qint64 t1,
+                                                   int maxChanges = 4 * kMaxResults);
     // The first sample of [t0, t1) within [low, high], or under `low` for firstBelow().
     [[nodiscard]] static std::optional<qint64> firstWithin(const TelemetryBuffer &buffer,
                                                            int series, qint64 t0, qint64 t1,
                                                            qint32 low, qint32 high);
     [[nodiscard]] static std::optional<qint64> firstBelow(const TelemetryBuffer &buffer, int series,
                                                           qint64 t0, qint64 t1, qint32 limit);
-    // `tolerance` in wire units (°C). Empty unless the buffer has tip, setpoint and status.
+    // `tolerance` in wire units (°C). Empty unless the buffer has tip, setpoint and status. The
+    // panel lists a window's first kMaxResults of each; a whole recording (tipscope-cli
+    // measure) asks for more.
     [[nodiscard]] static PortMeasurements measurePort(const TelemetryBuffer &buffer, qint64 t0,
-                                                      qint64 t1, qint32 tolerance);
+                                                      qint64 t1, qint32 tolerance,
+                                                      int maxResults = kMaxResults);
 };
 
 } // namespace tipscope::model

@@ -61,9 +61,9 @@ std::optional<ChartEvent> ChartEvent::fromCsvCell(qint64 timeMs, const QString &
     return std::nullopt;
 }
 
-std::optional<ChartEvent> ChartEvents::addFromLog(const Event &event,
-                                                  const QList<ChartChannel> &channels) {
-    if (!ChartEvent::isMarked(event.kind))
+std::optional<ChartEvent> ChartEvent::fromLog(const Event &event,
+                                              const QList<ChartChannel> &channels) {
+    if (!isMarked(event.kind))
         return std::nullopt;
     QString scope;
     for (const ChartChannel &c : channels) {
@@ -82,9 +82,15 @@ std::optional<ChartEvent> ChartEvents::addFromLog(const Event &event,
     }
     if (scope.isEmpty())
         return std::nullopt;
-    const ChartEvent added{event.time.toMSecsSinceEpoch(), event.kind, event.severity, scope,
-                           event.text};
-    add(added);
+    return ChartEvent{event.time.toMSecsSinceEpoch(), event.kind, event.severity, scope,
+                      event.text};
+}
+
+std::optional<ChartEvent> ChartEvents::addFromLog(const Event &event,
+                                                  const QList<ChartChannel> &channels) {
+    auto added = ChartEvent::fromLog(event, channels);
+    if (added)
+        add(*added);
     return added;
 }
 

@@ -30,6 +30,10 @@ struct ChartEvent {
 
     [[nodiscard]] bool concerns(const ChartChannel &channel) const;
     [[nodiscard]] QString toCsvCell() const;
+    // A marked kind of event from the log, scoped by matching its source to `channels`; nullopt
+    // for other kinds and for events of no known channel.
+    [[nodiscard]] static std::optional<ChartEvent> fromLog(const Event &event,
+                                                           const QList<ChartChannel> &channels);
     // nullopt when the cell is not "scope kind: text" with a known kind.
     [[nodiscard]] static std::optional<ChartEvent> fromCsvCell(qint64 timeMs, const QString &cell);
     // Whether events of this kind get a marker (connection and communication notes do not).
@@ -45,8 +49,7 @@ public:
     explicit ChartEvents(qsizetype capacity = kLiveCapacity)
         : m_capacity(capacity) {}
 
-    // Adds a marked kind of event from the log, scoped by matching its source to `channels`, and
-    // returns it; other kinds, and events of no known channel, are ignored (nullopt).
+    // Adds ChartEvent::fromLog() of the event, and returns it.
     std::optional<ChartEvent> addFromLog(const Event &event, const QList<ChartChannel> &channels);
     void add(const ChartEvent &event);
     void clear();

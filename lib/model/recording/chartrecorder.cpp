@@ -1,6 +1,7 @@
 #include "model/recording/chartrecorder.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <limits>
 
 namespace tipscope::model {
@@ -50,6 +51,9 @@ QString ChartRecorder::start(const QString &path, const QList<ChartChannel> &cha
     if (!m_writer->writeHeader(softwareVersion)) {
         const QString why = m_writer->errorString();
         stop();
+        // Half a header is no recording: nothing is left rather than a file replay refuses.
+        if (QFileInfo(path).isFile())
+            QFile::remove(path);
         return why;
     }
     return {};

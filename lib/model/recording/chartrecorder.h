@@ -8,7 +8,8 @@
 // never written before rows already in the file, so the file stays in time order even when an
 // event reaches the recorder after a batch holding samples stamped later than it.
 //
-// A failed write stops the recording and reports why through failed(); the file keeps what was
+// A header that cannot be written whole (a full disk, a file size limit) leaves no file. A failed
+// write later stops the recording and reports why through failed(); the file keeps what was
 // written. The recorder reads the telemetry; it does not own it, and stops writing if the
 // telemetry is destroyed first (the main window destroys the session before its pages).
 #pragma once
