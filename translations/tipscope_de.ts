@@ -1226,7 +1226,7 @@
 <context>
     <name>ChartRecorder</name>
     <message>
-        <location filename="../lib/model/recording/chartrecorder.cpp" line="31"/>
+        <location filename="../lib/model/recording/chartrecorder.cpp" line="32"/>
         <source>nothing to record: no station or feeder is connected</source>
         <translation>nichts aufzuzeichnen: weder Station noch Lotdrahtvorschub verbunden</translation>
     </message>
@@ -1390,6 +1390,14 @@
     </message>
 </context>
 <context>
+    <name>CliMeasure</name>
+    <message>
+        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
+        <translation>tipscope-cli: measure erwartet eine DATEI, eine Aufzeichnung (von record oder von „Aufzeichnen“ bzw. dem CSV-Export der Diagrammseite)</translation>
+    </message>
+</context>
+<context>
     <name>CliMonitor</name>
     <message>
         <location filename="../app/cli/climonitor.cpp" line="65"/>
@@ -1420,8 +1428,9 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="40"/>
-        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]
+        <location filename="../app/cli/clioptions.cpp" line="45"/>
+        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
+                    [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
 
@@ -1439,16 +1448,22 @@ Commands:
   profile apply FILE [--dry-run] [--force]
                             write what differs, each value read back; --dry-run lists
                             the frames; --force applies a profile of another family
+  record FILE [--duration S]
+                            every port&apos;s and the feeder&apos;s curves and events to a chart
+                            recording, as the Charts page records them
+  measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
-built-in simulated DME station (address 01) and SFR feeder (address 10).
+built-in simulated DME station (address 01) and SFR feeder (address 10);
+--demo-activity the same at work: joints on port 1 every 15 s, rests on port 2, feeds.
 --timeout is the device turnaround added to the wire time of each request.
 
 Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 3 the device answered NAK, or a read-back or profile check failed;
 4 no valid answer; 5 transport error.
 </source>
-        <translation>Aufruf: tipscope-cli [--port GERÄT | --tcp HOST:PORT | --demo] [--baud N]
+        <translation>Aufruf: tipscope-cli [--port GERÄT | --tcp HOST:PORT | --demo | --demo-activity]
+                     [--baud N]
                      [--parity none|even|odd] [--stop-bits 1|2] [--addr QUELLE:ZIEL | --no-addr]
                      [--timeout MS] [--retries N] [--verbose] BEFEHL ...
 
@@ -1467,9 +1482,14 @@ Befehle:
                             schreiben, was abweicht, jeden Wert zurücklesen; --dry-run
                             listet die Telegramme auf; --force wendet ein Profil einer
                             anderen Familie an
+  record DATEI [--duration S]
+                            die Kurven und Ereignisse aller Ports und des Vorschubs als
+                            Diagrammaufzeichnung, wie die Diagrammseite sie aufzeichnet
+  measure DATEI [--json]    Aufheiz- und Erholzeiten einer Aufzeichnung, eine pro Zeile
 
 Ohne --addr oder --no-addr wird das Gerät automatisch gesucht. --demo spricht mit der
-eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10).
+eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10);
+--demo-activity dasselbe bei der Arbeit: Lötstellen an Port 1 alle 15 s, Pausen an Port 2, Vorschübe.
 --timeout ist die Antwortzeit des Geräts, die zur Übertragungszeit jeder Anfrage addiert wird.
 
 Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschrieben);
@@ -1478,82 +1498,82 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="85"/>
+        <location filename="../app/cli/clioptions.cpp" line="96"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="118"/>
+        <location filename="../app/cli/clioptions.cpp" line="129"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="123"/>
+        <location filename="../app/cli/clioptions.cpp" line="135"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="130"/>
+        <location filename="../app/cli/clioptions.cpp" line="142"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="135"/>
+        <location filename="../app/cli/clioptions.cpp" line="147"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud erwartet eine Baudrate wie 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
+        <location filename="../app/cli/clioptions.cpp" line="154"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity erwartet none, even oder odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="146"/>
+        <location filename="../app/cli/clioptions.cpp" line="158"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits erwartet 1 oder 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
+        <location filename="../app/cli/clioptions.cpp" line="166"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="162"/>
+        <location filename="../app/cli/clioptions.cpp" line="174"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="165"/>
+        <location filename="../app/cli/clioptions.cpp" line="177"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="169"/>
+        <location filename="../app/cli/clioptions.cpp" line="181"/>
         <source>--%1 needs a value</source>
         <translation>--%1 braucht einen Wert</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="173"/>
+        <location filename="../app/cli/clioptions.cpp" line="185"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <location filename="../app/cli/clioptions.cpp" line="189"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="178"/>
+        <location filename="../app/cli/clioptions.cpp" line="190"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="184"/>
+        <location filename="../app/cli/clioptions.cpp" line="196"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <location filename="../app/cli/clioptions.cpp" line="198"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -1577,34 +1597,91 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
-    <name>CliSession</name>
+    <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="56"/>
+        <location filename="../app/cli/clirecord.cpp" line="78"/>
+        <source>tipscope-cli: interrupted before the recording started</source>
+        <translation>tipscope-cli: abgebrochen, bevor die Aufzeichnung begann</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="83"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="92"/>
+        <location filename="../app/cli/clirecord.cpp" line="118"/>
+        <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
+        <translation>tipscope-cli: record erwartet eine DATEI, z. B. record linie3.csv --duration 60</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="126"/>
+        <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
+        <translation>tipscope-cli: --duration erwartet Sekunden (0: bis zum Abbruch)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="133"/>
+        <location filename="../app/cli/clirecord.cpp" line="161"/>
+        <source>tipscope-cli: cannot record to %1: %2</source>
+        <translation>tipscope-cli: in %1 kann nicht aufgezeichnet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="135"/>
+        <source>no such folder</source>
+        <translation>Ordner nicht vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="135"/>
+        <source>not writable</source>
+        <translation>nicht beschreibbar</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="182"/>
+        <source># recording %1 of %2 to %3</source>
+        <translation># zeichne %1 von %2 in %3 auf</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="190"/>
+        <source>tipscope-cli: writing %1 failed: %2</source>
+        <translation>tipscope-cli: Schreiben von %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/cli/clirecord.cpp" line="194"/>
+        <source>recorded %n row(s) to %1</source>
+        <translation>
+            <numerusform>%n Zeile nach %1 aufgezeichnet</numerusform>
+            <numerusform>%n Zeilen nach %1 aufgezeichnet</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>CliSession</name>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="57"/>
+        <source>tipscope-cli: cannot open %1: %2</source>
+        <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="93"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="93"/>
+        <location filename="../app/cli/clisession.cpp" line="94"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="103"/>
+        <location filename="../app/cli/clisession.cpp" line="104"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134"/>
+        <location filename="../app/cli/clisession.cpp" line="135"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="137"/>
+        <location filename="../app/cli/clisession.cpp" line="138"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>

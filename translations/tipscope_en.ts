@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>CliRecord</name>
+    <message numerus="yes">
+        <location filename="../app/cli/clirecord.cpp" line="194"/>
+        <source>recorded %n row(s) to %1</source>
+        <translation>
+            <numerusform>recorded %n row to %1</numerusform>
+            <numerusform>recorded %n rows to %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>FrameDecoder</name>
     <message numerus="yes">
         <location filename="../lib/protocol/framedecoder.cpp" line="147"/>

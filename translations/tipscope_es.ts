@@ -1226,7 +1226,7 @@
 <context>
     <name>ChartRecorder</name>
     <message>
-        <location filename="../lib/model/recording/chartrecorder.cpp" line="31"/>
+        <location filename="../lib/model/recording/chartrecorder.cpp" line="32"/>
         <source>nothing to record: no station or feeder is connected</source>
         <translation>nada que grabar: no hay ninguna estación ni alimentador conectados</translation>
     </message>
@@ -1390,6 +1390,14 @@
     </message>
 </context>
 <context>
+    <name>CliMeasure</name>
+    <message>
+        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
+        <translation>tipscope-cli: measure espera un ARCHIVO, una grabación (de record, o de «Grabar» o la exportación CSV de la página de gráficos)</translation>
+    </message>
+</context>
+<context>
     <name>CliMonitor</name>
     <message>
         <location filename="../app/cli/climonitor.cpp" line="65"/>
@@ -1420,8 +1428,9 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="40"/>
-        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]
+        <location filename="../app/cli/clioptions.cpp" line="45"/>
+        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
+                    [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
 
@@ -1439,16 +1448,22 @@ Commands:
   profile apply FILE [--dry-run] [--force]
                             write what differs, each value read back; --dry-run lists
                             the frames; --force applies a profile of another family
+  record FILE [--duration S]
+                            every port&apos;s and the feeder&apos;s curves and events to a chart
+                            recording, as the Charts page records them
+  measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
-built-in simulated DME station (address 01) and SFR feeder (address 10).
+built-in simulated DME station (address 01) and SFR feeder (address 10);
+--demo-activity the same at work: joints on port 1 every 15 s, rests on port 2, feeds.
 --timeout is the device turnaround added to the wire time of each request.
 
 Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 3 the device answered NAK, or a read-back or profile check failed;
 4 no valid answer; 5 transport error.
 </source>
-        <translation>Uso: tipscope-cli [--port DISPOSITIVO | --tcp HOST:PUERTO | --demo] [--baud N]
+        <translation>Uso: tipscope-cli [--port DISPOSITIVO | --tcp HOST:PUERTO | --demo | --demo-activity]
+                  [--baud N]
                   [--parity none|even|odd] [--stop-bits 1|2] [--addr ORIG:DEST | --no-addr]
                   [--timeout MS] [--retries N] [--verbose] COMANDO ...
 
@@ -1467,9 +1482,15 @@ Comandos:
   profile apply ARCHIVO [--dry-run] [--force]
                             escribe lo que difiere y vuelve a leer cada valor; --dry-run
                             lista las tramas; --force aplica un perfil de otra familia
+  record ARCHIVO [--duration S]
+                            las curvas y eventos de todos los puertos y del alimentador en una
+                            grabación de gráficos, como la graba la página de gráficos
+  measure ARCHIVO [--json]  los calentamientos y recuperaciones de una grabación, uno por línea
 
 Sin --addr ni --no-addr, el equipo se busca automáticamente. --demo habla con la
-estación DME simulada integrada (dirección 01) y el alimentador SFR (dirección 10).
+estación DME simulada integrada (dirección 01) y el alimentador SFR (dirección 10);
+--demo-activity lo mismo en funcionamiento: soldaduras en el puerto 1 cada 15 s, pausas en el
+puerto 2, alimentaciones.
 --timeout es el tiempo de respuesta del equipo, que se suma al tiempo de transmisión
 de cada petición.
 
@@ -1479,82 +1500,82 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="85"/>
+        <location filename="../app/cli/clioptions.cpp" line="96"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>comando desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="118"/>
+        <location filename="../app/cli/clioptions.cpp" line="129"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>indique solo una de --port, --tcp y --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="123"/>
+        <location filename="../app/cli/clioptions.cpp" line="135"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="130"/>
+        <location filename="../app/cli/clioptions.cpp" line="142"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="135"/>
+        <location filename="../app/cli/clioptions.cpp" line="147"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud requiere una velocidad como 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
+        <location filename="../app/cli/clioptions.cpp" line="154"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity admite none, even u odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="146"/>
+        <location filename="../app/cli/clioptions.cpp" line="158"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits admite 1 o 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
+        <location filename="../app/cli/clioptions.cpp" line="166"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="162"/>
+        <location filename="../app/cli/clioptions.cpp" line="174"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout requiere milisegundos de 1 a 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="165"/>
+        <location filename="../app/cli/clioptions.cpp" line="177"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries requiere un número de 0 a 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="169"/>
+        <location filename="../app/cli/clioptions.cpp" line="181"/>
         <source>--%1 needs a value</source>
         <translation>--%1 necesita un valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="173"/>
+        <location filename="../app/cli/clioptions.cpp" line="185"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <location filename="../app/cli/clioptions.cpp" line="189"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="178"/>
+        <location filename="../app/cli/clioptions.cpp" line="190"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="184"/>
+        <location filename="../app/cli/clioptions.cpp" line="196"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <location filename="../app/cli/clioptions.cpp" line="198"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -1578,34 +1599,91 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
-    <name>CliSession</name>
+    <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="56"/>
+        <location filename="../app/cli/clirecord.cpp" line="78"/>
+        <source>tipscope-cli: interrupted before the recording started</source>
+        <translation>tipscope-cli: interrumpido antes de que empezara la grabación</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="83"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="92"/>
+        <location filename="../app/cli/clirecord.cpp" line="118"/>
+        <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
+        <translation>tipscope-cli: record espera un ARCHIVO, p. ej. record linea3.csv --duration 60</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="126"/>
+        <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
+        <translation>tipscope-cli: --duration espera segundos (0: hasta que se interrumpa)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="133"/>
+        <location filename="../app/cli/clirecord.cpp" line="161"/>
+        <source>tipscope-cli: cannot record to %1: %2</source>
+        <translation>tipscope-cli: no se puede grabar en %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="135"/>
+        <source>no such folder</source>
+        <translation>la carpeta no existe</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="135"/>
+        <source>not writable</source>
+        <translation>sin permiso de escritura</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="182"/>
+        <source># recording %1 of %2 to %3</source>
+        <translation># grabando %1 de %2 en %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="190"/>
+        <source>tipscope-cli: writing %1 failed: %2</source>
+        <translation>tipscope-cli: falló la escritura de %1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/cli/clirecord.cpp" line="194"/>
+        <source>recorded %n row(s) to %1</source>
+        <translation>
+            <numerusform>%n fila grabada en %1</numerusform>
+            <numerusform>%n filas grabadas en %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>CliSession</name>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="57"/>
+        <source>tipscope-cli: cannot open %1: %2</source>
+        <translation>tipscope-cli: no se puede abrir %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="93"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="93"/>
+        <location filename="../app/cli/clisession.cpp" line="94"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="103"/>
+        <location filename="../app/cli/clisession.cpp" line="104"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134"/>
+        <location filename="../app/cli/clisession.cpp" line="135"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="137"/>
+        <location filename="../app/cli/clisession.cpp" line="138"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
