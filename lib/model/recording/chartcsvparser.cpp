@@ -7,6 +7,7 @@
 #include <QDateTime>
 #include <QRegularExpression>
 #include <QStringDecoder>
+#include <charconv>
 #include <cstring>
 
 namespace tipscope::model {
@@ -22,13 +23,13 @@ constexpr qsizetype kBinaryProbeBytes = 4096;
 // A QString's and a map node's own cost beside its characters, for heldBytes().
 constexpr qint64 kEntryOverhead = 96;
 
-int digits(QStringView s, qsizetype at, qsizetype count) {
+int digits(QByteArrayView s, qsizetype at, qsizetype count) {
     int v = 0;
     for (qsizetype i = at; i < at + count; ++i) {
-        const char16_t c = s[i].unicode();
-        if (c < u'0' || c > u'9')
+        const char c = s[i];
+        if (c < '0' || c > '9')
             return -1;
-        v = v * 10 + (c - u'0');
+        v = v * 10 + (c - '0');
     }
     return v;
 }
@@ -45,9 +46,9 @@ qint64 daysFromCivil(int y, int m, int d) {
 
 // The writer's own form, "2026-01-01T12:00:00.250Z", read without QDateTime's general parser
 // (most of a row's cost); anything else, or any field out of range, is left to QDateTime.
-std::optional<qint64> fastTime(QStringView s) {
-    if (s.size() != 24 || s[4] != u'-' || s[7] != u'-' || s[10] != u'T' || s[13] != u':' ||
-        s[16] != u':' || s[19] != u'.' || s[23] != u'Z')
+std::optional<qint64> fastTime(QByteArrayView s) {
+    if (s.size() != 24 || s[4] != '-' || s[7] != '-' || s[10] != 'T' || s[13] != ':' ||
+        s[16] != ':' || s[19] != '.' || s[23] != 'Z')
         return std::nullopt;
     const int y = digits(s, 0, 4), mo = digits(s, 5, 2), d = digits(s, 8, 2);
     const int h = digits(s, 11, 2), mi = digits(s, 14, 2), sec = digits(s, 17, 2);
@@ -62,12 +63,32 @@ std::optional<qint64> fastTime(QStringView s) {
     return ((daysFromCivil(y, mo, d) * 24 + h) * 60 + mi) * 60'000 + sec * 1000 + ms;
 }
 
-std::optional<qint64> timeOf(const QString &cell) {
-    const QString trimmed = cell.trimmed();
+std::optional<qint64> timeOf(QByteArrayView cell) {
+    const QByteArrayView trimmed = cell.trimmed();
     if (const auto fast = fastTime(trimmed))
         return fast;
-    const QDateTime time = QDateTime::fromString(trimmed, Qt::ISODateWithMs);
+    const QDateTime time = QDateTime::fromString(QString::fromUtf8(trimmed), Qt::ISODateWithMs);
     return time.isValid() ? std::optional<qint64>(time.toMSecsSinceEpoch()) : std::nullopt;
+}
+
+// A number as written in a recording: '.' as the decimal point whatever the locale, an exponent
+// allowed, nothing else in the cell.
+std::optional<double> number(QByteArrayView cell) {
+    if (cell.startsWith('+'))
+        cell = cell.sliced(1);
+    double value = 0;
+    const char *end = cell.data() + cell.size();
+    const auto [stop, error] = std::from_chars(cell.data(), end, value);
+    if (error != std::errc() || stop != end || cell.isEmpty())
+        return std::nullopt;
+    return value;
+}
+
+bool isAscii(QByteArrayView bytes) {
+    for (const char c : bytes)
+        if (static_cast<unsigned char>(c) >= 0x80)
+            return false;
+    return true;
 }
 } // namespace
 
@@ -97,21 +118,22 @@ bool ChartCsvParser::feed(const char *data, qsizetype size) {
                             .arg(ChartCsvReader::kMaxLineBytes));
         }
         const qsizetype end = newline - data;
-        QByteArray bytes;
+        bool ok = false;
         if (m_pending.isEmpty()) {
-            bytes = QByteArray(data + start, end - start);
+            ok = line(QByteArrayView(data + start, end - start));
         } else {
-            bytes = m_pending.append(data + start, end - start);
+            const QByteArray whole = m_pending.append(data + start, end - start);
             m_pending = QByteArray();
+            ok = line(whole);
         }
-        if (!line(std::move(bytes)))
+        if (!ok)
             return false;
         start = end + 1;
     }
     return true;
 }
 
-bool ChartCsvParser::line(QByteArray bytes) {
+bool ChartCsvParser::line(QByteArrayView bytes) {
     ++m_line;
     while (bytes.endsWith('\r'))
         bytes.chop(1);
@@ -119,24 +141,26 @@ bool ChartCsvParser::line(QByteArray bytes) {
         return fail(Tr::tr("the line is longer than %1 bytes (is this a chart CSV?)")
                         .arg(ChartCsvReader::kMaxLineBytes));
     if (m_line == 1 && bytes.startsWith("\xEF\xBB\xBF"))
-        bytes.remove(0, 3); // the byte-order mark some spreadsheets write
-    if (bytes.contains('\0'))
+        bytes = bytes.sliced(3); // the byte-order mark some spreadsheets write
+    if (!bytes.isEmpty() && std::memchr(bytes.data(), 0, size_t(bytes.size())))
         return fail(Tr::tr("the file holds binary data, not CSV text"));
-    QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
-    const QString text = utf8.decode(bytes);
-    if (utf8.hasError())
-        return fail(Tr::tr("the text is not UTF-8 (save the file as \"CSV UTF-8\")"));
-    if (text.startsWith(QLatin1Char('#'))) {
+    if (!isAscii(bytes)) {
+        QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
+        const QString checked = utf8.decode(bytes);
+        if (utf8.hasError())
+            return fail(Tr::tr("the text is not UTF-8 (save the file as \"CSV UTF-8\")"));
+    }
+    if (bytes.startsWith('#')) {
         if (++m_comments > ChartCsvReader::kMaxCommentLines)
             return fail(Tr::tr("more than %1 comment lines (\"#\"); a recording has a few, and "
                                "one per channel")
                             .arg(ChartCsvReader::kMaxCommentLines));
-        comment(text);
+        comment(QString::fromUtf8(bytes));
         return true;
     }
-    if (text.trimmed().isEmpty())
+    if (bytes.trimmed().isEmpty())
         return true;
-    if (!csv::splitLine(text, m_cells))
+    if (!csv::splitLine(bytes, m_cells))
         return fail(Tr::tr("a quoted cell is not closed"));
     return m_haveHeader ? row(m_cells) : header(m_cells);
 }
@@ -159,10 +183,10 @@ void ChartCsvParser::comment(const QString &text) {
     }
 }
 
-bool ChartCsvParser::header(const QStringList &cells) {
+bool ChartCsvParser::header(const csv::Cells &cells) {
     static const QRegularExpression name(
         QStringLiteral("^(port(\\d+)|feeder) (\\w+)(?: \\[(.+)\\])?$"));
-    if (cells.first() != QLatin1String(chartcsv::kTimeColumn))
+    if (cells.at(0) != QByteArrayView(chartcsv::kTimeColumn))
         return fail(Tr::tr("the header row should start with \"time\" (is this a chart CSV "
                            "written by TipScope?)"));
     if (cells.size() > ChartCsvReader::kMaxColumns)
@@ -171,7 +195,7 @@ bool ChartCsvParser::header(const QStringList &cells) {
                         .arg(ChartCsvReader::kMaxColumns));
     QList<ChartChannel> &channels = m_data.recording->channels;
     for (qsizetype i = 1; i < cells.size(); ++i) {
-        const QString &cell = cells.at(i);
+        const QString cell = cells.text(i);
         if (cell == QLatin1String(chartcsv::kEventsColumn)) {
             m_eventColumns.append(int(m_columns.size()));
             m_columns.append(Column{});
@@ -236,21 +260,22 @@ void ChartCsvParser::addChannel(const QString &id, int port) {
     m_channelColumns.append(QList<int>());
 }
 
-bool ChartCsvParser::channelValues(int channel, const QStringList &cells, QList<qint32> &out,
+bool ChartCsvParser::channelValues(int channel, const csv::Cells &cells, QList<qint32> &out,
                                    bool &present) {
     out.clear();
     int filled = 0;
     const QList<int> &columns = m_channelColumns.at(channel);
     for (int i : columns) {
-        const QString cell = cells.at(i + 1).trimmed();
+        const QByteArrayView cell = cells.at(i + 1).trimmed();
         if (cell.isEmpty())
             continue;
         ++filled;
-        bool ok = false;
-        const double display = cell.toDouble(&ok); // C locale: '.' whatever the system's
-        const auto wire = ok ? m_columns.at(i).format.toWire(display) : std::nullopt;
+        const auto display = number(cell);
+        const auto wire = display ? m_columns.at(i).format.toWire(*display) : std::nullopt;
         if (!wire)
-            return fail(Tr::tr("column %1: \"%2\" is not a number").arg(i + 2).arg(cell));
+            return fail(Tr::tr("column %1: \"%2\" is not a number")
+                            .arg(i + 2)
+                            .arg(QString::fromUtf8(cell)));
         out.append(*wire);
     }
     present = filled > 0;
@@ -260,19 +285,19 @@ bool ChartCsvParser::channelValues(int channel, const QStringList &cells, QList<
     return true;
 }
 
-bool ChartCsvParser::row(const QStringList &cells) {
+bool ChartCsvParser::row(const csv::Cells &cells) {
     if (cells.size() != m_columns.size() + 1)
         return fail(Tr::tr("%1 cells, but the header has %2 columns")
                         .arg(cells.size())
                         .arg(m_columns.size() + 1));
-    const auto ms = timeOf(cells.first());
+    const auto ms = timeOf(cells.at(0));
     if (!ms)
-        return fail(Tr::tr("\"%1\" is not an ISO 8601 time").arg(cells.first()));
+        return fail(Tr::tr("\"%1\" is not an ISO 8601 time").arg(cells.text(0)));
     ChartRecording &out = *m_data.recording;
     if (out.rows > 0 && *ms < out.lastMs)
         return fail(Tr::tr("the time %1 is earlier than the row before it (rows must be in time "
                            "order)")
-                        .arg(cells.first()));
+                        .arg(cells.text(0)));
     for (int c = 0; c < int(m_data.buffers.size()); ++c) {
         bool present = false;
         if (!channelValues(c, cells, m_values, present))
@@ -295,11 +320,11 @@ bool ChartCsvParser::row(const QStringList &cells) {
     return true;
 }
 
-bool ChartCsvParser::events(qint64 ms, const QStringList &cells) {
+bool ChartCsvParser::events(qint64 ms, const csv::Cells &cells) {
     for (int i : std::as_const(m_eventColumns)) {
-        const QString &cell = cells.at(i + 1);
-        if (cell.isEmpty())
+        if (cells.at(i + 1).isEmpty())
             continue;
+        const QString cell = cells.text(i + 1);
         const auto event = ChartEvent::fromCsvCell(ms, cell);
         if (!event)
             return fail(Tr::tr("the event \"%1\" is not \"<channel> <kind>: <text>\"").arg(cell));

@@ -12,6 +12,7 @@
 // another.
 #pragma once
 
+#include "model/io/csv.h"
 #include "model/recording/chartcsvreader.h"
 
 #include <QMap>
@@ -44,13 +45,13 @@ private:
         SeriesFormat format;
     };
 
-    bool line(QByteArray bytes);
+    bool line(QByteArrayView bytes);
     void comment(const QString &text);
-    bool header(const QStringList &cells);
+    bool header(const csv::Cells &cells);
     void addChannel(const QString &id, int port);
-    bool row(const QStringList &cells);
-    bool channelValues(int channel, const QStringList &cells, QList<qint32> &out, bool &present);
-    bool events(qint64 ms, const QStringList &cells);
+    bool row(const csv::Cells &cells);
+    bool channelValues(int channel, const csv::Cells &cells, QList<qint32> &out, bool &present);
+    bool events(qint64 ms, const csv::Cells &cells);
 
     qint64 m_line = 0;
     qint64 m_comments = 0;
@@ -62,7 +63,7 @@ private:
     QList<Column> m_columns;
     QList<QList<int>> m_channelColumns; // per channel, its columns' indexes in m_columns
     QList<int> m_eventColumns;
-    QStringList m_cells; // reused for every row
+    csv::Cells m_cells; // reused for every row
     QList<qint32> m_values;
     ChartRecordingData m_data;
     bool m_haveHeader = false;

@@ -47,16 +47,24 @@ void TestCsv::aCellReadsBackAsItsText() {
     QFETCH(QString, readBack);
     const QString written = csv::quoted(text);
     QCOMPARE(written, cell);
-    QStringList cells;
-    QVERIFY(csv::splitLine(QStringLiteral("a,") + written + QStringLiteral(",b"), cells));
-    QCOMPARE(cells, QStringList({QStringLiteral("a"), readBack, QStringLiteral("b")}));
+    const QByteArray line = "a," + written.toUtf8() + ",b";
+    csv::Cells cells;
+    QVERIFY(csv::splitLine(line, cells));
+    QCOMPARE(cells.size(), 3);
+    QCOMPARE(cells.text(0), QStringLiteral("a"));
+    QCOMPARE(cells.text(1), readBack);
+    QCOMPARE(cells.text(2), QStringLiteral("b"));
 }
 
 void TestCsv::anOpenQuoteIsRefused() {
-    QStringList cells;
-    QVERIFY(!csv::splitLine(QStringLiteral("a,\"b,c"), cells));
-    QVERIFY(csv::splitLine(QStringLiteral("a,b\"c"), cells)); // a quote inside a cell is text
-    QCOMPARE(cells.last(), QStringLiteral("b\"c"));
+    csv::Cells cells;
+    QVERIFY(!csv::splitLine("a,\"b,c", cells));
+    QVERIFY(csv::splitLine("a,b\"c", cells)); // a quote inside a cell is text
+    QCOMPARE(cells.text(1), QStringLiteral("b\"c"));
+    QVERIFY(csv::splitLine("", cells));
+    QCOMPARE(cells.size(), 1);
+    QVERIFY(csv::splitLine(",,", cells));
+    QCOMPARE(cells.size(), 3);
 }
 
 QTEST_GUILESS_MAIN(TestCsv)
