@@ -7,6 +7,7 @@
 #include "benchsupport.h"
 #include "chartbench.h"
 #include "linkbench.h"
+#include "replaybench.h"
 #include "soakbench.h"
 
 #include <QApplication>
@@ -31,6 +32,8 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runSoakBench},
     {"chart", "chart redraw over a day of 4 ports, naive chart, memory, GUI CPU (--seconds N)",
      tipscope::bench::runChartBench, true},
+    {"replay", "reading recordings: speed and memory over file size (--mb N, --no-fifo)",
+     tipscope::bench::runReplayBench},
 };
 
 void printUsage(QTextStream &s) {
