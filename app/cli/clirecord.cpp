@@ -46,7 +46,6 @@ Session::Settings sessionSettings(const CliOptions &o) {
                    : o.addressing == CliOptions::Addressing::Without ? Session::Addressing::Without
                                                                      : Session::Addressing::Auto;
     s.targetAddress = o.targetAddress;
-    s.scanAllAddresses = o.flags.contains(QStringLiteral("scan"));
     s.demoActivity = o.demoActivity;
     return s;
 }
