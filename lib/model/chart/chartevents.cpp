@@ -95,12 +95,12 @@ std::optional<ChartEvent> ChartEvents::addFromLog(const Event &event,
 }
 
 void ChartEvents::add(const ChartEvent &event) {
-    const QByteArray scope = event.scope.toUtf8().left(0xffff);
+    const QByteArray scope = event.scope.toUtf8();
     const QByteArray text = event.text.toUtf8();
     Entry entry;
     entry.timeMs = event.timeMs;
     entry.offset = quint32(m_texts.size());
-    entry.scopeBytes = quint16(scope.size());
+    entry.scopeBytes = quint32(scope.size());
     entry.textBytes = quint32(text.size());
     entry.kind = quint8(event.kind);
     entry.severity = quint8(event.severity);

@@ -68,7 +68,7 @@ private:
         qint64 timeMs = 0;
         quint32 offset = 0;
         quint32 textBytes = 0;
-        quint16 scopeBytes = 0;
+        quint32 scopeBytes = 0;
         quint8 kind = 0;     // Event::Kind
         quint8 severity = 0; // Event::Severity
     };
