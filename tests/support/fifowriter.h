@@ -31,8 +31,14 @@ public:
         m_release = true;
         if (!m_thread.joinable())
             return;
-        // A writer still waiting in open() for a reader gets one, and then its release.
+        // A writer still waiting in open() for a reader gets one, and one in write() gets its
+        // data taken, until it has noticed the release.
         const int fd = ::open(QFile::encodeName(m_path).constData(), O_RDONLY | O_NONBLOCK);
+        char sink[65536];
+        while (!m_done) {
+            if (fd < 0 || ::read(fd, sink, sizeof sink) <= 0)
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
         m_thread.join();
         if (fd >= 0)
             ::close(fd);
@@ -44,10 +50,14 @@ public:
 private:
     void run(const QByteArray &content, bool close) {
         const int fd = ::open(QFile::encodeName(m_path).constData(), O_WRONLY);
-        if (fd < 0)
+        if (fd < 0) {
+            m_done = true;
             return;
+        }
+        // In pieces, so that a release is noticed between them.
         for (qint64 at = 0; at < content.size() && !m_release;) {
-            const ssize_t n = ::write(fd, content.constData() + at, size_t(content.size() - at));
+            const size_t piece = size_t(qMin<qint64>(content.size() - at, 65536));
+            const ssize_t n = ::write(fd, content.constData() + at, piece);
             if (n <= 0)
                 break;
             at += n;
@@ -56,11 +66,13 @@ private:
         while (!close && !m_release)
             std::this_thread::sleep_for(std::chrono::milliseconds(10));
         ::close(fd);
+        m_done = true;
     }
 
     QString m_path;
     bool m_ok = false;
     std::atomic<bool> m_release{false};
+    std::atomic<bool> m_done{false};
     std::atomic<qint64> m_written{0};
     std::thread m_thread;
 };
