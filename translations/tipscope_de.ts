@@ -40,22 +40,22 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="196"/>
+        <location filename="../lib/protocol/catalog.cpp" line="206"/>
         <source>Unknown NAK code %1</source>
         <translation>Unbekannter NAK-Code %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="201"/>
+        <location filename="../lib/protocol/catalog.cpp" line="211"/>
         <source>Unknown station error %1</source>
         <translation>Unbekannter Stationsfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="210"/>
+        <location filename="../lib/protocol/catalog.cpp" line="220"/>
         <source>Unknown port error %1</source>
         <translation>Unbekannter Portfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <location filename="../lib/protocol/catalog.cpp" line="225"/>
         <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
         <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt; mit W-ECV zurücksetzen und im SFR-Handbuch nachsehen)</translation>
     </message>
@@ -225,12 +225,12 @@
         <translation>Stunden mit am Port angeschlossenem Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
         <source>No-tool hours</source>
         <translation>Stunden ohne Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
         <source>Hours the port was powered with no tool</source>
         <translation>Stunden, in denen der Port ohne Werkzeug eingeschaltet war</translation>
     </message>
@@ -255,12 +255,12 @@
         <translation>Stunden im Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
         <source>Work hours</source>
         <translation>Arbeitsstunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
         <source>Hours working</source>
         <translation>Stunden in Betrieb</translation>
     </message>
@@ -675,22 +675,22 @@
         <translation>Stoppt den Vorschub (kontinuierlicher Modus)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
         <source>Feeding length</source>
         <translation>Vorschublänge</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
         <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
         <translation>Vorschublänge pro Start im diskontinuierlichen Modus, in Zehntelmillimetern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
         <source>Feeding speed</source>
         <translation>Vorschubgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
         <source>Feeding speed, in tenths of a millimetre per second</source>
         <translation>Vorschubgeschwindigkeit, in Zehntelmillimetern pro Sekunde</translation>
     </message>
@@ -845,229 +845,249 @@
         <translation>Der Teilzähler der Einschaltstunden wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
         <source>Feeding hours (total)</source>
         <translation>Vorschubstunden (gesamt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
         <source>Hours feeding, total counter</source>
         <translation>Stunden mit Vorschub, Gesamtzähler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
         <source>Feeding hours (partial)</source>
         <translation>Vorschubstunden (Teilzähler)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
         <source>Hours feeding since the partial counter was reset</source>
         <translation>Stunden mit Vorschub seit dem Zurücksetzen des Teilzählers</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
         <source>Reset feeding hours (partial)</source>
         <translation>Vorschubstunden (Teilzähler) zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
         <source>Resets the partial feeding-hours counter</source>
         <translation>Setzt den Teilzähler der Vorschubstunden zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
         <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>Der Teilzähler der Vorschubstunden wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
         <source>Fed length (total)</source>
         <translation>Vorgeschobene Länge (gesamt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
         <source>Metres of wire fed, total counter</source>
         <translation>Vorgeschobener Draht in Metern, Gesamtzähler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
         <source>Fed length (partial)</source>
         <translation>Vorgeschobene Länge (Teilzähler)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
         <source>Metres of wire fed since the partial counter was reset</source>
         <translation>Vorgeschobener Draht in Metern seit dem Zurücksetzen des Teilzählers</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
         <source>Reset fed length (partial)</source>
         <translation>Vorgeschobene Länge (Teilzähler) zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
         <source>Resets the partial fed-length counter</source>
         <translation>Setzt den Teilzähler der vorgeschobenen Länge zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
         <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
         <translation>Der Teilzähler der vorgeschobenen Länge wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
         <source>No tool</source>
         <translation>Kein Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
         <source>BCC error: the frame failed the sum check</source>
         <translation>BCC-Fehler: das Telegramm hat die Prüfsummenkontrolle nicht bestanden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
         <source>Format error: the frame has the wrong size or layout</source>
         <translation>Formatfehler: das Telegramm hat die falsche Länge oder den falschen Aufbau</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
         <source>Out of range: the value is outside the allowed limits or off-step</source>
         <translation>Außerhalb des Bereichs: der Wert liegt außerhalb der zulässigen Grenzen oder nicht im Schrittraster</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
         <source>Control error: the command is not accepted by this device</source>
         <translation>Steuerungsfehler: dieses Gerät nimmt den Befehl nicht an</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
         <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
         <translation>Der Robotermodus ist aus: schalten Sie im Stationsmenü &quot;Robot mode&quot; ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
         <source>Device model error: the device model is unknown</source>
         <translation>Gerätemodellfehler: das Gerätemodell ist unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
         <source>Undefined error</source>
         <translation>Undefinierter Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
         <source>Stopped by transformer overload</source>
         <translation>Wegen Überlast des Transformators gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
         <source>Temperature sensor error</source>
         <translation>Fehler des Temperatursensors</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
         <source>Memory error</source>
         <translation>Speicherfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
         <source>Mains frequency error</source>
         <translation>Netzfrequenzfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
         <source>Device model error</source>
         <translation>Gerätemodellfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
         <source>MCU tools not connected</source>
         <translation>Werkzeug-MCU nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
         <source>Warning: transformer overload</source>
         <translation>Warnung: Überlast des Transformators</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
         <source>Short circuit</source>
         <translation>Kurzschluss</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
         <source>Short circuit, not recoverable: restart the station</source>
         <translation>Kurzschluss, nicht behebbar: Station neu starten</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
         <source>Open circuit</source>
         <translation>Leitungsunterbrechung</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
         <source>Tool not accepted</source>
         <translation>Werkzeug nicht akzeptiert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
         <source>Detecting tool</source>
         <translation>Werkzeug wird erkannt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
         <source>Stopped at maximum power</source>
         <translation>Bei maximaler Leistung gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
         <source>Stopped by transistor (MOS) overload</source>
         <translation>Wegen Überlast des Transistors (MOS) gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
         <source>Warning: transistor (MOS) overload</source>
         <translation>Warnung: Überlast des Transistors (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
         <source>No error</source>
         <translation>Kein Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
         <source>Sleep</source>
         <translation>Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>Hibernation</source>
         <translation>Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>Suction on</source>
         <translation>Absaugung ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor vorwärts (Dosieren)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
         <source>Motor backward</source>
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="226"/>
         <source>unknown (%1)</source>
         <translation>unbekannt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="233"/>
         <source>none</source>
         <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <source>Reset partial plugged hours</source>
+        <translation>Teilzähler Einschaltstunden zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <source>Feeding hours</source>
+        <translation>Vorschubstunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <source>Reset partial feeding hours</source>
+        <translation>Teilzähler Vorschubstunden zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <source>Reset partial fed length</source>
+        <translation>Teilzähler vorgeschobene Länge zurücksetzen</translation>
     </message>
 </context>
 <context>
@@ -1081,124 +1101,124 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="77"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="96"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="119"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>die Zeile ist länger als %1 Bytes (ist das eine Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="85"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="124"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>die Datei enthält Binärdaten, keinen CSV-Text</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="128"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="131"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155"/>
         <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>mehr als %1 Kommentarzeilen („#“); eine Aufzeichnung hat wenige, und eine je Kanal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="166"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>die Kopfzeile muss mit &quot;time&quot; beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="169"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 Spalten; die Wiedergabe liest höchstens %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="182"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>Spalte %1 &quot;%2&quot; ist weder &quot;port&lt;n&gt; &lt;Reihe&gt; [Einheit]&quot; noch &quot;feeder &lt;Reihe&gt; [Einheit]&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="195"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>Spalte %1 &quot;%2&quot;: die Einheit muss &quot;%3&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="224"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="224"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="204"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>Spalte %1 &quot;%2&quot; kommt zweimal vor</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="210"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234"/>
         <source>the header names no series columns</source>
         <translation>die Kopfzeile nennt keine Spalten mit Datenreihen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="253"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>Spalte %1: &quot;%2&quot; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="258"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 hat nur in einem Teil seiner Spalten Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="265"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 Zellen, aber die Kopfzeile hat %2 Spalten</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="270"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; ist keine Zeitangabe nach ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="273"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>die Zeit %1 liegt vor der der vorigen Zeile (die Zeilen müssen zeitlich geordnet sein)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 hat mehr als %2 Messwerte, mehr als die Wiedergabe fasst; teilen Sie die Datei auf</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="305"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="330"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>das Ereignis &quot;%1&quot; hat nicht die Form &quot;&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="140"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164"/>
         <source>a quoted cell is not closed</source>
         <translation>eine Zelle in Anführungszeichen ist nicht geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="322"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="347"/>
         <source>the file has a header but no rows</source>
         <translation>die Datei hat eine Kopfzeile, aber keine Zeilen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="320"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="345"/>
         <source>the file is empty or holds only comments</source>
         <translation>die Datei ist leer oder enthält nur Kommentare</translation>
     </message>
@@ -1297,96 +1317,110 @@
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="37"/>
+        <location filename="../app/cli/clicommands.cpp" line="38"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="49"/>
+        <location filename="../app/cli/clicommands.cpp" line="61"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="76"/>
+        <location filename="../app/cli/clicommands.cpp" line="88"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="87"/>
+        <location filename="../app/cli/clicommands.cpp" line="99"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="109"/>
+        <location filename="../app/cli/clicommands.cpp" line="122"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="114"/>
+        <location filename="../app/cli/clicommands.cpp" line="127"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="122"/>
+        <location filename="../app/cli/clicommands.cpp" line="135"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127"/>
+        <location filename="../app/cli/clicommands.cpp" line="140"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="136"/>
+        <location filename="../app/cli/clicommands.cpp" line="178"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="144"/>
+        <location filename="../app/cli/clicommands.cpp" line="187"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="156"/>
-        <location filename="../app/cli/clicommands.cpp" line="158"/>
+        <location filename="../app/cli/clicommands.cpp" line="200"/>
+        <location filename="../app/cli/clicommands.cpp" line="202"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="161"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="170"/>
-        <location filename="../app/cli/clicommands.cpp" line="191"/>
+        <location filename="../app/cli/clicommands.cpp" line="168"/>
+        <location filename="../app/cli/clicommands.cpp" line="214"/>
+        <location filename="../app/cli/clicommands.cpp" line="238"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="183"/>
+        <location filename="../app/cli/clicommands.cpp" line="230"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="256"/>
+        <location filename="../app/cli/clicommands.cpp" line="303"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="279"/>
+        <location filename="../app/cli/clicommands.cpp" line="326"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="282"/>
+        <location filename="../app/cli/clicommands.cpp" line="329"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="283"/>
+        <location filename="../app/cli/clicommands.cpp" line="330"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/cli/clicommands.cpp" line="50"/>
+        <source>%n raw byte(s), not a frame (%1)</source>
+        <translation>
+            <numerusform>%n Rohbyte, kein Telegramm (%1)</numerusform>
+            <numerusform>%n Rohbytes, kein Telegramm (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
+        <translation>tipscope-cli: %1 wurde nicht gesendet: seine Grenze %2 ließ sich nicht lesen: %3</translation>
     </message>
 </context>
 <context>
@@ -1400,27 +1434,27 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="65"/>
+        <location filename="../app/cli/climonitor.cpp" line="66"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="72"/>
+        <location filename="../app/cli/climonitor.cpp" line="73"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="79"/>
+        <location filename="../app/cli/climonitor.cpp" line="80"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="88"/>
+        <location filename="../app/cli/climonitor.cpp" line="89"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="112"/>
+        <location filename="../app/cli/climonitor.cpp" line="113"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -1428,7 +1462,7 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="45"/>
+        <location filename="../app/cli/clioptions.cpp" line="47"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -1498,82 +1532,82 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="96"/>
+        <location filename="../app/cli/clioptions.cpp" line="98"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="129"/>
+        <location filename="../app/cli/clioptions.cpp" line="131"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="135"/>
+        <location filename="../app/cli/clioptions.cpp" line="137"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
+        <location filename="../app/cli/clioptions.cpp" line="144"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="147"/>
+        <location filename="../app/cli/clioptions.cpp" line="149"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud erwartet eine Baudrate wie 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
+        <location filename="../app/cli/clioptions.cpp" line="156"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity erwartet none, even oder odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="158"/>
+        <location filename="../app/cli/clioptions.cpp" line="160"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits erwartet 1 oder 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="166"/>
+        <location filename="../app/cli/clioptions.cpp" line="168"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="174"/>
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="181"/>
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
         <source>--%1 needs a value</source>
         <translation>--%1 braucht einen Wert</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="185"/>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="189"/>
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="190"/>
+        <location filename="../app/cli/clioptions.cpp" line="193"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="196"/>
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="198"/>
+        <location filename="../app/cli/clioptions.cpp" line="201"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -1581,71 +1615,76 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliProfile</name>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="49"/>
+        <location filename="../app/cli/cliprofile.cpp" line="43"/>
         <source>tipscope-cli: could not read %1; no profile written</source>
         <translation>tipscope-cli: %1 konnte nicht gelesen werden; kein Profil geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="59"/>
+        <location filename="../app/cli/cliprofile.cpp" line="53"/>
         <source>saved %1 settings of %2 to %3</source>
         <translation>%1 Einstellungen von %2 in %3 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="73"/>
+        <location filename="../app/cli/cliprofile.cpp" line="67"/>
         <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
         <translation>tipscope-cli: profile erwartet save DATEI, diff DATEI oder apply DATEI</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <source>tipscope-cli: applying this profile would be refused: %1</source>
+        <translation>tipscope-cli: das Anwenden dieses Profils würde abgelehnt: %1</translation>
     </message>
 </context>
 <context>
     <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="78"/>
+        <location filename="../app/cli/clirecord.cpp" line="77"/>
         <source>tipscope-cli: interrupted before the recording started</source>
         <translation>tipscope-cli: abgebrochen, bevor die Aufzeichnung begann</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="83"/>
+        <location filename="../app/cli/clirecord.cpp" line="82"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="118"/>
+        <location filename="../app/cli/clirecord.cpp" line="117"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record erwartet eine DATEI, z. B. record linie3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="126"/>
+        <location filename="../app/cli/clirecord.cpp" line="125"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration erwartet Sekunden (0: bis zum Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="133"/>
-        <location filename="../app/cli/clirecord.cpp" line="161"/>
+        <location filename="../app/cli/clirecord.cpp" line="132"/>
+        <location filename="../app/cli/clirecord.cpp" line="160"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: in %1 kann nicht aufgezeichnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="135"/>
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
         <source>no such folder</source>
         <translation>Ordner nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="135"/>
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
         <source>not writable</source>
         <translation>nicht beschreibbar</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="182"/>
+        <location filename="../app/cli/clirecord.cpp" line="181"/>
         <source># recording %1 of %2 to %3</source>
         <translation># zeichne %1 von %2 in %3 auf</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="190"/>
+        <location filename="../app/cli/clirecord.cpp" line="189"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="194"/>
+        <location filename="../app/cli/clirecord.cpp" line="193"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n Zeile nach %1 aufgezeichnet</numerusform>
@@ -1656,32 +1695,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="57"/>
+        <location filename="../app/cli/clisession.cpp" line="69"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="93"/>
+        <location filename="../app/cli/clisession.cpp" line="105"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="94"/>
+        <location filename="../app/cli/clisession.cpp" line="106"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="104"/>
+        <location filename="../app/cli/clisession.cpp" line="116"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="135"/>
+        <location filename="../app/cli/clisession.cpp" line="147"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="138"/>
+        <location filename="../app/cli/clisession.cpp" line="152"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -1689,102 +1728,117 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="65"/>
+        <location filename="../lib/model/consolemodel.cpp" line="102"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>unverändert gesendet (kein gültiges Telegramm)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="81"/>
+        <location filename="../lib/model/consolemodel.cpp" line="118"/>
         <source>stray: answers no pending request</source>
         <translation>verwaist: beantwortet keine offene Anfrage</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="205"/>
+        <location filename="../lib/model/consolemodel.cpp" line="250"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="207"/>
+        <location filename="../lib/model/consolemodel.cpp" line="252"/>
+        <source>RX chunk</source>
+        <translation>RX-Block</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="254"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="209"/>
-        <source>frame</source>
-        <translation>Telegramm</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/consolemodel.cpp" line="211"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="213"/>
+        <location filename="../lib/model/consolemodel.cpp" line="258"/>
         <source>note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="266"/>
+        <source>Read</source>
+        <translation>Lesen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="268"/>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="270"/>
+        <source>Answer</source>
+        <translation>Antwort</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="277"/>
+        <location filename="../lib/model/consolemodel.cpp" line="336"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -1792,24 +1846,29 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="61"/>
+        <location filename="../lib/model/devicemodel.cpp" line="69"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="62"/>
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="66"/>
+        <location filename="../lib/model/devicemodel.cpp" line="74"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <location filename="../lib/model/devicemodel.cpp" line="147"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <source>—</source>
+        <translation>—</translation>
     </message>
 </context>
 <context>
@@ -1823,6 +1882,14 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <location filename="../lib/model/displayunits.cpp" line="89"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 hat mehr Nachkommastellen, als %2 zulässt</translation>
+    </message>
+</context>
+<context>
+    <name>Elide</name>
+    <message>
+        <location filename="../lib/protocol/elide.cpp" line="39"/>
+        <source>%1… (%2 characters)</source>
+        <translation>%1… (%2 Zeichen)</translation>
     </message>
 </context>
 <context>
@@ -1871,27 +1938,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="93"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="86"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="95"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="88"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="97"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="90"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="99"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="92"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="101"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="94"/>
         <source>What happened</source>
         <translation>Ereignis</translation>
     </message>
@@ -1899,92 +1966,118 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="57"/>
+        <location filename="../lib/model/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="63"/>
+        <location filename="../lib/model/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 hat keinen Befehl %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="80"/>
+        <location filename="../lib/model/feedermodel.cpp" line="117"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
 </context>
 <context>
-    <name>FrameBuilder</name>
+    <name>FrameComposer</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="43"/>
+        <location filename="../lib/model/framecomposer.cpp" line="40"/>
         <source>%1 carries the data field %2.</source>
         <translation>%1 enthält das Datenfeld %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="46"/>
+        <location filename="../lib/model/framecomposer.cpp" line="43"/>
         <source>A write needs a data field: %1.</source>
         <translation>Ein Schreibbefehl braucht ein Datenfeld: %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="57"/>
+        <location filename="../lib/model/framecomposer.cpp" line="54"/>
         <source>On the wire this value is written %1.</source>
         <translation>Auf der Leitung wird dieser Wert als %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="72"/>
+        <location filename="../lib/model/framecomposer.cpp" line="69"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Unbekannte Gerätefamilie: der Katalog kann dieses Telegramm nicht prüfen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
+        <location filename="../lib/model/framecomposer.cpp" line="77"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 ist im Katalog kein Schreibbefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="79"/>
+        <location filename="../lib/model/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 ist im Katalog kein Lesebefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
+        <location filename="../lib/model/framecomposer.cpp" line="81"/>
         <source>Did you mean %1?</source>
         <translation>Meinten Sie %1?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
+        <location filename="../lib/model/framecomposer.cpp" line="82"/>
         <source>It is sent as typed.</source>
         <translation>Es wird unverändert gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../lib/model/framecomposer.cpp" line="87"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Lesebefehle haben kein Datenfeld; das Gerät kann dieses Telegramm ablehnen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
+        <location filename="../lib/model/framecomposer.cpp" line="93"/>
         <source>Dangerous: %1</source>
         <translation>Gefährlich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
+        <location filename="../lib/model/framecomposer.cpp" line="97"/>
         <source>Catalog check: %1</source>
         <translation>Katalogprüfung: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
+        <location filename="../lib/model/framecomposer.cpp" line="111"/>
+        <source>%1 (no address)</source>
+        <translation>%1 (ohne Adresse)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/framecomposer.cpp" line="153"/>
+        <source>No device is known on this line: connect first, or send raw hex.</source>
+        <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/framecomposer.cpp" line="171"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>Nicht sendbar: der Befehl muss aus 3 druckbaren Zeichen bestehen, z. B. SMN.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="125"/>
+        <location filename="../lib/model/framecomposer.cpp" line="175"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>Nicht sendbar: das Datenfeld darf nur druckbare ASCII-Zeichen enthalten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="130"/>
+        <location filename="../lib/model/framecomposer.cpp" line="180"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>Nicht sendbar: Adressen gehen von 00 bis 99.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="209"/>
+        <source>%n byte(s), a valid frame: %1</source>
+        <translation>
+            <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
+            <numerusform>%n Bytes, ein gültiges Telegramm: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="211"/>
+        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
+        <translation>
+            <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
+            <numerusform>%n Bytes, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2094,6 +2187,74 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <location filename="../lib/protocol/hexbytes.cpp" line="61"/>
         <source>no bytes given</source>
         <translation>keine Bytes angegeben</translation>
+    </message>
+</context>
+<context>
+    <name>Journal</name>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="28"/>
+        <source>No journal is open.</source>
+        <translation>Kein Journal ist geöffnet.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="86"/>
+        <source>There is no journal at %1.</source>
+        <translation>Unter %1 gibt es kein Journal.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="81"/>
+        <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
+        <translation>Das Journal %1 wurde von einem neueren TipScope geschrieben (Schema %2; dieses kennt bis %3). Es wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="96"/>
+        <source>The file %1 is not a TipScope journal. It was left untouched.</source>
+        <translation>Die Datei %1 ist kein TipScope-Journal. Sie wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="162"/>
+        <source>Cannot create the folder %1 for the journal.</source>
+        <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="221"/>
+        <source>Records lost: %1. Reason: %2</source>
+        <translation>Verlorene Einträge: %1. Grund: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="305"/>
+        <source>The journal was closed before it could write them: %1</source>
+        <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="41"/>
+        <source>The journal %1 cannot grow: the disk is full or the journal reached its size limit.</source>
+        <translation>Das Journal %1 kann nicht wachsen: Der Datenträger ist voll oder das Journal hat seine Größengrenze erreicht.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="51"/>
+        <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
+        <translation>Das Journal %1 ist beschädigt oder kein Journal; es wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="55"/>
+        <source>The journal %1 is locked by another program.</source>
+        <translation>Das Journal %1 ist von einem anderen Programm gesperrt.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
+        <source>The disk holding the journal %1 reported an error.</source>
+        <translation>Der Datenträger des Journals %1 hat einen Fehler gemeldet.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
+        <source>The journal %1 reported an error: %2</source>
+        <translation>Das Journal %1 hat einen Fehler gemeldet: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="64"/>
+        <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
+        <translation>Das Journal %1 kann nicht geschrieben werden: Sein Ordner oder die Datei ist schreibgeschützt oder nicht zugänglich.</translation>
     </message>
 </context>
 <context>
@@ -2334,86 +2495,101 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>PortModel</name>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="30"/>
+        <location filename="../lib/model/portmodel.cpp" line="29"/>
         <source>Working</source>
         <translation>In Betrieb</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="32"/>
+        <location filename="../lib/model/portmodel.cpp" line="31"/>
         <source>Stand</source>
         <translation>In der Ablage</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="34"/>
+        <location filename="../lib/model/portmodel.cpp" line="33"/>
         <source>Sleep</source>
         <translation>Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="36"/>
+        <location filename="../lib/model/portmodel.cpp" line="35"/>
         <source>Hibernation</source>
         <translation>Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="44"/>
+        <location filename="../lib/model/portmodel.cpp" line="43"/>
         <source>Cooling</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="46"/>
+        <location filename="../lib/model/portmodel.cpp" line="45"/>
         <source>Suction</source>
         <translation>Absaugung</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="48"/>
+        <location filename="../lib/model/portmodel.cpp" line="47"/>
         <source>Motor forward</source>
         <translation>Motor vorwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="50"/>
+        <location filename="../lib/model/portmodel.cpp" line="49"/>
         <source>Motor backward</source>
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="100"/>
-        <location filename="../lib/model/portmodel.cpp" line="114"/>
+        <location filename="../lib/model/portmodel.cpp" line="109"/>
+        <location filename="../lib/model/portmodel.cpp" line="126"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="103"/>
+        <location filename="../lib/model/portmodel.cpp" line="115"/>
         <source>tool %1</source>
         <translation>Werkzeug %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="171"/>
-        <source>this port has no status command</source>
-        <translation>dieser Port hat keinen Statusbefehl</translation>
+        <location filename="../lib/model/portmodel.cpp" line="60"/>
+        <source>High temperature</source>
+        <translation>Übertemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="62"/>
+        <source>Low temperature</source>
+        <translation>Untertemperatur</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="63"/>
+        <source>None</source>
+        <translation>Keiner</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="187"/>
+        <source>this port has no %1 command</source>
+        <translation>dieser Port hat keinen Befehl %1</translation>
     </message>
 </context>
 <context>
     <name>ProblemLevel</name>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="42"/>
+        <location filename="../lib/model/problemlevel.cpp" line="44"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="44"/>
+        <location filename="../lib/model/problemlevel.cpp" line="46"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="46"/>
+        <location filename="../lib/model/problemlevel.cpp" line="48"/>
         <source>Info</source>
         <translation>Info</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="48"/>
+        <location filename="../lib/model/problemlevel.cpp" line="50"/>
         <source>Warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="50"/>
+        <location filename="../lib/model/problemlevel.cpp" line="52"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
@@ -2421,119 +2597,138 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="69"/>
-        <location filename="../lib/model/profile.cpp" line="123"/>
+        <location filename="../lib/model/profile.cpp" line="72"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: keine Einstellung von %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="75"/>
+        <location filename="../lib/model/profile.cpp" line="77"/>
         <source>%1: &apos;%2&apos; is not a valid data field</source>
         <translation>%1: &apos;%2&apos; ist kein gültiges Datenfeld</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="79"/>
-        <location filename="../lib/model/profile.cpp" line="160"/>
+        <location filename="../lib/model/profile.cpp" line="82"/>
+        <location filename="../lib/model/profile.cpp" line="170"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="94"/>
+        <location filename="../lib/model/profile.cpp" line="100"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="97"/>
+        <location filename="../lib/model/profile.cpp" line="111"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="100"/>
+        <location filename="../lib/model/profile.cpp" line="114"/>
         <source>profile schema %1 is not supported (this version reads schema %2)</source>
         <translation>Profilschema %1 wird nicht unterstützt (diese Version liest Schema %2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="106"/>
+        <location filename="../lib/model/profile.cpp" line="120"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="114"/>
+        <location filename="../lib/model/profile.cpp" line="128"/>
         <source>the profile has no values</source>
         <translation>das Profil enthält keine Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="118"/>
+        <location filename="../lib/model/profile.cpp" line="132"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="128"/>
+        <location filename="../lib/model/profile.cpp" line="138"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="146"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="145"/>
+        <location filename="../lib/model/profile.cpp" line="155"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="151"/>
+        <location filename="../lib/model/profile.cpp" line="161"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="175"/>
+        <location filename="../lib/model/profile.cpp" line="185"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="95"/>
+        <source>not a valid JSON file: %1</source>
+        <translation>keine gültige JSON-Datei: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="105"/>
+        <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
+        <translation>mehr als einmal angegeben, daher ist unklar, welcher Wert gemeint ist: %1; es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilejson.cpp" line="101"/>
+        <source>a NUL byte at byte %1</source>
+        <translation>ein NUL-Byte bei Byte %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilejson.cpp" line="102"/>
+        <source>control character 0x%1 at byte %2</source>
+        <translation>Steuerzeichen 0x%1 bei Byte %2</translation>
     </message>
 </context>
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="29"/>
+        <location filename="../lib/model/profileapplier.cpp" line="30"/>
         <source>refused, nothing was written: %1</source>
         <translation>abgelehnt, nichts wurde geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="33"/>
+        <location filename="../lib/model/profileapplier.cpp" line="34"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="37"/>
+        <location filename="../lib/model/profileapplier.cpp" line="38"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>geändert %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="39"/>
+        <location filename="../lib/model/profileapplier.cpp" line="40"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FEHLER %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="41"/>
+        <location filename="../lib/model/profileapplier.cpp" line="42"/>
         <source>would send %1</source>
         <translation>würde %1 senden</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="43"/>
+        <location filename="../lib/model/profileapplier.cpp" line="44"/>
         <source>skipped %1</source>
         <translation>%1 übersprungen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <location filename="../lib/model/profileapplier.cpp" line="46"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>abgebrochen: die übrigen Werte wurden nicht geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n Unterschied</numerusform>
@@ -2541,34 +2736,74 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profileapplier.cpp" line="48"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 geändert, %2 bereits richtig, %3 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="69"/>
+        <location filename="../lib/model/profileapplier.cpp" line="77"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>das Profil ist für %1, dieses Gerät ist %2 (erzwingen, um die gemeinsamen Einstellungen anzuwenden)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="91"/>
+        <location filename="../lib/model/profileapplier.cpp" line="90"/>
         <source>monitor-only mode is on</source>
         <translation>der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="108"/>
+        <location filename="../lib/model/profileapplier.cpp" line="131"/>
         <source>reading the device</source>
         <translation>Gerät wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="180"/>
+        <location filename="../lib/model/profileapplier.cpp" line="188"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="182"/>
+        <location filename="../lib/model/profileapplier.cpp" line="190"/>
         <source>unreadable value</source>
         <translation>unlesbarer Wert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="58"/>
+        <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
+%1</source>
+        <translation>das Profil würde die Grenzen seiner Einstellungen verletzen (MIT ≤ MAT, MIT ≤ ausgewählte Temperatur ≤ MAT):
+%1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="84"/>
+        <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
+        <translation>keine der Einstellungen des Profils gibt es an diesem %1 (übersprungen: %2)</translation>
+    </message>
+</context>
+<context>
+    <name>ProfileLimits</name>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <source>in the profile</source>
+        <translation>im Profil</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <source>on the device now</source>
+        <translation>jetzt am Gerät</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="65"/>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="83"/>
+        <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
+        <translation>%1 ist unbekannt (das Gerät hat nicht geantwortet), daher lässt sich %2 nicht dagegen prüfen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="90"/>
+        <source>%1 is above %2</source>
+        <translation>%1 liegt über %2</translation>
     </message>
 </context>
 <context>
@@ -2590,41 +2825,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="38"/>
-        <location filename="../lib/model/session.cpp" line="109"/>
-        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="42"/>
+        <location filename="../lib/model/session.cpp" line="113"/>
+        <location filename="../lib/model/session.cpp" line="116"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="108"/>
-        <location filename="../lib/model/session.cpp" line="119"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="123"/>
+        <location filename="../lib/model/session.cpp" line="130"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="142"/>
+        <location filename="../lib/model/session.cpp" line="146"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="219"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="211"/>
+        <location filename="../lib/model/session.cpp" line="220"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="217"/>
+        <location filename="../lib/model/session.cpp" line="226"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="234"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -2640,22 +2875,22 @@ Dauerhaft mit dieser udev-Regel:
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="71"/>
+        <location filename="../lib/model/stationmodel.cpp" line="74"/>
         <source>%1 does not support %2</source>
         <translation>%1 unterstützt %2 nicht</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="78"/>
+        <location filename="../lib/model/stationmodel.cpp" line="81"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 kann nicht im Speicher sichern</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="115"/>
+        <location filename="../lib/model/stationmodel.cpp" line="117"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="129"/>
+        <location filename="../lib/model/stationmodel.cpp" line="131"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -2706,53 +2941,53 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>ValueCodec</name>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="42"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="43"/>
         <source>%1 to %2%3</source>
         <translation>%1 bis %2%3</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="46"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="47"/>
         <source> in steps of %1</source>
         <translation> in Schritten von %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="48"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="49"/>
         <source>, or %1</source>
         <translation>, oder %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="56"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="57"/>
         <source>one of %1</source>
         <translation>einer der Werte %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="59"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="60"/>
         <source>no value (the command carries %1)</source>
         <translation>kein Wert (der Befehl enthält %1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="62"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="63"/>
         <source>nothing: it is read-only</source>
         <translation>nichts: schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="71"/>
-        <location filename="../lib/protocol/valuecodec.cpp" line="77"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="72"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="91"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="92"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 für %2 (%3) abgelehnt: zulässig ist %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="183"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; ist keine Verzögerung in Sekunden wie 1.6 oder 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="188"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; ist keine ganze Zahl; für %2 zulässig: %3</translation>
     </message>
@@ -3321,33 +3556,18 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
-        <source>%1: answered %2 after %L3 ms</source>
-        <translation>%1: Antwort %2 nach %L3 ms</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
-        <source>%1: refused, %2</source>
-        <translation>%1: abgelehnt, %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="85"/>
-        <source>%1: no answer (timeout)</source>
-        <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
-    </message>
-    <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
-        <source>%1: %2 (%3)</source>
-        <translation>%1: %2 (%3)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="99"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="96"/>
+        <source>While paused, new rows are held; they appear on resume.</source>
+        <translation>Solange angehalten ist, werden neue Zeilen zurückgehalten; sie erscheinen beim Fortsetzen.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
@@ -3472,95 +3692,65 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="221"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="214"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="248"/>
-        <source>error</source>
-        <translation>Fehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="256"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="260"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="270"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="309"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="328"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="288"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="316"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="299"/>
-        <source>%1 (no address)</source>
-        <translation>%1 (ohne Adresse)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="366"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="367"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="361"/>
         <source>Could not save %1:
 %2</source>
         <translation>%1 konnte nicht gespeichert werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="390"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="392"/>
-        <source>paused: new traffic is held</source>
-        <translation>angehalten: neuer Verkehr wird zurückgehalten</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
-        <source>%n raw byte(s)</source>
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <source>paused: %n held</source>
         <translation>
-            <numerusform>%n Rohbyte</numerusform>
-            <numerusform>%n Rohbytes</numerusform>
+            <numerusform>angehalten: %n zurückgehalten</numerusform>
+            <numerusform>angehalten: %n zurückgehalten</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="401"/>
-        <source>%1: not sent, not connected</source>
-        <translation>%1: nicht gesendet, nicht verbunden</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="405"/>
-        <source>%1: not sent, monitor-only mode is on</source>
-        <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="418"/>
-        <source>%1: sent, waiting for the answer…</source>
-        <translation>%1: gesendet, warte auf Antwort…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.h" line="66"/>
+        <location filename="../app/gui/pages/consolepage.h" line="62"/>
         <source>Console</source>
         <translation>Konsole</translation>
     </message>
@@ -3568,108 +3758,78 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
-        <source>Plugged hours</source>
-        <translation>Einschaltstunden</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
-        <source>Reset partial plugged hours…</source>
-        <translation>Teilzähler Einschaltstunden zurücksetzen…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
-        <source>Feeding hours</source>
-        <translation>Vorschubstunden</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
-        <source>Reset partial feeding hours…</source>
-        <translation>Teilzähler Vorschubstunden zurücksetzen…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
-        <source>Fed length</source>
-        <translation>Vorgeschobene Länge</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="44"/>
-        <source>Reset partial fed length…</source>
-        <translation>Teilzähler vorgeschobene Länge zurücksetzen…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="75"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="72"/>
         <source>When the counters were read</source>
         <translation>Zeitpunkt der Zählerabfrage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="74"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="76"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="80"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
         <source>Refresh counters</source>
         <translation>Zähler aktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>&amp;Export CSV…</source>
         <translation>CSV e&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Export counters as CSV</source>
         <translation>Zähler als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="96"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="145"/>
         <source>Reading the counters…</source>
         <translation>Zähler werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
         <source>Last reading at %1</source>
         <translation>Letzte Abfrage um %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="150"/>
         <source>Waiting for the first reading…</source>
         <translation>Warte auf die erste Abfrage…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="213"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
         <source>Station %1</source>
         <translation>Station %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="215"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
         <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Counters of %1</source>
         <translation>Zähler von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="226"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="228"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
@@ -3679,118 +3839,118 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Lotdrahtvorschub %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Partial</source>
         <translation>Teilzähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="285"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="287"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="291"/>
         <source>Last read failed: %1</source>
         <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
         <source>Read at %1</source>
         <translation>Gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="293"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="297"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="319"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="326"/>
         <source>Reset partial counter</source>
         <translation>Teilzähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>Reset “%1” on %2?</source>
         <translation>„%1“ an %2 zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="325"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="329"/>
         <source>It now reads %1.</source>
         <translation>Er steht jetzt auf %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
         <source>The total counter is not affected.</source>
         <translation>Der Gesamtzähler bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>Reset counter</source>
         <translation>Zähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 Es wurde nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="339"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 Nicht zurückgesetzt: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 %2 wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="349"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="389"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="394"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="40"/>
+        <location filename="../app/gui/pages/counterspage.h" line="42"/>
         <source>Counters</source>
         <translation>Zähler</translation>
     </message>
@@ -3826,27 +3986,27 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::DispensingPage</name>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="45"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="47"/>
         <source>Only the ALE has a built-in wire feed.</source>
         <translation>Nur die ALE hat einen eingebauten Drahtvorschub.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="55"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
         <source>&amp;Start dispensing</source>
         <translation>Dosieren &amp;starten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="56"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="58"/>
         <source>S&amp;top dispensing</source>
         <translation>Dosieren sto&amp;ppen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="59"/>
         <source>Ignore fuse error…</source>
         <translation>Sicherungsfehler ignorieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="63"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="65"/>
         <source>
 
 Continue?</source>
@@ -3855,38 +4015,38 @@ Continue?</source>
 Fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="75"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="77"/>
         <source>Wire feed settings</source>
         <translation>Einstellungen des Drahtvorschubs</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="87"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="110"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="112"/>
         <source>%1 · dispensed %2 in %3 cycles · %4</source>
         <translation>%1 · %2 in %3 Zyklen dosiert · %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="114"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
         <source>fuse unknown</source>
         <translation>Sicherung unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="115"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="117"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="118"/>
         <source>fuse missing or blown</source>
         <translation>Sicherung fehlt oder ist durchgebrannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="122"/>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="132"/>
         <source>no ALE</source>
         <translation>keine ALE</translation>
     </message>
@@ -3897,297 +4057,293 @@ Fortfahren?</translation>
     </message>
 </context>
 <context>
-    <name>tipscope::gui::ErrorsPage</name>
+    <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="338"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
-        <source>Not read yet</source>
-        <translation>Noch nicht gelesen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Error</source>
-        <translation>Fehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="144"/>
-        <source>Communication</source>
-        <translation>Kommunikation</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="145"/>
-        <source>Connection</source>
-        <translation>Verbindung</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Severity</source>
-        <translation>Schweregrad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="98"/>
-        <source>Current state</source>
-        <translation>Aktueller Zustand</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="101"/>
-        <source>Current errors and alarms</source>
-        <translation>Aktuelle Fehler und Alarme</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Where</source>
-        <translation>Ort</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Tool</source>
-        <translation>Werkzeug</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Temperature alarm</source>
-        <translation>Temperaturalarm</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="114"/>
-        <source>&amp;Reset feeder error</source>
-        <translation>Vorschubfehler &amp;zurücksetzen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="116"/>
-        <source>Reset feeder error</source>
-        <translation>Vorschubfehler zurücksetzen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
-        <source>Result of the last action</source>
-        <translation>Ergebnis der letzten Aktion</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
-        <source>History</source>
-        <translation>Verlauf</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="134"/>
-        <source>Show events of kind</source>
-        <translation>Ereignisse dieser Art anzeigen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="135"/>
-        <source>All kinds</source>
-        <translation>Alle Arten</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="136"/>
-        <source>Errors and alarms</source>
-        <translation>Fehler und Alarme</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="138"/>
-        <source>Station errors</source>
-        <translation>Stationsfehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="139"/>
-        <source>Port errors</source>
-        <translation>Portfehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="140"/>
-        <source>Feeder errors</source>
-        <translation>Vorschubfehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="141"/>
-        <source>Alarms</source>
-        <translation>Alarme</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="142"/>
-        <source>Status changes</source>
-        <translation>Statuswechsel</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="143"/>
-        <source>Writes</source>
-        <translation>Schreibzugriffe</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="150"/>
-        <source>Show events of severity</source>
-        <translation>Ereignisse dieses Schweregrads anzeigen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="151"/>
-        <source>Any severity</source>
-        <translation>Jeder Schweregrad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="152"/>
-        <source>Warnings and errors</source>
-        <translation>Warnungen und Fehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="153"/>
-        <source>Errors only</source>
-        <translation>Nur Fehler</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="156"/>
-        <source>Show events containing</source>
-        <translation>Ereignisse mit diesem Text anzeigen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="157"/>
-        <source>Text in any column</source>
-        <translation>Text in beliebiger Spalte</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="159"/>
-        <source>&amp;Kind:</source>
-        <translation>&amp;Art:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="161"/>
-        <source>Se&amp;verity:</source>
-        <translation>&amp;Schweregrad:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="163"/>
-        <source>&amp;Search:</source>
-        <translation>S&amp;uchen:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="180"/>
-        <source>Event history</source>
-        <translation>Ereignisverlauf</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="204"/>
-        <source>Copy</source>
-        <translation>Kopieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="210"/>
-        <source>Events shown</source>
-        <translation>Angezeigte Ereignisse</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="211"/>
-        <source>&amp;Copy</source>
-        <translation>&amp;Kopieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="213"/>
-        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
-        <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="214"/>
-        <source>Copy selected events</source>
-        <translation>Ausgewählte Ereignisse kopieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="215"/>
-        <source>E&amp;xport…</source>
-        <translation>E&amp;xportieren…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="217"/>
-        <source>Save the events shown as a tab-separated text file</source>
-        <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="218"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="493"/>
-        <source>Export events</source>
-        <translation>Ereignisse exportieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="220"/>
-        <source>Result of the last export</source>
-        <translation>Ergebnis des letzten Exports</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="272"/>
-        <source>No device is connected.</source>
-        <translation>Kein Gerät verbunden.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
+        <source>Current state</source>
+        <translation>Aktueller Zustand</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
+        <source>Current errors and alarms</source>
+        <translation>Aktuelle Fehler und Alarme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Where</source>
+        <translation>Ort</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Severity</source>
+        <translation>Schweregrad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Temperature alarm</source>
+        <translation>Temperaturalarm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
+        <source>&amp;Reset feeder error</source>
+        <translation>Vorschubfehler &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
+        <source>Reset feeder error</source>
+        <translation>Vorschubfehler zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
+        <source>Result of the last action</source>
+        <translation>Ergebnis der letzten Aktion</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="139"/>
+        <source>No device is connected.</source>
+        <translation>Kein Gerät verbunden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="169"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="174"/>
+        <source>Not read yet</source>
+        <translation>Noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="171"/>
         <source>Error code %1: %2</source>
         <translation>Fehlercode %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="347"/>
-        <source>High temperature</source>
-        <translation>Übertemperatur</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="349"/>
-        <source>Low temperature</source>
-        <translation>Untertemperatur</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
-        <source>None</source>
-        <translation>Keiner</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="365"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
         <source>This device has no temperature alarm</source>
         <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="194"/>
         <source>Not reset: %1</source>
         <translation>Nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="197"/>
         <source>Resetting the feeder error…</source>
         <translation>Vorschubfehler wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="204"/>
         <source>Feeder error reset.</source>
         <translation>Vorschubfehler zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="385"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="205"/>
         <source>The feeder error was not reset: %1</source>
         <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="218"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="221"/>
         <source>No feeder is connected</source>
         <translation>Kein Lotdrahtvorschub verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="404"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="224"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
     </message>
+</context>
+<context>
+    <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
+        <location filename="../app/gui/pages/errorspage.h" line="18"/>
+        <source>Errors</source>
+        <translation>Fehler</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::EventHistoryPanel</name>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="45"/>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="72"/>
+        <source>Show events of kind</source>
+        <translation>Ereignisse dieser Art anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="73"/>
+        <source>All kinds</source>
+        <translation>Alle Arten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="74"/>
+        <source>Errors and alarms</source>
+        <translation>Fehler und Alarme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="76"/>
+        <source>Station errors</source>
+        <translation>Stationsfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="77"/>
+        <source>Port errors</source>
+        <translation>Portfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="78"/>
+        <source>Feeder errors</source>
+        <translation>Vorschubfehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="79"/>
+        <source>Alarms</source>
+        <translation>Alarme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="80"/>
+        <source>Status changes</source>
+        <translation>Statuswechsel</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="81"/>
+        <source>Writes</source>
+        <translation>Schreibzugriffe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="82"/>
+        <source>Communication</source>
+        <translation>Kommunikation</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="83"/>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <source>Show events of severity</source>
+        <translation>Ereignisse dieses Schweregrads anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <source>Any severity</source>
+        <translation>Jeder Schweregrad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <source>Warnings and errors</source>
+        <translation>Warnungen und Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <source>Errors only</source>
+        <translation>Nur Fehler</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <source>Show events containing</source>
+        <translation>Ereignisse mit diesem Text anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <source>Text in any column</source>
+        <translation>Text in beliebiger Spalte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Art:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <source>Se&amp;verity:</source>
+        <translation>&amp;Schweregrad:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <source>&amp;Search:</source>
+        <translation>S&amp;uchen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
+        <source>Event history</source>
+        <translation>Ereignisverlauf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="152"/>
+        <source>Copy</source>
+        <translation>Kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="158"/>
+        <source>Events shown</source>
+        <translation>Angezeigte Ereignisse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="161"/>
+        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
+        <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="162"/>
+        <source>Copy selected events</source>
+        <translation>Ausgewählte Ereignisse kopieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <source>E&amp;xport…</source>
+        <translation>E&amp;xportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="165"/>
+        <source>Save the events shown as a tab-separated text file</source>
+        <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="166"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
+        <source>Export events</source>
+        <translation>Ereignisse exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="168"/>
+        <source>Result of the last export</source>
+        <translation>Ergebnis des letzten Exports</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="206"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4195,24 +4351,19 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="491"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="266"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="494"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.h" line="44"/>
-        <source>Errors</source>
-        <translation>Fehler</translation>
     </message>
 </context>
 <context>
@@ -4378,183 +4529,152 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="144"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
         <source>Send a frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="167"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="170"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="64"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="171"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="65"/>
         <source>R (read)</source>
         <translation>R (lesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="172"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
         <source>W (write)</source>
         <translation>W (schreiben)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="174"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>Command</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="184"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
         <source>Data field</source>
         <translation>Datenfeld</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="188"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
         <source>&amp;Send frame</source>
         <translation>Telegramm &amp;senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="189"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
         <source>Send frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="191"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
         <source>Frame to be sent</source>
         <translation>Zu sendendes Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="195"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="89"/>
         <source>Catalog check</source>
         <translation>Katalogprüfung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="198"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="92"/>
         <source>Raw bytes in hex</source>
         <translation>Rohbytes hexadezimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="202"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="96"/>
         <source>Send ra&amp;w hex</source>
         <translation>Roh-He&amp;x senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="203"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
         <source>Send raw hex</source>
         <translation>Roh-Hex senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="205"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
         <source>Raw bytes check</source>
         <translation>Prüfung der Rohbytes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="100"/>
         <source>Nothing sent yet.</source>
         <translation>Noch nichts gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="207"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Outcome of the last send</source>
         <translation>Ergebnis des letzten Sendens</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="216"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="110"/>
         <source>&amp;Device</source>
         <translation>Ger&amp;ät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="218"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
         <source>&amp;Header</source>
         <translation>&amp;Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="220"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
         <source>C&amp;ommand</source>
         <translation>Befeh&amp;l</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
         <source>D&amp;ata</source>
         <translation>Date&amp;n</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="225"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>Frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="228"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="122"/>
         <source>&amp;Raw hex</source>
         <translation>&amp;Roh-Hex</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="232"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="126"/>
         <source>Last send</source>
         <translation>Letztes Senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="265"/>
-        <source>Monitor-only mode is on: raw bytes are not sent, since they may be a write. Reads can still be sent with Send frame.</source>
-        <translation>Der Modus „Nur beobachten“ ist aktiv: Rohbytes werden nicht gesendet, da sie ein Schreibbefehl sein könnten. Lesebefehle können weiterhin mit „Telegramm senden“ gesendet werden.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="267"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="235"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Diese Bytes genau wie eingegeben senden; die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="292"/>
-        <source>No device is known on this line: connect first, or send raw hex.</source>
-        <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="355"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
         <source>(nothing to send)</source>
         <translation>(nichts zu senden)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>none for reads</source>
         <translation>keins bei Lesebefehlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>e.g. 00350</source>
         <translation>z. B. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="363"/>
-        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
-        <translation>Der Modus „Nur beobachten“ ist aktiv: W-Telegramme werden nicht gesendet, Lesebefehle schon.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="375"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Dieses Telegramm einmal wie angezeigt senden (ohne Wiederholungen; Katalogwarnungen halten es nicht auf). Die Antwort erscheint in der Tabelle.</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="392"/>
-        <source>%n byte(s), a valid frame: %1</source>
-        <translation>
-            <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
-            <numerusform>%n Bytes, ein gültiges Telegramm: %1</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="395"/>
-        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
-        <translation>
-            <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
-            <numerusform>%n Bytes, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="413"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="257"/>
         <source>Not sent: %1</source>
         <translation>Nicht gesendet: %1</translation>
     </message>
@@ -4675,62 +4795,62 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="77"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="78"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="84"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
         <source>family %1</source>
         <translation>Familie %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="87"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="88"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="89"/>
         <source>transformer %1</source>
         <translation>Transformator %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="90"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="92"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="95"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="96"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Stationsfehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
         <source>feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="108"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="109"/>
         <source>fed %1</source>
         <translation>vorgeschoben %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="110"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="111"/>
         <source>speed %1</source>
         <translation>Geschwindigkeit %1</translation>
     </message>
@@ -4801,102 +4921,102 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="23"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="24"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="34"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="35"/>
         <source>Tip temperature, port %1</source>
         <translation>Spitzentemperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="41"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="42"/>
         <source>Power, port %1</source>
         <translation>Leistung, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Work</source>
         <translation>Arbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
         <source>Cool</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="52"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="53"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="54"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
         <source>New selected temperature, port %1</source>
         <translation>Neue eingestellte Temperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="59"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="97"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="104"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="105"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="132"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="134"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="137"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="140"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="139"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="143"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="142"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="145"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="144"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
     </message>
@@ -5026,16 +5146,17 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="66"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="104"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="109"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="118"/>
         <source>&lt;b&gt;Refused:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Abgelehnt:&lt;/b&gt; %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="111"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="123"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Profil von %1 (%2, Software %3), erstellt: %4. %n Einstellung weicht vom Gerät ab.</numerusform>
@@ -5043,7 +5164,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="117"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="129"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Probelauf: %n Telegramm würde gesendet; nichts wurde geschrieben.</numerusform>
@@ -5051,96 +5172,106 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="121"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="133"/>
         <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches.</source>
         <translation>&lt;b&gt;Angewendet.&lt;/b&gt; Jeder geschriebene Wert wurde zurückgelesen und stimmt überein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="122"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="134"/>
         <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; See the report below.</source>
         <translation>&lt;b&gt;Nicht alles wurde angewendet.&lt;/b&gt; Siehe Bericht unten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="102"/>
+        <source>The profile would break the device&apos;s limits; see above</source>
+        <translation>Das Profil würde die Grenzen des Geräts verletzen; siehe oben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="120"/>
+        <source>&lt;b&gt;This profile cannot be applied to this device:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Dieses Profil lässt sich auf dieses Gerät nicht anwenden:&lt;/b&gt; %1</translation>
     </message>
 </context>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Zurücknehmen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
         <source>Save to station &amp;memory</source>
         <translation>Im Stations&amp;speicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>Die eingestellte Temperatur ist flüchtig: W-NVS speichert sie, damit sie einen Neustart übersteht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Station actions</source>
         <translation>Stationsaktionen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="42"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="43"/>
         <source>Profiles</source>
         <translation>Profile</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="45"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
         <source>Save device settings to a profile…</source>
         <translation>Geräteeinstellungen in einem Profil speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="48"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Profil öffnen (vergleichen, Probelauf, anwenden)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="51"/>
         <source>Port:</source>
         <translation>Port:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="131"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Verbinden Sie sich und wählen Sie ein Gerät, um seine Einstellungen zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="134"/>
         <source>Port %1 (%2)</source>
         <translation>Port %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="137"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="138"/>
         <source>Station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
         <source>Alarms, port %1</source>
         <translation>Alarme, Port %1</translation>
     </message>
@@ -5150,42 +5281,42 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Werkzeug %1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
         <source> (connected)</source>
         <translation> (angeschlossen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="154"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dosierung (Drahtvorschub der ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="162"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
         <source>&amp;Apply (%1)</source>
         <translation>&amp;Anwenden (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="198"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="196"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="221"/>
         <source>Save to station memory</source>
         <translation>Im Stationsspeicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="234"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Neue Adresse (1-99) oder 0 für Telegramme ohne Adressen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="241"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="239"/>
         <source>%1
 
 %2
@@ -5198,26 +5329,26 @@ Do you want to continue?</source>
 Möchten Sie fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="254"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="260"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="266"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="255"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Einige Einstellungen wurden noch nicht gelesen (%1). Aktualisieren Sie und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="263"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="261"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="273"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="274"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="272"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="279"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>
@@ -5225,6 +5356,25 @@ Möchten Sie fortfahren?</translation>
         <location filename="../app/gui/pages/settingspage.h" line="25"/>
         <source>Settings</source>
         <translation>Einstellungen</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::journal::Journal</name>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="85"/>
+        <location filename="../lib/journal/journal.cpp" line="99"/>
+        <source>The journal is closed.</source>
+        <translation>Das Journal ist geschlossen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="89"/>
+        <source>The journal cannot keep up: %1 records wait to be written.</source>
+        <translation>Das Journal kommt nicht nach: %1 Einträge warten darauf, geschrieben zu werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="137"/>
+        <source>Work order: %1, board: %2, operator: %3</source>
+        <translation>Auftrag: %1, Platine: %2, Bediener: %3</translation>
     </message>
 </context>
 <context>
@@ -5416,6 +5566,62 @@ Möchten Sie fortfahren?</translation>
         <location filename="../lib/link/tcptransport.cpp" line="29"/>
         <source>cannot connect to %1: %2</source>
         <translation>Verbindung zu %1 nicht möglich: %2</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::ConsoleSender</name>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="15"/>
+        <source>%1: answered %2 after %L3 ms</source>
+        <translation>%1: Antwort %2 nach %L3 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="19"/>
+        <source>%1: refused, %2</source>
+        <translation>%1: abgelehnt, %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="21"/>
+        <source>%1: no answer (timeout)</source>
+        <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="23"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="52"/>
+        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: W-Telegramme werden nicht gesendet, Lesebefehle schon.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="58"/>
+        <source>Monitor-only mode is on: bytes that are not one valid R frame may be a write, so they are not sent.</source>
+        <translation>Der Modus „Nur beobachten“ ist aktiv: Bytes, die kein gültiges R-Telegramm sind, könnten ein Schreibbefehl sein und werden daher nicht gesendet.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n Rohbyte</numerusform>
+            <numerusform>%n Rohbytes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="75"/>
+        <source>%1: not sent, not connected</source>
+        <translation>%1: nicht gesendet, nicht verbunden</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="79"/>
+        <source>%1: not sent, monitor-only mode is on</source>
+        <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="91"/>
+        <source>%1: sent, waiting for the answer…</source>
+        <translation>%1: gesendet, warte auf Antwort…</translation>
     </message>
 </context>
 </TS>

@@ -2,13 +2,43 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>CliCommands</name>
+    <message numerus="yes">
+        <location filename="../app/cli/clicommands.cpp" line="50"/>
+        <source>%n raw byte(s), not a frame (%1)</source>
+        <translation>
+            <numerusform>%n raw byte, not a frame (%1)</numerusform>
+            <numerusform>%n raw bytes, not a frame (%1)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>CliRecord</name>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="194"/>
+        <location filename="../app/cli/clirecord.cpp" line="193"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>recorded %n row to %1</numerusform>
             <numerusform>recorded %n rows to %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>FrameComposer</name>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="209"/>
+        <source>%n byte(s), a valid frame: %1</source>
+        <translation>
+            <numerusform>%n byte, a valid frame: %1</numerusform>
+            <numerusform>%n bytes, a valid frame: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="211"/>
+        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
+        <translation>
+            <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
+            <numerusform>%n bytes, not a valid frame (%1): sent as typed</numerusform>
         </translation>
     </message>
 </context>
@@ -45,7 +75,7 @@
 <context>
     <name>ProfileApplier</name>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -56,7 +86,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="234"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -89,18 +119,18 @@
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
-        <source>%n raw byte(s)</source>
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <source>paused: %n held</source>
         <translation>
-            <numerusform>%n raw byte</numerusform>
-            <numerusform>%n raw bytes</numerusform>
+            <numerusform>paused: %n held</numerusform>
+            <numerusform>paused: %n held</numerusform>
         </translation>
     </message>
 </context>
 <context>
-    <name>tipscope::gui::ErrorsPage</name>
+    <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>
@@ -109,28 +139,9 @@
     </message>
 </context>
 <context>
-    <name>tipscope::gui::FrameBuilder</name>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="392"/>
-        <source>%n byte(s), a valid frame: %1</source>
-        <translation>
-            <numerusform>%n byte, a valid frame: %1</numerusform>
-            <numerusform>%n bytes, a valid frame: %1</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="395"/>
-        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
-        <translation>
-            <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
-            <numerusform>%n bytes, not a valid frame (%1): sent as typed</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>tipscope::gui::ProfileDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="111"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="123"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Profile from %1 (%2, software %3), created %4: %n setting differs from the device.</numerusform>
@@ -138,7 +149,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="117"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="129"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Dry run: %n frame would be sent; nothing was written.</numerusform>
@@ -154,6 +165,17 @@
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
             <numerusform>%1 after %n attempts</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::ConsoleSender</name>
+    <message numerus="yes">
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n raw byte</numerusform>
+            <numerusform>%n raw bytes</numerusform>
         </translation>
     </message>
 </context>

@@ -40,22 +40,22 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="196"/>
+        <location filename="../lib/protocol/catalog.cpp" line="206"/>
         <source>Unknown NAK code %1</source>
         <translation>Código NAK desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="201"/>
+        <location filename="../lib/protocol/catalog.cpp" line="211"/>
         <source>Unknown station error %1</source>
         <translation>Error de estación desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="210"/>
+        <location filename="../lib/protocol/catalog.cpp" line="220"/>
         <source>Unknown port error %1</source>
         <translation>Error de puerto desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <location filename="../lib/protocol/catalog.cpp" line="225"/>
         <source>Feeder error %1 (not listed in the SFR guide; reset it with W-ECV and see the SFR manual)</source>
         <translation>Error del alimentador %1 (no figura en la guía del SFR; bórrelo con W-ECV y consulte el manual del SFR)</translation>
     </message>
@@ -225,12 +225,12 @@
         <translation>Horas con una herramienta conectada al puerto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
         <source>No-tool hours</source>
         <translation>Horas sin herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
         <source>Hours the port was powered with no tool</source>
         <translation>Horas que el puerto estuvo con tensión sin herramienta</translation>
     </message>
@@ -255,12 +255,12 @@
         <translation>Horas en modo hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
         <source>Work hours</source>
         <translation>Horas de trabajo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
         <source>Hours working</source>
         <translation>Horas trabajando</translation>
     </message>
@@ -675,22 +675,22 @@
         <translation>Detiene la alimentación (modo continuo)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
         <source>Feeding length</source>
         <translation>Longitud de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
         <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
         <translation>Longitud alimentada en cada inicio en modo discontinuo, en décimas de milímetro</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
         <source>Feeding speed</source>
         <translation>Velocidad de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
         <source>Feeding speed, in tenths of a millimetre per second</source>
         <translation>Velocidad de alimentación, en décimas de milímetro por segundo</translation>
     </message>
@@ -845,229 +845,249 @@
         <translation>El contador parcial de horas conectado vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
         <source>Feeding hours (total)</source>
         <translation>Horas de alimentación (total)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
         <source>Hours feeding, total counter</source>
         <translation>Horas alimentando, contador total</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
         <source>Feeding hours (partial)</source>
         <translation>Horas de alimentación (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
         <source>Hours feeding since the partial counter was reset</source>
         <translation>Horas alimentando desde la última puesta a cero del contador parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
         <source>Reset feeding hours (partial)</source>
         <translation>Poner a cero horas de alimentación (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
         <source>Resets the partial feeding-hours counter</source>
         <translation>Pone a cero el contador parcial de horas de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
         <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>El contador parcial de horas de alimentación vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
         <source>Fed length (total)</source>
         <translation>Longitud alimentada (total)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
         <source>Metres of wire fed, total counter</source>
         <translation>Metros de hilo alimentados, contador total</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
         <source>Fed length (partial)</source>
         <translation>Longitud alimentada (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
         <source>Metres of wire fed since the partial counter was reset</source>
         <translation>Metros de hilo alimentados desde la última puesta a cero del contador parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
         <source>Reset fed length (partial)</source>
         <translation>Poner a cero longitud alimentada (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
         <source>Resets the partial fed-length counter</source>
         <translation>Pone a cero el contador parcial de longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
         <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
         <translation>El contador parcial de longitud alimentada vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
         <source>No tool</source>
         <translation>Sin herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
         <source>BCC error: the frame failed the sum check</source>
         <translation>Error de BCC: la trama no superó la comprobación de suma</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
         <source>Format error: the frame has the wrong size or layout</source>
         <translation>Error de formato: la trama tiene un tamaño o una estructura incorrectos</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
         <source>Out of range: the value is outside the allowed limits or off-step</source>
         <translation>Fuera de rango: el valor está fuera de los límites permitidos o no respeta el paso</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
         <source>Control error: the command is not accepted by this device</source>
         <translation>Error de control: este equipo no acepta el comando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
         <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
         <translation>El modo robot está desactivado: active &quot;Robot mode&quot; en el menú de la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
         <source>Device model error: the device model is unknown</source>
         <translation>Error de modelo de equipo: el modelo del equipo es desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
         <source>Undefined error</source>
         <translation>Error no definido</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
         <source>Stopped by transformer overload</source>
         <translation>Detenido por sobrecarga del transformador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
         <source>Temperature sensor error</source>
         <translation>Error del sensor de temperatura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
         <source>Memory error</source>
         <translation>Error de memoria</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
         <source>Mains frequency error</source>
         <translation>Error de frecuencia de red</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
         <source>Device model error</source>
         <translation>Error de modelo de equipo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
         <source>MCU tools not connected</source>
         <translation>Herramientas MCU no conectadas</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
         <source>Warning: transformer overload</source>
         <translation>Advertencia: sobrecarga del transformador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
         <source>Short circuit</source>
         <translation>Cortocircuito</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
         <source>Short circuit, not recoverable: restart the station</source>
         <translation>Cortocircuito no recuperable: reinicie la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
         <source>Open circuit</source>
         <translation>Circuito abierto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
         <source>Tool not accepted</source>
         <translation>Herramienta no aceptada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
         <source>Detecting tool</source>
         <translation>Detectando herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
         <source>Stopped at maximum power</source>
         <translation>Detenido a potencia máxima</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
         <source>Stopped by transistor (MOS) overload</source>
         <translation>Detenido por sobrecarga del transistor (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
         <source>Warning: transistor (MOS) overload</source>
         <translation>Advertencia: sobrecarga del transistor (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
         <source>No error</source>
         <translation>Sin error</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
         <source>Sleep</source>
         <translation>Reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>Hibernation</source>
         <translation>Hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>Suction on</source>
         <translation>Succión activada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor adelante (dispensado)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
         <source>Motor backward</source>
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="226"/>
         <source>unknown (%1)</source>
         <translation>desconocido (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="233"/>
         <source>none</source>
         <translation>ninguno</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
+        <source>Reset partial plugged hours</source>
+        <translation>Poner a cero las horas conectado parciales</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
+        <source>Feeding hours</source>
+        <translation>Horas de alimentación</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
+        <source>Reset partial feeding hours</source>
+        <translation>Poner a cero las horas de alimentación parciales</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
+        <source>Reset partial fed length</source>
+        <translation>Poner a cero la longitud alimentada parcial</translation>
     </message>
 </context>
 <context>
@@ -1081,124 +1101,124 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="77"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="96"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="119"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>la línea supera los %1 bytes (¿es un CSV de gráficos?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="85"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="124"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>el archivo contiene datos binarios, no texto CSV</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="128"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>el texto no está en UTF-8 (guarde el archivo como &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="131"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155"/>
         <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>más de %1 líneas de comentario («#»); una grabación tiene unas pocas, y una por canal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="166"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>la fila de cabecera debe empezar por &quot;time&quot; (¿es un CSV de gráficos escrito por TipScope?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="169"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 columnas; la reproducción lee como máximo %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="182"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>la columna %1 &quot;%2&quot; no es &quot;port&lt;n&gt; &lt;serie&gt; [unidad]&quot; ni &quot;feeder &lt;serie&gt; [unidad]&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="195"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>columna %1 &quot;%2&quot;: la unidad debería ser &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="224"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="224"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="204"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>la columna %1 &quot;%2&quot; aparece dos veces</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="210"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234"/>
         <source>the header names no series columns</source>
         <translation>la cabecera no nombra ninguna columna de serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="253"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>columna %1: &quot;%2&quot; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="258"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 tiene valores en algunas de sus columnas, pero no en todas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="265"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 celdas, pero la cabecera tiene %2 columnas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="270"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; no es una hora ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="273"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>la hora %1 es anterior a la de la fila precedente (las filas deben estar en orden cronológico)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 tiene más de %2 muestras, más de las que admite la reproducción; divida el archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="305"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="330"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>el evento &quot;%1&quot; no tiene la forma &quot;&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="140"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164"/>
         <source>a quoted cell is not closed</source>
         <translation>una celda entre comillas no está cerrada</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="322"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="347"/>
         <source>the file has a header but no rows</source>
         <translation>el archivo tiene cabecera pero ninguna fila</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="320"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="345"/>
         <source>the file is empty or holds only comments</source>
         <translation>el archivo está vacío o solo contiene comentarios</translation>
     </message>
@@ -1297,96 +1317,110 @@
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="37"/>
+        <location filename="../app/cli/clicommands.cpp" line="38"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="49"/>
+        <location filename="../app/cli/clicommands.cpp" line="61"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="76"/>
+        <location filename="../app/cli/clicommands.cpp" line="88"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="87"/>
+        <location filename="../app/cli/clicommands.cpp" line="99"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="109"/>
+        <location filename="../app/cli/clicommands.cpp" line="122"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="114"/>
+        <location filename="../app/cli/clicommands.cpp" line="127"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="122"/>
+        <location filename="../app/cli/clicommands.cpp" line="135"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127"/>
+        <location filename="../app/cli/clicommands.cpp" line="140"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="136"/>
+        <location filename="../app/cli/clicommands.cpp" line="178"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="144"/>
+        <location filename="../app/cli/clicommands.cpp" line="187"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="156"/>
-        <location filename="../app/cli/clicommands.cpp" line="158"/>
+        <location filename="../app/cli/clicommands.cpp" line="200"/>
+        <location filename="../app/cli/clicommands.cpp" line="202"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="161"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="170"/>
-        <location filename="../app/cli/clicommands.cpp" line="191"/>
+        <location filename="../app/cli/clicommands.cpp" line="168"/>
+        <location filename="../app/cli/clicommands.cpp" line="214"/>
+        <location filename="../app/cli/clicommands.cpp" line="238"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="183"/>
+        <location filename="../app/cli/clicommands.cpp" line="230"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="256"/>
+        <location filename="../app/cli/clicommands.cpp" line="303"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="279"/>
+        <location filename="../app/cli/clicommands.cpp" line="326"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="282"/>
+        <location filename="../app/cli/clicommands.cpp" line="329"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="283"/>
+        <location filename="../app/cli/clicommands.cpp" line="330"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/cli/clicommands.cpp" line="50"/>
+        <source>%n raw byte(s), not a frame (%1)</source>
+        <translation>
+            <numerusform>%n byte en bruto, no es una trama (%1)</numerusform>
+            <numerusform>%n bytes en bruto, no es una trama (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
+        <translation>tipscope-cli: %1 no se envió: no se pudo leer su límite %2: %3</translation>
     </message>
 </context>
 <context>
@@ -1400,27 +1434,27 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="65"/>
+        <location filename="../app/cli/climonitor.cpp" line="66"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="72"/>
+        <location filename="../app/cli/climonitor.cpp" line="73"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="79"/>
+        <location filename="../app/cli/climonitor.cpp" line="80"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="88"/>
+        <location filename="../app/cli/climonitor.cpp" line="89"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="112"/>
+        <location filename="../app/cli/climonitor.cpp" line="113"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -1428,7 +1462,7 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="45"/>
+        <location filename="../app/cli/clioptions.cpp" line="47"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -1500,82 +1534,82 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="96"/>
+        <location filename="../app/cli/clioptions.cpp" line="98"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>comando desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="129"/>
+        <location filename="../app/cli/clioptions.cpp" line="131"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>indique solo una de --port, --tcp y --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="135"/>
+        <location filename="../app/cli/clioptions.cpp" line="137"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
+        <location filename="../app/cli/clioptions.cpp" line="144"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="147"/>
+        <location filename="../app/cli/clioptions.cpp" line="149"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud requiere una velocidad como 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
+        <location filename="../app/cli/clioptions.cpp" line="156"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity admite none, even u odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="158"/>
+        <location filename="../app/cli/clioptions.cpp" line="160"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits admite 1 o 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="166"/>
+        <location filename="../app/cli/clioptions.cpp" line="168"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="174"/>
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout requiere milisegundos de 1 a 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries requiere un número de 0 a 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="181"/>
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
         <source>--%1 needs a value</source>
         <translation>--%1 necesita un valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="185"/>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="189"/>
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="190"/>
+        <location filename="../app/cli/clioptions.cpp" line="193"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="196"/>
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="198"/>
+        <location filename="../app/cli/clioptions.cpp" line="201"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -1583,71 +1617,76 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliProfile</name>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="49"/>
+        <location filename="../app/cli/cliprofile.cpp" line="43"/>
         <source>tipscope-cli: could not read %1; no profile written</source>
         <translation>tipscope-cli: no se pudo leer %1; no se escribió ningún perfil</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="59"/>
+        <location filename="../app/cli/cliprofile.cpp" line="53"/>
         <source>saved %1 settings of %2 to %3</source>
         <translation>se guardaron %1 ajustes de %2 en %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="73"/>
+        <location filename="../app/cli/cliprofile.cpp" line="67"/>
         <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
         <translation>tipscope-cli: profile requiere save ARCHIVO, diff ARCHIVO o apply ARCHIVO</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <source>tipscope-cli: applying this profile would be refused: %1</source>
+        <translation>tipscope-cli: aplicar este perfil se rechazaría: %1</translation>
     </message>
 </context>
 <context>
     <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="78"/>
+        <location filename="../app/cli/clirecord.cpp" line="77"/>
         <source>tipscope-cli: interrupted before the recording started</source>
         <translation>tipscope-cli: interrumpido antes de que empezara la grabación</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="83"/>
+        <location filename="../app/cli/clirecord.cpp" line="82"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="118"/>
+        <location filename="../app/cli/clirecord.cpp" line="117"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record espera un ARCHIVO, p. ej. record linea3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="126"/>
+        <location filename="../app/cli/clirecord.cpp" line="125"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration espera segundos (0: hasta que se interrumpa)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="133"/>
-        <location filename="../app/cli/clirecord.cpp" line="161"/>
+        <location filename="../app/cli/clirecord.cpp" line="132"/>
+        <location filename="../app/cli/clirecord.cpp" line="160"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: no se puede grabar en %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="135"/>
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
         <source>no such folder</source>
         <translation>la carpeta no existe</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="135"/>
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
         <source>not writable</source>
         <translation>sin permiso de escritura</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="182"/>
+        <location filename="../app/cli/clirecord.cpp" line="181"/>
         <source># recording %1 of %2 to %3</source>
         <translation># grabando %1 de %2 en %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="190"/>
+        <location filename="../app/cli/clirecord.cpp" line="189"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: falló la escritura de %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="194"/>
+        <location filename="../app/cli/clirecord.cpp" line="193"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n fila grabada en %1</numerusform>
@@ -1658,32 +1697,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="57"/>
+        <location filename="../app/cli/clisession.cpp" line="69"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="93"/>
+        <location filename="../app/cli/clisession.cpp" line="105"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="94"/>
+        <location filename="../app/cli/clisession.cpp" line="106"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="104"/>
+        <location filename="../app/cli/clisession.cpp" line="116"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="135"/>
+        <location filename="../app/cli/clisession.cpp" line="147"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="138"/>
+        <location filename="../app/cli/clisession.cpp" line="152"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -1691,102 +1730,117 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="65"/>
+        <location filename="../lib/model/consolemodel.cpp" line="102"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>enviado tal cual (no es una trama válida)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="81"/>
+        <location filename="../lib/model/consolemodel.cpp" line="118"/>
         <source>stray: answers no pending request</source>
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="205"/>
+        <location filename="../lib/model/consolemodel.cpp" line="250"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="207"/>
+        <location filename="../lib/model/consolemodel.cpp" line="252"/>
+        <source>RX chunk</source>
+        <translation>Bloque RX</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="254"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="209"/>
-        <source>frame</source>
-        <translation>trama</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/consolemodel.cpp" line="211"/>
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="213"/>
+        <location filename="../lib/model/consolemodel.cpp" line="258"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="266"/>
+        <source>Read</source>
+        <translation>Lectura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="268"/>
+        <source>Write</source>
+        <translation>Escritura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="270"/>
+        <source>Answer</source>
+        <translation>Respuesta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256"/>
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="272"/>
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="273"/>
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="274"/>
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="275"/>
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="276"/>
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="277"/>
+        <location filename="../lib/model/consolemodel.cpp" line="336"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -1794,24 +1848,29 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="61"/>
+        <location filename="../lib/model/devicemodel.cpp" line="69"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="62"/>
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="66"/>
+        <location filename="../lib/model/devicemodel.cpp" line="74"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <location filename="../lib/model/devicemodel.cpp" line="147"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="100"/>
+        <source>—</source>
+        <translation>—</translation>
     </message>
 </context>
 <context>
@@ -1825,6 +1884,14 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <location filename="../lib/model/displayunits.cpp" line="89"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 tiene más decimales de los que admite %2</translation>
+    </message>
+</context>
+<context>
+    <name>Elide</name>
+    <message>
+        <location filename="../lib/protocol/elide.cpp" line="39"/>
+        <source>%1… (%2 characters)</source>
+        <translation>%1… (%2 caracteres)</translation>
     </message>
 </context>
 <context>
@@ -1873,27 +1940,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="93"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="86"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="95"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="88"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="97"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="90"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="99"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="92"/>
         <source>Source</source>
         <translation>Origen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorymodel.cpp" line="101"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="94"/>
         <source>What happened</source>
         <translation>Qué ocurrió</translation>
     </message>
@@ -1901,92 +1968,118 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="57"/>
+        <location filename="../lib/model/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="63"/>
+        <location filename="../lib/model/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 no tiene el comando %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="80"/>
+        <location filename="../lib/model/feedermodel.cpp" line="117"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
 </context>
 <context>
-    <name>FrameBuilder</name>
+    <name>FrameComposer</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="43"/>
+        <location filename="../lib/model/framecomposer.cpp" line="40"/>
         <source>%1 carries the data field %2.</source>
         <translation>%1 lleva el campo de datos %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="46"/>
+        <location filename="../lib/model/framecomposer.cpp" line="43"/>
         <source>A write needs a data field: %1.</source>
         <translation>Una escritura necesita un campo de datos: %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="57"/>
+        <location filename="../lib/model/framecomposer.cpp" line="54"/>
         <source>On the wire this value is written %1.</source>
         <translation>En la línea este valor se escribe %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="72"/>
+        <location filename="../lib/model/framecomposer.cpp" line="69"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Familia de equipo desconocida: el catálogo no puede comprobar esta trama.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
+        <location filename="../lib/model/framecomposer.cpp" line="77"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 no es un comando de escritura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="79"/>
+        <location filename="../lib/model/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 no es un comando de lectura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
+        <location filename="../lib/model/framecomposer.cpp" line="81"/>
         <source>Did you mean %1?</source>
         <translation>¿Quería decir %1?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
+        <location filename="../lib/model/framecomposer.cpp" line="82"/>
         <source>It is sent as typed.</source>
         <translation>Se envía tal cual.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
+        <location filename="../lib/model/framecomposer.cpp" line="87"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Las lecturas no llevan campo de datos; el equipo puede rechazar esta trama.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
+        <location filename="../lib/model/framecomposer.cpp" line="93"/>
         <source>Dangerous: %1</source>
         <translation>Peligroso: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
+        <location filename="../lib/model/framecomposer.cpp" line="97"/>
         <source>Catalog check: %1</source>
         <translation>Comprobación del catálogo: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
+        <location filename="../lib/model/framecomposer.cpp" line="111"/>
+        <source>%1 (no address)</source>
+        <translation>%1 (sin dirección)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/framecomposer.cpp" line="153"/>
+        <source>No device is known on this line: connect first, or send raw hex.</source>
+        <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/framecomposer.cpp" line="171"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="125"/>
+        <location filename="../lib/model/framecomposer.cpp" line="175"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="130"/>
+        <location filename="../lib/model/framecomposer.cpp" line="180"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="209"/>
+        <source>%n byte(s), a valid frame: %1</source>
+        <translation>
+            <numerusform>%n byte, una trama válida: %1</numerusform>
+            <numerusform>%n bytes, una trama válida: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/framecomposer.cpp" line="211"/>
+        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
+        <translation>
+            <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
+            <numerusform>%n bytes, no es una trama válida (%1): se envía tal cual</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2096,6 +2189,74 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <location filename="../lib/protocol/hexbytes.cpp" line="61"/>
         <source>no bytes given</source>
         <translation>no se indicó ningún byte</translation>
+    </message>
+</context>
+<context>
+    <name>Journal</name>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="28"/>
+        <source>No journal is open.</source>
+        <translation>No hay ningún diario abierto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalreader.cpp" line="86"/>
+        <source>There is no journal at %1.</source>
+        <translation>No hay ningún diario en %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="81"/>
+        <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
+        <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="96"/>
+        <source>The file %1 is not a TipScope journal. It was left untouched.</source>
+        <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalschema.cpp" line="162"/>
+        <source>Cannot create the folder %1 for the journal.</source>
+        <translation>No se puede crear la carpeta %1 para el diario.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="221"/>
+        <source>Records lost: %1. Reason: %2</source>
+        <translation>Registros perdidos: %1. Motivo: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalwriter.cpp" line="305"/>
+        <source>The journal was closed before it could write them: %1</source>
+        <translation>El diario se cerró antes de poder escribirlos: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="41"/>
+        <source>The journal %1 cannot grow: the disk is full or the journal reached its size limit.</source>
+        <translation>El diario %1 no puede crecer: el disco está lleno o el diario alcanzó su tamaño máximo.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="51"/>
+        <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
+        <translation>El diario %1 está dañado o no es un diario; no se ha modificado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="55"/>
+        <source>The journal %1 is locked by another program.</source>
+        <translation>Otro programa tiene bloqueado el diario %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
+        <source>The disk holding the journal %1 reported an error.</source>
+        <translation>El disco del diario %1 ha informado de un error.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
+        <source>The journal %1 reported an error: %2</source>
+        <translation>El diario %1 ha informado de un error: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/sqlerror.cpp" line="64"/>
+        <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
+        <translation>No se puede escribir el diario %1: su carpeta o el archivo es de solo lectura o no es accesible.</translation>
     </message>
 </context>
 <context>
@@ -2336,86 +2497,101 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>PortModel</name>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="30"/>
+        <location filename="../lib/model/portmodel.cpp" line="29"/>
         <source>Working</source>
         <translation>Trabajando</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="32"/>
+        <location filename="../lib/model/portmodel.cpp" line="31"/>
         <source>Stand</source>
         <translation>En soporte</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="34"/>
+        <location filename="../lib/model/portmodel.cpp" line="33"/>
         <source>Sleep</source>
         <translation>Reposo</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="36"/>
+        <location filename="../lib/model/portmodel.cpp" line="35"/>
         <source>Hibernation</source>
         <translation>Hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="44"/>
+        <location filename="../lib/model/portmodel.cpp" line="43"/>
         <source>Cooling</source>
         <translation>Enfriando</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="46"/>
+        <location filename="../lib/model/portmodel.cpp" line="45"/>
         <source>Suction</source>
         <translation>Succión</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="48"/>
+        <location filename="../lib/model/portmodel.cpp" line="47"/>
         <source>Motor forward</source>
         <translation>Motor adelante</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="50"/>
+        <location filename="../lib/model/portmodel.cpp" line="49"/>
         <source>Motor backward</source>
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="100"/>
-        <location filename="../lib/model/portmodel.cpp" line="114"/>
+        <location filename="../lib/model/portmodel.cpp" line="109"/>
+        <location filename="../lib/model/portmodel.cpp" line="126"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="103"/>
+        <location filename="../lib/model/portmodel.cpp" line="115"/>
         <source>tool %1</source>
         <translation>herramienta %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="171"/>
-        <source>this port has no status command</source>
-        <translation>este puerto no tiene comando de estado</translation>
+        <location filename="../lib/model/portmodel.cpp" line="60"/>
+        <source>High temperature</source>
+        <translation>Temperatura alta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="62"/>
+        <source>Low temperature</source>
+        <translation>Temperatura baja</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="63"/>
+        <source>None</source>
+        <translation>Ninguna</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="187"/>
+        <source>this port has no %1 command</source>
+        <translation>este puerto no tiene el comando %1</translation>
     </message>
 </context>
 <context>
     <name>ProblemLevel</name>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="42"/>
+        <location filename="../lib/model/problemlevel.cpp" line="44"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="44"/>
+        <location filename="../lib/model/problemlevel.cpp" line="46"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="46"/>
+        <location filename="../lib/model/problemlevel.cpp" line="48"/>
         <source>Info</source>
         <translation>Información</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="48"/>
+        <location filename="../lib/model/problemlevel.cpp" line="50"/>
         <source>Warning</source>
         <translation>Advertencia</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/problemlevel.cpp" line="50"/>
+        <location filename="../lib/model/problemlevel.cpp" line="52"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
@@ -2423,119 +2599,138 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="69"/>
-        <location filename="../lib/model/profile.cpp" line="123"/>
+        <location filename="../lib/model/profile.cpp" line="72"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: no es un ajuste de %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="75"/>
+        <location filename="../lib/model/profile.cpp" line="77"/>
         <source>%1: &apos;%2&apos; is not a valid data field</source>
         <translation>%1: &apos;%2&apos; no es un campo de datos válido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="79"/>
-        <location filename="../lib/model/profile.cpp" line="160"/>
+        <location filename="../lib/model/profile.cpp" line="82"/>
+        <location filename="../lib/model/profile.cpp" line="170"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="94"/>
+        <location filename="../lib/model/profile.cpp" line="100"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="97"/>
+        <location filename="../lib/model/profile.cpp" line="111"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="100"/>
+        <location filename="../lib/model/profile.cpp" line="114"/>
         <source>profile schema %1 is not supported (this version reads schema %2)</source>
         <translation>el esquema de perfil %1 no es compatible (esta versión lee el esquema %2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="106"/>
+        <location filename="../lib/model/profile.cpp" line="120"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>familia de equipo desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="114"/>
+        <location filename="../lib/model/profile.cpp" line="128"/>
         <source>the profile has no values</source>
         <translation>el perfil no tiene valores</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="118"/>
+        <location filename="../lib/model/profile.cpp" line="132"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="128"/>
+        <location filename="../lib/model/profile.cpp" line="138"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>el perfil se rechaza, no se escribirá nada:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="146"/>
         <source>cannot write %1: %2</source>
         <translation>no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="145"/>
+        <location filename="../lib/model/profile.cpp" line="155"/>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="151"/>
+        <location filename="../lib/model/profile.cpp" line="161"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="175"/>
+        <location filename="../lib/model/profile.cpp" line="185"/>
         <source>unknown</source>
         <translation>desconocido</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="95"/>
+        <source>not a valid JSON file: %1</source>
+        <translation>no es un archivo JSON válido: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="105"/>
+        <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
+        <translation>indicado más de una vez, así que no está claro qué valor se quiere: %1; no se escribirá nada</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilejson.cpp" line="101"/>
+        <source>a NUL byte at byte %1</source>
+        <translation>un byte NUL en el byte %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilejson.cpp" line="102"/>
+        <source>control character 0x%1 at byte %2</source>
+        <translation>carácter de control 0x%1 en el byte %2</translation>
     </message>
 </context>
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="29"/>
+        <location filename="../lib/model/profileapplier.cpp" line="30"/>
         <source>refused, nothing was written: %1</source>
         <translation>rechazado, no se escribió nada: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="33"/>
+        <location filename="../lib/model/profileapplier.cpp" line="34"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="37"/>
+        <location filename="../lib/model/profileapplier.cpp" line="38"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>cambiado %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="39"/>
+        <location filename="../lib/model/profileapplier.cpp" line="40"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FALLÓ %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="41"/>
+        <location filename="../lib/model/profileapplier.cpp" line="42"/>
         <source>would send %1</source>
         <translation>se enviaría %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="43"/>
+        <location filename="../lib/model/profileapplier.cpp" line="44"/>
         <source>skipped %1</source>
         <translation>omitido %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <location filename="../lib/model/profileapplier.cpp" line="46"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>cancelado: los valores restantes no se escribieron</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n diferencia</numerusform>
@@ -2543,34 +2738,74 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profileapplier.cpp" line="48"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 cambiados, %2 ya correctos, %3 fallidos</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="69"/>
+        <location filename="../lib/model/profileapplier.cpp" line="77"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>el perfil es para %1 y este equipo es %2 (fuerce la aplicación para escribir los ajustes que comparten)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="91"/>
+        <location filename="../lib/model/profileapplier.cpp" line="90"/>
         <source>monitor-only mode is on</source>
         <translation>el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="108"/>
+        <location filename="../lib/model/profileapplier.cpp" line="131"/>
         <source>reading the device</source>
         <translation>leyendo el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="180"/>
+        <location filename="../lib/model/profileapplier.cpp" line="188"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="182"/>
+        <location filename="../lib/model/profileapplier.cpp" line="190"/>
         <source>unreadable value</source>
         <translation>valor ilegible</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="58"/>
+        <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
+%1</source>
+        <translation>el perfil rompería los límites de sus ajustes (MIT ≤ MAT, MIT ≤ temperatura seleccionada ≤ MAT):
+%1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="84"/>
+        <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
+        <translation>ninguno de los ajustes del perfil existe en este %1 (omitidos: %2)</translation>
+    </message>
+</context>
+<context>
+    <name>ProfileLimits</name>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <source>in the profile</source>
+        <translation>en el perfil</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <source>on the device now</source>
+        <translation>ahora en el equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="65"/>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="83"/>
+        <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
+        <translation>%1 es desconocido (el equipo no respondió), así que %2 no se puede comprobar con él</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilelimits.cpp" line="90"/>
+        <source>%1 is above %2</source>
+        <translation>%1 está por encima de %2</translation>
     </message>
 </context>
 <context>
@@ -2592,41 +2827,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="38"/>
-        <location filename="../lib/model/session.cpp" line="109"/>
-        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="42"/>
+        <location filename="../lib/model/session.cpp" line="113"/>
+        <location filename="../lib/model/session.cpp" line="116"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="108"/>
-        <location filename="../lib/model/session.cpp" line="119"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="123"/>
+        <location filename="../lib/model/session.cpp" line="130"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="142"/>
+        <location filename="../lib/model/session.cpp" line="146"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="219"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="211"/>
+        <location filename="../lib/model/session.cpp" line="220"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="217"/>
+        <location filename="../lib/model/session.cpp" line="226"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="225"/>
+        <location filename="../lib/model/session.cpp" line="234"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -2642,22 +2877,22 @@ Hágalo permanente con esta regla de udev:
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="71"/>
+        <location filename="../lib/model/stationmodel.cpp" line="74"/>
         <source>%1 does not support %2</source>
         <translation>%1 no admite %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="78"/>
+        <location filename="../lib/model/stationmodel.cpp" line="81"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 no puede guardar en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="115"/>
+        <location filename="../lib/model/stationmodel.cpp" line="117"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="129"/>
+        <location filename="../lib/model/stationmodel.cpp" line="131"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -2708,53 +2943,53 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>ValueCodec</name>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="42"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="43"/>
         <source>%1 to %2%3</source>
         <translation>de %1 a %2%3</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="46"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="47"/>
         <source> in steps of %1</source>
         <translation> en pasos de %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="48"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="49"/>
         <source>, or %1</source>
         <translation>, o %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="56"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="57"/>
         <source>one of %1</source>
         <translation>uno de %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="59"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="60"/>
         <source>no value (the command carries %1)</source>
         <translation>ningún valor (el comando lleva %1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="62"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="63"/>
         <source>nothing: it is read-only</source>
         <translation>nada: es de solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="71"/>
-        <location filename="../lib/protocol/valuecodec.cpp" line="77"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="72"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="91"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="92"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 rechazado para %2 (%3): se permite %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="183"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; no es un retardo en segundos como 1.6 o 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="188"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; no es un número entero; %2 admite %3</translation>
     </message>
@@ -3323,33 +3558,18 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="79"/>
-        <source>%1: answered %2 after %L3 ms</source>
-        <translation>%1: respondió %2 tras %L3 ms</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="83"/>
-        <source>%1: refused, %2</source>
-        <translation>%1: rechazado, %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="85"/>
-        <source>%1: no answer (timeout)</source>
-        <translation>%1: sin respuesta (tiempo agotado)</translation>
-    </message>
-    <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
-        <source>%1: %2 (%3)</source>
-        <translation>%1: %2 (%3)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="99"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
+        <location filename="../app/gui/pages/consolepage.cpp" line="96"/>
+        <source>While paused, new rows are held; they appear on resume.</source>
+        <translation>En pausa, las filas nuevas se retienen; aparecen al reanudar.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
@@ -3474,95 +3694,65 @@ Hágalo permanente con esta regla de udev:
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="221"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="214"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="248"/>
-        <source>error</source>
-        <translation>error</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="256"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="260"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="270"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="295"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="309"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="328"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="288"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="316"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="299"/>
-        <source>%1 (no address)</source>
-        <translation>%1 (sin dirección)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="349"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="366"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="372"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="367"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="361"/>
         <source>Could not save %1:
 %2</source>
         <translation>No se pudo guardar %1:
 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="390"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="392"/>
-        <source>paused: new traffic is held</source>
-        <translation>en pausa: el tráfico nuevo se retiene</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="398"/>
-        <source>%n raw byte(s)</source>
+        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <source>paused: %n held</source>
         <translation>
-            <numerusform>%n byte en bruto</numerusform>
-            <numerusform>%n bytes en bruto</numerusform>
+            <numerusform>en pausa: %n retenida</numerusform>
+            <numerusform>en pausa: %n retenidas</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="401"/>
-        <source>%1: not sent, not connected</source>
-        <translation>%1: no enviado, sin conexión</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="405"/>
-        <source>%1: not sent, monitor-only mode is on</source>
-        <translation>%1: no enviado, el modo solo supervisión está activado</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="418"/>
-        <source>%1: sent, waiting for the answer…</source>
-        <translation>%1: enviado, esperando la respuesta…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/consolepage.h" line="66"/>
+        <location filename="../app/gui/pages/consolepage.h" line="62"/>
         <source>Console</source>
         <translation>Consola</translation>
     </message>
@@ -3570,108 +3760,78 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="39"/>
-        <source>Plugged hours</source>
-        <translation>Horas conectado</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="40"/>
-        <source>Reset partial plugged hours…</source>
-        <translation>Poner a cero las horas conectado parciales…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="41"/>
-        <source>Feeding hours</source>
-        <translation>Horas de alimentación</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="42"/>
-        <source>Reset partial feeding hours…</source>
-        <translation>Poner a cero las horas de alimentación parciales…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="43"/>
-        <source>Fed length</source>
-        <translation>Longitud alimentada</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="44"/>
-        <source>Reset partial fed length…</source>
-        <translation>Poner a cero la longitud alimentada parcial…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="75"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="72"/>
         <source>When the counters were read</source>
         <translation>Cuándo se leyeron los contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="74"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="76"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="80"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
         <source>Refresh counters</source>
         <translation>Actualizar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>&amp;Export CSV…</source>
         <translation>E&amp;xportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Export counters as CSV</source>
         <translation>Exportar contadores como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="96"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="145"/>
         <source>Reading the counters…</source>
         <translation>Leyendo los contadores…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
         <source>Last reading at %1</source>
         <translation>Última lectura a las %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="150"/>
         <source>Waiting for the first reading…</source>
         <translation>Esperando la primera lectura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="213"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
         <source>Station %1</source>
         <translation>Estación %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="215"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
         <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Counters of %1</source>
         <translation>Contadores de %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="226"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="228"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
@@ -3681,118 +3841,118 @@ Hágalo permanente con esta regla de udev:
         <translation>Alimentador de estaño %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="246"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Partial</source>
         <translation>Parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="285"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="287"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="291"/>
         <source>Last read failed: %1</source>
         <translation>Falló la última lectura: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
         <source>Read at %1</source>
         <translation>Leído: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="293"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="297"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="319"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="326"/>
         <source>Reset partial counter</source>
         <translation>Poner a cero el contador parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>Reset “%1” on %2?</source>
         <translation>¿Poner a cero «%1» en %2?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="325"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="329"/>
         <source>It now reads %1.</source>
         <translation>Ahora marca %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
         <source>The total counter is not affected.</source>
         <translation>El contador total no se ve afectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>Reset counter</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 No se puso nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="339"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 No se puso a cero: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="342"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 Poniendo a cero %2…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="348"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 puesto a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="349"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 no se puso a cero: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="389"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="382"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="394"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="40"/>
+        <location filename="../app/gui/pages/counterspage.h" line="42"/>
         <source>Counters</source>
         <translation>Contadores</translation>
     </message>
@@ -3828,27 +3988,27 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::DispensingPage</name>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="45"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="47"/>
         <source>Only the ALE has a built-in wire feed.</source>
         <translation>Solo la ALE tiene alimentación de hilo integrada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="55"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
         <source>&amp;Start dispensing</source>
         <translation>&amp;Iniciar dispensado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="56"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="58"/>
         <source>S&amp;top dispensing</source>
         <translation>De&amp;tener dispensado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="59"/>
         <source>Ignore fuse error…</source>
         <translation>Ignorar error de fusible…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="63"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="65"/>
         <source>
 
 Continue?</source>
@@ -3857,38 +4017,38 @@ Continue?</source>
 ¿Continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="75"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="77"/>
         <source>Wire feed settings</source>
         <translation>Ajustes de alimentación de hilo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="87"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="110"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="112"/>
         <source>%1 · dispensed %2 in %3 cycles · %4</source>
         <translation>%1 · dispensado %2 en %3 ciclos · %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="114"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
         <source>fuse unknown</source>
         <translation>fusible desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="115"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="117"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="118"/>
         <source>fuse missing or blown</source>
         <translation>fusible ausente o fundido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="122"/>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="132"/>
         <source>no ALE</source>
         <translation>sin ALE</translation>
     </message>
@@ -3899,297 +4059,293 @@ Continue?</source>
     </message>
 </context>
 <context>
-    <name>tipscope::gui::ErrorsPage</name>
+    <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="338"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="353"/>
-        <source>Not read yet</source>
-        <translation>Aún no leído</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Error</source>
-        <translation>Error</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="144"/>
-        <source>Communication</source>
-        <translation>Comunicación</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="145"/>
-        <source>Connection</source>
-        <translation>Conexión</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Severity</source>
-        <translation>Gravedad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="98"/>
-        <source>Current state</source>
-        <translation>Estado actual</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="101"/>
-        <source>Current errors and alarms</source>
-        <translation>Errores y alarmas actuales</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Where</source>
-        <translation>Dónde</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Tool</source>
-        <translation>Herramienta</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="103"/>
-        <source>Temperature alarm</source>
-        <translation>Alarma de temperatura</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="114"/>
-        <source>&amp;Reset feeder error</source>
-        <translation>&amp;Borrar error del alimentador</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="116"/>
-        <source>Reset feeder error</source>
-        <translation>Borrar error del alimentador</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="118"/>
-        <source>Result of the last action</source>
-        <translation>Resultado de la última acción</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="131"/>
-        <source>History</source>
-        <translation>Historial</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="134"/>
-        <source>Show events of kind</source>
-        <translation>Mostrar eventos del tipo</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="135"/>
-        <source>All kinds</source>
-        <translation>Todos los tipos</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="136"/>
-        <source>Errors and alarms</source>
-        <translation>Errores y alarmas</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="138"/>
-        <source>Station errors</source>
-        <translation>Errores de estación</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="139"/>
-        <source>Port errors</source>
-        <translation>Errores de puerto</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="140"/>
-        <source>Feeder errors</source>
-        <translation>Errores del alimentador</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="141"/>
-        <source>Alarms</source>
-        <translation>Alarmas</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="142"/>
-        <source>Status changes</source>
-        <translation>Cambios de estado</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="143"/>
-        <source>Writes</source>
-        <translation>Escrituras</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="150"/>
-        <source>Show events of severity</source>
-        <translation>Mostrar eventos de la gravedad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="151"/>
-        <source>Any severity</source>
-        <translation>Cualquier gravedad</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="152"/>
-        <source>Warnings and errors</source>
-        <translation>Advertencias y errores</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="153"/>
-        <source>Errors only</source>
-        <translation>Solo errores</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="156"/>
-        <source>Show events containing</source>
-        <translation>Mostrar eventos que contengan</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="157"/>
-        <source>Text in any column</source>
-        <translation>Texto en cualquier columna</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="159"/>
-        <source>&amp;Kind:</source>
-        <translation>&amp;Tipo:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="161"/>
-        <source>Se&amp;verity:</source>
-        <translation>&amp;Gravedad:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="163"/>
-        <source>&amp;Search:</source>
-        <translation>B&amp;uscar:</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="180"/>
-        <source>Event history</source>
-        <translation>Historial de eventos</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="204"/>
-        <source>Copy</source>
-        <translation>Copiar</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="210"/>
-        <source>Events shown</source>
-        <translation>Eventos mostrados</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="211"/>
-        <source>&amp;Copy</source>
-        <translation>Co&amp;piar</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="213"/>
-        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
-        <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="214"/>
-        <source>Copy selected events</source>
-        <translation>Copiar eventos seleccionados</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="215"/>
-        <source>E&amp;xport…</source>
-        <translation>E&amp;xportar…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="217"/>
-        <source>Save the events shown as a tab-separated text file</source>
-        <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="218"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
-        <location filename="../app/gui/pages/errorspage.cpp" line="493"/>
-        <source>Export events</source>
-        <translation>Exportar eventos</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="220"/>
-        <source>Result of the last export</source>
-        <translation>Resultado de la última exportación</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="272"/>
-        <source>No device is connected.</source>
-        <translation>No hay ningún equipo conectado.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="322"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
+        <source>Current state</source>
+        <translation>Estado actual</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
+        <source>Current errors and alarms</source>
+        <translation>Errores y alarmas actuales</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Where</source>
+        <translation>Dónde</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Severity</source>
+        <translation>Gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <source>Temperature alarm</source>
+        <translation>Alarma de temperatura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
+        <source>&amp;Reset feeder error</source>
+        <translation>&amp;Borrar error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
+        <source>Reset feeder error</source>
+        <translation>Borrar error del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
+        <source>Result of the last action</source>
+        <translation>Resultado de la última acción</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="139"/>
+        <source>No device is connected.</source>
+        <translation>No hay ningún equipo conectado.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="169"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="174"/>
+        <source>Not read yet</source>
+        <translation>Aún no leído</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="171"/>
         <source>Error code %1: %2</source>
         <translation>Código de error %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="347"/>
-        <source>High temperature</source>
-        <translation>Temperatura alta</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="349"/>
-        <source>Low temperature</source>
-        <translation>Temperatura baja</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="351"/>
-        <source>None</source>
-        <translation>Ninguna</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="365"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
         <source>This device has no temperature alarm</source>
         <translation>Este equipo no tiene alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="374"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="194"/>
         <source>Not reset: %1</source>
         <translation>No se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="377"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="197"/>
         <source>Resetting the feeder error…</source>
         <translation>Borrando el error del alimentador…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="384"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="204"/>
         <source>Feeder error reset.</source>
         <translation>Error del alimentador borrado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="385"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="205"/>
         <source>The feeder error was not reset: %1</source>
         <translation>El error del alimentador no se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="398"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="218"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="401"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="221"/>
         <source>No feeder is connected</source>
         <translation>No hay ningún alimentador conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="404"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="224"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
     </message>
+</context>
+<context>
+    <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="435"/>
+        <location filename="../app/gui/pages/errorspage.h" line="18"/>
+        <source>Errors</source>
+        <translation>Errores</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::EventHistoryPanel</name>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="45"/>
+        <source>History</source>
+        <translation>Historial</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="72"/>
+        <source>Show events of kind</source>
+        <translation>Mostrar eventos del tipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="73"/>
+        <source>All kinds</source>
+        <translation>Todos los tipos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="74"/>
+        <source>Errors and alarms</source>
+        <translation>Errores y alarmas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="76"/>
+        <source>Station errors</source>
+        <translation>Errores de estación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="77"/>
+        <source>Port errors</source>
+        <translation>Errores de puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="78"/>
+        <source>Feeder errors</source>
+        <translation>Errores del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="79"/>
+        <source>Alarms</source>
+        <translation>Alarmas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="80"/>
+        <source>Status changes</source>
+        <translation>Cambios de estado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="81"/>
+        <source>Writes</source>
+        <translation>Escrituras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="82"/>
+        <source>Communication</source>
+        <translation>Comunicación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="83"/>
+        <source>Connection</source>
+        <translation>Conexión</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <source>Show events of severity</source>
+        <translation>Mostrar eventos de la gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <source>Any severity</source>
+        <translation>Cualquier gravedad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <source>Warnings and errors</source>
+        <translation>Advertencias y errores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <source>Errors only</source>
+        <translation>Solo errores</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <source>Show events containing</source>
+        <translation>Mostrar eventos que contengan</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <source>Text in any column</source>
+        <translation>Texto en cualquier columna</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Tipo:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <source>Se&amp;verity:</source>
+        <translation>&amp;Gravedad:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <source>&amp;Search:</source>
+        <translation>B&amp;uscar:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
+        <source>Event history</source>
+        <translation>Historial de eventos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="152"/>
+        <source>Copy</source>
+        <translation>Copiar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="158"/>
+        <source>Events shown</source>
+        <translation>Eventos mostrados</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
+        <source>&amp;Copy</source>
+        <translation>Co&amp;piar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="161"/>
+        <source>Copy the selected events to the clipboard (Ctrl+C)</source>
+        <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="162"/>
+        <source>Copy selected events</source>
+        <translation>Copiar eventos seleccionados</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <source>E&amp;xport…</source>
+        <translation>E&amp;xportar…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="165"/>
+        <source>Save the events shown as a tab-separated text file</source>
+        <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="166"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
+        <source>Export events</source>
+        <translation>Exportar eventos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="168"/>
+        <source>Result of the last export</source>
+        <translation>Resultado de la última exportación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="206"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/errorspage.cpp" line="437"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="208"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4197,24 +4353,19 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="486"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="261"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="491"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="266"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorspage.cpp" line="494"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/errorspage.h" line="44"/>
-        <source>Errors</source>
-        <translation>Errores</translation>
     </message>
 </context>
 <context>
@@ -4380,183 +4531,152 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="144"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
         <source>Send a frame</source>
         <translation>Enviar una trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="167"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="170"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="64"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="171"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="65"/>
         <source>R (read)</source>
         <translation>R (lectura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="172"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
         <source>W (write)</source>
         <translation>W (escritura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="174"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>Command</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="184"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="78"/>
         <source>Data field</source>
         <translation>Campo de datos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="188"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="82"/>
         <source>&amp;Send frame</source>
         <translation>&amp;Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="189"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="83"/>
         <source>Send frame</source>
         <translation>Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="191"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
         <source>Frame to be sent</source>
         <translation>Trama que se enviará</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="195"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="89"/>
         <source>Catalog check</source>
         <translation>Comprobación del catálogo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="198"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="92"/>
         <source>Raw bytes in hex</source>
         <translation>Bytes en bruto en hexadecimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="202"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="96"/>
         <source>Send ra&amp;w hex</source>
         <translation>Enviar he&amp;x en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="203"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
         <source>Send raw hex</source>
         <translation>Enviar hex en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="205"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
         <source>Raw bytes check</source>
         <translation>Comprobación de los bytes en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="100"/>
         <source>Nothing sent yet.</source>
         <translation>Aún no se ha enviado nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="207"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Outcome of the last send</source>
         <translation>Resultado del último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="216"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="110"/>
         <source>&amp;Device</source>
         <translation>E&amp;quipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="218"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
         <source>&amp;Header</source>
         <translation>Ca&amp;becera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="220"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
         <source>C&amp;ommand</source>
         <translation>C&amp;omando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
         <source>D&amp;ata</source>
         <translation>Da&amp;tos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="225"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>Frame</source>
         <translation>Trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="228"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="122"/>
         <source>&amp;Raw hex</source>
         <translation>Hex en b&amp;ruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="232"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="126"/>
         <source>Last send</source>
         <translation>Último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="265"/>
-        <source>Monitor-only mode is on: raw bytes are not sent, since they may be a write. Reads can still be sent with Send frame.</source>
-        <translation>El modo solo supervisión está activado: los bytes en bruto no se envían, ya que podrían ser una escritura. Las lecturas aún se pueden enviar con Enviar trama.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="267"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="235"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Enviar estos bytes exactamente como se han escrito; la respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="292"/>
-        <source>No device is known on this line: connect first, or send raw hex.</source>
-        <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="355"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="206"/>
         <source>(nothing to send)</source>
         <translation>(nada que enviar)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>none for reads</source>
         <translation>ninguno en lecturas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="359"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="210"/>
         <source>e.g. 00350</source>
         <translation>p. ej. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="363"/>
-        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
-        <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="375"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="222"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Enviar esta trama una vez, tal como se muestra (sin reintentos; los avisos del catálogo no la detienen). Su respuesta aparece en la tabla.</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="392"/>
-        <source>%n byte(s), a valid frame: %1</source>
-        <translation>
-            <numerusform>%n byte, una trama válida: %1</numerusform>
-            <numerusform>%n bytes, una trama válida: %1</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../app/gui/pages/framebuilder.cpp" line="395"/>
-        <source>%n byte(s), not a valid frame (%1): sent as typed</source>
-        <translation>
-            <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
-            <numerusform>%n bytes, no es una trama válida (%1): se envía tal cual</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="413"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="257"/>
         <source>Not sent: %1</source>
         <translation>No enviado: %1</translation>
     </message>
@@ -4677,62 +4797,62 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="77"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="78"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="84"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
         <source>family %1</source>
         <translation>familia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="87"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="88"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="89"/>
         <source>transformer %1</source>
         <translation>transformador %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="90"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="92"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="95"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="96"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Error de estación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="106"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
         <source>idle</source>
         <translation>en espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="108"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="109"/>
         <source>fed %1</source>
         <translation>alimentado %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="110"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="111"/>
         <source>speed %1</source>
         <translation>velocidad %1</translation>
     </message>
@@ -4803,102 +4923,102 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="23"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="24"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="34"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="35"/>
         <source>Tip temperature, port %1</source>
         <translation>Temperatura de la punta, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="41"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="42"/>
         <source>Power, port %1</source>
         <translation>Potencia, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="47"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Work</source>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Stand</source>
         <translation>Soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
         <source>Cool</source>
         <translation>Enfriar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: calentar a la temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="52"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: soporte; el reposo y la hibernación siguen tras sus retardos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="53"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="54"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: enfriamiento (extractor en espera)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
         <source>New selected temperature, port %1</source>
         <translation>Nueva temperatura seleccionada, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="59"/>
         <source>Set</source>
         <translation>Fijar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="97"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="104"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="105"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="132"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
         <source>Port %1 — %2</source>
         <translation>Puerto %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="134"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="136"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
         <source>set %1</source>
         <translation>consigna %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="138"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="137"/>
         <source>power %1</source>
         <translation>potencia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="140"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="139"/>
         <source>status unknown</source>
         <translation>estado desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="143"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="142"/>
         <source>transistor %1</source>
         <translation>transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="145"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="144"/>
         <source>%1 until the next mode</source>
         <translation>%1 hasta el siguiente modo</translation>
     </message>
@@ -5028,16 +5148,17 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="66"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="104"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="109"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="118"/>
         <source>&lt;b&gt;Refused:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Rechazado:&lt;/b&gt; %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="111"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="123"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Perfil de %1 (%2, software %3), creado: %4. %n ajuste difiere del equipo.</numerusform>
@@ -5045,7 +5166,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="117"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="129"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Simulación: se enviaría %n trama; no se escribió nada.</numerusform>
@@ -5053,96 +5174,106 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="121"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="133"/>
         <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches.</source>
         <translation>&lt;b&gt;Aplicado.&lt;/b&gt; Todos los valores escritos se volvieron a leer y coinciden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="122"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="134"/>
         <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; See the report below.</source>
         <translation>&lt;b&gt;No se aplicó todo.&lt;/b&gt; Consulte el informe de abajo.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="102"/>
+        <source>The profile would break the device&apos;s limits; see above</source>
+        <translation>El perfil rompería los límites del equipo; véase arriba</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="120"/>
+        <source>&lt;b&gt;This profile cannot be applied to this device:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Este perfil no se puede aplicar a este equipo:&lt;/b&gt; %1</translation>
     </message>
 </context>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="31"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Revertir</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
         <source>Save to station &amp;memory</source>
         <translation>Guardar en la &amp;memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>La temperatura seleccionada es volátil: W-NVS la guarda para que se conserve tras reiniciar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Station actions</source>
         <translation>Acciones de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="42"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="43"/>
         <source>Profiles</source>
         <translation>Perfiles</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="45"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
         <source>Save device settings to a profile…</source>
         <translation>Guardar los ajustes del equipo en un perfil…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="48"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Abrir un perfil (comparar, simular, aplicar)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="51"/>
         <source>Port:</source>
         <translation>Puerto:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="131"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Conéctese y seleccione un equipo para ver sus ajustes.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="134"/>
         <source>Port %1 (%2)</source>
         <translation>Puerto %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="137"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="138"/>
         <source>Station</source>
         <translation>Estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
         <source>Alarms, port %1</source>
         <translation>Alarmas, puerto %1</translation>
     </message>
@@ -5152,42 +5283,42 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Herramienta %1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
         <source> (connected)</source>
         <translation> (conectada)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="154"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dispensado (alimentación de hilo de la ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="162"/>
         <source>Feeding</source>
         <translation>Alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="190"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
         <source>&amp;Apply (%1)</source>
         <translation>A&amp;plicar (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="198"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="196"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="221"/>
         <source>Save to station memory</source>
         <translation>Guardar en la memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="234"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Nueva dirección (1-99), o 0 para tramas sin direcciones:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="241"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="239"/>
         <source>%1
 
 %2
@@ -5200,26 +5331,26 @@ Do you want to continue?</source>
 ¿Desea continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="256"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="262"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="268"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="254"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="260"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="266"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="255"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Algunos ajustes aún no se han leído (%1). Actualice y vuelva a intentarlo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="263"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="275"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="261"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="273"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="274"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="272"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="279"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>
@@ -5227,6 +5358,25 @@ Do you want to continue?</source>
         <location filename="../app/gui/pages/settingspage.h" line="25"/>
         <source>Settings</source>
         <translation>Ajustes</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::journal::Journal</name>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="85"/>
+        <location filename="../lib/journal/journal.cpp" line="99"/>
+        <source>The journal is closed.</source>
+        <translation>El diario está cerrado.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="89"/>
+        <source>The journal cannot keep up: %1 records wait to be written.</source>
+        <translation>El diario no da abasto: %1 registros esperan a ser escritos.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journal.cpp" line="137"/>
+        <source>Work order: %1, board: %2, operator: %3</source>
+        <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
     </message>
 </context>
 <context>
@@ -5418,6 +5568,62 @@ Do you want to continue?</source>
         <location filename="../lib/link/tcptransport.cpp" line="29"/>
         <source>cannot connect to %1: %2</source>
         <translation>no se puede conectar con %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::ConsoleSender</name>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="15"/>
+        <source>%1: answered %2 after %L3 ms</source>
+        <translation>%1: respondió %2 tras %L3 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="19"/>
+        <source>%1: refused, %2</source>
+        <translation>%1: rechazado, %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="21"/>
+        <source>%1: no answer (timeout)</source>
+        <translation>%1: sin respuesta (tiempo agotado)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="23"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="52"/>
+        <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
+        <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="58"/>
+        <source>Monitor-only mode is on: bytes that are not one valid R frame may be a write, so they are not sent.</source>
+        <translation>El modo solo supervisión está activado: los bytes que no forman una trama R válida podrían ser una escritura, así que no se envían.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
+        <source>%n raw byte(s)</source>
+        <translation>
+            <numerusform>%n byte en bruto</numerusform>
+            <numerusform>%n bytes en bruto</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="75"/>
+        <source>%1: not sent, not connected</source>
+        <translation>%1: no enviado, sin conexión</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="79"/>
+        <source>%1: not sent, monitor-only mode is on</source>
+        <translation>%1: no enviado, el modo solo supervisión está activado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/consolesender.cpp" line="91"/>
+        <source>%1: sent, waiting for the answer…</source>
+        <translation>%1: enviado, esperando la respuesta…</translation>
     </message>
 </context>
 </TS>

@@ -1,5 +1,6 @@
 #include "clicommands.h"
 
+#include "protocol/elide.h"
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 #include "protocol/valuecodec.h"
@@ -33,9 +34,20 @@ QJsonObject deviceJson(const DeviceInfo &d) {
             {QStringLiteral("softwareVersion"), d.softwareVersion}};
 }
 
+void reportFailure(CliSession &s, const Reply &reply, const QString &what) {
+    s.err() << Tr::tr("tipscope-cli: %1: %2").arg(what, reply.errorString()) << Qt::endl;
+}
+
 void reportFailure(CliSession &s, const Reply &reply) {
-    s.err() << Tr::tr("tipscope-cli: %1: %2").arg(reply.request().toString(), reply.errorString())
-            << Qt::endl;
+    reportFailure(s, reply, reply.request().toString());
+}
+
+// Raw bytes as people read them: decoded when they are a frame, else why they are not one.
+QString describeRaw(const QByteArray &bytes) {
+    QString why;
+    if (const auto frame = parseFrame(bytes, nullptr, &why))
+        return frame->toString();
+    return Tr::tr("%n raw byte(s), not a frame (%1)", nullptr, int(bytes.size())).arg(why);
 }
 
 } // namespace
@@ -84,7 +96,8 @@ int runRead(CliSession &s) {
         const QByteArray code = arg.toUpper().toLatin1();
         const DeviceInfo *d = s.deviceFor(code, Direction::Read);
         if (!d) {
-            s.err() << Tr::tr("tipscope-cli: no device here can read '%1'").arg(arg) << Qt::endl;
+            s.err() << Tr::tr("tipscope-cli: no device here can read '%1'").arg(elided(arg))
+                    << Qt::endl;
             worst = qMax(worst, int(kRefused));
             continue;
         }
@@ -129,6 +142,35 @@ static int verifyWrite(CliSession &s, const DeviceInfo &d, const ResolvedCommand
     return kOk;
 }
 
+// The device's own limits (MIT and MAT for a selected temperature) are read now and the value
+// is checked with the Parameter logic the GUI's editors use. kOk, or the exit code after saying
+// why nothing was sent.
+static int checkDeviceLimits(CliSession &s, const DeviceInfo &d, const QByteArray &code,
+                             qint64 wire) {
+    const auto device = s.model(d);
+    model::Parameter *p = device->parameter(code);
+    if (!p)
+        return kOk; // an action or a write-only command: the catalog's check is all there is
+    for (const QString &limit : {p->meta().limitMin, p->meta().limitMax}) {
+        model::Parameter *l = limit.isEmpty() ? nullptr : device->parameter(limit.toLatin1());
+        if (!l)
+            continue;
+        Reply *r = s.ask(Request::read(d.address, l->code()));
+        if (!r->ok()) {
+            s.err() << Tr::tr("tipscope-cli: %1 was not sent: its limit %2 could not be read: %3")
+                           .arg(QString::fromLatin1(code), limit, r->errorString())
+                    << Qt::endl;
+            return CliSession::exitCodeFor(*r);
+        }
+        l->deviceReported(r->answer().data);
+    }
+    if (const QString why = p->validate(wire); !why.isEmpty()) {
+        s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(why) << Qt::endl;
+        return kRefused;
+    }
+    return kOk;
+}
+
 int runWrite(CliSession &s) {
     const QStringList &args = s.options().args;
     const bool raw = s.options().flags.contains(QStringLiteral("raw"));
@@ -141,12 +183,14 @@ int runWrite(CliSession &s) {
     const QByteArray code = args.at(0).toUpper().toLatin1();
     const DeviceInfo *d = s.deviceFor(code, Direction::Write);
     if (!d) {
-        s.err() << Tr::tr("tipscope-cli: no device here accepts writes of '%1'").arg(args.at(0))
-                << Qt::endl;
+        s.err()
+            << Tr::tr("tipscope-cli: no device here accepts writes of '%1'").arg(elided(args.at(0)))
+            << Qt::endl;
         return kRefused;
     }
     const auto cmd = *Catalog::builtin().resolve(d->family, code, Direction::Write);
     QByteArray data;
+    std::optional<qint64> wire;
     QString error;
     if (raw) {
         // Checked before toLatin1(), which would turn anything outside Latin-1 into '?'.
@@ -162,14 +206,17 @@ int runWrite(CliSession &s) {
     } else if (cmd.spec->kind == ValueKind::Action && args.size() == 1) {
         data = cmd.spec->fixedData;
     } else {
-        const auto value = parseUserValue(cmd, args.value(1), &error);
-        if (value)
-            data = encodeWrite(cmd, *value, &error).value_or(QByteArray());
+        wire = parseUserValue(cmd, args.value(1), &error);
+        if (wire)
+            data = encodeWrite(cmd, *wire, &error).value_or(QByteArray());
     }
     if (!error.isEmpty()) {
         s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(error) << Qt::endl;
         return kRefused;
     }
+    if (wire)
+        if (const int rc = checkDeviceLimits(s, *d, code, *wire); rc != kOk)
+            return rc;
     Reply *reply = s.ask(Request::write(d->address, code, data, !cmd.spec->dangerous));
     if (!reply->ok()) {
         reportFailure(s, *reply);
@@ -197,7 +244,7 @@ int runSend(CliSession &s) {
     s.out() << "TX " << toHexText(*bytes) << "  " << toAsciiText(*bytes) << Qt::endl;
     Reply *reply = s.ask(r);
     if (reply->error() != ReplyError::None && reply->error() != ReplyError::Nak) {
-        reportFailure(s, *reply);
+        reportFailure(s, *reply, describeRaw(*bytes));
         return CliSession::exitCodeFor(*reply);
     }
     const Frame &a = reply->answer();
@@ -254,7 +301,7 @@ int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const QString family = o.values.value(QStringLiteral("family")).toUpper();
     if (!family.isEmpty() && !cat.family(family)) {
         err << Tr::tr("tipscope-cli: unknown family '%1'; known: %2")
-                   .arg(family, cat.familyNames().join(QLatin1String(", ")))
+                   .arg(elided(family), cat.familyNames().join(QLatin1String(", ")))
             << Qt::endl;
         return kUsage;
     }

@@ -3,6 +3,7 @@
 // itself; the monitor resumes when it is back.
 #include "clicommands.h"
 
+#include "protocol/elide.h"
 #include "protocol/valuecodec.h"
 
 #include <QDateTime>
@@ -86,7 +87,7 @@ int runMonitor(CliSession &s) {
         csv.setFileName(s.options().values.value(QStringLiteral("csv")));
         if (!csv.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
             s.err() << Tr::tr("tipscope-cli: cannot write %1: %2")
-                           .arg(csv.fileName(), csv.errorString())
+                           .arg(elidedPath(csv.fileName()), csv.errorString())
                     << Qt::endl;
             return kUsage;
         }

@@ -1,6 +1,8 @@
 #include "clioptions.h"
 
+#include "link/ports/devicepath.h"
 #include "link/tcptransport.h"
+#include "protocol/elide.h"
 
 namespace tipscope::cli {
 
@@ -93,7 +95,7 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
         if (!isOption) {
             if (o.command.isEmpty()) {
                 if (!kCommands.contains(a))
-                    return fail(tr("unknown command '%1'").arg(a));
+                    return fail(tr("unknown command '%1'").arg(protocol::elided(a)));
                 o.command = a;
             } else {
                 o.args.append(a);
@@ -135,7 +137,7 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
                 return fail(tr("--port takes a device, and only one of --port, --tcp, --demo"));
             haveTransport = true;
             o.line.kind = link::LineSettings::Kind::Serial;
-            o.line.serial.portName = v;
+            o.line.serial.portName = link::typedPortName(v);
         } else if (name == QLatin1String("tcp")) {
             if (haveTransport || !takeValue(&v) ||
                 !link::TcpTransport::parseHostPort(v, &o.line.tcpHost, &o.line.tcpPort))
@@ -186,8 +188,9 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
                 o.flags.append(name);
             }
         } else {
-            return fail(o.command.isEmpty() ? tr("unknown option --%1").arg(name)
-                                            : tr("'%1' has no option --%2").arg(o.command, name));
+            const QString shown = protocol::elided(name);
+            return fail(o.command.isEmpty() ? tr("unknown option --%1").arg(shown)
+                                            : tr("'%1' has no option --%2").arg(o.command, shown));
         }
     }
     if (o.showHelp || o.showVersion)

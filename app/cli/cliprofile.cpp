@@ -1,9 +1,7 @@
 // tipscope-cli profile save|diff|apply FILE: the technicians' profiles from a script.
 #include "clicommands.h"
 
-#include "model/feedermodel.h"
 #include "model/profileapplier.h"
-#include "model/stationmodel.h"
 
 #include <QEventLoop>
 
@@ -22,11 +20,7 @@ std::unique_ptr<DeviceModel> modelFor(CliSession &s) {
     const DeviceInfo *d = s.firstStation();
     if (!d && !s.devices().isEmpty())
         d = &s.devices().first();
-    if (!d)
-        return nullptr;
-    if (protocol::Catalog::builtin().family(d->family)->isFeeder())
-        return std::make_unique<FeederModel>(s.line().queue(), *d);
-    return std::make_unique<StationModel>(s.line().queue(), *d);
+    return d ? s.model(*d) : nullptr;
 }
 
 void waitIdle(CliSession &s) {
@@ -108,6 +102,12 @@ int runProfile(CliSession &s) {
         return kRefused;
     }
     s.out() << r.text() << Qt::endl;
+    if (!r.conflicts.isEmpty()) { // a diff: applying this profile would be refused
+        s.err() << Tr::tr("tipscope-cli: applying this profile would be refused: %1")
+                       .arg(r.conflictReason())
+                << Qt::endl;
+        return kRefused;
+    }
     if (s.line().state() != Line::State::Open)
         return kTransport;
     return r.failedCount() > 0 ? kNak : kOk;

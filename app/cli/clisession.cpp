@@ -1,5 +1,8 @@
 #include "clisession.h"
 
+#include "model/feedermodel.h"
+#include "model/stationmodel.h"
+#include "protocol/elide.h"
 #include "sim/simline.h"
 
 #include <QEventLoop>
@@ -50,12 +53,21 @@ void CliSession::waitForLine() {
         loop.exec();
 }
 
+// The link layer's messages quote the port as given; a name as long as a file can hold would
+// make them unreadable, so it is shown the way every other echoed input is.
+QString CliSession::withPortElided(QString message) const {
+    const QString &port = m_options.line.serial.portName;
+    if (m_options.line.kind == LineSettings::Kind::Serial && !port.isEmpty())
+        message.replace(port, protocol::elidedPath(port));
+    return message;
+}
+
 int CliSession::open() {
     waitForLine();
     if (m_line->state() == Line::State::Open)
         return kOk;
-    m_err << tr("tipscope-cli: cannot open %1: %2")
-                 .arg(m_line->transport().description(), m_line->lastError())
+    m_err << withPortElided(tr("tipscope-cli: cannot open %1: %2")
+                                .arg(m_line->transport().description(), m_line->lastError()))
           << Qt::endl;
     return kTransport;
 }
@@ -132,13 +144,15 @@ int CliSession::resolveDevices() {
     if (!m_devices.isEmpty())
         return kOk;
     if (m_line->state() != Line::State::Open) {
-        m_err << tr("tipscope-cli: the line was lost: %1").arg(m_line->lastError()) << Qt::endl;
+        m_err << withPortElided(tr("tipscope-cli: the line was lost: %1").arg(m_line->lastError()))
+              << Qt::endl;
         return kTransport;
     }
-    m_err << tr("tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and "
-                "frames without addresses). Check the cable, the baud rate, and that robot mode "
-                "is on.")
-                 .arg(m_line->transport().description())
+    m_err << withPortElided(
+                 tr("tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and "
+                    "frames without addresses). Check the cable, the baud rate, and that robot "
+                    "mode is on.")
+                     .arg(m_line->transport().description()))
           << Qt::endl;
     return kNoAnswer;
 }
@@ -155,6 +169,12 @@ const DeviceInfo *CliSession::firstStation() const {
         if (const FamilyInfo *f = Catalog::builtin().family(d.family); f && !f->isFeeder())
             return &d;
     return nullptr;
+}
+
+std::unique_ptr<model::DeviceModel> CliSession::model(const DeviceInfo &device) {
+    if (Catalog::builtin().family(device.family)->isFeeder())
+        return std::make_unique<model::FeederModel>(m_line->queue(), device);
+    return std::make_unique<model::StationModel>(m_line->queue(), device);
 }
 
 } // namespace tipscope::cli

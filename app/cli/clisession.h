@@ -5,6 +5,7 @@
 #include "clioptions.h"
 
 #include "link/discovery.h"
+#include "model/devicemodel.h"
 #include "protocol/catalog.h"
 
 #include <QTextStream>
@@ -31,6 +32,8 @@ public:
     [[nodiscard]] const link::DeviceInfo *deviceFor(const QByteArray &code,
                                                     protocol::Direction direction) const;
     [[nodiscard]] const link::DeviceInfo *firstStation() const;
+    // The model of `device` (a station or the feeder) on this session's line, as the GUI has it.
+    [[nodiscard]] std::unique_ptr<model::DeviceModel> model(const link::DeviceInfo &device);
 
     // Sends and waits; the Reply stays valid until the session ends.
     link::Reply *ask(const link::Request &request);
@@ -43,6 +46,7 @@ public:
 
 private:
     void waitForLine();
+    [[nodiscard]] QString withPortElided(QString message) const;
     int identify(std::optional<int> address);
 
     CliOptions m_options;

@@ -1,5 +1,7 @@
 #include "consolemodel.h"
 
+#include "session.h"
+
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"
 #include "protocol/hexbytes.h"
@@ -49,6 +51,41 @@ void ConsoleModel::attach(link::FrameTap *tap) {
     if (tap)
         m_connection = connect(tap, &link::FrameTap::event, this,
                                [this](const link::TapEvent &e) { add(fromTap(e)); });
+}
+
+void ConsoleModel::follow(Session *session) {
+    for (const QMetaObject::Connection &c : std::as_const(m_sessionConnections))
+        disconnect(c);
+    m_sessionConnections.clear();
+    m_session = session;
+    if (session)
+        m_sessionConnections = {
+            connect(session, &Session::stateChanged, this, &ConsoleModel::followLine),
+            connect(session, &Session::devicesChanged, this, &ConsoleModel::followDevices),
+            connect(session, &Session::monitorOnlyChanged, &m_sender,
+                    &ConsoleSender::setMonitorOnly)};
+    m_sender.setMonitorOnly(session && session->monitorOnly());
+    followLine();
+    followDevices();
+}
+
+void ConsoleModel::followLine() {
+    link::Line *line = m_session ? m_session->line() : nullptr;
+    link::RequestQueue *queue = line ? &line->queue() : nullptr;
+    // The tap is gone with its line, so a new line (a new connectTo()) is never taken for the
+    // old one, even when it reuses the old one's address.
+    if (queue && &queue->tap() == m_tap)
+        return;
+    attach(queue ? &queue->tap() : nullptr);
+    m_sender.attach(queue);
+}
+
+void ConsoleModel::followDevices() {
+    QMap<int, QString> families;
+    if (m_session)
+        for (const DeviceModel *d : m_session->devices())
+            families.insert(d->address().value_or(-1), d->family());
+    setDeviceFamilies(families);
 }
 
 ConsoleEntry ConsoleModel::fromTap(const link::TapEvent &e) {
@@ -133,7 +170,9 @@ void ConsoleModel::add(const ConsoleEntry &e) {
     queue.last().family = familyOf(e);
     if (queue.size() > m_capacity) // older than anything the table could still show
         queue.removeFirst();
-    if (!m_paused && !m_batch.isActive())
+    if (m_paused)
+        Q_EMIT heldCountChanged(heldCount());
+    else if (!m_batch.isActive())
         m_batch.start();
 }
 
@@ -163,10 +202,13 @@ void ConsoleModel::setPaused(bool paused) {
     m_paused = paused;
     if (paused)
         return;
+    const bool held = !m_held.isEmpty();
     m_pending.append(std::exchange(m_held, {}));
     while (m_pending.size() > m_capacity)
         m_pending.removeFirst();
     flush();
+    if (held)
+        Q_EMIT heldCountChanged(0);
 }
 
 void ConsoleModel::setRelativeTime(bool relative) {
@@ -179,10 +221,13 @@ void ConsoleModel::clear() {
     beginResetModel();
     m_entries.clear();
     m_pending.clear();
+    const bool held = !m_held.isEmpty();
     m_held.clear();
     m_batch.stop();
     m_originUs = -1;
     endResetModel();
+    if (held)
+        Q_EMIT heldCountChanged(0);
 }
 
 int ConsoleModel::rowCount(const QModelIndex &parent) const {
@@ -199,20 +244,34 @@ QString ConsoleModel::timeText(const ConsoleEntry &e) const {
     return QDateTime::fromMSecsSinceEpoch(e.wallMs).toString(QStringLiteral("HH:mm:ss.zzz"));
 }
 
-static QString directionText(ConsoleEntry::Direction d) {
+QString ConsoleModel::directionText(ConsoleEntry::Direction d) {
     switch (d) {
     case ConsoleEntry::Direction::Tx:
         return Tr::tr("TX");
     case ConsoleEntry::Direction::Rx:
-        return Tr::tr("RX");
+        return Tr::tr("RX chunk");
     case ConsoleEntry::Direction::Decoded:
-        return Tr::tr("frame");
+        return Tr::tr("RX");
     case ConsoleEntry::Direction::Error:
         return Tr::tr("error");
     case ConsoleEntry::Direction::Note:
         return Tr::tr("note");
     }
     return {};
+}
+
+QString ConsoleModel::headerText(protocol::Header h) {
+    switch (h) {
+    case protocol::Header::Read:
+        return Tr::tr("Read");
+    case protocol::Header::Write:
+        return Tr::tr("Write");
+    case protocol::Header::Answer:
+        return Tr::tr("Answer");
+    case protocol::Header::Nak:
+        break;
+    }
+    return headerName(h); // the protocol's word for a refusal, the same in every language
 }
 
 QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
@@ -242,7 +301,7 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
                                            .arg(*f->target, 2, 10, QLatin1Char('0'))
                                      : QString();
     case Header:
-        return f ? headerName(f->header) : QString();
+        return f ? headerText(f->header) : QString();
     case Command:
         return f ? QString::fromLatin1(f->command) : QString();
     case Name:

@@ -6,9 +6,14 @@
 // paused, new entries wait in a buffer and appear on resume, so pausing loses nothing. Entries
 // reach the table in batches, at most every kBatchMs (or at flush()): a busy line taps a few
 // hundred events a second, and a row inserted at a time kept the filter proxy and the view busy
-// even with the console hidden. Filters
-// (direction, device address, command text) act on the view through filterAccepts().
+// even with the console hidden. Filters (direction, device address, command text) act on the
+// view through filterAccepts(). Received frames are labelled RX, the chunks they arrived in
+// "RX chunk", and headers are named in the user interface language. Sending goes through
+// sender(), which owns the monitor-only gate;
+// follow() keeps the table, the sender and the commands' names with a Session's current line.
 #pragma once
+
+#include "consolesender.h"
 
 #include "link/frametap.h"
 
@@ -19,6 +24,8 @@
 #include <deque>
 
 namespace tipscope::model {
+
+class Session;
 
 struct ConsoleEntry {
     enum class Direction { Tx, Rx, Decoded, Error, Note };
@@ -58,8 +65,15 @@ public:
     explicit ConsoleModel(QObject *parent = nullptr, int capacity = 20000);
 
     void attach(link::FrameTap *tap);
+    // Shows the tap of the session's line and sends on it, from now on and after every
+    // reconnection, names commands by its devices' families and takes its monitor-only setting.
+    // Null: none of it (the rows stay).
+    void follow(Session *session);
+    [[nodiscard]] ConsoleSender &sender() { return m_sender; }
     void setPaused(bool paused);
     [[nodiscard]] bool isPaused() const { return m_paused; }
+    // Rows that arrived while paused and appear on resume; heldCountChanged() says each change.
+    [[nodiscard]] int heldCount() const { return int(m_held.size()); }
     void setRelativeTime(bool relative);
     // The families of the devices on the line by address (-1: the device of a line without
     // addresses), so a code that families share is named as the device in the frame knows it:
@@ -80,6 +94,10 @@ public:
 
     [[nodiscard]] const ConsoleEntry &entry(int row) const { return m_entries.at(size_t(row)); }
     [[nodiscard]] static ConsoleEntry fromTap(const link::TapEvent &e);
+    // What the Dir column says for a kind of row ("TX", "RX", "RX chunk", ...).
+    [[nodiscard]] static QString directionText(ConsoleEntry::Direction d);
+    // What the Header column says, in the user interface language ("Read", "Answer", ...).
+    [[nodiscard]] static QString headerText(protocol::Header h);
     // One line per entry, as shown; for "save to file".
     [[nodiscard]] QString lineText(int row) const;
     bool saveText(const QString &path, QString *error) const;
@@ -91,8 +109,13 @@ public:
     };
     [[nodiscard]] bool filterAccepts(int row, const Filter &filter) const;
 
+Q_SIGNALS:
+    void heldCountChanged(int held);
+
 private:
     void add(const ConsoleEntry &e);
+    void followLine();
+    void followDevices();
     [[nodiscard]] QString timeText(const ConsoleEntry &e) const;
     [[nodiscard]] QString familyOf(const ConsoleEntry &e) const;
 
@@ -107,6 +130,9 @@ private:
     QMap<int, QString> m_families;
     QPointer<link::FrameTap> m_tap;
     QMetaObject::Connection m_connection;
+    QPointer<Session> m_session;
+    QList<QMetaObject::Connection> m_sessionConnections;
+    ConsoleSender m_sender;
 };
 
 } // namespace tipscope::model

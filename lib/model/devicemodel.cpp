@@ -16,10 +16,15 @@ struct Tr {
 } // namespace
 
 DeviceModel::DeviceModel(RequestQueue &queue, const DeviceInfo &info, QObject *parent)
+    : DeviceModel(queue, info, Catalog::builtin(), parent) {}
+
+DeviceModel::DeviceModel(RequestQueue &queue, const DeviceInfo &info, const Catalog &catalog,
+                         QObject *parent)
     : QObject(parent)
     , m_queue(queue)
-    , m_info(info) {
-    const Catalog &cat = Catalog::builtin();
+    , m_info(info)
+    , m_catalog(catalog) {
+    const Catalog &cat = m_catalog;
     QMap<QByteArray, std::optional<ResolvedCommand>> reads, writes;
     QList<QByteArray> order;
     for (const ResolvedCommand &r : cat.expand(info.family, Direction::Read)) {
@@ -27,11 +32,12 @@ DeviceModel::DeviceModel(RequestQueue &queue, const DeviceInfo &info, QObject *p
         order.append(r.code);
     }
     for (const ResolvedCommand &w : cat.expand(info.family, Direction::Write)) {
-        const bool isAction = w.spec->kind == ValueKind::Action || !w.spec->readable;
-        if (isAction) {
+        if (w.spec->isAction()) {
             auto *a = new Action(*this, w, this);
             m_actions.append(a);
             m_actionByCode.insert(w.code, a);
+            if (w.spec->role != Role::None)
+                m_actionByRole.insert(w.spec->role, a);
             continue;
         }
         writes[w.code] = w;
@@ -42,6 +48,8 @@ DeviceModel::DeviceModel(RequestQueue &queue, const DeviceInfo &info, QObject *p
         auto *p = new Parameter(*this, reads.value(code), writes.value(code), this);
         m_parameters.append(p);
         m_byCode.insert(code, p);
+        if (p->meta().role != Role::None)
+            m_byRole.insert({p->meta().role, p->spec().port}, p);
     }
     for (Parameter *p : m_parameters) {
         const CommandSpec &s = p->meta();
@@ -54,7 +62,7 @@ DeviceModel::DeviceModel(RequestQueue &queue, const DeviceInfo &info, QObject *p
 }
 
 const FamilyInfo &DeviceModel::familyInfo() const {
-    return *Catalog::builtin().family(m_info.family);
+    return *m_catalog.family(m_info.family);
 }
 
 QString DeviceModel::displayName() const {
@@ -72,6 +80,45 @@ Parameter *DeviceModel::parameter(const QByteArray &code) const {
 
 Action *DeviceModel::action(const QByteArray &code) const {
     return m_actionByCode.value(code);
+}
+
+Parameter *DeviceModel::parameter(Role role, int port) const {
+    return m_byRole.value({role, port});
+}
+
+Action *DeviceModel::action(Role role) const {
+    return m_actionByRole.value(role);
+}
+
+std::optional<qint64> DeviceModel::number(Role role, int port) const {
+    const Parameter *p = parameter(role, port);
+    return p ? p->number() : std::nullopt;
+}
+
+QString DeviceModel::displayText(Role role, int port) const {
+    const Parameter *p = parameter(role, port);
+    return p ? p->displayText() : Tr::tr("—");
+}
+
+QList<Parameter *> DeviceModel::parameters(Group group) const {
+    QList<Parameter *> out;
+    for (Parameter *p : m_parameters)
+        if (p->meta().group == group)
+            out.append(p);
+    return out;
+}
+
+QList<Parameter *> DeviceModel::parameters(Group group, int port, int tool) const {
+    QList<Parameter *> out;
+    for (Parameter *p : m_parameters)
+        if (p->meta().group == group && p->spec().port == port && p->spec().tool == tool)
+            out.append(p);
+    return out;
+}
+
+QString DeviceModel::commandName(Role role) const {
+    const CommandSpec *spec = m_catalog.command(role);
+    return spec ? spec->pattern : roleName(role);
 }
 
 void DeviceModel::setTemperatureUnit(TemperatureUnit unit) {

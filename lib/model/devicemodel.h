@@ -2,6 +2,11 @@
 // its family has (built from the catalog), and the shared settings that shape them (temperature
 // unit, monitor-only). StationModel and FeederModel add the structure of their families.
 //
+// Values and actions are found by what they are for (a catalog Role, per port) and lists by the
+// catalog's Group, so nothing above the catalog spells a command code; the codes themselves are
+// for the console, profiles and the CLI. The catalog is the built-in one unless another is given
+// (tests add entries); it must outlive the model.
+//
 // Requests go through the line's RequestQueue with this model as the owner of every Reply, so
 // deleting the model withdraws whatever it still had queued. Communication failures of its
 // requests and changes of errors, alarms and status are written to the EventLog if one is set.
@@ -24,6 +29,8 @@ class DeviceModel : public QObject {
     Q_OBJECT
 public:
     DeviceModel(link::RequestQueue &queue, const link::DeviceInfo &info, QObject *parent = nullptr);
+    DeviceModel(link::RequestQueue &queue, const link::DeviceInfo &info,
+                const protocol::Catalog &catalog, QObject *parent = nullptr);
 
     [[nodiscard]] const link::DeviceInfo &info() const { return m_info; }
     [[nodiscard]] QString family() const { return m_info.family; }
@@ -31,11 +38,28 @@ public:
     [[nodiscard]] std::optional<int> address() const { return m_info.address; }
     [[nodiscard]] QString displayName() const; // "DME-2C at 01"
     [[nodiscard]] link::RequestQueue &queue() const { return m_queue; }
+    [[nodiscard]] const protocol::Catalog &catalog() const { return m_catalog; }
 
     [[nodiscard]] const QList<Parameter *> &parameters() const { return m_parameters; }
     [[nodiscard]] Parameter *parameter(const QByteArray &code) const;
     [[nodiscard]] const QList<Action *> &actions() const { return m_actions; }
     [[nodiscard]] Action *action(const QByteArray &code) const;
+
+    // The value with this role on `port` (0: the device's own), or null when the family has none.
+    [[nodiscard]] Parameter *parameter(protocol::Role role, int port = 0) const;
+    [[nodiscard]] Action *action(protocol::Role role) const;
+    // The value as last read, as a number: nullopt before the first reading, for a text, or
+    // when the family has no such value.
+    [[nodiscard]] std::optional<qint64> number(protocol::Role role, int port = 0) const;
+    // The value as people read it: "—" before the first reading or when the family has none.
+    [[nodiscard]] QString displayText(protocol::Role role, int port = 0) const;
+    // In catalog order: every parameter of the group, whatever its port or tool; or those of one
+    // port (0: the device's own) and tool (-1: not a per-tool setting).
+    [[nodiscard]] QList<Parameter *> parameters(protocol::Group group) const;
+    [[nodiscard]] QList<Parameter *> parameters(protocol::Group group, int port,
+                                                int tool = -1) const;
+    // What a role's command is called, for messages about one the family lacks.
+    [[nodiscard]] QString commandName(protocol::Role role) const;
 
     [[nodiscard]] TemperatureUnit temperatureUnit() const { return m_unit; }
     void setTemperatureUnit(TemperatureUnit unit);
@@ -63,10 +87,13 @@ protected:
 private:
     link::RequestQueue &m_queue;
     link::DeviceInfo m_info;
+    const protocol::Catalog &m_catalog;
     QList<Parameter *> m_parameters;
     QMap<QByteArray, Parameter *> m_byCode;
+    QMap<std::pair<protocol::Role, int>, Parameter *> m_byRole;
     QList<Action *> m_actions;
     QMap<QByteArray, Action *> m_actionByCode;
+    QMap<protocol::Role, Action *> m_actionByRole;
     TemperatureUnit m_unit = TemperatureUnit::Celsius;
     bool m_writesBlocked = false;
     QPointer<EventLog> m_log;

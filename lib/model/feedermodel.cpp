@@ -13,59 +13,96 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(FeederModel)
 };
 
-QList<Parameter *> pick(const DeviceModel &d, std::initializer_list<const char *> codes) {
+QList<Parameter *> writable(const QList<Parameter *> &params, bool wanted) {
     QList<Parameter *> out;
-    for (const char *c : codes)
-        if (Parameter *p = d.parameter(c))
+    for (Parameter *p : params)
+        if (p->isWritable() == wanted)
             out.append(p);
     return out;
 }
 } // namespace
 
 FeederModel::FeederModel(link::RequestQueue &queue, const link::DeviceInfo &info, QObject *parent)
-    : DeviceModel(queue, info, parent) {}
+    : FeederModel(queue, info, Catalog::builtin(), parent) {}
+
+FeederModel::FeederModel(link::RequestQueue &queue, const link::DeviceInfo &info,
+                         const Catalog &catalog, QObject *parent)
+    : DeviceModel(queue, info, catalog, parent) {}
 
 QList<Parameter *> FeederModel::settings() const {
-    return pick(*this, {"MOD", "SPD", "LEN", "THI", "TES"});
+    return writable(parameters(Group::Feeder), true);
 }
 
 QList<Parameter *> FeederModel::counters() const {
-    return pick(*this, {"CPT", "CPP", "CFT", "CFP", "CTT", "CTP"});
+    return parameters(Group::Counter);
+}
+
+QList<FeederModel::CounterRow> FeederModel::counterRows() const {
+    QList<CounterRow> rows;
+    QStringList keys;
+    for (Parameter *p : counters()) {
+        const CommandSpec &s = p->meta();
+        const QString key = s.quantity.isEmpty() ? s.name : s.quantity;
+        if (!keys.contains(key)) {
+            keys.append(key);
+            rows.append(CounterRow{key, nullptr, nullptr, nullptr});
+        }
+        CounterRow &row = rows[keys.indexOf(key)];
+        (s.partial ? row.partial : row.total) = p;
+        if (s.partial)
+            row.reset = action(p->code());
+    }
+    return rows;
 }
 
 QList<Parameter *> FeederModel::liveParameters() const {
-    return pick(*this, {"FDS", "FDL"});
+    return writable(parameters(Group::Feeder), false);
 }
 
 std::optional<bool> FeederModel::isFeeding() const {
-    const Parameter *p = parameter("FDS");
-    return p && p->number() ? std::optional<bool>(*p->number() == 1) : std::nullopt;
+    const auto v = number(Role::Feeding);
+    return v ? std::optional<bool>(*v == 1) : std::nullopt;
 }
 
 std::optional<qint64> FeederModel::fedLength() const {
-    const Parameter *p = parameter("FDL");
-    return p ? p->number() : std::nullopt;
+    return number(Role::FedLength);
+}
+
+std::optional<qint64> FeederModel::feedSpeed() const {
+    return number(Role::FeedSpeed);
 }
 
 std::optional<int> FeederModel::errorCode() const {
-    const Parameter *p = parameter("ECV");
-    return p && p->number() ? std::optional<int>(int(*p->number())) : std::nullopt;
+    const auto v = number(Role::Error);
+    return v ? std::optional<int>(int(*v)) : std::nullopt;
 }
 
 QString FeederModel::errorText() const {
     const auto e = errorCode();
-    return e ? Catalog::builtin().feederErrorText(*e, Wording::Translated) : Tr::tr("—");
+    return e ? catalog().feederErrorText(*e, Wording::Translated) : Tr::tr("—");
 }
 
-QString FeederModel::trigger(const QByteArray &code, Confirmation c, qint64 arg) {
-    Action *a = action(code);
-    if (!a)
-        return Tr::tr("%1 has no command %2").arg(displayName(), QString::fromLatin1(code));
-    return a->trigger(c, arg);
+Level FeederModel::errorLevel() const {
+    const Parameter *p = parameter(Role::Error);
+    return p ? levelOf(catalog(), p->meta().table, errorCode()) : Level::Unknown;
+}
+
+QString FeederModel::resetPartialCounter(const QByteArray &code, Confirmation c) {
+    return trigger(action(code), QString::fromLatin1(code), c, 0);
+}
+
+QString FeederModel::trigger(Role role, Confirmation c, qint64 arg) {
+    return trigger(action(role), commandName(role), c, arg);
+}
+
+QString FeederModel::trigger(Action *action, const QString &name, Confirmation c, qint64 arg) {
+    if (!action)
+        return Tr::tr("%1 has no command %2").arg(displayName(), name);
+    return action->trigger(c, arg);
 }
 
 void FeederModel::onParameterChanged(Parameter *p) {
-    if (p->code() != "ECV" || !eventLog() || !p->number())
+    if (p->meta().role != Role::Error || !eventLog() || !p->number())
         return;
     const qint64 v = *p->number();
     const bool first = !m_lastError.has_value();

@@ -12,7 +12,6 @@ namespace {
 struct Tr {
     Q_DECLARE_TR_FUNCTIONS(PortModel)
 };
-const char *const kCounterBases[] = {"CP", "CW", "CS", "CH", "CN", "CC", "CD"};
 } // namespace
 
 PortStatus PortStatus::fromNumber(qint64 v) {
@@ -51,71 +50,93 @@ QString PortStatus::text() const {
     return parts.join(QLatin1String(", "));
 }
 
+TemperatureAlarm TemperatureAlarm::fromNumber(qint64 v) {
+    return {v % 10 == 1, (v / 10) % 10 == 1};
+}
+
+QString TemperatureAlarm::text() const {
+    QStringList parts;
+    if (high)
+        parts.append(Tr::tr("High temperature"));
+    if (low)
+        parts.append(Tr::tr("Low temperature"));
+    return parts.isEmpty() ? Tr::tr("None") : parts.join(QLatin1String(", "));
+}
+
 PortModel::PortModel(StationModel &station, int port, QObject *parent)
     : QObject(parent)
     , m_station(station)
     , m_port(port) {
-    const QByteArray suffix = QByteArray::number(port);
-    for (Parameter *p : station.parameters()) {
-        const QByteArray code = p->code();
-        const bool ofThisPort =
-            p->meta().usesPort() &&
-            code.at(p->meta().pattern.indexOf(QLatin1Char('x'))) == suffix.at(0);
-        if (ofThisPort)
+    for (Parameter *p : station.parameters())
+        if (p->spec().port == port)
             connect(p, &Parameter::valueChanged, this, &PortModel::changed);
-    }
+}
+
+Parameter *PortModel::parameter(Role role) const {
+    return m_station.parameter(role, m_port);
+}
+
+QString PortModel::displayText(Role role) const {
+    return m_station.displayText(role, m_port);
 }
 
 Parameter *PortModel::param(const char *base) const {
     return m_station.parameter(QByteArray(base) + QByteArray::number(m_port));
 }
 
-static std::optional<qint64> numberOf(const Parameter *p) {
-    return p ? p->number() : std::nullopt;
-}
-
 std::optional<qint64> PortModel::tipTemperature() const {
-    return numberOf(param("TT"));
+    return m_station.number(Role::TipTemperature, m_port);
 }
 std::optional<qint64> PortModel::selectedTemperature() const {
-    return numberOf(param("ST"));
+    return m_station.number(Role::Setpoint, m_port);
 }
 std::optional<qint64> PortModel::power() const {
-    return numberOf(param("PP"));
+    return m_station.number(Role::Power, m_port);
 }
 
 std::optional<PortStatus> PortModel::status() const {
-    const auto v = numberOf(param("PS"));
+    const auto v = m_station.number(Role::Status, m_port);
     return v ? std::optional<PortStatus>(PortStatus::fromNumber(*v)) : std::nullopt;
 }
 
 std::optional<int> PortModel::tool() const {
-    const auto v = numberOf(param("CT"));
+    const auto v = m_station.number(Role::ConnectedTool, m_port);
     return v ? std::optional<int>(int(*v)) : std::nullopt;
 }
 
 QString PortModel::toolName() const {
     const auto t = tool();
-    if (!t)
-        return Tr::tr("—");
+    return t ? toolName(*t) : Tr::tr("—");
+}
+
+QString PortModel::toolName(int tool) const {
     const QMap<int, QString> tools =
-        Catalog::builtin().table(QStringLiteral("$toolTable"), m_station.family());
-    return tools.contains(*t) ? catalogText(tools.value(*t)) : Tr::tr("tool %1").arg(*t);
+        m_station.catalog().table(QStringLiteral("$toolTable"), m_station.family());
+    return tools.contains(tool) ? catalogText(tools.value(tool)) : Tr::tr("tool %1").arg(tool);
 }
 
 std::optional<int> PortModel::error() const {
-    const auto v = numberOf(param("PE"));
-    return v ? std::optional<int>(Catalog::builtin().canonicalPortError(int(*v))) : std::nullopt;
+    const auto v = m_station.number(Role::Error, m_port);
+    return v ? std::optional<int>(m_station.catalog().canonicalPortError(int(*v))) : std::nullopt;
 }
 
 QString PortModel::errorText() const {
     const auto e = error();
-    return e ? Catalog::builtin().portErrorText(m_station.family(), *e, Wording::Translated)
+    return e ? m_station.catalog().portErrorText(m_station.family(), *e, Wording::Translated)
              : Tr::tr("—");
 }
 
+Level PortModel::errorLevel() const {
+    return levelOf(m_station.catalog(), m_station.familyInfo().portErrors, error());
+}
+
+std::optional<TemperatureAlarm> PortModel::alarm() const {
+    const auto v = m_station.number(Role::Alarm, m_port);
+    return v ? std::optional<TemperatureAlarm>(TemperatureAlarm::fromNumber(*v)) : std::nullopt;
+}
+
 int PortModel::alarmFlags() const {
-    return int(numberOf(param("TA")).value_or(0));
+    return int(m_station.number(Role::Alarm, m_port).value_or(0));
 }
 
 QList<int> PortModel::toolOrder() const {
@@ -127,60 +148,55 @@ QList<int> PortModel::toolOrder() const {
     return order;
 }
 
-QList<Parameter *> PortModel::toolSettings(int tool) const {
-    QList<Parameter *> out;
-    for (char letter : {'A', 'S', 'D', 'H'})
-        if (Parameter *p = m_station.parameter(QByteArray(1, letter) + QByteArray::number(m_port) +
-                                               QByteArray::number(tool)))
-            out.append(p);
-    return out;
+QList<Parameter *> PortModel::settings() const {
+    return m_station.parameters(Group::Port, m_port);
 }
 
-static QList<Parameter *> existing(const PortModel &port,
-                                   std::initializer_list<const char *> bases) {
-    QList<Parameter *> out;
-    for (const char *b : bases)
-        if (Parameter *p = port.param(b))
-            out.append(p);
-    return out;
+QList<Parameter *> PortModel::toolSettings(int tool) const {
+    return m_station.parameters(Group::Tool, m_port, tool);
 }
 
 QList<Parameter *> PortModel::alarmSettings() const {
-    return existing(*this, {"HA", "LA", "HD", "LD"});
+    return m_station.parameters(Group::Alarm, m_port);
 }
 
 QList<Parameter *> PortModel::counters() const {
+    return m_station.parameters(Group::Counter, m_port);
+}
+
+QList<Parameter *> PortModel::parameters(std::initializer_list<Role> roles) const {
     QList<Parameter *> out;
-    for (const char *b : kCounterBases)
-        if (Parameter *p = param(b))
+    for (Role role : roles)
+        if (Parameter *p = parameter(role))
             out.append(p);
     return out;
 }
 
 QList<Parameter *> PortModel::liveParameters() const {
-    return existing(*this, {"TT", "PP", "PS", "ST"});
+    return parameters({Role::TipTemperature, Role::Power, Role::Status, Role::Setpoint});
 }
 
 QList<Parameter *> PortModel::statusParameters() const {
-    return existing(*this, {"CT", "PE", "TA", "ED", "QT"});
+    return parameters({Role::ConnectedTool, Role::Error, Role::Alarm, Role::TimeToNextMode,
+                       Role::TransistorTemperature});
+}
+
+QString PortModel::write(Role role, qint64 value) {
+    Parameter *p = parameter(role);
+    if (!p)
+        return Tr::tr("this port has no %1 command").arg(m_station.commandName(role));
+    const QString why = p->setEdit(value);
+    if (why.isEmpty())
+        p->apply();
+    return why;
 }
 
 QString PortModel::setMode(int writeValue) {
-    Parameter *ps = param("PS");
-    if (!ps)
-        return Tr::tr("this port has no status command");
-    const QString why = ps->setEdit(writeValue);
-    if (why.isEmpty())
-        ps->apply();
-    return why;
+    return write(Role::Status, writeValue);
 }
 
 QString PortModel::setSelectedTemperature(qint64 celsius) {
-    Parameter *st = param("ST");
-    const QString why = st->setEdit(celsius);
-    if (why.isEmpty())
-        st->apply();
-    return why;
+    return write(Role::Setpoint, celsius);
 }
 
 } // namespace tipscope::model

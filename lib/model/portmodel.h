@@ -1,10 +1,12 @@
 // PortModel: one tool port of a station, as a view onto the station's parameters of that port
-// (TTx, STx, PPx, PSx, ...) plus what people ask of a port: the decoded status flags, the tool,
-// the error in words, the per-tool settings of every tool the family supports (connected tool
-// first), and the robot's own controls (working / stand / cooling, selected temperature).
+// (found by their catalog role: tip temperature, setpoint, power, status, ...) plus what people
+// ask of a port: the decoded status flags and alarm, the tool, the error in words and its level,
+// the per-tool settings of every tool the family supports (connected tool first), and the
+// robot's own controls (working / stand / cooling, selected temperature).
 #pragma once
 
 #include "parameter.h"
+#include "problemlevel.h"
 
 #include <QObject>
 
@@ -29,6 +31,22 @@ struct PortStatus {
     }
 };
 
+// R-TAx: the units digit is the high temperature alarm, the tens digit the low one (the robot
+// stations clear both when they are read).
+struct TemperatureAlarm {
+    bool high = false;
+    bool low = false;
+
+    [[nodiscard]] static TemperatureAlarm fromNumber(qint64 value);
+    [[nodiscard]] bool any() const { return high || low; }
+    // "High temperature, Low temperature", or "None".
+    [[nodiscard]] QString text() const;
+    [[nodiscard]] Level level() const { return any() ? Level::Warning : Level::Ok; }
+    friend bool operator==(const TemperatureAlarm &a, const TemperatureAlarm &b) {
+        return a.high == b.high && a.low == b.low;
+    }
+};
+
 class PortModel : public QObject {
     Q_OBJECT
 public:
@@ -36,7 +54,14 @@ public:
 
     [[nodiscard]] int number() const { return m_port; }
     [[nodiscard]] StationModel &station() const { return m_station; }
-    // The parameter of this port with the given two-letter base ("TT" -> TT1 on port 1).
+    // The value of this port with the given role, or null when the family has none.
+    [[nodiscard]] Parameter *parameter(protocol::Role role) const;
+    // The value's text as people read it; "—" before the first reading or when there is none.
+    [[nodiscard]] QString displayText(protocol::Role role) const;
+    // The values of this port with these roles that the family has, in the order asked.
+    [[nodiscard]] QList<Parameter *> parameters(std::initializer_list<protocol::Role> roles) const;
+    // The parameter of this port with the given two-letter base (the code without the port
+    // digit), for the console and tools that speak codes; the pages use parameter(Role).
     [[nodiscard]] Parameter *param(const char *base) const;
 
     [[nodiscard]] std::optional<qint64> tipTemperature() const;
@@ -45,15 +70,20 @@ public:
     [[nodiscard]] std::optional<PortStatus> status() const;
     [[nodiscard]] std::optional<int> tool() const;
     [[nodiscard]] QString toolName() const;
+    [[nodiscard]] QString toolName(int tool) const; // from the family's tool table
     [[nodiscard]] std::optional<int> error() const;
     [[nodiscard]] QString errorText() const;
-    [[nodiscard]] int alarmFlags() const;
+    [[nodiscard]] Level errorLevel() const; // Unknown until read
+    [[nodiscard]] std::optional<TemperatureAlarm> alarm() const;
+    [[nodiscard]] int alarmFlags() const; // R-TAx as read, 0 before
 
     [[nodiscard]] QList<int> toolOrder() const;
-    [[nodiscard]] QList<Parameter *> toolSettings(int tool) const; // adjust, sleep temp, delays
-    [[nodiscard]] QList<Parameter *> alarmSettings() const;
-    [[nodiscard]] QList<Parameter *> counters() const;
-    [[nodiscard]] QList<Parameter *> liveParameters() const; // TT, PP, PS
+    // The catalog's groups on this port, in catalog order.
+    [[nodiscard]] QList<Parameter *> settings() const;             // "port": the setpoint
+    [[nodiscard]] QList<Parameter *> toolSettings(int tool) const; // "tool" of that tool
+    [[nodiscard]] QList<Parameter *> alarmSettings() const;        // "alarm"
+    [[nodiscard]] QList<Parameter *> counters() const;             // "counter"
+    [[nodiscard]] QList<Parameter *> liveParameters() const;       // tip, power, status, setpoint
     [[nodiscard]] QList<Parameter *> statusParameters() const;
 
     // The robot's controls; each returns an error (nothing sent) or empty when the write started.
@@ -64,6 +94,8 @@ Q_SIGNALS:
     void changed();
 
 private:
+    QString write(protocol::Role role, qint64 value);
+
     StationModel &m_station;
     int m_port;
 };

@@ -1,6 +1,9 @@
 #include "profile.h"
 
 #include "devicemodel.h"
+#include "profilejson.h"
+
+#include "protocol/elide.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -62,7 +65,7 @@ QStringList Profile::problemsFor(const QString &fam) const {
     QStringList problems;
     const Catalog &cat = Catalog::builtin();
     for (const auto &[code, data] : values) {
-        const QString c = QString::fromLatin1(code);
+        const QString c = elided(QString::fromLatin1(code));
         const auto w = cat.resolve(fam, code, Direction::Write);
         const auto r = cat.resolve(fam, code, Direction::Read);
         if (!w || !r || w->spec->kind == ValueKind::Flags || w->spec->kind == ValueKind::Action) {
@@ -71,8 +74,8 @@ QStringList Profile::problemsFor(const QString &fam) const {
         }
         const auto v = decodeAnswer(*r, data);
         if (!v || v->isText) {
-            problems.append(
-                Tr::tr("%1: '%2' is not a valid data field").arg(c, QString::fromLatin1(data)));
+            problems.append(Tr::tr("%1: '%2' is not a valid data field")
+                                .arg(c, elided(QString::fromLatin1(data))));
             continue;
         }
         if (const QString why = validate(*w, v->number); !why.isEmpty())
@@ -87,11 +90,22 @@ std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error)
             *error = why;
         return std::nullopt;
     };
+    // Qt takes a NUL inside a string, and keeps the last of two equal keys: both are refused.
+    if (const QString why = profilejson::controlCharacterProblem(json); !why.isEmpty())
+        return fail(Tr::tr("not a valid JSON file: %1").arg(why));
     QJsonParseError pe;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
     if (pe.error != QJsonParseError::NoError)
         return fail(
             Tr::tr("not a valid JSON file: %1 at byte %2").arg(pe.errorString()).arg(pe.offset));
+    if (const QStringList twice = profilejson::duplicateKeys(json); !twice.isEmpty()) {
+        QStringList shown;
+        for (const QString &key : twice)
+            shown.append(elided(key));
+        return fail(Tr::tr("given more than once, so which value is meant is unclear: %1; "
+                           "nothing will be written")
+                        .arg(shown.join(QLatin1String(", "))));
+    }
     const QJsonObject root = doc.object();
     if (!doc.isObject() || root.value(QStringLiteral("format")).toString() != kFormat)
         return fail(Tr::tr("not a TipScope profile (no \"format\": \"tipscope-profile\")"));
@@ -103,7 +117,7 @@ std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error)
     Profile p;
     p.family = root.value(QStringLiteral("family")).toString().toUpper();
     if (!Catalog::builtin().family(p.family))
-        return fail(Tr::tr("unknown device family '%1'").arg(p.family));
+        return fail(Tr::tr("unknown device family '%1'").arg(elided(p.family)));
     p.model = root.value(QStringLiteral("model")).toString();
     p.softwareVersion = root.value(QStringLiteral("softwareVersion")).toString();
     p.created =
@@ -116,12 +130,8 @@ std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error)
     for (auto it = v.begin(); it != v.end(); ++it) {
         if (!it.value().isString())
             return fail(Tr::tr("%1: the value must be a data field in quotes, e.g. \"00350\"")
-                            .arg(it.key()));
-        const QByteArray code = it.key().toUpper().toLatin1();
-        for (const auto &entry : std::as_const(p.values))
-            if (entry.first == code) // "st1" and "ST1": which one was meant?
-                return fail(Tr::tr("%1: not a setting of a %2").arg(it.key(), p.family));
-        p.values.append({code, it.value().toString().toLatin1()});
+                            .arg(elided(it.key())));
+        p.values.append({it.key().toUpper().toLatin1(), it.value().toString().toLatin1()});
     }
     const QStringList problems = p.problemsFor(p.family);
     if (!problems.isEmpty())
@@ -133,7 +143,7 @@ std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error)
 bool Profile::save(const QString &path, QString *error) const {
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) || f.write(toJson()) < 0 || !f.commit()) {
-        *error = Tr::tr("cannot write %1: %2").arg(path, f.errorString());
+        *error = Tr::tr("cannot write %1: %2").arg(elidedPath(path), f.errorString());
         return false;
     }
     return true;
@@ -142,14 +152,14 @@ bool Profile::save(const QString &path, QString *error) const {
 std::optional<Profile> Profile::load(const QString &path, QString *error) {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
-        *error = Tr::tr("cannot read %1: %2").arg(path, f.errorString());
+        *error = Tr::tr("cannot read %1: %2").arg(elidedPath(path), f.errorString());
         return std::nullopt;
     }
     // Read at most one byte more than allowed: size() is 0 for a FIFO or standard input.
     const QByteArray bytes = f.read(kMaxProfileBytes + 1);
     if (bytes.size() > kMaxProfileBytes) {
         *error = Tr::tr("%1 is %2 bytes; a profile is at most %3")
-                     .arg(path)
+                     .arg(elidedPath(path))
                      .arg(qMax<qint64>(f.size(), bytes.size()))
                      .arg(kMaxProfileBytes);
         return std::nullopt;
@@ -157,7 +167,7 @@ std::optional<Profile> Profile::load(const QString &path, QString *error) {
     QString why;
     auto p = fromJson(bytes, &why);
     if (!p)
-        *error = Tr::tr("%1: %2").arg(path, why);
+        *error = Tr::tr("%1: %2").arg(elidedPath(path), why);
     return p;
 }
 

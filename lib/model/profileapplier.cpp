@@ -1,6 +1,7 @@
 #include "profileapplier.h"
 
 #include "devicemodel.h"
+#include "profilelimits.h"
 
 #include "protocol/hexbytes.h"
 
@@ -51,6 +52,14 @@ QString ApplyReport::text() const {
     return lines.join(QLatin1Char('\n'));
 }
 
+QString ApplyReport::conflictReason() const {
+    if (conflicts.isEmpty())
+        return {};
+    return Tr::tr("the profile would break the limits that bound its settings (MIT ≤ MAT, "
+                  "MIT ≤ selected temperature ≤ MAT):\n%1")
+        .arg(conflicts.join(QLatin1Char('\n')));
+}
+
 ProfileApplier::ProfileApplier(DeviceModel &device, const Profile &profile, Mode mode, bool force,
                                QObject *parent)
     : QObject(parent)
@@ -65,47 +74,61 @@ ProfileApplier::ProfileApplier(DeviceModel &device, const Profile &profile, Mode
 void ProfileApplier::start() {
     if (m_profile.family != m_device.family()) {
         if (!m_force) {
-            m_report.refused = true;
-            m_report.reason = Tr::tr("the profile is for a %1, this device is a %2 (force to apply "
-                                     "the settings they share)")
-                                  .arg(m_profile.family, m_device.family());
-            QTimer::singleShot(0, this, &ProfileApplier::finish);
+            refuse(Tr::tr("the profile is for a %1, this device is a %2 (force to apply the "
+                          "settings they share)")
+                       .arg(m_profile.family, m_device.family()));
             return;
         }
-        Profile kept = m_profile;
-        kept.values.clear();
-        for (const auto &entry : m_profile.values) {
-            const Parameter *p = m_device.parameter(entry.first);
-            if (p && Profile::isProfileParameter(*p) &&
-                Profile{m_device.family(), {}, {}, {}, {}, {entry}}
-                    .problemsFor(m_device.family())
-                    .isEmpty())
-                kept.values.append(entry);
-            else
-                m_report.skipped.append(QString::fromLatin1(entry.first));
+        keepSharedSettings();
+        if (m_profile.values.isEmpty()) {
+            refuse(Tr::tr("none of the profile's settings exists on this %1 (skipped: %2)")
+                       .arg(m_device.family(), m_report.skipped.join(QLatin1Char(' '))));
+            return;
         }
-        m_profile = kept;
     }
     if (m_mode == Mode::Apply && m_device.writesBlocked()) {
-        m_report.refused = true;
-        m_report.reason = Tr::tr("monitor-only mode is on");
-        QTimer::singleShot(0, this, &ProfileApplier::finish);
+        refuse(Tr::tr("monitor-only mode is on"));
         return;
     }
     readAll();
 }
 
+void ProfileApplier::keepSharedSettings() {
+    Profile kept = m_profile;
+    kept.values.clear();
+    for (const auto &entry : std::as_const(m_profile.values)) {
+        const Parameter *p = m_device.parameter(entry.first);
+        if (p && Profile::isProfileParameter(*p) &&
+            Profile{m_device.family(), {}, {}, {}, {}, {entry}}
+                .problemsFor(m_device.family())
+                .isEmpty())
+            kept.values.append(entry);
+        else
+            m_report.skipped.append(QString::fromLatin1(entry.first));
+    }
+    m_profile = kept;
+}
+
+void ProfileApplier::refuse(const QString &reason) {
+    m_report.refused = true;
+    m_report.reason = reason;
+    QTimer::singleShot(0, this, &ProfileApplier::finish);
+}
+
 void ProfileApplier::readAll() {
+    // The profile's settings, and the device's settings that bound them or that they bound.
+    const QList<QByteArray> codes = limitRelatedCodes(m_profile, m_device);
+    const int total = int(codes.size());
     m_pendingReads = 0;
-    for (const auto &entry : m_profile.values) {
-        Parameter *p = m_device.parameter(entry.first);
-        if (!p)
+    for (const QByteArray &code : codes) {
+        Reply *r = m_device.parameter(code)->refresh(Priority::UserRead);
+        if (!r)
             continue;
-        Reply *r = p->refresh(Priority::UserRead);
         ++m_pendingReads;
-        connect(r, &Reply::finished, this, [this] {
-            Q_EMIT progress(int(m_profile.values.size()) - m_pendingReads + 1,
-                            int(m_profile.values.size()), Tr::tr("reading the device"));
+        connect(r, &Reply::finished, this, [this, total, r, code] {
+            if (!r->ok())
+                m_unread.insert(code);
+            Q_EMIT progress(total - m_pendingReads + 1, total, Tr::tr("reading the device"));
             if (--m_pendingReads == 0)
                 compare();
         });
@@ -114,50 +137,38 @@ void ProfileApplier::readAll() {
         QTimer::singleShot(0, this, &ProfileApplier::compare);
 }
 
-QList<QByteArray> ProfileApplier::writeOrder() const {
-    // MIT and MAT bound the selected temperatures; write them first, in the order that keeps
-    // MIT <= MAT true after each write.
-    QList<QByteArray> order;
-    for (const ProfileDifference &d : m_report.differences)
-        order.append(d.code);
-    const Parameter *mit = m_device.parameter("MIT");
-    const bool raiseMitFirst = mit && mit->number() && order.contains("MIT") && [&] {
-        for (const ProfileDifference &d : m_report.differences)
-            if (d.code == "MIT")
-                return d.profileData.toInt() > *mit->number();
-        return false;
-    }();
-    QList<QByteArray> limits =
-        raiseMitFirst ? QList<QByteArray>{"MAT", "MIT"} : QList<QByteArray>{"MIT", "MAT"};
-    if (raiseMitFirst)
-        limits = {"MAT", "MIT"};
-    for (auto it = limits.rbegin(); it != limits.rend(); ++it)
-        if (order.removeAll(*it))
-            order.prepend(*it);
-    return order;
-}
-
 void ProfileApplier::compare() {
     m_report.differences = diffProfile(m_profile, m_device);
     m_report.unchanged = int(m_profile.values.size() - m_report.differences.size());
-    if (m_mode == Mode::Diff) {
+    m_report.conflicts = limitConflicts(m_profile, m_device, m_unread);
+    if (!m_report.conflicts.isEmpty() && m_mode != Mode::Diff) {
+        m_report.refused = true;
+        m_report.reason = m_report.conflictReason();
+    }
+    if (m_report.refused || m_mode == Mode::Diff) {
         finish();
         return;
     }
+    QList<QByteArray> codes;
+    for (const ProfileDifference &d : std::as_const(m_report.differences))
+        codes.append(d.code);
+    m_toWrite = limitSafeOrder(codes, m_profile, m_device);
     if (m_mode == Mode::DryRun) {
-        for (const ProfileDifference &d : m_report.differences) {
-            Frame f = Frame::write(d.code, d.profileData);
-            if (m_device.address())
-                f = f.addressed(m_device.queue().settings().robotAddress, *m_device.address());
-            m_report.frames.append(
-                QStringLiteral("%1  (%2)").arg(toHexText(f.encode()), f.toString()));
-        }
+        listFrames();
         finish();
         return;
     }
-    m_toWrite = writeOrder();
     m_next = 0;
     writeNext();
+}
+
+void ProfileApplier::listFrames() {
+    for (const QByteArray &code : std::as_const(m_toWrite)) {
+        Frame f = Frame::write(code, profileValue(code));
+        if (m_device.address())
+            f = f.addressed(m_device.queue().settings().robotAddress, *m_device.address());
+        m_report.frames.append(QStringLiteral("%1  (%2)").arg(toHexText(f.encode()), f.toString()));
+    }
 }
 
 void ProfileApplier::writeNext() {
@@ -172,10 +183,7 @@ void ProfileApplier::writeNext() {
     }
     const QByteArray code = m_toWrite.at(m_next++);
     Parameter *p = m_device.parameter(code);
-    QByteArray data;
-    for (const auto &entry : m_profile.values)
-        if (entry.first == code)
-            data = entry.second;
+    const QByteArray data = profileValue(code);
     ApplyItem item{code, p->label(), p->displayText(), {}, false, {}};
     Q_EMIT progress(m_next, int(m_toWrite.size()), Tr::tr("writing %1").arg(p->label()));
     const auto value = decodeAnswer(p->spec(), data);
@@ -202,6 +210,13 @@ void ProfileApplier::writeNext() {
         },
         Qt::SingleShotConnection);
     p->apply();
+}
+
+QByteArray ProfileApplier::profileValue(const QByteArray &code) const {
+    for (const auto &[c, data] : m_profile.values)
+        if (c == code)
+            return data;
+    return {};
 }
 
 void ProfileApplier::finish() {

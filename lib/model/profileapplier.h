@@ -1,16 +1,23 @@
 // ProfileApplier: reads a device's current values, compares them with a profile, and (unless
 // asked only for the difference or a dry run) writes what differs, one value at a time, each
-// proved by its read-back before the next is sent, so limits that depend on each other (MIT,
-// MAT, then the selected temperatures) are always checked against the device's real state.
+// proved by its read-back before the next is sent.
+//
+// Before the first write the whole profile is checked against itself and the device's current
+// values (profilelimits.h: MIT <= STx <= MAT on every port): a profile that would break a limit
+// is refused whole, nothing written, and the report's `conflicts` say why; a diff lists them
+// too. A profile that passes is written in an order that keeps every limit after each write,
+// and each write is still validated against the device's state when it is sent.
 // The report says what changed, what was already right, what failed and why; a dry run lists
 // the exact frames that would be sent. A profile of another family is refused unless forced,
-// and then only the settings the device has are applied. Cancel stops before the next write.
+// and then only the settings the device has are applied; if it has none, the profile is
+// refused. Cancel stops before the next write.
 #pragma once
 
 #include "profile.h"
 
 #include <QObject>
 #include <QPointer>
+#include <QSet>
 
 namespace tipscope::model {
 
@@ -35,10 +42,15 @@ struct ApplyReport {
     QList<ApplyItem> written; // one per difference attempted
     QStringList frames;       // dry run: "02 30 ... (00→01 W ST1 00350)"
     QStringList skipped;      // forced profiles: entries the device does not have
+    QStringList conflicts;    // limits the profile would break (see profilelimits.h)
     int unchanged = 0;
     [[nodiscard]] int failedCount() const;
-    [[nodiscard]] bool ok() const { return !refused && !cancelled && failedCount() == 0; }
+    [[nodiscard]] bool ok() const {
+        return !refused && !cancelled && conflicts.isEmpty() && failedCount() == 0;
+    }
     [[nodiscard]] QString text() const; // for people, one line per item
+    // Why the conflicts refuse the profile, the conflicts one a line; empty without conflicts.
+    [[nodiscard]] QString conflictReason() const;
 };
 
 class ProfileApplier : public QObject {
@@ -57,11 +69,14 @@ Q_SIGNALS:
     void finished(const tipscope::model::ApplyReport &report);
 
 private:
+    void keepSharedSettings();
+    void refuse(const QString &reason);
     void readAll();
     void compare();
+    void listFrames();
     void writeNext();
     void finish();
-    [[nodiscard]] QList<QByteArray> writeOrder() const;
+    [[nodiscard]] QByteArray profileValue(const QByteArray &code) const;
 
     DeviceModel &m_device;
     Profile m_profile;
@@ -69,6 +84,7 @@ private:
     bool m_force;
     bool m_cancelled = false;
     int m_pendingReads = 0;
+    QSet<QByteArray> m_unread; // codes whose read for this run failed
     QList<QByteArray> m_toWrite;
     int m_next = 0;
     ApplyReport m_report;

@@ -33,7 +33,11 @@ const QStringList kFeederSeries = {QStringLiteral("fed"), QStringLiteral("speed"
 } // namespace
 
 Session::Session(QObject *parent)
-    : QObject(parent) {
+    : Session(protocol::Catalog::builtin(), parent) {}
+
+Session::Session(const protocol::Catalog &catalog, QObject *parent)
+    : QObject(parent)
+    , m_catalog(catalog) {
     m_log.setClock([this] { return sampleTimeMs(); });
     m_stateText = Tr::tr("disconnected");
 }
@@ -164,9 +168,11 @@ void Session::identify(std::optional<int> address) {
         for (const DeviceInfo &d : m_discovery->devices())
             if (d.address == address)
                 found.append(d);
-        if (found.isEmpty() && address) {
-            // Not a factory address: ask it directly.
-            Reply *r = m_line->queue().enqueue(Request::read(address, "SMN"), this);
+        // Not a factory address: ask it directly (a catalog without a model name cannot).
+        const protocol::CommandSpec *modelName = m_catalog.command(protocol::Role::ModelName);
+        if (found.isEmpty() && address && modelName) {
+            Reply *r = m_line->queue().enqueue(
+                Request::read(address, modelName->pattern.toLatin1()), this);
             connect(r, &Reply::finished, this, [this, r, address] {
                 r->deleteLater();
                 QList<DeviceInfo> one;
@@ -174,7 +180,7 @@ void Session::identify(std::optional<int> address) {
                     DeviceInfo d;
                     d.address = address;
                     d.model = QString::fromLatin1(r->answer().data).trimmed();
-                    d.family = protocol::Catalog::builtin().familyForModel(d.model);
+                    d.family = m_catalog.familyForModel(d.model);
                     one.append(d);
                 }
                 adoptDevices(one);
@@ -192,12 +198,15 @@ void Session::adoptDevices(const QList<DeviceInfo> &found) {
         if (info.family.isEmpty())
             continue;
         DeviceModel *d = nullptr;
-        if (protocol::Catalog::builtin().family(info.family)->isFeeder()) {
-            auto *f = new FeederModel(m_line->queue(), info, this);
+        const protocol::FamilyInfo *family = m_catalog.family(info.family);
+        if (!family)
+            continue;
+        if (family->isFeeder()) {
+            auto *f = new FeederModel(m_line->queue(), info, m_catalog, this);
             recordTelemetry(f);
             d = f;
         } else {
-            auto *s = new StationModel(m_line->queue(), info, this);
+            auto *s = new StationModel(m_line->queue(), info, m_catalog, this);
             recordTelemetry(s);
             d = s;
         }
@@ -231,16 +240,20 @@ qint64 Session::sampleTimeMs() const {
 }
 
 void Session::recordTelemetry(StationModel *station) {
+    using protocol::Role;
     for (PortModel *port : station->ports()) {
         const TelemetryKey key = telemetryKey(*station, port->number());
         m_telemetry.ensureBuffer(key, kPortSeries);
+        Parameter *tip = port->parameter(Role::TipTemperature);
+        if (!tip)
+            continue;
         // A sample per tip-temperature reading; the other series carry their latest values.
-        connect(port->param("TT"), &Parameter::updated, this, [this, station, port, key] {
-            const auto status = port->param("PS")->number();
+        connect(tip, &Parameter::updated, this, [this, station, port, key] {
+            const auto status = station->number(Role::Status, port->number());
             // A series starting at 0 before its first reading would draw a false drop and spoil
             // the measurements: record once the setpoint, power and temperatures are known.
-            const auto transistor = carried(port->param("QT"));
-            const auto transformer = carried(station->parameter("TT0"));
+            const auto transistor = carried(port->parameter(Role::TransistorTemperature));
+            const auto transformer = carried(station->parameter(Role::TransformerTemperature));
             if (!port->selectedTemperature() || !port->power() || !transistor || !transformer)
                 return;
             m_telemetry.append(key, sampleTimeMs(),
@@ -255,12 +268,16 @@ void Session::recordTelemetry(StationModel *station) {
 void Session::recordTelemetry(FeederModel *feeder) {
     const TelemetryKey key = telemetryKey(*feeder, 0);
     m_telemetry.ensureBuffer(key, kFeederSeries);
-    connect(feeder->parameter("FDL"), &Parameter::updated, this, [this, feeder, key] {
+    using protocol::Role;
+    Parameter *fedLength = feeder->parameter(Role::FedLength);
+    if (!fedLength)
+        return;
+    connect(fedLength, &Parameter::updated, this, [this, feeder, fedLength, key] {
         // As for the ports: the speed is a setting read less often than the fed length, and a
         // 0 before its first reading would draw a false step and spoil the window's mean.
-        const auto fed = carried(feeder->parameter("FDL"));
-        const auto speed = carried(feeder->parameter("SPD"));
-        const auto feeding = carried(feeder->parameter("FDS"));
+        const auto fed = carried(fedLength);
+        const auto speed = carried(feeder->parameter(Role::FeedSpeed));
+        const auto feeding = carried(feeder->parameter(Role::Feeding));
         if (!fed || !speed || !feeding)
             return;
         m_telemetry.append(key, sampleTimeMs(), {*fed, *speed, *feeding == 1 ? 1 : 0});

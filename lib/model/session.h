@@ -4,7 +4,9 @@
 // opens it, finds the devices (or identifies the one the settings name), and builds a
 // StationModel or FeederModel for each, registered with the poll scheduler, the event log and
 // the telemetry recorder. A line that is lost keeps its device models: the line reconnects by
-// itself and polling resumes. Monitor-only and the temperature unit apply to every device.
+// itself and polling resumes. Monitor-only and the temperature unit apply to every device. The
+// device models describe their devices from the built-in catalog unless the session is given
+// another (tests add entries); it must outlive the session.
 #pragma once
 
 #include "eventlog.h"
@@ -43,6 +45,7 @@ public:
     };
 
     explicit Session(QObject *parent = nullptr);
+    explicit Session(const protocol::Catalog &catalog, QObject *parent = nullptr);
     ~Session() override;
 
     void connectTo(const Settings &settings);
@@ -86,6 +89,7 @@ private:
     [[nodiscard]] QString connectedText() const;
     [[nodiscard]] qint64 sampleTimeMs() const;
 
+    const protocol::Catalog &m_catalog;
     Settings m_settings;
     std::unique_ptr<sim::SimLine> m_demo;
     std::unique_ptr<link::Line> m_line;

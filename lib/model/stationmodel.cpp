@@ -13,8 +13,8 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(StationModel)
 };
 
-Event::Severity severityOf(const QString &tableName, int code) {
-    const QString s = Catalog::builtin().severity(tableName, code);
+Event::Severity severityOf(const Catalog &catalog, const QString &tableName, int code) {
+    const QString s = catalog.severity(tableName, code);
     if (s == QLatin1String("error"))
         return Event::Severity::Error;
     if (s == QLatin1String("warning"))
@@ -24,76 +24,78 @@ Event::Severity severityOf(const QString &tableName, int code) {
 } // namespace
 
 StationModel::StationModel(link::RequestQueue &queue, const link::DeviceInfo &info, QObject *parent)
-    : DeviceModel(queue, info, parent) {
+    : StationModel(queue, info, Catalog::builtin(), parent) {}
+
+StationModel::StationModel(link::RequestQueue &queue, const link::DeviceInfo &info,
+                           const Catalog &catalog, QObject *parent)
+    : DeviceModel(queue, info, catalog, parent) {
     for (int p = 1; p <= familyInfo().ports; ++p)
         m_ports.append(new PortModel(*this, p, this));
 }
 
 QList<Parameter *> StationModel::stationSettings() const {
-    QList<Parameter *> out;
-    for (const char *code : {"MAT", "MIT", "PLM"})
-        if (Parameter *p = parameter(code))
-            out.append(p);
-    return out;
+    return parameters(Group::Station, 0);
 }
 
 QList<Parameter *> StationModel::dispensingSettings() const {
-    QList<Parameter *> out;
-    for (Parameter *p : parameters())
-        if (p->meta().group == QLatin1String("dispensing"))
-            out.append(p);
-    return out;
+    return parameters(Group::Dispensing);
+}
+
+QList<Parameter *> StationModel::counters() const {
+    return parameters(Group::Counter, 0);
 }
 
 std::optional<int> StationModel::stationError() const {
-    const Parameter *p = parameter("SER");
-    return p && p->number() ? std::optional<int>(int(*p->number())) : std::nullopt;
+    const auto v = number(Role::Error);
+    return v ? std::optional<int>(int(*v)) : std::nullopt;
 }
 
 QString StationModel::stationErrorText() const {
     const auto e = stationError();
-    return e ? Catalog::builtin().stationErrorText(family(), *e, Wording::Translated) : Tr::tr("—");
+    return e ? catalog().stationErrorText(family(), *e, Wording::Translated) : Tr::tr("—");
+}
+
+Level StationModel::stationErrorLevel() const {
+    return levelOf(catalog(), familyInfo().stationErrors, stationError());
 }
 
 std::optional<qint64> StationModel::transformerTemperature() const {
-    const Parameter *p = parameter("TT0");
-    return p ? p->number() : std::nullopt;
+    return number(Role::TransformerTemperature);
 }
 
 std::optional<bool> StationModel::fusePresent() const {
-    const Parameter *p = parameter("FST");
-    return p && p->number() ? std::optional<bool>(*p->number() == 1) : std::nullopt;
+    const auto v = number(Role::Fuse);
+    return v ? std::optional<bool>(*v == 1) : std::nullopt;
 }
 
-QString StationModel::triggerAction(const char *code, Confirmation c, qint64 argument) {
-    Action *a = action(code);
+QString StationModel::triggerAction(Role role, Confirmation c, qint64 argument) {
+    Action *a = action(role);
     if (!a)
-        return Tr::tr("%1 does not support %2").arg(displayName(), QString::fromLatin1(code));
+        return Tr::tr("%1 does not support %2").arg(displayName(), commandName(role));
     return a->trigger(c, argument);
 }
 
 QString StationModel::saveToMemory() {
-    Action *nvs = action("NVS");
-    if (!nvs)
+    Action *save = action(Role::SaveToMemory);
+    if (!save)
         return Tr::tr("%1 cannot save to memory").arg(displayName());
     connect(
-        nvs, &Action::finished, this,
-        [this](bool ok) {
+        save, &Action::finished, this,
+        [this, code = QString::fromLatin1(save->code())](bool ok) {
             if (!ok)
                 return;
             for (Parameter *p : parameters())
-                if (p->meta().savedBy == QLatin1String("NVS"))
+                if (p->meta().savedBy == code)
                     p->markSaved();
         },
         Qt::SingleShotConnection);
-    return nvs->trigger();
+    return save->trigger();
 }
 
 void StationModel::onParameterChanged(Parameter *p) {
-    const CommandSpec &s = p->meta();
-    if (s.pattern == QLatin1String("SER") || s.pattern == QLatin1String("PEx") ||
-        s.pattern == QLatin1String("TAx") || s.pattern == QLatin1String("PSx"))
-        logChange(p, s.usesPort() ? p->spec().port : 0);
+    const Role role = p->meta().role;
+    if (role == Role::Error || role == Role::Alarm || role == Role::Status)
+        logChange(p, p->spec().port);
 }
 
 void StationModel::logChange(Parameter *p, int port) {
@@ -107,23 +109,23 @@ void StationModel::logChange(Parameter *p, int port) {
     m_lastLogged.insert(code, *v);
     if (before == *v && !first)
         return;
-    const QString pattern = p->meta().pattern;
+    const Role role = p->meta().role;
     const QString source = sourceName(port);
-    if (pattern == QLatin1String("PSx")) {
+    if (role == Role::Status) {
         if (!first)
             log->add(Event::Kind::Status, Event::Severity::Info, source,
                      Tr::tr("%1 → %2").arg(PortStatus::fromNumber(before).text(),
                                            PortStatus::fromNumber(*v).text()));
-    } else if (pattern == QLatin1String("TAx")) {
+    } else if (role == Role::Alarm) {
         if (*v != 0)
             log->add(Event::Kind::Alarm, Event::Severity::Warning, source, p->displayText());
     } else {
-        const bool isStation = pattern == QLatin1String("SER");
+        const bool isStation = port == 0;
         const QString table = isStation ? familyInfo().stationErrors : familyInfo().portErrors;
-        const int code = isStation ? int(*v) : Catalog::builtin().canonicalPortError(int(*v));
+        const int code = isStation ? int(*v) : catalog().canonicalPortError(int(*v));
         if (code != 0)
             log->add(isStation ? Event::Kind::StationError : Event::Kind::PortError,
-                     severityOf(table, code), source, p->displayText());
+                     severityOf(catalog(), table, code), source, p->displayText());
         else if (!first)
             log->add(isStation ? Event::Kind::StationError : Event::Kind::PortError,
                      Event::Severity::Info, source, Tr::tr("error cleared"));

@@ -27,7 +27,7 @@ QJsonObject deviceJson(const DeviceModel &d) {
         values.append(
             QJsonObject{{QStringLiteral("code"), QString::fromLatin1(p->code())},
                         {QStringLiteral("name"), p->meta().name},
-                        {QStringLiteral("group"), p->meta().group},
+                        {QStringLiteral("group"), protocol::groupName(p->meta().group)},
                         {QStringLiteral("data"), QString::fromLatin1(p->rawValue())},
                         {QStringLiteral("text"), p->displayText()},
                         {QStringLiteral("state"),

@@ -182,6 +182,16 @@ QString Catalog::familyForModel(const QString &modelName) const {
     return {};
 }
 
+const CommandSpec *Catalog::command(Role role, const QString &familyName) const {
+    const FamilyInfo *f = familyName.isEmpty() ? nullptr : family(familyName);
+    if (role == Role::None || (!familyName.isEmpty() && !f))
+        return nullptr;
+    for (const CommandSpec &spec : m_commands)
+        if (spec.role == role && (!f || spec.families.contains(f->name)))
+            return &spec;
+    return nullptr;
+}
+
 // `fallback` is a sentence with %1 for the code, marked for lupdate in the context "Catalog".
 static QString lookup(const QMap<int, QString> &table, int code, const char *fallback,
                       Wording wording) {

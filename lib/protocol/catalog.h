@@ -5,9 +5,12 @@
 // its pattern ("STx": port x; "Axy": port x, tool y); resolve() turns a concrete wire code ("ST1",
 // "A12") for one family and direction into a ResolvedCommand with the family's numbers filled in
 // (port and tool checked, temperature limits, enum table). The catalog is immutable after loading
-// and safe to share; builtin() parses the embedded resources once.
+// and safe to share; builtin() parses the embedded resources once, load() parses any other pair
+// (tests load a catalog with extra entries). Each entry's role and group (catalogroles.h) say
+// what it is for and where it is shown, so no model or page needs to spell its code.
 #pragma once
 
+#include "catalogroles.h"
 #include "catalogtext.h"
 
 #include <QByteArray>
@@ -57,7 +60,13 @@ struct CommandSpec {
     QMap<int, QString> writeValues; // values a write may carry (flags kinds)
     QString digitsTable;
     QByteArray fixedData; // actions
-    QString group;
+    Group group = Group::Station;
+    Role role = Role::None;
+    // Counters: what is counted, shared by a total and its partial counter ("Plugged hours"),
+    // so a table can put the two in one row; empty when the name says it.
+    QString quantity;
+    bool partial = false; // a partial counter, or its reset, beside a total one
+    QString label;        // the words on a button that runs the command; empty: the name
     QString poll;
     bool dangerous = false;
     bool isVolatile = false;
@@ -70,6 +79,8 @@ struct CommandSpec {
     [[nodiscard]] bool accepts(Direction d) const {
         return d == Direction::Read ? readable : writable;
     }
+    // Actions are the write-only commands and those that carry fixed data (DeviceModel).
+    [[nodiscard]] bool isAction() const { return kind == ValueKind::Action || !readable; }
 };
 
 struct FamilyInfo {
@@ -128,6 +139,10 @@ public:
     [[nodiscard]] QList<ResolvedCommand> expand(const QString &family, Direction direction) const;
     // Family whose name starts the model name reported by R-SMN ("DME-2C" -> "DME").
     [[nodiscard]] QString familyForModel(const QString &modelName) const;
+    // The first entry with this role (among the family's, when one is named), for the few places
+    // that must name a command before they know a device: identifying one, saying what a family
+    // lacks. Null when there is none.
+    [[nodiscard]] const CommandSpec *command(Role role, const QString &family = {}) const;
 
     // What a code means, for people: the table's text, or a sentence for a code not listed.
     // Wording::Translated for what is shown, Wording::Catalog for data output (catalogtext.h).

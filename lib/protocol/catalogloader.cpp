@@ -180,7 +180,21 @@ bool CatalogLoader::parseCommand(const QJsonObject &o, const QJsonObject &groups
     s.writeValues = intMap(o.value(QLatin1String("writeValues")).toObject());
     s.digitsTable = o.value(QLatin1String("digits")).toString();
     s.fixedData = o.value(QLatin1String("data")).toString().toLatin1();
-    s.group = o.value(QLatin1String("group")).toString();
+    const QString group = o.value(QLatin1String("group")).toString();
+    const auto groupId = groupFromName(group);
+    if (!groupId)
+        return fail(QStringLiteral("command %1 has unknown group '%2'").arg(s.pattern, group));
+    s.group = *groupId;
+    if (const QJsonValue role = o.value(QLatin1String("role")); !role.isUndefined()) {
+        const auto roleId = roleFromName(role.toString());
+        if (!roleId)
+            return fail(
+                QStringLiteral("command %1 has unknown role '%2'").arg(s.pattern, role.toString()));
+        s.role = *roleId;
+    }
+    s.quantity = o.value(QLatin1String("quantity")).toString();
+    s.partial = o.value(QLatin1String("partial")).toBool();
+    s.label = o.value(QLatin1String("label")).toString();
     s.poll = o.value(QLatin1String("poll")).toString();
     s.dangerous = o.value(QLatin1String("dangerous")).toBool();
     s.isVolatile = o.value(QLatin1String("volatile")).toBool();

@@ -1,6 +1,7 @@
 #include "valuecodec.h"
 
 #include "datafield.h"
+#include "elide.h"
 
 #include <QCoreApplication>
 #include <cmath>
@@ -179,13 +180,13 @@ std::optional<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &
             return *n;
         if (auto d = parseDelayText(t))
             return *d;
-        return fail(Tr::tr("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(t));
+        return fail(Tr::tr("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(elided(t)));
     }
     bool ok = false;
     const qint64 v = t.toLongLong(&ok);
     if (!ok)
         return fail(Tr::tr("'%1' is not a whole number; %2 takes %3")
-                        .arg(t, QString::fromLatin1(cmd.code), allowedText(cmd)));
+                        .arg(elided(t), QString::fromLatin1(cmd.code), allowedText(cmd)));
     return v;
 }
 

@@ -1,9 +1,11 @@
 // The raw frame console page, driven through its real widgets against the demo line (a
-// simulated DME at 01 and an SFR feeder at 10), plus the builder's encoding rules on their own.
+// simulated DME at 01 and an SFR feeder at 10). The builder's rules are tested on their own in
+// tests/model/tst_framecomposer.cpp.
 #include "pages/consolepage.h"
 #include "pages/framebuilder.h"
 
 #include "link/line.h"
+#include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 
 #include <QAction>
@@ -13,6 +15,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -35,14 +38,14 @@ private Q_SLOTS:
     void init();
     void cleanup();
 
-    void composeFrameEncodesWhatCanBeEncoded_data();
-    void composeFrameEncodesWhatCanBeEncoded();
     void builtReadOfModelNameShowsTheAnswerInTheTable();
     void rawHexWithABadDigitShowsTheErrorAndSendsNothing();
+    void everyExampleFrameThePageShowsDecodes();
+    void theRawHexExampleIsAReadTheDeviceAnswers();
     void pauseHoldsRowsAndResumeShowsThem();
     void aHiddenConsoleTakesRowsInLargerBatchesAndCatchesUpWhenShown();
     void addressFilterHidesOtherDevicesRows();
-    void monitorOnlyBlocksWritesAndRawBytesButNotReads();
+    void monitorOnlyRefusesWritesAndSaysWhyButReadsGoOut();
     void saveWritesEveryRowToTheFile();
     void saveToAnUnwritablePathReportsTheError();
     void pageFollowsTheNewLineAfterReconnecting();
@@ -103,76 +106,6 @@ void TestConsolePage::selectDevice(const QString &address) {
     QVERIFY2(device->currentText().startsWith(address), qPrintable(device->currentText()));
 }
 
-void TestConsolePage::composeFrameEncodesWhatCanBeEncoded_data() {
-    QTest::addColumn<int>("target"); // -1: no addresses
-    QTest::addColumn<QChar>("header");
-    QTest::addColumn<QString>("command");
-    QTest::addColumn<QString>("data");
-    QTest::addColumn<bool>("encodable");
-    QTest::addColumn<bool>("warning");
-    QTest::addColumn<QByteArray>("hex"); // empty: not checked
-
-    const QChar w(QLatin1Char('W')), r(QLatin1Char('R'));
-    // The guide's worked frames.
-    QTest::newRow("addressed write, guide example")
-        << 1 << w << "MAT"
-        << "00375" << true << false << QByteArray("0230303031574D41543030333735033E");
-    QTest::newRow("write without addresses, guide example")
-        << -1 << w << "MAT"
-        << "00375" << true << false << QByteArray("02574D41543030333735033F");
-    QTest::newRow("read of the model name") << 1 << r << "SMN"
-                                            << "" << true << false << QByteArray();
-    QTest::newRow("out of range is sent but warned") << 1 << w << "MAT"
-                                                     << "00900" << true << true << QByteArray();
-    QTest::newRow("off the step is sent but warned") << 1 << w << "MAT"
-                                                     << "00377" << true << true << QByteArray();
-    QTest::newRow("short number is sent as typed but warned")
-        << 1 << w << "MAT"
-        << "375" << true << true << QByteArray();
-    QTest::newRow("unknown command is sent but warned") << 1 << r << "XYZ"
-                                                        << "" << true << true << QByteArray();
-    QTest::newRow("read with data is sent but warned") << 1 << r << "SMN"
-                                                       << "1" << true << true << QByteArray();
-    QTest::newRow("two-character command is refused") << 1 << r << "SM"
-                                                      << "" << false << false << QByteArray();
-    QTest::newRow("four-character command is refused") << 1 << r << "SMNX"
-                                                       << "" << false << false << QByteArray();
-    QTest::newRow("control character in data is refused") << 1 << w << "MAT"
-                                                          << QString::fromLatin1("003\x03"
-                                                                                 "5")
-                                                          << false << false << QByteArray();
-    QTest::newRow("non-ASCII data is refused")
-        << 1 << w << "MAT" << QStringLiteral("00°75") << false << false << QByteArray();
-}
-
-void TestConsolePage::composeFrameEncodesWhatCanBeEncoded() {
-    QFETCH(int, target);
-    QFETCH(QChar, header);
-    QFETCH(QString, command);
-    QFETCH(QString, data);
-    QFETCH(bool, encodable);
-    QFETCH(bool, warning);
-    QFETCH(QByteArray, hex);
-
-    gui::FrameInput in;
-    in.source = 0;
-    if (target >= 0)
-        in.target = target;
-    in.family = QStringLiteral("DME");
-    in.header = header == QLatin1Char('W') ? protocol::Header::Write : protocol::Header::Read;
-    in.command = command;
-    in.data = data;
-    const gui::FrameDraft draft = gui::composeFrame(in);
-    QCOMPARE(draft.encodable, encodable);
-    QCOMPARE(draft.problem.isEmpty(), encodable);
-    if (encodable) {
-        QVERIFY2(draft.warning == warning, qPrintable(draft.hint));
-        QCOMPARE(draft.frame.data, data.toLatin1()); // verbatim, never "corrected"
-    }
-    if (!hex.isEmpty())
-        QCOMPARE(draft.frame.encode().toHex().toUpper(), hex);
-}
-
 void TestConsolePage::builtReadOfModelNameShowsTheAnswerInTheTable() {
     quietLine();
     // Discovery already read SMN; only an answer after this clear can come from our send.
@@ -195,7 +128,7 @@ void TestConsolePage::builtReadOfModelNameShowsTheAnswerInTheTable() {
     auto answerRow = [this] {
         const QAbstractItemModel *rows = m_page->visibleRows();
         for (int r = 0; r < rows->rowCount(); ++r)
-            if (cell(r, ConsoleModel::Direction) == QLatin1String("frame") &&
+            if (cell(r, ConsoleModel::Direction) == QLatin1String("RX") &&
                 cell(r, ConsoleModel::Command) == QLatin1String("SMN") &&
                 cell(r, ConsoleModel::Data).contains(QLatin1String("DME-2C")))
                 return r;
@@ -226,6 +159,43 @@ void TestConsolePage::rawHexWithABadDigitShowsTheErrorAndSendsNothing() {
     QTRY_COMPARE_WITH_TIMEOUT(queue().stats().sent, sentBefore + 1, kTrafficMs);
 }
 
+void TestConsolePage::everyExampleFrameThePageShowsDecodes() {
+    // Hex that starts with STX, wherever the page shows it: placeholders, labels, tooltips.
+    static const QRegularExpression frameHex(QStringLiteral("\\b02( [0-9A-Fa-f]{2}){4,}\\b"));
+    QStringList shown;
+    for (const QWidget *w : m_page->findChildren<QWidget *>()) {
+        shown << w->toolTip();
+        if (const auto *edit = qobject_cast<const QLineEdit *>(w))
+            shown << edit->placeholderText() << edit->text();
+        if (const auto *label = qobject_cast<const QLabel *>(w))
+            shown << label->text();
+    }
+    int examples = 0;
+    for (const QString &text : std::as_const(shown)) {
+        for (const QRegularExpressionMatch &m : frameHex.globalMatch(text)) {
+            ++examples;
+            const auto bytes = protocol::parseHexBytes(m.captured());
+            QVERIFY2(bytes, qPrintable(m.captured()));
+            QString why;
+            QVERIFY2(protocol::parseFrame(*bytes, nullptr, &why),
+                     qPrintable(m.captured() + QStringLiteral(": ") + why));
+        }
+    }
+    QVERIFY2(examples >= 2, qPrintable(QString::number(examples))); // raw hex and the preview
+}
+
+void TestConsolePage::theRawHexExampleIsAReadTheDeviceAnswers() {
+    quietLine();
+    auto *raw = child<QLineEdit>("rawHexEdit");
+    raw->setText(raw->placeholderText());
+    QTest::mouseClick(child<QPushButton>("sendRawButton"), Qt::LeftButton);
+    auto *outcome = child<QLabel>("outcomeLabel");
+    QTRY_VERIFY_WITH_TIMEOUT(!outcome->text().contains(QLatin1String("waiting")), kTrafficMs);
+    QVERIFY2(outcome->text().contains(QLatin1String("answered")) &&
+                 outcome->text().contains(QLatin1String("DME-2C")),
+             qPrintable(outcome->text()));
+}
+
 void TestConsolePage::pauseHoldsRowsAndResumeShowsThem() {
     ConsoleModel &console = m_page->consoleModel();
     auto *pause = child<QAction>("pauseAction");
@@ -238,6 +208,24 @@ void TestConsolePage::pauseHoldsRowsAndResumeShowsThem() {
                              kTrafficMs); // polling goes on
     QCOMPARE(console.rowCount(), rowsAtPause);
     QCOMPARE(m_page->visibleRows()->rowCount(), shownAtPause);
+    // The count of held rows is shown as they come, and stays in sight on a narrow page, where
+    // the toolbar folds its last items away.
+    auto *count = child<QLabel>("rowCountLabel");
+    const auto heldShown = [&] {
+        return count->text().endsWith(QStringLiteral("paused: %1 held").arg(console.heldCount()));
+    };
+    quietLine(); // a count that stands still, to compare with
+    QVERIFY(console.heldCount() >= 3);
+    QTRY_VERIFY2(heldShown(), qPrintable(count->text()));
+    const int heldBefore = console.heldCount();
+    QObject owner;
+    queue().enqueue(link::Request::read(1, "SMN"), &owner);
+    QTRY_VERIFY_WITH_TIMEOUT(console.heldCount() > heldBefore && queue().pendingCount() == 0,
+                             kTrafficMs);
+    QTRY_VERIFY2(heldShown(), qPrintable(count->text()));
+    m_page->resize(700, 800);
+    QTRY_VERIFY(count->isVisible());
+    QVERIFY(m_page->rect().contains(count->geometry()));
 
     pause->trigger();
     QVERIFY(!console.isPaused());
@@ -295,12 +283,14 @@ void TestConsolePage::addressFilterHidesOtherDevicesRows() {
     QCOMPARE(shown->rowCount(), m_page->consoleModel().rowCount());
 }
 
-void TestConsolePage::monitorOnlyBlocksWritesAndRawBytesButNotReads() {
+void TestConsolePage::monitorOnlyRefusesWritesAndSaysWhyButReadsGoOut() {
     quietLine();
     selectDevice(QStringLiteral("01"));
     auto *header = child<QComboBox>("headerCombo");
     auto *send = child<QPushButton>("sendFrameButton");
     auto *sendRaw = child<QPushButton>("sendRawButton");
+    auto *hint = child<QLabel>("hintLabel");
+    auto *rawStatus = child<QLabel>("rawStatusLabel");
     header->setCurrentIndex(1); // W
     child<QComboBox>("commandCombo")->setEditText(QStringLiteral("MAT"));
     child<QLineEdit>("dataEdit")->setText(QStringLiteral("00450"));
@@ -312,18 +302,31 @@ void TestConsolePage::monitorOnlyBlocksWritesAndRawBytesButNotReads() {
     QVERIFY(send->toolTip().contains(QLatin1String("Monitor-only")));
     QVERIFY(!sendRaw->isEnabled());
     QVERIFY(sendRaw->toolTip().contains(QLatin1String("Monitor-only")));
+    // Where the person looks, not only in a tooltip.
+    QVERIFY2(hint->text().startsWith(QLatin1String("Monitor-only")), qPrintable(hint->text()));
+    QVERIFY2(rawStatus->text().startsWith(QLatin1String("Monitor-only")),
+             qPrintable(rawStatus->text()));
 
-    // Return in the fields must not get around the disabled buttons.
+    // Return in the fields does not get around the disabled buttons, and says so.
     const qint64 sentBefore = queue().stats().sent;
     QTest::keyClick(child<QLineEdit>("dataEdit"), Qt::Key_Return);
+    QVERIFY2(
+        child<QLabel>("outcomeLabel")->text().endsWith(QLatin1String("monitor-only mode is on")),
+        qPrintable(child<QLabel>("outcomeLabel")->text()));
     auto *raw = child<QLineEdit>("rawHexEdit");
     raw->setText(
         protocol::toHexText(protocol::Frame::write("MAT", "00450").addressed(0, 1).encode()));
+    QVERIFY(!sendRaw->isEnabled());
     QTest::keyClick(raw, Qt::Key_Return);
     QTest::qWait(300);
     QCOMPARE(queue().stats().sent, sentBefore);
 
-    header->setCurrentIndex(0); // R stays allowed
+    // Reads go out, composed or typed.
+    raw->setText(protocol::toHexText(protocol::Frame::read("SMN").addressed(0, 1).encode()));
+    QVERIFY(sendRaw->isEnabled());
+    QTest::mouseClick(sendRaw, Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(queue().stats().sent, sentBefore + 1, kTrafficMs);
+    header->setCurrentIndex(0); // R
     child<QComboBox>("commandCombo")->setEditText(QStringLiteral("SMN"));
     child<QLineEdit>("dataEdit")->clear();
     QVERIFY(send->isEnabled());

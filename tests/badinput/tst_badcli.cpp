@@ -92,11 +92,23 @@ private Q_SLOTS:
     void rawWriteRefusesEmptyAndNonAsciiData();
     void monitorRefusesDurationsThatAreNotFinite_data();
     void monitorRefusesDurationsThatAreNotFinite();
+    void hugeArgumentsAreEchoedCutWithTheirLength_data();
+    void hugeArgumentsAreEchoedCutWithTheirLength();
+    void sendOfBytesThatAreNoFrameSaysSoWhenUnanswered_data();
+    void sendOfBytesThatAreNoFrameSaysSoWhenUnanswered();
+    void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite_data();
+    void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite();
+    void profilesThatMeanTwoThingsAreRefusedByName_data();
+    void profilesThatMeanTwoThingsAreRefusedByName();
 
 private:
     [[nodiscard]] WireCount wire();
     [[nodiscard]] QByteArrayList withPort(QByteArrayList args) const;
     void check(const QByteArrayList &args, int exitCode, const QString &needle);
+    // Runs `args` against station 01 with @FILE a file holding `profile`; expects exit 2, the
+    // needle, "nothing was written/sent" (or "would be refused") and no write on the wire.
+    void checkRefusedWithoutAWrite(const QByteArray &profile, QByteArrayList args,
+                                   const QString &needle);
 
     SocatPair m_pair;
     SimProcess m_sim;
@@ -305,6 +317,167 @@ void TestBadCli::monitorRefusesDurationsThatAreNotFinite() {
                                    "50", "--duration", duration}));
     QVERIFY2(!sanitizerReported(r), qPrintable(r.err));
     QCOMPARE(r.exitCode, 1);
+}
+
+void TestBadCli::hugeArgumentsAreEchoedCutWithTheirLength_data() {
+    // Every message that quotes what was typed shows its start and its length, never 100 kB.
+    QTest::addColumn<QByteArrayList>("args");
+    QTest::addColumn<int>("exitCode");
+    const QByteArray p = "@PORT";
+    const QByteArray h = big('x');
+    const QByteArrayList st = {"--port", p, "--addr", "00:01"};
+    QTest::newRow("command") << QByteArrayList{"--port", p, h} << 1;
+    QTest::newRow("option") << QByteArrayList{"--port", p, "--" + h, "read", "ST1"} << 1;
+    QTest::newRow("command option") << QByteArrayList{"--port", p, "read", "--" + h} << 1;
+    QTest::newRow("value") << st + QByteArrayList{"write", "ST1", "9" + h} << 2;
+    QTest::newRow("delay") << st + QByteArrayList{"write", "HD1", h} << 2;
+    QTest::newRow("code to write") << st + QByteArrayList{"write", h, "350"} << 2;
+    QTest::newRow("code to read") << st + QByteArrayList{"read", h} << 2;
+    QTest::newRow("family") << QByteArrayList{"commands", "--family", h} << 1;
+    QTest::newRow("profile file") << st + QByteArrayList{"profile", "apply", "/tmp/" + h} << 2;
+    QTest::newRow("csv file") << st + QByteArrayList{"monitor", "--duration", "1", "--csv",
+                                                     "/nonexistent/" + h}
+                              << 1;
+    QTest::newRow("port") << QByteArrayList{"--port", "/tmp/" + h, "read", "ST1"} << 5;
+}
+
+void TestBadCli::hugeArgumentsAreEchoedCutWithTheirLength() {
+    QFETCH(QByteArrayList, args);
+    QFETCH(int, exitCode);
+    const WireCount before = wire();
+    const Run r = runCli(withPort(args));
+    const QString first = r.err.section(QLatin1Char('\n'), 0, 0);
+    QVERIFY2(!sanitizerReported(r), qPrintable(r.err.left(400)));
+    QVERIFY2(r.exitCode == exitCode,
+             qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(first.left(400))));
+    QVERIFY2(first.startsWith(QStringLiteral("tipscope-cli: ")), qPrintable(first.left(400)));
+    QVERIFY2(first.size() < 500, qPrintable(first.left(400)));
+    QVERIFY2(r.err.size() < 3000, qPrintable(r.err.left(400)));
+    static const QRegularExpression length(QStringLiteral("… \\(1024\\d\\d characters\\)"));
+    QVERIFY2(first.contains(length), qPrintable(first));
+    QCOMPARE(wire().writes, before.writes);
+}
+
+void TestBadCli::sendOfBytesThatAreNoFrameSaysSoWhenUnanswered_data() {
+    QTest::addColumn<QByteArray>("hex");
+    QTest::addColumn<QString>("described");
+    QTest::newRow("letters") << QByteArray("41 42 43") << "3 raw bytes, not a frame (";
+    QTest::newRow("wrong BCC, to nobody") << QByteArray("02 30 30 35 35 52 53 4D 4E 03 07")
+                                          << "11 raw bytes, not a frame (BCC is 07, expected 03)";
+    QTest::newRow("a frame to nobody")
+        << QByteArray("02 30 30 35 35 52 53 4D 4E 03 03") << "00→55 R SMN: no answer";
+}
+
+void TestBadCli::sendOfBytesThatAreNoFrameSaysSoWhenUnanswered() {
+    // The device ignores them; the message must describe what was sent, not "R :".
+    QFETCH(QByteArray, hex);
+    QFETCH(QString, described);
+    const Run r = runCli(withPort({"--port", "@PORT", "--timeout", "50", "send", hex}));
+    QVERIFY2(!sanitizerReported(r), qPrintable(r.err));
+    QCOMPARE(r.exitCode, 4);
+    QVERIFY2(r.err.contains(QStringLiteral("tipscope-cli: ") + described), qPrintable(r.err));
+}
+
+void TestBadCli::whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite_data() {
+    // setup: writes that put the station in the state the row needs (MIT 90, MAT 500 and ST1
+    // 350 come first); @FILE: a profile file with `profile` as its values.
+    QTest::addColumn<QByteArrayList>("setup");
+    QTest::addColumn<QByteArray>("profile");
+    QTest::addColumn<QByteArrayList>("args");
+    QTest::addColumn<QString>("needle");
+    const QByteArray dme = R"("format":"tipscope-profile","schema":1,"family":"DME")";
+    const QByteArrayList apply = {"profile", "apply", "@FILE"};
+    const QString inProfile =
+        QStringLiteral("ST1 450 °C (in the profile) is above MAT 400 °C (in the profile)");
+    QTest::newRow("profile: MAT below ST1, each in range")
+        << QByteArrayList{}
+        << "{" + dme + R"(,"values":{"MAT":"00400","A11":"00005","ST1":"00450"}})" << apply
+        << inProfile;
+    QTest::newRow("profile: ST1 already 450 on the device")
+        << QByteArrayList{"ST1 450"} << "{" + dme + R"(,"values":{"MAT":"00400","ST1":"00450"}})"
+        << apply << inProfile;
+    QTest::newRow("profile: ST1 450 on the device, not in the profile")
+        << QByteArrayList{"ST1 450"} << "{" + dme + R"(,"values":{"MAT":"00400"}})" << apply
+        << "ST1 450 °C (on the device now) is above MAT 400 °C (in the profile)";
+    QTest::newRow("profile: the dry run is refused too")
+        << QByteArrayList{} << "{" + dme + R"(,"values":{"MAT":"00400","ST1":"00450"}})"
+        << QByteArrayList{"profile", "apply", "--dry-run", "@FILE"} << inProfile;
+    QTest::newRow("profile: the diff says it would be refused")
+        << QByteArrayList{} << "{" + dme + R"(,"values":{"MAT":"00400","ST1":"00450"}})"
+        << QByteArrayList{"profile", "diff", "@FILE"} << "would be refused";
+    QTest::newRow("profile: forced, nothing in common")
+        << QByteArrayList{}
+        << QByteArray(R"({"format":"tipscope-profile","schema":1,"family":"DDR",)"
+                      R"("values":{"PLM":"00800"}})")
+        << QByteArrayList{"profile", "apply", "--force", "@FILE"}
+        << "none of the profile's settings exists on this DME (skipped: PLM)";
+    QTest::newRow("write: ST1 above the device's MAT")
+        << QByteArrayList{"MAT 400"} << QByteArray() << QByteArrayList{"write", "ST1", "450"}
+        << "450 °C is not allowed for Selected temperature: allowed is 90 °C to 400 °C";
+    QTest::newRow("write: ST1 below the device's MIT")
+        << QByteArrayList{"MIT 300", "ST1 350"} << QByteArray()
+        << QByteArrayList{"write", "ST1", "250"} << "allowed is 300 °C to 500 °C";
+    QTest::newRow("write: MIT above the device's MAT")
+        << QByteArrayList{"MAT 400"} << QByteArray() << QByteArrayList{"write", "MIT", "450"}
+        << "450 °C is not allowed for Minimum temperature";
+}
+
+void TestBadCli::whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite() {
+    QFETCH(QByteArrayList, setup);
+    QFETCH(QByteArray, profile);
+    QFETCH(QByteArrayList, args);
+    QFETCH(QString, needle);
+    for (const QByteArray &w : QByteArrayList{"MIT 90", "MAT 500", "ST1 350"} + setup) {
+        const Run r =
+            runCli(withPort({"--port", "@PORT", "--addr", "00:01", "write"}) + w.split(' '));
+        QVERIFY2(r.exitCode == 0, qPrintable(w + ": " + r.err));
+    }
+    checkRefusedWithoutAWrite(profile, args, needle);
+}
+
+void TestBadCli::profilesThatMeanTwoThingsAreRefusedByName_data() {
+    QTest::addColumn<QByteArray>("profile");
+    QTest::addColumn<QString>("needle");
+    const QByteArray head = R"({"format":"tipscope-profile","schema":1,"family":"DME",)";
+    QTest::newRow("ST1 twice") << head + R"("values":{"ST1":"00300","ST1":"00450"}})"
+                               << "given more than once, so which value is meant is unclear: ST1";
+    QTest::newRow("two values objects")
+        << head + R"("values":{"ST1":"00300"},"values":{"ST1":"00450"}})"
+        << "given more than once, so which value is meant is unclear: values";
+    QTest::newRow("a NUL inside the format")
+        << QByteArray(R"({"format":"tipscope-)") + '\0' + R"(profile","schema":1})"
+        << "not a valid JSON file: a NUL byte at byte 21";
+}
+
+void TestBadCli::profilesThatMeanTwoThingsAreRefusedByName() {
+    QFETCH(QByteArray, profile);
+    QFETCH(QString, needle);
+    checkRefusedWithoutAWrite(profile, {"profile", "apply", "@FILE"}, needle);
+}
+
+void TestBadCli::checkRefusedWithoutAWrite(const QByteArray &profile, QByteArrayList args,
+                                           const QString &needle) {
+    const QByteArrayList station = {"--port", "@PORT", "--addr", "00:01"};
+    QTemporaryDir dir;
+    const QByteArray file = dir.filePath(QStringLiteral("p.json")).toLocal8Bit();
+    QFile f(QString::fromLocal8Bit(file));
+    QVERIFY(f.open(QIODevice::WriteOnly) && f.write(profile) == profile.size());
+    f.close();
+    for (QByteArray &a : args)
+        a.replace("@FILE", file);
+    const WireCount before = wire();
+    const Run r = runCli(withPort(station + args));
+    const QString what = QStringLiteral("exit %1, stderr: %2").arg(r.exitCode).arg(r.err);
+    QVERIFY2(!sanitizerReported(r), qPrintable(what));
+    QVERIFY2(r.exitCode == 2, qPrintable(what));
+    QVERIFY2(r.err.contains(needle), qPrintable(what));
+    QVERIFY2(r.err.contains(QStringLiteral("nothing was written")) ||
+                 r.err.contains(QStringLiteral("nothing will be written")) ||
+                 r.err.contains(QStringLiteral("nothing was sent")) ||
+                 r.err.contains(QStringLiteral("not a valid JSON file")) ||
+                 r.err.contains(QStringLiteral("would be refused")),
+             qPrintable(what));
+    QCOMPARE(wire().writes, before.writes); // the simulator's own count: no write frame came
 }
 
 QTEST_GUILESS_MAIN(TestBadCli)

@@ -45,6 +45,12 @@ private Q_SLOTS:
     void aFifoCannotBypassTheSizeLimit();
     void aUtf8ByteOrderMarkIsAccepted();
     void codesThatDifferOnlyInCaseAreAmbiguous();
+    void keysGivenTwiceAreRefusedByName_data();
+    void keysGivenTwiceAreRefusedByName();
+    void aNulInsideAStringIsInvalidJsonAtItsByte_data();
+    void aNulInsideAStringIsInvalidJsonAtItsByte();
+    void hugeCodesAndValuesAreEchoedCut_data();
+    void hugeCodesAndValuesAreEchoedCut();
 };
 
 void TestBadProfile::theGoodProfileLoads() {
@@ -61,6 +67,9 @@ void TestBadProfile::editorHabitsAreAccepted_data() {
     QTest::newRow("lower-case family and codes")
         << QByteArray(kGood).replace("DME", "dme").replace("ST1", "st1");
     QTest::newRow("unknown extra key") << profileWith(R"({"ST1": "00350"})", R"("editor": 1, )");
+    QTest::newRow("a code and values as keys of another object")
+        << profileWith(R"({"ST1": "00350"})",
+                       R"("editor": {"ST1": "x", "values": [{"ST1": 1}], "s": "\"ST1\": 1"}, )");
     QTest::newRow("UTF-8 comment")
         << profileWith(R"({"ST1": "00350"})", "\"comment\": \"Lötstation\", ");
 }
@@ -224,6 +233,90 @@ void TestBadProfile::codesThatDifferOnlyInCaseAreAmbiguous() {
     QString error;
     const auto p = Profile::fromJson(profileWith(R"({"st1": "00350", "ST1": "00400"})"), &error);
     QVERIFY2(!p, "two values for ST1 were accepted");
+    QVERIFY2(error.contains(QStringLiteral("more than once")) &&
+                 error.contains(QStringLiteral("ST1")),
+             qPrintable(error));
+}
+
+void TestBadProfile::keysGivenTwiceAreRefusedByName_data() {
+    // QJsonDocument keeps the last of two equal keys without a word; the file must not load.
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QStringList>("named");
+    QTest::newRow("a code twice") << profileWith(R"({"ST1": "00300", "ST1": "00450"})")
+                                  << QStringList{"ST1"};
+    QTest::newRow("a code three times, another twice")
+        << profileWith(R"({"ST1": "00300", "A11": "00001", "ST1": "00450", "ST1": "00350",
+                           "A11": "00002"})")
+        << QStringList{"ST1", "A11"};
+    QTest::newRow("spelt with an escape")
+        << profileWith(R"({"ST1": "00300", "ST1": "00450"})") << QStringList{"ST1"};
+    QTest::newRow("two values objects")
+        << QByteArray(R"({"format": "tipscope-profile", "schema": 1, "family": "DME",
+                          "values": {"ST1": "00300"}, "values": {"ST1": "00450"}})")
+        << QStringList{"values"};
+    QTest::newRow("family twice") << profileWith(R"({"ST1": "00300"})", R"("family": "DDE", )")
+                                  << QStringList{"family"};
+    QTest::newRow("format twice") << profileWith(R"({"ST1": "00300"})",
+                                                 R"("format": "tipscope-profile", )")
+                                  << QStringList{"format"};
+}
+
+void TestBadProfile::keysGivenTwiceAreRefusedByName() {
+    QFETCH(QByteArray, json);
+    QFETCH(QStringList, named);
+    QString error;
+    QVERIFY2(!Profile::fromJson(json, &error), "a key given twice was accepted");
+    QVERIFY2(error.contains(QStringLiteral("more than once")), qPrintable(error));
+    QVERIFY2(error.contains(QStringLiteral("nothing will be written")), qPrintable(error));
+    for (const QString &key : named)
+        QVERIFY2(error.contains(key), qPrintable(error));
+    QCOMPARE(error.count(named.first()), 1);
+}
+
+void TestBadProfile::aNulInsideAStringIsInvalidJsonAtItsByte_data() {
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("where");
+    QByteArray inFormat = kGood;
+    inFormat.insert(kGood.indexOf("profile\""), '\0');
+    QTest::newRow("in the format")
+        << inFormat << QStringLiteral("a NUL byte at byte %1").arg(kGood.indexOf("profile\"") + 1);
+    QByteArray inValue = kGood;
+    inValue.insert(kGood.indexOf("00350"), '\0');
+    QTest::newRow("in a value")
+        << inValue << QStringLiteral("a NUL byte at byte %1").arg(kGood.indexOf("00350") + 1);
+    QByteArray escape = kGood;
+    escape.insert(kGood.indexOf("00350"), '\x1b');
+    QTest::newRow("an escape in a value")
+        << escape
+        << QStringLiteral("control character 0x1b at byte %1").arg(kGood.indexOf("00350") + 1);
+}
+
+void TestBadProfile::aNulInsideAStringIsInvalidJsonAtItsByte() {
+    QFETCH(QByteArray, json);
+    QFETCH(QString, where);
+    QString error;
+    QVERIFY2(!Profile::fromJson(json, &error), "a raw NUL inside a string was accepted");
+    QVERIFY2(error.contains(QStringLiteral("not a valid JSON file")) && error.contains(where),
+             qPrintable(error));
+}
+
+void TestBadProfile::hugeCodesAndValuesAreEchoedCut_data() {
+    QTest::addColumn<QByteArray>("json");
+    const QByteArray huge(100 * 1024, 'S');
+    QTest::newRow("code") << profileWith("{\"" + huge + "\": \"00350\"}");
+    QTest::newRow("value") << profileWith("{\"ST1\": \"" + huge + "\"}");
+    QTest::newRow("family") << QByteArray(kGood).replace("\"DME\"", "\"" + huge + "\"");
+    QTest::newRow("code not quoted") << profileWith("{\"" + huge + "\": 350}");
+    QTest::newRow("code twice") << profileWith("{\"" + huge + "\": \"00350\", \"" + huge +
+                                               "\": \"00350\"}");
+}
+
+void TestBadProfile::hugeCodesAndValuesAreEchoedCut() {
+    QFETCH(QByteArray, json);
+    QString error;
+    QVERIFY(!Profile::fromJson(json, &error));
+    QVERIFY2(error.size() < 400, qPrintable(error.left(400)));
+    QVERIFY2(error.contains(QStringLiteral("… (102400 characters)")), qPrintable(error));
 }
 
 QTEST_GUILESS_MAIN(TestBadProfile)

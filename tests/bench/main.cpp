@@ -6,6 +6,7 @@
 // subcommand's figures, one "name: value unit" per line.
 #include "benchsupport.h"
 #include "chartbench.h"
+#include "journalbench.h"
 #include "linkbench.h"
 #include "replaybench.h"
 #include "soakbench.h"
@@ -32,6 +33,8 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runSoakBench},
     {"chart", "chart redraw over a day of 4 ports, naive chart, memory, GUI CPU (--seconds N)",
      tipscope::bench::runChartBench, true},
+    {"journal", "journal inserts under polling, a year's file: size and queries (--rows N)",
+     tipscope::bench::runJournalBench},
     {"replay", "reading recordings: speed and memory over file size (--mb N, --no-fifo)",
      tipscope::bench::runReplayBench},
 };

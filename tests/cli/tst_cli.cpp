@@ -15,8 +15,9 @@ struct Run {
     QString err;
 };
 
-Run runCli(const QStringList &args, int timeoutMs = 30000) {
+Run runCli(const QStringList &args, int timeoutMs = 30000, const QString &folder = {}) {
     QProcess p;
+    p.setWorkingDirectory(folder);
     p.start(binaryPath(QStringLiteral("tipscope-cli")), args);
     Run r;
     if (!p.waitForFinished(timeoutMs)) {
@@ -47,6 +48,7 @@ private Q_SLOTS:
     void corruptedAnswersAreRetried();
     void silentDeviceIsExitFour();
     void nonexistentPortIsExitFiveWithAReason();
+    void aPortPathWithASlashIsTakenFromTheCurrentFolder();
     void sendPrintsTheAnswerInHexAndDecoded();
     void monitorSurvivesAnUnplugAndResumes();
     void usageErrorsAreExitOne();
@@ -186,6 +188,23 @@ void TestCli::nonexistentPortIsExitFiveWithAReason() {
     QCOMPARE(r.exitCode, 5);
     QVERIFY2(r.err.contains(QStringLiteral("no such port"), Qt::CaseInsensitive),
              qPrintable(r.err));
+}
+
+void TestCli::aPortPathWithASlashIsTakenFromTheCurrentFolder() {
+    // Qt alone would look for "pair/host" under /dev; a person means the path from here.
+    const QString port = startSim({"--model", "DME"});
+    QVERIFY(!port.isEmpty());
+    const QFileInfo host(port);
+    const QString relative = host.dir().dirName() + QStringLiteral("/host");
+    const QString folder = QFileInfo(host.dir().path()).path();
+    const Run r = runCli({"--port", relative, "read", "ST1"}, 30000, folder);
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(r.out, QStringLiteral("ST1 350 °C\n"));
+    const Run missing = runCli({"--port", "no-such-folder/ttyX", "read", "ST1"}, 30000, folder);
+    QCOMPARE(missing.exitCode, 5);
+    QVERIFY2(missing.err.contains(QStringLiteral("./no-such-folder/ttyX")) &&
+                 !missing.err.contains(QStringLiteral("/dev/no-such-folder")),
+             qPrintable(missing.err));
 }
 
 void TestCli::sendPrintsTheAnswerInHexAndDecoded() {

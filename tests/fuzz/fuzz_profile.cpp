@@ -3,11 +3,14 @@
 //
 // The input is the file's content. Besides "no crash, no sanitizer report", the loader's
 // contract must hold: a refused file says why; an accepted one names a known family, has at
-// least one value, passes problemsFor() for its own family (so applying it cannot write a value
-// the catalog refuses), and survives a save/load round trip with the same values.
+// least one value, gives each code once, passes problemsFor() for its own family (so applying
+// it cannot write a value the catalog refuses), and survives a save/load round trip with the
+// same values. The hand-written key scan (profilejson.h) also runs on every input, valid JSON
+// or not, so a malformed text cannot make it read out of bounds.
 #include "fuzzcheck.h"
 
 #include "model/profile.h"
+#include "model/profilejson.h"
 
 #include <QMap>
 
@@ -26,6 +29,7 @@ QMap<QByteArray, QByteArray> valueMap(const Profile &p) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
     const QByteArray json(reinterpret_cast<const char *>(data), qsizetype(size));
+    const QStringList twice = profilejson::duplicateKeys(json);
     QString error;
     const auto profile = Profile::fromJson(json, &error);
     if (!profile) {
@@ -33,6 +37,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         return 0;
     }
     FUZZ_CHECK(!profile->family.isEmpty() && !profile->values.isEmpty());
+    FUZZ_CHECK(twice.isEmpty());
+    FUZZ_CHECK(valueMap(*profile).size() == profile->values.size()); // each code once
     FUZZ_CHECK(profile->problemsFor(profile->family).isEmpty());
     QString again;
     const auto reloaded = Profile::fromJson(profile->toJson(), &again);

@@ -84,6 +84,10 @@ def profile_seeds(out, profiles):
         write(d, os.path.basename(p), open(p, "rb").read())
     write(d, "minimal.json", b'{"format":"tipscope-profile","schema":1,"family":"DME",'
                              b'"values":{"ST1":"00350","HD1":"01.60","D12":"99999"}}')
+    # Escapes, nesting and arrays, for the key scan that looks for keys given twice.
+    write(d, "nested.json", b'{"format":"tipscope-profile","schema":1,"family":"DME",'
+                            b'"extra":{"a":[1,{"b":"\\"q\\\\"},[]],"c":{}},'
+                            b'"values":{"\\u0053T1":"00350","A12":"-0050"}}')
 
 
 def main():

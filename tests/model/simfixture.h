@@ -54,6 +54,14 @@ struct SimFixture {
     }
 };
 
+// The wire codes of parameters, in their order: what a list holds, in the guides' words.
+inline QList<QByteArray> codesOf(const QList<model::Parameter *> &parameters) {
+    QList<QByteArray> codes;
+    for (const model::Parameter *p : parameters)
+        codes.append(p->code());
+    return codes;
+}
+
 inline std::unique_ptr<sim::SimLine> singleDevice(const QString &family) {
     auto l = std::make_unique<sim::SimLine>();
     if (family == QLatin1String("SFR"))

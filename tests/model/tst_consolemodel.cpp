@@ -1,10 +1,12 @@
 // ConsoleModel takes the line's tap events in batches: a burst becomes one insertion, in order,
 // nothing is lost below the capacity, the oldest rows go first above it, and pausing holds rows
-// without dropping them.
+// without dropping them. Rows say what they are in the user interface language.
+#include "i18n/translations.h"
 #include "model/consolemodel.h"
 
 #include <QSignalSpy>
 #include <QTest>
+#include <QTranslator>
 
 using namespace tipscope;
 using model::ConsoleModel;
@@ -12,6 +14,23 @@ using model::ConsoleModel;
 namespace {
 QString noteAt(const ConsoleModel &m, int row) {
     return m.entry(row).remark;
+}
+
+QString cell(const ConsoleModel &m, int row, int column) {
+    return m.data(m.index(row, column), Qt::DisplayRole).toString();
+}
+
+// A model with one row of each kind: TX, RX chunk, a received frame, a decode error, a note.
+void tapOneOfEach(link::FrameTap &tap) {
+    using protocol::Frame;
+    const QByteArray request = Frame::read("SMN").addressed(0, 1).encode();
+    const QByteArray answer = Frame{1, 0, protocol::Header::Answer, "SMN", "DME-2C"}.encode();
+    tap.tx(request);
+    tap.rx(answer);
+    protocol::FrameDecoder decoder;
+    for (const protocol::DecodeEvent &e : decoder.feed(answer + request.chopped(1) + '^'))
+        tap.decoded(e, false);
+    tap.note(QStringLiteral("line open"));
 }
 } // namespace
 
@@ -23,6 +42,10 @@ private Q_SLOTS:
     void beyondTheCapacityTheOldestRowsGo();
     void pauseHoldsRowsAndResumeShowsThemAll();
     void aCodeFamiliesShareIsNamedAsTheDeviceInTheFrameKnowsIt();
+    void receivedFramesAreLabelledRx();
+    void theHeldCountFollowsWhatArrivesWhilePaused();
+    void headersAreNamedInTheInterfaceLanguage_data();
+    void headersAreNamedInTheInterfaceLanguage();
 };
 
 void TestConsoleModel::aBurstIsInsertedAtOnceAndInOrder() {
@@ -120,6 +143,81 @@ void TestConsoleModel::aCodeFamiliesShareIsNamedAsTheDeviceInTheFrameKnowsIt() {
     tap.tx(Frame::read("SPD").addressed(0, 10).encode());
     model.flush();
     QCOMPARE(name(3), QStringLiteral("Dispensing speed")); // the new device at 10 is an ALE
+}
+
+void TestConsoleModel::receivedFramesAreLabelledRx() {
+    link::FrameTap tap;
+    ConsoleModel model;
+    model.attach(&tap);
+    tapOneOfEach(tap);
+    model.flush();
+    QCOMPARE(model.rowCount(), 5);
+    QStringList directions;
+    for (int row = 0; row < model.rowCount(); ++row)
+        directions << cell(model, row, ConsoleModel::Direction);
+    QCOMPARE(directions, QStringList({"TX", "RX chunk", "RX", "error", "note"}));
+    QCOMPARE(cell(model, 2, ConsoleModel::Header), QStringLiteral("Answer"));
+    QCOMPARE(cell(model, 3, ConsoleModel::Bcc), QStringLiteral("bad"));
+}
+
+void TestConsoleModel::theHeldCountFollowsWhatArrivesWhilePaused() {
+    link::FrameTap tap;
+    ConsoleModel model;
+    model.attach(&tap);
+    QSignalSpy held(&model, &ConsoleModel::heldCountChanged);
+    QVERIFY(held.isValid());
+    tap.note(QStringLiteral("shown"));
+    QCOMPARE(model.heldCount(), 0);
+    model.setPaused(true);
+    for (int i = 1; i <= 3; ++i) {
+        tap.note(QString::number(i));
+        QCOMPARE(model.heldCount(), i);
+        QCOMPARE(held.constLast().at(0).toInt(), i); // said as it happens, not on resume
+    }
+    model.setPaused(false);
+    QCOMPARE(model.heldCount(), 0);
+    QCOMPARE(held.constLast().at(0).toInt(), 0);
+    QCOMPARE(model.rowCount(), 4);
+
+    model.setPaused(true);
+    tap.note(QStringLiteral("held, then cleared"));
+    QCOMPARE(model.heldCount(), 1);
+    model.clear();
+    QCOMPARE(model.heldCount(), 0);
+    QCOMPARE(held.constLast().at(0).toInt(), 0);
+}
+
+void TestConsoleModel::headersAreNamedInTheInterfaceLanguage_data() {
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QStringList>("headers"); // of the request sent and the answer received
+    QTest::newRow("German") << "de" << QStringList{"Lesen", "Antwort"};
+    QTest::newRow("Spanish") << "es" << QStringList{"Lectura", "Respuesta"};
+}
+
+void TestConsoleModel::headersAreNamedInTheInterfaceLanguage() {
+    QFETCH(QString, language);
+    QFETCH(QStringList, headers);
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), language), language);
+    link::FrameTap tap;
+    ConsoleModel model;
+    model.attach(&tap);
+    tapOneOfEach(tap);
+    model.flush();
+    QStringList shown;
+    for (int row = 0; row < model.rowCount(); ++row)
+        if (model.entry(row).frame)
+            shown << cell(model, row, ConsoleModel::Header);
+    const QString write = ConsoleModel::headerText(protocol::Header::Write);
+    const QString nak = ConsoleModel::headerText(protocol::Header::Nak);
+    const QString received = ConsoleModel::directionText(model::ConsoleEntry::Direction::Decoded);
+    // Leave the application in English for whatever runs after this.
+    qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
+
+    QCOMPARE(shown, headers);
+    QVERIFY2(write != QLatin1String("Write") && !write.isEmpty(), qPrintable(write));
+    QCOMPARE(nak, QStringLiteral("NAK")); // the protocol's word in every language
+    QCOMPARE(received, QStringLiteral("RX"));
+    QCOMPARE(ConsoleModel::headerText(protocol::Header::Read), QStringLiteral("Read"));
 }
 
 QTEST_MAIN(TestConsoleModel)

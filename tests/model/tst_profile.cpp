@@ -26,6 +26,36 @@ QByteArray profileJson(const QByteArray &family, const QByteArray &values) {
            "\",\"values\":{" + values + "}}";
 }
 
+using Settings = QMap<QByteArray, qint64>;
+
+// MIT <= STx <= MAT on every port of a DME, in `s`; empty when it holds, else what breaks.
+QString dmeLimitsBroken(const Settings &s) {
+    if (s.value("MIT") > s.value("MAT"))
+        return QStringLiteral("MIT %1 > MAT %2").arg(s.value("MIT")).arg(s.value("MAT"));
+    for (int port = 1; port <= 4; ++port) {
+        const qint64 st = s.value("ST" + QByteArray::number(port));
+        if (st < s.value("MIT") || st > s.value("MAT"))
+            return QStringLiteral("ST%1 %2 outside %3..%4")
+                .arg(port)
+                .arg(st)
+                .arg(s.value("MIT"))
+                .arg(s.value("MAT"));
+    }
+    return {};
+}
+
+void setDevice(sim::SimDevice &dev, const Settings &s) {
+    for (auto it = s.begin(); it != s.end(); ++it)
+        dev.setSetting(it.key(), it.value());
+}
+
+Settings limitSettings(const sim::SimDevice &dev) {
+    Settings s;
+    for (const QByteArray code : {"MIT", "MAT", "ST1", "ST2", "ST3", "ST4"})
+        s.insert(code, dev.setting(code).value_or(-1));
+    return s;
+}
+
 } // namespace
 
 class TestProfile : public QObject {
@@ -38,6 +68,13 @@ private Q_SLOTS:
     void anotherFamilysProfileIsRefusedUnlessForced();
     void dryRunListsTheFramesAndWritesNothing();
     void limitsAreWrittenInAnOrderTheDeviceAccepts();
+    void aProfileThatBreaksALimitIsRefusedWhole_data();
+    void aProfileThatBreaksALimitIsRefusedWhole();
+    void everyStateBetweenTwoWritesKeepsTheLimits_data();
+    void everyStateBetweenTwoWritesKeepsTheLimits();
+    void aLimitThatCannotBeReadRefusesTheProfile_data();
+    void aLimitThatCannotBeReadRefusesTheProfile();
+    void aForcedProfileWithNothingInCommonIsRefused();
     void liveValuesKeepUpdatingWhileAProfileIsApplied();
 };
 
@@ -170,6 +207,161 @@ void TestProfile::limitsAreWrittenInAnOrderTheDeviceAccepts() {
     QVERIFY2(r.ok(), qPrintable(r.text()));
     QCOMPARE(f.simLine->station()->setting("ST1").value(), 400);
     QCOMPARE(f.simLine->station()->setting("MIT").value(), 300);
+}
+
+void TestProfile::aProfileThatBreaksALimitIsRefusedWhole_data() {
+    QTest::addColumn<Settings>("device");
+    QTest::addColumn<QByteArray>("values");
+    QTest::addColumn<QStringList>("named"); // what the refusal must say
+    const Settings factory{{"MIT", 90},  {"MAT", 500}, {"ST1", 350},
+                           {"ST2", 350}, {"ST3", 350}, {"ST4", 350}};
+    Settings st1At450 = factory;
+    st1At450["ST1"] = 450;
+    QTest::newRow("MAT below ST1, both in the profile")
+        << factory << QByteArray(R"("MAT":"00400","A11":"00005","ST1":"00450")")
+        << QStringList{"ST1 450 °C (in the profile) is above MAT 400 °C (in the profile)"};
+    QTest::newRow("ST1 already 450 on the device, the profile sets it too")
+        << st1At450 << QByteArray(R"("MAT":"00400","ST1":"00450")")
+        << QStringList{"ST1 450 °C (in the profile) is above MAT 400 °C (in the profile)"};
+    QTest::newRow("ST1 450 on the device, the profile leaves it alone")
+        << st1At450 << QByteArray(R"("MAT":"00400","A11":"00005")")
+        << QStringList{"ST1 450 °C (on the device now) is above MAT 400 °C (in the profile)"};
+    QTest::newRow("MIT above MAT in the profile")
+        << factory << QByteArray(R"("MIT":"00400","MAT":"00300")")
+        << QStringList{"MIT 400 °C (in the profile) is above MAT 300 °C (in the profile)"};
+    QTest::newRow("MIT above every port's selected temperature on the device")
+        << factory << QByteArray(R"("MIT":"00400")")
+        << QStringList{"MIT 400 °C (in the profile) is above ST1 350 °C (on the device now)",
+                       "ST4 350 °C (on the device now)"};
+    QTest::newRow("ST2 below the device's MIT")
+        << Settings{{"MIT", 200}} << QByteArray(R"("ST2":"00150")")
+        << QStringList{"MIT 200 °C (on the device now) is above ST2 150 °C (in the profile)"};
+}
+
+void TestProfile::aProfileThatBreaksALimitIsRefusedWhole() {
+    QFETCH(Settings, device);
+    QFETCH(QByteArray, values);
+    QFETCH(QStringList, named);
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    sim::SimDevice &dev = *f.simLine->station();
+    setDevice(dev, device);
+    const Settings before = limitSettings(dev);
+    auto st = f.station();
+    QString error;
+    const auto p = Profile::fromJson(profileJson("DME", values), &error);
+    QVERIFY2(p, qPrintable(error));
+    for (const auto mode :
+         {ProfileApplier::Mode::Diff, ProfileApplier::Mode::DryRun, ProfileApplier::Mode::Apply}) {
+        const ApplyReport r = run(*st, *p, mode);
+        QVERIFY(!r.ok());
+        const QString said = r.conflicts.join(QLatin1Char('\n'));
+        for (const QString &n : named)
+            QVERIFY2(said.contains(n), qPrintable(said));
+        QCOMPARE(r.refused, mode != ProfileApplier::Mode::Diff);
+        QVERIFY(r.frames.isEmpty() && r.written.isEmpty());
+        if (r.refused)
+            QVERIFY2(r.text().contains(QStringLiteral("nothing was written")) &&
+                         r.text().contains(named.first()),
+                     qPrintable(r.text()));
+    }
+    f.settle();
+    QCOMPARE(f.simLine->stats().writeRequests, 0);
+    QCOMPARE(limitSettings(dev), before);
+}
+
+void TestProfile::everyStateBetweenTwoWritesKeepsTheLimits_data() {
+    QTest::addColumn<Settings>("device");
+    QTest::addColumn<QByteArray>("values");
+    QTest::newRow("raise both limits above the selected temperatures")
+        << Settings{{"MIT", 150}, {"MAT", 200}, {"ST1", 200},
+                    {"ST2", 150}, {"ST3", 200}, {"ST4", 200}}
+        << QByteArray(R"("ST1":"00400","ST2":"00300","MIT":"00300","MAT":"00450",)"
+                      R"("ST3":"00300","ST4":"00450")");
+    QTest::newRow("narrow both limits around new selected temperatures")
+        << Settings{{"MIT", 100}, {"MAT", 500}, {"ST1", 480},
+                    {"ST2", 120}, {"ST3", 300}, {"ST4", 300}}
+        << QByteArray(R"("MAT":"00400","MIT":"00200","ST1":"00350","ST2":"00250")");
+    QTest::newRow("move the window down past its old minimum")
+        << Settings{{"MIT", 300}, {"MAT", 450}, {"ST1", 400},
+                    {"ST2", 300}, {"ST3", 300}, {"ST4", 300}}
+        << QByteArray(R"("MAT":"00250","MIT":"00100","ST1":"00200","ST2":"00150",)"
+                      R"("ST3":"00250","ST4":"00100")");
+}
+
+void TestProfile::everyStateBetweenTwoWritesKeepsTheLimits() {
+    QFETCH(Settings, device);
+    QFETCH(QByteArray, values);
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    sim::SimDevice &dev = *f.simLine->station();
+    setDevice(dev, device);
+    auto st = f.station();
+    QString error;
+    const auto p = Profile::fromJson(profileJson("DME", values), &error);
+    QVERIFY2(p, qPrintable(error));
+    const ApplyReport dry = run(*st, *p, ProfileApplier::Mode::DryRun);
+    QVERIFY2(dry.conflicts.isEmpty() && !dry.refused, qPrintable(dry.text()));
+    const ApplyReport r = run(*st, *p, ProfileApplier::Mode::Apply);
+    QVERIFY2(r.ok(), qPrintable(r.text()));
+    // Replay what the device accepted, in its order, and look at every state in between.
+    Settings s = device;
+    QCOMPARE(dev.acceptedWrites().size(), p->values.size());
+    for (int i = 0; i < dev.acceptedWrites().size(); ++i) {
+        const QString w = dev.acceptedWrites().at(i);
+        s[w.section(QLatin1Char('='), 0, 0).toLatin1()] =
+            w.section(QLatin1Char('='), 1).toLongLong();
+        const QString broken = dmeLimitsBroken(s);
+        QVERIFY2(broken.isEmpty(), qPrintable(QStringLiteral("after %1: %2").arg(w, broken)));
+        QVERIFY2(dry.frames.at(i).contains(QString(w).replace(QLatin1Char('='), QLatin1Char(' '))),
+                 qPrintable(QStringLiteral("the dry run listed %1 where %2 was written")
+                                .arg(dry.frames.at(i), w)));
+    }
+}
+
+void TestProfile::aLimitThatCannotBeReadRefusesTheProfile_data() {
+    QTest::addColumn<bool>("polledBefore");
+    QTest::newRow("never read") << false;
+    // A value from an earlier poll is not the device's state now: it must not count.
+    QTest::newRow("read by an earlier poll") << true;
+}
+
+void TestProfile::aLimitThatCannotBeReadRefusesTheProfile() {
+    QFETCH(bool, polledBefore);
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    auto st = f.station();
+    if (polledBefore) {
+        st->refreshAll();
+        f.settle();
+        QCOMPARE(st->parameter("MAT")->number(), 500);
+    }
+    QString error;
+    const auto p = Profile::fromJson(profileJson("DME", R"("ST1":"00400")"), &error);
+    QVERIFY2(p, qPrintable(error));
+    sim::SimFaults faults;
+    faults.nakAllCode = 4;
+    f.simLine->setFaults(faults);
+    const ApplyReport r = run(*st, *p, ProfileApplier::Mode::Apply);
+    QVERIFY(r.refused);
+    QVERIFY2(r.reason.contains(QStringLiteral("is not known (the device did not answer)")),
+             qPrintable(r.reason));
+    f.settle();
+    QCOMPARE(f.simLine->stats().writeRequests, 0);
+}
+
+void TestProfile::aForcedProfileWithNothingInCommonIsRefused() {
+    SimFixture f(singleDevice(QStringLiteral("DDR")));
+    auto st = f.station();
+    QString error;
+    // The DDR has two ports and no alarm delays: nothing here exists on it.
+    const auto p = Profile::fromJson(profileJson("DME", R"("ST4":"00300","HD1":"01.00")"), &error);
+    QVERIFY2(p, qPrintable(error));
+    const ApplyReport r = run(*st, *p, ProfileApplier::Mode::Apply, true);
+    QVERIFY(r.refused);
+    QVERIFY(!r.ok());
+    QVERIFY2(r.text().contains(QStringLiteral("none of the profile's settings")) &&
+                 r.text().contains(QStringLiteral("HD1 ST4")),
+             qPrintable(r.text()));
+    f.settle();
+    QCOMPARE(f.simLine->stats().writeRequests, 0);
 }
 
 void TestProfile::liveValuesKeepUpdatingWhileAProfileIsApplied() {

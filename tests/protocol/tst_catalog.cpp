@@ -113,6 +113,13 @@ private Q_SLOTS:
     void errorTablesExplainCodesIncludingTheMisprintedOne();
     void validationSaysWhatIsAllowed();
     void malformedCatalogDataIsRefusedWithAReason();
+    void aRoleFindsOneValueAndOneActionPerPort();
+    void rolesNameTheCommandsFrontEndsLookFor_data();
+    void rolesNameTheCommandsFrontEndsLookFor();
+    void aRoleNamesItsFirstCommandBeforeAFamilyIsKnown();
+    void partialCountersPairWithATotalAndAResetButton();
+    void unknownRolesAndGroupsAreRefusedWithAReason();
+    void rolesAndGroupsReadBackTheirNames();
 };
 
 void TestCatalog::everyCommandOfTheGuidesIsPresentForItsFamilies() {
@@ -140,7 +147,7 @@ void TestCatalog::everyEntryHasCompleteMetadata() {
     for (const CommandSpec &s : cat.commands()) {
         const QString id = s.pattern + QLatin1Char(' ') + s.families.join(QLatin1Char(','));
         QVERIFY2(!s.name.isEmpty() && !s.description.isEmpty(), qPrintable(id));
-        QVERIFY2(!s.group.isEmpty() && !s.poll.isEmpty(), qPrintable(id));
+        QVERIFY2(!s.poll.isEmpty() && !groupName(s.group).isEmpty(), qPrintable(id));
         QVERIFY2(!s.families.isEmpty(), qPrintable(id));
         QVERIFY2(cat.unit(s.unit), qPrintable(id));
         QVERIFY2(!s.dangerous || !s.danger.isEmpty(), qPrintable(id + QStringLiteral(": danger")));
@@ -290,6 +297,150 @@ void TestCatalog::malformedCatalogDataIsRefusedWithAReason() {
     QVERIFY(!Catalog::load(
         fams, R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["Y"]}]})",
         &error));
+}
+
+void TestCatalog::aRoleFindsOneValueAndOneActionPerPort() {
+    const Catalog &cat = Catalog::builtin();
+    for (const QString &fam : cat.familyNames()) {
+        QSet<QString> seen;
+        for (Direction d : {Direction::Read, Direction::Write}) {
+            for (const ResolvedCommand &r : cat.expand(fam, d)) {
+                if (r.spec->role == Role::None)
+                    continue;
+                // A value read and written (STx) is one value; its two directions share an entry.
+                const QString key = QStringLiteral("%1 %2 port %3")
+                                        .arg(r.spec->isAction() ? QStringLiteral("action")
+                                                                : QStringLiteral("value"),
+                                             roleName(r.spec->role))
+                                        .arg(r.port);
+                const QString entry = key + QLatin1Char(' ') + QString::fromLatin1(r.code);
+                if (seen.contains(entry))
+                    continue;
+                QVERIFY2(!seen.contains(key), qPrintable(fam + QLatin1Char(' ') + entry));
+                QVERIFY2(r.tool < 0, qPrintable(fam + QStringLiteral(" per-tool role ") + entry));
+                seen.insert(key);
+                seen.insert(entry);
+            }
+        }
+    }
+}
+
+void TestCatalog::rolesNameTheCommandsFrontEndsLookFor_data() {
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<Role>("role");
+    QTest::addColumn<int>("port");
+    QTest::addColumn<bool>("action");
+    QTest::addColumn<QByteArray>("code");
+    const struct {
+        const char *family;
+        Role role;
+        int port;
+        bool action;
+        const char *code;
+    } rows[] = {
+        {"DME", Role::TipTemperature, 3, false, "TT3"},
+        {"DME", Role::Setpoint, 2, false, "ST2"},
+        {"DDR", Role::Power, 2, false, "PP2"},
+        {"DME", Role::Status, 1, false, "PS1"},
+        {"DME", Role::ConnectedTool, 4, false, "CT4"},
+        {"DME", Role::TransistorTemperature, 1, false, "QT1"},
+        {"DME", Role::TransformerTemperature, 0, false, "TT0"},
+        {"DME", Role::Error, 0, false, "SER"},
+        {"DME", Role::Error, 2, false, "PE2"},
+        {"SFR", Role::Error, 0, false, "ECV"},
+        {"SFR", Role::ResetError, 0, true, "ECV"},
+        {"DME", Role::Alarm, 1, false, "TA1"},
+        {"HDR", Role::HighAlarm, 1, false, "HA1"},
+        {"UCR", Role::Fuse, 0, false, "FST"},
+        {"SFR", Role::FedLength, 0, false, "FDL"},
+        {"SFR", Role::FeedSpeed, 0, false, "SPD"},
+        {"SFR", Role::Feeding, 0, false, "FDS"},
+        {"ALE", Role::Feeding, 0, false, "FEE"},
+        {"ALE", Role::DispensedLength, 1, false, "DL1"},
+        {"SFR", Role::Start, 0, true, "SFD"},
+        {"ALE", Role::Start, 0, true, "STR"},
+        {"DME", Role::SaveToMemory, 0, true, "NVS"},
+        {"DDR", Role::ModelName, 0, false, "SMN"},
+    };
+    for (const auto &r : rows)
+        QTest::addRow("%s %s port %d", r.family, qPrintable(roleName(r.role)), r.port)
+            << r.family << r.role << r.port << r.action << QByteArray(r.code);
+}
+
+void TestCatalog::rolesNameTheCommandsFrontEndsLookFor() {
+    QFETCH(QString, family);
+    QFETCH(Role, role);
+    QFETCH(int, port);
+    QFETCH(bool, action);
+    QFETCH(QByteArray, code);
+    QList<QByteArray> found;
+    for (Direction d : {Direction::Read, Direction::Write})
+        for (const ResolvedCommand &r : Catalog::builtin().expand(family, d))
+            if (r.spec->role == role && r.port == port && r.spec->isAction() == action &&
+                !found.contains(r.code))
+                found.append(r.code);
+    QCOMPARE(found, QList<QByteArray>{code});
+}
+
+void TestCatalog::aRoleNamesItsFirstCommandBeforeAFamilyIsKnown() {
+    const Catalog &cat = Catalog::builtin();
+    QCOMPARE(cat.command(Role::ModelName)->pattern, QStringLiteral("SMN"));
+    QCOMPARE(cat.command(Role::Restart)->pattern, QStringLiteral("RST"));
+    QVERIFY(!cat.command(Role::Restart, "DDR")); // the robot stations cannot be restarted
+    QCOMPARE(cat.command(Role::Error, "SFR")->pattern, QStringLiteral("ECV"));
+    QVERIFY(!cat.command(Role::None));
+    QVERIFY(!cat.command(Role::ModelName, "NOPE"));
+}
+
+void TestCatalog::partialCountersPairWithATotalAndAResetButton() {
+    const Catalog &cat = Catalog::builtin();
+    int partials = 0;
+    for (const CommandSpec &s : cat.commands()) {
+        if (!s.partial || s.isAction())
+            continue;
+        ++partials;
+        QVERIFY2(s.group == Group::Counter && !s.quantity.isEmpty(), qPrintable(s.pattern));
+        bool total = false, reset = false;
+        for (const CommandSpec &o : cat.commands()) {
+            total = total || (o.quantity == s.quantity && !o.partial && o.families == s.families);
+            reset = reset || (o.pattern == s.pattern && o.isAction() && o.partial &&
+                              !o.label.isEmpty() && o.dangerous);
+        }
+        QVERIFY2(total && reset, qPrintable(s.pattern));
+    }
+    QCOMPARE(partials, 3); // the SFR's plugged hours, feeding hours and fed length
+}
+
+void TestCatalog::unknownRolesAndGroupsAreRefusedWithAReason() {
+    const QByteArray fams = R"({"families":{"X":{"kind":"station"}},"units":{"none":{}}})";
+    QString error;
+    QVERIFY(
+        Catalog::load(fams,
+                      R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["X"],)"
+                      R"("group":"counter","role":"power"}]})",
+                      &error));
+    QVERIFY(!Catalog::load(
+        fams,
+        R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["X"],)"
+        R"("group":"counter","role":"tipTemp"}]})",
+        &error));
+    QVERIFY2(error.contains("unknown role 'tipTemp'"), qPrintable(error));
+    error.clear();
+    QVERIFY(!Catalog::load(
+        fams,
+        R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["X"],)"
+        R"("group":"counters"}]})",
+        &error));
+    QVERIFY2(error.contains("unknown group 'counters'"), qPrintable(error));
+}
+
+void TestCatalog::rolesAndGroupsReadBackTheirNames() {
+    for (int i = int(Role::TipTemperature); i <= int(Role::ResetError); ++i)
+        QCOMPARE(roleFromName(roleName(Role(i))), std::optional<Role>(Role(i)));
+    for (int i = int(Group::Live); i <= int(Group::Actions); ++i)
+        QCOMPARE(groupFromName(groupName(Group(i))), std::optional<Group>(Group(i)));
+    QVERIFY(roleName(Role::None).isEmpty());
+    QVERIFY(!roleFromName(QString()));
 }
 
 QTEST_GUILESS_MAIN(TestCatalog)

@@ -71,7 +71,7 @@ void ProfileDialog::setBusy(bool busy) {
     m_progress->setVisible(busy);
     m_compare->setEnabled(!busy);
     m_dryRun->setEnabled(!busy);
-    m_apply->setEnabled(!busy && !m_device.writesBlocked());
+    m_apply->setEnabled(!busy && !m_device.writesBlocked() && !m_conflicts);
     m_cancel->setEnabled(busy);
 }
 
@@ -91,9 +91,18 @@ void ProfileDialog::run(ProfileApplier::Mode mode) {
     m_applier->start();
 }
 
+static QString asHtml(const QString &text) {
+    return text.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"));
+}
+
 void ProfileDialog::finished(const ApplyReport &report) {
     m_applier->deleteLater();
     m_applier = nullptr;
+    m_conflicts = !report.conflicts.isEmpty();
+    m_apply->setToolTip(m_conflicts ? tr("The profile would break the device's limits; see above")
+                        : m_device.writesBlocked()
+                            ? tr("Monitor-only mode is on: nothing is written")
+                            : QString());
     setBusy(false);
     m_table->setRowCount(0);
     for (const ProfileDifference &d : report.differences) {
@@ -106,7 +115,10 @@ void ProfileDialog::finished(const ApplyReport &report) {
         m_table->setItem(row, 2, new QTableWidgetItem(d.profileText));
     }
     if (report.refused)
-        m_summary->setText(tr("<b>Refused:</b> %1").arg(report.reason.toHtmlEscaped()));
+        m_summary->setText(tr("<b>Refused:</b> %1").arg(asHtml(report.reason)));
+    else if (m_conflicts)
+        m_summary->setText(tr("<b>This profile cannot be applied to this device:</b> %1")
+                               .arg(asHtml(report.conflictReason())));
     else if (report.diffOnly)
         m_summary->setText(tr("Profile from %1 (%2, software %3), created %4: %n setting(s) differ "
                               "from the device.",
@@ -126,6 +138,14 @@ void ProfileDialog::finished(const ApplyReport &report) {
 
 QString ProfileDialog::reportText() const {
     return m_report->toPlainText();
+}
+
+QString ProfileDialog::summaryText() const {
+    return m_summary->text();
+}
+
+bool ProfileDialog::canApply() const {
+    return m_apply->isEnabled();
 }
 
 int ProfileDialog::differenceRows() const {

@@ -2,9 +2,7 @@
 
 #include "framebuilder.h"
 
-#include "link/line.h"
 #include "protocol/catalogtext.h"
-#include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
 
 #include <QAction>
@@ -31,6 +29,14 @@ using model::ConsoleModel;
 
 namespace {
 constexpr int kHiddenBatchMs = 1000;
+
+QString widest(const QFontMetrics &fm, const QStringList &texts) {
+    QString out;
+    for (const QString &t : texts)
+        if (fm.horizontalAdvance(t) > fm.horizontalAdvance(out))
+            out = t;
+    return out;
+}
 } // namespace
 
 ConsoleFilterProxy::ConsoleFilterProxy(ConsoleModel *source, QObject *parent)
@@ -72,24 +78,6 @@ QVariant ConsoleFilterProxy::data(const QModelIndex &index, int role) const {
     return QSortFilterProxyModel::data(index, role);
 }
 
-namespace {
-QString describeReply(const link::Reply &reply, const QString &what) {
-    switch (reply.error()) {
-    case link::ReplyError::None:
-        return ConsolePage::tr("%1: answered %2 after %L3 ms")
-            .arg(what, reply.answer().toString())
-            .arg(double(reply.latencyUs()) / 1000.0, 0, 'f', 1);
-    case link::ReplyError::Nak:
-        return ConsolePage::tr("%1: refused, %2").arg(what, reply.errorString());
-    case link::ReplyError::Timeout:
-        return ConsolePage::tr("%1: no answer (timeout)").arg(what);
-    default:
-        return ConsolePage::tr("%1: %2 (%3)")
-            .arg(what, link::replyErrorName(reply.error()), reply.errorString());
-    }
-}
-} // namespace
-
 ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     : Page(session, parent)
     , m_model(new ConsoleModel(this))
@@ -99,11 +87,17 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     bar->setAccessibleName(tr("Console tools"));
     buildToolBar(bar);
     buildTable();
-    m_builder = new FrameBuilder(this);
+    m_builder = new FrameBuilder(m_model->sender(), this);
     m_builder->setObjectName(QStringLiteral("frameBuilder"));
+    // The count goes under the table, not at the end of the toolbar: a toolbar too narrow for
+    // the page folds its last items away, and the count of held rows must stay in sight.
+    m_count = new QLabel(this);
+    m_count->setObjectName(QStringLiteral("rowCountLabel"));
+    m_count->setToolTip(tr("While paused, new rows are held; they appear on resume."));
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(bar);
     layout->addWidget(m_table, 1);
+    layout->addWidget(m_count, 0, Qt::AlignRight);
     layout->addWidget(m_builder);
 
     // The count is for reading, not for every row of a burst.
@@ -119,17 +113,23 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     connect(m_proxy, &QAbstractItemModel::rowsRemoved, this, countLater);
     connect(m_proxy, &QAbstractItemModel::modelReset, this, countLater);
     connect(m_proxy, &QAbstractItemModel::layoutChanged, this, countLater);
+    connect(m_model, &ConsoleModel::heldCountChanged, this, countLater);
 
-    connect(m_builder, &FrameBuilder::sendRequested, this, &ConsolePage::send);
-    connect(&m_session, &model::Session::stateChanged, this, &ConsolePage::followLine);
+    m_model->follow(&m_session);
     connect(&m_session, &model::Session::devicesChanged, this, &ConsolePage::updateDevices);
-    connect(&m_session, &model::Session::monitorOnlyChanged, m_builder,
-            &FrameBuilder::setMonitorOnly);
-    m_builder->setMonitorOnly(m_session.monitorOnly());
-    followLine();
     updateDevices();
     applyFilter();
     updateCount();
+}
+
+ConsolePage::~ConsolePage() {
+    // Children would go after this destructor, in the order they came: the model first, whose
+    // end empties the table, which moves its scroll bar into a handler of this half-destroyed
+    // page. They go now, while the page is whole: the widgets before what they show.
+    delete m_builder; // sends through the model's sender
+    delete m_table;
+    delete m_proxy;
+    delete m_model;
 }
 
 void ConsolePage::buildToolBar(QToolBar *bar) {
@@ -206,13 +206,6 @@ void ConsolePage::buildToolBar(QToolBar *bar) {
     QAction *save = bar->addAction(tr("Save…"), this, &ConsolePage::save);
     save->setObjectName(QStringLiteral("saveAction"));
     save->setToolTip(tr("Save every row (not only the shown ones) to a text file"));
-
-    auto *spacer = new QWidget(bar);
-    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
-    bar->addWidget(spacer);
-    m_count = new QLabel(bar);
-    m_count->setObjectName(QStringLiteral("rowCountLabel"));
-    bar->addWidget(m_count);
 }
 
 void ConsolePage::buildTable() {
@@ -245,10 +238,21 @@ void ConsolePage::buildTable() {
             column, qMax(fm.horizontalAdvance(sample), text.horizontalAdvance(title)) + 18);
     };
     width(ConsoleModel::Time, text, QStringLiteral("+0000.0000 s"));
-    width(ConsoleModel::Direction, text, tr("error"));
+    using Direction = model::ConsoleEntry::Direction;
+    width(ConsoleModel::Direction, text,
+          widest(text, {ConsoleModel::directionText(Direction::Tx),
+                        ConsoleModel::directionText(Direction::Rx),
+                        ConsoleModel::directionText(Direction::Decoded),
+                        ConsoleModel::directionText(Direction::Error),
+                        ConsoleModel::directionText(Direction::Note)}));
     width(ConsoleModel::Device, fixed, QStringLiteral("00→00"));
-    width(ConsoleModel::Header, text, QStringLiteral("Answer"));
-    width(ConsoleModel::Command, fixed, QStringLiteral("WWW"));
+    using protocol::Header;
+    width(
+        ConsoleModel::Header, text,
+        widest(text,
+               {ConsoleModel::headerText(Header::Read), ConsoleModel::headerText(Header::Write),
+                ConsoleModel::headerText(Header::Answer), ConsoleModel::headerText(Header::Nak)}));
+    width(ConsoleModel::Command, fixed, QString(3, QLatin1Char('W'))); // a command's width
     // One of the longest command names, in the interface language.
     width(ConsoleModel::Name, text,
           protocol::catalogText(QStringLiteral("Time to sleep/hibernation")));
@@ -275,30 +279,15 @@ void ConsolePage::buildTable() {
     m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
 }
 
-void ConsolePage::followLine() {
-    link::Line *line = m_session.line();
-    if (line == m_line)
-        return;
-    m_line = line;
-    m_model->attach(line ? &line->queue().tap() : nullptr);
-    if (line)
-        m_builder->setRobotAddress(line->queue().settings().robotAddress);
-}
-
 void ConsolePage::updateDevices() {
-    QList<FrameBuilder::Target> targets;
-    QMap<int, QString> families;
+    QList<model::FrameTarget> targets;
     const QString current = m_address->currentText();
     {
         const QSignalBlocker block(m_address);
         m_address->clear();
         m_address->addItem(tr("All"));
         for (const model::DeviceModel *d : m_session.devices()) {
-            const QString label = d->address()
-                                      ? d->info().addressText() + QLatin1Char(' ') + d->info().model
-                                      : tr("%1 (no address)").arg(d->info().model);
-            targets.append({label, d->address(), d->family()});
-            families.insert(d->address().value_or(-1), d->family());
+            targets.append(model::FrameTarget::of(*d));
             if (d->address())
                 m_address->addItem(targets.last().label, *d->address());
         }
@@ -309,7 +298,6 @@ void ConsolePage::updateDevices() {
             m_address->setEditText(current.isEmpty() ? tr("All") : current);
     }
     m_builder->setTargets(targets);
-    m_model->setDeviceFamilies(families);
 }
 
 void ConsolePage::applyFilter() {
@@ -389,37 +377,8 @@ void ConsolePage::copySelection() {
 void ConsolePage::updateCount() {
     QString text = tr("%1 of %2 rows shown").arg(m_proxy->rowCount()).arg(m_model->rowCount());
     if (m_model->isPaused())
-        text += QStringLiteral(" · ") + tr("paused: new traffic is held");
+        text += QStringLiteral(" · ") + tr("paused: %n held", "", m_model->heldCount());
     m_count->setText(text);
-}
-
-void ConsolePage::send(const QByteArray &bytes, bool write) {
-    const auto frame = protocol::parseFrame(bytes);
-    const QString what = frame ? frame->toString() : tr("%n raw byte(s)", "", int(bytes.size()));
-    link::Line *line = m_session.line();
-    if (!line) {
-        m_builder->showOutcome(tr("%1: not sent, not connected").arg(what), true);
-        return;
-    }
-    if (write && m_session.monitorOnly()) {
-        m_builder->showOutcome(tr("%1: not sent, monitor-only mode is on").arg(what), true);
-        return;
-    }
-    link::Request request;
-    request.raw = bytes;
-    // Once, as typed: retries would put frames on the wire that the person did not ask for.
-    request.retries = 0;
-    request.repeatable = false;
-    if (write) {
-        request.header = protocol::Header::Write;
-        request.priority = link::Priority::UserWrite;
-    }
-    link::Reply *reply = line->queue().enqueue(request, this);
-    m_builder->showOutcome(tr("%1: sent, waiting for the answer…").arg(what), false);
-    connect(reply, &link::Reply::finished, this, [this, reply, what] {
-        reply->deleteLater();
-        m_builder->showOutcome(describeReply(*reply, what), !reply->ok());
-    });
 }
 
 } // namespace tipscope::gui

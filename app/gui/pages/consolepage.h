@@ -3,22 +3,21 @@
 // The table shows the session line's FrameTap through a ConsoleModel: TX and RX chunks, decoded
 // frames with their catalog names and BCC check, decode errors and line notes, newest at the
 // bottom and followed unless the user scrolled up. The toolbar pauses (nothing is lost: held
-// rows appear on resume), switches absolute/relative time, filters by kind, device address and
-// command, clears, and saves every row to a text file. The FrameBuilder below composes a frame
-// from the catalog or takes raw hex; both are sent once, verbatim (Request::raw), through the
-// session's RequestQueue, so the answer shows up in the table like any other traffic, and the
-// outcome of the last send is shown under the builder.
+// rows appear on resume, and their count stays in sight under the table), switches
+// absolute/relative time, filters by kind, device address and command, clears, and saves every
+// row to a text file. The FrameBuilder below composes a frame from the catalog or takes raw hex;
+// both are sent once, verbatim, by the model's ConsoleSender, so the answer shows up in the table
+// like any other traffic, and the outcome of the last send is shown under the builder.
 //
-// The page follows the session: when Session::stateChanged reports a different line (a new
-// connectTo()), the model is attached to that line's tap; history stays until Clear. In
-// monitor-only mode W frames and raw bytes are not sent; reads still are.
+// The model follows the session (ConsoleModel::follow()): a new line's traffic is shown and
+// sends go to it; history stays until Clear. In monitor-only mode the sender refuses W frames
+// and raw bytes that may be a write; reads still go out.
 #pragma once
 
 #include "page.h"
 
 #include "model/consolemodel.h"
 
-#include <QPointer>
 #include <QSortFilterProxyModel>
 #include <QTimer>
 
@@ -29,10 +28,6 @@ class QLabel;
 class QLineEdit;
 class QTableView;
 class QToolBar;
-
-namespace tipscope::link {
-class Line;
-}
 
 namespace tipscope::gui {
 
@@ -62,6 +57,7 @@ class ConsolePage : public Page {
     Q_OBJECT
 public:
     explicit ConsolePage(model::Session &session, QWidget *parent = nullptr);
+    ~ConsolePage() override;
 
     [[nodiscard]] QString title() const override { return tr("Console"); }
     // Hidden, the table takes new frames once a second; shown, it catches up at once.
@@ -75,14 +71,12 @@ public:
 private:
     void buildToolBar(QToolBar *bar);
     void buildTable();
-    void followLine();
     void updateDevices();
     void applyFilter();
     void setPaused(bool paused);
     void save();
     void copySelection();
     void updateCount();
-    void send(const QByteArray &bytes, bool write);
 
     model::ConsoleModel *m_model = nullptr;
     ConsoleFilterProxy *m_proxy = nullptr;
@@ -99,7 +93,6 @@ private:
     QLineEdit *m_command = nullptr;
     QLabel *m_count = nullptr;
     QTimer m_countTimer;
-    QPointer<link::Line> m_line;
     bool m_followNewest = true;
 };
 

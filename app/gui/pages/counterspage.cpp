@@ -19,30 +19,27 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
-#include <iterator>
-
 namespace tipscope::gui {
 
 using namespace tipscope::model;
 
 namespace {
 
-// One row of a feeder table: a quantity with its total and its resettable partial counter.
-struct FeederRow {
-    const char *label;
-    const char *total;
-    const char *partial;
-    const char *reset;
-};
+// The port's counter from the same catalog entry as `row` (another port's), if it has one.
+Parameter *sameCounter(const PortModel &port, const Parameter &row) {
+    if (row.spec().port == 0)
+        return nullptr;
+    for (Parameter *p : port.counters())
+        if (p->spec().spec == row.spec().spec)
+            return p;
+    return nullptr;
+}
 
-const FeederRow kFeederRows[] = {
-    {QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Plugged hours"), "CPT", "CPP",
-     QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Reset partial plugged hours…")},
-    {QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Feeding hours"), "CFT", "CFP",
-     QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Reset partial feeding hours…")},
-    {QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Fed length"), "CTT", "CTP",
-     QT_TRANSLATE_NOOP("tipscope::gui::CountersPage", "Reset partial fed length…")},
-};
+// The words on the button that resets a partial counter: the catalog's label for it.
+QString buttonText(const Action &reset) {
+    const protocol::CommandSpec &s = *reset.command().spec;
+    return s.label.isEmpty() ? reset.name() : protocol::catalogText(s.label);
+}
 
 // A value as a spreadsheet parses it: display units, '.' decimal point, empty when unknown. The
 // counter keeps the catalog's English name, like the header, whatever the interface language.
@@ -213,22 +210,25 @@ void CountersPage::addStation(StationModel *station) {
     auto *box = new QGroupBox(tr("Station %1").arg(station->displayName()));
     QTableWidget *table = makeTable(QStringLiteral("stationCounters"),
                                     tr("Counters of %1").arg(station->displayName()));
-    // Every port has the same counters; the first port names the rows.
-    const QList<Parameter *> rows = ports.first()->counters();
+    // Every port has the same counters; the first port names the rows. The station's own
+    // counters follow, each across all the ports' columns.
+    const QList<Parameter *> rows = ports.first()->counters() + station->counters();
     table->setRowCount(int(rows.size()));
     table->setColumnCount(int(ports.size()));
     for (int r = 0; r < rows.size(); ++r) {
         auto *header = new QTableWidgetItem(rows[r]->label());
         header->setToolTip(rows[r]->description());
         table->setVerticalHeaderItem(r, header);
+        if (rows[r]->spec().port == 0) {
+            table->setSpan(r, 0, 1, int(ports.size()));
+            bindCell(table, r, 0, rows[r]);
+        }
     }
     for (int c = 0; c < ports.size(); ++c) {
         table->setHorizontalHeaderItem(c, new QTableWidgetItem(tr("Port %1").arg(c + 1)));
-        for (int r = 0; r < rows.size(); ++r) {
-            const QString base = rows[r]->meta().pattern.chopped(1); // "CPx" -> "CP"
-            if (Parameter *p = ports[c]->param(base.toLatin1().constData()))
+        for (int r = 0; r < rows.size(); ++r)
+            if (Parameter *p = sameCounter(*ports[c], *rows[r]))
                 bindCell(table, r, c, p);
-        }
     }
     fitHeight(table);
     auto *layout = new QVBoxLayout(box);
@@ -241,21 +241,25 @@ void CountersPage::addFeeder(FeederModel *feeder) {
     auto *box = new QGroupBox(tr("Solder feeder %1").arg(feeder->displayName()));
     QTableWidget *table = makeTable(QStringLiteral("feederCounters"),
                                     tr("Counters of %1").arg(feeder->displayName()));
-    table->setRowCount(int(std::size(kFeederRows)));
+    const QList<FeederModel::CounterRow> rows = feeder->counterRows();
+    table->setRowCount(int(rows.size()));
     table->setColumnCount(2);
     table->setHorizontalHeaderLabels({tr("Total"), tr("Partial")});
     auto *buttons = new QHBoxLayout;
-    for (int r = 0; r < int(std::size(kFeederRows)); ++r) {
-        const FeederRow &row = kFeederRows[r];
-        table->setVerticalHeaderItem(r, new QTableWidgetItem(tr(row.label)));
-        if (Parameter *total = feeder->parameter(row.total))
-            bindCell(table, r, 0, total);
-        if (Parameter *partial = feeder->parameter(row.partial))
-            bindCell(table, r, 1, partial);
-        auto *button = new QPushButton(tr(row.reset));
-        button->setObjectName(QLatin1String("reset") + QLatin1String(row.partial));
-        button->setAccessibleName(tr(row.reset).remove(QStringLiteral("…")));
-        const QByteArray code = row.partial;
+    for (int r = 0; r < rows.size(); ++r) {
+        const FeederModel::CounterRow &row = rows.at(r);
+        table->setVerticalHeaderItem(r, new QTableWidgetItem(protocol::catalogText(row.quantity)));
+        if (row.total)
+            bindCell(table, r, 0, row.total);
+        if (row.partial)
+            bindCell(table, r, 1, row.partial);
+        const Action *reset = row.reset;
+        if (!reset)
+            continue;
+        auto *button = new QPushButton(buttonText(*reset) + QStringLiteral("…"));
+        button->setObjectName(QLatin1String("reset") + QString::fromLatin1(reset->code()));
+        button->setAccessibleName(buttonText(*reset));
+        const QByteArray code = reset->code();
         QPointer<FeederModel> target = feeder;
         connect(button, &QPushButton::clicked, this, [this, target, code] {
             if (target)
@@ -398,6 +402,8 @@ bool CountersPage::exportCsv(const QString &path, QString *error) const {
             for (PortModel *port : station->ports())
                 for (Parameter *p : port->counters())
                     text += csvLine(station->displayName(), port->number(), *p);
+            for (Parameter *p : station->counters())
+                text += csvLine(station->displayName(), 0, *p);
         } else if (auto *feeder = qobject_cast<FeederModel *>(device)) {
             for (Parameter *p : feeder->counters())
                 text += csvLine(feeder->displayName(), 0, *p);

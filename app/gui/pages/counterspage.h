@@ -1,8 +1,10 @@
 // CountersPage: the usage counters of every connected device, for support staff.
 //
-// Each station gets a table of its counters (rows: plugged, work, sleep, hibernation and no-tool
-// hours, sleep and desoldering cycles; columns: the ports); each SFR feeder a table of its total
-// and partial plugged hours, feeding hours and fed metres. Cells show the parameters' values and
+// Each station gets a table of its counters (rows: the catalog's "counter" group of a port:
+// plugged, work, sleep, hibernation and no-tool hours, sleep and desoldering cycles, then any
+// the station has of its own; columns: the ports); each SFR feeder a table of its total and
+// partial counters, paired by the quantity they count (plugged hours, feeding hours, fed
+// metres), so a counter added to the catalog gets its row. Cells show the parameters' values and
 // follow Parameter::valueChanged, so they update whenever the poll scheduler reads a counter;
 // refresh() asks the scheduler for every counter now, since counters are otherwise polled
 // slowly.
@@ -42,8 +44,8 @@ public:
 
     // Asks the poll scheduler to read every counter of every device now.
     void refresh();
-    // Asks for confirmation, then resets a partial counter ("CPP", "CFP" or "CTP") of the
-    // session's feeder, as its Reset button does.
+    // Asks for confirmation, then resets the partial counter with this code (the reset action
+    // shares it) of the session's feeder, as its Reset button does.
     void resetPartial(const QByteArray &code);
     // Every counter of every device as CSV (UTF-8, header row "device,port,counter,value,unit",
     // values in display units with a '.' decimal point). Returns false and sets *error (if

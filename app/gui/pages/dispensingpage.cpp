@@ -12,6 +12,7 @@
 namespace tipscope::gui {
 
 using namespace tipscope::model;
+using protocol::Role;
 
 DispensingPage::DispensingPage(Session &session, QWidget *parent)
     : Page(session, parent) {
@@ -25,7 +26,8 @@ DispensingPage::DispensingPage(Session &session, QWidget *parent)
 }
 
 bool DispensingPage::appliesTo(const DeviceModel *device) const {
-    return device && device->family() == QLatin1String("ALE");
+    const auto *station = qobject_cast<const StationModel *>(device);
+    return station && !station->dispensingSettings().isEmpty();
 }
 
 StationModel *DispensingPage::ale() const {
@@ -59,7 +61,7 @@ void DispensingPage::rebuild() {
     connect(stop, &QPushButton::clicked, this, &DispensingPage::stopDispensing);
     connect(fuse, &QPushButton::clicked, this, [this] {
         StationModel *s = ale();
-        Action *a = s ? s->action("IFE") : nullptr;
+        Action *a = s ? s->action(Role::IgnoreFuseError) : nullptr;
         if (!a || QMessageBox::warning(this, a->name(), a->danger() + tr("\n\nContinue?"),
                                        QMessageBox::Yes | QMessageBox::Cancel,
                                        QMessageBox::Cancel) != QMessageBox::Yes)
@@ -95,7 +97,7 @@ void DispensingPage::rebuild() {
     layout->addWidget(m_feedback);
     layout->addStretch(1);
     for (Parameter *p : st->parameters())
-        if (p->meta().group == QLatin1String("dispensing") || p->code() == "FST")
+        if (p->meta().group == protocol::Group::Dispensing || p->meta().role == Role::Fuse)
             connect(p, &Parameter::valueChanged, this, &DispensingPage::refreshLive);
     for (QPushButton *b : std::as_const(m_writeButtons))
         b->setEnabled(!m_session.monitorOnly());
@@ -108,9 +110,9 @@ void DispensingPage::refreshLive() {
         return;
     const auto fuse = st->fusePresent();
     m_live->setText(tr("%1 · dispensed %2 in %3 cycles · %4")
-                        .arg(st->parameter("FEE")->displayText(),
-                             st->parameter("DL1")->displayText(),
-                             st->parameter("DC1")->displayText(),
+                        .arg(st->displayText(Role::Feeding),
+                             st->displayText(Role::DispensedLength, 1), // its one port
+                             st->displayText(Role::DispensedCycles, 1),
                              !fuse   ? tr("fuse unknown")
                              : *fuse ? tr("fuse present")
                                      : tr("fuse missing or blown")));
@@ -118,7 +120,7 @@ void DispensingPage::refreshLive() {
 
 QString DispensingPage::startDispensing() {
     StationModel *st = ale();
-    Action *a = st ? st->action("STR") : nullptr;
+    Action *a = st ? st->action(Role::Start) : nullptr;
     const QString e = a ? a->trigger() : tr("no ALE");
     m_feedback->setText(e);
     return e;
@@ -126,7 +128,7 @@ QString DispensingPage::startDispensing() {
 
 QString DispensingPage::stopDispensing() {
     StationModel *st = ale();
-    Action *a = st ? st->action("STP") : nullptr;
+    Action *a = st ? st->action(Role::Stop) : nullptr;
     const QString e = a ? a->trigger() : tr("no ALE");
     m_feedback->setText(e);
     return e;

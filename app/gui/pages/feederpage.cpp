@@ -139,7 +139,7 @@ void FeederPage::refreshLive() {
         return;
     const QString state =
         f->isFeeding().has_value() ? (*f->isFeeding() ? tr("Feeding") : tr("Idle")) : tr("—");
-    m_live->setText(tr("%1 · fed %2").arg(state, f->parameter("FDL")->displayText()));
+    m_live->setText(tr("%1 · fed %2").arg(state, f->displayText(protocol::Role::FedLength)));
     const auto e = f->errorCode();
     m_error->setText(e && *e != 0 ? tr("⚠ %1").arg(f->errorText()) : tr("No feeder error"));
     m_error->setStyleSheet(e && *e != 0 ? QStringLiteral("color:#c01c28; font-weight:bold;")

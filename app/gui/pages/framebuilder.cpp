@@ -1,14 +1,9 @@
 #include "framebuilder.h"
 
-#include "protocol/catalog.h"
-#include "protocol/datafield.h"
-#include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
-#include "protocol/valuecodec.h"
 
 #include <QComboBox>
 #include <QCompleter>
-#include <QCoreApplication>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QLabel>
@@ -21,84 +16,6 @@ namespace tipscope::gui {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(FrameBuilder)
-};
-
-const QString kSeparator = QStringLiteral(" — ");
-
-bool isPrintable(const QString &text) {
-    for (QChar c : text)
-        if (c.unicode() < 0x20 || c.unicode() > 0x7e)
-            return false;
-    return true;
-}
-
-// What is wrong with `data` for a catalog write, in words; empty when the catalog agrees.
-QString writeProblem(const ResolvedCommand &cmd, const QString &data) {
-    const CommandSpec &spec = *cmd.spec;
-    if (spec.kind == ValueKind::Action)
-        return data.toLatin1() == spec.fixedData
-                   ? QString()
-                   : Tr::tr("%1 carries the data field %2.")
-                         .arg(QString::fromLatin1(cmd.code), QString::fromLatin1(spec.fixedData));
-    if (data.isEmpty())
-        return Tr::tr("A write needs a data field: %1.").arg(allowedText(cmd));
-    QString error;
-    const std::optional<qint64> value = parseUserValue(cmd, data, &error);
-    if (!value)
-        return error;
-    if (const QString why = validate(cmd, *value); !why.isEmpty())
-        return why;
-    // The device parses fixed-width fields, so "375" is not the same frame as "00375".
-    const bool delay = spec.kind == ValueKind::Delay && !spec.special.contains(int(*value));
-    const auto wire = delay ? encodeDelay(int(*value)) : encodeNumber(*value);
-    if (wire && *wire != data.toLatin1())
-        return Tr::tr("On the wire this value is written %1.").arg(QString::fromLatin1(*wire));
-    return {};
-}
-
-// "Name: description", as the catalog says it in the user interface language.
-QString describe(const CommandSpec &spec) {
-    return QStringLiteral("%1: %2").arg(catalogText(spec.name), catalogText(spec.description));
-}
-
-void addCatalogAdvice(const FrameInput &in, const QString &code, FrameDraft &draft) {
-    auto warn = [&draft](const QString &text) {
-        draft.hint = text;
-        draft.warning = true;
-    };
-    if (in.family.isEmpty())
-        return warn(Tr::tr("Unknown device family: the catalog cannot check this frame."));
-    const Catalog &catalog = Catalog::builtin();
-    const bool write = in.header == Header::Write;
-    const Direction dir = write ? Direction::Write : Direction::Read;
-    const auto cmd = catalog.resolve(in.family, code.toLatin1(), dir);
-    if (!cmd) {
-        QString text = write ? Tr::tr("%1 is not a %2 write command in the catalog.")
-                             : Tr::tr("%1 is not a %2 read command in the catalog.");
-        text = text.arg(code, in.family);
-        if (code != code.toUpper() && catalog.resolve(in.family, code.toUpper().toLatin1(), dir))
-            text += QLatin1Char(' ') + Tr::tr("Did you mean %1?").arg(code.toUpper());
-        return warn(text + QLatin1Char(' ') + Tr::tr("It is sent as typed."));
-    }
-    const CommandSpec &spec = *cmd->spec;
-    if (!write) {
-        if (!in.data.isEmpty())
-            return warn(Tr::tr("Reads carry no data field; the device may refuse this frame."));
-        draft.hint = describe(spec);
-        return;
-    }
-    const QString problem = writeProblem(*cmd, in.data);
-    if (spec.dangerous)
-        return warn(Tr::tr("Dangerous: %1")
-                        .arg(catalogText(spec.danger.isEmpty() ? spec.description : spec.danger)) +
-                    (problem.isEmpty() ? QString() : QLatin1Char(' ') + problem));
-    if (!problem.isEmpty())
-        return warn(Tr::tr("Catalog check: %1").arg(problem));
-    draft.hint = describe(spec);
-}
-
 enum class Tone { Normal, Warning, Error };
 
 void setTone(QLabel *label, Tone tone) {
@@ -113,35 +30,9 @@ void setTone(QLabel *label, Tone tone) {
 }
 } // namespace
 
-FrameDraft composeFrame(const FrameInput &in) {
-    FrameDraft draft;
-    const QString code = in.command.trimmed();
-    if (code.size() != 3 || !isPrintable(code)) {
-        draft.problem =
-            Tr::tr("Not sendable: the command must be 3 printable characters, e.g. SMN.");
-        return draft;
-    }
-    if (!isPrintable(in.data)) {
-        draft.problem = Tr::tr("Not sendable: the data field may only hold printable ASCII.");
-        return draft;
-    }
-    if (in.target &&
-        (*in.target < 0 || *in.target > kMaxAddress || in.source < 0 || in.source > kMaxAddress)) {
-        draft.problem = Tr::tr("Not sendable: addresses go from 00 to 99.");
-        return draft;
-    }
-    Frame frame;
-    frame.header = in.header;
-    frame.command = code.toLatin1();
-    frame.data = in.data.toLatin1();
-    draft.frame = in.target ? frame.addressed(in.source, *in.target) : frame;
-    draft.encodable = true;
-    addCatalogAdvice(in, code, draft);
-    return draft;
-}
-
-FrameBuilder::FrameBuilder(QWidget *parent)
-    : QGroupBox(tr("Send a frame"), parent) {
+FrameBuilder::FrameBuilder(model::ConsoleSender &sender, QWidget *parent)
+    : QGroupBox(tr("Send a frame"), parent)
+    , m_sender(sender) {
     buildLayout();
     connect(m_device, &QComboBox::currentIndexChanged, this, &FrameBuilder::fillCommands);
     connect(m_header, &QComboBox::currentIndexChanged, this, &FrameBuilder::fillCommands);
@@ -153,8 +44,11 @@ FrameBuilder::FrameBuilder(QWidget *parent)
     connect(m_rawHex, &QLineEdit::textChanged, this, &FrameBuilder::updateRawHex);
     connect(m_rawHex, &QLineEdit::returnPressed, this, &FrameBuilder::sendRaw);
     connect(m_sendRaw, &QPushButton::clicked, this, &FrameBuilder::sendRaw);
-    setMonitorOnly(false);
+    connect(&m_sender, &model::ConsoleSender::gateChanged, this, &FrameBuilder::onGateChanged);
+    connect(&m_sender, &model::ConsoleSender::outcome, this, &FrameBuilder::showOutcome);
+    m_composer.setRobotAddress(m_sender.robotAddress());
     fillCommands();
+    updateRawHex();
 }
 
 void FrameBuilder::buildLayout() {
@@ -197,7 +91,7 @@ void FrameBuilder::buildLayout() {
     m_rawHex = new QLineEdit(this);
     named(m_rawHex, "rawHexEdit", tr("Raw bytes in hex"));
     m_rawHex->setFont(mono);
-    m_rawHex->setPlaceholderText(QStringLiteral("02 30 30 30 31 52 53 4D 4E 03 5E"));
+    m_rawHex->setPlaceholderText(model::FrameComposer::exampleHex());
     m_rawHex->setClearButtonEnabled(true);
     m_sendRaw = new QPushButton(tr("Send ra&w hex"), this);
     named(m_sendRaw, "sendRawButton", tr("Send raw hex"));
@@ -240,32 +134,23 @@ void FrameBuilder::buildLayout() {
     setTabOrder(m_rawHex, m_sendRaw);
 }
 
-void FrameBuilder::setTargets(const QList<Target> &targets) {
+void FrameBuilder::setTargets(const QList<model::FrameTarget> &targets) {
     const QString current = m_device->currentText();
     {
         const QSignalBlocker block(m_device);
-        m_targets = targets;
+        m_composer.setTargets(targets);
         m_device->clear();
-        for (const Target &t : targets)
+        for (const model::FrameTarget &t : targets)
             m_device->addItem(t.label);
         m_device->setCurrentIndex(qMax(0, m_device->findText(current)));
     }
     fillCommands();
 }
 
-void FrameBuilder::setRobotAddress(int address) {
-    m_robotAddress = address;
+void FrameBuilder::onGateChanged() {
+    m_composer.setRobotAddress(m_sender.robotAddress());
     updateDraft();
-}
-
-void FrameBuilder::setMonitorOnly(bool on) {
-    m_monitorOnly = on;
-    m_sendRaw->setEnabled(!on);
-    m_sendRaw->setToolTip(
-        on ? tr("Monitor-only mode is on: raw bytes are not sent, since they "
-                "may be a write. Reads can still be sent with Send frame.")
-           : tr("Send these bytes exactly as typed; the answer appears in the table."));
-    updateDraft();
+    updateRawHex();
 }
 
 void FrameBuilder::showOutcome(const QString &text, bool failed) {
@@ -277,48 +162,22 @@ Header FrameBuilder::header() const {
     return m_header->currentData().toChar() == QLatin1Char('W') ? Header::Write : Header::Read;
 }
 
-QString FrameBuilder::commandCode() const {
-    const QString text = m_command->currentText();
-    const int i = m_command->currentIndex();
-    if (i >= 0 && m_command->itemText(i) == text)
-        return m_command->itemData(i).toString();
-    return text.section(kSeparator, 0, 0).trimmed();
-}
-
-FrameDraft FrameBuilder::draft() const {
-    const int i = m_device->currentIndex();
-    if (i < 0 || i >= m_targets.size()) {
-        FrameDraft none;
-        none.problem = tr("No device is known on this line: connect first, or send raw hex.");
-        return none;
-    }
-    FrameInput in;
-    in.source = m_robotAddress;
-    in.target = m_targets.at(i).address;
-    in.family = m_targets.at(i).family;
-    in.header = header();
-    in.command = commandCode();
-    in.data = m_data->text();
-    return composeFrame(in);
+model::FrameDraft FrameBuilder::draft() const {
+    return m_composer.compose(m_device->currentIndex(), header(), m_command->currentText(),
+                              m_data->text());
 }
 
 void FrameBuilder::fillCommands() {
-    const QString keep = commandCode();
-    const int i = m_device->currentIndex();
-    const QString family = i >= 0 && i < m_targets.size() ? m_targets.at(i).family : QString();
-    const Direction dir = header() == Header::Write ? Direction::Write : Direction::Read;
+    const QString keep = model::FrameComposer::codeOf(m_command->currentText());
+    const int target = m_device->currentIndex();
     {
         const QSignalBlocker block(m_command);
         m_command->clear();
-        for (const ResolvedCommand &c : Catalog::builtin().expand(family, dir)) {
-            const QString code = QString::fromLatin1(c.code);
-            m_command->addItem(code + kSeparator + catalogText(c.spec->name), code);
-        }
-        // Keep what the person chose; with nothing chosen yet, start from the model-name read
-        // every device answers.
-        int found = m_command->findData(keep.isEmpty() ? QStringLiteral("SMN") : keep);
-        if (found < 0 && keep.isEmpty() && m_command->count() > 0)
-            found = 0;
+        for (const model::CommandChoice &c : m_composer.commands(target, header()))
+            m_command->addItem(c.label, c.code);
+        // Keep what the person chose; with nothing chosen yet, start where the composer says.
+        const int found =
+            m_command->findData(keep.isEmpty() ? m_composer.firstCommand(target, header()) : keep);
         m_command->setCurrentIndex(found);
         if (found < 0)
             m_command->setEditText(keep);
@@ -329,22 +188,14 @@ void FrameBuilder::fillCommands() {
 void FrameBuilder::onCommandPicked() {
     // Picking from the list fills the data field with what the command takes by construction;
     // typed values are left alone.
-    const FrameDraft d = draft();
-    if (header() == Header::Read) {
-        m_data->clear();
-        return;
-    }
-    const int i = m_device->currentIndex();
-    if (!d.encodable || i < 0 || i >= m_targets.size())
-        return;
-    const auto cmd =
-        Catalog::builtin().resolve(m_targets.at(i).family, d.frame.command, Direction::Write);
-    if (cmd && cmd->spec->kind == ValueKind::Action)
-        m_data->setText(QString::fromLatin1(cmd->spec->fixedData));
+    const std::optional<QString> data =
+        m_composer.dataOfPicked(m_device->currentIndex(), header(), m_command->currentText());
+    if (data)
+        m_data->setText(*data);
 }
 
 void FrameBuilder::updateDraft() {
-    const FrameDraft d = draft();
+    const model::FrameDraft d = draft();
     if (d.encodable) {
         const QByteArray bytes = d.frame.encode();
         // The BCC apart: as ASCII it would read as data ("<ETX>6").
@@ -357,66 +208,57 @@ void FrameBuilder::updateDraft() {
     m_hint->setText(d.encodable ? d.hint : d.problem);
     setTone(m_hint, !d.encodable ? Tone::Error : d.warning ? Tone::Warning : Tone::Normal);
     m_data->setPlaceholderText(header() == Header::Read ? tr("none for reads") : tr("e.g. 00350"));
-    const bool blocked = m_monitorOnly && header() == Header::Write;
-    m_sendFrame->setEnabled(d.encodable && !blocked);
-    const QString blockedText =
-        tr("Monitor-only mode is on: W frames are not sent. Reads still are.");
-    if (blocked && d.encodable) {
+    const QString refusal = d.encodable ? m_sender.refusal(d.frame) : QString();
+    m_sendFrame->setEnabled(d.encodable && refusal.isEmpty());
+    if (!refusal.isEmpty()) {
         // Said in the panel too: a greyed-out button alone does not tell anyone why.
-        m_hint->setText(blockedText + QLatin1Char(' ') + d.hint);
+        m_hint->setText(refusal + QLatin1Char(' ') + d.hint);
         setTone(m_hint, Tone::Warning);
-    }
-    if (blocked)
-        m_sendFrame->setToolTip(blockedText);
-    else if (!d.encodable)
+        m_sendFrame->setToolTip(refusal);
+    } else if (!d.encodable) {
         m_sendFrame->setToolTip(d.problem);
-    else
+    } else {
         m_sendFrame->setToolTip(
             tr("Send this frame once, as shown (no retries; catalog warnings do not stop it). "
                "Its answer appears in the table."));
+    }
 }
 
 void FrameBuilder::updateRawHex() {
-    const QString text = m_rawHex->text();
-    QString error;
-    const auto bytes = text.trimmed().isEmpty() ? std::nullopt : parseHexBytes(text, &error);
-    if (!bytes) {
-        m_rawStatus->setText(error);
+    const bool empty = m_rawHex->text().trimmed().isEmpty();
+    const model::RawHex raw = model::FrameComposer::readHex(m_rawHex->text());
+    const QString refusal = m_sender.refusal(raw.bytes.value_or(QByteArray()));
+    m_sendRaw->setEnabled(refusal.isEmpty());
+    m_sendRaw->setToolTip(
+        !refusal.isEmpty()
+            ? refusal
+            : tr("Send these bytes exactly as typed; the answer appears in the table."));
+    if (!empty && !raw.bytes) {
+        m_rawStatus->setText(raw.text);
         setTone(m_rawStatus, Tone::Error);
-        return;
+    } else if (!refusal.isEmpty()) {
+        m_rawStatus->setText(refusal);
+        setTone(m_rawStatus, Tone::Warning);
+    } else {
+        m_rawStatus->setText(empty ? QString() : raw.text);
+        setTone(m_rawStatus, raw.warning ? Tone::Warning : Tone::Normal);
     }
-    QString why;
-    const auto frame = parseFrame(*bytes, nullptr, &why);
-    if (frame)
-        m_rawStatus->setText(
-            tr("%n byte(s), a valid frame: %1", "", int(bytes->size())).arg(frame->toString()));
-    else
-        m_rawStatus->setText(
-            tr("%n byte(s), not a valid frame (%1): sent as typed", "", int(bytes->size()))
-                .arg(why));
-    setTone(m_rawStatus, frame ? Tone::Normal : Tone::Warning);
 }
 
 void FrameBuilder::sendFrame() {
-    const FrameDraft d = draft();
-    if (!d.encodable || (m_monitorOnly && d.frame.header == Header::Write))
-        return;
-    Q_EMIT sendRequested(d.frame.encode(), d.frame.header == Header::Write);
+    const model::FrameDraft d = draft();
+    if (d.encodable)
+        m_sender.send(d.frame); // refusals are reported like any outcome
 }
 
 void FrameBuilder::sendRaw() {
-    if (m_monitorOnly)
-        return;
-    QString error;
-    const auto bytes = parseHexBytes(m_rawHex->text(), &error);
-    if (!bytes) {
-        m_rawStatus->setText(tr("Not sent: %1").arg(error));
+    const model::RawHex raw = model::FrameComposer::readHex(m_rawHex->text());
+    if (!raw.bytes) {
+        m_rawStatus->setText(tr("Not sent: %1").arg(raw.text));
         setTone(m_rawStatus, Tone::Error);
         return;
     }
-    // Bytes that are not a valid frame could be anything, a write included.
-    const auto frame = parseFrame(*bytes);
-    Q_EMIT sendRequested(*bytes, !frame || frame->header != Header::Read);
+    m_sender.send(*raw.bytes);
 }
 
 } // namespace tipscope::gui

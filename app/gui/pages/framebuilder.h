@@ -5,19 +5,18 @@
 // would go on the wire, BCC included, and what the catalog thinks of them. Because this is a raw
 // console, catalog advice (value out of range, unknown command) never blocks sending; only what
 // cannot be encoded at all is refused (a command that is not 3 characters, non-printable data).
-// A second field takes any bytes as hex. In monitor-only mode writes and raw bytes (which may be
-// writes) cannot be sent, and the disabled buttons say why in their tooltips.
-//
-// The panel does not talk to the line: it emits sendRequested() with the bytes, and its owner
-// queues them and reports back through showOutcome(). composeFrame() holds the rules without any
-// widget, so they can be tested and reused.
+// A second field takes any bytes as hex. Both go through the console's ConsoleSender, which owns
+// the monitor-only gate: what it would refuse (W frames, bytes that are not one valid R frame)
+// disables the button, and the panel says why next to it; the outcome of the last send is shown
+// under the fields. The rules (which commands, addressing, the catalog's checks, reading hex)
+// are model::FrameComposer's; the panel shows its choices.
 #pragma once
 
-#include "protocol/frame.h"
+#include "model/consolesender.h"
+#include "model/framecomposer.h"
 
 #include <QGroupBox>
 #include <QList>
-#include <optional>
 
 class QComboBox;
 class QLabel;
@@ -26,56 +25,25 @@ class QPushButton;
 
 namespace tipscope::gui {
 
-struct FrameInput {
-    int source = 0;            // the robot's address, used when `target` is set
-    std::optional<int> target; // unset: a frame without addresses
-    QString family;            // catalog family of the target; empty when unknown
-    protocol::Header header = protocol::Header::Read;
-    QString command;
-    QString data;
-};
-
-struct FrameDraft {
-    protocol::Frame frame;
-    bool encodable = false; // false: `problem` says why nothing can be sent
-    QString problem;
-    QString hint;         // catalog advice or the command's description
-    bool warning = false; // the hint is a warning (out of range, unknown, dangerous)
-};
-
-[[nodiscard]] FrameDraft composeFrame(const FrameInput &input);
-
 class FrameBuilder : public QGroupBox {
     Q_OBJECT
 public:
-    struct Target {
-        QString label; // "01 DME-2C"
-        std::optional<int> address;
-        QString family;
-    };
+    // Sends through `sender`, which must outlive the panel.
+    explicit FrameBuilder(model::ConsoleSender &sender, QWidget *parent = nullptr);
 
-    explicit FrameBuilder(QWidget *parent = nullptr);
-
-    void setTargets(const QList<Target> &targets);
-    void setRobotAddress(int address);
-    void setMonitorOnly(bool on);
-    // The result of the last send, as one line; `failed` shows it as an error.
-    void showOutcome(const QString &text, bool failed);
-    [[nodiscard]] FrameDraft draft() const;
-
-Q_SIGNALS:
-    // `write`: the bytes are (or may be) a write, so they belong to the writes' queue class.
-    void sendRequested(const QByteArray &bytes, bool write);
+    void setTargets(const QList<model::FrameTarget> &targets);
+    [[nodiscard]] model::FrameDraft draft() const;
 
 private:
     void buildLayout();
+    void onGateChanged();
+    void showOutcome(const QString &text, bool failed);
     void fillCommands();
     void onCommandPicked();
     void updateDraft();
     void updateRawHex();
     void sendFrame();
     void sendRaw();
-    [[nodiscard]] QString commandCode() const;
     [[nodiscard]] protocol::Header header() const;
 
     QComboBox *m_device = nullptr;
@@ -89,9 +57,8 @@ private:
     QPushButton *m_sendRaw = nullptr;
     QLabel *m_rawStatus = nullptr;
     QLabel *m_outcome = nullptr;
-    QList<Target> m_targets;
-    int m_robotAddress = 0;
-    bool m_monitorOnly = false;
+    model::ConsoleSender &m_sender;
+    model::FrameComposer m_composer;
 };
 
 } // namespace tipscope::gui

@@ -10,6 +10,7 @@
 namespace tipscope::gui {
 
 using namespace tipscope::model;
+using protocol::Role;
 
 OverviewPage::OverviewPage(Session &session, QWidget *parent)
     : Page(session, parent) {
@@ -54,8 +55,8 @@ void OverviewPage::rebuild() {
             m_cards.append(card);
         }
         m_grid->setRowStretch(int(st->ports().size() + 1) / qMax(1, columns) + 1, 1);
-        for (const char *code : {"SER", "TT0", "FST"})
-            if (Parameter *p = st->parameter(code))
+        for (Role role : {Role::Error, Role::TransformerTemperature, Role::Fuse})
+            if (Parameter *p = st->parameter(role))
                 connect(p, &Parameter::valueChanged, this, &OverviewPage::refreshStation);
     }
     if (FeederModel *f = m_session.feeder())
@@ -84,7 +85,7 @@ void OverviewPage::refreshStation() {
         tr("family %1").arg(st->family()),
         tr("software %1")
             .arg(st->info().softwareVersion.isEmpty() ? tr("—") : st->info().softwareVersion)};
-    if (Parameter *tt = st->parameter("TT0"); tt && tt->value())
+    if (Parameter *tt = st->parameter(Role::TransformerTemperature); tt && tt->value())
         facts.append(tr("transformer %1").arg(tt->displayText()));
     if (const auto fuse = st->fusePresent())
         facts.append(*fuse ? tr("fuse present")
@@ -104,9 +105,9 @@ void OverviewPage::refreshFeeder() {
     }
     QStringList facts{QStringLiteral("<b>%1</b>").arg(f->displayName().toHtmlEscaped())};
     facts.append(f->isFeeding().value_or(false) ? tr("feeding") : tr("idle"));
-    if (Parameter *fdl = f->parameter("FDL"); fdl && fdl->value())
+    if (Parameter *fdl = f->parameter(Role::FedLength); fdl && fdl->value())
         facts.append(tr("fed %1").arg(fdl->displayText()));
-    if (Parameter *spd = f->parameter("SPD"); spd && spd->value())
+    if (Parameter *spd = f->parameter(Role::FeedSpeed); spd && spd->value())
         facts.append(tr("speed %1").arg(spd->displayText()));
     if (const auto e = f->errorCode(); e && *e != 0)
         facts.append(QStringLiteral("<span style='color:#c01c28'>⚠ %1</span>")

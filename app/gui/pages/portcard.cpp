@@ -15,6 +15,7 @@
 namespace tipscope::gui {
 
 using namespace tipscope::model;
+using protocol::Role;
 
 PortCard::PortCard(PortModel &port, QWidget *parent)
     : QFrame(parent)
@@ -51,7 +52,7 @@ PortCard::PortCard(PortModel &port, QWidget *parent)
     m_stand->setToolTip(tr("W-PS%1 00001: stand; sleep and hibernation follow after their delays")
                             .arg(port.number()));
     m_cool->setToolTip(tr("W-PS%1 00010: cooling (extractor stand-by)").arg(port.number()));
-    const Parameter *ps = port.param("PS");
+    const Parameter *ps = port.parameter(Role::Status);
     m_cool->setVisible(ps && ps->spec().values.contains(10));
     m_newSetpoint = new QDoubleSpinBox(this);
     m_newSetpoint->setAccessibleName(tr("New selected temperature, port %1").arg(port.number()));
@@ -89,7 +90,7 @@ PortCard::PortCard(PortModel &port, QWidget *parent)
     connect(&port, &PortModel::changed, m_refresh, &DeferredRefresh::request);
     connect(&port.station(), &DeviceModel::temperatureUnitChanged, m_refresh,
             &DeferredRefresh::request);
-    for (Parameter *p : {port.param("ST"), port.param("PS")})
+    for (Parameter *p : port.parameters({Role::Setpoint, Role::Status}))
         connect(p, &Parameter::stateChanged, this, [this, p] {
             if (p->state() == Parameter::State::Failed)
                 m_feedback->setText(
@@ -130,30 +131,31 @@ void PortCard::refresh() {
     PortModel &port = *m_port;
     const TemperatureUnit unit = port.station().temperatureUnit();
     m_title->setText(tr("Port %1 — %2").arg(port.number()).arg(port.toolName()));
-    Parameter *tt = port.param("TT");
-    Parameter *st = port.param("ST");
-    m_tip->setText(tt->value() ? tt->displayText() : tr("— °"));
-    m_setpoint->setText(tr("set %1").arg(st->displayText()));
+    m_tip->setText(port.tipTemperature() ? port.displayText(Role::TipTemperature) : tr("— °"));
+    m_setpoint->setText(tr("set %1").arg(port.displayText(Role::Setpoint)));
     m_power->setValue(int(port.power().value_or(0)));
-    m_power->setFormat(tr("power %1").arg(port.param("PP")->displayText()));
+    m_power->setFormat(tr("power %1").arg(port.displayText(Role::Power)));
     const auto status = port.status();
     m_status->setText(status ? status->text() : tr("status unknown"));
     QStringList details;
-    if (Parameter *qt = port.param("QT"); qt && qt->value())
+    if (Parameter *qt = port.parameter(Role::TransistorTemperature); qt && qt->value())
         details.append(tr("transistor %1").arg(qt->displayText()));
-    if (Parameter *ed = port.param("ED"); ed && ed->number().value_or(0) > 0)
+    if (Parameter *ed = port.parameter(Role::TimeToNextMode); ed && ed->number().value_or(0) > 0)
         details.append(tr("%1 until the next mode").arg(ed->displayText()));
     m_details->setText(details.join(QStringLiteral(" · ")));
     QStringList problems;
     if (const auto e = port.error(); e && *e != 0)
         problems.append(port.errorText());
-    if (port.alarmFlags() != 0)
-        problems.append(port.param("TA")->displayText());
+    if (const auto alarm = port.alarm(); alarm && alarm->any())
+        problems.append(port.displayText(Role::Alarm));
     m_problem->setText(
         problems.isEmpty() ? QString() : QStringLiteral("⚠ ") + problems.join(QLatin1String("; ")));
     m_problem->setStyleSheet(
         problems.isEmpty() ? QString() : QStringLiteral("color: #c01c28; font-weight: bold;"));
     // Keep the setpoint editor in display units and within the station's limits.
+    const Parameter *st = port.parameter(Role::Setpoint);
+    if (!st)
+        return;
     const DisplayFormat f = displayFormat(st->spec(), unit);
     m_newSetpoint->blockSignals(true);
     m_newSetpoint->setSuffix(QLatin1Char(' ') + f.unit);
@@ -178,8 +180,10 @@ QString PortCard::requestMode(int mode) {
 QString PortCard::requestSetpoint(double displayValue) {
     if (!m_port)
         return {};
-    Parameter *st = m_port->param("ST");
-    const qint64 wire = fromDisplay(st->spec(), displayValue, m_port->station().temperatureUnit());
+    // A port without a setpoint is refused by the model, which says why.
+    const Parameter *st = m_port->parameter(Role::Setpoint);
+    const qint64 wire =
+        st ? fromDisplay(st->spec(), displayValue, m_port->station().temperatureUnit()) : 0;
     const QString why = m_port->setSelectedTemperature(wire);
     m_feedback->setText(
         why.isEmpty()

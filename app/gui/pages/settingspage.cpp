@@ -23,6 +23,7 @@
 namespace tipscope::gui {
 
 using namespace tipscope::model;
+using protocol::Role;
 
 SettingsPage::SettingsPage(Session &session, QWidget *parent)
     : Page(session, parent) {
@@ -138,16 +139,13 @@ void SettingsPage::rebuild() {
         if (PortModel *port = station->port(portNumber)) {
             // Another tool on the shown port changes which settings come first: lay out again,
             // once, after the current event (the signal may come from inside a reply handler).
-            connect(port->param("CT"), &Parameter::valueChanged, m_form,
-                    [this] { QTimer::singleShot(0, m_form, [this] { rebuild(); }); });
-            addGroup(tr("Port %1").arg(portNumber), {port->param("ST")});
+            if (Parameter *tool = port->parameter(Role::ConnectedTool))
+                connect(tool, &Parameter::valueChanged, m_form,
+                        [this] { QTimer::singleShot(0, m_form, [this] { rebuild(); }); });
+            addGroup(tr("Port %1").arg(portNumber), port->settings());
             addGroup(tr("Alarms, port %1").arg(portNumber), port->alarmSettings());
-            const auto tableName = QStringLiteral("$toolTable");
-            const auto tools = protocol::Catalog::builtin().table(tableName, station->family());
             for (int tool : port->toolOrder()) {
-                QString title = tr("Tool %1, port %2")
-                                    .arg(protocol::catalogText(tools.value(tool)))
-                                    .arg(portNumber);
+                QString title = tr("Tool %1, port %2").arg(port->toolName(tool)).arg(portNumber);
                 if (port->tool() == tool)
                     title += tr(" (connected)");
                 addGroup(title, port->toolSettings(tool));
@@ -191,7 +189,7 @@ void SettingsPage::updateButtons() {
     m_apply->setEnabled(writable && edited > 0);
     m_revert->setEnabled(edited > 0);
     m_refresh->setEnabled(m_device != nullptr);
-    m_save->setEnabled(writable && m_device->action("NVS"));
+    m_save->setEnabled(writable && m_device->action(Role::SaveToMemory));
     m_actions->setEnabled(writable && m_actions->menu() && !m_actions->menu()->isEmpty());
     m_profiles->setEnabled(m_device != nullptr);
     const QString why =
@@ -228,7 +226,7 @@ void SettingsPage::runDangerous(const QByteArray &code) {
     if (!a)
         return;
     qint64 argument = 0;
-    if (code == "SAD") {
+    if (a->command().spec->role == Role::SetAddress) {
         bool ok = false;
         argument = QInputDialog::getInt(
             this, a->name(), tr("New address (1-99), or 0 for frames without addresses:"),

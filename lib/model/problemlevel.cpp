@@ -1,12 +1,10 @@
 #include "problemlevel.h"
 
-#include <QApplication>
-#include <QColor>
-#include <QStyle>
+#include "protocol/catalog.h"
 
-namespace tipscope::gui {
+#include <QCoreApplication>
 
-using model::Event;
+namespace tipscope::model {
 
 namespace {
 struct Tr {
@@ -36,6 +34,10 @@ Level levelOf(Event::Severity severity) {
     return Level::Error;
 }
 
+Level levelOf(const protocol::Catalog &catalog, const QString &tableName, std::optional<int> code) {
+    return code ? levelOf(catalog.severity(tableName, *code)) : Level::Unknown;
+}
+
 QString levelName(Level level) {
     switch (level) {
     case Level::Unknown:
@@ -52,35 +54,4 @@ QString levelName(Level level) {
     return {};
 }
 
-QIcon levelIcon(Level level) {
-    const QStyle *style = QApplication::style();
-    switch (level) {
-    case Level::Unknown:
-        return {};
-    case Level::Ok:
-        return style->standardIcon(QStyle::SP_DialogApplyButton);
-    case Level::Info:
-        return style->standardIcon(QStyle::SP_MessageBoxInformation);
-    case Level::Warning:
-        return style->standardIcon(QStyle::SP_MessageBoxWarning);
-    case Level::Error:
-        return style->standardIcon(QStyle::SP_MessageBoxCritical);
-    }
-    return {};
-}
-
-// Translucent, so the tint reads on light and dark palettes alike.
-QVariant levelTint(Level level) {
-    switch (level) {
-    case Level::Error:
-        return QColor(220, 40, 40, 70);
-    case Level::Warning:
-        return QColor(235, 165, 0, 80);
-    case Level::Info:
-        return QColor(40, 120, 220, 35);
-    default:
-        return {};
-    }
-}
-
-} // namespace tipscope::gui
+} // namespace tipscope::model

@@ -1,12 +1,8 @@
 #include "eventhistorymodel.h"
 
-#include "problemlevel.h"
-
 #include <QCoreApplication>
 
-namespace tipscope::gui {
-
-using model::Event;
+namespace tipscope::model {
 
 namespace {
 struct Tr {
@@ -71,11 +67,8 @@ QVariant EventHistoryModel::data(const QModelIndex &index, int role) const {
         return text(e, index.column(), false);
     case Qt::ToolTipRole:
         return index.column() == Time ? text(e, Time, true) : text(e, index.column(), false);
-    case Qt::DecorationRole:
-        return index.column() == Severity ? QVariant(levelIcon(levelOf(e.severity))) : QVariant();
-    case Qt::BackgroundRole:
-        // Only problems are tinted, so they stand out among status changes and writes.
-        return e.severity == Event::Severity::Info ? QVariant() : levelTint(levelOf(e.severity));
+    case LevelRole:
+        return int(levelOf(e.severity));
     default:
         return {};
     }
@@ -123,4 +116,4 @@ bool EventHistoryFilter::filterAcceptsRow(int row, const QModelIndex &) const {
     return false;
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

@@ -1,0 +1,272 @@
+#include "eventhistorypanel.h"
+
+#include "levelstyle.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
+#include <QComboBox>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QScrollBar>
+#include <QStandardPaths>
+#include <QStyle>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace tipscope::gui {
+
+using namespace tipscope::model;
+
+namespace {
+
+constexpr int kFlushMs = 100; // new events are shown at most ten times a second
+
+// Tabs and line breaks inside a field would break the one-event-a-line text format.
+QString flat(QString text) {
+    text.replace(QLatin1Char('\t'), QLatin1Char(' '));
+    text.replace(QLatin1Char('\n'), QLatin1Char(' '));
+    return text;
+}
+
+} // namespace
+
+EventHistoryPanel::EventHistoryPanel(Session &session, QWidget *parent)
+    : QGroupBox(tr("History"), parent)
+    , m_session(session) {
+    m_flush.setSingleShot(true);
+    m_flush.setInterval(kFlushMs);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(buildFilters());
+    buildView(*layout);
+
+    connect(&m_flush, &QTimer::timeout, this, &EventHistoryPanel::flushEvents);
+    connect(&m_session.eventLog(), &EventLog::appended, this, [this](const Event &e) {
+        m_pending.append(e);
+        if (!m_flush.isActive())
+            m_flush.start();
+    });
+    connect(&m_session.eventLog(), &EventLog::cleared, this, [this] {
+        m_pending.clear();
+        m_events->reset({});
+        updateCount();
+    });
+    m_events->reset(m_session.eventLog().events());
+    m_history->scrollToBottom();
+    updateCount();
+}
+
+QLayout *EventHistoryPanel::buildFilters() {
+    m_kindFilter = new QComboBox(this);
+    m_kindFilter->setObjectName(QStringLiteral("kindFilter"));
+    m_kindFilter->setAccessibleName(tr("Show events of kind"));
+    m_kindFilter->addItem(tr("All kinds"), kAllEventKinds);
+    m_kindFilter->addItem(tr("Errors and alarms"), kErrorEventKinds);
+    const std::pair<Event::Kind, QString> kinds[] = {
+        {Event::Kind::StationError, tr("Station errors")},
+        {Event::Kind::PortError, tr("Port errors")},
+        {Event::Kind::FeederError, tr("Feeder errors")},
+        {Event::Kind::Alarm, tr("Alarms")},
+        {Event::Kind::Status, tr("Status changes")},
+        {Event::Kind::Write, tr("Writes")},
+        {Event::Kind::Communication, tr("Communication")},
+        {Event::Kind::Connection, tr("Connection")}};
+    for (const auto &[kind, name] : kinds)
+        m_kindFilter->addItem(name, eventKindBit(kind));
+    m_severityFilter = new QComboBox(this);
+    m_severityFilter->setObjectName(QStringLiteral("severityFilter"));
+    m_severityFilter->setAccessibleName(tr("Show events of severity"));
+    m_severityFilter->addItem(tr("Any severity"), int(Event::Severity::Info));
+    m_severityFilter->addItem(tr("Warnings and errors"), int(Event::Severity::Warning));
+    m_severityFilter->addItem(tr("Errors only"), int(Event::Severity::Error));
+    m_textFilter = new QLineEdit(this);
+    m_textFilter->setObjectName(QStringLiteral("textFilter"));
+    m_textFilter->setAccessibleName(tr("Show events containing"));
+    m_textFilter->setPlaceholderText(tr("Text in any column"));
+    m_textFilter->setClearButtonEnabled(true);
+    auto *kindLabel = new QLabel(tr("&Kind:"), this);
+    kindLabel->setBuddy(m_kindFilter);
+    auto *severityLabel = new QLabel(tr("Se&verity:"), this);
+    severityLabel->setBuddy(m_severityFilter);
+    auto *textLabel = new QLabel(tr("&Search:"), this);
+    textLabel->setBuddy(m_textFilter);
+    auto *filters = new QHBoxLayout;
+    filters->addWidget(kindLabel);
+    filters->addWidget(m_kindFilter);
+    filters->addSpacing(12);
+    filters->addWidget(severityLabel);
+    filters->addWidget(m_severityFilter);
+    filters->addSpacing(12);
+    filters->addWidget(textLabel);
+    filters->addWidget(m_textFilter, 1);
+    connect(m_kindFilter, &QComboBox::currentIndexChanged, this, &EventHistoryPanel::applyFilters);
+    connect(m_severityFilter, &QComboBox::currentIndexChanged, this,
+            &EventHistoryPanel::applyFilters);
+    connect(m_textFilter, &QLineEdit::textChanged, this, &EventHistoryPanel::applyFilters);
+    return filters;
+}
+
+void EventHistoryPanel::buildView(QVBoxLayout &layout) {
+    m_events = new EventHistoryModel(this);
+    m_filter = new EventHistoryFilter(this);
+    m_filter->setSourceModel(m_events);
+    auto *styled =
+        new LevelStyleProxy(EventHistoryModel::LevelRole, EventHistoryModel::Severity, this);
+    styled->setSourceModel(m_filter);
+    m_history = new QTableView(this);
+    m_history->setObjectName(QStringLiteral("history"));
+    m_history->setAccessibleName(tr("Event history"));
+    m_history->setModel(styled);
+    m_history->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_history->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_history->setTabKeyNavigation(false);
+    m_history->setWordWrap(false);
+    m_history->setAlternatingRowColors(true);
+    m_history->verticalHeader()->hide();
+    // Fixed row heights and column widths: measuring 10 000 rows on every insert would not be.
+    m_history->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_history->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
+    QHeaderView *header = m_history->horizontalHeader();
+    header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    header->setStretchLastSection(true);
+    const int pad = 24 + style()->pixelMetric(QStyle::PM_SmallIconSize);
+    const QFontMetrics fm = fontMetrics();
+    header->resizeSection(EventHistoryModel::Time,
+                          fm.horizontalAdvance(QStringLiteral("00:00:00")) + pad);
+    header->resizeSection(EventHistoryModel::Severity,
+                          fm.horizontalAdvance(levelName(Level::Warning)) + pad);
+    header->resizeSection(EventHistoryModel::Kind,
+                          fm.horizontalAdvance(Event::kindTitle(Event::Kind::Communication)) + pad);
+    header->resizeSection(EventHistoryModel::Source,
+                          fm.horizontalAdvance(QStringLiteral("DME-2C at 01, port 4")) + pad);
+    auto *copyAction = new QAction(tr("Copy"), m_history);
+    copyAction->setShortcut(QKeySequence::Copy);
+    copyAction->setShortcutContext(Qt::WidgetShortcut);
+    m_history->addAction(copyAction);
+
+    m_count = new QLabel(this);
+    m_count->setAccessibleName(tr("Events shown"));
+    m_copy = new QPushButton(tr("&Copy"), this);
+    m_copy->setObjectName(QStringLiteral("copyEvents"));
+    m_copy->setToolTip(tr("Copy the selected events to the clipboard (Ctrl+C)"));
+    m_copy->setAccessibleName(tr("Copy selected events"));
+    m_export = new QPushButton(tr("E&xport…"), this);
+    m_export->setObjectName(QStringLiteral("exportEvents"));
+    m_export->setToolTip(tr("Save the events shown as a tab-separated text file"));
+    m_export->setAccessibleName(tr("Export events"));
+    m_status = new QLabel(this);
+    m_status->setAccessibleName(tr("Result of the last export"));
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_count);
+    buttons->addWidget(m_status, 1);
+    buttons->addWidget(m_copy);
+    buttons->addWidget(m_export);
+    layout.addWidget(m_history, 1);
+    layout.addLayout(buttons);
+
+    connect(copyAction, &QAction::triggered, this, &EventHistoryPanel::copySelection);
+    connect(m_copy, &QPushButton::clicked, this, &EventHistoryPanel::copySelection);
+    connect(m_export, &QPushButton::clicked, this, &EventHistoryPanel::chooseExportFile);
+    connect(m_history->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &EventHistoryPanel::updateButtons);
+}
+
+void EventHistoryPanel::flushEvents() {
+    if (m_pending.isEmpty())
+        return;
+    // Follow the newest event only while the reader is at the bottom, not while reading back.
+    const QScrollBar *bar = m_history->verticalScrollBar();
+    const bool follow = bar->value() >= bar->maximum();
+    m_events->append(m_pending);
+    m_pending.clear();
+    if (follow)
+        m_history->scrollToBottom();
+    updateCount();
+}
+
+void EventHistoryPanel::applyFilters() {
+    m_filter->setFilter(m_kindFilter->currentData().toUInt(),
+                        Event::Severity(m_severityFilter->currentData().toInt()),
+                        m_textFilter->text());
+    m_history->scrollToBottom();
+    updateCount();
+}
+
+void EventHistoryPanel::updateCount() {
+    QString text = tr("%1 of %2 events shown").arg(m_filter->rowCount()).arg(m_events->rowCount());
+    if (const qint64 dropped = m_session.eventLog().dropped(); dropped > 0)
+        text += QLatin1String("; ") + tr("%n older events were dropped", nullptr, int(dropped));
+    m_count->setText(text);
+    updateButtons();
+}
+
+void EventHistoryPanel::updateButtons() {
+    m_copy->setEnabled(m_history->selectionModel()->hasSelection());
+}
+
+QString EventHistoryPanel::rowText(int proxyRow) const {
+    const Event &e = m_events->event(m_filter->mapToSource(m_filter->index(proxyRow, 0)).row());
+    QStringList fields;
+    for (int c = 0; c < EventHistoryModel::ColumnCount; ++c)
+        fields.append(flat(EventHistoryModel::text(e, c, true)));
+    return fields.join(QLatin1Char('\t'));
+}
+
+void EventHistoryPanel::copySelection() const {
+    QList<int> rows;
+    for (const QModelIndex &index : m_history->selectionModel()->selectedRows())
+        rows.append(index.row());
+    if (rows.isEmpty())
+        return;
+    std::sort(rows.begin(), rows.end()); // in time order, whatever order they were picked in
+    QStringList lines;
+    for (int row : std::as_const(rows))
+        lines.append(rowText(row));
+    QApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
+}
+
+bool EventHistoryPanel::exportText(const QString &path, QString *error) const {
+    QStringList header;
+    for (int c = 0; c < EventHistoryModel::ColumnCount; ++c)
+        header.append(EventHistoryModel::columnName(c));
+    QString text = header.join(QLatin1Char('\t')) + QLatin1Char('\n');
+    for (int row = 0; row < m_filter->rowCount(); ++row)
+        text += rowText(row) + QLatin1Char('\n');
+    // QSaveFile: a failed export never leaves half a file where an old one was.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
+        if (error)
+            *error = file.errorString();
+        return false;
+    }
+    return true;
+}
+
+void EventHistoryPanel::chooseExportFile() {
+    const QString name =
+        QStringLiteral("tipscope-events-%1.txt")
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmm")));
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export events"), QDir(dir).filePath(name), tr("Text files (*.txt *.tsv)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (exportText(path, &error))
+        m_status->setText(tr("Saved to %1").arg(QDir::toNativeSeparators(path)));
+    else
+        QMessageBox::warning(this, tr("Export events"),
+                             tr("The events could not be saved: %1").arg(error));
+}
+
+} // namespace tipscope::gui

@@ -1,0 +1,61 @@
+// EventHistoryPanel: the Errors page's history: the session's EventLog (errors, alarms, status
+// changes, writes, communication errors, connection) with time, severity, kind, source and text,
+// filtered by kind, severity and free text. New events arrive through EventLog::appended, are
+// shown in batches at most ten times a second, and keep the newest row in view unless the reader
+// has scrolled up. Copy puts the selected rows on the clipboard; exportText() writes the rows
+// shown, tab-separated. The table is model::EventHistoryModel, which any front end can use.
+#pragma once
+
+#include "model/eventhistorymodel.h"
+#include "model/session.h"
+
+#include <QGroupBox>
+#include <QTimer>
+
+class QComboBox;
+class QLabel;
+class QLayout;
+class QLineEdit;
+class QPushButton;
+class QTableView;
+class QVBoxLayout;
+
+namespace tipscope::gui {
+
+class EventHistoryPanel : public QGroupBox {
+    Q_OBJECT
+public:
+    explicit EventHistoryPanel(model::Session &session, QWidget *parent = nullptr);
+
+    // Copies the selected rows to the clipboard, tab-separated, one event a line.
+    void copySelection() const;
+    // Writes the rows that pass the filters, with a header line, tab-separated, UTF-8. Returns
+    // false and sets *error (if given) when the file cannot be written.
+    [[nodiscard]] bool exportText(const QString &path, QString *error) const;
+
+private:
+    [[nodiscard]] QLayout *buildFilters();
+    void buildView(QVBoxLayout &layout);
+    void flushEvents();
+    void applyFilters();
+    void updateCount();
+    void updateButtons();
+    void chooseExportFile();
+    [[nodiscard]] QString rowText(int proxyRow) const;
+
+    model::Session &m_session;
+    QComboBox *m_kindFilter = nullptr;
+    QComboBox *m_severityFilter = nullptr;
+    QLineEdit *m_textFilter = nullptr;
+    QTableView *m_history = nullptr;
+    QLabel *m_count = nullptr;
+    QLabel *m_status = nullptr;
+    QPushButton *m_copy = nullptr;
+    QPushButton *m_export = nullptr;
+    model::EventHistoryModel *m_events = nullptr;
+    model::EventHistoryFilter *m_filter = nullptr;
+    QList<model::Event> m_pending;
+    QTimer m_flush;
+};
+
+} // namespace tipscope::gui

@@ -1,0 +1,29 @@
+// The journal's SQLite schema: its version (PRAGMA user_version), the ordered migrations that
+// bring any older file to it, and the connection settings every journal connection uses.
+//
+// Version 1: devices, work contexts, joints and events, with the indexes the time-range queries
+// use. Version 2: store-and-forward, a `sent` mark per joint and event and an index of the unsent
+// ones. A new file runs every migration in order, so a new file and a migrated one are alike.
+// Migrations run in one IMMEDIATE transaction that re-reads the version first, so two programs
+// opening an old file together migrate it once. A file written by a newer TipScope (a higher
+// version) or by another program (tables but no version, or another application id) is
+// refused and left untouched.
+#pragma once
+
+#include <QSqlDatabase>
+#include <QString>
+
+namespace tipscope::journal {
+
+inline constexpr int kJournalSchemaVersion = 2;
+inline constexpr int kJournalApplicationId = 0x54695053; // "TiPS"
+
+// A fresh connection to the file at `path` named `connectionName`, open, in WAL mode with full
+// synchronous commits, and migrated. `maxSizeBytes` > 0 caps the file. On failure the
+// connection is removed again and `error` says why in the user's language.
+[[nodiscard]] bool openJournalDatabase(const QString &path, const QString &connectionName,
+                                       qint64 maxSizeBytes, QString *error);
+// Brings an open database to kJournalSchemaVersion.
+[[nodiscard]] bool migrateJournal(QSqlDatabase &db, QString *error);
+
+} // namespace tipscope::journal

@@ -1,0 +1,44 @@
+// Shared pieces of the journal tests: records with every field set, and a plain SQLite
+// connection of the test's own, to look at a file without the code under test.
+#pragma once
+
+#include "journal/journal.h"
+
+#include <QSqlDatabase>
+#include <QString>
+#include <QVariant>
+
+namespace tipscope::testing {
+
+inline constexpr qint64 kT0 = 1'700'000'000'000; // 2023-11-14, a fixed instant
+
+// Device `n` (0, 1, ...) on its own line: "/dev/serial/by-id/usb-JBC_n-if00", address 01.
+[[nodiscard]] model::DeviceIdentity sampleDevice(int n);
+// Joint `i`: every field set and different from joint i-1's; started at `startMs`.
+[[nodiscard]] model::JointRecord sampleJoint(int i, qint64 startMs, int port = 1, int deviceNo = 0);
+// Event `i`: a write with details, on port `port` of device 0.
+[[nodiscard]] journal::JournalEvent sampleEvent(int i, qint64 timeMs, int port = 1);
+
+// Options for tests: nothing pruned (retention 0), retries every 50 ms.
+[[nodiscard]] journal::JournalOptions quickOptions();
+
+// Waits (with the event loop) until the journal left Opening.
+[[nodiscard]] bool waitOpened(journal::Journal &journal, int timeoutMs = 10000);
+
+// A connection of the test's own to `path`; closed and removed when destroyed.
+class RawDatabase {
+public:
+    explicit RawDatabase(const QString &path);
+    ~RawDatabase();
+    [[nodiscard]] bool isOpen() const { return m_db.isOpen(); }
+    // The first column of the first row `sql` answers; an invalid QVariant on failure.
+    [[nodiscard]] QVariant scalar(const QString &sql);
+    // Runs every `;`-separated statement; false and `error` on the first failure.
+    [[nodiscard]] bool execAll(const QString &script, QString *error);
+
+private:
+    QString m_name;
+    QSqlDatabase m_db;
+};
+
+} // namespace tipscope::testing

@@ -1,0 +1,88 @@
+// Session end to end: it identifies a device at an address the probe does not try by asking
+// the catalog's model-name command, records port and feeder samples from the values their roles
+// name, and builds its models from the catalog it was given.
+#include "model/session.h"
+
+#include "support/ptyfixtures.h"
+#include "support/testcatalog.h"
+
+#include <QtTest>
+
+using namespace tipscope;
+using namespace tipscope::model;
+using protocol::Role;
+
+namespace {
+constexpr int kConnectMs = 60000;
+
+Session::Settings demoSettings() {
+    Session::Settings settings;
+    settings.line.kind = link::LineSettings::Kind::Demo;
+    return settings;
+}
+
+qint32 lastValue(const TelemetryBuffer &buffer, const QString &series) {
+    return buffer.valueAt(buffer.seriesIndex(series), buffer.lastTime()).value().value;
+}
+} // namespace
+
+class TestSession : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void aDeviceAtAnAddressNoProbeTriesIsIdentifiedByItsModelName();
+    void samplesCarryTheValuesTheirRolesName();
+    void modelsAreBuiltFromTheSessionsCatalog();
+};
+
+void TestSession::aDeviceAtAnAddressNoProbeTriesIsIdentifiedByItsModelName() {
+    testing::SimProcess sim;
+    QString error;
+    const QString where =
+        sim.start({QStringLiteral("--model"), QStringLiteral("DDE"), QStringLiteral("--address"),
+                   QStringLiteral("42"), QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:0")},
+                  &error);
+    QVERIFY2(!where.isEmpty(), qPrintable(error));
+    Session session;
+    Session::Settings settings;
+    settings.line.kind = link::LineSettings::Kind::Tcp;
+    settings.line.tcpHost = where.section(QLatin1Char(':'), 0, 0);
+    settings.line.tcpPort = quint16(where.section(QLatin1Char(':'), 1).toUInt());
+    settings.addressing = Session::Addressing::With;
+    settings.targetAddress = 42;
+    session.connectTo(settings);
+    QTRY_VERIFY_WITH_TIMEOUT(session.state() == Session::State::Connected, kConnectMs);
+    QVERIFY(session.station());
+    QCOMPARE(session.station()->family(), QStringLiteral("DDE"));
+    QCOMPARE(session.station()->address(), std::optional<int>(42));
+    QCOMPARE(session.station()->info().model, QStringLiteral("DDE-2C"));
+}
+
+void TestSession::samplesCarryTheValuesTheirRolesName() {
+    Session session;
+    session.connectTo(demoSettings());
+    QTRY_VERIFY_WITH_TIMEOUT(session.station() && session.feeder(), kConnectMs);
+    const TelemetryBuffer *port = session.telemetry().buffer(QStringLiteral("01/port1"));
+    const TelemetryBuffer *feeder = session.telemetry().buffer(QStringLiteral("10/feeder"));
+    QVERIFY(port && feeder);
+    QTRY_VERIFY_WITH_TIMEOUT(!port->isEmpty() && !feeder->isEmpty(), kConnectMs);
+    StationModel *st = session.station();
+    QCOMPARE(lastValue(*port, QStringLiteral("setpoint")), qint32(*st->number(Role::Setpoint, 1)));
+    QCOMPARE(lastValue(*port, QStringLiteral("status")), qint32(*st->number(Role::Status, 1)));
+    QCOMPARE(lastValue(*feeder, QStringLiteral("speed")), qint32(*session.feeder()->feedSpeed()));
+}
+
+void TestSession::modelsAreBuiltFromTheSessionsCatalog() {
+    QString error;
+    const auto catalog = testing::catalogWith(testing::newCommandEntries(), &error);
+    QVERIFY2(catalog, qPrintable(error));
+    Session session(*catalog);
+    session.connectTo(demoSettings());
+    QTRY_VERIFY_WITH_TIMEOUT(session.station() && session.feeder(), kConnectMs);
+    QCOMPARE(&session.station()->catalog(), &*catalog);
+    QCOMPARE(&session.feeder()->catalog(), &*catalog);
+    QVERIFY(session.station()->parameter("BRT"));
+    QVERIFY(session.feeder()->action("CJP"));
+}
+
+QTEST_GUILESS_MAIN(TestSession)
+#include "tst_session.moc"
