@@ -2340,6 +2340,245 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>MqttClient</name>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="232"/>
+        <source>The broker %1 refused the message: %2.</source>
+        <translation>Der Broker %1 hat die Nachricht abgelehnt: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
+        <source>&apos;%1&apos; is not a topic a message can be published to.</source>
+        <translation>„%1“ ist kein Topic, an das eine Nachricht veröffentlicht werden kann.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="311"/>
+        <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
+        <translation>QoS %1 gibt es nicht; MQTT kennt 0, 1 und 2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="288"/>
+        <source>Not connected to the broker %1: the message to %2 is dropped.</source>
+        <translation>Nicht mit dem Broker %1 verbunden: die Nachricht an %2 wird verworfen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="291"/>
+        <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
+        <translation>%1 Nachrichten warten darauf, vom Broker %2 angenommen zu werden: die Nachricht an %3 wird verworfen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="301"/>
+        <source>The message to %1 was not sent: %2</source>
+        <translation>Die Nachricht an %1 wurde nicht gesendet: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
+        <source>&apos;%1&apos; is not a valid subscription filter.</source>
+        <translation>„%1“ ist kein gültiger Abonnement-Filter.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
+        <source>The subscription to %1 was not sent: %2</source>
+        <translation>Das Abonnement von %1 wurde nicht gesendet: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="327"/>
+        <source>There is no subscription to %1.</source>
+        <translation>Es gibt kein Abonnement von %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="335"/>
+        <source>The subscription to %1 was not ended: %2</source>
+        <translation>Das Abonnement von %1 wurde nicht beendet: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="27"/>
+        <source>The broker %1 refused the connection: bad user name or password.</source>
+        <translation>Der Broker %1 hat die Verbindung abgelehnt: falscher Benutzername oder falsches Passwort.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="32"/>
+        <source>The broker %1 refused the connection: not authorised (wrong user name or password, or this user may not connect).</source>
+        <translation>Der Broker %1 hat die Verbindung abgelehnt: nicht berechtigt (falscher Benutzername oder falsches Passwort, oder dieser Benutzer darf sich nicht verbinden).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="39"/>
+        <source>The broker %1 refused the connection: %2.</source>
+        <translation>Der Broker %1 hat die Verbindung abgelehnt: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="45"/>
+        <source>it does not speak MQTT 3.1.1</source>
+        <translation>er spricht kein MQTT 3.1.1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="69"/>
+        <source>it does not accept this client id</source>
+        <translation>er akzeptiert diese Client-ID nicht</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="49"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="72"/>
+        <source>the service is unavailable</source>
+        <translation>der Dienst ist nicht verfügbar</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="55"/>
+        <source>return code %1</source>
+        <translation>Rückgabecode %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="67"/>
+        <source>it does not speak MQTT 5</source>
+        <translation>er spricht kein MQTT 5</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="74"/>
+        <source>reason code %1</source>
+        <translation>Grundcode %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="84"/>
+        <source>No MQTT broker accepts connections at %1 (connection refused).</source>
+        <translation>Unter %1 nimmt kein MQTT-Broker Verbindungen an (Verbindung abgelehnt).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="88"/>
+        <source>The broker %1 closed the connection (%2).</source>
+        <translation>Der Broker %1 hat die Verbindung geschlossen (%2).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="91"/>
+        <source>The broker %1 cannot be reached: %2.</source>
+        <translation>Der Broker %1 ist nicht erreichbar: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="112"/>
+        <source>The broker&apos;s address %1 cannot be resolved.</source>
+        <translation>Die Adresse %1 des Brokers lässt sich nicht auflösen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="116"/>
+        <source>The TLS handshake with the broker %1 failed.</source>
+        <translation>Der TLS-Verbindungsaufbau mit dem Broker %1 ist fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="117"/>
+        <source>The TLS handshake with the broker %1 failed: %2</source>
+        <translation>Der TLS-Verbindungsaufbau mit dem Broker %1 ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="120"/>
+        <source>The broker %1 stopped answering within the keep-alive time.</source>
+        <translation>Der Broker %1 hat innerhalb der Keep-Alive-Zeit nicht mehr geantwortet.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="124"/>
+        <source>The connection to the broker %1 was lost.</source>
+        <translation>Die Verbindung zum Broker %1 ist abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="128"/>
+        <source>The broker %1 sent data that is not valid MQTT.</source>
+        <translation>Der Broker %1 hat Daten gesendet, die kein gültiges MQTT sind.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="131"/>
+        <source>The connection to the broker %1 failed: %2.</source>
+        <translation>Die Verbindung zum Broker %1 ist fehlgeschlagen: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="139"/>
+        <source>The broker %1 cannot be reached: the connection was refused or reset.</source>
+        <translation>Der Broker %1 ist nicht erreichbar: die Verbindung wurde abgelehnt oder zurückgesetzt.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="144"/>
+        <source>The broker&apos;s host name %1 cannot be resolved: %2</source>
+        <translation>Der Hostname %1 des Brokers lässt sich nicht auflösen: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="38"/>
+        <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
+        <translation>Ein Passwort ist gesetzt, aber kein Benutzername: MQTT sendet ein Passwort nur mit einem Benutzernamen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
+        <source>The user name %1 is not accepted: %2</source>
+        <translation>Der Benutzername %1 wird nicht angenommen: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
+        <source>The last will on %1 is not accepted: %2</source>
+        <translation>Der letzte Wille auf %1 wird nicht angenommen: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
+        <source>The CA certificate file %1 cannot be read.</source>
+        <translation>Die CA-Zertifikatsdatei %1 kann nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="70"/>
+        <source>A client certificate needs both its certificate file and its key file.</source>
+        <translation>Ein Client-Zertifikat braucht sowohl seine Zertifikatsdatei als auch seine Schlüsseldatei.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
+        <source>The file %1 cannot be read.</source>
+        <translation>Die Datei %1 kann nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="96"/>
+        <source>TLS cannot be set up: %1</source>
+        <translation>TLS kann nicht eingerichtet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="104"/>
+        <source>The MQTT version cannot be set: %1</source>
+        <translation>Die MQTT-Version kann nicht eingestellt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
+        <source>The client id %1 is not accepted.</source>
+        <translation>Die Client-ID %1 wird nicht angenommen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="129"/>
+        <source>Out of memory for an MQTT client.</source>
+        <translation>Kein Speicher mehr für einen MQTT-Client.</translation>
+    </message>
+</context>
+<context>
+    <name>MqttSecret</name>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="30"/>
+        <source>The password file %1 does not exist.</source>
+        <translation>Die Passwortdatei %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
+        <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
+        <translation>Die Passwortdatei %1 ist größer als %2 Bytes; ist es die richtige Datei?</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="41"/>
+        <source>The password file %1 cannot be read: %2</source>
+        <translation>Die Passwortdatei %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="46"/>
+        <source>The password file %1 is empty.</source>
+        <translation>Die Passwortdatei %1 ist leer.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="55"/>
+        <source>The environment variable %1 that should hold the password is not set or empty.</source>
+        <translation>Die Umgebungsvariable %1, die das Passwort enthalten soll, ist nicht gesetzt oder leer.</translation>
+    </message>
+</context>
+<context>
     <name>Parameter</name>
     <message>
         <location filename="../lib/model/parameter.cpp" line="69"/>

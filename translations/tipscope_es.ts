@@ -2342,6 +2342,245 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>MqttClient</name>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="232"/>
+        <source>The broker %1 refused the message: %2.</source>
+        <translation>El broker %1 rechazó el mensaje: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
+        <source>&apos;%1&apos; is not a topic a message can be published to.</source>
+        <translation>«%1» no es un tema en el que se pueda publicar un mensaje.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="311"/>
+        <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
+        <translation>QoS %1 no existe; MQTT tiene 0, 1 y 2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="288"/>
+        <source>Not connected to the broker %1: the message to %2 is dropped.</source>
+        <translation>Sin conexión con el broker %1: se descarta el mensaje a %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="291"/>
+        <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
+        <translation>%1 mensajes esperan a que el broker %2 los acepte: se descarta el mensaje a %3.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="301"/>
+        <source>The message to %1 was not sent: %2</source>
+        <translation>No se envió el mensaje a %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
+        <source>&apos;%1&apos; is not a valid subscription filter.</source>
+        <translation>«%1» no es un filtro de suscripción válido.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
+        <source>The subscription to %1 was not sent: %2</source>
+        <translation>No se envió la suscripción a %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="327"/>
+        <source>There is no subscription to %1.</source>
+        <translation>No hay ninguna suscripción a %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="335"/>
+        <source>The subscription to %1 was not ended: %2</source>
+        <translation>No se terminó la suscripción a %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="27"/>
+        <source>The broker %1 refused the connection: bad user name or password.</source>
+        <translation>El broker %1 rechazó la conexión: nombre de usuario o contraseña incorrectos.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="32"/>
+        <source>The broker %1 refused the connection: not authorised (wrong user name or password, or this user may not connect).</source>
+        <translation>El broker %1 rechazó la conexión: no autorizado (nombre de usuario o contraseña incorrectos, o este usuario no puede conectarse).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="39"/>
+        <source>The broker %1 refused the connection: %2.</source>
+        <translation>El broker %1 rechazó la conexión: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="45"/>
+        <source>it does not speak MQTT 3.1.1</source>
+        <translation>no habla MQTT 3.1.1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="69"/>
+        <source>it does not accept this client id</source>
+        <translation>no acepta este identificador de cliente</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="49"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="72"/>
+        <source>the service is unavailable</source>
+        <translation>el servicio no está disponible</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="55"/>
+        <source>return code %1</source>
+        <translation>código de retorno %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="67"/>
+        <source>it does not speak MQTT 5</source>
+        <translation>no habla MQTT 5</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="74"/>
+        <source>reason code %1</source>
+        <translation>código de motivo %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="84"/>
+        <source>No MQTT broker accepts connections at %1 (connection refused).</source>
+        <translation>Ningún broker MQTT acepta conexiones en %1 (conexión rechazada).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="88"/>
+        <source>The broker %1 closed the connection (%2).</source>
+        <translation>El broker %1 cerró la conexión (%2).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="91"/>
+        <source>The broker %1 cannot be reached: %2.</source>
+        <translation>No se puede llegar al broker %1: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="112"/>
+        <source>The broker&apos;s address %1 cannot be resolved.</source>
+        <translation>No se puede resolver la dirección %1 del broker.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="116"/>
+        <source>The TLS handshake with the broker %1 failed.</source>
+        <translation>Falló el establecimiento de TLS con el broker %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="117"/>
+        <source>The TLS handshake with the broker %1 failed: %2</source>
+        <translation>Falló el establecimiento de TLS con el broker %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="120"/>
+        <source>The broker %1 stopped answering within the keep-alive time.</source>
+        <translation>El broker %1 dejó de responder dentro del tiempo de keep-alive.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="124"/>
+        <source>The connection to the broker %1 was lost.</source>
+        <translation>Se perdió la conexión con el broker %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="128"/>
+        <source>The broker %1 sent data that is not valid MQTT.</source>
+        <translation>El broker %1 envió datos que no son MQTT válido.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="131"/>
+        <source>The connection to the broker %1 failed: %2.</source>
+        <translation>Falló la conexión con el broker %1: %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="139"/>
+        <source>The broker %1 cannot be reached: the connection was refused or reset.</source>
+        <translation>No se puede llegar al broker %1: la conexión fue rechazada o restablecida.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="144"/>
+        <source>The broker&apos;s host name %1 cannot be resolved: %2</source>
+        <translation>No se puede resolver el nombre de host %1 del broker: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="38"/>
+        <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
+        <translation>Hay una contraseña pero ningún nombre de usuario: MQTT solo envía una contraseña con un nombre de usuario.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
+        <source>The user name %1 is not accepted: %2</source>
+        <translation>No se acepta el nombre de usuario %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
+        <source>The last will on %1 is not accepted: %2</source>
+        <translation>No se acepta la última voluntad en %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
+        <source>The CA certificate file %1 cannot be read.</source>
+        <translation>No se puede leer el archivo de certificado de la CA %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="70"/>
+        <source>A client certificate needs both its certificate file and its key file.</source>
+        <translation>Un certificado de cliente necesita tanto su archivo de certificado como su archivo de clave.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
+        <source>The file %1 cannot be read.</source>
+        <translation>No se puede leer el archivo %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="96"/>
+        <source>TLS cannot be set up: %1</source>
+        <translation>No se puede configurar TLS: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="104"/>
+        <source>The MQTT version cannot be set: %1</source>
+        <translation>No se puede fijar la versión de MQTT: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
+        <source>The client id %1 is not accepted.</source>
+        <translation>No se acepta el identificador de cliente %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="129"/>
+        <source>Out of memory for an MQTT client.</source>
+        <translation>Sin memoria para un cliente MQTT.</translation>
+    </message>
+</context>
+<context>
+    <name>MqttSecret</name>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="30"/>
+        <source>The password file %1 does not exist.</source>
+        <translation>El archivo de contraseña %1 no existe.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
+        <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
+        <translation>El archivo de contraseña %1 tiene más de %2 bytes; ¿es el archivo correcto?</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="41"/>
+        <source>The password file %1 cannot be read: %2</source>
+        <translation>No se puede leer el archivo de contraseña %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="46"/>
+        <source>The password file %1 is empty.</source>
+        <translation>El archivo de contraseña %1 está vacío.</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="55"/>
+        <source>The environment variable %1 that should hold the password is not set or empty.</source>
+        <translation>La variable de entorno %1, que debería contener la contraseña, no está definida o está vacía.</translation>
+    </message>
+</context>
+<context>
     <name>Parameter</name>
     <message>
         <location filename="../lib/model/parameter.cpp" line="69"/>

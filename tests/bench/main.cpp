@@ -8,6 +8,7 @@
 #include "chartbench.h"
 #include "journalbench.h"
 #include "linkbench.h"
+#include "mqttbench.h"
 #include "replaybench.h"
 #include "soakbench.h"
 
@@ -35,6 +36,8 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runChartBench, true},
     {"journal", "journal inserts under polling, a year's file: size and queries (--rows N)",
      tipscope::bench::runJournalBench},
+    {"mqtt", "MQTT client: idle CPU and wake-ups, QoS 1 messages a second (--seconds N)",
+     tipscope::bench::runMqttBench},
     {"replay", "reading recordings: speed and memory over file size (--mb N, --no-fifo)",
      tipscope::bench::runReplayBench},
 };

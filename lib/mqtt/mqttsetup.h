@@ -1,0 +1,27 @@
+// Creating one libmosquitto client from MqttSettings: the library initialised once per process,
+// then id, session, protocol version, credentials, will and TLS applied in that order. A
+// setting the library refuses comes back as a sentence naming it (never the password).
+#pragma once
+
+#include "mqttsettings.h"
+
+#include <QString>
+#include <memory>
+
+struct mosquitto;
+
+namespace tipscope::mqtt {
+
+struct MosquittoDeleter {
+    void operator()(mosquitto *client) const;
+};
+using MosquittoHandle = std::unique_ptr<mosquitto, MosquittoDeleter>;
+
+// Null with *error set when a setting is refused. `userData` is what callbacks receive.
+[[nodiscard]] MosquittoHandle createMosquitto(const MqttSettings &settings, void *userData,
+                                              QString *error);
+
+// The client id to use: `settings.clientId`, or a new random one when it is empty.
+[[nodiscard]] QString effectiveClientId(const MqttSettings &settings);
+
+} // namespace tipscope::mqtt
