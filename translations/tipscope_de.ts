@@ -1434,27 +1434,27 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="66"/>
+        <location filename="../app/cli/climonitor.cpp" line="67"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="73"/>
+        <location filename="../app/cli/climonitor.cpp" line="74"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="80"/>
+        <location filename="../app/cli/climonitor.cpp" line="81"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="89"/>
+        <location filename="../app/cli/climonitor.cpp" line="90"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="113"/>
+        <location filename="../app/cli/climonitor.cpp" line="114"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -2581,94 +2581,94 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="69"/>
+        <location filename="../lib/model/parameter.cpp" line="70"/>
         <source>read-only</source>
         <translation>schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="75"/>
+        <location filename="../lib/model/parameter.cpp" line="76"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="78"/>
+        <location filename="../lib/model/parameter.cpp" line="79"/>
         <source> in steps of %1 %2</source>
         <translation> in Schritten von %1 %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="85"/>
+        <location filename="../lib/model/parameter.cpp" line="86"/>
         <source>, or %1</source>
         <translation>, oder %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="91"/>
-        <location filename="../lib/model/parameter.cpp" line="132"/>
+        <location filename="../lib/model/parameter.cpp" line="92"/>
+        <location filename="../lib/model/parameter.cpp" line="133"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="100"/>
+        <location filename="../lib/model/parameter.cpp" line="101"/>
         <source>%1 is not allowed for %2: allowed is %3</source>
         <translation>%1 ist für %2 nicht zulässig: zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="105"/>
+        <location filename="../lib/model/parameter.cpp" line="106"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="117"/>
-        <location filename="../lib/model/parameter.cpp" line="213"/>
+        <location filename="../lib/model/parameter.cpp" line="118"/>
+        <location filename="../lib/model/parameter.cpp" line="216"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="136"/>
+        <location filename="../lib/model/parameter.cpp" line="137"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="172"/>
+        <location filename="../lib/model/parameter.cpp" line="173"/>
         <source>reading %1 (%2)</source>
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="184"/>
+        <location filename="../lib/model/parameter.cpp" line="185"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="185"/>
+        <location filename="../lib/model/parameter.cpp" line="186"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="236"/>
+        <location filename="../lib/model/parameter.cpp" line="235"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="239"/>
+        <location filename="../lib/model/parameter.cpp" line="238"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="258"/>
+        <location filename="../lib/model/parameter.cpp" line="259"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="264"/>
+        <location filename="../lib/model/parameter.cpp" line="273"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="275"/>
+        <location filename="../lib/model/parameter.cpp" line="284"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="282"/>
+        <location filename="../lib/model/parameter.cpp" line="297"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -5619,42 +5619,42 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="23"/>
+        <location filename="../lib/link/line.cpp" line="22"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="43"/>
+        <location filename="../lib/link/line.cpp" line="45"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="45"/>
+        <location filename="../lib/link/line.cpp" line="47"/>
         <source>connecting to %1</source>
         <translation>Verbindung mit %1 wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="47"/>
+        <location filename="../lib/link/line.cpp" line="49"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="49"/>
+        <location filename="../lib/link/line.cpp" line="51"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>getrennt, neuer Versuch alle %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="53"/>
+        <location filename="../lib/link/line.cpp" line="55"/>
         <source>cannot connect: %1</source>
         <translation>Verbindung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="73"/>
+        <location filename="../lib/link/line.cpp" line="75"/>
         <source>disconnected by the user</source>
         <translation>vom Benutzer getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="115"/>
+        <location filename="../lib/link/line.cpp" line="117"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>keine Antwort auf %1 Anfragen in Folge (Kabel abgezogen, Gerät aus oder falsche Adressierung?)</translation>
     </message>
@@ -5700,65 +5700,78 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="60"/>
+        <location filename="../lib/link/requestqueue.cpp" line="71"/>
         <source>the connection was closed</source>
         <translation>die Verbindung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="106"/>
+        <location filename="../lib/link/requestqueue.cpp" line="117"/>
         <source>the connection is closing</source>
         <translation>die Verbindung wird geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="110"/>
+        <location filename="../lib/link/requestqueue.cpp" line="121"/>
         <source>not sent: the line is not connected</source>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="257"/>
+        <location filename="../lib/link/requestqueue.cpp" line="208"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="268"/>
+        <location filename="../lib/link/requestqueue.cpp" line="237"/>
+        <source>unreadable data field &apos;%1&apos; in the answer</source>
+        <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="246"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="272"/>
+        <location filename="../lib/link/requestqueue.cpp" line="250"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="290"/>
+        <location filename="../lib/link/requestqueue.cpp" line="268"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <location filename="../lib/link/requestqueue.cpp" line="289"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <location filename="../lib/link/requestqueue.cpp" line="304"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
             <numerusform>%1 nach %n Versuchen</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../lib/link/requestqueue.cpp" line="307"/>
+        <source>%n byte(s) of garbage came instead</source>
+        <translation>
+            <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
+            <numerusform>stattdessen kamen %n Bytes Datenmüll</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="327"/>
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="388"/>
+        <location filename="../lib/link/requestqueue.cpp" line="372"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="389"/>
+        <location filename="../lib/link/requestqueue.cpp" line="373"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>
@@ -5766,12 +5779,12 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::SerialTransport</name>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="74"/>
-        <source>the port went away (%1)</source>
-        <translation>der Port ist verschwunden (%1)</translation>
+        <location filename="../lib/link/serialtransport.cpp" line="82"/>
+        <source>the port %1 disappeared (unplugged?)</source>
+        <translation>der Port %1 ist verschwunden (ausgesteckt?)</translation>
     </message>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="79"/>
+        <location filename="../lib/link/serialtransport.cpp" line="84"/>
         <source>the port stopped responding (%1)</source>
         <translation>der Port reagiert nicht mehr (%1)</translation>
     </message>
@@ -5797,14 +5810,19 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::TcpTransport</name>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="23"/>
+        <location filename="../lib/link/tcptransport.cpp" line="27"/>
         <source>the connection to %1 dropped (%2)</source>
         <translation>die Verbindung zu %1 ist abgebrochen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="29"/>
+        <location filename="../lib/link/tcptransport.cpp" line="34"/>
         <source>cannot connect to %1: %2</source>
         <translation>Verbindung zu %1 nicht möglich: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/tcptransport.cpp" line="63"/>
+        <source>cannot connect to %1: no connection within %2 s</source>
+        <translation>Verbindung zu %1 nicht möglich: keine Verbindung innerhalb von %2 s</translation>
     </message>
 </context>
 <context>

@@ -160,11 +160,19 @@
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <location filename="../lib/link/requestqueue.cpp" line="304"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
             <numerusform>%1 after %n attempts</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/requestqueue.cpp" line="307"/>
+        <source>%n byte(s) of garbage came instead</source>
+        <translation>
+            <numerusform>%n byte of garbage came instead</numerusform>
+            <numerusform>%n bytes of garbage came instead</numerusform>
         </translation>
     </message>
 </context>

@@ -1434,27 +1434,27 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="66"/>
+        <location filename="../app/cli/climonitor.cpp" line="67"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="73"/>
+        <location filename="../app/cli/climonitor.cpp" line="74"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="80"/>
+        <location filename="../app/cli/climonitor.cpp" line="81"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="89"/>
+        <location filename="../app/cli/climonitor.cpp" line="90"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="113"/>
+        <location filename="../app/cli/climonitor.cpp" line="114"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -2583,94 +2583,94 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="69"/>
+        <location filename="../lib/model/parameter.cpp" line="70"/>
         <source>read-only</source>
         <translation>solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="75"/>
+        <location filename="../lib/model/parameter.cpp" line="76"/>
         <source>%1 to %2</source>
         <translation>de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="78"/>
+        <location filename="../lib/model/parameter.cpp" line="79"/>
         <source> in steps of %1 %2</source>
         <translation> en pasos de %1 %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="85"/>
+        <location filename="../lib/model/parameter.cpp" line="86"/>
         <source>, or %1</source>
         <translation>, o %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="91"/>
-        <location filename="../lib/model/parameter.cpp" line="132"/>
+        <location filename="../lib/model/parameter.cpp" line="92"/>
+        <location filename="../lib/model/parameter.cpp" line="133"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="100"/>
+        <location filename="../lib/model/parameter.cpp" line="101"/>
         <source>%1 is not allowed for %2: allowed is %3</source>
         <translation>%1 no está permitido para %2: se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="105"/>
+        <location filename="../lib/model/parameter.cpp" line="106"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="117"/>
-        <location filename="../lib/model/parameter.cpp" line="213"/>
+        <location filename="../lib/model/parameter.cpp" line="118"/>
+        <location filename="../lib/model/parameter.cpp" line="216"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="136"/>
+        <location filename="../lib/model/parameter.cpp" line="137"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="172"/>
+        <location filename="../lib/model/parameter.cpp" line="173"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="184"/>
+        <location filename="../lib/model/parameter.cpp" line="185"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="185"/>
+        <location filename="../lib/model/parameter.cpp" line="186"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="236"/>
+        <location filename="../lib/model/parameter.cpp" line="235"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="239"/>
+        <location filename="../lib/model/parameter.cpp" line="238"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="258"/>
+        <location filename="../lib/model/parameter.cpp" line="259"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="264"/>
+        <location filename="../lib/model/parameter.cpp" line="273"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="275"/>
+        <location filename="../lib/model/parameter.cpp" line="284"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="282"/>
+        <location filename="../lib/model/parameter.cpp" line="297"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -5621,42 +5621,42 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="23"/>
+        <location filename="../lib/link/line.cpp" line="22"/>
         <source>the line was closed</source>
         <translation>se cerró la línea</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="43"/>
+        <location filename="../lib/link/line.cpp" line="45"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="45"/>
+        <location filename="../lib/link/line.cpp" line="47"/>
         <source>connecting to %1</source>
         <translation>conectando con %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="47"/>
+        <location filename="../lib/link/line.cpp" line="49"/>
         <source>connected: %1</source>
         <translation>conectado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="49"/>
+        <location filename="../lib/link/line.cpp" line="51"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>desconectado, reintentando cada %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="53"/>
+        <location filename="../lib/link/line.cpp" line="55"/>
         <source>cannot connect: %1</source>
         <translation>no se puede conectar: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="73"/>
+        <location filename="../lib/link/line.cpp" line="75"/>
         <source>disconnected by the user</source>
         <translation>desconectado por el usuario</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="115"/>
+        <location filename="../lib/link/line.cpp" line="117"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>sin respuesta a %1 peticiones seguidas (¿cable desenchufado, equipo apagado o direccionamiento incorrecto?)</translation>
     </message>
@@ -5702,65 +5702,78 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="60"/>
+        <location filename="../lib/link/requestqueue.cpp" line="71"/>
         <source>the connection was closed</source>
         <translation>se cerró la conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="106"/>
+        <location filename="../lib/link/requestqueue.cpp" line="117"/>
         <source>the connection is closing</source>
         <translation>la conexión se está cerrando</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="110"/>
+        <location filename="../lib/link/requestqueue.cpp" line="121"/>
         <source>not sent: the line is not connected</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="257"/>
+        <location filename="../lib/link/requestqueue.cpp" line="208"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="268"/>
+        <location filename="../lib/link/requestqueue.cpp" line="237"/>
+        <source>unreadable data field &apos;%1&apos; in the answer</source>
+        <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/requestqueue.cpp" line="246"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="272"/>
+        <location filename="../lib/link/requestqueue.cpp" line="250"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="290"/>
+        <location filename="../lib/link/requestqueue.cpp" line="268"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <location filename="../lib/link/requestqueue.cpp" line="289"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="325"/>
+        <location filename="../lib/link/requestqueue.cpp" line="304"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
             <numerusform>%1 tras %n intentos</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../lib/link/requestqueue.cpp" line="307"/>
+        <source>%n byte(s) of garbage came instead</source>
+        <translation>
+            <numerusform>en su lugar llegó %n byte de basura</numerusform>
+            <numerusform>en su lugar llegaron %n bytes de basura</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="327"/>
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="388"/>
+        <location filename="../lib/link/requestqueue.cpp" line="372"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="389"/>
+        <location filename="../lib/link/requestqueue.cpp" line="373"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
@@ -5768,12 +5781,12 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::SerialTransport</name>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="74"/>
-        <source>the port went away (%1)</source>
-        <translation>el puerto desapareció (%1)</translation>
+        <location filename="../lib/link/serialtransport.cpp" line="82"/>
+        <source>the port %1 disappeared (unplugged?)</source>
+        <translation>el puerto %1 ha desaparecido (¿desconectado?)</translation>
     </message>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="79"/>
+        <location filename="../lib/link/serialtransport.cpp" line="84"/>
         <source>the port stopped responding (%1)</source>
         <translation>el puerto dejó de responder (%1)</translation>
     </message>
@@ -5799,14 +5812,19 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::TcpTransport</name>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="23"/>
+        <location filename="../lib/link/tcptransport.cpp" line="27"/>
         <source>the connection to %1 dropped (%2)</source>
         <translation>se cortó la conexión con %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="29"/>
+        <location filename="../lib/link/tcptransport.cpp" line="34"/>
         <source>cannot connect to %1: %2</source>
         <translation>no se puede conectar con %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/tcptransport.cpp" line="63"/>
+        <source>cannot connect to %1: no connection within %2 s</source>
+        <translation>no se puede conectar con %1: sin conexión en %2 s</translation>
     </message>
 </context>
 <context>

@@ -102,7 +102,7 @@ int runRead(CliSession &s) {
             continue;
         }
         const auto cmd = *Catalog::builtin().resolve(d->family, code, Direction::Read);
-        Reply *reply = s.ask(Request::read(d->address, code));
+        Reply *reply = s.ask(Request::read(d->address, cmd));
         if (!reply->ok()) {
             reportFailure(s, *reply);
             worst = qMax(worst, CliSession::exitCodeFor(*reply));
@@ -122,7 +122,7 @@ static int verifyWrite(CliSession &s, const DeviceInfo &d, const ResolvedCommand
         s.out() << Tr::tr("%1 written").arg(QString::fromLatin1(cmd.code)) << Qt::endl;
         return kOk;
     }
-    Reply *back = s.ask(Request::read(d.address, cmd.code));
+    Reply *back = s.ask(Request::read(d.address, *readCmd));
     if (!back->ok()) {
         s.err() << Tr::tr("tipscope-cli: %1 was accepted but could not be read back: %2")
                        .arg(QString::fromLatin1(cmd.code), back->errorString())
@@ -266,7 +266,7 @@ int runDump(CliSession &s) {
         if (!json)
             s.out() << "# " << d.summary() << Qt::endl;
         for (const ResolvedCommand &cmd : Catalog::builtin().expand(d.family, Direction::Read)) {
-            Reply *reply = s.ask(Request::read(d.address, cmd.code, Priority::Background));
+            Reply *reply = s.ask(Request::read(d.address, cmd, Priority::Background));
             QJsonObject v{{QStringLiteral("code"), QString::fromLatin1(cmd.code)},
                           {QStringLiteral("name"), cmd.spec->name}};
             if (reply->ok()) {

@@ -37,7 +37,8 @@ PortReading readPort(CliSession &s, const DeviceInfo &d, int port, int *worst) {
     for (const QByteArray &base : kLiveCodes) {
         const QByteArray code = base + QByteArray::number(port);
         const auto cmd = Catalog::builtin().resolve(d.family, code, Direction::Read);
-        Reply *reply = s.ask(Request::read(d.address, code, Priority::LivePoll));
+        Reply *reply = s.ask(cmd ? Request::read(d.address, *cmd, Priority::LivePoll)
+                                 : Request::read(d.address, code, Priority::LivePoll));
         reply->deleteLater();
         if (!cmd || !reply->ok()) {
             *worst = qMax(*worst, CliSession::exitCodeFor(*reply));

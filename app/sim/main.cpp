@@ -128,14 +128,29 @@ int main(int argc, char *argv[]) {
          QStringLiteral("BAUD")},
         {QStringLiteral("latency"), QStringLiteral("Answer turnaround in ms."),
          QStringLiteral("MS")},
-        {QStringLiteral("drop"), QStringLiteral("Share of requests left unanswered (0-1)."),
+        {QStringLiteral("drop"),
+         QStringLiteral("Share of requests carried out whose answer is lost (0-1)."),
          QStringLiteral("SHARE")},
         {QStringLiteral("corrupt"), QStringLiteral("Share of answers corrupted (0-1)."),
          QStringLiteral("SHARE")},
         {QStringLiteral("garbage"), QStringLiteral("Share of answers preceded by noise (0-1)."),
          QStringLiteral("SHARE")},
-        {QStringLiteral("nak"), QStringLiteral("Answer every request with this NAK code."),
+        {QStringLiteral("drop-requests"),
+         QStringLiteral("Share of requests lost on their way: the device never sees them (0-1)."),
+         QStringLiteral("SHARE")},
+        {QStringLiteral("corrupt-requests"),
+         QStringLiteral("Share of requests with a bit flipped on their way (0-1)."),
+         QStringLiteral("SHARE")},
+        {QStringLiteral("bad-data"),
+         QStringLiteral("Share of answers to reads whose data field cannot be read (0-1)."),
+         QStringLiteral("SHARE")},
+        {QStringLiteral("nak"),
+         QStringLiteral("Answer the requests --nak-for names with this NAK code."),
          QStringLiteral("CODE")},
+        {QStringLiteral("nak-for"),
+         QStringLiteral("What --nak applies to: all (the default), writes, or one command such as "
+                        "ST1."),
+         QStringLiteral("WHAT")},
         {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator."),
          QStringLiteral("N")},
         {QStringLiteral("robot-mode-off"),
@@ -160,7 +175,15 @@ int main(int argc, char *argv[]) {
     o.faults.dropShare = shareOption(p, QStringLiteral("drop"));
     o.faults.corruptShare = shareOption(p, QStringLiteral("corrupt"));
     o.faults.garbageShare = shareOption(p, QStringLiteral("garbage"));
-    o.faults.nakAllCode = intOption(p, QStringLiteral("nak"), 0, 0, 99999);
+    o.faults.badDataShare = shareOption(p, QStringLiteral("bad-data"));
+    o.faults.requestDropShare = shareOption(p, QStringLiteral("drop-requests"));
+    o.faults.requestCorruptShare = shareOption(p, QStringLiteral("corrupt-requests"));
+    o.faults.nakCode = intOption(p, QStringLiteral("nak"), 0, 0, 99999);
+    if (!parseNakScope(p.value(QStringLiteral("nak-for")).isEmpty()
+                           ? QStringLiteral("all")
+                           : p.value(QStringLiteral("nak-for")),
+                       &o.faults))
+        die(QStringLiteral("--nak-for takes all, writes or a command such as ST1"));
     o.faults.seed = quint32(intOption(p, QStringLiteral("seed"), 1, 0, 1 << 30));
     o.robotModeOff = p.isSet(QStringLiteral("robot-mode-off"));
     auto line = buildLine(o);

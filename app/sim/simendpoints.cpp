@@ -17,6 +17,19 @@
 
 namespace tipscope::sim {
 
+namespace {
+
+// Writes `bytes` unless the client already has kMaxUnsentBytes waiting; counts what is dropped.
+void writeBounded(QIODevice &io, const QByteArray &bytes, SimLine &line) {
+    if (io.bytesToWrite() + bytes.size() > kMaxUnsentBytes) {
+        line.countUnsent(bytes.size());
+        return;
+    }
+    io.write(bytes);
+}
+
+} // namespace
+
 PtyEndpoint::PtyEndpoint(SimLine &line, const QString &linkPath, QObject *parent)
     : QObject(parent)
     , m_line(line)
@@ -24,8 +37,10 @@ PtyEndpoint::PtyEndpoint(SimLine &line, const QString &linkPath, QObject *parent
     connect(&m_line, &SimLine::transmit, this, [this](const QByteArray &bytes) {
         if (m_master < 0)
             return; // unplugged: the bytes are lost, as on a pulled cable
+        // Non-blocking: when the client does not read, the PTY's buffer fills and the rest is lost.
         const ssize_t n = ::write(m_master, bytes.constData(), size_t(bytes.size()));
-        Q_UNUSED(n);
+        if (n < bytes.size())
+            m_line.countUnsent(bytes.size() - qMax<ssize_t>(n, 0));
     });
 }
 
@@ -41,6 +56,7 @@ bool PtyEndpoint::plug(QString *error) {
         return false;
     }
     m_slavePath = QString::fromLocal8Bit(::ptsname(m_master));
+    m_line.clearWire(); // a new cable: nothing of the old one is still on its way
     // Holding the slave open keeps the master readable while no client is attached, and raw
     // mode stops the line discipline from echoing or translating the protocol's bytes.
     m_slave = ::open(m_slavePath.toLocal8Bit().constData(), O_RDWR | O_NOCTTY);
@@ -92,10 +108,11 @@ SerialDeviceEndpoint::SerialDeviceEndpoint(SimLine &line, const QString &device,
     : QObject(parent)
     , m_line(line)
     , m_port(new QSerialPort(device, this)) {
+    m_port->setReadBufferSize(kMaxUnreadBytes);
     connect(m_port, &QSerialPort::readyRead, this, [this] { m_line.receive(m_port->readAll()); });
     connect(&m_line, &SimLine::transmit, m_port, [this](const QByteArray &b) {
         if (m_port->isOpen())
-            m_port->write(b);
+            writeBounded(*m_port, b, m_line);
     });
 }
 
@@ -117,7 +134,7 @@ TcpEndpoint::TcpEndpoint(SimLine &line, QObject *parent)
     connect(m_server, &QTcpServer::newConnection, this, &TcpEndpoint::onNewConnection);
     connect(&m_line, &SimLine::transmit, this, [this](const QByteArray &b) {
         if (m_client)
-            m_client->write(b);
+            writeBounded(*m_client, b, m_line);
     });
 }
 
@@ -147,6 +164,8 @@ void TcpEndpoint::onNewConnection() {
     if (m_client)
         m_client->deleteLater();
     m_client = next;
+    m_client->setReadBufferSize(kMaxUnreadBytes);
+    m_line.clearWire();
     connect(m_client, &QTcpSocket::readyRead, this, [this, next] {
         if (next == m_client)
             m_line.receive(next->readAll());

@@ -1,6 +1,10 @@
 // Where tipscope-sim meets the outside world: a PTY it creates, an existing serial device (one
 // end of a socat pair, or a real port), or a raw TCP server like a serial device server. Each
-// endpoint forwards received bytes to the SimLine and the line's answers back out.
+// endpoint forwards received bytes to the SimLine and the line's answers back out. A client that
+// does not read its answers costs at most kMaxUnsentBytes: answers beyond that are dropped and
+// counted (SimLineStats::unsentBytes), as a device's small output buffer would overflow. What a
+// client sends is taken kMaxUnreadBytes at a time; the rest waits with the sender, so a flood of
+// requests costs no more memory than that either.
 #pragma once
 
 #include <QObject>
@@ -14,6 +18,9 @@ class QTcpSocket;
 namespace tipscope::sim {
 
 class SimLine;
+
+inline constexpr qint64 kMaxUnsentBytes = 64 * 1024;
+inline constexpr qint64 kMaxUnreadBytes = 64 * 1024;
 
 // A PTY pair created with posix_openpt. The slave side is what a client opens; its path is
 // printed, and optionally kept as a symbolic link so that it survives unplug()/plug().

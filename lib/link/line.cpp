@@ -1,7 +1,6 @@
 #include "line.h"
 
 #include "simtransport.h"
-#include "tcptransport.h"
 
 namespace tipscope::link {
 
@@ -28,8 +27,11 @@ std::unique_ptr<Transport> Line::makeTransport(const LineSettings &s, sim::SimLi
     switch (s.kind) {
     case LineSettings::Kind::Serial:
         return std::make_unique<SerialTransport>(s.serial);
-    case LineSettings::Kind::Tcp:
-        return std::make_unique<TcpTransport>(s.tcpHost, s.tcpPort, s.serial.baudRate);
+    case LineSettings::Kind::Tcp: {
+        auto tcp = std::make_unique<TcpTransport>(s.tcpHost, s.tcpPort, s.serial.baudRate);
+        tcp->setConnectTimeoutMs(s.tcpConnectTimeoutMs);
+        return tcp;
+    }
     case LineSettings::Kind::Demo:
         Q_ASSERT(demoLine);
         return std::make_unique<SimTransport>(*demoLine);

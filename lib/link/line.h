@@ -10,6 +10,7 @@
 
 #include "requestqueue.h"
 #include "serialtransport.h"
+#include "tcptransport.h"
 #include "transport.h"
 
 #include <QObject>
@@ -28,6 +29,7 @@ struct LineSettings {
     SerialSettings serial;
     QString tcpHost;
     quint16 tcpPort = 0;
+    int tcpConnectTimeoutMs = TcpTransport::kDefaultConnectTimeoutMs;
     QueueSettings queue;
     int reconnectIntervalMs = 1000;
     int suspectAfterTimeouts = 5;

@@ -16,6 +16,7 @@ struct LinkStats {
     qint64 probesUnanswered = 0; // discovery probes to empty addresses: expected silence
     qint64 corrupted = 0;        // BCC or format errors in received data
     qint64 stray = 0;            // valid frames that matched no outstanding request
+    qint64 lateAnswers = 0;      // of those, answers that came after their request timed out
     qint64 retries = 0;
     qint64 skipped = 0; // requests withdrawn before they were sent
     qint64 coalesced = 0;

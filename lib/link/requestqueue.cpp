@@ -4,8 +4,10 @@
 
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"
+#include "protocol/valuecodec.h"
 
 #include <QtMath>
+#include <limits>
 
 namespace tipscope::link {
 
@@ -23,6 +25,13 @@ Request Request::read(std::optional<int> target, const QByteArray &command, Prio
     r.command = command;
     r.target = target;
     r.priority = priority;
+    return r;
+}
+
+Request Request::read(std::optional<int> target, const ResolvedCommand &command,
+                      Priority priority) {
+    Request r = read(target, command.code, priority);
+    r.format = command;
     return r;
 }
 
@@ -54,6 +63,8 @@ RequestQueue::RequestQueue(QObject *parent)
     m_gapTimer.setSingleShot(true);
     m_gapTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_gapTimer, &QTimer::timeout, this, &RequestQueue::onGapElapsed);
+    m_holdTimer.setSingleShot(true);
+    connect(&m_holdTimer, &QTimer::timeout, this, &RequestQueue::sendNext);
 }
 
 RequestQueue::~RequestQueue() {
@@ -125,66 +136,6 @@ Reply *RequestQueue::enqueue(const Request &request, QObject *owner) {
     return reply;
 }
 
-bool RequestQueue::tryCoalesce(const Request &r, Reply *reply) {
-    if (r.header != Header::Read || !r.raw.isEmpty())
-        return false;
-    for (size_t p = 0; p < m_queues.size(); ++p) {
-        auto &q = m_queues[p];
-        for (auto it = q.begin(); it != q.end(); ++it) {
-            const Request &o = it->request;
-            if (o.header != Header::Read || !o.raw.isEmpty() || o.command != r.command ||
-                o.target != r.target)
-                continue;
-            it->replies.append(reply);
-            ++m_stats.coalesced;
-            if (size_t(r.priority) < p) { // the more urgent asker decides where it waits
-                Entry moved = std::move(*it);
-                q.erase(it);
-                moved.request.priority = r.priority;
-                m_queues[size_t(r.priority)].push_back(std::move(moved));
-            }
-            return true;
-        }
-    }
-    return false;
-}
-
-int RequestQueue::pendingCount() const {
-    int n = m_current ? 1 : 0;
-    for (const auto &q : m_queues)
-        n += int(q.size());
-    return n;
-}
-
-void RequestQueue::sendNext() {
-    if (m_state != State::Idle || !m_open || !m_transport || m_current)
-        return;
-    const auto hasWanted = [](const std::deque<Entry> &q) {
-        return std::any_of(q.begin(), q.end(), [](const Entry &e) { return e.wanted(); });
-    };
-    const bool pollsWaiting = hasWanted(m_queues[size_t(Priority::LivePoll)]) ||
-                              hasWanted(m_queues[size_t(Priority::Background)]);
-    const bool pollsFirst = pollsWaiting && m_urgentRun >= m_settings.urgentBurst;
-    const std::array<size_t, 4> order =
-        pollsFirst ? std::array<size_t, 4>{2, 3, 0, 1} : std::array<size_t, 4>{0, 1, 2, 3};
-    for (size_t p : order) {
-        auto &q = m_queues[p];
-        while (!q.empty()) {
-            Entry e = std::move(q.front());
-            q.pop_front();
-            if (!e.wanted()) {
-                ++m_stats.skipped;
-                continue;
-            }
-            const bool urgent = p <= size_t(Priority::UserRead);
-            m_urgentRun = urgent && pollsWaiting ? m_urgentRun + 1 : 0;
-            m_current = std::move(e);
-            transmit();
-            return;
-        }
-    }
-}
-
 void RequestQueue::transmit() {
     Entry &e = *m_current;
     const QByteArray bytes = e.request.raw.isEmpty() ? e.frame.encode() : e.request.raw;
@@ -238,15 +189,15 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
         switch (ev.kind) {
         case DecodeEvent::Kind::Frame:
             if (waiting && matches(*m_current, ev.frame)) {
-                m_tap.decoded(ev, false);
-                complete(ev.frame);
+                onFrame(ev);
             } else {
-                ++m_stats.stray;
-                m_tap.decoded(ev, true);
+                onStray(ev);
             }
             break;
         case DecodeEvent::Kind::Garbage:
             m_stats.discardedBytes += ev.raw.size();
+            if (m_current)
+                m_current->garbageBytes += ev.raw.size();
             m_tap.decoded(ev, false);
             break;
         default:
@@ -259,6 +210,33 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
         }
     }
     Q_EMIT statsChanged();
+}
+
+void RequestQueue::onStray(const DecodeEvent &ev) {
+    ++m_stats.stray;
+    m_tap.decoded(ev, true);
+    if (!m_late.absorb(ev.frame, m_settings.robotAddress))
+        return;
+    ++m_stats.lateAnswers;
+    if (m_state == State::Idle)
+        sendNext(); // what the late answers held back may go now
+}
+
+void RequestQueue::onFrame(const DecodeEvent &ev) {
+    m_tap.decoded(ev, false);
+    const Request &r = m_current->request;
+    const bool checked = r.format && r.header == Header::Read && ev.frame.header == Header::Answer;
+    if (!checked || decodeAnswer(*r.format, ev.frame.data)) {
+        complete(ev.frame);
+        return;
+    }
+    // A well-framed answer whose data field means nothing for the command is as good as a
+    // garbled one: taking it would print or store nonsense.
+    ++m_stats.corrupted;
+    const QString why =
+        tr("unreadable data field '%1' in the answer").arg(QString::fromLatin1(ev.frame.data));
+    m_tap.note(why);
+    attemptFailed(ReplyError::Corrupted, why);
 }
 
 void RequestQueue::onTimer() {
@@ -306,6 +284,7 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
     Entry &e = *m_current;
     const bool timeout = error == ReplyError::Timeout;
     if (timeout) {
+        holdAfterTimeout(e);
         ++(e.request.probe ? m_stats.probesUnanswered : m_stats.timeouts);
         m_tap.note(tr("%1: %2 (attempt %3)").arg(e.frame.toString(), why).arg(e.attempts));
     } else {
@@ -323,6 +302,10 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
         ++m_timeoutRun;
     const int run = m_timeoutRun;
     QString text = tr("%1 after %n attempt(s)", nullptr, e.attempts).arg(why);
+    if (timeout && e.garbageBytes > 0) // "no answer" alone would hide a wrong baud rate or noise
+        text += QStringLiteral("; ") +
+                tr("%n byte(s) of garbage came instead", nullptr,
+                   int(qMin<qint64>(e.garbageBytes, std::numeric_limits<int>::max())));
     if (e.request.header == Header::Write && !e.request.repeatable)
         text += tr("; the device may have carried it out: check before repeating");
     finishCurrent(error, text);
@@ -360,6 +343,7 @@ void RequestQueue::onGapElapsed() {
 void RequestQueue::failEverything(ReplyError error, const QString &why) {
     m_timer.stop();
     m_gapTimer.stop();
+    m_holdTimer.stop();
     m_state = State::Idle;
     m_decoder.reset();
     m_timeoutRun = 0;

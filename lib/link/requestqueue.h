@@ -8,23 +8,39 @@
 //  - The answer budget starts when the transport reports the request's last byte written, and is
 //    the wire time of the request and of the longest answer at the line's baud rate (bytesWritten
 //    means "handed to the driver", not "on the wire") plus the device turnaround.
-//  - A timeout, a corrupted answer (BCC or format error) or NAK 00001 (the device saw our frame
-//    garbled) is retried up to `retries` times for reads and for writes marked repeatable; any
-//    other NAK is final and reported with its code and meaning.
+//  - An answer to a read that names the catalog's view of its command (Request::format) must
+//    carry a data field that decodes for that command's kind; one that does not ("ABCDE" for a
+//    temperature) is no valid answer: it is counted as corrupted, like a BCC error.
+//  - A timeout, a corrupted answer (BCC or format error, or an unreadable data field) or NAK 00001
+//    (the device saw our frame garbled) is retried up to `retries` times for reads and for writes
+//    marked repeatable; any other NAK is final and reported with its code and meaning.
+//  - Late answers: the frames carry no sequence number, so an answer that comes after its
+//    request timed out would be taken for the next request of the same command and device.
+//    After a timeout, no other request of that command to that device goes out until the late
+//    answer's window has passed (lateAnswerWindowMs, or the answer budget if longer) or every
+//    answer still expected arrived in it and was discarded as stray. Other requests go on
+//    meanwhile, writes still in their order. The request's own retries are not held: a late
+//    answer to an earlier attempt answers the same question, and nothing of that command went
+//    out in between. holdForLateAnswer() opens the same window when a caller suspects that an
+//    answer it got was a late one (a read-back that differs).
 //  - Priorities: writes > user reads > live polling > background. Every write goes into the
 //    write class, first in first out, so writes are never reordered among themselves. A read
 //    identical to one still waiting in the queue joins it instead of being sent twice.
 //  - Fairness: after urgentBurst requests in a row from the two user classes while polls were
 //    waiting, one poll goes first, so a long user operation (a profile apply, a dump) cannot
 //    freeze the live values; a single user request still never waits behind more than one poll.
+//  - A request that got no answer but bytes outside any frame says how many in its reason.
 //  - Deleting a Reply (or the owner it was parented to) before its request is sent withdraws
 //    the request. A lost line fails every pending request with the reason; nothing is dropped
 //    silently. Requests made while the line is closed fail at once with NotOpen.
 #pragma once
 
 #include "frametap.h"
+#include "lateanswers.h"
 #include "linkstats.h"
 #include "reply.h"
+
+#include "protocol/catalog.h"
 
 #include <QElapsedTimer>
 #include <QPointer>
@@ -49,8 +65,14 @@ struct Request {
     QByteArray raw;             // when set, sent verbatim (the console's raw frames)
     std::optional<int> retries; // overrides QueueSettings::retries (discovery probes use fewer)
     bool probe = false; // silence is a normal answer (discovery): not counted towards a lost line
+    // The catalog's view of a read's command: an answer whose data field does not decode for it
+    // is corrupted. Unset (raw frames, identification before the family is known): any data.
+    std::optional<protocol::ResolvedCommand> format;
 
     [[nodiscard]] static Request read(std::optional<int> target, const QByteArray &command,
+                                      Priority priority = Priority::UserRead);
+    [[nodiscard]] static Request read(std::optional<int> target,
+                                      const protocol::ResolvedCommand &command,
                                       Priority priority = Priority::UserRead);
     [[nodiscard]] static Request write(std::optional<int> target, const QByteArray &command,
                                        const QByteArray &data, bool repeatable = true);
@@ -62,6 +84,8 @@ struct QueueSettings {
     int urgentBurst = 3; // user requests in a row before a waiting poll gets one turn
     int retries = 2;
     int interFrameGapMs = 0;
+    // After a timeout, how long a late answer is still expected (see the contract above).
+    int lateAnswerWindowMs = 500;
 };
 
 class RequestQueue : public QObject {
@@ -76,6 +100,10 @@ public:
 
     // The Reply is parented to `owner` (may be null: then the caller deletes it).
     Reply *enqueue(const Request &request, QObject *owner);
+
+    // The answer to the last request of `command` to `target` may have been the late answer of an
+    // earlier one: hold the next such request as after a timeout.
+    void holdForLateAnswer(std::optional<int> target, const QByteArray &command);
 
     void lineOpened();
     void lineLost(const QString &reason);
@@ -104,16 +132,24 @@ private:
         int attempts = 0;
         qint64 firstSentUs = 0;
         qint64 lastSentUs = 0;
+        qint64 garbageBytes = 0; // bytes outside any frame while it was open, for the reason
         [[nodiscard]] bool wanted() const;
     };
     enum class State { Idle, Writing, Waiting, Gap };
 
     void sendNext();
+    [[nodiscard]] std::optional<Entry> takeSendable(std::deque<Entry> &queue, bool keepOrder);
+    [[nodiscard]] bool isHeld(const Entry &e) const;
+    void hold(const QByteArray &command, std::optional<int> target, int requestBytes);
+    void holdAfterTimeout(const Entry &e);
+    void armHoldTimer();
     void transmit();
     void onBytesWritten(qint64 count);
     void onReceived(const QByteArray &bytes);
     void onTimer();
     void onGapElapsed();
+    void onFrame(const protocol::DecodeEvent &event);
+    void onStray(const protocol::DecodeEvent &event);
     void complete(const protocol::Frame &answer);
     void attemptFailed(ReplyError error, const QString &why);
     void finishCurrent(ReplyError error, const QString &why, const protocol::Frame &answer = {});
@@ -137,6 +173,8 @@ private:
     int m_urgentRun = 0;
     QTimer m_timer;
     QTimer m_gapTimer;
+    QTimer m_holdTimer;
+    LateAnswers m_late;
     protocol::FrameDecoder m_decoder;
     QElapsedTimer m_clock;
     LinkStats m_stats;

@@ -2,6 +2,8 @@
 
 #include "link/ports/portdiagnostics.h"
 
+#include <QFileInfo>
+
 namespace tipscope::link {
 
 QString SerialSettings::frameFormat() const {
@@ -71,16 +73,24 @@ void SerialTransport::onError(QSerialPort::SerialPortError error) {
         return; // open() reports its own failures
     switch (error) {
     case QSerialPort::ResourceError:
-        lose(tr("the port went away (%1)").arg(m_port.errorString()));
-        break;
     case QSerialPort::ReadError:
     case QSerialPort::WriteError:
-        // On an unplugged adapter Qt 6.4 reports zero-byte reads as ReadError, over and over.
-        lose(tr("the port stopped responding (%1)").arg(m_port.errorString()));
+        // On an unplugged adapter Qt 6.4 reports zero-byte reads as ReadError, over and over,
+        // or a ResourceError whose text is the failing ioctl's ("Inappropriate ioctl for
+        // device"), which tells a person nothing. A device node that is gone says it plainly.
+        if (!QFileInfo::exists(devicePath()))
+            lose(tr("the port %1 disappeared (unplugged?)").arg(m_settings.portName));
+        else
+            lose(tr("the port stopped responding (%1)").arg(m_port.errorString()));
         break;
     default:
         break;
     }
+}
+
+QString SerialTransport::devicePath() const {
+    const QString &name = m_settings.portName;
+    return name.startsWith(QLatin1Char('/')) ? name : QStringLiteral("/dev/") + name;
 }
 
 void SerialTransport::lose(const QString &reason) {

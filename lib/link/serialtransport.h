@@ -2,7 +2,8 @@
 //
 // Designed around the Qt 6.4 behaviour on Linux: the input is not flushed on open (so it calls
 // clear() after open()); a vanished USB adapter shows up either as ResourceError or as a stream of
-// ReadErrors from zero-byte reads, and both are reported once as disconnected(); a permission
+// ReadErrors from zero-byte reads, and both are reported once as disconnected(), as "the port
+// disappeared" when its device node is gone rather than the failing ioctl's text; a permission
 // failure is explained (another program holding the port, or the dialout group).
 #pragma once
 
@@ -38,6 +39,7 @@ public:
 private:
     void onError(QSerialPort::SerialPortError error);
     void lose(const QString &reason);
+    [[nodiscard]] QString devicePath() const; // "ttyUSB0" is /dev/ttyUSB0
 
     SerialSettings m_settings;
     QSerialPort m_port;

@@ -8,7 +8,11 @@ TcpTransport::TcpTransport(const QString &host, quint16 port, int wireBaud, QObj
     , m_port(port)
     , m_baud(wireBaud) {
     m_socket.setSocketOption(QAbstractSocket::LowDelayOption, 1); // short frames, no Nagle delay
+    m_connectTimer.setSingleShot(true);
+    m_connectTimer.setInterval(kDefaultConnectTimeoutMs);
+    connect(&m_connectTimer, &QTimer::timeout, this, &TcpTransport::onConnectTimeout);
     connect(&m_socket, &QTcpSocket::connected, this, [this] {
+        m_connectTimer.stop();
         m_wasConnected = true;
         Q_EMIT opened();
     });
@@ -25,6 +29,7 @@ TcpTransport::TcpTransport(const QString &host, quint16 port, int wireBaud, QObj
         }
         const OpenFailure kind =
             e == QAbstractSocket::HostNotFoundError ? OpenFailure::NotFound : OpenFailure::Other;
+        m_connectTimer.stop();
         m_socket.abort();
         Q_EMIT openFailed(kind, tr("cannot connect to %1: %2").arg(description(), why));
     });
@@ -47,10 +52,21 @@ void TcpTransport::open() {
         return;
     }
     m_socket.abort();
+    m_connectTimer.start();
     m_socket.connectToHost(m_host, m_port);
 }
 
+void TcpTransport::onConnectTimeout() {
+    if (m_socket.state() == QAbstractSocket::ConnectedState)
+        return;
+    m_socket.abort();
+    Q_EMIT openFailed(OpenFailure::Other, tr("cannot connect to %1: no connection within %2 s")
+                                              .arg(description())
+                                              .arg(m_connectTimer.interval() / 1000.0));
+}
+
 void TcpTransport::close() {
+    m_connectTimer.stop();
     m_wasConnected = false;
     m_socket.abort();
 }

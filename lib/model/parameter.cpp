@@ -3,6 +3,7 @@
 #include "devicemodel.h"
 
 #include <QCoreApplication>
+#include <QTimer>
 
 namespace tipscope::model {
 
@@ -159,7 +160,7 @@ Reply *Parameter::refresh(Priority priority) {
     if (m_state == State::Unknown || m_state == State::Failed)
         setState(State::Reading);
     Reply *reply =
-        m_device.queue().enqueue(Request::read(m_device.address(), code(), priority), this);
+        m_device.queue().enqueue(Request::read(m_device.address(), *m_read, priority), this);
     connect(reply, &Reply::finished, this, [this, reply] {
         reply->deleteLater();
         if (reply->ok()) {
@@ -206,81 +207,95 @@ void Parameter::deviceReported(const QByteArray &data) {
     }
 }
 
-void Parameter::apply() {
-    if (!m_edit || !m_write || m_state == State::Writing)
-        return;
-    const QString why = m_device.writesBlocked()
-                            ? Tr::tr("monitor-only mode is on: nothing is written")
-                            : validate(*m_edit);
-    if (!why.isEmpty()) {
-        fail(why);
-        return;
-    }
-    QString error;
-    const auto data = encodeWrite(*m_write, *m_edit, &error);
+quint64 Parameter::apply() {
+    if (!m_edit || !m_write || m_runningWrite != 0)
+        return 0;
+    static quint64 lastWriteId = 0;
+    const quint64 id = ++lastWriteId;
+    m_runningWrite = id;
+    QString why = m_device.writesBlocked() ? Tr::tr("monitor-only mode is on: nothing is written")
+                                           : validate(*m_edit);
+    const auto data = why.isEmpty() ? encodeWrite(*m_write, *m_edit, &why) : std::nullopt;
     if (!data) {
-        fail(error);
-        return;
+        // The caller learns the id from this call: tell the outcome once it can listen.
+        QTimer::singleShot(0, this, [this, why, id] { fail(why, id); });
+        return id;
     }
     setState(State::Writing);
     const bool repeatable = !meta().dangerous;
     Reply *reply = m_device.queue().enqueue(
         Request::write(m_device.address(), code(), *data, repeatable), this);
-    connect(reply, &Reply::finished, this, [this, reply, data = *data] {
+    connect(reply, &Reply::finished, this, [this, reply, data = *data, id] {
         reply->deleteLater();
         if (!reply->ok()) {
             // Only a refusal or a closed line proves nothing was written; when the answer was
             // lost the device may hold the new value, so say so and look.
             const ReplyError e = reply->error();
             if (e == ReplyError::Nak || e == ReplyError::NotOpen || e == ReplyError::Cancelled) {
-                fail(Tr::tr("not written: %1").arg(reply->errorString()));
+                fail(Tr::tr("not written: %1").arg(reply->errorString()), id);
                 return;
             }
-            fail(Tr::tr("perhaps not written, the answer was lost: %1").arg(reply->errorString()));
+            fail(Tr::tr("perhaps not written, the answer was lost: %1").arg(reply->errorString()),
+                 id);
             refresh();
             return;
         }
-        if (m_read)
-            readBack(data);
-        else {
-            m_edit.reset();
-            setState(State::InSync);
-            Q_EMIT writeFinished(true, {});
+        if (m_read) {
+            readBack(data, id, false);
+            return;
         }
+        m_edit.reset();
+        setState(State::InSync);
+        succeed(id);
     });
+    return id;
 }
 
-void Parameter::readBack(const QByteArray &written) {
-    Reply *reply = m_device.queue().enqueue(Request::read(m_device.address(), code()), this);
-    connect(reply, &Reply::finished, this, [this, reply, written] {
+void Parameter::readBack(const QByteArray &written, quint64 id, bool again) {
+    Reply *reply = m_device.queue().enqueue(Request::read(m_device.address(), *m_read), this);
+    connect(reply, &Reply::finished, this, [this, reply, written, id, again] {
         reply->deleteLater();
         if (!reply->ok()) {
-            fail(Tr::tr("written, but the read-back failed: %1").arg(reply->errorString()));
+            fail(Tr::tr("written, but the read-back failed: %1").arg(reply->errorString()), id);
+            return;
+        }
+        const auto wrote = decodeAnswer(*m_read, written);
+        const auto read = decodeAnswer(*m_read, reply->answer().data);
+        if (!again && wrote && read && !confirms(*m_read, *wrote, *read)) {
+            // Frames carry no sequence number: this may be the late answer of an earlier read of
+            // the code, from before the write. Read once more, after such an answer's window.
+            m_device.queue().holdForLateAnswer(m_device.address(), code());
+            readBack(written, id, true);
             return;
         }
         deviceReported(reply->answer().data);
-        const auto wrote = decodeAnswer(*m_read, written);
         if (!wrote || !m_value || !confirms(*m_read, *wrote, *m_value)) {
             fail(Tr::tr("the device reports %1 after %2 was written")
                      .arg(displayText(), formatValue(*m_read, wrote.value_or(Value()),
-                                                     m_device.temperatureUnit())));
+                                                     m_device.temperatureUnit())),
+                 id);
             return;
         }
         m_edit.reset();
         m_unsavedWrite = meta().isVolatile;
-        m_unsavedWrite = meta().isVolatile;
         Q_EMIT editChanged();
         setState(State::InSync);
-        Q_EMIT stateChanged();
+        Q_EMIT stateChanged(); // isSavedToMemory() changed even if the state did not
         m_device.logWrite(Tr::tr("%1 set to %2").arg(label(), displayText()));
-        Q_EMIT writeFinished(true, {});
+        succeed(id);
     });
 }
 
-void Parameter::fail(const QString &reason) {
+void Parameter::succeed(quint64 id) {
+    m_runningWrite = 0;
+    Q_EMIT writeFinished(true, {}, id);
+}
+
+void Parameter::fail(const QString &reason, quint64 id) {
+    m_runningWrite = 0;
     setState(State::Failed, reason);
     m_device.logCommunication(Tr::tr("writing %1").arg(label()), reason);
-    Q_EMIT writeFinished(false, reason);
+    Q_EMIT writeFinished(false, reason, id);
 }
 
 bool Parameter::isSavedToMemory() const {

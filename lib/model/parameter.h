@@ -4,8 +4,10 @@
 // Writing, Failed with the reason). There are two write paths, as in QGroundControl's Fact:
 // setEdit() + apply() is a person's edit, validated before anything reaches the wire, written,
 // and proved by a read-back (only then InSync); deviceReported() is the device's own value from
-// a poll and only updates what is shown. Limits that depend on the device (the selected
-// temperature between MIT and MAT) follow the current values of the limiting parameters.
+// a poll and only updates what is shown. A read-back that differs is read once more, after the
+// window in which a late answer to an earlier read could still arrive, before the write fails.
+// Limits that depend on the device (the selected temperature between MIT and MAT) follow the
+// current values of the limiting parameters.
 #pragma once
 
 #include "displayunits.h"
@@ -70,8 +72,11 @@ public:
 
     // Reads the value now. The returned reply is owned by the parameter.
     link::Reply *refresh(link::Priority priority = link::Priority::UserRead);
-    // Writes the pending edit and reads it back; writeFinished() tells the outcome.
-    void apply();
+    // Writes the pending edit and reads it back. Returns the write's id, which the one
+    // writeFinished() that tells its outcome carries (always after apply() has returned); 0 when
+    // nothing was started: no edit is pending (setEdit() of the value the device holds leaves
+    // none) or a write of this parameter is still running.
+    quint64 apply();
     // The value the device reported (a poll or a read-back); never written back.
     void deviceReported(const QByteArray &data);
     // For volatile values (W-STx, the feeder's mode, speed, length): false after TipScope wrote
@@ -84,12 +89,14 @@ Q_SIGNALS:
     void updated(); // every reading, changed or not (telemetry samples)
     void stateChanged();
     void editChanged();
-    void writeFinished(bool ok, const QString &reason);
+    void writeFinished(bool ok, const QString &reason, quint64 writeId);
 
 private:
     void setState(State s, const QString &failure = {});
-    void readBack(const QByteArray &written);
-    void fail(const QString &reason);
+    // `again`: the first read-back differed and this is the one more read that decides.
+    void readBack(const QByteArray &written, quint64 id, bool again);
+    void succeed(quint64 id);
+    void fail(const QString &reason, quint64 id);
 
     DeviceModel &m_device;
     std::optional<protocol::ResolvedCommand> m_read;
@@ -97,6 +104,7 @@ private:
     std::optional<protocol::Value> m_value;
     QByteArray m_raw;
     std::optional<qint64> m_edit;
+    quint64 m_runningWrite = 0; // the id of the write under way, 0 when none
     bool m_unsavedWrite = false;
     State m_state = State::Unknown;
     QString m_failure;

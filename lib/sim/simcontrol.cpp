@@ -3,6 +3,7 @@
 #include "simline.h"
 
 #include <QStringList>
+#include <algorithm>
 
 namespace tipscope::sim {
 
@@ -12,13 +13,16 @@ QString usage() {
     return QStringLiteral(
         "commands: port-error PORT CODE | station-error CODE | tool PORT TOOL | alarm PORT FLAGS "
         "| status PORT STATUS | robot-mode on|off | fuse on|off | feeder-error CODE | drop SHARE "
-        "| corrupt SHARE | garbage SHARE | nak CODE | latency MS | pace BAUD | stats");
+        "| corrupt SHARE | garbage SHARE | bad-data SHARE | drop-requests SHARE "
+        "| corrupt-requests SHARE | nak CODE [all|writes|COMMAND] | latency MS | pace BAUD "
+        "| get [CODE...] | stats");
 }
 
 QString stats(const SimLine &line) {
     const SimLineStats &s = line.stats();
     return QStringLiteral("requests %1 writes %2 answers %3 dropped %4 corrupted %5 garbled %6 "
-                          "bad-requests %7 bytes-in %8 bytes-out %9")
+                          "bad-requests %7 bytes-in %8 bytes-out %9 bad-data %10 overrun %11 "
+                          "unsent %12 lost-requests %13 garbled-requests %14")
         .arg(s.requests)
         .arg(s.writeRequests)
         .arg(s.answers)
@@ -27,7 +31,38 @@ QString stats(const SimLine &line) {
         .arg(s.garbled)
         .arg(s.badRequests)
         .arg(s.bytesReceived)
-        .arg(s.bytesSent);
+        .arg(s.bytesSent)
+        .arg(s.badData)
+        .arg(s.overrunBytes)
+        .arg(s.unsentBytes)
+        .arg(s.requestsLost)
+        .arg(s.requestsGarbled);
+}
+
+// "ST1=350 A11=0": the stored settings of the first device holding each code, all of the first
+// device's without codes. The device's memory itself, not what it answers on the wire.
+QString storedSettings(const SimLine &line, const QStringList &codes) {
+    const QList<SimDevice *> devices = line.devices();
+    if (devices.isEmpty())
+        return QStringLiteral("error: no device on this line");
+    QStringList out;
+    const QList<QByteArray> wanted = [&] {
+        QList<QByteArray> c;
+        for (const QString &code : codes)
+            c.append(code.toUpper().toLatin1());
+        return c.isEmpty() ? devices.first()->settings().keys() : c;
+    }();
+    for (const QByteArray &code : wanted) {
+        std::optional<qint64> value;
+        for (const SimDevice *d : devices)
+            if (!value)
+                value = d->setting(code);
+        if (!value)
+            return QStringLiteral("error: no device holds a setting %1")
+                .arg(QString::fromLatin1(code));
+        out.append(QStringLiteral("%1=%2").arg(QString::fromLatin1(code)).arg(*value));
+    }
+    return out.join(QLatin1Char(' '));
 }
 
 struct Args {
@@ -102,9 +137,17 @@ QString applyLineCommand(SimLine &line, const QString &verb, Args &a) {
         f.corruptShare = a.share(1);
     else if (verb == QLatin1String("garbage"))
         f.garbageShare = a.share(1);
-    else if (verb == QLatin1String("nak"))
-        f.nakAllCode = a.integer(1);
-    else if (verb == QLatin1String("latency"))
+    else if (verb == QLatin1String("bad-data"))
+        f.badDataShare = a.share(1);
+    else if (verb == QLatin1String("drop-requests"))
+        f.requestDropShare = a.share(1);
+    else if (verb == QLatin1String("corrupt-requests"))
+        f.requestCorruptShare = a.share(1);
+    else if (verb == QLatin1String("nak")) {
+        f.nakCode = a.integer(1);
+        a.ok = a.ok && f.nakCode >= 0 && f.nakCode <= 99999 && a.words.size() <= 3 &&
+               parseNakScope(a.words.value(2, QStringLiteral("all")), &f);
+    } else if (verb == QLatin1String("latency"))
         f.latencyMs = a.integer(1);
     else if (verb == QLatin1String("pace")) {
         const int baud = a.integer(1);
@@ -120,6 +163,23 @@ QString applyLineCommand(SimLine &line, const QString &verb, Args &a) {
 
 } // namespace
 
+bool parseNakScope(const QString &text, SimFaults *faults) {
+    if (text == QLatin1String("all") || text == QLatin1String("writes")) {
+        faults->nakFor = text == QLatin1String("all") ? NakScope::All : NakScope::Writes;
+        faults->nakCommand.clear();
+        return true;
+    }
+    const QByteArray code = text.toUpper().toLatin1();
+    const bool isCode = code.size() == 3 && std::all_of(code.begin(), code.end(), [](char c) {
+                            return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+                        });
+    if (!isCode)
+        return false;
+    faults->nakFor = NakScope::Command;
+    faults->nakCommand = code;
+    return true;
+}
+
 QString executeSimCommand(SimLine &line, const QString &command) {
     Args a{command.simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts)};
     const QString verb = a.words.value(0);
@@ -127,13 +187,18 @@ QString executeSimCommand(SimLine &line, const QString &command) {
         QStringLiteral("port-error"), QStringLiteral("station-error"), QStringLiteral("tool"),
         QStringLiteral("alarm"),      QStringLiteral("status"),        QStringLiteral("robot-mode"),
         QStringLiteral("fuse")};
-    static const QStringList lineVerbs = {QStringLiteral("drop"),    QStringLiteral("corrupt"),
-                                          QStringLiteral("garbage"), QStringLiteral("nak"),
-                                          QStringLiteral("latency"), QStringLiteral("pace")};
+    static const QStringList lineVerbs = {
+        QStringLiteral("drop"),          QStringLiteral("corrupt"),
+        QStringLiteral("garbage"),       QStringLiteral("bad-data"),
+        QStringLiteral("drop-requests"), QStringLiteral("corrupt-requests"),
+        QStringLiteral("nak"),           QStringLiteral("latency"),
+        QStringLiteral("pace")};
     if (verb.isEmpty() || verb == QLatin1String("help"))
         return usage();
     if (verb == QLatin1String("stats"))
         return stats(line);
+    if (verb == QLatin1String("get"))
+        return storedSettings(line, a.words.mid(1));
     if (stationVerbs.contains(verb))
         return applyStationCommand(line, verb, a);
     if (lineVerbs.contains(verb))

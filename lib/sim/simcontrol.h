@@ -3,18 +3,22 @@
 //
 //   port-error PORT CODE    station-error CODE     tool PORT TOOL       alarm PORT FLAGS
 //   status PORT STATUS      robot-mode on|off      fuse on|off          feeder-error CODE
-//   drop SHARE   corrupt SHARE   garbage SHARE   nak CODE   latency MS   pace BAUD
-//   stats                   help
+//   drop SHARE   corrupt SHARE   garbage SHARE   bad-data SHARE   drop-requests SHARE
+//   corrupt-requests SHARE   nak CODE [all|writes|COMMAND]   latency MS   pace BAUD
+//   get [CODE...]           stats                  help
 // execute() returns the reply line; an unknown or malformed command gets a reply that starts
 // with "error:" and changes nothing.
 #pragma once
+
+#include "simline.h"
 
 #include <QString>
 
 namespace tipscope::sim {
 
-class SimLine;
-
 [[nodiscard]] QString executeSimCommand(SimLine &line, const QString &command);
+// What a NAK fault applies to: "all", "writes" or a command ("ST1", any case). Sets `faults`'
+// nakFor and nakCommand; false for anything else.
+[[nodiscard]] bool parseNakScope(const QString &text, SimFaults *faults);
 
 } // namespace tipscope::sim

@@ -47,6 +47,7 @@ public:
     // Stored settings by wire code ("ST1", "A12", "MAT").
     [[nodiscard]] std::optional<qint64> setting(const QByteArray &code) const;
     void setSetting(const QByteArray &code, qint64 value) { m_settings[code] = value; }
+    [[nodiscard]] const QMap<QByteArray, qint64> &settings() const { return m_settings; }
     // Every write the device accepted, as "CODE=data", oldest first (bounded).
     [[nodiscard]] const QStringList &acceptedWrites() const { return m_acceptedWrites; }
 

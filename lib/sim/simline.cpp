@@ -7,6 +7,10 @@ using namespace tipscope::protocol;
 namespace {
 constexpr int kTickMs = 20;
 constexpr qint64 kNsPerMs = 1'000'000;
+// What a paced receiver holds of bytes that came faster than the wire (a tty's buffer).
+constexpr qint64 kRxBufferBytes = 4096;
+// Framed like any data field, but neither a number, a delay nor a hex counter.
+constexpr char kUnreadableData[] = "?BAD?";
 
 bool isDigit(char c) {
     return c >= '0' && c <= '9';
@@ -57,6 +61,18 @@ SimFeeder *SimLine::feeder() const {
         if (auto *f = dynamic_cast<SimFeeder *>(d.get()))
             return f;
     return nullptr;
+}
+
+bool SimFaults::naks(const Frame &request) const {
+    switch (nakFor) {
+    case NakScope::All:
+        return nakCode != 0;
+    case NakScope::Writes:
+        return nakCode != 0 && request.header == Header::Write;
+    case NakScope::Command:
+        return nakCode != 0 && request.command == nakCommand;
+    }
+    return false;
 }
 
 void SimLine::setFaults(const SimFaults &faults) {
@@ -113,15 +129,52 @@ void SimLine::receive(const QByteArray &bytes) {
     // On a real wire the chunk starts arriving when it was written (about now) and takes its
     // bytes' time; a chunk cannot start before the previous one has finished.
     const qint64 chunkStart = qMax(now, m_rxFreeNs);
-    m_rxFreeNs = chunkStart + bytes.size() * byteNs();
+    qsizetype kept = bytes.size();
+    if (byteNs() > 0) {
+        const qint64 room = (now + kRxBufferBytes * byteNs() - chunkStart) / byteNs();
+        kept = qsizetype(qBound<qint64>(0, room, bytes.size()));
+        m_stats.overrunBytes += bytes.size() - kept;
+    }
+    m_rxFreeNs = chunkStart + kept * byteNs();
     qint64 offset = 0;
-    for (const DecodeEvent &e : m_decoder.feed(bytes)) {
+    for (const DecodeEvent &e : m_decoder.feed(QByteArrayView(bytes).first(kept))) {
         offset += e.raw.size();
-        handleEvent(e, chunkStart + qMin<qint64>(offset, bytes.size()) * byteNs());
+        handleEvent(e, chunkStart + qMin<qint64>(offset, kept) * byteNs());
     }
 }
 
+void SimLine::clearWire() {
+    m_decoder.reset();
+    m_out.clear();
+    m_pumpTimer.stop();
+    m_rxFreeNs = m_txFreeNs = m_clock.nsecsElapsed();
+}
+
 void SimLine::handleEvent(const DecodeEvent &e, qint64 arrivedNs) {
+    if (e.kind == DecodeEvent::Kind::Frame && spoilRequest(e, arrivedNs))
+        return;
+    deliver(e, arrivedNs);
+}
+
+bool SimLine::spoilRequest(const DecodeEvent &e, qint64 arrivedNs) {
+    if (chance(m_faults.requestDropShare)) {
+        ++m_stats.requestsLost;
+        return true;
+    }
+    if (!chance(m_faults.requestCorruptShare))
+        return false;
+    ++m_stats.requestsGarbled;
+    // One bit flipped anywhere: the device's own decoder makes of it what it can (mostly a BCC
+    // error, answered NAK 00001; a flipped STX or ETX leaves it nothing to answer).
+    QByteArray raw = e.raw;
+    raw[m_rng.bounded(int(raw.size()))] ^= char(1 << m_rng.bounded(8));
+    FrameDecoder decoder;
+    for (const DecodeEvent &spoiled : decoder.feed(raw))
+        deliver(spoiled, arrivedNs);
+    return true;
+}
+
+void SimLine::deliver(const DecodeEvent &e, qint64 arrivedNs) {
     if (e.kind == DecodeEvent::Kind::Garbage || e.kind == DecodeEvent::Kind::Overflow)
         return;
     if (e.kind != DecodeEvent::Kind::Frame) {
@@ -137,9 +190,22 @@ void SimLine::handleEvent(const DecodeEvent &e, qint64 arrivedNs) {
     if (!device || e.frame.source.has_value() != device->isAddressed())
         return;
     const int address = device->address(); // a W-SAD answers from the old address
-    Frame answer = m_faults.nakAllCode ? device->nak(e.frame.command, m_faults.nakAllCode)
-                                       : device->handle(e.frame);
+    Frame answer = m_faults.naks(e.frame) ? device->nak(e.frame.command, m_faults.nakCode)
+                                          : device->handle(e.frame);
+    if (spoilData(*device, e.frame, answer)) {
+        ++m_stats.badData;
+        answer.data = kUnreadableData;
+    }
     sendAnswer(device, address, e.frame, std::move(answer), arrivedNs);
+}
+
+bool SimLine::spoilData(const SimDevice &device, const Frame &request, const Frame &answer) {
+    if (request.header != Header::Read || answer.header != Header::Answer)
+        return false;
+    // Any printable text is a valid model name, so only values can be spoiled.
+    const auto cmd =
+        Catalog::builtin().resolve(device.family().name, request.command, Direction::Read);
+    return cmd && cmd->spec->kind != ValueKind::Text && chance(m_faults.badDataShare);
 }
 
 void SimLine::answerMalformed(const DecodeEvent &e, qint64 arrivedNs) {

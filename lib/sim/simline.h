@@ -7,7 +7,9 @@
 // wire (10 bits per byte): an answer starts no earlier than the request's last byte would have
 // arrived, and leaves byte by byte at the line rate (or, with setChunkMs(), in the chunks a
 // USB-serial adapter hands over once per latency period). Simulated time for the devices advances
-// from a timer while the clock runs, or explicitly through advance().
+// from a timer while the clock runs, or explicitly through advance(). A paced receiver holds at
+// most a buffer's worth of bytes that came faster than the wire carries them; the rest is lost
+// (an overrun, counted), so a flood of junk costs at most that buffer's wire time.
 #pragma once
 
 #include "demoactivity.h"
@@ -25,15 +27,24 @@
 
 namespace tipscope::sim {
 
+enum class NakScope { All, Writes, Command };
+
 struct SimFaults {
-    int latencyMs = 0;       // device turnaround added to every answer
-    double dropShare = 0;    // requests that get no answer
-    double corruptShare = 0; // answers with a flipped bit, cut short, or a wrong BCC
-    double garbageShare = 0; // answers preceded by noise bytes
+    int latencyMs = 0;              // device turnaround added to every answer
+    double dropShare = 0;           // requests the device carries out but whose answer is lost
+    double requestDropShare = 0;    // requests lost on their way: the device never sees them
+    double requestCorruptShare = 0; // requests with a bit flipped on their way
+    double corruptShare = 0;        // answers with a flipped bit, cut short, or a wrong BCC
+    double garbageShare = 0;        // answers preceded by noise bytes
+    double badDataShare = 0; // answers to reads whose data field no client can read ("?BAD?")
     double delayShare = 0;   // answers held back by delayMs (past a client's timeout)
     int delayMs = 0;
-    int nakAllCode = 0; // when set, every request is answered with this NAK code
+    int nakCode = 0; // when set, the requests nakFor names are answered with this NAK code
+    NakScope nakFor = NakScope::All;
+    QByteArray nakCommand; // with NakScope::Command: the command ("ST1"), reads and writes
     quint32 seed = 1;
+
+    [[nodiscard]] bool naks(const protocol::Frame &request) const;
 };
 
 struct SimLineStats {
@@ -46,7 +57,12 @@ struct SimLineStats {
     qint64 corrupted = 0;
     qint64 garbled = 0;
     qint64 delayed = 0;
+    qint64 badData = 0;
     qint64 badRequests = 0;
+    qint64 requestsLost = 0;    // requestDropShare
+    qint64 requestsGarbled = 0; // requestCorruptShare
+    qint64 overrunBytes = 0;    // came faster than the paced wire carries them, beyond the buffer
+    qint64 unsentBytes = 0;     // answers a client did not take (not reading), dropped
 };
 
 class SimLine : public QObject {
@@ -82,6 +98,11 @@ public:
     void setDemoActivity(bool on);
     [[nodiscard]] bool hasDemoActivity() const { return m_activity != nullptr; }
     [[nodiscard]] const SimLineStats &stats() const { return m_stats; }
+    // A new client on the line: what the old one left half sent, the answers not yet on the
+    // wire and the wire's backlog are forgotten.
+    void clearWire();
+    // An endpoint dropped `bytes` of answers its client did not take.
+    void countUnsent(qint64 bytes) { m_stats.unsentBytes += bytes; }
 
 public Q_SLOTS:
     void receive(const QByteArray &bytes);
@@ -98,6 +119,11 @@ private:
     };
 
     void handleEvent(const protocol::DecodeEvent &event, qint64 arrivedNs);
+    // A request frame that a fault on the way spoiled or lost; true when it did.
+    bool spoilRequest(const protocol::DecodeEvent &event, qint64 arrivedNs);
+    void deliver(const protocol::DecodeEvent &event, qint64 arrivedNs);
+    [[nodiscard]] bool spoilData(const SimDevice &device, const protocol::Frame &request,
+                                 const protocol::Frame &answer);
     void answerMalformed(const protocol::DecodeEvent &event, qint64 arrivedNs);
     SimDevice *route(std::optional<int> target) const;
     void sendAnswer(SimDevice *device, int deviceAddress, const protocol::Frame &request,

@@ -97,7 +97,11 @@ public:
 
 private:
     std::optional<SimStats> simStats();
-    std::optional<qint64> readValue(const QByteArray &code);
+    // What the device holds, from the simulator past the line: every stored setting, or `codes`.
+    std::optional<QMap<QByteArray, qint64>> deviceSettings(const QByteArray &codes = {});
+    void probeDevice(const QByteArray &code,
+                     const std::function<void(std::optional<qint64>)> &done);
+    void checkEveryCode();
     void unplugOnce();
 
     Options m_o;
@@ -109,6 +113,7 @@ private:
     model::PollScheduler m_scheduler;
     std::unique_ptr<FaultWindows> m_faults;
     std::unique_ptr<WriteStream> m_writes;
+    QMap<QByteArray, qint64> m_initial; // every stored setting before the first write
     QElapsedTimer m_clock;
     SoakResult m_r;
 };
@@ -116,10 +121,11 @@ private:
 bool Soak::setUp(QString *error) {
     const QString link = m_dir.filePath(QStringLiteral("station"));
     const QString pct = QStringLiteral("0.01");
+    const QString half = QStringLiteral("0.005");
     if (m_sim
             .start({"--model", "DME", "--pty", "--link", link, "--pace", QString::number(m_o.pace),
-                    "--drop", pct, "--corrupt", pct, "--garbage", pct, "--seed",
-                    QString::number(m_o.seed)},
+                    "--drop", pct, "--corrupt", pct, "--garbage", pct, "--drop-requests", half,
+                    "--corrupt-requests", half, "--seed", QString::number(m_o.seed)},
                    error)
             .isEmpty())
         return false;
@@ -137,16 +143,20 @@ bool Soak::setUp(QString *error) {
     info.model = QStringLiteral("DME-2C");
     info.family = QStringLiteral("DME");
     m_station = std::make_unique<model::StationModel>(m_line->queue(), info);
-    m_writes = std::make_unique<WriteStream>(*m_station, kCodes, quint32(m_o.seed));
-    for (const QByteArray &code : kCodes) {
-        const auto v = readValue(code);
-        if (!v) {
-            *error =
-                QStringLiteral("cannot read %1 before the soak").arg(QString::fromLatin1(code));
-            return false;
-        }
-        m_writes->setInitial(code, *v);
+    m_writes = std::make_unique<WriteStream>(
+        *m_station, kCodes, quint32(m_o.seed),
+        [this](const QByteArray &code, const std::function<void(std::optional<qint64>)> &done) {
+            probeDevice(code, done);
+        });
+    const auto initial = deviceSettings();
+    if (!initial || !std::all_of(kCodes.begin(), kCodes.end(),
+                                 [&](const QByteArray &c) { return initial->contains(c); })) {
+        *error = QStringLiteral("cannot read the device's settings before the soak");
+        return false;
     }
+    m_initial = *initial;
+    for (const QByteArray &code : kCodes)
+        m_writes->setInitial(code, m_initial.value(code));
     m_faults = std::make_unique<FaultWindows>(*m_console, 0.005, 0.005, m_o.pace);
     return true;
 }
@@ -210,18 +220,55 @@ std::optional<SimStats> Soak::simStats() {
     return SimStats::parse(*reply);
 }
 
-std::optional<qint64> Soak::readValue(const QByteArray &code) {
-    const auto cmd = Catalog::builtin().resolve(QStringLiteral("DME"), code, Direction::Read);
-    for (int attempt = 0; cmd && attempt < 20; ++attempt) {
-        std::unique_ptr<Reply> reply(m_line->queue().enqueue(Request::read(1, code), nullptr));
-        waitUntil([&] { return reply->isFinished(); }, 20000);
-        if (reply->ok())
-            if (const auto v = decodeAnswer(*cmd, reply->answer().data); v && !v->isText)
-                return v->number;
-        if (m_line->state() != Line::State::Open)
-            waitUntil([this] { return m_line->state() == Line::State::Open; }, 5000);
+std::optional<QMap<QByteArray, qint64>> Soak::deviceSettings(const QByteArray &codes) {
+    auto reply = std::make_shared<QString>();
+    m_console->send(QStringLiteral("get %1").arg(QString::fromLatin1(codes)).trimmed(),
+                    [reply](const QString &r) { *reply = r; });
+    waitUntil([reply] { return !reply->isEmpty(); }, 5000);
+    return parseSettings(*reply);
+}
+
+void Soak::probeDevice(const QByteArray &code,
+                       const std::function<void(std::optional<qint64>)> &done) {
+    m_console->send(
+        QStringLiteral("get ") + QString::fromLatin1(code), [code, done](const QString &reply) {
+            const auto held = parseSettings(reply);
+            done(held && held->contains(code) ? std::optional(held->value(code)) : std::nullopt);
+        });
+}
+
+// Every setting the device stores: the written codes as the ledger allows, the others as they
+// were before the first write (a write that went astray would show here).
+void Soak::checkEveryCode() {
+    const auto now = deviceSettings().value_or(QMap<QByteArray, qint64>());
+    for (auto it = m_initial.cbegin(); it != m_initial.cend(); ++it) {
+        const QByteArray &code = it.key();
+        ++m_r.codes;
+        if (!now.contains(code)) {
+            ++m_r.unreadable;
+            continue;
+        }
+        const qint64 v = now.value(code);
+        const WriteStream::Verdict verdict = kCodes.contains(code) ? m_writes->judge(code, v)
+                                             : v == it.value()     ? WriteStream::Verdict::Expected
+                                                               : WriteStream::Verdict::Unexpected;
+        if (verdict == WriteStream::Verdict::FromFailedWrite) {
+            ++m_r.fromFailedWrite;
+            printNote(QStringLiteral("%1 holds %2, written by a write reported failed: %3")
+                          .arg(QString::fromLatin1(code))
+                          .arg(v)
+                          .arg(m_writes->failureReason(code, v)));
+        }
+        if (verdict == WriteStream::Verdict::Unexpected) {
+            ++m_r.unexpected;
+            printNote(QStringLiteral("%1 holds %2; %3")
+                          .arg(QString::fromLatin1(code))
+                          .arg(v)
+                          .arg(kCodes.contains(code)
+                                   ? m_writes->expectationText(code)
+                                   : QStringLiteral("never written, was %1").arg(it.value())));
+        }
     }
-    return std::nullopt;
 }
 
 void Soak::finish() {
@@ -229,7 +276,7 @@ void Soak::finish() {
     m_writes->stopIssuing();
     m_faults->stop();
     waitUntil([this] { return !m_faults->windowOpen(); }, 2000);
-    waitUntil([this] { return m_writes->outstanding() == 0; }, kDrainTimeoutMs);
+    waitUntil([this] { return m_writes->busy() == 0; }, kDrainTimeoutMs);
     m_scheduler.stop();
     waitUntil([this] { return m_line->queue().pendingCount() == 0; }, kDrainTimeoutMs);
     m_r.pendingAfterDrain = m_line->queue().pendingCount();
@@ -243,33 +290,7 @@ void Soak::finish() {
     m_r.delayWindows = m_faults->delayWindows();
     m_r.writes = m_writes->tally();
     m_r.lost = m_writes->outstanding();
-    // The final comparison reads the device over a clean line: a fault now would only blur it.
-    for (const char *off : {"drop 0", "corrupt 0", "garbage 0"})
-        m_console->send(QString::fromLatin1(off));
-    waitUntil([this] { return m_console->waiting() == 0; }, 5000);
-    m_r.codes = int(kCodes.size());
-    for (const QByteArray &code : kCodes) {
-        const auto v = readValue(code);
-        if (!v) {
-            ++m_r.unreadable;
-            continue;
-        }
-        const WriteStream::Verdict verdict = m_writes->judge(code, *v);
-        if (verdict == WriteStream::Verdict::FromFailedWrite) {
-            ++m_r.fromFailedWrite;
-            printNote(QStringLiteral("%1 holds %2, written by a write reported failed: %3")
-                          .arg(QString::fromLatin1(code))
-                          .arg(*v)
-                          .arg(m_writes->failureReason(code, *v)));
-        }
-        if (verdict == WriteStream::Verdict::Unexpected) {
-            ++m_r.unexpected;
-            printNote(QStringLiteral("%1 holds %2; %3")
-                          .arg(QString::fromLatin1(code))
-                          .arg(*v)
-                          .arg(m_writes->expectationText(code)));
-        }
-    }
+    checkEveryCode();
     m_r.pendingAtEnd = m_line->queue().pendingCount();
     m_r.rssEndKiB = procStatusKiB(QStringLiteral("self"), "VmRSS");
     m_r.rssPeakKiB = procStatusKiB(QStringLiteral("self"), "VmHWM");

@@ -1,7 +1,5 @@
 #include "soakfaults.h"
 
-#include <QRegularExpression>
-
 namespace tipscope::bench {
 
 namespace {
@@ -13,21 +11,43 @@ constexpr int kStallBaud = 300;
 } // namespace
 
 std::optional<SimStats> SimStats::parse(const QString &line) {
-    static const QRegularExpression re(
-        QStringLiteral("^requests (\\d+) writes (\\d+) answers (\\d+) dropped (\\d+) corrupted "
-                       "(\\d+) garbled (\\d+) bad-requests (\\d+)"));
-    const QRegularExpressionMatch m = re.match(line);
-    if (!m.hasMatch())
+    // "requests 12 writes 3 answers 11 ...": names and counts in turn.
+    const QStringList words = line.split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    QMap<QString, qint64> counts;
+    for (qsizetype i = 0; i + 1 < words.size(); i += 2) {
+        bool ok = false;
+        counts.insert(words.at(i), words.at(i + 1).toLongLong(&ok));
+        if (!ok)
+            return std::nullopt;
+    }
+    if (!counts.contains(QStringLiteral("requests")))
         return std::nullopt;
+    const auto n = [&counts](const char *name) { return counts.value(QLatin1String(name)); };
     SimStats s;
-    s.requests = m.captured(1).toLongLong();
-    s.writes = m.captured(2).toLongLong();
-    s.answers = m.captured(3).toLongLong();
-    s.dropped = m.captured(4).toLongLong();
-    s.corrupted = m.captured(5).toLongLong();
-    s.garbled = m.captured(6).toLongLong();
-    s.badRequests = m.captured(7).toLongLong();
+    s.requests = n("requests");
+    s.writes = n("writes");
+    s.answers = n("answers");
+    s.dropped = n("dropped");
+    s.corrupted = n("corrupted");
+    s.garbled = n("garbled");
+    s.badRequests = n("bad-requests");
+    s.lostRequests = n("lost-requests");
+    s.garbledRequests = n("garbled-requests");
     return s;
+}
+
+std::optional<QMap<QByteArray, qint64>> parseSettings(const QString &reply) {
+    if (reply.isEmpty() || reply.startsWith(QLatin1String("error:")))
+        return std::nullopt;
+    QMap<QByteArray, qint64> settings;
+    for (const QString &pair : reply.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        bool ok = false;
+        const qint64 value = pair.section(QLatin1Char('='), 1).toLongLong(&ok);
+        if (!ok || !pair.contains(QLatin1Char('=')))
+            return std::nullopt;
+        settings.insert(pair.section(QLatin1Char('='), 0, 0).toLatin1(), value);
+    }
+    return settings;
 }
 
 SimConsole::SimConsole(QProcess &process, QObject *parent)

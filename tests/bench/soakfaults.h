@@ -22,6 +22,7 @@
 // between the "stats" before and after the window.
 #pragma once
 
+#include <QMap>
 #include <QObject>
 #include <QProcess>
 #include <QTimer>
@@ -33,10 +34,13 @@ namespace tipscope::bench {
 
 struct SimStats {
     qint64 requests = 0, writes = 0, answers = 0, dropped = 0, corrupted = 0, garbled = 0,
-           badRequests = 0;
+           badRequests = 0, lostRequests = 0, garbledRequests = 0;
     // Parses the reply of the "stats" command.
     [[nodiscard]] static std::optional<SimStats> parse(const QString &line);
 };
+
+// Parses the reply of the "get" command ("ST1=350 A11=0"); nullopt for an error.
+[[nodiscard]] std::optional<QMap<QByteArray, qint64>> parseSettings(const QString &reply);
 
 class SimConsole : public QObject {
     Q_OBJECT

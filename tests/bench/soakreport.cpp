@@ -26,6 +26,8 @@ void printFaults(const SoakResult &r) {
     figure("injected.dropped", double(r.sim.dropped), "answers");
     figure("injected.corrupted", double(r.sim.corrupted), "answers");
     figure("injected.garbage", double(r.sim.garbled), "answers");
+    figure("injected.requests_lost", double(r.sim.lostRequests), "requests");
+    figure("injected.requests_garbled", double(r.sim.garbledRequests), "requests");
     figure("injected.nak", double(r.nakInjected), "requests");
     figure("injected.nak_windows", r.nakWindows, "windows");
     figure("injected.delayed", double(r.delayInjected), "requests");
@@ -38,6 +40,7 @@ void printFaults(const SoakResult &r) {
         printFigure(QStringLiteral("soak.detected.nak_%1").arg(it.key(), 5, 10, QLatin1Char('0')),
                     double(it.value()), QStringLiteral("answers"), 0);
     figure("detected.stray", double(r.link.stray), "frames");
+    figure("detected.late_answers", double(r.link.lateAnswers), "frames");
     figure("detected.discarded_bytes", double(r.link.discardedBytes), "bytes");
     figure("detected.retries", double(r.link.retries), "retries");
     figure("detected.line_reconnects", r.lineReconnects, "reconnects");
@@ -52,10 +55,14 @@ void printWrites(const SoakResult &r) {
         printFigure(QStringLiteral("soak.writes.failed_") + it.key(), double(it.value()),
                     QStringLiteral("writes"), 0);
     figure("writes.lost", r.lost, "writes");
-    figure("writes.reported_twice", double(w.unsolicited), "writes");
+    figure("writes.reported_twice", double(w.reportedTwice), "writes");
+    figure("writes.unsolicited", double(w.unsolicited), "writes");
     figure("writes.refused_before_sending", double(w.refused), "writes");
+    figure("writes.not_started", double(w.notStarted), "writes");
     figure("writes.verified_p50", quantile(w.verifiedMs, 0.5), "ms");
     figure("writes.verified_p99", quantile(w.verifiedMs, 0.99), "ms");
+    figure("device.checks_after_writes", double(w.deviceChecks), "checks");
+    figure("device.mismatch_after_writes", double(w.deviceMismatches), "checks");
     figure("device.codes_checked", r.codes - r.unreadable, "codes");
     figure("device.unreadable", r.unreadable, "codes");
     figure("device.unexpected_values", r.unexpected, "codes");
@@ -64,6 +71,8 @@ void printWrites(const SoakResult &r) {
     figure("pending_at_end", r.pendingAtEnd, "requests");
     for (const QString &e : w.examples)
         printNote(QStringLiteral("failed write: ") + e);
+    for (const QString &m : w.mismatches)
+        printNote(QStringLiteral("device mismatch: ") + m);
 }
 
 void printResources(const SoakResult &r) {
@@ -98,10 +107,11 @@ bool printSoakReport(const SoakResult &r) {
     int recovered = 0;
     for (const SoakUnplug &u : r.unplugs)
         recovered += u.recoveryMs >= 0;
-    const bool pass = r.lost == 0 && r.writes.unsolicited == 0 && r.writes.refused == 0 &&
-                      r.unexpected == 0 && r.unreadable == 0 && r.pendingAtEnd == 0 &&
-                      r.pendingAfterDrain == 0 && recovered == r.unplugs.size() &&
-                      r.writes.verified > 0;
+    const WriteTally &w = r.writes;
+    const bool ledgerOk = r.lost == 0 && w.unsolicited == 0 && w.reportedTwice == 0 &&
+                          w.refused == 0 && w.notStarted == 0 && w.deviceMismatches == 0;
+    const bool pass = ledgerOk && r.unexpected == 0 && r.unreadable == 0 && r.pendingAtEnd == 0 &&
+                      r.pendingAfterDrain == 0 && recovered == r.unplugs.size() && w.verified > 0;
     printText(QStringLiteral("soak.result"),
               pass ? QStringLiteral("pass") : QStringLiteral("FAIL"));
     return pass;

@@ -2,9 +2,10 @@
 //
 // Soak fills a SoakResult as it goes; printSoakReport() prints every figure as one
 // "soak.name: value unit" line (the format of every tipscope-bench figure) and the verdict. The
-// run passes only if no write was lost or reported twice, no value was refused before sending,
-// the device holds no value that the ledger cannot explain, every code could be read at the end,
-// nothing is left pending, and the line came back after every unplug.
+// run passes only if no write was lost, reported twice or unsolicited, no value was refused
+// before sending and every write was started, the device never held (after any write, or at the
+// end for any stored setting) a value that the ledger cannot explain, nothing is left pending,
+// and the line came back after every unplug.
 #pragma once
 
 #include "soakfaults.h"

@@ -14,8 +14,9 @@ constexpr int kMaxPauseMs = 100; // between a finished write and the next, like 
 } // namespace
 
 WriteStream::WriteStream(model::StationModel &station, const QList<QByteArray> &codes, quint32 seed,
-                         QObject *parent)
+                         DeviceProbe probe, QObject *parent)
     : QObject(parent)
+    , m_probe(std::move(probe))
     , m_rng(seed) {
     m_clock.start();
     for (const QByteArray &code : codes) {
@@ -23,8 +24,7 @@ WriteStream::WriteStream(model::StationModel &station, const QList<QByteArray> &
         if (!p || !p->isWritable())
             continue;
         m_tracks[code].parameter = p;
-        connect(p, &Parameter::writeFinished, this,
-                [this, code](bool ok, const QString &reason) { onFinished(code, ok, reason); });
+        connect(p, &Parameter::writeFinished, this, &WriteStream::onFinished);
     }
 }
 
@@ -45,9 +45,12 @@ qint64 WriteStream::pickValue(const Track &t) {
     const qint64 step = qMax(1, p.meta().step);
     const qint64 lo = p.minimum();
     const qint64 steps = (p.maximum() - lo) / step;
+    // Not what the device is believed to hold, and not what is shown: a failed write may have
+    // reached the device, and setting the shown value leaves nothing to write.
+    const QList<std::optional<qint64>> avoid{t.lastVerified, p.number()};
     for (;;) {
         const qint64 v = lo + step * qint64(m_rng.bounded(quint32(steps + 1)));
-        if (v != t.lastVerified.value_or(v + 1))
+        if (!avoid.contains(v))
             return v;
     }
 }
@@ -55,7 +58,7 @@ qint64 WriteStream::pickValue(const Track &t) {
 void WriteStream::issueNext() {
     if (!m_issuing || m_inFlight >= m_inFlightTarget)
         return;
-    // A parameter with no write open, chosen at random so every code sees traffic.
+    // A parameter with no write or check under way, chosen at random so every code sees traffic.
     QList<QByteArray> idle;
     for (auto it = m_tracks.cbegin(); it != m_tracks.cend(); ++it)
         if (!it->busy && it->parameter)
@@ -72,38 +75,72 @@ void WriteStream::issueNext() {
         scheduleNext();
         return;
     }
+    const quint64 id = t.parameter->apply();
+    if (id == 0) {
+        ++m_tally.notStarted;
+        if (m_tally.examples.size() < kExamples)
+            m_tally.examples.append(QStringLiteral("%1 = %2: apply() started no write (%3)")
+                                        .arg(QString::fromLatin1(code))
+                                        .arg(value)
+                                        .arg(int(t.parameter->state())));
+        scheduleNext();
+        return;
+    }
     t.busy = true;
-    t.pendingValue = value;
-    t.startedMs = m_clock.elapsed();
     ++m_inFlight;
     ++m_tally.issued;
-    t.parameter->apply();
+    m_open.insert(id, {code, value, m_clock.elapsed()});
 }
 
 void WriteStream::scheduleNext() {
     QTimer::singleShot(int(m_rng.bounded(kMaxPauseMs + 1)), this, &WriteStream::issueNext);
 }
 
-void WriteStream::onFinished(const QByteArray &code, bool ok, const QString &reason) {
-    Track &t = m_tracks[code];
-    if (!t.busy) {
-        ++m_tally.unsolicited;
+void WriteStream::onFinished(bool ok, const QString &reason, quint64 id) {
+    if (!m_open.contains(id)) {
+        ++(m_finished.contains(id) ? m_tally.reportedTwice : m_tally.unsolicited);
         return;
     }
-    t.busy = false;
-    --m_inFlight;
+    const OpenWrite w = m_open.take(id);
+    m_finished.insert(id);
+    Track &t = m_tracks[w.code];
     if (ok) {
         ++m_tally.verified;
-        m_tally.verifiedMs.append(double(m_clock.elapsed() - t.startedMs));
-        t.lastVerified = t.pendingValue;
+        m_tally.verifiedMs.append(double(m_clock.elapsed() - w.startedMs));
+        t.lastVerified = w.value;
         t.failedSince.clear();
     } else {
         ++m_tally.failed;
         ++m_tally.failedBy[classify(reason)];
         if (m_tally.examples.size() < kExamples)
-            m_tally.examples.append(QStringLiteral("%1: %2").arg(code, reason));
-        t.failedSince.append({t.pendingValue, reason});
+            m_tally.examples.append(QStringLiteral("%1: %2").arg(w.code, reason));
+        t.failedSince.append({w.value, reason});
     }
+    checkDevice(w.code, ok ? std::optional<qint64>(w.value) : std::nullopt);
+}
+
+void WriteStream::checkDevice(const QByteArray &code, std::optional<qint64> exactly) {
+    m_probe(code,
+            [this, code, exactly](std::optional<qint64> held) { checked(code, exactly, held); });
+}
+
+void WriteStream::checked(const QByteArray &code, std::optional<qint64> exactly,
+                          std::optional<qint64> held) {
+    ++m_tally.deviceChecks;
+    const bool fits =
+        held && (exactly ? *held == *exactly : judge(code, *held) != Verdict::Unexpected);
+    if (!fits) {
+        ++m_tally.deviceMismatches;
+        if (m_tally.mismatches.size() < kExamples)
+            m_tally.mismatches.append(
+                QStringLiteral("%1 holds %2 after a write ended; %3")
+                    .arg(QString::fromLatin1(code),
+                         held ? QString::number(*held) : QStringLiteral("nothing readable"),
+                         exactly ? QStringLiteral("verified %1").arg(*exactly)
+                                 : expectationText(code)));
+    }
+    m_tracks[code].busy = false;
+    --m_inFlight;
     scheduleNext();
 }
 

@@ -107,7 +107,7 @@ void TestCatalogTranslation::errorTablesAreGermanForPeopleAndEnglishAsData() {
 void TestCatalogTranslation::aNakReachesTheParameterInGerman() {
     SimFixture f(singleDevice(QStringLiteral("DME")));
     sim::SimFaults faults;
-    faults.nakAllCode = 3; // out of range
+    faults.nakCode = 3; // out of range
     f.simLine->setFaults(faults);
     auto st = f.station();
     Parameter *p = st->parameter("ST2");

@@ -7,3 +7,6 @@ tipscope_add_test(tst_requestqueue
 tipscope_add_test(tst_line SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_line.cpp LIBS tipscope_link)
 tipscope_add_test(tst_discovery SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_discovery.cpp
     LIBS tipscope_link)
+tipscope_add_test(tst_serialtransport SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_serialtransport.cpp
+    LIBS tipscope_link tipscope_testsupport)
+add_dependencies(tst_serialtransport tipscope-sim)

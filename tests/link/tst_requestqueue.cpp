@@ -29,6 +29,14 @@ QueueSettings quickSettings(int retries = 2, int turnaroundMs = 20) {
     s.turnaroundMs = turnaroundMs;
     s.retries = retries;
     s.interFrameGapMs = 0;
+    s.lateAnswerWindowMs = 10; // the answer budget rules: retries are not held up in these tests
+    return s;
+}
+
+// A late answer's window far longer than any test: only the late answer itself ends a hold.
+QueueSettings holdUntilTheLateAnswer(int retries) {
+    QueueSettings s = quickSettings(retries);
+    s.lateAnswerWindowMs = 60000;
     return s;
 }
 
@@ -116,8 +124,16 @@ private Q_SLOTS:
     void nak1MeansGarbledAndIsRetried();
     void corruptedAnswerIsRetriedBeforeTheTimeout_data();
     void corruptedAnswerIsRetriedBeforeTheTimeout();
+    void unreadableDataFieldIsCorruptedAndRetried_data();
+    void unreadableDataFieldIsCorruptedAndRetried();
     void answerBudgetStartsWhenTheRequestIsWritten();
     void answerLaterThanTheBudgetIsStray();
+    void garbageInsteadOfAnAnswerIsCountedInTheReason();
+    void afterATimeoutTheSameCommandWaitsForTheLateAnswer();
+    void aRetryTakesTheLateAnswerOfTheAttemptBeforeAndHoldsTheNextRequest();
+    void aHeldWriteKeepsTheWritesBehindItWaiting();
+    void aHoldEndsWhenTheWindowPassesWithoutALateAnswer();
+    void aSuspectedLateAnswerHoldsTheNextRequestOfItsCommand();
     void unconfirmedWriteFailsOnTheWriteWatchdog();
     void lostLineFailsEveryPendingRequestWithTheReason();
     void requestOnAClosedLineFailsWithNotOpenAsynchronously_data();
@@ -525,6 +541,66 @@ void TestRequestQueue::corruptedAnswerIsRetriedBeforeTheTimeout() {
     QCOMPARE(b.queue.stats().timeouts, 0);
 }
 
+void TestRequestQueue::unreadableDataFieldIsCorruptedAndRetried_data() {
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<QByteArray>("code");
+    QTest::addColumn<QByteArray>("bad");
+    QTest::addColumn<QByteArray>("good");
+    QTest::addColumn<int>("badAnswers"); // the first attempts that get the bad field
+    QTest::addColumn<bool>("ok");
+    QTest::newRow("number, then a good answer")
+        << QStringLiteral("DME") << QByteArray("ST1") << QByteArray("ABCDE") << QByteArray("00350")
+        << 1 << true;
+    QTest::newRow("number, every attempt")
+        << QStringLiteral("DME") << QByteArray("ST1") << QByteArray("ABCDE") << QByteArray("00350")
+        << 3 << false;
+    QTest::newRow("empty number") << QStringLiteral("DME") << QByteArray("TT1") << QByteArray()
+                                  << QByteArray("00120") << 3 << false;
+    QTest::newRow("delay") << QStringLiteral("DME") << QByteArray("HD1") << QByteArray("1.6")
+                           << QByteArray("01.60") << 2 << true;
+    QTest::newRow("hex counter") << QStringLiteral("ALE") << QByteArray("DL1") << QByteArray("XYZ")
+                                 << QByteArray("0000002A") << 3 << false;
+}
+
+void TestRequestQueue::unreadableDataFieldIsCorruptedAndRetried() {
+    QFETCH(QString, family);
+    QFETCH(QByteArray, code);
+    QFETCH(QByteArray, bad);
+    QFETCH(QByteArray, good);
+    QFETCH(int, badAnswers);
+    QFETCH(bool, ok);
+
+    const auto cmd = Catalog::builtin().resolve(family, code, Direction::Read);
+    QVERIFY(cmd);
+    Bench b(quickSettings(2));
+    b.transport.setResponder([&](const Frame &request, int attempt) {
+        return answerTo(request, attempt <= badAnswers ? bad : good).encode();
+    });
+    Reply *reply = b.send(Request::read(1, *cmd));
+    QTRY_VERIFY_WITH_TIMEOUT(reply->isFinished(), kNoAnswerWaitMs);
+
+    QCOMPARE(reply->ok(), ok);
+    QCOMPARE(b.queue.stats().corrupted, qMin(badAnswers, 3));
+    QCOMPARE(b.transport.writeCount(reply->request().encode()), qMin(badAnswers + 1, 3));
+    if (ok) {
+        QCOMPARE(reply->answer().data, good);
+        return;
+    }
+    QCOMPARE(reply->error(), ReplyError::Corrupted);
+    QVERIFY2(reply->errorString().contains(
+                 QStringLiteral("unreadable data field '%1'").arg(QString::fromLatin1(bad))),
+             qPrintable(reply->errorString()));
+    QCOMPARE(b.queue.stats().timeouts, 0);
+
+    // The same field for a read that names no format (a raw frame, identification) is its answer.
+    b.transport.setResponder(
+        [&](const Frame &request, int) { return answerTo(request, bad).encode(); });
+    Reply *plain = b.read("SMN");
+    QTRY_VERIFY_WITH_TIMEOUT(plain->isFinished(), kNoAnswerWaitMs);
+    QVERIFY2(plain->ok(), qPrintable(plain->errorString()));
+    QCOMPARE(plain->answer().data, bad);
+}
+
 void TestRequestQueue::answerBudgetStartsWhenTheRequestIsWritten() {
     Bench b(quickSettings(0, 100));
     const QByteArray wire = Frame::read("ST1").addressed(0, 1).encode();
@@ -565,6 +641,139 @@ void TestRequestQueue::answerLaterThanTheBudgetIsStray() {
     QTRY_COMPARE_WITH_TIMEOUT(b.queue.stats().stray, 1, kNoAnswerWaitMs);
     QVERIFY(!reply->ok());
     QCOMPARE(b.transport.writes().size(), 1);
+}
+
+// 10 MB of junk on the line was reported as "no answer", which hides a wrong baud rate or noise.
+void TestRequestQueue::garbageInsteadOfAnAnswerIsCountedInTheReason() {
+    Bench b(quickSettings(2));
+    b.transport.setResponder([](const Frame &, int) { return QByteArray(100000, 'x'); });
+    Reply *reply = b.read("ST1");
+    QTRY_VERIFY_WITH_TIMEOUT(reply->isFinished(), kNoAnswerWaitMs);
+    QCOMPARE(reply->error(), ReplyError::Timeout);
+    // No translator is installed here: the English plural forms come with the programs'.
+    const QString why = reply->errorString();
+    QVERIFY2(why.startsWith(QStringLiteral("no answer after 3 attempt")) &&
+                 why.contains(QStringLiteral("; 300000 byte")) &&
+                 why.endsWith(QStringLiteral(" of garbage came instead")),
+             qPrintable(why));
+
+    b.transport.setResponder({});
+    Reply *silent = b.read("ST2");
+    QTRY_VERIFY_WITH_TIMEOUT(silent->isFinished(), kNoAnswerWaitMs);
+    QVERIFY2(!silent->errorString().contains(QStringLiteral("garbage")),
+             qPrintable(silent->errorString()));
+}
+
+// The frames carry no sequence number: a late answer to a read of ST1 would be taken for the
+// next read of ST1 (a read-back would report the value from before a write).
+void TestRequestQueue::afterATimeoutTheSameCommandWaitsForTheLateAnswer() {
+    Bench b(holdUntilTheLateAnswer(0));
+    Reply *first = b.read("ST1");
+    QTRY_VERIFY_WITH_TIMEOUT(first->isFinished(), kNoAnswerWaitMs);
+    QCOMPARE(first->error(), ReplyError::Timeout);
+
+    Reply *second = b.read("ST1");
+    QCOMPARE(b.transport.writes().size(), 1); // held: the late answer may still come
+
+    b.transport.answer(answerTo(first->request(), "00350").encode());
+    QTRY_COMPARE_WITH_TIMEOUT(b.transport.writes().size(), 2, kNoAnswerWaitMs);
+    QCOMPARE(b.queue.stats().stray, 1);
+    QCOMPARE(b.queue.stats().lateAnswers, 1);
+    QVERIFY(!second->isFinished());
+
+    b.transport.answer(answerTo(second->request(), "00400").encode());
+    QTRY_VERIFY_WITH_TIMEOUT(second->isFinished(), kNoAnswerWaitMs);
+    QVERIFY2(second->ok(), qPrintable(second->errorString()));
+    QCOMPARE(second->answer().data, QByteArray("00400"));
+}
+
+// A retry asks the same question, and nothing of its command went out in between: the late
+// answer of the attempt before answers it. Then the retry's own answer is still to come.
+void TestRequestQueue::aRetryTakesTheLateAnswerOfTheAttemptBeforeAndHoldsTheNextRequest() {
+    Bench b(holdUntilTheLateAnswer(1));
+    Reply *read = b.read("ST1");
+    QTRY_COMPARE_WITH_TIMEOUT(b.transport.writes().size(), 2, kNoAnswerWaitMs);
+    QCOMPARE(b.queue.stats().timeouts, 1);
+    b.transport.answer(answerTo(read->request(), "00350").encode()); // attempt 1's, late
+    QTRY_VERIFY_WITH_TIMEOUT(read->isFinished(), kNoAnswerWaitMs);
+    QVERIFY2(read->ok(), qPrintable(read->errorString()));
+    QCOMPARE(read->answer().data, QByteArray("00350"));
+
+    Reply *next = b.read("ST1");
+    b.transport.setResponder([](const Frame &request, int) {
+        return request.command == "ST2" ? answerTo(request, "00200").encode() : QByteArray();
+    });
+    Reply *other = b.read("ST2"); // other commands go meanwhile
+    QTRY_VERIFY_WITH_TIMEOUT(other->isFinished(), kNoAnswerWaitMs);
+    QVERIFY2(other->ok(), qPrintable(other->errorString()));
+    QCOMPARE(b.transport.writtenCommands(), QList<QByteArray>({"ST1", "ST1", "ST2"}));
+
+    b.transport.answer(answerTo(read->request(), "00350").encode()); // attempt 2's own
+    QTRY_COMPARE_WITH_TIMEOUT(b.transport.writes().size(), 4, kNoAnswerWaitMs);
+    QCOMPARE(b.queue.stats().lateAnswers, 1);
+    b.transport.answer(answerTo(next->request(), "00400").encode());
+    QTRY_VERIFY_WITH_TIMEOUT(next->isFinished(), kNoAnswerWaitMs);
+    QCOMPARE(next->answer().data, QByteArray("00400"));
+}
+
+void TestRequestQueue::aHeldWriteKeepsTheWritesBehindItWaiting() {
+    Bench b(holdUntilTheLateAnswer(0));
+    Reply *first = b.send(Request::write(1, "ST1", "00400"));
+    QTRY_VERIFY_WITH_TIMEOUT(first->isFinished(), kNoAnswerWaitMs);
+    QCOMPARE(first->error(), ReplyError::Timeout);
+
+    b.transport.setResponder([](const Frame &request, int) {
+        return request.command == "ST1" ? QByteArray() : answerEverything(request, 1);
+    });
+    Reply *again = b.send(Request::write(1, "ST1", "00410"));
+    Reply *second = b.send(Request::write(1, "ST2", "00420"));
+    Reply *read = b.read("ST3");
+    QTRY_VERIFY_WITH_TIMEOUT(read->isFinished(), kNoAnswerWaitMs);
+    QVERIFY(read->ok());
+    QCOMPARE(b.transport.writtenCommands(), QList<QByteArray>({"ST1", "ST3"}));
+
+    b.transport.setResponder(answerEverything);
+    b.transport.answer(answerTo(first->request()).encode()); // the first write's, late
+    QTRY_VERIFY_WITH_TIMEOUT(again->isFinished() && second->isFinished(), kNoAnswerWaitMs);
+    QVERIFY(again->ok() && second->ok());
+    QCOMPARE(b.transport.writtenCommands(), QList<QByteArray>({"ST1", "ST3", "ST1", "ST2"}));
+    QCOMPARE(b.transport.writes().at(2), again->request().encode());
+}
+
+void TestRequestQueue::aHoldEndsWhenTheWindowPassesWithoutALateAnswer() {
+    QueueSettings s = quickSettings(0);
+    s.lateAnswerWindowMs = 300;
+    Bench b(s);
+    Reply *first = b.read("ST1");
+    QTRY_VERIFY_WITH_TIMEOUT(first->isFinished(), kNoAnswerWaitMs);
+    b.transport.setResponder(answerEverything);
+    Reply *second = b.read("ST1");
+    QCOMPARE(b.transport.writes().size(), 1);
+    QTRY_VERIFY_WITH_TIMEOUT(second->isFinished(), kNoAnswerWaitMs);
+    QVERIFY2(second->ok(), qPrintable(second->errorString()));
+    QCOMPARE(b.transport.writes().size(), 2);
+    QCOMPARE(b.queue.stats().lateAnswers, 0);
+}
+
+void TestRequestQueue::aSuspectedLateAnswerHoldsTheNextRequestOfItsCommand() {
+    Bench b(holdUntilTheLateAnswer(0));
+    b.queue.holdForLateAnswer(1, "ST1");
+    Reply *held = b.read("ST1");
+    Reply *free = b.read("ST2");
+    Reply *otherDevice = b.read("ST1", Priority::UserRead, 2);
+    QCOMPARE(b.transport.writtenCommands(), QList<QByteArray>({"ST2"}));
+    b.transport.answer(answerTo(free->request(), "00200").encode());
+    QTRY_VERIFY_WITH_TIMEOUT(free->isFinished(), kNoAnswerWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(b.transport.writes().size(), 2, kNoAnswerWaitMs);
+    QCOMPARE(b.transport.writes().last(), otherDevice->request().encode());
+    b.transport.answer(answerTo(otherDevice->request(), "00300").encode());
+    QTRY_VERIFY_WITH_TIMEOUT(otherDevice->isFinished(), kNoAnswerWaitMs);
+
+    b.transport.answer(answerTo(held->request(), "00350").encode()); // the suspected answer's own
+    QTRY_COMPARE_WITH_TIMEOUT(b.transport.writes().size(), 3, kNoAnswerWaitMs);
+    b.transport.answer(answerTo(held->request(), "00400").encode());
+    QTRY_VERIFY_WITH_TIMEOUT(held->isFinished(), kNoAnswerWaitMs);
+    QCOMPARE(held->answer().data, QByteArray("00400"));
 }
 
 void TestRequestQueue::unconfirmedWriteFailsOnTheWriteWatchdog() {

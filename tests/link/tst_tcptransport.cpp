@@ -1,7 +1,8 @@
 // TcpTransport against a real QTcpServer on the loopback: it opens, sends exactly what it is
 // given and says so, hands on what arrives however the network splits it, reports a peer that
 // closes as a dropped line with the reason, and an open that cannot succeed as a failure that
-// says why, never as a drop.
+// says why, never as a drop; a connection that is never made gives up after the connect timeout.
+#include "fullbacklog.h"
 #include "link/tcptransport.h"
 #include "protocol/frame.h"
 #include "protocol/framedecoder.h"
@@ -105,6 +106,7 @@ private Q_SLOTS:
     void writingWhileClosedSendsNothing();
     void aRefusedConnectionFailsTheOpenWithTheReason();
     void aHostThatDoesNotExistIsNotFound();
+    void aConnectionNeverAcceptedFailsAfterTheConnectTimeout();
     void hostAndPortAreParsed_data();
     void hostAndPortAreParsed();
 };
@@ -272,6 +274,25 @@ void TestTcpTransport::aHostThatDoesNotExistIsNotFound() {
     const QString reason = failed.at(0).at(1).toString();
     QVERIFY2(reason.startsWith(QLatin1String("cannot connect to tcp tipscope-test.invalid:4001: ")),
              qPrintable(reason));
+}
+
+// A server whose accept queue is full held the open for the system's own limit, a minute and more.
+void TestTcpTransport::aConnectionNeverAcceptedFailsAfterTheConnectTimeout() {
+    tipscope::testing::FullBacklog listener;
+    QVERIFY(listener.port() != 0);
+    TcpTransport t(QStringLiteral("127.0.0.1"), listener.port());
+    t.setConnectTimeoutMs(300);
+    QSignalSpy opened(&t, &Transport::opened);
+    QSignalSpy failed(&t, &Transport::openFailed);
+    QVERIFY(opened.isValid() && failed.isValid());
+    t.open();
+    QVERIFY(failed.wait(kWaitMs));
+    QCOMPARE(opened.count(), 0);
+    const QString why = failed.first().at(1).toString();
+    QVERIFY2(why.contains(QStringLiteral("no connection within 0.3 s")), qPrintable(why));
+    QVERIFY(!t.isOpen());
+    QTest::qWait(100);
+    QCOMPARE(failed.count(), 1);
 }
 
 void TestTcpTransport::hostAndPortAreParsed_data() {

@@ -54,6 +54,9 @@ private Q_SLOTS:
     void selectedTemperatureFollowsTheStationsLimits();
     void fahrenheitIsShownAndTypedButCelsiusIsSent();
     void aNakLeavesTheParameterFailedWithTheReasonAndKeepsTheEdit();
+    void aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails_data();
+    void aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails();
+    void eachWriteEndsOnceWithItsOwnId();
     void monitorOnlyBlocksEveryWrite();
     void dangerousActionsNeedConfirmation();
     void saveToMemoryMarksSelectedTemperaturesSaved();
@@ -171,7 +174,7 @@ void TestParameters::aNakLeavesTheParameterFailedWithTheReasonAndKeepsTheEdit() 
     st->refreshAll();
     f.settle();
     sim::SimFaults faults;
-    faults.nakAllCode = 3;
+    faults.nakCode = 3;
     f.simLine->setFaults(faults);
     Parameter *p = st->parameter("ST2");
     QString why;
@@ -181,6 +184,90 @@ void TestParameters::aNakLeavesTheParameterFailedWithTheReasonAndKeepsTheEdit() 
     QCOMPARE(p->edit().value(), 300);
     f.simLine->setFaults({});
     QVERIFY(writeAndWait(*p, 300, &why));
+}
+
+void TestParameters::aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails_data() {
+    QTest::addColumn<int>("staleAnswers");
+    QTest::addColumn<bool>("verified");
+    QTest::newRow("one stale answer") << 1 << true;
+    QTest::newRow("the device keeps the old value") << 1000 << false;
+}
+
+// Frames carry no sequence number: a read-back may get the late answer of an earlier read, from
+// before the write. The simulator answers the read-backs with the old value, as such a late
+// answer would.
+void TestParameters::aReadBackThatDiffersIsReadOnceMoreBeforeTheWriteFails() {
+    QFETCH(int, staleAnswers);
+    QFETCH(bool, verified);
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    auto st = f.station();
+    st->refreshAll();
+    f.settle();
+    sim::SimStation *device = f.simLine->station();
+    const qint64 before = device->setting("ST2").value();
+    bool written = false;
+    int readsAfterWrite = 0;
+    connect(f.simLine.get(), &sim::SimLine::requestReceived, this, [&](const Frame &request) {
+        if (request.command != "ST2")
+            return;
+        written = written || request.header == Header::Write;
+        if (!written || request.header != Header::Read)
+            return;
+        if (++readsAfterWrite > staleAnswers)
+            return;
+        const qint64 now = device->setting("ST2").value();
+        device->setSetting("ST2", before);
+        QTimer::singleShot(0, this, [device, now] { device->setSetting("ST2", now); });
+    });
+    Parameter *p = st->parameter("ST2");
+    QString why;
+    QCOMPARE(writeAndWait(*p, 300, &why), verified);
+    QCOMPARE(readsAfterWrite, 2);
+    QCOMPARE(device->setting("ST2").value(), 300);
+    if (verified) {
+        QCOMPARE(p->state(), Parameter::State::InSync);
+        QCOMPARE(p->number().value(), 300);
+    } else {
+        QVERIFY2(why.contains(QStringLiteral("the device reports")), qPrintable(why));
+        QCOMPARE(p->number().value(), before);
+    }
+}
+
+// A caller tells its writes' outcomes apart by id: a finish can never be taken for another
+// write's, and apply() says at once when it started nothing.
+void TestParameters::eachWriteEndsOnceWithItsOwnId() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    auto st = f.station();
+    st->refreshAll();
+    f.settle();
+    Parameter *p = st->parameter("ST3");
+    QSignalSpy done(p, &Parameter::writeFinished);
+    QVERIFY(done.isValid());
+    QCOMPARE(p->apply(), quint64(0)); // nothing pending
+    QVERIFY(p->setEdit(p->number().value()).isEmpty());
+    QCOMPARE(p->apply(), quint64(0)); // the device holds it already
+
+    QVERIFY(p->setEdit(300).isEmpty());
+    const quint64 first = p->apply();
+    QVERIFY(first != 0);
+    QVERIFY(p->setEdit(310).isEmpty()); // edited while the write runs
+    QCOMPARE(p->apply(), quint64(0));   // one write of a parameter at a time
+    QVERIFY(done.wait(10000));
+    QCOMPARE(done.count(), 1);
+    QCOMPARE(done.first().at(0).toBool(), true);
+    QCOMPARE(done.first().at(2).value<quint64>(), first);
+
+    QVERIFY(p->setEdit(320).isEmpty());
+    st->setWritesBlocked(true); // refused inside apply(): still told after apply() returned
+    const quint64 refused = p->apply();
+    QVERIFY(refused != 0 && refused != first);
+    QCOMPARE(done.count(), 1);
+    QTRY_COMPARE(done.count(), 2);
+    QCOMPARE(done.last().at(0).toBool(), false);
+    QCOMPARE(done.last().at(2).value<quint64>(), refused);
+    QTest::qWait(100);
+    f.settle();
+    QCOMPARE(done.count(), 2);
 }
 
 void TestParameters::monitorOnlyBlocksEveryWrite() {

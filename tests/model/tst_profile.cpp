@@ -337,7 +337,7 @@ void TestProfile::aLimitThatCannotBeReadRefusesTheProfile() {
     const auto p = Profile::fromJson(profileJson("DME", R"("ST1":"00400")"), &error);
     QVERIFY2(p, qPrintable(error));
     sim::SimFaults faults;
-    faults.nakAllCode = 4;
+    faults.nakCode = 4;
     f.simLine->setFaults(faults);
     const ApplyReport r = run(*st, *p, ProfileApplier::Mode::Apply);
     QVERIFY(r.refused);

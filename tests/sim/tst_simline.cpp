@@ -1,5 +1,6 @@
 // The simulator answers as the guides say, in-process and deterministic.
 #include "protocol/framedecoder.h"
+#include "protocol/valuecodec.h"
 #include "sim/simcontrol.h"
 #include "sim/simline.h"
 
@@ -83,6 +84,12 @@ private Q_SLOTS:
     void factoryResetRestoresDefaults();
     void nvsKeepsSelectedTemperatureAcrossRestart();
     void dropAndCorruptFaultsAreCountedAndVisible();
+    void badDataFaultSpoilsReadValuesButNotTextOrWrites();
+    void nakFaultCanBeLimitedToWritesOrOneCommand_data();
+    void nakFaultCanBeLimitedToWritesOrOneCommand();
+    void pacedJunkCostsAtMostTheReceiversBufferOfWireTime();
+    void requestFaultsLoseOrGarbleTheRequestBeforeTheDeviceSeesIt();
+    void getTellsTheStoredSettingsOffTheWire();
     void pacedAnswersTakeAtLeastTheWireTime();
     void chunkedAnswersArriveInFewerPiecesAtTheSameTime_data();
     void chunkedAnswersArriveInFewerPiecesAtTheSameTime();
@@ -363,6 +370,106 @@ void TestSimLine::dropAndCorruptFaultsAreCountedAndVisible() {
     QVERIFY(qint64(silent) >= line->stats().dropped);
     QVERIFY(line->stats().corrupted > 30);
     QVERIFY(bad > 0 && good > 100);
+}
+
+void TestSimLine::badDataFaultSpoilsReadValuesButNotTextOrWrites() {
+    auto line = SimLine::demo();
+    QCOMPARE(executeSimCommand(*line, "bad-data 1"), QStringLiteral("ok"));
+    QCOMPARE(line->faults().badDataShare, 1.0);
+    QVERIFY(executeSimCommand(*line, "bad-data 1.5").startsWith("error:"));
+    Wire w(*line);
+    const Catalog &cat = Catalog::builtin();
+    for (const char *code : {"ST1", "HD1", "TT2"}) {
+        const auto answer = w.ask(rd(code));
+        QVERIFY(answer);
+        QCOMPARE(answer->header, Header::Answer);
+        const auto cmd = cat.resolve(QStringLiteral("DME"), code, Direction::Read);
+        QVERIFY2(!decodeAnswer(*cmd, answer->data), code);
+    }
+    QCOMPARE(w.ask(rd("SMN"))->data, QByteArray("DME-2C"));
+    QCOMPARE(w.ask(wr("ST1", "00400"))->header, Header::Answer);
+    QCOMPARE(line->station()->setting("ST1"), 400);
+    QCOMPARE(line->stats().badData, 3);
+    QVERIFY(executeSimCommand(*line, "stats").contains(QStringLiteral(" bad-data 3 ")));
+}
+
+void TestSimLine::nakFaultCanBeLimitedToWritesOrOneCommand_data() {
+    QTest::addColumn<QString>("command");
+    QTest::addColumn<QList<int>>("naks"); // R-SMN, R-ST1, W-ST1, R-ST2, W-ST2
+    QTest::newRow("all") << "nak 3" << QList<int>{3, 3, 3, 3, 3};
+    QTest::newRow("all, said") << "nak 3 all" << QList<int>{3, 3, 3, 3, 3};
+    QTest::newRow("writes") << "nak 3 writes" << QList<int>{-1, -1, 3, -1, 3};
+    QTest::newRow("one command") << "nak 4 st1" << QList<int>{-1, 4, 4, -1, -1};
+    QTest::newRow("off") << "nak 0 writes" << QList<int>{-1, -1, -1, -1, -1};
+}
+
+// With every request NAKed, identification fails too, so no write could be tried against it.
+void TestSimLine::nakFaultCanBeLimitedToWritesOrOneCommand() {
+    QFETCH(QString, command);
+    QFETCH(QList<int>, naks);
+    auto line = SimLine::demo();
+    QCOMPARE(executeSimCommand(*line, command), QStringLiteral("ok"));
+    Wire w(*line);
+    const QList<Frame> requests{rd("SMN"), rd("ST1"), wr("ST1", "00400"), rd("ST2"),
+                                wr("ST2", "00410")};
+    QList<int> got;
+    for (const Frame &r : requests)
+        got.append(nakCode(w.ask(r)));
+    QCOMPARE(got, naks);
+    for (const char *bad : {"nak 3 reads", "nak 3 ST", "nak 3 ST1 ST2", "nak -1", "nak x"})
+        QVERIFY2(executeSimCommand(*line, bad).startsWith("error:"), bad);
+}
+
+// A wire carries a byte at a time; a receiver keeps a buffer of what came faster. Before, 1 MB of
+// junk from a client that writes faster than the wire pushed the simulated wire 9 minutes ahead
+// (10 MB: hours), and nothing was answered until then.
+void TestSimLine::pacedJunkCostsAtMostTheReceiversBufferOfWireTime() {
+    auto line = SimLine::demo();
+    line->setBaud(19200);
+    QByteArray got;
+    connect(line.get(), &SimLine::transmit, this, [&](const QByteArray &b) { got += b; });
+    line->receive(QByteArray(1 << 20, 'x'));
+    // A request that comes while the buffer is full is lost with the junk, so ask again, as a
+    // client retries. 4096 bytes at 19200 baud are 2.1 s of wire time.
+    QTimer again;
+    connect(&again, &QTimer::timeout, this, [&] { line->receive(rd("SMN").encode()); });
+    again.start(500);
+    QTRY_VERIFY_WITH_TIMEOUT(got.contains("DME-2C"), 10000);
+    QVERIFY(line->stats().overrunBytes >= (1 << 20) - 4096);
+    QVERIFY(executeSimCommand(*line, "stats").contains(QStringLiteral(" overrun ")));
+}
+
+// "drop" loses the answer of a request the device carried out; these lose the request itself.
+void TestSimLine::requestFaultsLoseOrGarbleTheRequestBeforeTheDeviceSeesIt() {
+    auto line = SimLine::demo();
+    Wire w(*line);
+    QCOMPARE(executeSimCommand(*line, "drop-requests 1"), QStringLiteral("ok"));
+    QVERIFY(!w.ask(wr("ST1", "00400")));
+    QCOMPARE(line->stats().requestsLost, 1);
+    QCOMPARE(line->stats().requests, 0);
+
+    QCOMPARE(executeSimCommand(*line, "drop-requests 0"), QStringLiteral("ok"));
+    QCOMPARE(executeSimCommand(*line, "corrupt-requests 1"), QStringLiteral("ok"));
+    int naks = 0;
+    for (int i = 0; i < 50; ++i) {
+        w.decoder.reset();
+        const auto answer = w.ask(wr("ST1", "00400"));
+        QVERIFY(!answer || nakCode(answer) == 1);
+        naks += answer ? 1 : 0;
+    }
+    QVERIFY2(naks > 25, qPrintable(QString::number(naks))); // mostly a BCC error, NAK 00001
+    QCOMPARE(line->stats().requestsGarbled, 50);
+    QCOMPARE(line->station()->setting("ST1"), 350);
+    QVERIFY(executeSimCommand(*line, "stats").contains(" lost-requests 1 garbled-requests 50"));
+}
+
+void TestSimLine::getTellsTheStoredSettingsOffTheWire() {
+    auto line = SimLine::demo();
+    QCOMPARE(executeSimCommand(*line, "get ST1 a12 LEN"), QStringLiteral("ST1=350 A12=0 LEN=200"));
+    line->station()->setSetting("ST1", 400);
+    QCOMPARE(executeSimCommand(*line, "get st1"), QStringLiteral("ST1=400"));
+    QVERIFY(executeSimCommand(*line, "get").contains(QStringLiteral("MAT=")));
+    QVERIFY(executeSimCommand(*line, "get XYZ").startsWith("error:"));
 }
 
 void TestSimLine::pacedAnswersTakeAtLeastTheWireTime() {

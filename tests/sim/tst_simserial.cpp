@@ -5,9 +5,14 @@
 #include "protocol/framedecoder.h"
 
 #include <QDeadlineTimer>
+#include <QFile>
 #include <QSerialPort>
 #include <QTcpSocket>
 #include <QtTest>
+
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 using namespace tipscope::protocol;
 using namespace tipscope::testing;
@@ -77,6 +82,8 @@ private Q_SLOTS:
     void sfrAnswersTheGuidesWorkedFrame();
     void ownPtyServesAPlainSerialClient();
     void tcpServesRawFrames();
+    void tcpClientThatNeverReadsCostsABoundedBuffer();
+    void pacedJunkDoesNotSilenceTheSimulator();
 
 private:
     void withSocatSim(const QStringList &simArgs, const QList<Step> &script);
@@ -174,6 +181,101 @@ void TestSimSerial::tcpServesRawFrames() {
     socket.connectToHost(QStringLiteral("127.0.0.1"), quint16(where.section(':', 1).toInt()));
     QVERIFY(socket.waitForConnected(3000));
     runScript(socket, {{rd("SMN", std::nullopt), "AHDR-2C"}, {rd("ST2", std::nullopt), "N00004"}});
+}
+
+namespace {
+
+// A loopback client with a tiny receive buffer that it never reads: what it is sent piles up on
+// the sending side.
+int connectNonReader(quint16 port) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    const int tiny = 4096;
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &tiny, sizeof tiny);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    a.sin_port = htons(port);
+    if (::connect(fd, reinterpret_cast<sockaddr *>(&a), sizeof a) != 0) {
+        ::close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+// VmRSS of a process in KiB, from /proc; -1 when unreadable.
+qint64 residentKiB(qint64 pid) {
+    QFile f(QStringLiteral("/proc/%1/status").arg(pid));
+    if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
+        return -1;
+    for (QByteArray line = f.readLine(); !line.isEmpty(); line = f.readLine())
+        if (line.startsWith("VmRSS:"))
+            return line.mid(6).trimmed().split(' ').value(0).toLongLong();
+    return -1;
+}
+
+qint64 statsField(const QString &stats, const QString &name) {
+    const QStringList words = stats.split(QLatin1Char(' '));
+    const qsizetype at = words.indexOf(name);
+    return at < 0 ? -1 : words.value(at + 1).toLongLong();
+}
+
+} // namespace
+
+// Before, a client that sent requests and never read made the simulator buffer every answer
+// (13 MB to 386 MB in 10 s), and a flood of requests was taken in whole, whatever its size.
+void TestSimSerial::tcpClientThatNeverReadsCostsABoundedBuffer() {
+    SimProcess sim;
+    QString error;
+    const QString where = sim.start({"--model", "DME", "--tcp", "127.0.0.1:0"}, &error);
+    QVERIFY2(where.startsWith(QStringLiteral("127.0.0.1:")), qPrintable(error + where));
+    const quint16 port = quint16(where.section(':', 1).toInt());
+    const int fd = connectNonReader(port);
+    QVERIFY(fd >= 0);
+    QByteArray burst;
+    for (int i = 0; i < 10000; ++i)
+        burst += rd("ST1", 1).encode();
+    const qint64 before = residentKiB(sim.process().processId());
+    for (int i = 0; i < 300; ++i) // 33 MB of requests, 48 MB of answers
+        QCOMPARE(::send(fd, burst.constData(), size_t(burst.size()), 0), ssize_t(burst.size()));
+    qint64 unsent = 0;
+    QTRY_VERIFY_WITH_TIMEOUT((unsent = statsField(sim.command("stats"), "unsent")) > 0, 30000);
+    const qint64 grown = residentKiB(sim.process().processId()) - before;
+    ::close(fd);
+    // AddressSanitizer keeps freed memory in quarantine: there, the resident size says nothing.
+    if (!qEnvironmentVariableIsSet("ASAN_OPTIONS"))
+        QVERIFY2(grown < 16 * 1024, qPrintable(QStringLiteral("grew by %1 KiB").arg(grown)));
+
+    // The next client is served as usual.
+    QTcpSocket next;
+    next.connectToHost(QStringLiteral("127.0.0.1"), port);
+    QVERIFY(next.waitForConnected(3000));
+    runScript(next, {{rd("SMN", 1), "ADME-2C"}});
+}
+
+// With --pace, 10 MB of junk pushed the simulated wire hours ahead, and nothing was answered again
+// for any client. A receiver keeps a buffer; what comes faster than the wire beyond it is lost.
+void TestSimSerial::pacedJunkDoesNotSilenceTheSimulator() {
+    SimProcess sim;
+    QString error;
+    const QString where =
+        sim.start({"--model", "DME", "--tcp", "127.0.0.1:0", "--pace", "19200"}, &error);
+    QVERIFY2(where.startsWith(QStringLiteral("127.0.0.1:")), qPrintable(error + where));
+    const quint16 port = quint16(where.section(':', 1).toInt());
+    QTcpSocket junk;
+    junk.connectToHost(QStringLiteral("127.0.0.1"), port);
+    QVERIFY(junk.waitForConnected(3000));
+    junk.write(QByteArray(10 << 20, 'x'));
+    QTRY_VERIFY_WITH_TIMEOUT(junk.bytesToWrite() == 0 &&
+                                 statsField(sim.command("stats"), "bytes-in") == (10 << 20),
+                             30000);
+    QVERIFY(statsField(sim.command("stats"), "overrun") >= (9 << 20));
+    // The same client, once the buffer's 2 s of wire time have passed, and the next one.
+    QTest::qWait(2500);
+    runScript(junk, {{rd("SMN", 1), "ADME-2C"}});
+    QTcpSocket next;
+    next.connectToHost(QStringLiteral("127.0.0.1"), port);
+    QVERIFY(next.waitForConnected(3000));
+    runScript(next, {{rd("SVR", 1), "A9996780"}});
 }
 
 QTEST_GUILESS_MAIN(TestSimSerial)
