@@ -2,8 +2,7 @@
 // tipscope-sim station on a socat PTY pair) into the CSV the Charts page writes, the replay's
 // reader reads it back, and measure finds the joints' recoveries in text and in JSON. Bad
 // durations, files and interruptions end as documented.
-#include "processrun.h"
-#include "ptyfixtures.h"
+#include "programrun.h"
 
 #include "model/recording/chartcsvreader.h"
 
@@ -18,7 +17,7 @@ using tipscope::model::ChartCsvReader;
 
 namespace {
 
-using Run = ProcessRun;
+using Run = ProgramRun;
 
 Run run(const QString &program, const QStringList &args, int timeoutMs = 60'000) {
     QProcess p;
@@ -27,7 +26,7 @@ Run run(const QString &program, const QStringList &args, int timeoutMs = 60'000)
 }
 
 Run cli(const QStringList &args, int timeoutMs = 60'000) {
-    return run(binaryPath(QStringLiteral("tipscope-cli")), args, timeoutMs);
+    return runProgram(QStringLiteral("tipscope-cli"), args, timeoutMs);
 }
 
 } // namespace
