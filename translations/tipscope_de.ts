@@ -1183,7 +1183,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../app/gui/charts/chartcsv.cpp" line="192"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="181"/>
         <source>the file could not be written</source>
         <translation>die Datei konnte nicht geschrieben werden</translation>
     </message>
@@ -1191,123 +1191,144 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="62"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="91"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>die Zeile ist länger als %1 Bytes (ist das eine Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="98"/>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="273"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>die Datei enthält Binärdaten, keinen CSV-Text</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="102"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="123"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155"/>
+        <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
+        <translation>mehr als %1 Kommentarzeilen („#“); eine Aufzeichnung hat wenige, und eine je Kanal</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>die Kopfzeile muss mit &quot;time&quot; beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="126"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 Spalten; die Wiedergabe liest höchstens %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="137"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>Spalte %1 &quot;%2&quot; ist weder &quot;port&lt;n&gt; &lt;Reihe&gt; [Einheit]&quot; noch &quot;feeder &lt;Reihe&gt; [Einheit]&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="148"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>Spalte %1 &quot;%2&quot;: die Einheit muss &quot;%3&quot; sein</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="150"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="174"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>Spalte %1 &quot;%2&quot; kommt zweimal vor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="179"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234"/>
         <source>the header names no series columns</source>
         <translation>die Kopfzeile nennt keine Spalten mit Datenreihen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="200"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>Spalte %1: &quot;%2&quot; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="205"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 hat nur in einem Teil seiner Spalten Werte</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="212"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 Zellen, aber die Kopfzeile hat %2 Spalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="217"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; ist keine Zeitangabe nach ISO 8601</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="220"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>die Zeit %1 liegt vor der der vorigen Zeile (die Zeilen müssen zeitlich geordnet sein)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="231"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 hat mehr als %2 Messwerte, mehr als die Wiedergabe fasst; teilen Sie die Datei auf</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="244"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="330"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>das Ereignis &quot;%1&quot; hat nicht die Form &quot;&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="290"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164"/>
         <source>a quoted cell is not closed</source>
         <translation>eine Zelle in Anführungszeichen ist nicht geschlossen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="300"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="347"/>
         <source>the file has a header but no rows</source>
         <translation>die Datei hat eine Kopfzeile, aber keine Zeilen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="301"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="345"/>
         <source>the file is empty or holds only comments</source>
         <translation>die Datei ist leer oder enthält nur Kommentare</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="319"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27"/>
+        <source>the file is larger than %1 MB; replay reads files up to %1 MB</source>
+        <translation>die Datei ist größer als %1 MB; die Wiedergabe liest Dateien bis %1 MB</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114"/>
+        <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
+        <translation>ihre Messwerte belegen nach %2 MB Gelesenem %1 MB Speicher, mehr als die Wiedergabe erlaubt (das Doppelte der Dateigröße); eine von TipScope geschriebene Aufzeichnung braucht weit weniger</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151"/>
+        <source>reading was cancelled</source>
+        <translation>das Lesen wurde abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>die Datei ist %1 MB groß; die Wiedergabe liest Dateien bis %2 MB</translation>
     </message>
@@ -1315,7 +1336,7 @@
 <context>
     <name>ChartRecorder</name>
     <message>
-        <location filename="../app/gui/charts/chartrecorder.cpp" line="31"/>
+        <location filename="../lib/model/recording/chartrecorder.cpp" line="32"/>
         <source>nothing to record: no station or feeder is connected</source>
         <translation>nichts aufzuzeichnen: weder Station noch Lotdrahtvorschub verbunden</translation>
     </message>
@@ -1323,62 +1344,62 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="78"/>
         <source>Tip</source>
         <translation>Lötspitze</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="80"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="82"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="84"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="86"/>
         <source>Fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="88"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="90"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="90"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="92"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="92"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="94"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="94"/>
         <source>Transformer</source>
         <translation>Transformator</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="113"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="128"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="128"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="157"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="157"/>
         <source>P%1 </source>
         <translation>P%1 </translation>
     </message>
@@ -1493,6 +1514,14 @@
     </message>
 </context>
 <context>
+    <name>CliMeasure</name>
+    <message>
+        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
+        <translation>tipscope-cli: measure erwartet eine DATEI, eine Aufzeichnung (von record oder von „Aufzeichnen“ bzw. dem CSV-Export der Diagrammseite)</translation>
+    </message>
+</context>
+<context>
     <name>CliMonitor</name>
     <message>
         <location filename="../app/cli/climonitor.cpp" line="67"/>
@@ -1523,8 +1552,9 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="42"/>
-        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]
+        <location filename="../app/cli/clioptions.cpp" line="47"/>
+        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
+                    [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
 
@@ -1542,16 +1572,22 @@ Commands:
   profile apply FILE [--dry-run] [--force]
                             write what differs, each value read back; --dry-run lists
                             the frames; --force applies a profile of another family
+  record FILE [--duration S]
+                            every port&apos;s and the feeder&apos;s curves and events to a chart
+                            recording, as the Charts page records them
+  measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
-built-in simulated DME station (address 01) and SFR feeder (address 10).
+built-in simulated DME station (address 01) and SFR feeder (address 10);
+--demo-activity the same at work: joints on port 1 every 15 s, rests on port 2, feeds.
 --timeout is the device turnaround added to the wire time of each request.
 
 Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 3 the device answered NAK, or a read-back or profile check failed;
 4 no valid answer; 5 transport error.
 </source>
-        <translation>Aufruf: tipscope-cli [--port GERÄT | --tcp HOST:PORT | --demo] [--baud N]
+        <translation>Aufruf: tipscope-cli [--port GERÄT | --tcp HOST:PORT | --demo | --demo-activity]
+                     [--baud N]
                      [--parity none|even|odd] [--stop-bits 1|2] [--addr QUELLE:ZIEL | --no-addr]
                      [--timeout MS] [--retries N] [--verbose] BEFEHL ...
 
@@ -1570,9 +1606,14 @@ Befehle:
                             schreiben, was abweicht, jeden Wert zurücklesen; --dry-run
                             listet die Telegramme auf; --force wendet ein Profil einer
                             anderen Familie an
+  record DATEI [--duration S]
+                            die Kurven und Ereignisse aller Ports und des Vorschubs als
+                            Diagrammaufzeichnung, wie die Diagrammseite sie aufzeichnet
+  measure DATEI [--json]    Aufheiz- und Erholzeiten einer Aufzeichnung, eine pro Zeile
 
 Ohne --addr oder --no-addr wird das Gerät automatisch gesucht. --demo spricht mit der
-eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10).
+eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10);
+--demo-activity dasselbe bei der Arbeit: Lötstellen an Port 1 alle 15 s, Pausen an Port 2, Vorschübe.
 --timeout ist die Antwortzeit des Geräts, die zur Übertragungszeit jeder Anfrage addiert wird.
 
 Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschrieben);
@@ -1581,82 +1622,82 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="87"/>
+        <location filename="../app/cli/clioptions.cpp" line="98"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="120"/>
+        <location filename="../app/cli/clioptions.cpp" line="131"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="125"/>
+        <location filename="../app/cli/clioptions.cpp" line="137"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="132"/>
+        <location filename="../app/cli/clioptions.cpp" line="144"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="137"/>
+        <location filename="../app/cli/clioptions.cpp" line="149"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud erwartet eine Baudrate wie 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="144"/>
+        <location filename="../app/cli/clioptions.cpp" line="156"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity erwartet none, even oder odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="148"/>
+        <location filename="../app/cli/clioptions.cpp" line="160"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits erwartet 1 oder 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="156"/>
+        <location filename="../app/cli/clioptions.cpp" line="168"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="164"/>
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="167"/>
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="171"/>
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
         <source>--%1 needs a value</source>
         <translation>--%1 braucht einen Wert</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="175"/>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="180"/>
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="181"/>
+        <location filename="../app/cli/clioptions.cpp" line="193"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="187"/>
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="189"/>
+        <location filename="../app/cli/clioptions.cpp" line="201"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -1685,34 +1726,91 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
-    <name>CliSession</name>
+    <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="68"/>
+        <location filename="../app/cli/clirecord.cpp" line="77"/>
+        <source>tipscope-cli: interrupted before the recording started</source>
+        <translation>tipscope-cli: abgebrochen, bevor die Aufzeichnung begann</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="82"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="104"/>
+        <location filename="../app/cli/clirecord.cpp" line="117"/>
+        <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
+        <translation>tipscope-cli: record erwartet eine DATEI, z. B. record linie3.csv --duration 60</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="125"/>
+        <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
+        <translation>tipscope-cli: --duration erwartet Sekunden (0: bis zum Abbruch)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="132"/>
+        <location filename="../app/cli/clirecord.cpp" line="160"/>
+        <source>tipscope-cli: cannot record to %1: %2</source>
+        <translation>tipscope-cli: in %1 kann nicht aufgezeichnet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
+        <source>no such folder</source>
+        <translation>Ordner nicht vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
+        <source>not writable</source>
+        <translation>nicht beschreibbar</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="181"/>
+        <source># recording %1 of %2 to %3</source>
+        <translation># zeichne %1 von %2 in %3 auf</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="189"/>
+        <source>tipscope-cli: writing %1 failed: %2</source>
+        <translation>tipscope-cli: Schreiben von %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/cli/clirecord.cpp" line="193"/>
+        <source>recorded %n row(s) to %1</source>
+        <translation>
+            <numerusform>%n Zeile nach %1 aufgezeichnet</numerusform>
+            <numerusform>%n Zeilen nach %1 aufgezeichnet</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>CliSession</name>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="69"/>
+        <source>tipscope-cli: cannot open %1: %2</source>
+        <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="105"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="105"/>
+        <location filename="../app/cli/clisession.cpp" line="106"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="115"/>
+        <location filename="../app/cli/clisession.cpp" line="116"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="146"/>
+        <location filename="../app/cli/clisession.cpp" line="147"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="151"/>
+        <location filename="../app/cli/clisession.cpp" line="152"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -2268,32 +2366,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="34"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="32"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: Min. %2, Max. %3, Mittel %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>wake</source>
         <translation>Aufwachen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>heat-up</source>
         <translation>Aufheizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="45"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="43"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 um %2 auf %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 um %2 auf %3: in diesem Zeitfenster nicht erreicht</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="52"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n weiteres Aufheizen</numerusform>
@@ -2301,17 +2399,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="61"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="59"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>Erholung um %1: %2 (Einbruch auf %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="62"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>Einbruch um %1 auf %2: in diesem Zeitfenster nicht erholt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="68"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n weitere Erholung</numerusform>
@@ -2319,22 +2417,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="76"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="74"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="76"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="79"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="77"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="105"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="103"/>
         <source>%1: no samples in this window</source>
         <translation>%1: keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -3298,7 +3396,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="43"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="45"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Zeitdiagramm. Mausrad oder Plus- und Minustaste zoomen, Ziehen oder Pfeiltasten verschieben, Umschalt+Ziehen wählt einen Bereich, Doppelklick oder Pos1 setzt zurück.</translation>
     </message>
@@ -3306,7 +3404,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="411"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="413"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -3317,73 +3415,73 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
-        <location filename="../app/gui/charts/chartspage.h" line="54"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
+        <location filename="../app/gui/charts/chartspage.h" line="61"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="45"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="47"/>
         <source>Values under the cursor</source>
         <translation>Werte unter dem Mauszeiger</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="52"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>Toleranzband für A&amp;ufheizen und Erholung ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="53"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="55"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Toleranzband um den Sollwert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="64"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="66"/>
         <source>Measurements of the visible window</source>
         <translation>Messungen im sichtbaren Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="180"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="183"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="184"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
         <source>%1 — feeder</source>
         <translation>%1 — Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="187"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>%1 — all ports</source>
         <translation>%1 — alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="192"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="194"/>
         <source>Temperature (%1)</source>
         <translation>Temperatur (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
         <source>Power (%)</source>
         <translation>Leistung (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="312"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="314"/>
         <source>No samples in this window</source>
         <translation>Keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -3632,22 +3730,37 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="227"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
+        <source>Open recording</source>
+        <translation>Aufzeichnung öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
+        <source>Reading %1: %2 MB</source>
+        <translation>Lese %1: %2 MB</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
+        <source>Reading %1…</source>
+        <translation>Lese %1 …</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
         <source>Open a chart recording</source>
         <translation>Diagrammaufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="229"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>CSV-Datei (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Replay</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Cannot replay %1</source>
         <translation>%1 kann nicht wiedergegeben werden</translation>
     </message>
@@ -4018,194 +4131,194 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="72"/>
         <source>When the counters were read</source>
         <translation>Zeitpunkt der Zählerabfrage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="74"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="76"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
         <source>Refresh counters</source>
         <translation>Zähler aktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>&amp;Export CSV…</source>
         <translation>CSV e&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Export counters as CSV</source>
         <translation>Zähler als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="102"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="145"/>
         <source>Reading the counters…</source>
         <translation>Zähler werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
         <source>Last reading at %1</source>
         <translation>Letzte Abfrage um %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="150"/>
         <source>Waiting for the first reading…</source>
         <translation>Warte auf die erste Abfrage…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="219"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
         <source>Station %1</source>
         <translation>Station %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="221"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Counters of %1</source>
         <translation>Zähler von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="228"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="250"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="241"/>
         <source>Solder feeder %1</source>
         <translation>Lotdrahtvorschub %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Partial</source>
         <translation>Teilzähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="298"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="300"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="291"/>
         <source>Last read failed: %1</source>
         <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="303"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
         <source>Read at %1</source>
         <translation>Gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="306"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="297"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="335"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="326"/>
         <source>Reset partial counter</source>
         <translation>Teilzähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>Reset “%1” on %2?</source>
         <translation>„%1“ an %2 zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="338"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="329"/>
         <source>It now reads %1.</source>
         <translation>Er steht jetzt auf %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
         <source>The total counter is not affected.</source>
         <translation>Der Gesamtzähler bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>Reset counter</source>
         <translation>Zähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 Es wurde nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 Nicht zurückgesetzt: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 %2 wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="361"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="375"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="402"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="400"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="403"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="394"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>

@@ -1183,7 +1183,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../app/gui/charts/chartcsv.cpp" line="192"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="181"/>
         <source>the file could not be written</source>
         <translation>no se pudo escribir el archivo</translation>
     </message>
@@ -1191,123 +1191,144 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="62"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="91"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>la línea supera los %1 bytes (¿es un CSV de gráficos?)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="98"/>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="273"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>el archivo contiene datos binarios, no texto CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="102"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>el texto no está en UTF-8 (guarde el archivo como &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="123"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155"/>
+        <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
+        <translation>más de %1 líneas de comentario («#»); una grabación tiene unas pocas, y una por canal</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>la fila de cabecera debe empezar por &quot;time&quot; (¿es un CSV de gráficos escrito por TipScope?)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="126"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 columnas; la reproducción lee como máximo %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="137"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>la columna %1 &quot;%2&quot; no es &quot;port&lt;n&gt; &lt;serie&gt; [unidad]&quot; ni &quot;feeder &lt;serie&gt; [unidad]&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="148"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>columna %1 &quot;%2&quot;: la unidad debería ser &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="150"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="159"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="174"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>la columna %1 &quot;%2&quot; aparece dos veces</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="179"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234"/>
         <source>the header names no series columns</source>
         <translation>la cabecera no nombra ninguna columna de serie</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="200"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>columna %1: &quot;%2&quot; no es un número</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="205"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 tiene valores en algunas de sus columnas, pero no en todas</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="212"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 celdas, pero la cabecera tiene %2 columnas</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="217"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; no es una hora ISO 8601</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="220"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>la hora %1 es anterior a la de la fila precedente (las filas deben estar en orden cronológico)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="231"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 tiene más de %2 muestras, más de las que admite la reproducción; divida el archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="244"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="330"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>el evento &quot;%1&quot; no tiene la forma &quot;&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="290"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164"/>
         <source>a quoted cell is not closed</source>
         <translation>una celda entre comillas no está cerrada</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="300"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="347"/>
         <source>the file has a header but no rows</source>
         <translation>el archivo tiene cabecera pero ninguna fila</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="301"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="345"/>
         <source>the file is empty or holds only comments</source>
         <translation>el archivo está vacío o solo contiene comentarios</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartcsvreader.cpp" line="319"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27"/>
+        <source>the file is larger than %1 MB; replay reads files up to %1 MB</source>
+        <translation>el archivo ocupa más de %1 MB; la reproducción lee archivos de hasta %1 MB</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114"/>
+        <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
+        <translation>sus muestras ocupan %1 MB de memoria tras leer %2 MB, más de lo que permite la reproducción (el doble del tamaño del archivo); una grabación escrita por TipScope ocupa mucho menos</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151"/>
+        <source>reading was cancelled</source>
+        <translation>se canceló la lectura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>el archivo ocupa %1 MB; la reproducción lee archivos de hasta %2 MB</translation>
     </message>
@@ -1315,7 +1336,7 @@
 <context>
     <name>ChartRecorder</name>
     <message>
-        <location filename="../app/gui/charts/chartrecorder.cpp" line="31"/>
+        <location filename="../lib/model/recording/chartrecorder.cpp" line="32"/>
         <source>nothing to record: no station or feeder is connected</source>
         <translation>nada que grabar: no hay ninguna estación ni alimentador conectados</translation>
     </message>
@@ -1323,62 +1344,62 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="78"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="78"/>
         <source>Tip</source>
         <translation>Punta</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="80"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="80"/>
         <source>Setpoint</source>
         <translation>Consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="82"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="82"/>
         <source>Power</source>
         <translation>Potencia</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="84"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="84"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="86"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="86"/>
         <source>Fed length</source>
         <translation>Longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="88"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="88"/>
         <source>Speed</source>
         <translation>Velocidad</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="90"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="90"/>
         <source>Feeding</source>
         <translation>Alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="92"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="92"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="94"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="94"/>
         <source>Transformer</source>
         <translation>Transformador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="113"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="128"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="128"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartseries.cpp" line="157"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="157"/>
         <source>P%1 </source>
         <translation>P%1 </translation>
     </message>
@@ -1493,6 +1514,14 @@
     </message>
 </context>
 <context>
+    <name>CliMeasure</name>
+    <message>
+        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
+        <translation>tipscope-cli: measure espera un ARCHIVO, una grabación (de record, o de «Grabar» o la exportación CSV de la página de gráficos)</translation>
+    </message>
+</context>
+<context>
     <name>CliMonitor</name>
     <message>
         <location filename="../app/cli/climonitor.cpp" line="67"/>
@@ -1523,8 +1552,9 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="42"/>
-        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]
+        <location filename="../app/cli/clioptions.cpp" line="47"/>
+        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
+                    [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
 
@@ -1542,16 +1572,22 @@ Commands:
   profile apply FILE [--dry-run] [--force]
                             write what differs, each value read back; --dry-run lists
                             the frames; --force applies a profile of another family
+  record FILE [--duration S]
+                            every port&apos;s and the feeder&apos;s curves and events to a chart
+                            recording, as the Charts page records them
+  measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
-built-in simulated DME station (address 01) and SFR feeder (address 10).
+built-in simulated DME station (address 01) and SFR feeder (address 10);
+--demo-activity the same at work: joints on port 1 every 15 s, rests on port 2, feeds.
 --timeout is the device turnaround added to the wire time of each request.
 
 Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 3 the device answered NAK, or a read-back or profile check failed;
 4 no valid answer; 5 transport error.
 </source>
-        <translation>Uso: tipscope-cli [--port DISPOSITIVO | --tcp HOST:PUERTO | --demo] [--baud N]
+        <translation>Uso: tipscope-cli [--port DISPOSITIVO | --tcp HOST:PUERTO | --demo | --demo-activity]
+                  [--baud N]
                   [--parity none|even|odd] [--stop-bits 1|2] [--addr ORIG:DEST | --no-addr]
                   [--timeout MS] [--retries N] [--verbose] COMANDO ...
 
@@ -1570,9 +1606,15 @@ Comandos:
   profile apply ARCHIVO [--dry-run] [--force]
                             escribe lo que difiere y vuelve a leer cada valor; --dry-run
                             lista las tramas; --force aplica un perfil de otra familia
+  record ARCHIVO [--duration S]
+                            las curvas y eventos de todos los puertos y del alimentador en una
+                            grabación de gráficos, como la graba la página de gráficos
+  measure ARCHIVO [--json]  los calentamientos y recuperaciones de una grabación, uno por línea
 
 Sin --addr ni --no-addr, el equipo se busca automáticamente. --demo habla con la
-estación DME simulada integrada (dirección 01) y el alimentador SFR (dirección 10).
+estación DME simulada integrada (dirección 01) y el alimentador SFR (dirección 10);
+--demo-activity lo mismo en funcionamiento: soldaduras en el puerto 1 cada 15 s, pausas en el
+puerto 2, alimentaciones.
 --timeout es el tiempo de respuesta del equipo, que se suma al tiempo de transmisión
 de cada petición.
 
@@ -1582,82 +1624,82 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="87"/>
+        <location filename="../app/cli/clioptions.cpp" line="98"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>comando desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="120"/>
+        <location filename="../app/cli/clioptions.cpp" line="131"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>indique solo una de --port, --tcp y --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="125"/>
+        <location filename="../app/cli/clioptions.cpp" line="137"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="132"/>
+        <location filename="../app/cli/clioptions.cpp" line="144"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="137"/>
+        <location filename="../app/cli/clioptions.cpp" line="149"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud requiere una velocidad como 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="144"/>
+        <location filename="../app/cli/clioptions.cpp" line="156"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity admite none, even u odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="148"/>
+        <location filename="../app/cli/clioptions.cpp" line="160"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits admite 1 o 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="156"/>
+        <location filename="../app/cli/clioptions.cpp" line="168"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="164"/>
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout requiere milisegundos de 1 a 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="167"/>
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries requiere un número de 0 a 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="171"/>
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
         <source>--%1 needs a value</source>
         <translation>--%1 necesita un valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="175"/>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="180"/>
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="181"/>
+        <location filename="../app/cli/clioptions.cpp" line="193"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="187"/>
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="189"/>
+        <location filename="../app/cli/clioptions.cpp" line="201"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -1686,34 +1728,91 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
-    <name>CliSession</name>
+    <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="68"/>
+        <location filename="../app/cli/clirecord.cpp" line="77"/>
+        <source>tipscope-cli: interrupted before the recording started</source>
+        <translation>tipscope-cli: interrumpido antes de que empezara la grabación</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="82"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="104"/>
+        <location filename="../app/cli/clirecord.cpp" line="117"/>
+        <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
+        <translation>tipscope-cli: record espera un ARCHIVO, p. ej. record linea3.csv --duration 60</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="125"/>
+        <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
+        <translation>tipscope-cli: --duration espera segundos (0: hasta que se interrumpa)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="132"/>
+        <location filename="../app/cli/clirecord.cpp" line="160"/>
+        <source>tipscope-cli: cannot record to %1: %2</source>
+        <translation>tipscope-cli: no se puede grabar en %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
+        <source>no such folder</source>
+        <translation>la carpeta no existe</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
+        <source>not writable</source>
+        <translation>sin permiso de escritura</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="181"/>
+        <source># recording %1 of %2 to %3</source>
+        <translation># grabando %1 de %2 en %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clirecord.cpp" line="189"/>
+        <source>tipscope-cli: writing %1 failed: %2</source>
+        <translation>tipscope-cli: falló la escritura de %1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/cli/clirecord.cpp" line="193"/>
+        <source>recorded %n row(s) to %1</source>
+        <translation>
+            <numerusform>%n fila grabada en %1</numerusform>
+            <numerusform>%n filas grabadas en %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>CliSession</name>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="69"/>
+        <source>tipscope-cli: cannot open %1: %2</source>
+        <translation>tipscope-cli: no se puede abrir %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="105"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="105"/>
+        <location filename="../app/cli/clisession.cpp" line="106"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="115"/>
+        <location filename="../app/cli/clisession.cpp" line="116"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="146"/>
+        <location filename="../app/cli/clisession.cpp" line="147"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="151"/>
+        <location filename="../app/cli/clisession.cpp" line="152"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -2269,32 +2368,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="34"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="32"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: mín. %2, máx. %3, media %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>wake</source>
         <translation>salida del reposo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>heat-up</source>
         <translation>calentamiento</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="45"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="43"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 a las %2 hasta %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="48"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 a las %2 hasta %3: no alcanzado en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="52"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n calentamiento más</numerusform>
@@ -2302,17 +2401,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="61"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="59"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>recuperación a las %1: %2 (caída hasta %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="64"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="62"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>caída a las %1 hasta %2: sin recuperar en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/measurementreport.cpp" line="68"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n recuperación más</numerusform>
@@ -2320,22 +2419,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="76"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="74"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="78"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="76"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="79"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="77"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/measurementreport.cpp" line="105"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="103"/>
         <source>%1: no samples in this window</source>
         <translation>%1: sin muestras en esta ventana</translation>
     </message>
@@ -3299,7 +3398,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="43"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="45"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Gráfico temporal. La rueda o las teclas más y menos hacen zoom, arrastrar o las flechas desplazan, Mayús+arrastrar selecciona un intervalo, doble clic o Inicio restablece.</translation>
     </message>
@@ -3307,7 +3406,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="411"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="413"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -3318,73 +3417,73 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="29"/>
-        <location filename="../app/gui/charts/chartspage.h" line="54"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
+        <location filename="../app/gui/charts/chartspage.h" line="61"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="45"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="47"/>
         <source>Values under the cursor</source>
         <translation>Valores bajo el cursor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="52"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>&amp;Banda de calentamiento y recuperación ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="53"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="55"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Banda de tolerancia alrededor de la consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="64"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="66"/>
         <source>Measurements of the visible window</source>
         <translation>Mediciones de la ventana visible</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="180"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="183"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="184"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
         <source>%1 — feeder</source>
         <translation>%1 — alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="187"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>%1 — all ports</source>
         <translation>%1 — todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="192"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="194"/>
         <source>Temperature (%1)</source>
         <translation>Temperatura (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
         <source>Power (%)</source>
         <translation>Potencia (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="312"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="314"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>
@@ -3633,22 +3732,37 @@ Hágalo permanente con esta regla de udev:
         <translation>No se puede grabar: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="227"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
+        <source>Open recording</source>
+        <translation>Abrir grabación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
+        <source>Reading %1: %2 MB</source>
+        <translation>Leyendo %1: %2 MB</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
+        <source>Reading %1…</source>
+        <translation>Leyendo %1…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
         <source>Open a chart recording</source>
         <translation>Abrir una grabación de gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="229"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>Archivo CSV (*.csv);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Replay</source>
         <translation>Reproducción</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="234"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Cannot replay %1</source>
         <translation>No se puede reproducir %1</translation>
     </message>
@@ -4019,194 +4133,194 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="72"/>
         <source>When the counters were read</source>
         <translation>Cuándo se leyeron los contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="74"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="85"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="76"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="86"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
         <source>Refresh counters</source>
         <translation>Actualizar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="90"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>&amp;Export CSV…</source>
         <translation>E&amp;xportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="92"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Export counters as CSV</source>
         <translation>Exportar contadores como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="102"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="145"/>
         <source>Reading the counters…</source>
         <translation>Leyendo los contadores…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
         <source>Last reading at %1</source>
         <translation>Última lectura a las %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="159"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="150"/>
         <source>Waiting for the first reading…</source>
         <translation>Esperando la primera lectura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="219"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
         <source>Station %1</source>
         <translation>Estación %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="221"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="252"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Counters of %1</source>
         <translation>Contadores de %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="237"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="228"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="250"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="241"/>
         <source>Solder feeder %1</source>
         <translation>Alimentador de estaño %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Partial</source>
         <translation>Parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="298"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="300"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="291"/>
         <source>Last read failed: %1</source>
         <translation>Falló la última lectura: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="303"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
         <source>Read at %1</source>
         <translation>Leído: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="306"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="297"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="335"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="326"/>
         <source>Reset partial counter</source>
         <translation>Poner a cero el contador parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>Reset “%1” on %2?</source>
         <translation>¿Poner a cero «%1» en %2?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="338"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="329"/>
         <source>It now reads %1.</source>
         <translation>Ahora marca %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
         <source>The total counter is not affected.</source>
         <translation>El contador total no se ve afectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>Reset counter</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 No se puso nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 No se puso a cero: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 Poniendo a cero %2…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="361"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 puesto a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="362"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 no se puso a cero: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="375"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="402"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="395"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="400"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="403"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="394"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>

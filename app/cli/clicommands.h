@@ -14,6 +14,9 @@ int runMonitor(CliSession &s);
 int runDump(CliSession &s);
 int runProfile(CliSession &s);
 int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err);
+// Their own session (record) or none (measure): recordings, as the Charts page writes them.
+int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err);
+int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err);
 
 // "ST1 350 °C", "HD1 1.60 s", "D12 disabled", "CT1 2 T245", "SMN DME-2C".
 [[nodiscard]] QString formatReading(const protocol::ResolvedCommand &cmd, const QByteArray &data,

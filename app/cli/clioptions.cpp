@@ -11,7 +11,10 @@ namespace {
 const QStringList kCommands = {QStringLiteral("detect"),   QStringLiteral("read"),
                                QStringLiteral("write"),    QStringLiteral("send"),
                                QStringLiteral("monitor"),  QStringLiteral("dump"),
-                               QStringLiteral("commands"), QStringLiteral("profile")};
+                               QStringLiteral("commands"), QStringLiteral("profile"),
+                               QStringLiteral("record"),   QStringLiteral("measure")};
+// Commands that read or write files only, and need no device.
+const QStringList kOffline = {QStringLiteral("commands"), QStringLiteral("measure")};
 // Command options that take a value; all others are flags.
 const QStringList kValueOptions = {QStringLiteral("interval"), QStringLiteral("duration"),
                                    QStringLiteral("csv"), QStringLiteral("family")};
@@ -25,6 +28,8 @@ const QMap<QString, QStringList> kCommandOptions = {
     {QStringLiteral("dump"), {QStringLiteral("json")}},
     {QStringLiteral("commands"), {QStringLiteral("family")}},
     {QStringLiteral("profile"), {QStringLiteral("force"), QStringLiteral("dry-run")}},
+    {QStringLiteral("record"), {QStringLiteral("duration")}},
+    {QStringLiteral("measure"), {QStringLiteral("json")}},
 };
 
 bool parseInt(const QString &text, int lo, int hi, int *out) {
@@ -40,7 +45,8 @@ bool parseInt(const QString &text, int lo, int hi, int *out) {
 
 QString CliParser::usage() {
     return tr(
-        "Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo] [--baud N]\n"
+        "Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]\n"
+        "                    [--baud N]\n"
         "                    [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | "
         "--no-addr]\n"
         "                    [--timeout MS] [--retries N] [--verbose] COMMAND ...\n"
@@ -60,9 +66,14 @@ QString CliParser::usage() {
         "  profile apply FILE [--dry-run] [--force]\n"
         "                            write what differs, each value read back; --dry-run lists\n"
         "                            the frames; --force applies a profile of another family\n"
+        "  record FILE [--duration S]\n"
+        "                            every port's and the feeder's curves and events to a chart\n"
+        "                            recording, as the Charts page records them\n"
+        "  measure FILE [--json]     the heat-ups and recoveries of a recording, one line each\n"
         "\n"
         "Without --addr or --no-addr the device is found automatically. --demo talks to the\n"
-        "built-in simulated DME station (address 01) and SFR feeder (address 10).\n"
+        "built-in simulated DME station (address 01) and SFR feeder (address 10);\n"
+        "--demo-activity the same at work: joints on port 1 every 15 s, rests on port 2, feeds.\n"
         "--timeout is the device turnaround added to the wire time of each request.\n"
         "\n"
         "Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);\n"
@@ -115,10 +126,11 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
             o.showVersion = true;
         } else if (name == QLatin1String("verbose")) {
             o.verbose = true;
-        } else if (name == QLatin1String("demo")) {
+        } else if (name == QLatin1String("demo") || name == QLatin1String("demo-activity")) {
             if (haveTransport)
                 return fail(tr("give only one of --port, --tcp and --demo"));
             haveTransport = o.demo = true;
+            o.demoActivity = name == QLatin1String("demo-activity");
             o.line.kind = link::LineSettings::Kind::Demo;
         } else if (name == QLatin1String("port")) {
             if (haveTransport || !takeValue(&v) || v.isEmpty())
@@ -185,7 +197,7 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
         return o;
     if (o.command.isEmpty())
         return fail(tr("no command given"));
-    if (!haveTransport && o.command != QLatin1String("commands"))
+    if (!haveTransport && !kOffline.contains(o.command))
         return fail(tr("say where the device is: --port DEVICE, --tcp HOST:PORT or --demo"));
     return o;
 }

@@ -25,6 +25,7 @@ struct CliOptions {
 
     link::LineSettings line;
     bool demo = false;
+    bool demoActivity = false; // the demo's station solders and rests, its feeder feeds
     Addressing addressing = Addressing::Auto;
     int targetAddress = 1;
     bool verbose = false;

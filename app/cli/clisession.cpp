@@ -20,6 +20,7 @@ CliSession::CliSession(const CliOptions &options)
     LineSettings settings = options.line;
     if (options.demo) {
         m_demo = sim::SimLine::demo();
+        m_demo->setDemoActivity(options.demoActivity);
         m_demo->setClockRunning(true);
     }
     auto transport = Line::makeTransport(settings, m_demo.get());

@@ -32,6 +32,10 @@ int main(int argc, char *argv[]) {
     }
     if (options->command == QLatin1String("commands"))
         return runCommands(*options, out, err);
+    if (options->command == QLatin1String("measure"))
+        return runMeasure(*options, out, err);
+    if (options->command == QLatin1String("record"))
+        return runRecord(*options, out, err);
 
     CliSession session(*options);
     if (const int rc = session.open(); rc != kOk)

@@ -61,7 +61,7 @@ FeederModel *Session::feeder() const {
     return nullptr;
 }
 
-QString Session::telemetryKey(const DeviceModel &device, int port) {
+TelemetryKey Session::telemetryKey(const DeviceModel &device, int port) {
     const QString who = device.info().addressText();
     return port > 0 ? QStringLiteral("%1/port%2").arg(who).arg(port)
                     : who + QStringLiteral("/feeder");
@@ -242,7 +242,7 @@ qint64 Session::sampleTimeMs() const {
 void Session::recordTelemetry(StationModel *station) {
     using protocol::Role;
     for (PortModel *port : station->ports()) {
-        const QString key = telemetryKey(*station, port->number());
+        const TelemetryKey key = telemetryKey(*station, port->number());
         m_telemetry.ensureBuffer(key, kPortSeries);
         Parameter *tip = port->parameter(Role::TipTemperature);
         if (!tip)
@@ -266,7 +266,7 @@ void Session::recordTelemetry(StationModel *station) {
 }
 
 void Session::recordTelemetry(FeederModel *feeder) {
-    const QString key = telemetryKey(*feeder, 0);
+    const TelemetryKey key = telemetryKey(*feeder, 0);
     m_telemetry.ensureBuffer(key, kFeederSeries);
     using protocol::Role;
     Parameter *fedLength = feeder->parameter(Role::FedLength);

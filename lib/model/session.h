@@ -69,7 +69,7 @@ public:
     void setMonitorOnly(bool on);
 
     // The telemetry key of a port or feeder ("01/port2", "10/feeder", "--/port1").
-    [[nodiscard]] static QString telemetryKey(const DeviceModel &device, int port);
+    [[nodiscard]] static TelemetryKey telemetryKey(const DeviceModel &device, int port);
 
 Q_SIGNALS:
     void stateChanged(tipscope::model::Session::State state, const QString &text);

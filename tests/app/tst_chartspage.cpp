@@ -1,11 +1,13 @@
 // The Charts page through its real widgets against the demo line (a simulated DME-4C at 01 and
 // an SFR at 10 on a 19200 Bd wire, so the tests wait for real polls): panes and curves, event
 // markers for status changes injected in the simulator, the crosshair readout after zoom and pan,
-// export, recording and replay.
-#include "charts/chartframe.h"
+// export, recording and replay (read off the GUI thread, with progress and cancel).
 #include "charts/chartspage.h"
 #include "charts/chartwidget.h"
+#include "model/chart/chartframe.h"
 #include "model/feedermodel.h"
+#include "model/recording/chartcsvreader.h"
+#include "support/fifowriter.h"
 
 #include "sim/simline.h"
 #include "sim/simstation.h"
@@ -13,6 +15,9 @@
 #include <QApplication>
 #include <QImage>
 #include <QMouseEvent>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
@@ -21,7 +26,7 @@
 
 using namespace tipscope;
 using namespace tipscope::gui;
-using model::Session;
+using namespace tipscope::model;
 
 namespace {
 constexpr int kConnectMs = 30000;
@@ -45,6 +50,7 @@ private Q_SLOTS:
     void zoomAndPanKeepTheCrosshairReadoutConsistentWithTheBuffer();
     void exportedCsvReplaysTheSameSamples();
     void aMalformedRecordingIsRefusedAndTheLiveViewStays();
+    void aReplayIsReadWithProgressAndCancelWhileTheLiveChartsGoOn();
     void recordingWritesTheNewSamplesToTheFile();
     void pngExportWritesAnImageOfThePanes();
     void onePanePerPortOnRequest();
@@ -55,6 +61,8 @@ private Q_SLOTS:
 private:
     void connectDemo();
     void waitForSamples(int count);
+    // openReplay() and its outcome: empty when the recording is shown.
+    QString replay(const QString &path);
     [[nodiscard]] ChartWidget *stationPane() const { return m_page->panes().value(0); }
     [[nodiscard]] QString logText() const {
         QStringList lines;
@@ -93,6 +101,16 @@ void TestChartsPage::connectDemo() {
 void TestChartsPage::waitForSamples(int count) {
     const QString key = Session::telemetryKey(*m_session->station(), 1);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->telemetry().buffer(key)->size() >= count, kDataMs);
+}
+
+QString TestChartsPage::replay(const QString &path) {
+    QSignalSpy opened(m_page.get(), &ChartsPage::replayOpened);
+    if (!opened.isValid())
+        return QStringLiteral("no replayOpened signal");
+    m_page->openReplay(path);
+    if (!opened.wait(kDataMs))
+        return QStringLiteral("the replay did not finish");
+    return opened.first().first().toString();
 }
 
 void TestChartsPage::everyPortOfTheDemoStationIsDrawnLive() {
@@ -188,21 +206,29 @@ void TestChartsPage::exportedCsvReplaysTheSameSamples() {
     const qint64 t0 = m_page->viewport().start(), t1 = m_page->viewport().end();
     const QString path = m_dir.filePath(QStringLiteral("window.csv"));
     QCOMPARE(m_page->exportCsv(path), QString());
-    QCOMPARE(m_page->openReplay(path), QString());
+    // What was exported: the live session goes on while the replay is read.
+    const QList<ChartChannel> live = sessionChannels(*m_session);
+    QList<QList<QList<model::TelemetryBuffer::Sample>>> exported;
+    for (const ChartChannel &c : live) {
+        const auto *from = m_session->telemetry().buffer(c.key);
+        exported.append(QList<QList<model::TelemetryBuffer::Sample>>());
+        for (int s = 0; s < from->seriesCount(); ++s)
+            exported.last().append(from->samples(s, t0, t1));
+    }
+    QCOMPARE(replay(path), QString());
     QVERIFY(m_page->isReplay());
     QCOMPARE(m_page->panes().size(), 2);
     m_page->redrawNow();
     QVERIFY(stationPane()->pointCount(0) > 0);
     // Every live sample of the window is in the replay (keyed by channel id), unchanged.
-    const QList<ChartChannel> live = sessionChannels(*m_session);
     QCOMPARE(m_page->shownChannels().size(), live.size());
-    for (const ChartChannel &c : live) {
-        const auto *from = m_session->telemetry().buffer(c.key);
-        const auto *back = m_page->shownTelemetry().buffer(c.id);
-        QVERIFY2(back, qPrintable(c.id));
+    for (qsizetype c = 0; c < live.size(); ++c) {
+        const auto *from = m_session->telemetry().buffer(live.at(c).key);
+        const auto *back = m_page->shownTelemetry().buffer(live.at(c).id);
+        QVERIFY2(back, qPrintable(live.at(c).id));
         QCOMPARE(back->seriesNames(), from->seriesNames());
         for (int s = 0; s < from->seriesCount(); ++s) {
-            const auto expected = from->samples(s, t0, t1);
+            const auto &expected = exported.at(c).at(s);
             const auto replayed = back->samples(s, t0, t1);
             QCOMPARE(replayed.size(), expected.size());
             for (qsizetype i = 0; i < expected.size(); ++i) {
@@ -222,11 +248,50 @@ void TestChartsPage::aMalformedRecordingIsRefusedAndTheLiveViewStays() {
     QVERIFY(file.open(QIODevice::WriteOnly));
     file.write("time,port1 tip [°C],events\n2024-01-01T00:00:00.000Z,hot,\n");
     file.close();
-    const QString error = m_page->openReplay(path);
+    const QString error = replay(path);
     QVERIFY2(error.contains(QStringLiteral("bad.csv, line 2")), qPrintable(error));
     QVERIFY2(error.contains(QStringLiteral("\"hot\" is not a number")), qPrintable(error));
     QVERIFY(!m_page->isReplay());
     QCOMPARE(m_page->panes().size(), 2);
+}
+
+void TestChartsPage::aReplayIsReadWithProgressAndCancelWhileTheLiveChartsGoOn() {
+#ifdef Q_OS_UNIX
+    waitForSamples(3);
+    // A FIFO that sends a little and then nothing: read in the GUI thread, it would freeze it.
+    FifoWriter writer(m_dir, "# TipScope chart data, format 1\n", false);
+    QVERIFY(writer.ok());
+    QSignalSpy opened(m_page.get(), &ChartsPage::replayOpened);
+    QVERIFY(opened.isValid());
+    m_page->openReplay(writer.path());
+    QVERIFY(m_page->isLoadingReplay());
+    QProgressDialog *progress = nullptr;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (progress = m_page->findChild<QProgressDialog *>(QStringLiteral("replayProgress"))) &&
+            progress->isVisible(),
+        kDataMs);
+    QVERIFY2(progress->labelText().contains(QStringLiteral("fifo.csv")),
+             qPrintable(progress->labelText()));
+    // Meanwhile the live charts go on: new samples are drawn.
+    const qint64 redraws = m_page->redrawCount();
+    const QString key = Session::telemetryKey(*m_session->station(), 1);
+    const qint64 samples = m_session->telemetry().buffer(key)->totalAppended();
+    QTRY_VERIFY_WITH_TIMEOUT(m_page->redrawCount() > redraws + 2 &&
+                                 m_session->telemetry().buffer(key)->totalAppended() > samples,
+                             kDataMs);
+    QVERIFY(opened.isEmpty());
+    auto *cancel = progress->findChild<QPushButton *>();
+    QVERIFY(cancel);
+    cancel->click();
+    QVERIFY(opened.wait(kDataMs));
+    QVERIFY2(opened.first().first().toString().endsWith(ChartCsvReader::cancelledText()),
+             qPrintable(opened.first().first().toString()));
+    QVERIFY(!m_page->isLoadingReplay());
+    QVERIFY(!m_page->isReplay());
+    QCOMPARE(m_page->panes().size(), 2);
+#else
+    QSKIP("FIFOs are a Unix thing");
+#endif
 }
 
 void TestChartsPage::recordingWritesTheNewSamplesToTheFile() {
@@ -240,7 +305,7 @@ void TestChartsPage::recordingWritesTheNewSamplesToTheFile() {
                              kDataMs);
     m_page->stopRecording();
     QVERIFY(!m_page->isRecording());
-    QCOMPARE(m_page->openReplay(path), QString());
+    QCOMPARE(replay(path), QString());
     QVERIFY(m_page->isReplay());
     const auto *recorded = m_page->shownTelemetry().buffer(QStringLiteral("port1"));
     QVERIFY(recorded);

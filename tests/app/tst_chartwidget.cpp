@@ -1,8 +1,8 @@
 // The chart's own drawing of curves, read back from the pixels of the real widget: a one-sample
 // spike in a day of data reaches the screen, temperatures stay on top of a dense power curve, a
 // gap in the data stays a gap, and a sparse curve is drawn as a line between its points.
-#include "charts/chartframe.h"
 #include "charts/chartwidget.h"
+#include "model/chart/chartframe.h"
 
 #include <QScreen>
 #include <QTest>
@@ -10,7 +10,7 @@
 
 using namespace tipscope;
 using namespace tipscope::gui;
-using model::TelemetryBuffer;
+using namespace tipscope::model;
 
 namespace {
 constexpr qint64 kT0 = 1'700'000'000'000;

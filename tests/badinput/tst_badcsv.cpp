@@ -1,14 +1,15 @@
 // Bad input in recorded chart CSV files for replay: ChartCsvReader with malformed, out-of-range,
-// empty, huge and non-UTF-8 files. A file either replays whole or is refused with a message that
-// names the line; nothing partial comes back. The reader is young and its format may still move:
-// if the minimal valid file below stops replaying, the cases are skipped with the reader's own
-// message, so this file is updated with the format instead of failing someone else's build.
-#include "charts/chartcsvreader.h"
+// empty, huge and non-UTF-8 files, and files of comments. (FIFOs, memory and cancel: see
+// tests/model/recording/tst_replay.cpp.) A file either replays whole or is refused with a message
+// that names the line; nothing partial comes back. The reader is young and its format may still
+// move: if the minimal valid file below stops replaying, the cases are skipped with the reader's
+// own message, so this file is updated with the format instead of failing someone else's build.
+#include "model/recording/chartcsvreader.h"
 
 #include <QBuffer>
 #include <QtTest>
 
-using namespace tipscope::gui;
+using namespace tipscope::model;
 
 namespace {
 
@@ -101,6 +102,18 @@ void TestBadCsv::refusedWholeWithTheLine_data() {
                                << "event";
     QTest::newRow("line over 64 kB") << kHead + kRows + t + "," + QByteArray(70000, '3') + ",350,\n"
                                      << "longer than";
+    QByteArray comments;
+    for (int i = 0; i < 1100; ++i)
+        comments += "# note " + QByteArray::number(i) + '\n';
+    QTest::newRow("1,100 comment lines") << comments + kHead + kRows << "comment lines";
+    QByteArray many = kHead; // 200 rows, about 7 kB
+    for (int i = 0; i < 200; ++i)
+        many += "2026-01-01T00:00:" + QByteArray::number(10 + i / 10) + '.' +
+                QByteArray::number(i % 10) + "00Z,350,350,\n";
+    QTest::newRow("NUL after the first 4 kB")
+        << many + "2026-01-01T00:01:00.000Z" + QByteArray(",350\0,350,\n", 11) << "binary";
+    QTest::newRow("February 30th") << kHead + kRows + "2026-02-30T00:00:00.000Z,350,350,\n"
+                                   << "ISO 8601";
 }
 
 void TestBadCsv::refusedWholeWithTheLine() {

@@ -4,10 +4,10 @@
 #include "naivechart.h"
 
 #include "appsettings.h"
-#include "charts/chartframe.h"
 #include "charts/chartspage.h"
 #include "charts/chartwidget.h"
 #include "mainwindow.h"
+#include "model/chart/chartframe.h"
 #include "model/session.h"
 #include "model/stationmodel.h"
 
@@ -26,10 +26,10 @@ namespace tipscope::bench {
 
 namespace {
 
-using gui::ChartAxis;
-using gui::ChartChannel;
-using gui::ChartTrace;
 using gui::ChartWidget;
+using model::ChartAxis;
+using model::ChartChannel;
+using model::ChartTrace;
 using model::Telemetry;
 
 constexpr int kPorts = 4;
@@ -162,8 +162,8 @@ UpdateTimes medianUpdate(ChartRig &rig, const Telemetry &telemetry, const QList<
     for (int run = 0; run <= kRuns; ++run) {
         QElapsedTimer timer;
         timer.start();
-        const gui::ChartFrame frame =
-            gui::buildFrame(telemetry, cs, traces, t0 - run, t1 - run, rig.widget.plotWidth());
+        const model::ChartFrame frame =
+            model::buildFrame(telemetry, cs, traces, t0 - run, t1 - run, rig.widget.plotWidth());
         const double decimated = double(timer.nsecsElapsed()) / 1e6;
         double shown = 0;
         const double ms = rig.show(frame.points, t0 - run, t1 - run, timer, &shown);
@@ -337,7 +337,7 @@ int runChartBench(const QStringList &args) {
                     QStringLiteral("MB"));
 
         const QList<ChartTrace> traces =
-            gui::tracesFor(channels, {0, 1, 2, 3}, model::TemperatureUnit::Celsius);
+            model::tracesFor(channels, {0, 1, 2, 3}, model::TemperatureUnit::Celsius);
         double full = 0;
         int width = 0;
         int height = 0;

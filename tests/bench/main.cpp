@@ -9,6 +9,7 @@
 #include "journalbench.h"
 #include "linkbench.h"
 #include "mqttbench.h"
+#include "replaybench.h"
 #include "soakbench.h"
 
 #include <QApplication>
@@ -37,6 +38,8 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runJournalBench},
     {"mqtt", "MQTT client: idle CPU and wake-ups, QoS 1 messages a second (--seconds N)",
      tipscope::bench::runMqttBench},
+    {"replay", "reading recordings: speed and memory over file size (--mb N, --no-fifo)",
+     tipscope::bench::runReplayBench},
 };
 
 void printUsage(QTextStream &s) {

@@ -5,6 +5,10 @@ namespace tipscope::testing {
 ProgramRun runProgram(const QString &name, const QStringList &args, int timeoutMs) {
     QProcess p;
     p.start(binaryPath(name), args);
+    return finishProcess(p, timeoutMs);
+}
+
+ProgramRun finishProcess(QProcess &p, int timeoutMs) {
     ProgramRun r;
     if (!p.waitForFinished(timeoutMs)) {
         p.kill();

@@ -1,8 +1,9 @@
 // Helpers for end-to-end tests of the command-line programs.
 //
 // runProgram() runs a built program (tipscope-cli, tipscope-sim) to its end and keeps what it
-// printed. SimOnSocat serves tipscope-sim on one end of a fresh socat PTY pair and hands out the
-// other end, where a client connects as to a serial port; starting it again replaces both.
+// printed; finishProcess() does the same for a QProcess the test started itself. SimOnSocat serves
+// tipscope-sim on one end of a fresh socat PTY pair and hands out the other end, where a client
+// connects as to a serial port; starting it again replaces both.
 #pragma once
 
 #include "ptyfixtures.h"
@@ -17,6 +18,7 @@ struct ProgramRun {
     QString err;
 };
 
+[[nodiscard]] ProgramRun finishProcess(QProcess &process, int timeoutMs = 60000);
 [[nodiscard]] ProgramRun runProgram(const QString &name, const QStringList &args,
                                     int timeoutMs = 60000);
 

@@ -14,6 +14,8 @@
 
 namespace tipscope::gui {
 
+using model::ChartAxis;
+
 namespace {
 constexpr double kWheelZoomPerNotch = 0.8; // one wheel notch shows 80 % of the window
 constexpr double kKeyPanFraction = 0.1;

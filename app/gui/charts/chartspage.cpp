@@ -1,9 +1,10 @@
 #include "chartspage.h"
 
-#include "chartcsvreader.h"
-#include "chartframe.h"
-#include "chartrecorder.h"
 #include "chartwidget.h"
+#include "model/chart/chartframe.h"
+#include "model/recording/chartcsvreader.h"
+#include "model/recording/chartrecorder.h"
+#include "model/recording/recordingloader.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -25,6 +26,7 @@ constexpr int kMeasureSettleMs = 250;     // after a zoom or pan, once the gestu
 
 ChartsPage::ChartsPage(Session &session, QWidget *parent)
     : Page(session, parent)
+    , m_loader(new RecordingLoader(this))
     , m_recorder(new ChartRecorder(session.telemetry(), this)) {
     setAccessibleName(tr("Charts"));
     auto *layout = new QVBoxLayout(this);

@@ -4,7 +4,8 @@
 // errors, alarms, writes) with tooltips; a time window of 30 s to 24 h that follows the newest
 // data or stays paused; wheel zoom, drag pan, rubber-band zoom and reset; a crosshair readout of
 // every series under the cursor; heat-up, recovery and min/max/mean of the visible window; PNG
-// and CSV export of the window, continuous CSV recording, and replay of a recorded CSV.
+// and CSV export of the window, continuous CSV recording, and replay of a recorded CSV, read on a
+// thread of its own behind a progress dialog with Cancel, so the page stays live meanwhile.
 //
 // Bounded work: redraws are coalesced on a timer, at most kMaxRedrawsPerSecond and, while
 // following, no more often than the window moves by a pixel column; each asks the telemetry for
@@ -16,9 +17,9 @@
 // ChartRecording it owns. Only ChartWidget touches Qt Charts.
 #pragma once
 
-#include "chartevents.h"
-#include "chartseries.h"
-#include "chartviewport.h"
+#include "model/chart/chartevents.h"
+#include "model/chart/chartseries.h"
+#include "model/chart/chartviewport.h"
 
 #include "pages/page.h"
 
@@ -33,14 +34,20 @@ class QPlainTextEdit;
 class QToolButton;
 class QVBoxLayout;
 
+class QProgressDialog;
+
+namespace tipscope::model {
+class ChartRecorder;
+struct ChartRecording;
+class RecordingLoader;
+} // namespace tipscope::model
+
 namespace tipscope::gui {
 
-class ChartRecorder;
 class ChartWidget;
 struct ChartBand;
 struct ChartMarker;
 struct ChartSeriesStyle;
-struct ChartRecording;
 
 class ChartsPage : public Page {
     Q_OBJECT
@@ -56,10 +63,10 @@ public:
     void setActive(bool active) override;
 
     void setPaneLayout(Layout layout);
-    [[nodiscard]] ChartViewport &viewport() { return m_viewport; }
+    [[nodiscard]] model::ChartViewport &viewport() { return m_viewport; }
     // Station panes first, then the feeder's.
     [[nodiscard]] QList<ChartWidget *> panes() const;
-    [[nodiscard]] QList<ChartTrace> traces(int pane) const;
+    [[nodiscard]] QList<model::ChartTrace> traces(int pane) const;
     // Redraws now instead of at the next coalesced tick (tests, the bench, exports).
     void redrawNow();
     [[nodiscard]] qint64 redrawCount() const { return m_redraws; }
@@ -74,18 +81,25 @@ public:
     QString startRecording(const QString &path);
     void stopRecording();
     [[nodiscard]] bool isRecording() const;
-    QString openReplay(const QString &path);
+    // Starts reading a recording; replayOpened() follows. The live view stays until it is read.
+    void openReplay(const QString &path);
+    [[nodiscard]] bool isLoadingReplay() const;
+    void cancelReplayLoad();
     void showLive();
     [[nodiscard]] bool isReplay() const { return m_replay != nullptr; }
     // What the charts show: the session's telemetry live, the recording's in replay.
     [[nodiscard]] const model::Telemetry &shownTelemetry() const;
-    [[nodiscard]] const QList<ChartChannel> &shownChannels() const;
+    [[nodiscard]] const QList<model::ChartChannel> &shownChannels() const;
+
+Q_SIGNALS:
+    // After openReplay(): empty when the recording is shown, else why not (cancelled included).
+    void replayOpened(const QString &error);
 
 private:
     struct Pane {
         ChartWidget *widget = nullptr;
         QList<int> channels;
-        QList<ChartTrace> traces;
+        QList<model::ChartTrace> traces;
     };
 
     void buildToolbar(QVBoxLayout *layout);
@@ -103,23 +117,27 @@ private:
     void chooseAndExport(bool png);
     void toggleRecording(bool on);
     void chooseReplay();
-    [[nodiscard]] const ChartEvents &events() const;
+    void showReplayProgress();
+    void onReplayLoaded(const QString &error);
+    [[nodiscard]] const model::ChartEvents &events() const;
     [[nodiscard]] QList<ChartMarker> markersFor(const Pane &pane) const;
     [[nodiscard]] QList<ChartBand> bandsFor(const Pane &pane) const;
-    [[nodiscard]] static QList<ChartSeriesStyle> overlaidLegend(const QList<ChartChannel> &cs,
-                                                                const Pane &pane);
+    [[nodiscard]] static QList<ChartSeriesStyle>
+    overlaidLegend(const QList<model::ChartChannel> &cs, const Pane &pane);
 
-    ChartViewport m_viewport;
+    model::ChartViewport m_viewport;
     QTimer m_redrawTimer;
     QTimer m_measureTimer;
     QElapsedTimer m_sinceRedraw;
     qint64 m_redraws = 0;
     Layout m_layout = Layout::Overlaid;
-    QList<ChartChannel> m_liveChannels;
-    ChartEvents m_liveEvents;
-    std::unique_ptr<ChartRecording> m_replay;
+    QList<model::ChartChannel> m_liveChannels;
+    model::ChartEvents m_liveEvents;
+    std::unique_ptr<model::ChartRecording> m_replay;
     QString m_replayPath;
-    ChartRecorder *m_recorder;
+    model::RecordingLoader *m_loader;
+    QProgressDialog *m_loadProgress = nullptr;
+    model::ChartRecorder *m_recorder;
     QList<Pane> m_panes;
     std::optional<qint64> m_hover;
 

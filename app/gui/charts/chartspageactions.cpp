@@ -1,11 +1,11 @@
 // ChartsPage's toolbar and what its buttons do with files: PNG and CSV export of the visible
-// window, continuous recording, and replay of a recording.
+// window and continuous recording (replay: chartspagereplay.cpp).
 #include "chartspage.h"
 
-#include "chartcsv.h"
-#include "chartcsvreader.h"
-#include "chartrecorder.h"
 #include "chartwidget.h"
+#include "model/recording/chartcsv.h"
+#include "model/recording/chartcsvreader.h"
+#include "model/recording/chartrecorder.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -196,42 +196,6 @@ void ChartsPage::toggleRecording(bool on) {
     if (!error.isEmpty())
         QMessageBox::warning(this, tr("Record"), tr("Cannot record: %1").arg(error));
     updateSourceLabel();
-}
-
-QString ChartsPage::openReplay(const QString &path) {
-    QString error;
-    auto recording = ChartCsvReader::readFile(path, &error);
-    if (!recording)
-        return error;
-    m_replay = std::move(recording);
-    m_replayPath = path;
-    rebuildPanes();
-    m_viewport.setDataRange(m_replay->firstMs, m_replay->lastMs);
-    resetView();
-    updateSourceLabel();
-    scheduleRedraw();
-    return {};
-}
-
-void ChartsPage::showLive() {
-    m_replay.reset();
-    m_replayPath.clear();
-    rebuildPanes();
-    onSamplesAdded();
-    m_viewport.reset();
-    updateSourceLabel();
-}
-
-void ChartsPage::chooseReplay() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open a chart recording"),
-        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation),
-        tr("CSV file (*.csv);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    const QString error = openReplay(path);
-    if (!error.isEmpty())
-        QMessageBox::warning(this, tr("Replay"), tr("Cannot replay %1").arg(error));
 }
 
 } // namespace tipscope::gui

@@ -2,9 +2,9 @@
 // readout, and the measurement panel.
 #include "chartspage.h"
 
-#include "chartframe.h"
 #include "chartwidget.h"
-#include "measurementreport.h"
+#include "model/analysis/measurementreport.h"
+#include "model/chart/chartframe.h"
 
 #include <QDateTime>
 #include <QDoubleSpinBox>

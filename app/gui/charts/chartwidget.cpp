@@ -9,6 +9,8 @@
 
 namespace tipscope::gui {
 
+using model::ChartAxis;
+
 namespace {
 constexpr double kMarkerHitPx = 5;
 

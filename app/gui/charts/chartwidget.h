@@ -20,7 +20,7 @@
 // shows a marker's tooltip when the cursor is on it.
 #pragma once
 
-#include "chartseries.h"
+#include "model/chart/chartseries.h"
 
 #include <QImage>
 #include <QWidget>
@@ -33,7 +33,7 @@ struct ChartSeriesStyle {
     QString name;
     QColor color;
     Qt::PenStyle style = Qt::SolidLine;
-    ChartAxis axis = ChartAxis::Left;
+    model::ChartAxis axis = model::ChartAxis::Left;
 };
 
 struct ChartMarker {
@@ -44,7 +44,7 @@ struct ChartMarker {
 
 // A value range shaded on one axis (an alarm zone); the edges may lie beyond the axis range.
 struct ChartBand {
-    ChartAxis axis = ChartAxis::Left;
+    model::ChartAxis axis = model::ChartAxis::Left;
     double low = 0;
     double high = 0;
     QColor color;
@@ -78,9 +78,9 @@ public:
     // overlaid: a colour per port and a dash per kind of value, rather than every pair).
     void setSeries(const QList<ChartSeriesStyle> &series,
                    const QList<ChartSeriesStyle> &legend = {});
-    void setAxisTitle(ChartAxis axis, const QString &title); // an empty right title hides it
+    void setAxisTitle(model::ChartAxis axis, const QString &title); // an empty right title hides it
     void setTimeRange(qint64 t0, qint64 t1);
-    void setAxisRange(ChartAxis axis, double min, double max);
+    void setAxisRange(model::ChartAxis axis, double min, double max);
     // Replaces the points of series `index` (x: ms since the epoch) with one replace().
     void setPoints(int index, const QList<QPointF> &points);
     // A whole redraw: ranges and every series' points (one replace() each), ordered so that Qt
@@ -104,7 +104,7 @@ public:
     [[nodiscard]] QRectF plotArea() const;
     [[nodiscard]] int plotWidth() const;
     // The step between the labelled values of an axis, and the font of those labels.
-    [[nodiscard]] double valueTickStep(ChartAxis axis) const;
+    [[nodiscard]] double valueTickStep(model::ChartAxis axis) const;
     [[nodiscard]] QFont valueLabelFont() const;
     [[nodiscard]] qint64 timeAt(double x) const;
     [[nodiscard]] double xAt(qint64 timeMs) const;

@@ -62,7 +62,7 @@ public:
     // Plot area in scene coordinates, which are the view's viewport coordinates (the chart
     // fills the scene at the origin, unscaled).
     [[nodiscard]] QRectF plot() const { return chart->plotArea(); }
-    [[nodiscard]] double yAt(ChartAxis axis, double value, const QRectF &plot) const;
+    [[nodiscard]] double yAt(model::ChartAxis axis, double value, const QRectF &plot) const;
     void placeOverlays();
     void placeLegend();
     void updatePlot();

@@ -1,6 +1,7 @@
 #include "counterspage.h"
 
 #include "model/displayunits.h"
+#include "model/io/csv.h"
 #include "widgets/deferredrefresh.h"
 
 #include <QDateTime>
@@ -40,16 +41,6 @@ QString buttonText(const Action &reset) {
     return s.label.isEmpty() ? reset.name() : protocol::catalogText(s.label);
 }
 
-// RFC 4180 quoting, so that a device or counter name with a comma stays one field.
-QString csvField(const QString &text) {
-    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) &&
-        !text.contains(QLatin1Char('\n')))
-        return text;
-    QString quoted = text;
-    quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
-    return QLatin1Char('"') + quoted + QLatin1Char('"');
-}
-
 // A value as a spreadsheet parses it: display units, '.' decimal point, empty when unknown. The
 // counter keeps the catalog's English name, like the header, whatever the interface language.
 QString csvLine(const QString &device, int port, const Parameter &p) {
@@ -58,8 +49,8 @@ QString csvLine(const QString &device, int port, const Parameter &p) {
     const auto wire = p.number();
     const QString value =
         wire ? QString::number(toDisplay(p.spec(), *wire, unit), 'f', f.decimals) : QString();
-    const QStringList fields{csvField(device), port > 0 ? QString::number(port) : QString(),
-                             csvField(p.meta().name), value, csvField(f.unit)};
+    const QStringList fields{csv::quoted(device), port > 0 ? QString::number(port) : QString(),
+                             csv::quoted(p.meta().name), value, csv::quoted(f.unit)};
     return fields.join(QLatin1Char(',')) + QLatin1Char('\n');
 }
 

@@ -17,7 +17,7 @@ Telemetry::Telemetry(QObject *parent)
     connect(&m_coalesceTimer, &QTimer::timeout, this, &Telemetry::emitSamplesAdded);
 }
 
-const TelemetryBuffer &Telemetry::ensureBuffer(const QString &key, const QStringList &series,
+const TelemetryBuffer &Telemetry::ensureBuffer(const TelemetryKey &key, const QStringList &series,
                                                int capacity) {
     auto it = m_entries.find(key);
     if (it == m_entries.end())
@@ -30,20 +30,24 @@ const TelemetryBuffer &Telemetry::ensureBuffer(const QString &key, const QString
     return existing;
 }
 
-const TelemetryBuffer *Telemetry::buffer(const QString &key) const {
+bool Telemetry::adoptBuffer(const TelemetryKey &key, TelemetryBuffer &&buffer) {
+    return m_entries.try_emplace(key, std::move(buffer)).second;
+}
+
+const TelemetryBuffer *Telemetry::buffer(const TelemetryKey &key) const {
     const auto it = m_entries.find(key);
     return it == m_entries.end() ? nullptr : &it->second.buffer;
 }
 
-QStringList Telemetry::keys() const {
-    QStringList result;
+QList<TelemetryKey> Telemetry::keys() const {
+    QList<TelemetryKey> result;
     result.reserve(qsizetype(m_entries.size()));
     for (const auto &[key, entry] : m_entries)
         result.append(key);
     return result;
 }
 
-AppendResult Telemetry::append(const QString &key, qint64 timeMs, const qint32 *values,
+AppendResult Telemetry::append(const TelemetryKey &key, qint64 timeMs, const qint32 *values,
                                qsizetype count) {
     const auto it = m_entries.find(key);
     if (it == m_entries.end())
@@ -64,7 +68,7 @@ void Telemetry::setMaxSignalsPerSecond(int rate) {
 }
 
 void Telemetry::emitSamplesAdded() {
-    QStringList changed;
+    QList<TelemetryKey> changed;
     for (auto &[key, entry] : m_entries) {
         if (entry.changed)
             changed.append(key);

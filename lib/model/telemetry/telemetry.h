@@ -20,6 +20,12 @@
 
 namespace tipscope::model {
 
+// What a history is kept under: today the device's address and the port, "01/port2" or
+// "10/feeder" (Session::telemetryKey()); a replay uses the recording's channel ids. Code that
+// stores or passes a key names this type, so that keying histories differently (by the device's
+// identity) changes this definition and what builds keys, not every reader.
+using TelemetryKey = QString;
+
 class Telemetry : public QObject {
     Q_OBJECT
 public:
@@ -29,18 +35,23 @@ public:
 
     // The buffer of `key`, created with `series` and `capacity` if it does not exist yet. An
     // existing buffer keeps its series and capacity (a different request is logged).
-    const TelemetryBuffer &ensureBuffer(const QString &key, const QStringList &series,
+    const TelemetryBuffer &ensureBuffer(const TelemetryKey &key, const QStringList &series,
                                         int capacity = TelemetryBuffer::kDefaultCapacity);
+    // Installs a buffer filled elsewhere (a replay reads its file on another thread into plain
+    // buffers); false, and the buffer dropped, when `key` already has one.
+    bool adoptBuffer(const TelemetryKey &key, TelemetryBuffer &&buffer);
     // nullptr when no buffer of that key exists.
-    [[nodiscard]] const TelemetryBuffer *buffer(const QString &key) const;
+    [[nodiscard]] const TelemetryBuffer *buffer(const TelemetryKey &key) const;
     // Sorted.
-    [[nodiscard]] QStringList keys() const;
+    [[nodiscard]] QList<TelemetryKey> keys() const;
 
-    AppendResult append(const QString &key, qint64 timeMs, const qint32 *values, qsizetype count);
-    AppendResult append(const QString &key, qint64 timeMs, std::initializer_list<qint32> values) {
+    AppendResult append(const TelemetryKey &key, qint64 timeMs, const qint32 *values,
+                        qsizetype count);
+    AppendResult append(const TelemetryKey &key, qint64 timeMs,
+                        std::initializer_list<qint32> values) {
         return append(key, timeMs, values.begin(), qsizetype(values.size()));
     }
-    AppendResult append(const QString &key, qint64 timeMs, const QList<qint32> &values) {
+    AppendResult append(const TelemetryKey &key, qint64 timeMs, const QList<qint32> &values) {
         return append(key, timeMs, values.constData(), values.size());
     }
 
@@ -50,7 +61,7 @@ public:
 
 Q_SIGNALS:
     // `keys` (sorted) are the buffers that accepted samples since the previous emission.
-    void samplesAdded(const QStringList &keys);
+    void samplesAdded(const QList<TelemetryKey> &keys);
 
 private:
     struct Entry {
@@ -63,7 +74,7 @@ private:
     void emitSamplesAdded();
 
     // std::map: nodes never move, so handed-out buffer references stay valid.
-    std::map<QString, Entry> m_entries;
+    std::map<TelemetryKey, Entry> m_entries;
     QTimer m_coalesceTimer;
     int m_maxSignalsPerSecond = kDefaultMaxSignalsPerSecond;
 };

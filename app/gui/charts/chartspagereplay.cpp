@@ -1,0 +1,120 @@
+// ChartsPage's replay: a recording is read by a RecordingLoader on a thread of its own while the
+// page stays live; a progress dialog with Cancel shows after a moment if the reading takes
+// longer, and the recording replaces the live view only once it is read whole.
+#include "chartspage.h"
+
+#include "model/recording/chartcsvreader.h"
+#include "model/recording/recordingloader.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QStandardPaths>
+#include <QTimer>
+
+namespace tipscope::gui {
+
+using namespace tipscope::model;
+
+namespace {
+// A recording read sooner than this shows no dialog at all.
+constexpr int kShowProgressAfterMs = 300;
+constexpr int kProgressSteps = 1000;
+} // namespace
+
+void ChartsPage::openReplay(const QString &path) {
+    cancelReplayLoad();
+    connect(m_loader, &RecordingLoader::finished, this, &ChartsPage::onReplayLoaded,
+            Qt::UniqueConnection);
+    m_loader->start(path);
+    QTimer::singleShot(kShowProgressAfterMs, this, [this, path] {
+        if (m_loader->isRunning() && m_loader->path() == path)
+            showReplayProgress();
+    });
+}
+
+bool ChartsPage::isLoadingReplay() const {
+    return m_loader->isRunning();
+}
+
+void ChartsPage::cancelReplayLoad() {
+    m_loader->cancel();
+}
+
+void ChartsPage::showReplayProgress() {
+    // A dialog per load, so nothing of the last one (its cancel, its auto-show) carries over.
+    if (!m_loadProgress) {
+        m_loadProgress = new QProgressDialog(this);
+        m_loadProgress->setObjectName(QStringLiteral("replayProgress"));
+        m_loadProgress->setWindowTitle(tr("Open recording"));
+        m_loadProgress->setWindowModality(Qt::WindowModal);
+        m_loadProgress->setMinimumDuration(0);
+        m_loadProgress->setAutoReset(false);
+        m_loadProgress->setAutoClose(false);
+        connect(m_loadProgress, &QProgressDialog::canceled, this, &ChartsPage::cancelReplayLoad);
+        connect(m_loader, &RecordingLoader::progress, m_loadProgress,
+                [this](qint64 read, qint64 total) {
+                    const QString name = QFileInfo(m_loader->path()).fileName();
+                    m_loadProgress->setLabelText(
+                        tr("Reading %1: %2 MB").arg(name).arg(double(read) / (1 << 20), 0, 'f', 1));
+                    // A FIFO has no size: the bar then only says that something happens.
+                    m_loadProgress->setMaximum(total > 0 ? kProgressSteps : 0);
+                    if (total > 0)
+                        m_loadProgress->setValue(int(read * kProgressSteps / total));
+                });
+    }
+    m_loadProgress->setLabelText(tr("Reading %1…").arg(QFileInfo(m_loader->path()).fileName()));
+    m_loadProgress->setRange(0, m_loader->totalBytes() > 0 ? kProgressSteps : 0);
+    m_loadProgress->setValue(0);
+    m_loadProgress->show();
+}
+
+void ChartsPage::onReplayLoaded(const QString &error) {
+    if (m_loadProgress) {
+        m_loadProgress->hide();
+        m_loadProgress->deleteLater();
+        m_loadProgress = nullptr;
+    }
+    auto recording = m_loader->takeRecording();
+    if (!recording) {
+        Q_EMIT replayOpened(error);
+        return;
+    }
+    m_replay = std::move(recording);
+    m_replayPath = m_loader->path();
+    rebuildPanes();
+    m_viewport.setDataRange(m_replay->firstMs, m_replay->lastMs);
+    resetView();
+    updateSourceLabel();
+    scheduleRedraw();
+    Q_EMIT replayOpened(QString());
+}
+
+void ChartsPage::showLive() {
+    m_replay.reset();
+    m_replayPath.clear();
+    rebuildPanes();
+    onSamplesAdded();
+    m_viewport.reset();
+    updateSourceLabel();
+}
+
+void ChartsPage::chooseReplay() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open a chart recording"),
+        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation),
+        tr("CSV file (*.csv);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    connect(
+        this, &ChartsPage::replayOpened, this,
+        [this](const QString &error) {
+            if (!error.isEmpty() && !m_loader->wasCancelled())
+                QMessageBox::warning(this, tr("Replay"), tr("Cannot replay %1").arg(error));
+        },
+        Qt::SingleShotConnection);
+    openReplay(path);
+}
+
+} // namespace tipscope::gui

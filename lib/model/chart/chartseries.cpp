@@ -1,0 +1,185 @@
+#include "model/chart/chartseries.h"
+
+#include "model/session.h"
+#include "protocol/catalog.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+#include <QSet>
+#include <cmath>
+#include <limits>
+
+namespace tipscope::model {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(ChartSeries)
+};
+
+// The wire unit of each telemetry series, as the catalog names it (TTx, STx: degC; PPx: permille;
+// FDL: dmm; SPD: dmmPerSecond), so the chart scales exactly as the settings pages do.
+QString wireUnit(const QString &series) {
+    if (series == QLatin1String("tip") || series == QLatin1String("setpoint") ||
+        isHardwareSeries(series))
+        return QStringLiteral("degC");
+    if (series == QLatin1String("power"))
+        return QStringLiteral("permille");
+    if (series == QLatin1String("fed"))
+        return QStringLiteral("dmm");
+    if (series == QLatin1String("speed"))
+        return QStringLiteral("dmmPerSecond");
+    return {};
+}
+
+std::optional<qint64> numberOf(const Parameter *p) {
+    return p ? p->number() : std::nullopt;
+}
+} // namespace
+
+std::optional<qint32> SeriesFormat::toWire(double display) const {
+    if (!std::isfinite(display) || scale == 0)
+        return std::nullopt;
+    const double wire = std::round((display - offset) / scale);
+    if (wire < double(std::numeric_limits<qint32>::min()) ||
+        wire > double(std::numeric_limits<qint32>::max()))
+        return std::nullopt;
+    return qint32(wire);
+}
+
+QString SeriesFormat::format(double display) const {
+    const QString number = QLocale().toString(display, 'f', decimals);
+    return unit.isEmpty() ? number : number + QLatin1Char(' ') + unit;
+}
+
+SeriesFormat seriesFormat(const QString &series, TemperatureUnit unit) {
+    SeriesFormat f;
+    const QString key = wireUnit(series);
+    if (key == QLatin1String("degC")) {
+        const bool fahrenheit = unit == TemperatureUnit::Fahrenheit;
+        f.scale = fahrenheit ? 1.8 : 1;
+        f.offset = fahrenheit ? 32 : 0;
+        // °F of a whole °C has a fraction; one decimal keeps the CSV exact.
+        f.decimals = fahrenheit ? 1 : 0;
+        f.unit = fahrenheit ? QStringLiteral("°F") : QStringLiteral("°C");
+    } else if (const protocol::Unit *u = protocol::Catalog::builtin().unit(key)) {
+        f.scale = u->scale;
+        f.decimals = u->decimals;
+        f.unit = u->display;
+    } else {
+        f.plotted = false;
+    }
+    f.axis = series == QLatin1String("power") || series == QLatin1String("speed") ? ChartAxis::Right
+                                                                                  : ChartAxis::Left;
+    return f;
+}
+
+QString seriesTitle(const QString &series) {
+    if (series == QLatin1String("tip"))
+        return Tr::tr("Tip");
+    if (series == QLatin1String("setpoint"))
+        return Tr::tr("Setpoint");
+    if (series == QLatin1String("power"))
+        return Tr::tr("Power");
+    if (series == QLatin1String("status"))
+        return Tr::tr("Status");
+    if (series == QLatin1String("fed"))
+        return Tr::tr("Fed length");
+    if (series == QLatin1String("speed"))
+        return Tr::tr("Speed");
+    if (series == QLatin1String("feeding"))
+        return Tr::tr("Feeding");
+    if (series == QLatin1String("transistor"))
+        return Tr::tr("Transistor");
+    if (series == QLatin1String("transformer"))
+        return Tr::tr("Transformer");
+    return series;
+}
+
+QList<ChartChannel> sessionChannels(Session &session) {
+    QList<ChartChannel> out;
+    const auto describe = [](const DeviceModel &d, ChartChannel &c) {
+        c.deviceModel = d.info().model;
+        c.deviceName = d.displayName();
+        c.address = d.info().addressText();
+        c.softwareVersion = d.info().softwareVersion;
+    };
+    for (DeviceModel *d : session.devices()) {
+        if (auto *station = qobject_cast<StationModel *>(d)) {
+            for (PortModel *port : station->ports()) {
+                ChartChannel c;
+                c.key = Session::telemetryKey(*station, port->number());
+                c.port = port->number();
+                c.id = QStringLiteral("port%1").arg(c.port);
+                c.title = Tr::tr("Port %1").arg(c.port);
+                describe(*station, c);
+                c.tool = port->tool() ? port->toolName() : QString();
+                if (const auto high = numberOf(port->param("HA")))
+                    c.highAlarm = qint32(*high);
+                if (const auto low = numberOf(port->param("LA")))
+                    c.lowAlarm = qint32(*low);
+                if (const auto *buffer = session.telemetry().buffer(c.key))
+                    c.series = buffer->seriesNames();
+                out.append(c);
+            }
+        } else if (auto *feeder = qobject_cast<FeederModel *>(d)) {
+            ChartChannel c;
+            c.key = Session::telemetryKey(*feeder, 0);
+            c.id = QStringLiteral("feeder");
+            c.title = Tr::tr("Feeder");
+            describe(*feeder, c);
+            if (const auto *buffer = session.telemetry().buffer(c.key))
+                c.series = buffer->seriesNames();
+            out.append(c);
+        }
+    }
+    return out;
+}
+
+QColor portColor(int port) {
+    // Distinguishable for the common colour-vision deficiencies (Okabe-Ito).
+    static const QColor kColors[] = {QColor(0x00, 0x72, 0xB2), QColor(0xD5, 0x5E, 0x00),
+                                     QColor(0x00, 0x9E, 0x73), QColor(0xCC, 0x79, 0xA7),
+                                     QColor(0x56, 0xB4, 0xE9), QColor(0xE6, 0x9F, 0x00)};
+    return kColors[qMax(0, port - 1) % int(std::size(kColors))];
+}
+
+bool isHardwareSeries(const QString &series) {
+    return series == QLatin1String("transistor") || series == QLatin1String("transformer");
+}
+
+QList<ChartTrace> tracesFor(const QList<ChartChannel> &channels, const QList<int> &which,
+                            TemperatureUnit unit, bool hardware) {
+    QList<ChartTrace> out;
+    QSet<QString> transformers; // one curve per station, however many of its ports are shown
+    for (int index : which) {
+        const ChartChannel &c = channels.at(index);
+        const QColor base = c.isFeeder() ? portColor(1) : portColor(c.port);
+        const QString prefix = c.isFeeder() ? QString() : Tr::tr("P%1 ").arg(c.port);
+        for (const QString &series : c.series) {
+            ChartTrace t{index, series,        prefix + seriesTitle(series).toLower(),
+                         base,  Qt::SolidLine, seriesFormat(series, unit)};
+            if (!t.format.plotted || (isHardwareSeries(series) && !hardware))
+                continue;
+            if (series == QLatin1String("transformer")) {
+                if (transformers.contains(c.address))
+                    continue;
+                transformers.insert(c.address);
+                t.name = seriesTitle(series).toLower();
+                t.color = QColor(0x55, 0x55, 0x55);
+                t.style = Qt::DashDotDotLine;
+            } else if (series == QLatin1String("transistor")) {
+                t.color = base.darker(150);
+                t.style = Qt::DashDotLine;
+            } else if (series == QLatin1String("setpoint")) {
+                t.style = Qt::DashLine;
+            } else if (series == QLatin1String("power") || series == QLatin1String("speed")) {
+                t.style = Qt::DotLine;
+                t.color = c.isFeeder() ? portColor(2) : base.lighter(130);
+            }
+            out.append(t);
+        }
+    }
+    return out;
+}
+
+} // namespace tipscope::model
