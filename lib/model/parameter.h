@@ -48,6 +48,9 @@ public:
     [[nodiscard]] std::optional<qint64> edit() const { return m_edit; }
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] QString failure() const { return m_failure; }
+    // A value read and the line still up: what the device holds now, as far as polling can
+    // tell. Otherwise the value (if any) is only what was read at lastUpdate().
+    [[nodiscard]] bool isCurrent() const;
     // Local time; invalid before the first reading.
     [[nodiscard]] QDateTime lastUpdate() const {
         return m_lastUpdateMs < 0 ? QDateTime() : QDateTime::fromMSecsSinceEpoch(m_lastUpdateMs);
@@ -78,6 +81,9 @@ public:
     // a new value until W-NVS saved it. What the device held before TipScope came cannot be known.
     [[nodiscard]] bool isSavedToMemory() const;
     void markSaved();
+    // The line is back (DeviceModel::setLineUp): a write that failed because the line was down
+    // or lost is no longer an error; its edit stays, to apply again, and the value is read anew.
+    void lineRestored();
 
 Q_SIGNALS:
     void valueChanged();
@@ -89,7 +95,7 @@ Q_SIGNALS:
 private:
     void setState(State s, const QString &failure = {});
     void readBack(const QByteArray &written);
-    void fail(const QString &reason);
+    void fail(const QString &reason, bool byLine = false);
 
     DeviceModel &m_device;
     std::optional<protocol::ResolvedCommand> m_read;
@@ -100,6 +106,7 @@ private:
     bool m_unsavedWrite = false;
     State m_state = State::Unknown;
     QString m_failure;
+    bool m_failedByLine = false; // the failure is the line's, not the device's or the value's
     qint64 m_lastUpdateMs = -1;
     double m_rateHz = 0;
     QPointer<Parameter> m_lower, m_upper;
