@@ -7,6 +7,7 @@
 
 #include "support/typing.h"
 
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QTest>
 
@@ -20,6 +21,7 @@ private Q_SLOTS:
     void aValueAboveTheMaximumIsRefusedAsTypedWithTheRangeUnderIt_data();
     void aValueAboveTheMaximumIsRefusedAsTypedWithTheRangeUnderIt();
     void aDiscardedRefusalShowsTheDevicesValueAgain();
+    void aDisabledValueShowsADashAndEnablingItStartsAtTheLowestAllowed();
 };
 
 void TestParameterEditor::anUnreadValueShowsADashUntilTheDeviceAnswers() {
@@ -103,6 +105,27 @@ void TestParameterEditor::aDiscardedRefusalShowsTheDevicesValueAgain() {
     QCOMPARE(spin->text(), QStringLiteral("450 °C"));
     QVERIFY(editor.messageText().isEmpty());
     QCOMPARE(editor.stateText(), QStringLiteral("✓ in sync"));
+}
+
+void TestParameterEditor::aDisabledValueShowsADashAndEnablingItStartsAtTheLowestAllowed() {
+    testing::SimFixture f(testing::singleDevice(QStringLiteral("DME")));
+    f.simLine->devices().first()->setSetting("HD1", 99999); // the alarm delay "disabled"
+    auto station = f.station();
+    model::Parameter *delay = station->parameter("HD1");
+    QVERIFY(delay);
+    delay->refresh();
+    f.settle();
+    ParameterEditor editor(delay);
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    auto *spin = editor.findChild<QDoubleSpinBox *>();
+    auto *disabled = editor.findChild<QCheckBox *>();
+    QVERIFY(spin && disabled);
+    QVERIFY(disabled->isChecked());
+    QCOMPARE(spin->text(), QStringLiteral("—")); // not the box's own lower bound
+    disabled->click();
+    QVERIFY2(!editor.hasRefusal(), qPrintable(editor.messageText()));
+    QCOMPARE(delay->edit(), std::optional<qint64>(delay->minimum()));
 }
 
 QTEST_MAIN(TestParameterEditor)

@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
 
 namespace tipscope::gui {
@@ -129,18 +130,20 @@ void ParameterEditor::refreshFromParameter() {
                                 toDisplay(p.spec(), p.maximum(), t));
     // A refused value stays in the box beside its reason until it is replaced or discarded.
     const bool keepTyped = !m_refusal.isEmpty();
+    const bool special = shown && p.meta().special.contains(int(*shown));
     if (m_spin && shown && !keepTyped) {
-        const bool special = p.meta().special.contains(int(*shown));
         if (m_disabled)
             m_disabled->setChecked(special);
         m_spin->setEnabled(!special);
         if (!special)
             m_spin->setValue(toDisplay(p.spec(), *shown, t));
     }
-    // Not read yet, a box shows a dash: its minimum there would read as the device's value.
+    // Not read yet or disabled, a box shows a dash: any number there would read as the
+    // device's value.
     if (m_spin && !keepTyped) {
-        m_spin->setSpecialValueText(shown ? QString() : QStringLiteral("—"));
-        if (!shown)
+        const bool number = shown && !special;
+        m_spin->setSpecialValueText(number ? QString() : QStringLiteral("—"));
+        if (!number)
             m_spin->setValue(m_spin->minimum());
     }
     if (m_combo && !keepTyped)
@@ -232,11 +235,17 @@ void ParameterEditor::commitSpin() {
     if (m_updating || !m_parameter)
         return;
     qint64 wire = 0;
-    if (m_disabled && m_disabled->isChecked())
+    if (m_disabled && m_disabled->isChecked()) {
         wire = kDisabledKey;
-    else
+    } else {
+        // Enabled again from the dash: start at the lowest allowed value.
+        if (m_spin->value() == m_spin->minimum()) {
+            const QSignalBlocker quiet(m_spin);
+            m_spin->setValue(m_spin->allowedMinimum());
+        }
         wire = fromDisplay(m_parameter->spec(), m_spin->value(),
                            m_parameter->device().temperatureUnit());
+    }
     m_spin->setEnabled(!(m_disabled && m_disabled->isChecked()));
     setRefusal(m_parameter->setEdit(wire));
 }
