@@ -13,8 +13,10 @@ namespace {
 constexpr qint32 kMinSpanCelsius = 20; // a flat line stays flat, not a magnified noise
 constexpr int kTextMargin = 3;
 
-// Columns further apart than this are a gap in the recording, drawn as one.
+// Samples further apart than this (and than a few columns) are a gap in the recording, drawn as
+// one; a port polled slowly (one in error) is not a gap at every sample on a wide card.
 constexpr int kGapColumns = 4;
+constexpr qint64 kGapMs = 3000;
 
 struct Scale {
     QRectF area;
@@ -39,7 +41,7 @@ QPainterPath columnPath(const QList<MinMaxBucket> &buckets, const Scale &s, qint
     for (const MinMaxBucket &b : buckets) {
         const double x = s.x(b.startMs + columnMs / 2);
         const bool gap = previous == std::numeric_limits<qint64>::min() ||
-                         b.startMs - previous > kGapColumns * columnMs;
+                         b.startMs - previous > qMax(kGapColumns * columnMs, kGapMs);
         if (gap)
             path.moveTo(x, s.y(b.max));
         else
