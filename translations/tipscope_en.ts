@@ -64,7 +64,15 @@
 <context>
     <name>ProfileApplier</name>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profileapplier.cpp" line="49"/>
+        <source>%n skipped</source>
+        <translation>
+            <numerusform>%n skipped</numerusform>
+            <numerusform>%n skipped</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/profileapplier.cpp" line="55"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -75,7 +83,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="234"/>
+        <location filename="../lib/model/session.cpp" line="236"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -130,7 +138,15 @@
 <context>
     <name>tipscope::gui::ProfileDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="123"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="165"/>
+        <source>%n setting(s) of the profile skipped: this device does not take them.</source>
+        <translation>
+            <numerusform>%n setting of the profile skipped: this device does not take it.</numerusform>
+            <numerusform>%n settings of the profile skipped: this device does not take them.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="185"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Profile from %1 (%2, software %3), created %4: %n setting differs from the device.</numerusform>
@@ -138,11 +154,22 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="129"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="176"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Dry run: %n frame would be sent; nothing was written.</numerusform>
             <numerusform>Dry run: %n frames would be sent; nothing was written.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::SettingsPage</name>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/settingspage.cpp" line="343"/>
+        <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
+        <translation>
+            <numerusform>✓ Profile saved: %n setting of %1 in %2</numerusform>
+            <numerusform>✓ Profile saved: %n settings of %1 in %2</numerusform>
         </translation>
     </message>
 </context>
