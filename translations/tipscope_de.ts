@@ -1936,29 +1936,55 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="69"/>
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="70"/>
+        <location filename="../lib/model/devicemodel.cpp" line="71"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="74"/>
+        <location filename="../lib/model/devicemodel.cpp" line="75"/>
+        <location filename="../lib/model/devicemodel.cpp" line="145"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="153"/>
+        <location filename="../lib/model/devicemodel.cpp" line="206"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="106"/>
+        <location filename="../lib/model/devicemodel.cpp" line="107"/>
         <source>—</source>
         <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="131"/>
+        <source>tool %1</source>
+        <translation>Werkzeug %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="142"/>
+        <source>%1, %2, port %3</source>
+        <translation>%1, %2, Port %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="148"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="191"/>
+        <source>Monitor-only mode is on: nothing is written.</source>
+        <translation>Nur-Beobachten ist an: nichts wird geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="193"/>
+        <source>Not connected: nothing can be sent until the line is back.</source>
+        <translation>Nicht verbunden: nichts kann gesendet werden, bis die Leitung wieder da ist.</translation>
     </message>
 </context>
 <context>
@@ -2716,7 +2742,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="119"/>
-        <location filename="../lib/model/parameter.cpp" line="217"/>
+        <location filename="../lib/model/parameter.cpp" line="231"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
@@ -2726,47 +2752,47 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1: %2; zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="174"/>
+        <location filename="../lib/model/parameter.cpp" line="188"/>
         <source>reading %1 (%2)</source>
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="186"/>
+        <location filename="../lib/model/parameter.cpp" line="200"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="187"/>
+        <location filename="../lib/model/parameter.cpp" line="201"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="236"/>
+        <location filename="../lib/model/parameter.cpp" line="251"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="239"/>
+        <location filename="../lib/model/parameter.cpp" line="254"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="260"/>
+        <location filename="../lib/model/parameter.cpp" line="276"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="274"/>
+        <location filename="../lib/model/parameter.cpp" line="291"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="287"/>
+        <location filename="../lib/model/parameter.cpp" line="304"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="300"/>
+        <location filename="../lib/model/parameter.cpp" line="318"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -2873,14 +2899,9 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/portmodel.cpp" line="109"/>
-        <location filename="../lib/model/portmodel.cpp" line="126"/>
+        <location filename="../lib/model/portmodel.cpp" line="124"/>
         <source>—</source>
         <translation>—</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/portmodel.cpp" line="115"/>
-        <source>tool %1</source>
-        <translation>Werkzeug %1</translation>
     </message>
     <message>
         <location filename="../lib/model/portmodel.cpp" line="60"/>
@@ -2898,7 +2919,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Keiner</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="187"/>
+        <location filename="../lib/model/portmodel.cpp" line="185"/>
         <source>this port has no %1 command</source>
         <translation>dieser Port hat keinen Befehl %1</translation>
     </message>
@@ -2934,85 +2955,80 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="72"/>
+        <location filename="../lib/model/profile.cpp" line="113"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: keine Einstellung von %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="77"/>
+        <location filename="../lib/model/profile.cpp" line="118"/>
         <source>%1: &apos;%2&apos; is not a valid data field</source>
         <translation>%1: &apos;%2&apos; ist kein gültiges Datenfeld</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="82"/>
-        <location filename="../lib/model/profile.cpp" line="170"/>
+        <location filename="../lib/model/profile.cpp" line="123"/>
+        <location filename="../lib/model/profile.cpp" line="223"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="100"/>
+        <location filename="../lib/model/profile.cpp" line="141"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="111"/>
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="114"/>
-        <source>profile schema %1 is not supported (this version reads schema %2)</source>
-        <translation>Profilschema %1 wird nicht unterstützt (diese Version liest Schema %2)</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/profile.cpp" line="120"/>
+        <location filename="../lib/model/profile.cpp" line="163"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="128"/>
+        <location filename="../lib/model/profile.cpp" line="171"/>
         <source>the profile has no values</source>
         <translation>das Profil enthält keine Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="132"/>
+        <location filename="../lib/model/profile.cpp" line="177"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="138"/>
+        <location filename="../lib/model/profile.cpp" line="191"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="146"/>
+        <location filename="../lib/model/profile.cpp" line="199"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="155"/>
+        <location filename="../lib/model/profile.cpp" line="208"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="161"/>
+        <location filename="../lib/model/profile.cpp" line="214"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="185"/>
+        <location filename="../lib/model/profile.cpp" line="239"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="95"/>
+        <location filename="../lib/model/profile.cpp" line="136"/>
         <source>not a valid JSON file: %1</source>
         <translation>keine gültige JSON-Datei: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="105"/>
+        <location filename="../lib/model/profile.cpp" line="146"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>mehr als einmal angegeben, daher ist unklar, welcher Wert gemeint ist: %1; es wird nichts geschrieben</translation>
     </message>
@@ -3025,6 +3041,16 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <location filename="../lib/model/profilejson.cpp" line="102"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>Steuerzeichen 0x%1 bei Byte %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="156"/>
+        <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
+        <translation>Profilschema %1 wird nicht unterstützt (diese Version liest die Schemas %2 bis %3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="180"/>
+        <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
+        <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;, oder ein Objekt mit einem in &quot;raw&quot; (und Text in &quot;name&quot; und &quot;value&quot;)</translation>
     </message>
 </context>
 <context>
@@ -3055,17 +3081,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>würde %1 senden</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="44"/>
-        <source>skipped %1</source>
-        <translation>%1 übersprungen</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>abgebrochen: die übrigen Werte wurden nicht geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profileapplier.cpp" line="55"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n Unterschied</numerusform>
@@ -3073,46 +3094,64 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="48"/>
+        <location filename="../lib/model/profileapplier.cpp" line="56"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 geändert, %2 bereits richtig, %3 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="77"/>
+        <location filename="../lib/model/profileapplier.cpp" line="101"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>das Profil ist für %1, dieses Gerät ist %2 (erzwingen, um die gemeinsamen Einstellungen anzuwenden)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="90"/>
+        <location filename="../lib/model/profileapplier.cpp" line="106"/>
         <source>monitor-only mode is on</source>
         <translation>der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="131"/>
+        <location filename="../lib/model/profileapplier.cpp" line="165"/>
         <source>reading the device</source>
         <translation>Gerät wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="188"/>
+        <location filename="../lib/model/profileapplier.cpp" line="227"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="190"/>
+        <location filename="../lib/model/profileapplier.cpp" line="229"/>
         <source>unreadable value</source>
         <translation>unlesbarer Wert</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="58"/>
+        <location filename="../lib/model/profileapplier.cpp" line="76"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>das Profil würde die Grenzen seiner Einstellungen verletzen (MIT ≤ MAT, MIT ≤ ausgewählte Temperatur ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="84"/>
+        <location filename="../lib/model/profileapplier.cpp" line="96"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>keine der Einstellungen des Profils gibt es an diesem %1 (übersprungen: %2)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/profileapplier.cpp" line="49"/>
+        <source>%n skipped</source>
+        <translation>
+            <numerusform>%n übersprungen</numerusform>
+            <numerusform>%n übersprungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="121"/>
+        <source>this %1 has no such setting</source>
+        <translation>dieses %1 hat keine solche Einstellung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <source>skipped %1 %2: %3</source>
+        <translation>übersprungen %1 %2: %3</translation>
     </message>
 </context>
 <context>
@@ -3170,33 +3209,33 @@ Dauerhaft mit dieser udev-Regel:
     </message>
     <message>
         <location filename="../lib/model/session.cpp" line="112"/>
-        <location filename="../lib/model/session.cpp" line="123"/>
-        <location filename="../lib/model/session.cpp" line="130"/>
+        <location filename="../lib/model/session.cpp" line="125"/>
+        <location filename="../lib/model/session.cpp" line="132"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="146"/>
+        <location filename="../lib/model/session.cpp" line="148"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="221"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="220"/>
+        <location filename="../lib/model/session.cpp" line="222"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="226"/>
+        <location filename="../lib/model/session.cpp" line="228"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="234"/>
+        <location filename="../lib/model/session.cpp" line="236"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -5183,230 +5222,270 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="78"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="115"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="122"/>
         <source>family %1</source>
         <translation>Familie %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="123"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="87"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="89"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
         <source>transformer %1</source>
         <translation>Transformator %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="92"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="129"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="96"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Stationsfehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
         <source>feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="109"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
         <source>fed %1</source>
         <translation>vorgeschoben %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="111"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>speed %1</source>
         <translation>Geschwindigkeit %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.h" line="21"/>
+        <location filename="../app/gui/pages/overviewpage.h" line="24"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
+        <source>not connected, as last read</source>
+        <translation>nicht verbunden, wie zuletzt gelesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="169"/>
+        <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
+        <translation>⚠ Nicht verbunden: noch nichts gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="171"/>
+        <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
+        <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt um %1 gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
+        <source>Monitor-only mode is on: the robot controls are off.</source>
+        <translation>Nur-Beobachten ist an: die Robotersteuerung ist aus.</translation>
     </message>
 </context>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="62"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="72"/>
         <source>Allowed: %1</source>
         <translation>Zulässig: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="63"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="73"/>
         <source>Command: %1</source>
         <translation>Befehl: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="86"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="94"/>
         <source>%1 disabled</source>
         <translation>%1 deaktiviert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="175"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="143"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="178"/>
         <source>reading…</source>
         <translation>wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="146"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
         <source>not saved</source>
         <translation>nicht gesichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="146"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
         <source>✓ in sync</source>
         <translation>✓ synchron</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="150"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="188"/>
         <source>edited</source>
         <translation>geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="154"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="192"/>
         <source>writing…</source>
         <translation>wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="157"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="195"/>
         <source>✗ failed</source>
         <translation>✗ fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="162"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="200"/>
         <source>✗ refused</source>
         <translation>✗ abgelehnt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
+        <source>last read %1</source>
+        <translation>zuletzt gelesen %1</translation>
     </message>
 </context>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="24"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="43"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="35"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Tip temperature, port %1</source>
         <translation>Spitzentemperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="42"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="55"/>
         <source>Power, port %1</source>
         <translation>Leistung, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="71"/>
         <source>Work</source>
         <translation>Arbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="72"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="73"/>
         <source>Cool</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="74"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="52"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="75"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="54"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="77"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="81"/>
         <source>New selected temperature, port %1</source>
         <translation>Neue eingestellte Temperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="59"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="82"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="97"/>
-        <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="105"/>
-        <source>Monitor-only mode is on: nothing is written</source>
-        <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="175"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="134"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="176"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="177"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="137"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="179"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="139"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="204"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="142"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="182"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="144"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="184"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="215"/>
+        <source>⚠ Error: %1</source>
+        <translation>⚠ Fehler: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="220"/>
+        <source>status: %1</source>
+        <translation>Zustand: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="222"/>
+        <source>alarm: %1</source>
+        <translation>Alarm: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="194"/>
+        <source>Not connected: last read %1</source>
+        <translation>Nicht verbunden: zuletzt gelesen %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="196"/>
+        <source>Not connected: not read yet</source>
+        <translation>Nicht verbunden: noch nicht gelesen</translation>
     </message>
 </context>
 <context>
@@ -5488,63 +5567,58 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Profil für %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Setting</source>
         <translation>Einstellung</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Device now</source>
         <translation>Gerät jetzt</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Profile</source>
         <translation>Profil</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="34"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38"/>
         <source>The dry run&apos;s frames and the apply report appear here.</source>
         <translation>Hier erscheinen die Telegramme des Probelaufs und der Bericht der Übernahme.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="42"/>
         <source>Apply anyway: the profile is for a %1, this is a %2 (only the settings both have are written)</source>
         <translation>Trotzdem anwenden: das Profil ist für %1, dieses Gerät ist %2 (nur die Einstellungen, die beide haben, werden geschrieben)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="44"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="48"/>
         <source>Compare again</source>
         <translation>Erneut vergleichen</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="45"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="49"/>
         <source>Dry run</source>
         <translation>Probelauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="46"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="50"/>
         <source>Apply to device</source>
         <translation>Auf Gerät anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="47"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="51"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="66"/>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="104"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="71"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="116"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
-    <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="118"/>
-        <source>&lt;b&gt;Refused:&lt;/b&gt; %1</source>
-        <translation>&lt;b&gt;Abgelehnt:&lt;/b&gt; %1</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="123"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="185"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Profil von %1 (%2, Software %3), erstellt: %4. %n Einstellung weicht vom Gerät ab.</numerusform>
@@ -5552,7 +5626,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="129"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="176"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Probelauf: %n Telegramm würde gesendet; nichts wurde geschrieben.</numerusform>
@@ -5560,151 +5634,196 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="133"/>
-        <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches.</source>
-        <translation>&lt;b&gt;Angewendet.&lt;/b&gt; Jeder geschriebene Wert wurde zurückgelesen und stimmt überein.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="134"/>
-        <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; See the report below.</source>
-        <translation>&lt;b&gt;Nicht alles wurde angewendet.&lt;/b&gt; Siehe Bericht unten.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="102"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="114"/>
         <source>The profile would break the device&apos;s limits; see above</source>
         <translation>Das Profil würde die Grenzen des Geräts verletzen; siehe oben</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="120"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="172"/>
         <source>&lt;b&gt;This profile cannot be applied to this device:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Dieses Profil lässt sich auf dieses Gerät nicht anwenden:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
+        <source>Note</source>
+        <translation>Hinweis</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="180"/>
+        <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches; the table shows the device as it now is.</source>
+        <translation>&lt;b&gt;Angewendet.&lt;/b&gt; Jeder geschriebene Wert wurde zurückgelesen und stimmt; die Tabelle zeigt das Gerät, wie es jetzt ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="182"/>
+        <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; The table shows the device as it now is; see the report below.</source>
+        <translation>&lt;b&gt;Nicht alles wurde angewendet.&lt;/b&gt; Die Tabelle zeigt das Gerät, wie es jetzt ist; siehe den Bericht unten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="193"/>
+        <source>Comment: %1</source>
+        <translation>Kommentar: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="151"/>
+        <source>✓ changed from %1</source>
+        <translation>✓ geändert von %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="152"/>
+        <source>✗ failed: %1</source>
+        <translation>✗ fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="156"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157"/>
+        <source>skipped: %1</source>
+        <translation>übersprungen: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="165"/>
+        <source>%n setting(s) of the profile skipped: this device does not take them.</source>
+        <translation>
+            <numerusform>%n Einstellung des Profils übersprungen: dieses Gerät nimmt sie nicht an.</numerusform>
+            <numerusform>%n Einstellungen des Profils übersprungen: dieses Gerät nimmt sie nicht an.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="168"/>
+        <source>&lt;b&gt;Refused, nothing was written:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Abgelehnt, nichts wurde geschrieben:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="170"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="174"/>
+        <source>The table shows what the profile would change.</source>
+        <translation>Die Tabelle zeigt, was das Profil ändern würde.</translation>
     </message>
 </context>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Zurücknehmen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Save to station &amp;memory</source>
         <translation>Im Stations&amp;speicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>Die eingestellte Temperatur ist flüchtig: W-NVS speichert sie, damit sie einen Neustart übersteht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
         <source>Station actions</source>
         <translation>Stationsaktionen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="43"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
         <source>Profiles</source>
         <translation>Profile</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
         <source>Save device settings to a profile…</source>
         <translation>Geräteeinstellungen in einem Profil speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="48"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="52"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Profil öffnen (vergleichen, Probelauf, anwenden)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="51"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="55"/>
         <source>Port:</source>
         <translation>Port:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="131"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Verbinden Sie sich und wählen Sie ein Gerät, um seine Einstellungen zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="134"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
         <source>Port %1 (%2)</source>
         <translation>Port %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="138"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
         <source>Station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="165"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="166"/>
         <source>Alarms, port %1</source>
         <translation>Alarme, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
         <source>Tool %1, port %2</source>
         <translation>Werkzeug %1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
         <source> (connected)</source>
         <translation> (angeschlossen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="174"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dosierung (Drahtvorschub der ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="182"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>&amp;Apply (%1)</source>
         <translation>&amp;Anwenden (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="196"/>
-        <source>Monitor-only mode is on: nothing is written</source>
-        <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="221"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="278"/>
         <source>Save to station memory</source>
         <translation>Im Stationsspeicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="289"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Neue Adresse (1-99) oder 0 für Telegramme ohne Adressen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="239"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="296"/>
         <source>%1
 
 %2
@@ -5717,33 +5836,91 @@ Do you want to continue?</source>
 Möchten Sie fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="254"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="260"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="266"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="311"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="317"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="331"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Einige Einstellungen wurden noch nicht gelesen (%1). Aktualisieren Sie und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="261"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="273"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="353"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="272"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="279"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="359"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.h" line="25"/>
+        <location filename="../app/gui/pages/settingspage.h" line="32"/>
         <source>Settings</source>
         <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
+        <source>⚠ Not connected: the greyed values are as last read (the time is beside each). Apply, Save to station memory, Station actions and Profiles wait for the line.</source>
+        <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt gelesen (die Zeit steht daneben). Anwenden, Im Stationsspeicher sichern, Stationsaktionen und Profile warten auf die Leitung.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="236"/>
+        <source>Monitor-only mode is on: Apply, Save to station memory and Station actions are off, nothing is written.</source>
+        <translation>Nur-Beobachten ist an: Anwenden, Im Stationsspeicher sichern und Stationsaktionen sind aus, nichts wird geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="324"/>
+        <source>A comment for the profile (optional), e.g. what it is for or who set it:</source>
+        <translation>Ein Kommentar zum Profil (optional), z. B. wofür es ist oder wer es eingestellt hat:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="336"/>
+        <source>no device is selected</source>
+        <translation>kein Gerät ausgewählt</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/settingspage.cpp" line="343"/>
+        <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
+        <translation>
+            <numerusform>✓ Profil gespeichert: %n Einstellung von %1 in %2</numerusform>
+            <numerusform>✓ Profil gespeichert: %n Einstellungen von %1 in %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::Sparkline</name>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="63"/>
+        <source>Last minute of tip temperature and power</source>
+        <translation>Letzte Minute von Spitzentemperatur und Leistung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="83"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="87"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="88"/>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="100"/>
+        <source>no samples yet</source>
+        <translation>noch keine Messwerte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
+        <source>1 min</source>
+        <translation>1 min</translation>
     </message>
 </context>
 <context>

@@ -1938,29 +1938,55 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="69"/>
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="70"/>
+        <location filename="../lib/model/devicemodel.cpp" line="71"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="74"/>
+        <location filename="../lib/model/devicemodel.cpp" line="75"/>
+        <location filename="../lib/model/devicemodel.cpp" line="145"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="153"/>
+        <location filename="../lib/model/devicemodel.cpp" line="206"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="106"/>
+        <location filename="../lib/model/devicemodel.cpp" line="107"/>
         <source>—</source>
         <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="131"/>
+        <source>tool %1</source>
+        <translation>herramienta %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="142"/>
+        <source>%1, %2, port %3</source>
+        <translation>%1, %2, puerto %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="148"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="191"/>
+        <source>Monitor-only mode is on: nothing is written.</source>
+        <translation>El modo solo monitorización está activo: no se escribe nada.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/devicemodel.cpp" line="193"/>
+        <source>Not connected: nothing can be sent until the line is back.</source>
+        <translation>No conectado: no se puede enviar nada hasta que vuelva la línea.</translation>
     </message>
 </context>
 <context>
@@ -2718,7 +2744,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="119"/>
-        <location filename="../lib/model/parameter.cpp" line="217"/>
+        <location filename="../lib/model/parameter.cpp" line="231"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
@@ -2728,47 +2754,47 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="174"/>
+        <location filename="../lib/model/parameter.cpp" line="188"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="186"/>
+        <location filename="../lib/model/parameter.cpp" line="200"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="187"/>
+        <location filename="../lib/model/parameter.cpp" line="201"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="236"/>
+        <location filename="../lib/model/parameter.cpp" line="251"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="239"/>
+        <location filename="../lib/model/parameter.cpp" line="254"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="260"/>
+        <location filename="../lib/model/parameter.cpp" line="276"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="274"/>
+        <location filename="../lib/model/parameter.cpp" line="291"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="287"/>
+        <location filename="../lib/model/parameter.cpp" line="304"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="300"/>
+        <location filename="../lib/model/parameter.cpp" line="318"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -2875,14 +2901,9 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/portmodel.cpp" line="109"/>
-        <location filename="../lib/model/portmodel.cpp" line="126"/>
+        <location filename="../lib/model/portmodel.cpp" line="124"/>
         <source>—</source>
         <translation>—</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/portmodel.cpp" line="115"/>
-        <source>tool %1</source>
-        <translation>herramienta %1</translation>
     </message>
     <message>
         <location filename="../lib/model/portmodel.cpp" line="60"/>
@@ -2900,7 +2921,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>Ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="187"/>
+        <location filename="../lib/model/portmodel.cpp" line="185"/>
         <source>this port has no %1 command</source>
         <translation>este puerto no tiene el comando %1</translation>
     </message>
@@ -2936,85 +2957,80 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="72"/>
+        <location filename="../lib/model/profile.cpp" line="113"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: no es un ajuste de %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="77"/>
+        <location filename="../lib/model/profile.cpp" line="118"/>
         <source>%1: &apos;%2&apos; is not a valid data field</source>
         <translation>%1: &apos;%2&apos; no es un campo de datos válido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="82"/>
-        <location filename="../lib/model/profile.cpp" line="170"/>
+        <location filename="../lib/model/profile.cpp" line="123"/>
+        <location filename="../lib/model/profile.cpp" line="223"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="100"/>
+        <location filename="../lib/model/profile.cpp" line="141"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="111"/>
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="114"/>
-        <source>profile schema %1 is not supported (this version reads schema %2)</source>
-        <translation>el esquema de perfil %1 no es compatible (esta versión lee el esquema %2)</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/profile.cpp" line="120"/>
+        <location filename="../lib/model/profile.cpp" line="163"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>familia de equipo desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="128"/>
+        <location filename="../lib/model/profile.cpp" line="171"/>
         <source>the profile has no values</source>
         <translation>el perfil no tiene valores</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="132"/>
+        <location filename="../lib/model/profile.cpp" line="177"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="138"/>
+        <location filename="../lib/model/profile.cpp" line="191"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>el perfil se rechaza, no se escribirá nada:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="146"/>
+        <location filename="../lib/model/profile.cpp" line="199"/>
         <source>cannot write %1: %2</source>
         <translation>no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="155"/>
+        <location filename="../lib/model/profile.cpp" line="208"/>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="161"/>
+        <location filename="../lib/model/profile.cpp" line="214"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="185"/>
+        <location filename="../lib/model/profile.cpp" line="239"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="95"/>
+        <location filename="../lib/model/profile.cpp" line="136"/>
         <source>not a valid JSON file: %1</source>
         <translation>no es un archivo JSON válido: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="105"/>
+        <location filename="../lib/model/profile.cpp" line="146"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>indicado más de una vez, así que no está claro qué valor se quiere: %1; no se escribirá nada</translation>
     </message>
@@ -3027,6 +3043,16 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <location filename="../lib/model/profilejson.cpp" line="102"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>carácter de control 0x%1 en el byte %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="156"/>
+        <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
+        <translation>el esquema de perfil %1 no es compatible (esta versión lee los esquemas %2 a %3)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="180"/>
+        <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
+        <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;, o un objeto con uno en &quot;raw&quot; (y texto en &quot;name&quot; y &quot;value&quot;)</translation>
     </message>
 </context>
 <context>
@@ -3057,17 +3083,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>se enviaría %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="44"/>
-        <source>skipped %1</source>
-        <translation>omitido %1</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/profileapplier.cpp" line="46"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>cancelado: los valores restantes no se escribieron</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profileapplier.cpp" line="55"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n diferencia</numerusform>
@@ -3075,46 +3096,64 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="48"/>
+        <location filename="../lib/model/profileapplier.cpp" line="56"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 cambiados, %2 ya correctos, %3 fallidos</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="77"/>
+        <location filename="../lib/model/profileapplier.cpp" line="101"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>el perfil es para %1 y este equipo es %2 (fuerce la aplicación para escribir los ajustes que comparten)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="90"/>
+        <location filename="../lib/model/profileapplier.cpp" line="106"/>
         <source>monitor-only mode is on</source>
         <translation>el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="131"/>
+        <location filename="../lib/model/profileapplier.cpp" line="165"/>
         <source>reading the device</source>
         <translation>leyendo el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="188"/>
+        <location filename="../lib/model/profileapplier.cpp" line="227"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="190"/>
+        <location filename="../lib/model/profileapplier.cpp" line="229"/>
         <source>unreadable value</source>
         <translation>valor ilegible</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="58"/>
+        <location filename="../lib/model/profileapplier.cpp" line="76"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>el perfil rompería los límites de sus ajustes (MIT ≤ MAT, MIT ≤ temperatura seleccionada ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="84"/>
+        <location filename="../lib/model/profileapplier.cpp" line="96"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>ninguno de los ajustes del perfil existe en este %1 (omitidos: %2)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/profileapplier.cpp" line="49"/>
+        <source>%n skipped</source>
+        <translation>
+            <numerusform>%n omitido</numerusform>
+            <numerusform>%n omitidos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="121"/>
+        <source>this %1 has no such setting</source>
+        <translation>este %1 no tiene ese ajuste</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <source>skipped %1 %2: %3</source>
+        <translation>omitido %1 %2: %3</translation>
     </message>
 </context>
 <context>
@@ -3172,33 +3211,33 @@ Hágalo permanente con esta regla de udev:
     </message>
     <message>
         <location filename="../lib/model/session.cpp" line="112"/>
-        <location filename="../lib/model/session.cpp" line="123"/>
-        <location filename="../lib/model/session.cpp" line="130"/>
+        <location filename="../lib/model/session.cpp" line="125"/>
+        <location filename="../lib/model/session.cpp" line="132"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="146"/>
+        <location filename="../lib/model/session.cpp" line="148"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="219"/>
+        <location filename="../lib/model/session.cpp" line="221"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="220"/>
+        <location filename="../lib/model/session.cpp" line="222"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="226"/>
+        <location filename="../lib/model/session.cpp" line="228"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="234"/>
+        <location filename="../lib/model/session.cpp" line="236"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -5185,230 +5224,270 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="78"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="115"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="85"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="122"/>
         <source>family %1</source>
         <translation>familia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="86"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="123"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="87"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="89"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
         <source>transformer %1</source>
         <translation>transformador %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="91"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="92"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="129"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="96"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Error de estación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="107"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
         <source>idle</source>
         <translation>en espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="109"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
         <source>fed %1</source>
         <translation>alimentado %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="111"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>speed %1</source>
         <translation>velocidad %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.h" line="21"/>
+        <location filename="../app/gui/pages/overviewpage.h" line="24"/>
         <source>Overview</source>
         <translation>Vista general</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
+        <source>not connected, as last read</source>
+        <translation>no conectado, según la última lectura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="169"/>
+        <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
+        <translation>⚠ No conectado: aún no se ha leído nada. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="171"/>
+        <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
+        <translation>⚠ No conectado: los valores en gris son los de la última lectura a las %1. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
+        <source>Monitor-only mode is on: the robot controls are off.</source>
+        <translation>El modo solo monitorización está activo: los mandos del robot están desactivados.</translation>
     </message>
 </context>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="62"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="72"/>
         <source>Allowed: %1</source>
         <translation>Permitido: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="63"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="73"/>
         <source>Command: %1</source>
         <translation>Comando: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="86"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="94"/>
         <source>%1 disabled</source>
         <translation>%1 desactivado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="140"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="175"/>
         <source>not read</source>
         <translation>no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="143"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="178"/>
         <source>reading…</source>
         <translation>leyendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="146"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
         <source>not saved</source>
         <translation>no guardado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="146"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
         <source>✓ in sync</source>
         <translation>✓ sincronizado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="150"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="188"/>
         <source>edited</source>
         <translation>editado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="154"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="192"/>
         <source>writing…</source>
         <translation>escribiendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="157"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="195"/>
         <source>✗ failed</source>
         <translation>✗ falló</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="162"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="200"/>
         <source>✗ refused</source>
         <translation>✗ rechazado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
+        <source>last read %1</source>
+        <translation>última lectura %1</translation>
     </message>
 </context>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="24"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="43"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="35"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Tip temperature, port %1</source>
         <translation>Temperatura de la punta, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="42"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="55"/>
         <source>Power, port %1</source>
         <translation>Potencia, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="71"/>
         <source>Work</source>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="72"/>
         <source>Stand</source>
         <translation>Soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="50"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="73"/>
         <source>Cool</source>
         <translation>Enfriar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="74"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: calentar a la temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="52"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="75"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: soporte; el reposo y la hibernación siguen tras sus retardos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="54"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="77"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: enfriamiento (extractor en espera)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="58"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="81"/>
         <source>New selected temperature, port %1</source>
         <translation>Nueva temperatura seleccionada, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="59"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="82"/>
         <source>Set</source>
         <translation>Fijar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="97"/>
-        <source>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;%1&lt;/span&gt;</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="105"/>
-        <source>Monitor-only mode is on: nothing is written</source>
-        <translation>El modo solo supervisión está activado: no se escribe nada</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="133"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="175"/>
         <source>Port %1 — %2</source>
         <translation>Puerto %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="134"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="176"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="135"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="177"/>
         <source>set %1</source>
         <translation>consigna %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="137"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="179"/>
         <source>power %1</source>
         <translation>potencia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="139"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="204"/>
         <source>status unknown</source>
         <translation>estado desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="142"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="182"/>
         <source>transistor %1</source>
         <translation>transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="144"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="184"/>
         <source>%1 until the next mode</source>
         <translation>%1 hasta el siguiente modo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="215"/>
+        <source>⚠ Error: %1</source>
+        <translation>⚠ Error: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="220"/>
+        <source>status: %1</source>
+        <translation>estado: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="222"/>
+        <source>alarm: %1</source>
+        <translation>alarma: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="194"/>
+        <source>Not connected: last read %1</source>
+        <translation>No conectado: última lectura %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="196"/>
+        <source>Not connected: not read yet</source>
+        <translation>No conectado: aún sin leer</translation>
     </message>
 </context>
 <context>
@@ -5490,63 +5569,58 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Perfil para %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Setting</source>
         <translation>Ajuste</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Device now</source>
         <translation>Equipo ahora</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="28"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Profile</source>
         <translation>Perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="34"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38"/>
         <source>The dry run&apos;s frames and the apply report appear here.</source>
         <translation>Aquí aparecen las tramas de la simulación y el informe de la aplicación.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="42"/>
         <source>Apply anyway: the profile is for a %1, this is a %2 (only the settings both have are written)</source>
         <translation>Aplicar de todos modos: el perfil es para %1 y este equipo es %2 (solo se escriben los ajustes que tienen ambos)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="44"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="48"/>
         <source>Compare again</source>
         <translation>Comparar de nuevo</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="45"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="49"/>
         <source>Dry run</source>
         <translation>Simulación</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="46"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="50"/>
         <source>Apply to device</source>
         <translation>Aplicar al equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="47"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="51"/>
         <source>Stop</source>
         <translation>Detener</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="66"/>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="104"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="71"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="116"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
-    <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="118"/>
-        <source>&lt;b&gt;Refused:&lt;/b&gt; %1</source>
-        <translation>&lt;b&gt;Rechazado:&lt;/b&gt; %1</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="123"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="185"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Perfil de %1 (%2, software %3), creado: %4. %n ajuste difiere del equipo.</numerusform>
@@ -5554,7 +5628,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="129"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="176"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Simulación: se enviaría %n trama; no se escribió nada.</numerusform>
@@ -5562,151 +5636,196 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="133"/>
-        <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches.</source>
-        <translation>&lt;b&gt;Aplicado.&lt;/b&gt; Todos los valores escritos se volvieron a leer y coinciden.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="134"/>
-        <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; See the report below.</source>
-        <translation>&lt;b&gt;No se aplicó todo.&lt;/b&gt; Consulte el informe de abajo.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="102"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="114"/>
         <source>The profile would break the device&apos;s limits; see above</source>
         <translation>El perfil rompería los límites del equipo; véase arriba</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="120"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="172"/>
         <source>&lt;b&gt;This profile cannot be applied to this device:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Este perfil no se puede aplicar a este equipo:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
+        <source>Note</source>
+        <translation>Nota</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="180"/>
+        <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches; the table shows the device as it now is.</source>
+        <translation>&lt;b&gt;Aplicado.&lt;/b&gt; Cada valor escrito se ha releído y coincide; la tabla muestra el equipo tal como está ahora.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="182"/>
+        <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; The table shows the device as it now is; see the report below.</source>
+        <translation>&lt;b&gt;No se ha aplicado todo.&lt;/b&gt; La tabla muestra el equipo tal como está ahora; vea el informe abajo.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="193"/>
+        <source>Comment: %1</source>
+        <translation>Comentario: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="151"/>
+        <source>✓ changed from %1</source>
+        <translation>✓ cambiado desde %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="152"/>
+        <source>✗ failed: %1</source>
+        <translation>✗ fallido: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="156"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157"/>
+        <source>skipped: %1</source>
+        <translation>omitido: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="165"/>
+        <source>%n setting(s) of the profile skipped: this device does not take them.</source>
+        <translation>
+            <numerusform>%n ajuste del perfil omitido: este equipo no lo admite.</numerusform>
+            <numerusform>%n ajustes del perfil omitidos: este equipo no los admite.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="168"/>
+        <source>&lt;b&gt;Refused, nothing was written:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Rechazado, no se ha escrito nada:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="170"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="174"/>
+        <source>The table shows what the profile would change.</source>
+        <translation>La tabla muestra lo que el perfil cambiaría.</translation>
     </message>
 </context>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="32"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="33"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="35"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Revertir</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="36"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Save to station &amp;memory</source>
         <translation>Guardar en la &amp;memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>La temperatura seleccionada es volátil: W-NVS la guarda para que se conserve tras reiniciar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
         <source>Station actions</source>
         <translation>Acciones de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="43"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
         <source>Profiles</source>
         <translation>Perfiles</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="46"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
         <source>Save device settings to a profile…</source>
         <translation>Guardar los ajustes del equipo en un perfil…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="48"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="52"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Abrir un perfil (comparar, simular, aplicar)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="51"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="55"/>
         <source>Port:</source>
         <translation>Puerto:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="131"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Conéctese y seleccione un equipo para ver sus ajustes.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="134"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
         <source>Port %1 (%2)</source>
         <translation>Puerto %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="138"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
         <source>Station</source>
         <translation>Estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="165"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="166"/>
         <source>Alarms, port %1</source>
         <translation>Alarmas, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
         <source>Tool %1, port %2</source>
         <translation>Herramienta %1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
         <source> (connected)</source>
         <translation> (conectada)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="174"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dispensado (alimentación de hilo de la ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="182"/>
         <source>Feeding</source>
         <translation>Alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="188"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>&amp;Apply (%1)</source>
         <translation>A&amp;plicar (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="196"/>
-        <source>Monitor-only mode is on: nothing is written</source>
-        <translation>El modo solo supervisión está activado: no se escribe nada</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="221"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="278"/>
         <source>Save to station memory</source>
         <translation>Guardar en la memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="289"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Nueva dirección (1-99), o 0 para tramas sin direcciones:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="239"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="296"/>
         <source>%1
 
 %2
@@ -5719,33 +5838,91 @@ Do you want to continue?</source>
 ¿Desea continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="254"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="260"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="266"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="311"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="317"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="331"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="255"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Algunos ajustes aún no se han leído (%1). Actualice y vuelva a intentarlo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="261"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="273"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="353"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="272"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="279"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="359"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.h" line="25"/>
+        <location filename="../app/gui/pages/settingspage.h" line="32"/>
         <source>Settings</source>
         <translation>Ajustes</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
+        <source>⚠ Not connected: the greyed values are as last read (the time is beside each). Apply, Save to station memory, Station actions and Profiles wait for the line.</source>
+        <translation>⚠ No conectado: los valores en gris son los de la última lectura (la hora está al lado). Aplicar, Guardar en la memoria de la estación, Acciones de la estación y Perfiles esperan a la línea.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="236"/>
+        <source>Monitor-only mode is on: Apply, Save to station memory and Station actions are off, nothing is written.</source>
+        <translation>El modo solo monitorización está activo: Aplicar, Guardar en la memoria de la estación y Acciones de la estación están desactivados, no se escribe nada.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="324"/>
+        <source>A comment for the profile (optional), e.g. what it is for or who set it:</source>
+        <translation>Un comentario para el perfil (opcional), p. ej. para qué es o quién lo configuró:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/settingspage.cpp" line="336"/>
+        <source>no device is selected</source>
+        <translation>no hay ningún equipo seleccionado</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/settingspage.cpp" line="343"/>
+        <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
+        <translation>
+            <numerusform>✓ Perfil guardado: %n ajuste de %1 en %2</numerusform>
+            <numerusform>✓ Perfil guardado: %n ajustes de %1 en %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::Sparkline</name>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="63"/>
+        <source>Last minute of tip temperature and power</source>
+        <translation>Último minuto de temperatura de punta y potencia</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="83"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="87"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="88"/>
+        <source>%1 to %2</source>
+        <translation>de %1 a %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="100"/>
+        <source>no samples yet</source>
+        <translation>aún no hay muestras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
+        <source>1 min</source>
+        <translation>1 min</translation>
     </message>
 </context>
 <context>

@@ -23,7 +23,8 @@ DeviceModel::DeviceModel(RequestQueue &queue, const DeviceInfo &info, const Cata
     : QObject(parent)
     , m_queue(queue)
     , m_info(info)
-    , m_catalog(catalog) {
+    , m_catalog(catalog)
+    , m_lineUp(queue.isOpen()) {
     const Catalog &cat = m_catalog;
     QMap<QByteArray, std::optional<ResolvedCommand>> reads, writes;
     QList<QByteArray> order;
@@ -122,6 +123,40 @@ QList<Parameter *> DeviceModel::parameters(Group group, int port, int tool) cons
     return out;
 }
 
+QString toolName(const Catalog &catalog, const QString &family, int tool, Wording wording) {
+    const QMap<int, QString> tools = catalog.table(QStringLiteral("$toolTable"), family);
+    if (tools.contains(tool))
+        return catalogText(tools.value(tool), wording);
+    return wording == Wording::Catalog ? QStringLiteral("tool %1").arg(tool)
+                                       : Tr::tr("tool %1").arg(tool);
+}
+
+QString qualifiedName(const Catalog &catalog, const ResolvedCommand &cmd, Wording wording) {
+    const bool english = wording == Wording::Catalog;
+    const QString name = catalogText(cmd.spec->name, wording);
+    const int port = cmd.port;
+    const QString tool =
+        cmd.tool >= 0 ? toolName(catalog, cmd.family, cmd.tool, wording) : QString();
+    if (port > 0 && !tool.isEmpty())
+        return english ? QStringLiteral("%1, %2, port %3").arg(name, tool).arg(port)
+                       : Tr::tr("%1, %2, port %3").arg(name, tool).arg(port);
+    if (port > 0)
+        return english ? QStringLiteral("%1, port %2").arg(name).arg(port)
+                       : Tr::tr("%1, port %2").arg(name).arg(port);
+    if (!tool.isEmpty())
+        return english ? QStringLiteral("%1, %2").arg(name, tool)
+                       : Tr::tr("%1, %2").arg(name, tool);
+    return name;
+}
+
+QString DeviceModel::toolName(int tool, Wording wording) const {
+    return model::toolName(m_catalog, family(), tool, wording);
+}
+
+QString DeviceModel::qualifiedLabel(const Parameter &p, Wording wording) const {
+    return qualifiedName(m_catalog, p.spec(), wording);
+}
+
 QString DeviceModel::commandName(Role role) const {
     const CommandSpec *spec = m_catalog.command(role);
     return spec ? spec->pattern : roleName(role);
@@ -139,6 +174,24 @@ void DeviceModel::setWritesBlocked(bool blocked) {
         return;
     m_writesBlocked = blocked;
     Q_EMIT writesBlockedChanged(blocked);
+}
+
+void DeviceModel::setLineUp(bool up) {
+    if (up == m_lineUp)
+        return;
+    m_lineUp = up;
+    if (up)
+        for (Parameter *p : std::as_const(m_parameters))
+            p->lineRestored();
+    Q_EMIT lineUpChanged(up);
+}
+
+QString DeviceModel::writesUnavailableReason() const {
+    if (m_writesBlocked)
+        return Tr::tr("Monitor-only mode is on: nothing is written.");
+    if (!m_lineUp)
+        return Tr::tr("Not connected: nothing can be sent until the line is back.");
+    return {};
 }
 
 void DeviceModel::refreshAll(Priority priority) {

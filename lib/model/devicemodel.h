@@ -8,7 +8,10 @@
 // (tests add entries); it must outlive the model.
 //
 // Requests go through the line's RequestQueue with this model as the owner of every Reply, so
-// deleting the model withdraws whatever it still had queued. Communication failures of its
+// deleting the model withdraws whatever it still had queued. Whoever owns the line (the Session)
+// says whether it is up: while it is down every value is only what was last read (each
+// Parameter's lastUpdate()), and pages show it as stale; when it is back, the failures the lost
+// line caused are cleared (Parameter::lineRestored()). Communication failures of its
 // requests and changes of errors, alarms and status are written to the EventLog if one is set.
 #pragma once
 
@@ -24,6 +27,15 @@
 #include <QPointer>
 
 namespace tipscope::model {
+
+// A command's name with its tool and port when it has them ("Sleep delay, T245, port 1"), in
+// `wording`; the tool's name comes from the family's tool table of `catalog`.
+[[nodiscard]] QString qualifiedName(const protocol::Catalog &catalog,
+                                    const protocol::ResolvedCommand &cmd,
+                                    protocol::Wording wording = protocol::Wording::Translated);
+// A tool's name from the family's tool table ("T245"), or "tool 9" for one it lacks.
+[[nodiscard]] QString toolName(const protocol::Catalog &catalog, const QString &family, int tool,
+                               protocol::Wording wording = protocol::Wording::Translated);
 
 class DeviceModel : public QObject {
     Q_OBJECT
@@ -62,6 +74,14 @@ public:
     [[nodiscard]] QList<Parameter *> parameters(protocol::Group group) const;
     [[nodiscard]] QList<Parameter *> parameters(protocol::Group group, int port,
                                                 int tool = -1) const;
+    // A tool's name from the family's tool table ("T245"), or "tool 9" for one it lacks.
+    [[nodiscard]] QString toolName(int tool,
+                                   protocol::Wording wording = protocol::Wording::Translated) const;
+    // A parameter's name with its tool and port when it has them ("Sleep delay, T245, port 1"),
+    // for wherever it appears out of its group (a profile, a report, a message).
+    [[nodiscard]] QString
+    qualifiedLabel(const Parameter &p,
+                   protocol::Wording wording = protocol::Wording::Translated) const;
     // What a role's command is called, for messages about one the family lacks.
     [[nodiscard]] QString commandName(protocol::Role role) const;
 
@@ -69,6 +89,12 @@ public:
     void setTemperatureUnit(TemperatureUnit unit);
     [[nodiscard]] bool writesBlocked() const { return m_writesBlocked; }
     void setWritesBlocked(bool blocked);
+    // Whether the line to the device is open; true when the model was made on an open line.
+    [[nodiscard]] bool isLineUp() const { return m_lineUp; }
+    void setLineUp(bool up);
+    // Why nothing can be written now (monitor-only, the line down), for the hint beside a
+    // disabled button; empty when writes can go.
+    [[nodiscard]] QString writesUnavailableReason() const;
     void setEventLog(EventLog *log) { m_log = log; }
     [[nodiscard]] EventLog *eventLog() const { return m_log; }
 
@@ -84,6 +110,7 @@ public:
 Q_SIGNALS:
     void temperatureUnitChanged();
     void writesBlockedChanged(bool blocked);
+    void lineUpChanged(bool up);
     void parameterChanged(tipscope::model::Parameter *parameter);
 
 protected:
@@ -103,6 +130,7 @@ private:
     QMap<protocol::Role, Action *> m_actionByRole;
     TemperatureUnit m_unit = TemperatureUnit::Celsius;
     bool m_writesBlocked = false;
+    bool m_lineUp = false;
     QPointer<EventLog> m_log;
 };
 

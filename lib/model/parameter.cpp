@@ -147,7 +147,13 @@ void Parameter::revert() {
     setState(m_value ? State::InSync : State::Unknown);
 }
 
+bool Parameter::isCurrent() const {
+    return m_value.has_value() && m_device.isLineUp();
+}
+
 void Parameter::setState(State s, const QString &failure) {
+    if (s != State::Failed)
+        m_failedByLine = false;
     if (s == m_state && failure == m_failure)
         return;
     m_state = s;
@@ -158,18 +164,26 @@ void Parameter::setState(State s, const QString &failure) {
 Reply *Parameter::refresh(Priority priority) {
     if (!m_read)
         return nullptr;
+    // A read that fails must not turn a failed write into "in sync": it goes back to the failure.
+    const bool wasFailed = m_state == State::Failed;
+    const QString failure = m_failure;
+    const bool byLine = m_failedByLine;
     if (m_state == State::Unknown || m_state == State::Failed)
         setState(State::Reading);
     Reply *reply =
         m_device.queue().enqueue(Request::read(m_device.address(), *m_read, priority), this);
-    connect(reply, &Reply::finished, this, [this, reply] {
+    connect(reply, &Reply::finished, this, [this, reply, wasFailed, failure, byLine] {
         reply->deleteLater();
         if (reply->ok()) {
             deviceReported(reply->answer().data);
             return;
         }
-        if (m_state == State::Reading)
+        if (m_state == State::Reading && wasFailed) {
+            setState(State::Failed, failure);
+            m_failedByLine = byLine;
+        } else if (m_state == State::Reading) {
             setState(m_value ? State::InSync : State::Unknown);
+        }
         m_device.logCommunication(
             Tr::tr("reading %1 (%2)").arg(settingName(*this), QString::fromLatin1(code())),
             reply->errorString());
@@ -232,12 +246,13 @@ quint64 Parameter::apply() {
             // Only a refusal or a closed line proves nothing was written; when the answer was
             // lost the device may hold the new value, so say so and look.
             const ReplyError e = reply->error();
+            const bool byLine = e == ReplyError::NotOpen || e == ReplyError::Disconnected;
             if (e == ReplyError::Nak || e == ReplyError::NotOpen || e == ReplyError::Cancelled) {
-                fail(Tr::tr("not written: %1").arg(reply->errorString()), id);
+                fail(Tr::tr("not written: %1").arg(reply->errorString()), id, byLine);
                 return;
             }
             fail(Tr::tr("perhaps not written, the answer was lost: %1").arg(reply->errorString()),
-                 id);
+                 id, byLine);
             refresh();
             return;
         }
@@ -257,7 +272,9 @@ void Parameter::readBack(const QByteArray &written, quint64 id, bool again) {
     connect(reply, &Reply::finished, this, [this, reply, written, id, again] {
         reply->deleteLater();
         if (!reply->ok()) {
-            fail(Tr::tr("written, but the read-back failed: %1").arg(reply->errorString()), id);
+            const ReplyError e = reply->error();
+            fail(Tr::tr("written, but the read-back failed: %1").arg(reply->errorString()), id,
+                 e == ReplyError::NotOpen || e == ReplyError::Disconnected);
             return;
         }
         const auto wrote = decodeAnswer(*m_read, written);
@@ -294,15 +311,23 @@ void Parameter::succeed(quint64 id) {
     Q_EMIT writeFinished(true, {}, id);
 }
 
-void Parameter::fail(const QString &reason, quint64 id) {
+void Parameter::fail(const QString &reason, quint64 id, bool byLine) {
     m_runningWrite = 0;
     setState(State::Failed, reason);
+    m_failedByLine = byLine;
     m_device.logCommunication(Tr::tr("writing %1").arg(settingName(*this)), reason);
     Q_EMIT writeFinished(false, reason, id);
 }
 
 bool Parameter::isSavedToMemory() const {
     return !meta().isVolatile || !m_unsavedWrite;
+}
+
+void Parameter::lineRestored() {
+    if (m_state != State::Failed || !m_failedByLine)
+        return;
+    setState(m_edit ? State::Edited : m_value ? State::InSync : State::Unknown);
+    refresh(Priority::Background);
 }
 
 void Parameter::markSaved() {

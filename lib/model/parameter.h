@@ -50,6 +50,9 @@ public:
     [[nodiscard]] std::optional<qint64> edit() const { return m_edit; }
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] QString failure() const { return m_failure; }
+    // A value read and the line still up: what the device holds now, as far as polling can
+    // tell. Otherwise the value (if any) is only what was read at lastUpdate().
+    [[nodiscard]] bool isCurrent() const;
     // Local time; invalid before the first reading.
     [[nodiscard]] QDateTime lastUpdate() const {
         return m_lastUpdateMs < 0 ? QDateTime() : QDateTime::fromMSecsSinceEpoch(m_lastUpdateMs);
@@ -83,6 +86,9 @@ public:
     // a new value until W-NVS saved it. What the device held before TipScope came cannot be known.
     [[nodiscard]] bool isSavedToMemory() const;
     void markSaved();
+    // The line is back (DeviceModel::setLineUp): a write that failed because the line was down
+    // or lost is no longer an error; its edit stays, to apply again, and the value is read anew.
+    void lineRestored();
 
 Q_SIGNALS:
     void valueChanged();
@@ -96,7 +102,8 @@ private:
     // `again`: the first read-back differed and this is the one more read that decides.
     void readBack(const QByteArray &written, quint64 id, bool again);
     void succeed(quint64 id);
-    void fail(const QString &reason, quint64 id);
+    // `byLine`: the line was down, so the failure ends when it is back (Session clears it).
+    void fail(const QString &reason, quint64 id, bool byLine = false);
 
     DeviceModel &m_device;
     std::optional<protocol::ResolvedCommand> m_read;
@@ -108,6 +115,7 @@ private:
     bool m_unsavedWrite = false;
     State m_state = State::Unknown;
     QString m_failure;
+    bool m_failedByLine = false; // the failure is the line's, not the device's or the value's
     qint64 m_lastUpdateMs = -1;
     double m_rateHz = 0;
     QPointer<Parameter> m_lower, m_upper;

@@ -110,9 +110,7 @@ QString PortModel::toolName() const {
 }
 
 QString PortModel::toolName(int tool) const {
-    const QMap<int, QString> tools =
-        m_station.catalog().table(QStringLiteral("$toolTable"), m_station.family());
-    return tools.contains(tool) ? catalogText(tools.value(tool)) : Tr::tr("tool %1").arg(tool);
+    return m_station.toolName(tool);
 }
 
 std::optional<int> PortModel::error() const {

@@ -20,6 +20,39 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(Profile)
 };
 const QLatin1String kFormat("tipscope-profile");
+const QString kRaw = QStringLiteral("raw");
+const QString kName = QStringLiteral("name");
+const QString kValue = QStringLiteral("value");
+
+// The value in English and °C, whatever the user interface shows: the file is data.
+QString noteValue(const ResolvedCommand &cmd, const Value &v) {
+    if (v.isText)
+        return v.text;
+    if (cmd.spec->special.contains(int(v.number)))
+        return cmd.spec->special.value(int(v.number));
+    if (cmd.spec->kind != ValueKind::Number && cmd.spec->kind != ValueKind::Delay)
+        return describeValue(cmd, v, Wording::Catalog);
+    const DisplayFormat f = displayFormat(cmd, TemperatureUnit::Celsius);
+    const QString number =
+        QString::number(toDisplay(cmd, v.number, TemperatureUnit::Celsius), 'f', f.decimals);
+    return f.unit.isEmpty() ? number : number + QLatin1Char(' ') + f.unit;
+}
+
+// One entry of "values": a data field in quotes or, from schema 2, an object with it in "raw".
+std::optional<QByteArray> rawOf(const QJsonValue &v, int schema, ProfileNote *note) {
+    if (v.isString())
+        return v.toString().toLatin1();
+    if (schema < 2 || !v.isObject())
+        return std::nullopt;
+    const QJsonObject o = v.toObject();
+    for (const QString &key : {kName, kValue})
+        if (o.contains(key) && !o.value(key).isString())
+            return std::nullopt;
+    if (!o.value(kRaw).isString())
+        return std::nullopt;
+    *note = {o.value(kName).toString(), o.value(kValue).toString()};
+    return o.value(kRaw).toString().toLatin1();
+}
 } // namespace
 
 bool Profile::isProfileParameter(const Parameter &p) {
@@ -42,6 +75,8 @@ Profile Profile::capture(const DeviceModel &device, QStringList *missing) {
             continue;
         }
         pr.values.append({p->code(), p->rawValue()});
+        pr.notes.insert(p->code(), {device.qualifiedLabel(*p, Wording::Catalog),
+                                    noteValue(p->spec(), *p->value())});
     }
     return pr;
 }
@@ -55,8 +90,14 @@ QByteArray Profile::toJson() const {
                      {QStringLiteral("created"), created.toString(Qt::ISODateWithMs)},
                      {QStringLiteral("comment"), comment}};
     QJsonObject v;
-    for (const auto &[code, data] : values)
-        v.insert(QString::fromLatin1(code), QString::fromLatin1(data));
+    for (const auto &[code, data] : values) {
+        QJsonObject entry{{kRaw, QString::fromLatin1(data)}};
+        if (const auto note = notes.find(code); note != notes.end()) {
+            entry.insert(kName, note->name);
+            entry.insert(kValue, note->value);
+        }
+        v.insert(QString::fromLatin1(code), entry);
+    }
     root.insert(QStringLiteral("values"), v);
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
@@ -110,10 +151,12 @@ std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error)
     if (!doc.isObject() || root.value(QStringLiteral("format")).toString() != kFormat)
         return fail(Tr::tr("not a TipScope profile (no \"format\": \"tipscope-profile\")"));
     const int schema = root.value(QStringLiteral("schema")).toInt(-1);
-    if (schema != kProfileSchema)
-        return fail(Tr::tr("profile schema %1 is not supported (this version reads schema %2)")
-                        .arg(schema)
-                        .arg(kProfileSchema));
+    if (schema < kOldestProfileSchema || schema > kProfileSchema)
+        return fail(
+            Tr::tr("profile schema %1 is not supported (this version reads schemas %2 to %3)")
+                .arg(schema)
+                .arg(kOldestProfileSchema)
+                .arg(kProfileSchema));
     Profile p;
     p.family = root.value(QStringLiteral("family")).toString().toUpper();
     if (!Catalog::builtin().family(p.family))
@@ -128,10 +171,20 @@ std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error)
         return fail(Tr::tr("the profile has no values"));
     const QJsonObject v = values.toObject();
     for (auto it = v.begin(); it != v.end(); ++it) {
-        if (!it.value().isString())
+        ProfileNote note;
+        const auto raw = rawOf(it.value(), schema, &note);
+        if (!raw && schema < 2)
             return fail(Tr::tr("%1: the value must be a data field in quotes, e.g. \"00350\"")
                             .arg(elided(it.key())));
-        p.values.append({it.key().toUpper().toLatin1(), it.value().toString().toLatin1()});
+        if (!raw)
+            return fail(Tr::tr("%1: the value must be a data field in quotes, e.g. \"00350\", "
+                               "or an object with one in \"raw\" (and text in \"name\" and "
+                               "\"value\")")
+                            .arg(elided(it.key())));
+        const QByteArray code = it.key().toUpper().toLatin1();
+        p.values.append({code, *raw});
+        if (!note.name.isEmpty() || !note.value.isEmpty())
+            p.notes.insert(code, note);
     }
     const QStringList problems = p.problemsFor(p.family);
     if (!problems.isEmpty())
@@ -182,7 +235,8 @@ QList<ProfileDifference> diffProfile(const Profile &profile, const DeviceModel &
         if (want && have && *want == *have)
             continue;
         const TemperatureUnit t = device.temperatureUnit();
-        out.append({code, p->label(), have ? formatValue(p->spec(), *have, t) : Tr::tr("unknown"),
+        out.append({code, device.qualifiedLabel(*p),
+                    have ? formatValue(p->spec(), *have, t) : Tr::tr("unknown"),
                     want ? formatValue(p->spec(), *want, t) : QString::fromLatin1(data),
                     p->rawValue(), data});
     }

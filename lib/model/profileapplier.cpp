@@ -27,9 +27,9 @@ int ApplyReport::failedCount() const {
 QString ApplyReport::text() const {
     QStringList lines;
     if (refused)
-        return Tr::tr("refused, nothing was written: %1").arg(reason);
+        lines.append(Tr::tr("refused, nothing was written: %1").arg(reason));
     for (const ProfileDifference &d : differences)
-        if (diffOnly || dryRun)
+        if (!refused && (diffOnly || dryRun))
             lines.append(
                 Tr::tr("%1 %2: %3 → %4")
                     .arg(QString::fromLatin1(d.code), d.name, d.deviceText, d.profileText));
@@ -40,16 +40,34 @@ QString ApplyReport::text() const {
                  : Tr::tr("FAILED %1 %2: %3").arg(QString::fromLatin1(i.code), i.name, i.reason));
     for (const QString &f : frames)
         lines.append(Tr::tr("would send %1").arg(f));
-    for (const QString &s : skipped)
-        lines.append(Tr::tr("skipped %1").arg(s));
+    for (const SkippedSetting &s : skipped)
+        lines.append(
+            Tr::tr("skipped %1 %2: %3").arg(QString::fromLatin1(s.code), s.name, s.reason));
     if (cancelled)
         lines.append(Tr::tr("cancelled: the remaining values were not written"));
-    lines.append(diffOnly ? Tr::tr("%n difference(s)", nullptr, int(differences.size()))
-                          : Tr::tr("%1 changed, %2 already right, %3 failed")
-                                .arg(written.size() - failedCount())
-                                .arg(unchanged)
-                                .arg(failedCount()));
+    const QString skips =
+        skipped.isEmpty() ? QString() : Tr::tr("%n skipped", nullptr, int(skipped.size()));
+    if (refused) {
+        if (!skips.isEmpty())
+            lines.append(skips);
+        return lines.join(QLatin1Char('\n'));
+    }
+    QString total = diffOnly ? Tr::tr("%n difference(s)", nullptr, int(differences.size()))
+                             : Tr::tr("%1 changed, %2 already right, %3 failed")
+                                   .arg(written.size() - failedCount())
+                                   .arg(unchanged)
+                                   .arg(failedCount());
+    if (!skips.isEmpty())
+        total += QStringLiteral(", ") + skips;
+    lines.append(total);
     return lines.join(QLatin1Char('\n'));
+}
+
+QStringList ApplyReport::skippedCodes() const {
+    QStringList codes;
+    for (const SkippedSetting &s : skipped)
+        codes.append(QString::fromLatin1(s.code));
+    return codes;
 }
 
 QString ApplyReport::conflictReason() const {
@@ -73,18 +91,16 @@ ProfileApplier::ProfileApplier(DeviceModel &device, const Profile &profile, Mode
 
 void ProfileApplier::start() {
     if (m_profile.family != m_device.family()) {
-        if (!m_force) {
-            refuse(Tr::tr("the profile is for a %1, this device is a %2 (force to apply the "
-                          "settings they share)")
-                       .arg(m_profile.family, m_device.family()));
-            return;
-        }
         keepSharedSettings();
         if (m_profile.values.isEmpty()) {
             refuse(Tr::tr("none of the profile's settings exists on this %1 (skipped: %2)")
-                       .arg(m_device.family(), m_report.skipped.join(QLatin1Char(' '))));
+                       .arg(m_device.family(), m_report.skippedCodes().join(QLatin1Char(' '))));
             return;
         }
+        if (!m_force)
+            m_refuseAfterCompare = Tr::tr("the profile is for a %1, this device is a %2 (force "
+                                          "to apply the settings they share)")
+                                       .arg(m_profile.family, m_device.family());
     }
     if (m_mode == Mode::Apply && m_device.writesBlocked()) {
         refuse(Tr::tr("monitor-only mode is on"));
@@ -98,15 +114,33 @@ void ProfileApplier::keepSharedSettings() {
     kept.values.clear();
     for (const auto &entry : std::as_const(m_profile.values)) {
         const Parameter *p = m_device.parameter(entry.first);
-        if (p && Profile::isProfileParameter(*p) &&
-            Profile{m_device.family(), {}, {}, {}, {}, {entry}}
-                .problemsFor(m_device.family())
-                .isEmpty())
+        const QStringList problems =
+            p && Profile::isProfileParameter(*p)
+                ? Profile{m_device.family(), {}, {}, {}, {}, {entry}, {}}.problemsFor(
+                      m_device.family())
+                : QStringList{Tr::tr("this %1 has no such setting").arg(m_device.family())};
+        if (problems.isEmpty()) {
             kept.values.append(entry);
-        else
-            m_report.skipped.append(QString::fromLatin1(entry.first));
+            continue;
+        }
+        // problemsFor() says "CODE: why"; the code has its own column.
+        QString why = problems.join(QLatin1String("; "));
+        const QString prefix = QString::fromLatin1(entry.first) + QStringLiteral(": ");
+        if (why.startsWith(prefix))
+            why = why.mid(prefix.size());
+        m_report.skipped.append({entry.first, skippedName(entry.first), why});
     }
     m_profile = kept;
+}
+
+QString ProfileApplier::skippedName(const QByteArray &code) const {
+    if (const Parameter *p = m_device.parameter(code))
+        return m_device.qualifiedLabel(*p);
+    const Catalog &cat = m_device.catalog();
+    if (const auto w = cat.resolve(m_profile.family, code, Direction::Write))
+        return qualifiedName(cat, *w);
+    const auto note = m_profile.notes.find(code);
+    return note != m_profile.notes.end() ? note->name : QString::fromLatin1(code);
 }
 
 void ProfileApplier::refuse(const QString &reason) {
@@ -144,6 +178,10 @@ void ProfileApplier::compare() {
     if (!m_report.conflicts.isEmpty() && m_mode != Mode::Diff) {
         m_report.refused = true;
         m_report.reason = m_report.conflictReason();
+    }
+    if (!m_refuseAfterCompare.isEmpty()) {
+        m_report.refused = true;
+        m_report.reason = m_refuseAfterCompare;
     }
     if (m_report.refused || m_mode == Mode::Diff) {
         finish();
@@ -184,8 +222,9 @@ void ProfileApplier::writeNext() {
     const QByteArray code = m_toWrite.at(m_next++);
     Parameter *p = m_device.parameter(code);
     const QByteArray data = profileValue(code);
-    ApplyItem item{code, p->label(), p->displayText(), {}, false, {}};
-    Q_EMIT progress(m_next, int(m_toWrite.size()), Tr::tr("writing %1").arg(p->label()));
+    const QString name = m_device.qualifiedLabel(*p);
+    ApplyItem item{code, name, p->displayText(), {}, false, {}};
+    Q_EMIT progress(m_next, int(m_toWrite.size()), Tr::tr("writing %1").arg(name));
     const auto value = decodeAnswer(p->spec(), data);
     const QString why = value ? p->setEdit(value->number) : Tr::tr("unreadable value");
     if (!why.isEmpty()) {

@@ -9,8 +9,10 @@
 // and each write is still validated against the device's state when it is sent.
 // The report says what changed, what was already right, what failed and why; a dry run lists
 // the exact frames that would be sent. A profile of another family is refused unless forced,
-// and then only the settings the device has are applied; if it has none, the profile is
-// refused. Cancel stops before the next write.
+// and then only the settings the device has are applied; the others are skipped, each with its
+// name and why. A refused profile is still compared (the settings both have), so people see
+// what it would have changed; if the device has none of its settings, it is refused at once.
+// Cancel stops before the next write.
 #pragma once
 
 #include "profile.h"
@@ -32,6 +34,13 @@ struct ApplyItem {
     QString reason;
 };
 
+// A setting of a profile that the device does not take: "HD1", "Tip adjust, port 1", and why.
+struct SkippedSetting {
+    QByteArray code;
+    QString name;
+    QString reason;
+};
+
 struct ApplyReport {
     bool refused = false; // nothing was written; `reason` says why
     QString reason;
@@ -39,16 +48,17 @@ struct ApplyReport {
     bool diffOnly = false;
     bool cancelled = false;
     QList<ProfileDifference> differences;
-    QList<ApplyItem> written; // one per difference attempted
-    QStringList frames;       // dry run: "02 30 ... (00→01 W ST1 00350)"
-    QStringList skipped;      // forced profiles: entries the device does not have
-    QStringList conflicts;    // limits the profile would break (see profilelimits.h)
+    QList<ApplyItem> written;      // one per difference attempted
+    QStringList frames;            // dry run: "02 30 ... (00→01 W ST1 00350)"
+    QList<SkippedSetting> skipped; // another family's profile: entries the device does not take
+    QStringList conflicts;         // limits the profile would break (see profilelimits.h)
     int unchanged = 0;
     [[nodiscard]] int failedCount() const;
     [[nodiscard]] bool ok() const {
         return !refused && !cancelled && conflicts.isEmpty() && failedCount() == 0;
     }
     [[nodiscard]] QString text() const; // for people, one line per item
+    [[nodiscard]] QStringList skippedCodes() const;
     // Why the conflicts refuse the profile, the conflicts one a line; empty without conflicts.
     [[nodiscard]] QString conflictReason() const;
 };
@@ -70,6 +80,7 @@ Q_SIGNALS:
 
 private:
     void keepSharedSettings();
+    [[nodiscard]] QString skippedName(const QByteArray &code) const;
     void refuse(const QString &reason);
     void readAll();
     void compare();
@@ -83,6 +94,7 @@ private:
     Mode m_mode;
     bool m_force;
     bool m_cancelled = false;
+    QString m_refuseAfterCompare; // another family's profile, not forced: compared, never written
     int m_pendingReads = 0;
     QSet<QByteArray> m_unread; // codes whose read for this run failed
     QList<QByteArray> m_toWrite;

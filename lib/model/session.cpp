@@ -118,6 +118,8 @@ void Session::disconnectFromLine() {
 
 void Session::onLineState(Line::State s, const QString &) {
     const QString text = m_line->stateText();
+    for (DeviceModel *d : std::as_const(m_devices))
+        d->setLineUp(s == Line::State::Open);
     switch (s) {
     case Line::State::Open:
         m_log.add(Event::Kind::Connection, Event::Severity::Info, Tr::tr("line"), text);

@@ -4,9 +4,10 @@
 // opens it, finds the devices (or identifies the one the settings name), and builds a
 // StationModel or FeederModel for each, registered with the poll scheduler, the event log and
 // the telemetry recorder. A line that is lost keeps its device models: the line reconnects by
-// itself and polling resumes. Monitor-only and the temperature unit apply to every device. The
-// device models describe their devices from the built-in catalog unless the session is given
-// another (tests add entries); it must outlive the session.
+// itself and polling resumes; each device model is told whether the line is up. Monitor-only and
+// the temperature unit apply to every device. The device models describe their devices from the
+// built-in catalog unless the session is given another (tests add entries); it must outlive the
+// session.
 #pragma once
 
 #include "eventlog.h"

@@ -21,6 +21,11 @@ QByteArray profileWith(const QByteArray &values, const QByteArray &extra = {}) {
 
 const QByteArray kGood = profileWith(R"({"ST1": "00350", "HD1": "01.60", "D12": "99999"})");
 
+// The schema that writes each value as an object: {"raw": ..., "name": ..., "value": ...}.
+QByteArray schema2(const QByteArray &values) {
+    return profileWith(values).replace("\"schema\": 1", "\"schema\": 2");
+}
+
 QString writeFile(const QTemporaryDir &dir, const QString &name, const QByteArray &content) {
     const QString path = dir.filePath(name);
     QFile f(path);
@@ -72,6 +77,12 @@ void TestBadProfile::editorHabitsAreAccepted_data() {
                        R"("editor": {"ST1": "x", "values": [{"ST1": 1}], "s": "\"ST1\": 1"}, )");
     QTest::newRow("UTF-8 comment")
         << profileWith(R"({"ST1": "00350"})", "\"comment\": \"Lötstation\", ");
+    QTest::newRow("schema 2 as TipScope writes it")
+        << schema2(R"({"ST1": {"raw": "00350", "name": "Selected temperature, port 1", )"
+                   R"("value": "350 °C"}})");
+    QTest::newRow("schema 2 with bare data fields") << schema2(R"({"ST1": "00350"})");
+    QTest::newRow("schema 2 with only raw, and a note of an editor")
+        << schema2(R"({"ST1": {"raw": "00350", "why": "line 3"}})");
 }
 
 void TestBadProfile::editorHabitsAreAccepted() {
@@ -109,7 +120,9 @@ void TestBadProfile::refusedWholeWithTheReason_data() {
     QTest::newRow("schema as text") << QByteArray(kGood).replace("\"schema\": 1", "\"schema\": "
                                                                                   "\"1\"")
                                     << schema;
-    QTest::newRow("schema 2") << QByteArray(kGood).replace("\"schema\": 1", "\"schema\": 2")
+    QTest::newRow("schema 3") << QByteArray(kGood).replace("\"schema\": 1", "\"schema\": 3")
+                              << schema;
+    QTest::newRow("schema 0") << QByteArray(kGood).replace("\"schema\": 1", "\"schema\": 0")
                               << schema;
     QTest::newRow("schema 1.5") << QByteArray(kGood).replace("\"schema\": 1", "\"schema\": 1.5")
                                 << schema;
@@ -129,6 +142,17 @@ void TestBadProfile::refusedWholeWithTheReason_data() {
     QTest::newRow("value a number") << profileWith(R"({"ST1": 350})") << quoted;
     QTest::newRow("value null") << profileWith(R"({"ST1": null})") << quoted;
     QTest::newRow("value an object") << profileWith(R"({"ST1": {"v": "00350"}})") << quoted;
+    const QString raw = QStringLiteral("\"raw\"");
+    QTest::newRow("schema 2: an object without raw")
+        << schema2(R"({"ST1": {"v": "00350"}})") << raw;
+    QTest::newRow("schema 2: raw a number") << schema2(R"({"ST1": {"raw": 350}})") << raw;
+    QTest::newRow("schema 2: name a number")
+        << schema2(R"({"ST1": {"raw": "00350", "name": 1}})") << raw;
+    QTest::newRow("schema 2: an array") << schema2(R"({"ST1": ["00350"]})") << raw;
+    QTest::newRow("schema 2: raw out of range")
+        << schema2(R"({"ST1": {"raw": "00600", "value": "350 °C"}})") << refused;
+    QTest::newRow("schema 2: raw twice")
+        << schema2(R"({"ST1": {"raw": "00350", "raw": "00450"}})") << "more than once";
     QTest::newRow("unknown code") << profileWith(R"({"XYZ": "00001"})") << "not a setting";
     QTest::newRow("read-only code") << profileWith(R"({"TT1": "00100"})") << "not a setting";
     QTest::newRow("action code") << profileWith(R"({"RST": "00001"})") << "not a setting";

@@ -4,6 +4,8 @@
 #include "model/pollscheduler.h"
 #include "model/profileapplier.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 
 using namespace tipscope;
@@ -62,6 +64,9 @@ class TestProfile : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void profileRoundTripsThroughAChangedDevice();
+    void aSavedProfileNamesEachValueBesideItsRawDataField_data();
+    void aSavedProfileNamesEachValueBesideItsRawDataField();
+    void theFirstSchemaAndBareDataFieldsStillLoad();
     void malformedProfilesAreRefusedWithAReason_data();
     void malformedProfilesAreRefusedWithAReason();
     void unreadableOrHugeFilesAreRefused();
@@ -103,12 +108,80 @@ void TestProfile::profileRoundTripsThroughAChangedDevice() {
     dev->setSetting("HD4", 160);
     const ApplyReport diff = run(*st, *loaded, ProfileApplier::Mode::Diff);
     QCOMPARE(diff.differences.size(), 4);
-    QVERIFY(diff.text().contains(QStringLiteral("ST1 Selected temperature: 300 °C → 350 °C")));
+    QVERIFY2(
+        diff.text().contains(QStringLiteral("ST1 Selected temperature, port 1: 300 °C → 350 °C")),
+        qPrintable(diff.text()));
     const ApplyReport applied = run(*st, *loaded, ProfileApplier::Mode::Apply);
     QVERIFY2(applied.ok(), qPrintable(applied.text()));
     QCOMPARE(applied.written.size(), 4);
     QCOMPARE(dev->setting("H31").value(), 10);
     QCOMPARE(run(*st, *loaded, ProfileApplier::Mode::Diff).differences.size(), 0);
+}
+
+void TestProfile::aSavedProfileNamesEachValueBesideItsRawDataField_data() {
+    QTest::addColumn<QString>("code");
+    QTest::addColumn<QString>("raw");
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("value");
+    QTest::newRow("a port's setting") << "ST1"
+                                      << "00350"
+                                      << "Selected temperature, port 1"
+                                      << "350 °C";
+    QTest::newRow("a tool's setting") << "H12"
+                                      << "00010"
+                                      << "Hibernation delay, T245/T470 (TR245/TR470), port 1"
+                                      << "10 min";
+    QTest::newRow("a special value") << "HD1"
+                                     << "99999"
+                                     << "High alarm delay, port 1"
+                                     << "disabled";
+    QTest::newRow("the station's") << "MAT"
+                                   << "00480"
+                                   << "Maximum temperature"
+                                   << "480 °C";
+}
+
+void TestProfile::aSavedProfileNamesEachValueBesideItsRawDataField() {
+    QFETCH(QString, code);
+    QFETCH(QString, raw);
+    QFETCH(QString, name);
+    QFETCH(QString, value);
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    f.simLine->station()->setSetting("MAT", 480);
+    f.simLine->station()->setSetting("H12", 10);
+    auto st = f.station();
+    st->setTemperatureUnit(TemperatureUnit::Fahrenheit); // the file stays in °C
+    st->refreshAll();
+    f.settle();
+    const Profile saved = Profile::capture(*st);
+    const QJsonObject values =
+        QJsonDocument::fromJson(saved.toJson()).object().value(QStringLiteral("values")).toObject();
+    QCOMPARE(QJsonDocument::fromJson(saved.toJson()).object().value(QStringLiteral("schema")),
+             QJsonValue(2));
+    const QJsonObject entry = values.value(code).toObject();
+    QCOMPARE(entry.value(QStringLiteral("raw")).toString(), raw);
+    QCOMPARE(entry.value(QStringLiteral("name")).toString(), name);
+    QCOMPARE(entry.value(QStringLiteral("value")).toString(), value);
+    // Read back, the raw data field is what counts, the notes come along.
+    QString error;
+    const auto loaded = Profile::fromJson(saved.toJson(), &error);
+    QVERIFY2(loaded, qPrintable(error));
+    QVERIFY(loaded->values.contains(qMakePair(code.toLatin1(), raw.toLatin1())));
+    QCOMPARE(loaded->notes.value(code.toLatin1()).name, name);
+}
+
+void TestProfile::theFirstSchemaAndBareDataFieldsStillLoad() {
+    QString error;
+    const auto first = Profile::fromJson(profileJson("DME", R"("ST1":"00300")"), &error);
+    QVERIFY2(first, qPrintable(error));
+    QCOMPARE(first->values, (QList<QPair<QByteArray, QByteArray>>{{"ST1", "00300"}}));
+    const auto mixed = Profile::fromJson(
+        R"({"format":"tipscope-profile","schema":2,"family":"DME","values":{"ST1":"00300",
+            "ST2":{"raw":"00320","name":"a note that is not applied","value":"999 °C"}}})",
+        &error);
+    QVERIFY2(mixed, qPrintable(error));
+    QCOMPARE(mixed->values,
+             (QList<QPair<QByteArray, QByteArray>>{{"ST1", "00300"}, {"ST2", "00320"}}));
 }
 
 void TestProfile::malformedProfilesAreRefusedWithAReason_data() {
@@ -118,8 +191,8 @@ void TestProfile::malformedProfilesAreRefusedWithAReason_data() {
     QTest::newRow("empty") << QByteArray("") << "not a valid JSON";
     QTest::newRow("wrong format") << QByteArray("{\"format\":\"x\"}") << "not a TipScope profile";
     QTest::newRow("array") << QByteArray("[1,2]") << "not a TipScope profile";
-    QTest::newRow("newer schema") << QByteArray("{\"format\":\"tipscope-profile\",\"schema\":2}")
-                                  << "schema 2";
+    QTest::newRow("newer schema") << QByteArray("{\"format\":\"tipscope-profile\",\"schema\":3}")
+                                  << "schema 3";
     QTest::newRow("unknown family")
         << profileJson("XYZ", "\"ST1\":\"00350\"") << "unknown device family";
     QTest::newRow("no values") << profileJson("DME", "") << "no values";
@@ -171,11 +244,19 @@ void TestProfile::anotherFamilysProfileIsRefusedUnlessForced() {
     const ApplyReport refused = run(*st, *p, ProfileApplier::Mode::Apply);
     QVERIFY(refused.refused);
     QVERIFY(refused.reason.contains(QStringLiteral("DME")));
+    // Refused, yet compared: what it would change, and what it skips, by name and why.
+    QCOMPARE(refused.differences.size(), 1);
+    QCOMPARE(refused.differences.first().name, QStringLiteral("Selected temperature, port 1"));
+    QCOMPARE(refused.skippedCodes(), QStringList({"HD1", "ST4"}));
+    QVERIFY2(refused.skipped.first().name.contains(QStringLiteral("port 1")) &&
+                 refused.skipped.last().reason.contains(QStringLiteral("DDR")),
+             qPrintable(refused.text()));
+    QVERIFY2(refused.text().contains(QStringLiteral("2 skipped")), qPrintable(refused.text()));
     f.settle();
     QCOMPARE(f.simLine->stats().writeRequests, 0);
     const ApplyReport forced = run(*st, *p, ProfileApplier::Mode::Apply, true);
     QVERIFY2(forced.ok(), qPrintable(forced.text()));
-    QCOMPARE(forced.skipped, QStringList({"HD1", "ST4"})); // JSON objects come back sorted
+    QCOMPARE(forced.skippedCodes(), QStringList({"HD1", "ST4"})); // JSON objects come back sorted
     QCOMPARE(f.simLine->station()->setting("ST1").value(), 300);
 }
 

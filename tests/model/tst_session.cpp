@@ -1,7 +1,10 @@
 // Session end to end: it identifies a device at an address the probe does not try by asking
 // the catalog's model-name command, records port and feeder samples from the values their roles
-// name, and builds its models from the catalog it was given.
+// name, and builds its models from the catalog it was given. Its devices know whether the line
+// is up, and a write the lost line refused is no longer an error once the line is back.
 #include "model/session.h"
+
+#include "link/simtransport.h"
 
 #include "support/ptyfixtures.h"
 #include "support/testcatalog.h"
@@ -32,6 +35,8 @@ private Q_SLOTS:
     void aDeviceAtAnAddressNoProbeTriesIsIdentifiedByItsModelName();
     void samplesCarryTheValuesTheirRolesName();
     void modelsAreBuiltFromTheSessionsCatalog();
+    void aLostLineMakesEveryValueStaleUntilItIsBack();
+    void aWriteTheLostLineRefusedIsNoErrorOnceTheLineIsBack();
 };
 
 void TestSession::aDeviceAtAnAddressNoProbeTriesIsIdentifiedByItsModelName() {
@@ -82,6 +87,60 @@ void TestSession::modelsAreBuiltFromTheSessionsCatalog() {
     QCOMPARE(&session.feeder()->catalog(), &*catalog);
     QVERIFY(session.station()->parameter("BRT"));
     QVERIFY(session.feeder()->action("CJP"));
+}
+
+void TestSession::aLostLineMakesEveryValueStaleUntilItIsBack() {
+    Session session;
+    session.connectTo(demoSettings());
+    QTRY_VERIFY_WITH_TIMEOUT(session.state() == Session::State::Connected, kConnectMs);
+    StationModel *st = session.station();
+    Parameter *tip = st->parameter(Role::TipTemperature, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(tip->value().has_value(), kConnectMs);
+    QVERIFY(st->isLineUp());
+    QVERIFY(tip->isCurrent());
+    QSignalSpy down(st, &DeviceModel::lineUpChanged);
+    QVERIFY(down.isValid());
+    auto *transport = qobject_cast<link::SimTransport *>(&session.line()->transport());
+    transport->setPlugged(false);
+    QTRY_COMPARE_WITH_TIMEOUT(session.state(), Session::State::Retrying, kConnectMs);
+    QVERIFY(!st->isLineUp());
+    QCOMPARE(down.count(), 1);
+    QVERIFY(!tip->isCurrent());
+    QVERIFY(tip->value().has_value()); // the last reading is kept, with its time
+    QVERIFY(tip->lastUpdate().isValid());
+    QVERIFY(!st->writesUnavailableReason().isEmpty());
+    transport->setPlugged(true);
+    QTRY_COMPARE_WITH_TIMEOUT(session.state(), Session::State::Connected, kConnectMs);
+    QVERIFY(st->isLineUp());
+    QVERIFY(tip->isCurrent());
+    QVERIFY(st->writesUnavailableReason().isEmpty());
+}
+
+void TestSession::aWriteTheLostLineRefusedIsNoErrorOnceTheLineIsBack() {
+    Session session;
+    session.connectTo(demoSettings());
+    QTRY_VERIFY_WITH_TIMEOUT(session.state() == Session::State::Connected, kConnectMs);
+    Parameter *mat = session.station()->parameter(Role::MaxTemperature);
+    QVERIFY(mat);
+    mat->refresh();
+    QTRY_VERIFY_WITH_TIMEOUT(mat->value().has_value(), kConnectMs);
+    auto *transport = qobject_cast<link::SimTransport *>(&session.line()->transport());
+    transport->setPlugged(false);
+    QTRY_COMPARE_WITH_TIMEOUT(session.state(), Session::State::Retrying, kConnectMs);
+    const qint64 wanted = *mat->number() == 450 ? 400 : 450;
+    QCOMPARE(mat->setEdit(wanted), QString());
+    mat->apply();
+    QTRY_COMPARE_WITH_TIMEOUT(mat->state(), Parameter::State::Failed, kConnectMs);
+    QVERIFY2(mat->failure().contains(QStringLiteral("not connected")), qPrintable(mat->failure()));
+    // A read that fails as well leaves the write failed, never "in sync".
+    mat->refresh();
+    QTRY_COMPARE_WITH_TIMEOUT(mat->state(), Parameter::State::Failed, kConnectMs);
+    QVERIFY2(mat->failure().contains(QStringLiteral("not connected")), qPrintable(mat->failure()));
+    transport->setPlugged(true);
+    QTRY_COMPARE_WITH_TIMEOUT(session.state(), Session::State::Connected, kConnectMs);
+    QCOMPARE(mat->state(), Parameter::State::Edited); // the edit is kept, to apply again
+    QCOMPARE(mat->failure(), QString());
+    QCOMPARE(mat->edit(), std::optional<qint64>(wanted));
 }
 
 QTEST_GUILESS_MAIN(TestSession)

@@ -4,6 +4,7 @@
 
 #include <QGridLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QScrollArea>
 #include <QVBoxLayout>
 
@@ -12,8 +13,28 @@ namespace tipscope::gui {
 using namespace tipscope::model;
 using protocol::Role;
 
+namespace {
+// Only the last reading of the fastest value says how old the page is.
+QString lastReadText(const StationModel &st) {
+    QDateTime last;
+    for (PortModel *port : st.ports()) {
+        const Parameter *tip = port->parameter(Role::TipTemperature);
+        const QDateTime t = tip ? tip->lastUpdate() : QDateTime();
+        if (t.isValid() && (!last.isValid() || t > last))
+            last = t;
+    }
+    return last.isValid() ? QLocale().toString(last.time(), QStringLiteral("HH:mm:ss")) : QString();
+}
+} // namespace
+
 OverviewPage::OverviewPage(Session &session, QWidget *parent)
     : Page(session, parent) {
+    m_notice = new QLabel(this);
+    m_notice->setWordWrap(true);
+    m_notice->setObjectName(QStringLiteral("overviewNotice"));
+    m_notice->setStyleSheet(QStringLiteral("QLabel { background: #fdf3d8; border: 1px solid "
+                                           "#e5a50a; padding: 6px; font-weight: bold; }"));
+    m_notice->setVisible(false);
     m_station = new QLabel(this);
     m_station->setTextFormat(Qt::RichText);
     m_stationProblem = new QLabel(this);
@@ -27,6 +48,7 @@ OverviewPage::OverviewPage(Session &session, QWidget *parent)
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(m_cardsHost);
     auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_notice);
     layout->addWidget(m_station);
     layout->addWidget(m_stationProblem);
     layout->addWidget(scroll, 1);
@@ -46,18 +68,29 @@ QSet<int> OverviewPage::visiblePorts() const {
 void OverviewPage::rebuild() {
     qDeleteAll(m_cards);
     m_cards.clear();
+    for (int row = 0; row < m_grid->rowCount(); ++row)
+        m_grid->setRowStretch(row, 0);
     if (StationModel *st = m_session.station()) {
-        const int columns = st->ports().size() > 2 ? 2 : int(st->ports().size());
+        const int columns = qMax(1, st->ports().size() > 2 ? 2 : int(st->ports().size()));
         for (PortModel *port : st->ports()) {
-            auto *card = new PortCard(*port, m_cardsHost);
+            auto *card = new PortCard(*port, m_session.telemetry(),
+                                      Session::telemetryKey(*st, port->number()), m_cardsHost);
             const int i = int(m_cards.size());
-            m_grid->addWidget(card, i / qMax(1, columns), i % qMax(1, columns));
+            m_grid->addWidget(card, i / columns, i % columns);
+            m_grid->setRowStretch(i / columns, 1);
             m_cards.append(card);
         }
-        m_grid->setRowStretch(int(st->ports().size() + 1) / qMax(1, columns) + 1, 1);
         for (Role role : {Role::Error, Role::TransformerTemperature, Role::Fuse})
             if (Parameter *p = st->parameter(role))
                 connect(p, &Parameter::valueChanged, this, &OverviewPage::refreshStation);
+    }
+    for (DeviceModel *d : m_session.devices()) {
+        connect(d, &DeviceModel::lineUpChanged, this, &OverviewPage::updateWritesAllowed,
+                Qt::UniqueConnection);
+        connect(d, &DeviceModel::lineUpChanged, this, &OverviewPage::refreshStation,
+                Qt::UniqueConnection);
+        connect(d, &DeviceModel::lineUpChanged, this, &OverviewPage::refreshFeeder,
+                Qt::UniqueConnection);
     }
     if (FeederModel *f = m_session.feeder())
         for (Parameter *p : f->parameters())
@@ -69,6 +102,10 @@ void OverviewPage::rebuild() {
 
 QString OverviewPage::stationText() const {
     return m_station->text() + m_stationProblem->text();
+}
+
+QString OverviewPage::noticeText() const {
+    return m_notice->isHidden() ? QString() : m_notice->text();
 }
 
 void OverviewPage::refreshStation() {
@@ -91,6 +128,8 @@ void OverviewPage::refreshStation() {
         facts.append(*fuse ? tr("fuse present")
                            : tr("<span style='color:#c01c28'>fuse missing or blown</span>"));
     m_station->setText(facts.join(QStringLiteral(" · ")));
+    m_station->setEnabled(st->isLineUp());
+    m_stationProblem->setEnabled(st->isLineUp());
     const auto error = st->stationError();
     m_stationProblem->setText(
         error && *error != 0 ? tr("⚠ Station error: %1").arg(st->stationErrorText()) : QString());
@@ -112,12 +151,31 @@ void OverviewPage::refreshFeeder() {
     if (const auto e = f->errorCode(); e && *e != 0)
         facts.append(QStringLiteral("<span style='color:#c01c28'>⚠ %1</span>")
                          .arg(f->errorText().toHtmlEscaped()));
+    if (!f->isLineUp())
+        facts.append(tr("not connected, as last read"));
     m_feeder->setText(facts.join(QStringLiteral(" · ")));
+    m_feeder->setEnabled(f->isLineUp());
 }
 
 void OverviewPage::updateWritesAllowed() {
+    StationModel *st = m_session.station();
+    const QString why = st ? st->writesUnavailableReason() : QString();
     for (PortCard *c : std::as_const(m_cards))
-        c->setWritesAllowed(!m_session.monitorOnly());
+        c->setWritesAllowed(why.isEmpty());
+    QString notice;
+    if (st && !st->isLineUp()) {
+        const QString last = lastReadText(*st);
+        notice = last.isEmpty()
+                     ? tr("⚠ Not connected: nothing has been read yet. The robot controls are "
+                          "off until the line is back.")
+                     : tr("⚠ Not connected: the greyed values are as last read at %1. The robot "
+                          "controls are off until the line is back.")
+                           .arg(last);
+    } else if (st && !why.isEmpty()) {
+        notice = tr("Monitor-only mode is on: the robot controls are off.");
+    }
+    m_notice->setText(notice);
+    m_notice->setVisible(!notice.isEmpty());
 }
 
 } // namespace tipscope::gui

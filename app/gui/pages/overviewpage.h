@@ -1,7 +1,10 @@
 // OverviewPage: the whole line at a glance: the station's identity, errors and transformer
 // temperature, a PortCard per port (large tip temperatures, setpoints, power, status, errors,
-// and the robot's controls), and the feeder's state. Shows every port, so every port's live
-// values are polled fast while it is open.
+// a sparkline of the last minute, and the robot's controls), and the feeder's state. Shows every
+// port, so every port's live values are polled fast while it is open. The cards share the page's
+// height, so a larger window gives the sparklines the room. While the line is down everything is
+// greyed and a notice at the top says since when the values are old and why the controls are
+// off; in monitor-only mode it says that instead.
 #pragma once
 
 #include "page.h"
@@ -22,6 +25,8 @@ public:
     [[nodiscard]] QSet<int> visiblePorts() const override;
     [[nodiscard]] PortCard *card(int port) const { return m_cards.value(port - 1); }
     [[nodiscard]] QString stationText() const;
+    // The notice at the top, as shown (empty when hidden).
+    [[nodiscard]] QString noticeText() const;
 
 private:
     void rebuild();
@@ -29,6 +34,7 @@ private:
     void refreshFeeder();
     void updateWritesAllowed();
 
+    QLabel *m_notice;
     QLabel *m_station;
     QLabel *m_stationProblem;
     QLabel *m_feeder;

@@ -1,13 +1,14 @@
 #include "portcard.h"
 
 #include "widgets/deferredrefresh.h"
+#include "widgets/sparkline.h"
+#include "widgets/valuespinbox.h"
 
 #include "model/stationmodel.h"
 
-#include <QDoubleSpinBox>
-#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -17,34 +18,56 @@ namespace tipscope::gui {
 using namespace tipscope::model;
 using protocol::Role;
 
-PortCard::PortCard(PortModel &port, QWidget *parent)
+namespace {
+const QString kRed = QStringLiteral("#c01c28");
+const QString kAmber = QStringLiteral("#8a5a00");
+
+QString coloured(const QString &colour, const QString &text) {
+    return QStringLiteral("<span style='color:%1'>%2</span>").arg(colour, text.toHtmlEscaped());
+}
+
+QFont scaled(const QFont &base, double factor, bool bold) {
+    QFont f = base;
+    f.setPointSizeF(f.pointSizeF() * factor);
+    f.setBold(bold);
+    return f;
+}
+} // namespace
+
+PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemetryKey,
+                   QWidget *parent)
     : QFrame(parent)
     , m_port(&port) {
+    setObjectName(QStringLiteral("portCard"));
     setFrameShape(QFrame::StyledPanel);
     setAccessibleName(tr("Port %1").arg(port.number()));
-    m_title = new QLabel(this);
-    QFont titleFont = m_title->font();
-    titleFont.setBold(true);
-    titleFont.setPointSizeF(titleFont.pointSizeF() * 1.2);
-    m_title->setFont(titleFont);
-    m_tip = new QLabel(this);
-    QFont big = m_tip->font();
-    big.setPointSizeF(big.pointSizeF() * 3.2);
-    big.setBold(true);
-    m_tip->setFont(big);
+    m_values = new QWidget(this);
+    m_title = new QLabel(m_values);
+    m_title->setFont(scaled(m_title->font(), 1.2, true));
+    m_tip = new QLabel(m_values);
+    m_tip->setFont(scaled(m_tip->font(), 3.2, true));
     m_tip->setAccessibleName(tr("Tip temperature, port %1").arg(port.number()));
-    m_setpoint = new QLabel(this);
-    QFont mid = m_setpoint->font();
-    mid.setPointSizeF(mid.pointSizeF() * 1.3);
+    m_setpoint = new QLabel(m_values);
+    const QFont mid = scaled(m_setpoint->font(), 1.3, false);
     m_setpoint->setFont(mid);
-    m_power = new QProgressBar(this);
+    m_power = new QProgressBar(m_values);
     m_power->setRange(0, 1000);
     m_power->setAccessibleName(tr("Power, port %1").arg(port.number()));
-    m_status = new QLabel(this);
+    m_status = new QLabel(m_values);
     m_status->setFont(mid);
-    m_details = new QLabel(this);
-    m_problem = new QLabel(this);
+    m_status->setWordWrap(true);
+    m_details = new QLabel(m_values);
+    m_details->setWordWrap(true);
+    m_problem = new QLabel(m_values);
     m_problem->setWordWrap(true);
+    m_sparkline = new Sparkline(telemetry, telemetryKey, m_values);
+    m_sparkline->setTemperatureText([this](qint32 celsius) {
+        const Parameter *tip = m_port ? m_port->parameter(Role::TipTemperature) : nullptr;
+        return tip ? formatNumber(tip->spec(), celsius, m_port->station().temperatureUnit())
+                   : QString::number(celsius);
+    });
+    m_stale = new QLabel(this);
+    m_stale->setVisible(false);
     m_work = new QPushButton(tr("Work"), this);
     m_stand = new QPushButton(tr("Stand"), this);
     m_cool = new QPushButton(tr("Cool"), this);
@@ -54,12 +77,25 @@ PortCard::PortCard(PortModel &port, QWidget *parent)
     m_cool->setToolTip(tr("W-PS%1 00010: cooling (extractor stand-by)").arg(port.number()));
     const Parameter *ps = port.parameter(Role::Status);
     m_cool->setVisible(ps && ps->spec().values.contains(10));
-    m_newSetpoint = new QDoubleSpinBox(this);
+    m_newSetpoint = new ValueSpinBox(this);
     m_newSetpoint->setAccessibleName(tr("New selected temperature, port %1").arg(port.number()));
     m_set = new QPushButton(tr("Set"), this);
     m_feedback = new QLabel(this);
     m_feedback->setWordWrap(true);
 
+    auto *temps = new QHBoxLayout;
+    temps->addWidget(m_tip);
+    temps->addStretch(1);
+    temps->addWidget(m_setpoint, 0, Qt::AlignBottom);
+    auto *values = new QVBoxLayout(m_values);
+    values->setContentsMargins(0, 0, 0, 0);
+    values->addWidget(m_title);
+    values->addLayout(temps);
+    values->addWidget(m_power);
+    values->addWidget(m_status);
+    values->addWidget(m_details);
+    values->addWidget(m_problem);
+    values->addWidget(m_sparkline, 1);
     auto *controls = new QHBoxLayout;
     controls->addWidget(m_work);
     controls->addWidget(m_stand);
@@ -68,48 +104,44 @@ PortCard::PortCard(PortModel &port, QWidget *parent)
     controls->addWidget(m_newSetpoint);
     controls->addWidget(m_set);
     auto *layout = new QVBoxLayout(this);
-    layout->addWidget(m_title);
-    auto *temps = new QHBoxLayout;
-    temps->addWidget(m_tip);
-    temps->addStretch(1);
-    temps->addWidget(m_setpoint, 0, Qt::AlignBottom);
-    layout->addLayout(temps);
-    layout->addWidget(m_power);
-    layout->addWidget(m_status);
-    layout->addWidget(m_details);
-    layout->addWidget(m_problem);
+    layout->addWidget(m_values, 1);
+    layout->addWidget(m_stale);
     layout->addLayout(controls);
     layout->addWidget(m_feedback);
 
     connect(m_work, &QPushButton::clicked, this, [this] { requestMode(0); });
     connect(m_stand, &QPushButton::clicked, this, [this] { requestMode(1); });
     connect(m_cool, &QPushButton::clicked, this, [this] { requestMode(10); });
-    connect(m_set, &QPushButton::clicked, this,
-            [this] { requestSetpoint(m_newSetpoint->value()); });
+    connect(m_set, &QPushButton::clicked, this, [this] {
+        m_newSetpoint->interpretText();
+        requestSetpoint(m_newSetpoint->value());
+    });
     m_refresh = new DeferredRefresh(*this, [this] { refresh(); });
     connect(&port, &PortModel::changed, m_refresh, &DeferredRefresh::request);
     connect(&port.station(), &DeviceModel::temperatureUnitChanged, m_refresh,
             &DeferredRefresh::request);
+    connect(&port.station(), &DeviceModel::lineUpChanged, m_refresh, &DeferredRefresh::request);
+    // A failure of the robot controls stays in sight until the value is proved or the failure
+    // is cleared (the line that caused it is back).
     for (Parameter *p : port.parameters({Role::Setpoint, Role::Status}))
         connect(p, &Parameter::stateChanged, this, [this, p] {
             if (p->state() == Parameter::State::Failed)
-                m_feedback->setText(
-                    tr("<span style='color:#c01c28'>%1</span>").arg(p->failure().toHtmlEscaped()));
-            else if (p->state() == Parameter::State::InSync)
-                m_feedback->clear();
+                showFeedback(p->failure());
+            else if (p->state() != Parameter::State::Writing)
+                showFeedback({});
         });
     refresh();
 }
 
 void PortCard::setWritesAllowed(bool allowed) {
-    const QString why = allowed ? QString() : tr("Monitor-only mode is on: nothing is written");
     for (QWidget *w : {static_cast<QWidget *>(m_work), static_cast<QWidget *>(m_stand),
                        static_cast<QWidget *>(m_cool), static_cast<QWidget *>(m_set),
-                       static_cast<QWidget *>(m_newSetpoint)}) {
+                       static_cast<QWidget *>(m_newSetpoint)})
         w->setEnabled(allowed);
-        if (!allowed)
-            w->setToolTip(why);
-    }
+}
+
+bool PortCard::controlsEnabled() const {
+    return m_work->isEnabled() && m_set->isEnabled();
 }
 
 QString PortCard::tipText() {
@@ -124,56 +156,116 @@ QString PortCard::problemText() {
     m_refresh->flush();
     return m_problem->text();
 }
+QString PortCard::staleText() {
+    m_refresh->flush();
+    return m_stale->isHidden() ? QString() : m_stale->text();
+}
+QString PortCard::feedbackText() const {
+    return m_feedback->text();
+}
+Level PortCard::look() {
+    m_refresh->flush();
+    return m_shownLook;
+}
 
 void PortCard::refresh() {
     if (!m_port)
         return;
     PortModel &port = *m_port;
-    const TemperatureUnit unit = port.station().temperatureUnit();
     m_title->setText(tr("Port %1 — %2").arg(port.number()).arg(port.toolName()));
     m_tip->setText(port.tipTemperature() ? port.displayText(Role::TipTemperature) : tr("— °"));
     m_setpoint->setText(tr("set %1").arg(port.displayText(Role::Setpoint)));
     m_power->setValue(int(port.power().value_or(0)));
     m_power->setFormat(tr("power %1").arg(port.displayText(Role::Power)));
-    const auto status = port.status();
-    m_status->setText(status ? status->text() : tr("status unknown"));
     QStringList details;
     if (Parameter *qt = port.parameter(Role::TransistorTemperature); qt && qt->value())
         details.append(tr("transistor %1").arg(qt->displayText()));
     if (Parameter *ed = port.parameter(Role::TimeToNextMode); ed && ed->number().value_or(0) > 0)
         details.append(tr("%1 until the next mode").arg(ed->displayText()));
     m_details->setText(details.join(QStringLiteral(" · ")));
+    refreshProblem();
+    const Parameter *tip = port.parameter(Role::TipTemperature);
+    const bool stale = !port.station().isLineUp();
+    m_values->setEnabled(!stale);
+    m_sparkline->setEnabled(!stale);
+    m_stale->setVisible(stale);
+    const QDateTime last = tip ? tip->lastUpdate() : QDateTime();
+    m_stale->setText(last.isValid()
+                         ? tr("Not connected: last read %1")
+                               .arg(QLocale().toString(last.time(), QStringLiteral("HH:mm:ss")))
+                         : tr("Not connected: not read yet"));
+    applyLook(stale ? Level::Unknown : m_look);
+    refreshSetpointEditor();
+}
+
+void PortCard::refreshProblem() {
+    PortModel &port = *m_port;
+    const auto status = port.status();
+    const QString mode = status ? status->text() : tr("status unknown");
+    const auto error = port.error();
+    const bool inError = error && *error != 0;
+    const auto alarm = port.alarm();
+    const bool alarmed = alarm && alarm->any();
+    // The error in words is the status line; what the port is doing besides goes under it.
+    m_look = inError   ? qMax(Level::Warning, port.errorLevel())
+             : alarmed ? Level::Warning
+                       : Level::Ok;
+    if (inError)
+        m_status->setText(coloured(m_look == Level::Error ? kRed : kAmber,
+                                   tr("⚠ Error: %1").arg(port.errorText())));
+    else
+        m_status->setText(mode.toHtmlEscaped());
     QStringList problems;
-    if (const auto e = port.error(); e && *e != 0)
-        problems.append(port.errorText());
-    if (const auto alarm = port.alarm(); alarm && alarm->any())
-        problems.append(port.displayText(Role::Alarm));
-    m_problem->setText(
-        problems.isEmpty() ? QString() : QStringLiteral("⚠ ") + problems.join(QLatin1String("; ")));
-    m_problem->setStyleSheet(
-        problems.isEmpty() ? QString() : QStringLiteral("color: #c01c28; font-weight: bold;"));
-    // Keep the setpoint editor in display units and within the station's limits.
+    if (inError)
+        problems.append(tr("status: %1").arg(mode));
+    if (alarmed)
+        problems.append(tr("alarm: %1").arg(port.displayText(Role::Alarm)));
+    m_problem->setText(problems.join(QLatin1String(" · ")));
+    m_problem->setStyleSheet(alarmed ? QStringLiteral("color: %1; font-weight: bold;").arg(kAmber)
+                                     : QString());
+}
+
+void PortCard::applyLook(Level level) {
+    m_shownLook = level;
+    // Only the card's own frame: the children keep the style they have.
+    QString sheet;
+    if (level == Level::Error)
+        sheet = QStringLiteral("QFrame#portCard { border: 3px solid %1; border-radius: 4px; "
+                               "background: #fbe3e4; }")
+                    .arg(kRed);
+    else if (level == Level::Warning)
+        sheet = QStringLiteral("QFrame#portCard { border: 3px solid #e5a50a; border-radius: 4px; "
+                               "background: #fdf3d8; }");
+    if (styleSheet() != sheet)
+        setStyleSheet(sheet);
+}
+
+void PortCard::refreshSetpointEditor() {
+    // The setpoint editor in display units; its arrows stay within the station's limits.
+    PortModel &port = *m_port;
     const Parameter *st = port.parameter(Role::Setpoint);
     if (!st)
         return;
+    const TemperatureUnit unit = port.station().temperatureUnit();
     const DisplayFormat f = displayFormat(st->spec(), unit);
     m_newSetpoint->blockSignals(true);
     m_newSetpoint->setSuffix(QLatin1Char(' ') + f.unit);
     m_newSetpoint->setDecimals(0);
     m_newSetpoint->setSingleStep(st->meta().step * f.scale);
-    m_newSetpoint->setRange(toDisplay(st->spec(), st->minimum(), unit),
-                            toDisplay(st->spec(), st->maximum(), unit));
+    m_newSetpoint->setAllowedRange(toDisplay(st->spec(), st->minimum(), unit),
+                                   toDisplay(st->spec(), st->maximum(), unit));
     if (!m_newSetpoint->hasFocus() && st->number())
         m_newSetpoint->setValue(toDisplay(st->spec(), *st->number(), unit));
     m_newSetpoint->blockSignals(false);
 }
 
+void PortCard::showFeedback(const QString &why) {
+    m_feedback->setText(why.isEmpty() ? QString() : coloured(kRed, why));
+}
+
 QString PortCard::requestMode(int mode) {
     const QString why = m_port ? m_port->setMode(mode) : QString();
-    m_feedback->setText(
-        why.isEmpty()
-            ? QString()
-            : QStringLiteral("<span style='color:#c01c28'>%1</span>").arg(why.toHtmlEscaped()));
+    showFeedback(why);
     return why;
 }
 
@@ -185,10 +277,7 @@ QString PortCard::requestSetpoint(double displayValue) {
     const qint64 wire =
         st ? fromDisplay(st->spec(), displayValue, m_port->station().temperatureUnit()) : 0;
     const QString why = m_port->setSelectedTemperature(wire);
-    m_feedback->setText(
-        why.isEmpty()
-            ? QString()
-            : QStringLiteral("<span style='color:#c01c28'>%1</span>").arg(why.toHtmlEscaped()));
+    showFeedback(why);
     return why;
 }
 

@@ -1,41 +1,62 @@
 // PortCard: one port of a station at a glance, readable from two metres: the tip temperature
 // large, the setpoint, a power bar, the status (working, stand, sleep, hibernation, with
-// cooling and suction), the tool, the transistor temperature, and any error or alarm in words.
-// Under it the robot's own controls: work / stand / cool, and the selected temperature.
+// cooling and suction), the tool, the transistor temperature, and any error or alarm in words,
+// and a sparkline of the last minute that takes the room the page has. Under it the robot's own
+// controls: work / stand / cool, and the selected temperature (a value out of range is refused
+// with the reason, never clamped).
+//
+// A port in error says so in its status line, in red, and the whole card turns red (an alarm:
+// amber), so it cannot be read as working. While the line is down the card is greyed and says
+// when its values were last read, and the controls are off (the page says why).
 #pragma once
+
+#include "model/problemlevel.h"
 
 #include <QFrame>
 #include <QPointer>
 
-class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
 
 namespace tipscope::model {
 class PortModel;
-}
+class Telemetry;
+} // namespace tipscope::model
 
 namespace tipscope::gui {
 
 class DeferredRefresh;
+class Sparkline;
+class ValueSpinBox;
 
 class PortCard : public QFrame {
     Q_OBJECT
 public:
-    explicit PortCard(model::PortModel &port, QWidget *parent = nullptr);
+    PortCard(model::PortModel &port, model::Telemetry &telemetry, const QString &telemetryKey,
+             QWidget *parent = nullptr);
 
+    // Off in monitor-only mode and while the line is down; the page says why.
     void setWritesAllowed(bool allowed);
     // What the card shows (brought up to date first if it was hidden).
     [[nodiscard]] QString tipText();
     [[nodiscard]] QString statusText();
     [[nodiscard]] QString problemText();
+    [[nodiscard]] QString staleText(); // "last read 14:02:11" while the line is down
+    [[nodiscard]] QString feedbackText() const;
+    // The card's look: Error, Warning or Ok; Unknown while its values are stale.
+    [[nodiscard]] model::Level look();
+    [[nodiscard]] bool controlsEnabled() const;
     // The robot controls, for keyboard users and tests: 0 work, 1 stand, 10 cool.
     QString requestMode(int mode);
     QString requestSetpoint(double displayValue);
 
 private:
     void refresh();
+    void refreshProblem();
+    void refreshSetpointEditor();
+    void applyLook(model::Level level);
+    void showFeedback(const QString &why);
 
     QPointer<model::PortModel> m_port;
     DeferredRefresh *m_refresh = nullptr;
@@ -46,12 +67,17 @@ private:
     QLabel *m_status;
     QLabel *m_details;
     QLabel *m_problem;
+    QLabel *m_stale;
+    Sparkline *m_sparkline;
+    QWidget *m_values; // everything that greys while the line is down
     QPushButton *m_work;
     QPushButton *m_stand;
     QPushButton *m_cool;
-    QDoubleSpinBox *m_newSetpoint;
+    ValueSpinBox *m_newSetpoint;
     QPushButton *m_set;
     QLabel *m_feedback;
+    model::Level m_look = model::Level::Ok;      // what the port's values say
+    model::Level m_shownLook = model::Level::Ok; // Unknown instead while they are stale
 };
 
 } // namespace tipscope::gui

@@ -7,12 +7,14 @@
 #include "model/profile.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
@@ -30,6 +32,8 @@ SettingsPage::SettingsPage(Session &session, QWidget *parent)
     auto *top = new QHBoxLayout;
     m_portBox = new QComboBox(this);
     m_portBox->setAccessibleName(tr("Port"));
+    // The items come after the first show: sized once, the box cut "Port 1 (T245/T470 …)" short.
+    m_portBox->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_refresh = new QPushButton(tr("Re&fresh"), this);
     m_apply = new QPushButton(tr("&Apply"), this);
     m_revert = new QPushButton(tr("Re&vert"), this);
@@ -55,10 +59,15 @@ SettingsPage::SettingsPage(Session &session, QWidget *parent)
                        static_cast<QWidget *>(m_apply), static_cast<QWidget *>(m_save),
                        static_cast<QWidget *>(m_actions), static_cast<QWidget *>(m_profiles)})
         top->addWidget(w);
+    m_notice = new QLabel(this);
+    m_notice->setWordWrap(true);
+    m_notice->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_notice->setVisible(false);
     m_scroll = new QScrollArea(this);
     m_scroll->setWidgetResizable(true);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(top);
+    layout->addWidget(m_notice);
     layout->addWidget(m_scroll, 1);
     connect(m_portBox, &QComboBox::activated, this, [this] {
         m_port = m_portBox->currentData().toInt();
@@ -66,10 +75,7 @@ SettingsPage::SettingsPage(Session &session, QWidget *parent)
     });
     connect(m_apply, &QPushButton::clicked, this, &SettingsPage::applyEdits);
     connect(m_revert, &QPushButton::clicked, this, &SettingsPage::revertEdits);
-    connect(m_refresh, &QPushButton::clicked, this, [this] {
-        for (Parameter *p : shownParameters())
-            p->refresh();
-    });
+    connect(m_refresh, &QPushButton::clicked, this, &SettingsPage::refreshValues);
     connect(m_save, &QPushButton::clicked, this, &SettingsPage::saveToMemory);
     connect(&m_session, &Session::monitorOnlyChanged, this, &SettingsPage::updateButtons);
     rebuild();
@@ -78,6 +84,8 @@ SettingsPage::SettingsPage(Session &session, QWidget *parent)
 void SettingsPage::setSelection(DeviceModel *device, int port) {
     const bool sameDevice = device == m_device;
     Page::setSelection(device, port);
+    if (!sameDevice)
+        m_saved.clear();
     if (!sameDevice || (port > 0 && port != m_portBox->currentData().toInt()))
         rebuild();
 }
@@ -107,6 +115,8 @@ void SettingsPage::addGroup(const QString &title, const QList<Parameter *> &para
         m_editors.append(editor);
         // In the form's refresh, so the connections end with the form on the next rebuild.
         connect(p, &Parameter::stateChanged, m_buttonsRefresh, &DeferredRefresh::request);
+        connect(editor, &ParameterEditor::refusalChanged, m_buttonsRefresh,
+                &DeferredRefresh::request);
         auto *label = new QLabel(ParameterEditor::labelFor(*p), box);
         label->setBuddy(editor);
         label->setToolTip(p->description());
@@ -122,6 +132,8 @@ void SettingsPage::rebuild() {
     m_scroll->setWidget(m_form); // deletes the previous form and its editors
     m_buttonsRefresh = new DeferredRefresh(
         *this, [this] { updateButtons(); }, m_form);
+    if (m_device)
+        connect(m_device, &DeviceModel::lineUpChanged, m_buttonsRefresh, &DeferredRefresh::request);
     m_portBox->clear();
     m_actions->setMenu(nullptr);
     auto *station = qobject_cast<StationModel *>(m_device.data());
@@ -130,9 +142,17 @@ void SettingsPage::rebuild() {
         m_groups->addWidget(
             new QLabel(tr("Connect and select a device to see its settings."), m_form));
     } else if (station) {
-        for (PortModel *port : station->ports())
-            m_portBox->addItem(tr("Port %1 (%2)").arg(port->number()).arg(port->toolName()),
-                               port->number());
+        auto itemText = [this](const PortModel *port) {
+            return tr("Port %1 (%2)").arg(port->number()).arg(port->toolName());
+        };
+        for (PortModel *port : station->ports()) {
+            m_portBox->addItem(itemText(port), port->number());
+            // Every port's tool is read after the box is made: its text follows.
+            if (Parameter *tool = port->parameter(Role::ConnectedTool))
+                connect(tool, &Parameter::valueChanged, m_form, [this, port, itemText] {
+                    m_portBox->setItemText(m_portBox->findData(port->number()), itemText(port));
+                });
+        }
         const int portNumber = qBound(1, m_port, qMax(1, int(station->ports().size())));
         m_portBox->setCurrentIndex(m_portBox->findData(portNumber));
         addGroup(tr("Station"), station->stationSettings());
@@ -173,6 +193,18 @@ ParameterEditor *SettingsPage::editorFor(const QByteArray &code) const {
     return nullptr;
 }
 
+QWidget *SettingsPage::button(const QString &name) const {
+    const QMap<QString, QWidget *> buttons{
+        {QStringLiteral("apply"), m_apply},     {QStringLiteral("revert"), m_revert},
+        {QStringLiteral("refresh"), m_refresh}, {QStringLiteral("save"), m_save},
+        {QStringLiteral("actions"), m_actions}, {QStringLiteral("profiles"), m_profiles}};
+    return buttons.value(name);
+}
+
+QString SettingsPage::noticeText() const {
+    return m_notice->isHidden() ? QString() : m_notice->text();
+}
+
 int SettingsPage::editedCount() const {
     int n = 0;
     for (const Parameter *p : shownParameters())
@@ -184,19 +216,41 @@ int SettingsPage::editedCount() const {
 
 void SettingsPage::updateButtons() {
     const int edited = editedCount();
-    const bool writable = m_device && !m_session.monitorOnly();
+    const bool refused = std::any_of(m_editors.begin(), m_editors.end(),
+                                     [](const ParameterEditor *e) { return e->hasRefusal(); });
+    const bool lineUp = m_device && m_device->isLineUp();
+    const bool writable = m_device && m_device->writesUnavailableReason().isEmpty();
     m_apply->setText(edited ? tr("&Apply (%1)").arg(edited) : tr("&Apply"));
     m_apply->setEnabled(writable && edited > 0);
-    m_revert->setEnabled(edited > 0);
-    m_refresh->setEnabled(m_device != nullptr);
+    m_revert->setEnabled(edited > 0 || refused);
+    m_refresh->setEnabled(lineUp);
     m_save->setEnabled(writable && m_device->action(Role::SaveToMemory));
     m_actions->setEnabled(writable && m_actions->menu() && !m_actions->menu()->isEmpty());
-    m_profiles->setEnabled(m_device != nullptr);
-    const QString why =
-        m_session.monitorOnly() ? tr("Monitor-only mode is on: nothing is written") : QString();
-    for (QWidget *w : {static_cast<QWidget *>(m_apply), static_cast<QWidget *>(m_save),
-                       static_cast<QWidget *>(m_actions)})
-        w->setToolTip(why.isEmpty() ? w->toolTip() : why);
+    m_profiles->setEnabled(lineUp); // saving and comparing write nothing; the dialog's Apply does
+    QStringList notice;
+    if (m_device && !lineUp)
+        notice.append(tr("⚠ Not connected: the greyed values are as last read (the time is "
+                         "beside each). Apply, Save to station memory, Station actions and "
+                         "Profiles wait for the line."));
+    else if (m_device && !writable)
+        notice.append(tr("Monitor-only mode is on: Apply, Save to station memory and Station "
+                         "actions are off, nothing is written."));
+    if (!m_saved.isEmpty())
+        notice.append(m_saved);
+    m_notice->setText(notice.join(QLatin1Char('\n')));
+    m_notice->setVisible(!notice.isEmpty());
+    m_notice->setStyleSheet(m_device && !writable
+                                ? QStringLiteral("QLabel { background: #fdf3d8; border: 1px solid "
+                                                 "#e5a50a; padding: 6px; }")
+                                : QStringLiteral("QLabel { padding: 6px; }"));
+}
+
+void SettingsPage::refreshValues() {
+    for (ParameterEditor *e : std::as_const(m_editors))
+        e->discardRefusal();
+    for (Parameter *p : shownParameters())
+        p->refresh();
+    updateButtons();
 }
 
 void SettingsPage::applyEdits() {
@@ -207,8 +261,11 @@ void SettingsPage::applyEdits() {
 }
 
 void SettingsPage::revertEdits() {
+    for (ParameterEditor *e : std::as_const(m_editors))
+        e->discardRefusal();
     for (Parameter *p : shownParameters())
         p->revert();
+    updateButtons();
 }
 
 void SettingsPage::saveToMemory() {
@@ -249,7 +306,7 @@ void SettingsPage::saveProfile() {
     if (!m_device)
         return;
     QStringList missing;
-    const Profile p = Profile::capture(*m_device, &missing);
+    (void)Profile::capture(*m_device, &missing);
     if (!missing.isEmpty()) {
         QMessageBox::warning(this, tr("Save profile"),
                              tr("Some settings have not been read yet (%1). Refresh and try again.")
@@ -261,9 +318,32 @@ void SettingsPage::saveProfile() {
         tr("TipScope profiles (*.json)"));
     if (path.isEmpty())
         return;
+    bool ok = false;
+    const QString comment = QInputDialog::getText(
+        this, tr("Save profile"),
+        tr("A comment for the profile (optional), e.g. what it is for or who set it:"),
+        QLineEdit::Normal, QString(), &ok);
+    if (!ok)
+        return;
     QString error;
-    if (!p.save(path, &error))
+    const QString done = saveProfileTo(path, comment, &error);
+    if (done.isEmpty())
         QMessageBox::critical(this, tr("Save profile"), error);
+}
+
+QString SettingsPage::saveProfileTo(const QString &path, const QString &comment, QString *error) {
+    if (!m_device) {
+        *error = tr("no device is selected");
+        return {};
+    }
+    Profile p = Profile::capture(*m_device);
+    p.comment = comment.trimmed();
+    if (!p.save(path, error))
+        return {};
+    m_saved = tr("✓ Profile saved: %n setting(s) of %1 in %2", nullptr, int(p.values.size()))
+                  .arg(m_device->displayName(), QDir::toNativeSeparators(path));
+    updateButtons();
+    return m_saved;
 }
 
 void SettingsPage::openProfile() {

@@ -2,11 +2,18 @@
 // metadata and grouped (station, port, alarms, each tool with the connected one first, ALE
 // dispensing, feeder), with Apply / Revert, save to station memory, the dangerous actions behind
 // confirmations that say what will happen, and profiles (save, compare, dry run, apply).
+//
+// Whatever is off says why under the buttons, not only in a tooltip: monitor-only mode turns off
+// Apply, Save to station memory and Station actions; a line that is down turns off Profiles too,
+// and the values are shown greyed with the time they were last read. Revert and Refresh also
+// discard values that were typed and refused. A saved profile asks for an optional comment and
+// says where it went.
 #pragma once
 
 #include "page.h"
 
 class QComboBox;
+class QLabel;
 class QPushButton;
 class QScrollArea;
 class QVBoxLayout;
@@ -30,8 +37,16 @@ public:
     // Writes every edited value (each is read back); for the Apply button and tests.
     void applyEdits();
     void revertEdits();
+    void refreshValues();
     [[nodiscard]] ParameterEditor *editorFor(const QByteArray &code) const;
     [[nodiscard]] int editedCount() const;
+    // Saves the device's settings as a profile with `comment`; the confirmation shown (where it
+    // went, how many settings), or empty with `error` set.
+    QString saveProfileTo(const QString &path, const QString &comment, QString *error);
+    // What the page says under its buttons (why some are off, the last profile saved).
+    [[nodiscard]] QString noticeText() const;
+    // The buttons, for tests: "apply", "revert", "refresh", "save", "actions", "profiles".
+    [[nodiscard]] QWidget *button(const QString &name) const;
 
 private:
     void rebuild();
@@ -50,6 +65,8 @@ private:
     QPushButton *m_save;
     QToolButton *m_actions;
     QToolButton *m_profiles;
+    QLabel *m_notice;
+    QString m_saved; // the last profile saved, said until the selection changes
     QScrollArea *m_scroll;
     QWidget *m_form = nullptr;
     QVBoxLayout *m_groups = nullptr;

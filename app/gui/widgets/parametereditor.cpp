@@ -1,14 +1,16 @@
 #include "parametereditor.h"
 
 #include "deferredrefresh.h"
+#include "valuespinbox.h"
 
 #include "model/devicemodel.h"
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
 
 namespace tipscope::gui {
 
@@ -27,6 +29,8 @@ void setStyleSheetIfChanged(QWidget *w, const QString &sheet) {
 bool isNumeric(const Parameter &p) {
     return p.meta().kind == ValueKind::Number || p.meta().kind == ValueKind::Delay;
 }
+
+const QString kRefusedStyle = QStringLiteral("color: #c01c28; font-weight: bold;");
 } // namespace
 
 ParameterEditor::ParameterEditor(Parameter *parameter, QWidget *parent)
@@ -39,6 +43,8 @@ ParameterEditor::ParameterEditor(Parameter *parameter, QWidget *parent)
     connect(parameter, &Parameter::editChanged, valueRefresh, &DeferredRefresh::request);
     auto *stateRefresh = new DeferredRefresh(*this, [this] { refreshState(); });
     connect(parameter, &Parameter::stateChanged, stateRefresh, &DeferredRefresh::request);
+    connect(&parameter->device(), &DeviceModel::lineUpChanged, stateRefresh,
+            &DeferredRefresh::request);
     connect(&parameter->device(), &DeviceModel::temperatureUnitChanged, this, [this] {
         delete layout();
         qDeleteAll(findChildren<QWidget *>(QString(), Qt::FindDirectChildrenOnly));
@@ -46,6 +52,7 @@ ParameterEditor::ParameterEditor(Parameter *parameter, QWidget *parent)
         m_disabled = nullptr;
         m_combo = nullptr;
         m_value = nullptr;
+        m_refusal.clear();
         build();
     });
 }
@@ -55,8 +62,11 @@ QString ParameterEditor::labelFor(const Parameter &p) {
 }
 
 void ParameterEditor::build() {
-    auto *row = new QHBoxLayout(this);
-    row->setContentsMargins(0, 0, 0, 0);
+    auto *column = new QVBoxLayout(this);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(2);
+    auto *row = new QHBoxLayout;
+    column->addLayout(row);
     const Parameter &p = *m_parameter;
     const QString tip = p.description() + QStringLiteral("\n") +
                         tr("Allowed: %1").arg(p.allowedText()) + QStringLiteral("\n") +
@@ -69,13 +79,11 @@ void ParameterEditor::build() {
         row->addWidget(m_value, 1);
     } else if (isNumeric(p)) {
         const DisplayFormat f = displayFormat(p.spec(), p.device().temperatureUnit());
-        m_spin = new QDoubleSpinBox(this);
+        m_spin = new ValueSpinBox(this);
         m_spin->setAccessibleName(p.label());
         m_spin->setDecimals(f.decimals);
         m_spin->setSuffix(f.unit.isEmpty() ? QString() : QLatin1Char(' ') + f.unit);
         m_spin->setSingleStep(p.meta().step * f.scale);
-        m_spin->setRange(toDisplay(p.spec(), p.spec().min, p.device().temperatureUnit()),
-                         toDisplay(p.spec(), p.spec().max, p.device().temperatureUnit()));
         m_spin->setKeyboardTracking(false);
         m_spin->setMinimumWidth(120);
         connect(m_spin, &QDoubleSpinBox::valueChanged, this, &ParameterEditor::commitSpin);
@@ -98,6 +106,13 @@ void ParameterEditor::build() {
     m_state = new QLabel(this);
     m_state->setMinimumWidth(90);
     row->addWidget(m_state);
+    // Why a value was refused or a write failed, where the eye is: not only in a tooltip.
+    m_message = new QLabel(this);
+    m_message->setWordWrap(true);
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_message->setStyleSheet(kRefusedStyle);
+    m_message->setVisible(false);
+    column->addWidget(m_message);
     refreshFromParameter();
 }
 
@@ -110,24 +125,44 @@ void ParameterEditor::refreshFromParameter() {
     const std::optional<qint64> shown = p.edit() ? p.edit() : p.number();
     if (m_value)
         m_value->setText(p.displayText());
-    if (m_spin && shown) {
-        const bool special = p.meta().special.contains(int(*shown));
+    if (m_spin)
+        m_spin->setAllowedRange(toDisplay(p.spec(), p.minimum(), t),
+                                toDisplay(p.spec(), p.maximum(), t));
+    // A refused value stays in the box beside its reason until it is replaced or discarded.
+    const bool keepTyped = !m_refusal.isEmpty();
+    const bool special = shown && p.meta().special.contains(int(*shown));
+    if (m_spin && shown && !keepTyped) {
         if (m_disabled)
             m_disabled->setChecked(special);
         m_spin->setEnabled(!special);
         if (!special)
             m_spin->setValue(toDisplay(p.spec(), *shown, t));
     }
-    // Not read yet, a box shows a dash: its minimum there would read as the device's value.
-    if (m_spin) {
-        m_spin->setSpecialValueText(shown ? QString() : QStringLiteral("—"));
-        if (!shown)
+    // Not read yet or disabled, a box shows a dash: any number there would read as the
+    // device's value.
+    if (m_spin && !keepTyped) {
+        const bool number = shown && !special;
+        m_spin->setSpecialValueText(number ? QString() : QStringLiteral("—"));
+        if (!number)
             m_spin->setValue(m_spin->minimum());
     }
-    if (m_combo)
+    if (m_combo && !keepTyped)
         m_combo->setCurrentIndex(shown ? m_combo->findData(int(*shown)) : -1);
     m_updating = false;
     refreshState();
+}
+
+QString ParameterEditor::editorStyle() const {
+    const Parameter &p = *m_parameter;
+    QString style;
+    if (!m_refusal.isEmpty())
+        style = QStringLiteral("background: #fbe3e4;");
+    else if (p.state() == Parameter::State::Edited)
+        style = QStringLiteral("background: #fff4c2;");
+    // Read before the line went down: the value is only what it was then.
+    if (p.value() && !p.isCurrent())
+        style += QStringLiteral("color: palette(mid);");
+    return style;
 }
 
 void ParameterEditor::refreshState() {
@@ -145,6 +180,9 @@ void ParameterEditor::refreshState() {
     case Parameter::State::InSync:
         text = p.meta().isVolatile && !p.isSavedToMemory() ? tr("not saved") : tr("✓ in sync");
         style = QStringLiteral("color: palette(mid);");
+        if (!p.isCurrent())
+            text = tr("last read %1")
+                       .arg(QLocale().toString(p.lastUpdate().time(), QStringLiteral("HH:mm:ss")));
         break;
     case Parameter::State::Edited:
         text = tr("edited");
@@ -160,47 +198,77 @@ void ParameterEditor::refreshState() {
     }
     if (!m_refusal.isEmpty()) {
         text = tr("✗ refused");
-        style = QStringLiteral("color: #c01c28; font-weight: bold;");
+        style = kRefusedStyle;
     }
     m_state->setText(text);
     setStyleSheetIfChanged(m_state, style);
-    m_state->setToolTip(!m_refusal.isEmpty() ? m_refusal : p.failure());
-    const bool edited = p.state() == Parameter::State::Edited;
-    const QString editorStyle = !m_refusal.isEmpty() ? QStringLiteral("background: #fbe3e4;")
-                                : edited             ? QStringLiteral("background: #fff4c2;")
-                                                     : QString();
-    if (m_spin)
-        setStyleSheetIfChanged(m_spin, editorStyle);
-    if (m_combo)
-        setStyleSheetIfChanged(m_combo, editorStyle);
+    const QString why = !m_refusal.isEmpty()                    ? m_refusal
+                        : p.state() == Parameter::State::Failed ? p.failure()
+                                                                : QString();
+    m_state->setToolTip(why);
+    m_message->setText(why);
+    m_message->setVisible(!why.isEmpty());
+    const QString sheet = editorStyle();
+    for (QWidget *w : {static_cast<QWidget *>(m_spin), static_cast<QWidget *>(m_combo),
+                       static_cast<QWidget *>(m_value)})
+        if (w)
+            setStyleSheetIfChanged(w, sheet);
+}
+
+QString ParameterEditor::stateText() const {
+    return m_state ? m_state->text() : QString();
+}
+
+QString ParameterEditor::messageText() const {
+    return m_message && !m_message->isHidden() ? m_message->text() : QString();
+}
+
+void ParameterEditor::discardRefusal() {
+    if (m_refusal.isEmpty())
+        return;
+    m_refusal.clear();
+    refreshFromParameter();
+    Q_EMIT refusalChanged();
 }
 
 void ParameterEditor::commitSpin() {
     if (m_updating || !m_parameter)
         return;
     qint64 wire = 0;
-    if (m_disabled && m_disabled->isChecked())
+    if (m_disabled && m_disabled->isChecked()) {
         wire = kDisabledKey;
-    else
+    } else {
+        // Enabled again from the dash: start at the lowest allowed value.
+        if (m_spin->value() == m_spin->minimum()) {
+            const QSignalBlocker quiet(m_spin);
+            m_spin->setValue(m_spin->allowedMinimum());
+        }
         wire = fromDisplay(m_parameter->spec(), m_spin->value(),
                            m_parameter->device().temperatureUnit());
+    }
     m_spin->setEnabled(!(m_disabled && m_disabled->isChecked()));
-    m_refusal = m_parameter->setEdit(wire);
-    refreshState();
+    setRefusal(m_parameter->setEdit(wire));
 }
 
 void ParameterEditor::commitCombo() {
     if (m_updating || !m_parameter)
         return;
-    m_refusal = m_parameter->setEdit(m_combo->currentData().toInt());
-    refreshState();
+    setRefusal(m_parameter->setEdit(m_combo->currentData().toInt()));
 }
 
 QString ParameterEditor::enterText(const QString &text) {
-    m_refusal = m_parameter->setEditText(text);
+    const QString why = m_parameter->setEditText(text);
+    setRefusal(why);
     refreshFromParameter();
+    return why;
+}
+
+void ParameterEditor::setRefusal(const QString &why) {
+    const bool changed = why != m_refusal;
+    m_refusal = why;
     refreshState();
-    return m_refusal;
+    if (changed)
+        Q_EMIT refusalChanged();
 }
 
 } // namespace tipscope::gui

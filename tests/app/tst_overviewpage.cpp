@@ -1,0 +1,172 @@
+// OverviewPage on a real Session in demo mode (a simulated 19200 Bd wire): a port in error is
+// unmistakable on its card; while the line is down the cards are greyed with the time of their
+// last reading, the controls are off and the page says why; after the reconnect a control that
+// failed for the lost line is no error any more; the cards share the page's height, and their
+// sparklines draw the last minute; a setpoint out of range is refused, not clamped.
+#include "pages/overviewpage.h"
+#include "pages/portcard.h"
+#include "widgets/sparkline.h"
+
+#include "link/simtransport.h"
+#include "sim/simline.h"
+
+#include "support/typing.h"
+
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QtTest>
+
+using namespace tipscope;
+using namespace tipscope::model;
+using tipscope::gui::OverviewPage;
+using tipscope::gui::PortCard;
+using tipscope::gui::Sparkline;
+
+namespace {
+constexpr int kConnectMs = 60000;
+}
+
+class TestOverviewPage : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void aPortInErrorIsUnmistakableOnItsCard();
+    void whileTheLineIsDownTheCardsAreGreyedWithTheTimeAndTheControlsOff();
+    void aControlTheLostLineRefusedIsNoErrorAfterTheReconnect();
+    void theCardsShareTheHeightAndTheirSparklinesDrawTheLastMinute();
+    void aSetpointOutOfRangeIsRefusedNotClamped();
+
+private:
+    void connectDemo();
+    [[nodiscard]] link::SimTransport &transport() const {
+        return *qobject_cast<link::SimTransport *>(&m_session->line()->transport());
+    }
+
+    std::unique_ptr<Session> m_session;
+    std::unique_ptr<OverviewPage> m_page;
+};
+
+void TestOverviewPage::init() {
+    m_session = std::make_unique<Session>();
+    m_page = std::make_unique<OverviewPage>(*m_session);
+    m_page->resize(1040, 560);
+    m_page->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_page.get()));
+}
+
+void TestOverviewPage::cleanup() {
+    m_page.reset();
+    m_session.reset();
+}
+
+void TestOverviewPage::connectDemo() {
+    Session::Settings settings;
+    settings.line.kind = link::LineSettings::Kind::Demo;
+    m_session->connectTo(settings);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);
+    m_session->scheduler().setVisiblePorts(m_session->station(), m_page->visiblePorts());
+    QVERIFY(m_page->card(4));
+    QTRY_VERIFY_WITH_TIMEOUT(m_page->card(4)->tipText().contains(QStringLiteral("°C")), kConnectMs);
+}
+
+void TestOverviewPage::aPortInErrorIsUnmistakableOnItsCard() {
+    connectDemo();
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->station()->port(1)->error().has_value(), kConnectMs);
+    QCOMPARE(m_page->card(1)->look(), Level::Ok);
+    m_session->demoLine()->station()->setPortError(1, 4);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->station()->port(1)->error().value_or(0) != 0, kConnectMs);
+    PortCard *card = m_page->card(1);
+    const QString error = m_session->station()->port(1)->errorText();
+    // The status line is the error in words, in colour, and the card itself changes colour.
+    QVERIFY2(card->statusText().contains(QStringLiteral("Error: ") + error) &&
+                 card->statusText().contains(QStringLiteral("color:")),
+             qPrintable(card->statusText()));
+    QVERIFY(!card->statusText().startsWith(QStringLiteral("Working")));
+    QVERIFY(card->look() >= Level::Warning);
+    QVERIFY2(card->styleSheet().contains(QStringLiteral("border")), qPrintable(card->styleSheet()));
+    QVERIFY2(card->problemText().contains(QStringLiteral("Working")),
+             qPrintable(card->problemText()));
+    QCOMPARE(m_page->card(2)->look(), Level::Ok);
+    QVERIFY(m_page->card(2)->styleSheet().isEmpty());
+}
+
+void TestOverviewPage::whileTheLineIsDownTheCardsAreGreyedWithTheTimeAndTheControlsOff() {
+    connectDemo();
+    PortCard *card = m_page->card(2);
+    QVERIFY(card->controlsEnabled());
+    QVERIFY(card->staleText().isEmpty());
+    QVERIFY(m_page->noticeText().isEmpty());
+    transport().setPlugged(false);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_session->station()->isLineUp(), kConnectMs);
+    const QDateTime last =
+        m_session->station()->parameter(protocol::Role::TipTemperature, 2)->lastUpdate();
+    const QString time = QLocale().toString(last.time(), QStringLiteral("HH:mm:ss"));
+    QCOMPARE(card->staleText(), QStringLiteral("Not connected: last read %1").arg(time));
+    QVERIFY(!card->controlsEnabled());
+    QCOMPARE(card->look(), Level::Unknown);
+    QVERIFY(!card->findChild<Sparkline *>()->isEnabled());
+    QVERIFY2(m_page->noticeText().contains(QStringLiteral("Not connected")) &&
+                 m_page->noticeText().contains(QStringLiteral("robot controls are off")),
+             qPrintable(m_page->noticeText()));
+    transport().setPlugged(true);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->station()->isLineUp(), kConnectMs);
+    QVERIFY(card->controlsEnabled());
+    QVERIFY(card->staleText().isEmpty());
+    QVERIFY(m_page->noticeText().isEmpty());
+    QVERIFY(card->findChild<Sparkline *>()->isEnabled());
+}
+
+void TestOverviewPage::aControlTheLostLineRefusedIsNoErrorAfterTheReconnect() {
+    connectDemo();
+    PortCard *card = m_page->card(4); // the demo leaves port 4 alone, working
+    transport().setPlugged(false);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_session->station()->isLineUp(), kConnectMs);
+    QCOMPARE(card->requestMode(10), QString()); // as a shortcut would, with the buttons off
+    QTRY_VERIFY_WITH_TIMEOUT(card->feedbackText().contains(QStringLiteral("not connected")),
+                             kConnectMs);
+    transport().setPlugged(true);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->station()->isLineUp(), kConnectMs);
+    QTRY_VERIFY(card->feedbackText().isEmpty());
+}
+
+void TestOverviewPage::theCardsShareTheHeightAndTheirSparklinesDrawTheLastMinute() {
+    connectDemo();
+    auto *spark = m_page->card(1)->findChild<Sparkline *>();
+    QVERIFY(spark);
+    QTRY_VERIFY_WITH_TIMEOUT(spark->rangeText().contains(QStringLiteral("°C")), kConnectMs);
+    const int small = spark->height();
+    // At 1920×1080 the page is about 1690×880: the room goes to the cards, not below them.
+    m_page->resize(1690, 880);
+    QTRY_VERIFY2(spark->height() > 2 * small, qPrintable(QString::number(spark->height())));
+    PortCard *last = m_page->card(4);
+    const int bottom = last->mapTo(m_page.get(), QPoint(0, last->height())).y();
+    QVERIFY2(bottom > m_page->height() * 8 / 10, qPrintable(QString::number(bottom)));
+}
+
+void TestOverviewPage::aSetpointOutOfRangeIsRefusedNotClamped() {
+    connectDemo();
+    QTRY_VERIFY_WITH_TIMEOUT(
+        m_session->station()->parameter(protocol::Role::Setpoint, 1)->value().has_value(),
+        kConnectMs);
+    PortCard *card = m_page->card(1);
+    auto *spin = card->findChild<QDoubleSpinBox *>();
+    QVERIFY(spin);
+    testing::typeInto(*spin, QStringLiteral("600"), false);
+    QCOMPARE(spin->text(), QStringLiteral("600 °C"));
+    const qint64 writes = m_session->demoLine()->stats().writeRequests;
+    QPushButton *set = nullptr;
+    for (QPushButton *b : card->findChildren<QPushButton *>())
+        if (b->text() == QStringLiteral("Set"))
+            set = b;
+    QVERIFY(set);
+    set->click();
+    QVERIFY2(card->feedbackText().contains(QStringLiteral("600 °C is not allowed")) &&
+                 card->feedbackText().contains(QStringLiteral("500 °C")),
+             qPrintable(card->feedbackText()));
+    QTest::qWait(200);
+    QCOMPARE(m_session->demoLine()->stats().writeRequests, writes);
+}
+
+QTEST_MAIN(TestOverviewPage)
+#include "tst_overviewpage.moc"

@@ -1,0 +1,195 @@
+// SettingsPage on a real Session in demo mode (a simulated 19200 Bd wire): what it shows while
+// the line is down and after it is back, what a refused value looks like and how Revert and
+// Refresh clear it, and what saving a profile says and writes.
+#include "pages/settingspage.h"
+#include "widgets/parametereditor.h"
+
+#include "link/simtransport.h"
+#include "model/profile.h"
+
+#include "support/typing.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace tipscope;
+using namespace tipscope::model;
+using tipscope::gui::ParameterEditor;
+using tipscope::gui::SettingsPage;
+
+namespace {
+constexpr int kConnectMs = 60000;
+} // namespace
+
+class TestSettingsPage : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void whileTheLineIsDownValuesAreStaleAndWritesAreOffWithTheReason();
+    void aWriteTheLostLineRefusedIsNoErrorAfterTheReconnect();
+    void revertAndRefreshDiscardARefusedValue_data();
+    void revertAndRefreshDiscardARefusedValue();
+    void aSavedProfileSaysWhereItWentAndCarriesTheComment();
+    void thePortBoxShowsItsWholeText();
+
+private:
+    void connectDemo();
+    [[nodiscard]] link::SimTransport &transport() const {
+        return *qobject_cast<link::SimTransport *>(&m_session->line()->transport());
+    }
+    [[nodiscard]] ParameterEditor *readEditor(const QByteArray &code);
+
+    std::unique_ptr<Session> m_session;
+    std::unique_ptr<SettingsPage> m_page;
+};
+
+void TestSettingsPage::init() {
+    m_session = std::make_unique<Session>();
+    m_page = std::make_unique<SettingsPage>(*m_session);
+    m_page->resize(1100, 700);
+    m_page->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_page.get()));
+}
+
+void TestSettingsPage::cleanup() {
+    m_page.reset();
+    m_session.reset();
+}
+
+void TestSettingsPage::connectDemo() {
+    Session::Settings settings;
+    settings.line.kind = link::LineSettings::Kind::Demo;
+    m_session->connectTo(settings);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);
+    m_page->setSelection(m_session->station(), 1);
+    m_page->setActive(true);
+}
+
+ParameterEditor *TestSettingsPage::readEditor(const QByteArray &code) {
+    Parameter *p = m_session->station()->parameter(code);
+    if (!p->value())
+        p->refresh();
+    if (!QTest::qWaitFor([p] { return p->value().has_value(); }, kConnectMs))
+        return nullptr;
+    return m_page->editorFor(code);
+}
+
+void TestSettingsPage::whileTheLineIsDownValuesAreStaleAndWritesAreOffWithTheReason() {
+    connectDemo();
+    ParameterEditor *mat = readEditor("MAT");
+    QVERIFY(mat);
+    QTRY_COMPARE(mat->stateText(), QStringLiteral("✓ in sync"));
+    for (const char *name : {"save", "actions", "profiles", "refresh"})
+        QVERIFY2(m_page->button(QLatin1String(name))->isEnabled(), name);
+    QVERIFY(m_page->noticeText().isEmpty());
+
+    transport().setPlugged(false);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_session->station()->isLineUp(), kConnectMs);
+    const QString last = QLocale().toString(
+        m_session->station()->parameter("MAT")->lastUpdate().time(), QStringLiteral("HH:mm:ss"));
+    QTRY_COMPARE(mat->stateText(), QStringLiteral("last read %1").arg(last));
+    for (const char *name : {"apply", "save", "actions", "profiles", "refresh"})
+        QVERIFY2(!m_page->button(QLatin1String(name))->isEnabled(), name);
+    // Why, where the eye is: not only in a tooltip.
+    QVERIFY2(m_page->noticeText().contains(QStringLiteral("Not connected")) &&
+                 m_page->noticeText().contains(QStringLiteral("Profiles")),
+             qPrintable(m_page->noticeText()));
+    QCOMPARE(mat->enterText(QStringLiteral("400")), QString()); // an edit waits for the line
+    QVERIFY(!m_page->button(QStringLiteral("apply"))->isEnabled());
+
+    transport().setPlugged(true);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->station()->isLineUp(), kConnectMs);
+    QTRY_VERIFY(m_page->button(QStringLiteral("apply"))->isEnabled());
+    for (const char *name : {"save", "actions", "profiles", "refresh"})
+        QVERIFY2(m_page->button(QLatin1String(name))->isEnabled(), name);
+    QVERIFY(m_page->noticeText().isEmpty());
+    QCOMPARE(mat->stateText(), QStringLiteral("edited"));
+}
+
+void TestSettingsPage::aWriteTheLostLineRefusedIsNoErrorAfterTheReconnect() {
+    connectDemo();
+    ParameterEditor *mat = readEditor("MAT");
+    QVERIFY(mat);
+    transport().setPlugged(false);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_session->station()->isLineUp(), kConnectMs);
+    QCOMPARE(mat->enterText(QStringLiteral("400")), QString());
+    m_page->applyEdits(); // as a shortcut would, with the button off
+    QTRY_COMPARE_WITH_TIMEOUT(mat->stateText(), QStringLiteral("✗ failed"), kConnectMs);
+    QVERIFY2(mat->messageText().contains(QStringLiteral("not sent: the line is not connected")),
+             qPrintable(mat->messageText()));
+
+    transport().setPlugged(true);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->station()->isLineUp(), kConnectMs);
+    QTRY_VERIFY(mat->messageText().isEmpty());
+    QCOMPARE(mat->stateText(), QStringLiteral("edited")); // kept, to apply now
+    QCOMPARE(m_page->editedCount(), 1);
+}
+
+void TestSettingsPage::revertAndRefreshDiscardARefusedValue_data() {
+    QTest::addColumn<QString>("button");
+    QTest::newRow("Revert") << QStringLiteral("revert");
+    QTest::newRow("Refresh") << QStringLiteral("refresh");
+}
+
+void TestSettingsPage::revertAndRefreshDiscardARefusedValue() {
+    QFETCH(QString, button);
+    connectDemo();
+    ParameterEditor *mat = readEditor("MAT");
+    QVERIFY(mat);
+    const QString before = m_session->station()->parameter("MAT")->displayText();
+    auto *spin = mat->findChild<QDoubleSpinBox *>();
+    testing::typeInto(*spin, QStringLiteral("600"));
+    QCOMPARE(spin->text(), QStringLiteral("600 °C"));
+    QVERIFY2(mat->messageText().contains(QStringLiteral("500 °C")), qPrintable(mat->messageText()));
+    QCOMPARE(m_page->editedCount(), 0);
+    QVERIFY(!m_page->button(QStringLiteral("apply"))->isEnabled());
+    QTRY_VERIFY(m_page->button(QStringLiteral("revert"))->isEnabled());
+    QTest::mouseClick(m_page->button(button), Qt::LeftButton);
+    QVERIFY(!mat->hasRefusal());
+    QVERIFY(mat->messageText().isEmpty());
+    QCOMPARE(spin->text(), before);
+    QTRY_VERIFY(!m_page->button(QStringLiteral("revert"))->isEnabled());
+}
+
+void TestSettingsPage::aSavedProfileSaysWhereItWentAndCarriesTheComment() {
+    connectDemo();
+    StationModel *st = m_session->station();
+    st->refreshAll(link::Priority::UserRead);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->line()->queue().pendingCount() == 0, kConnectMs);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("line 3.json"));
+    QString error;
+    const QString said =
+        m_page->saveProfileTo(path, QStringLiteral("  line 3, lead-free  "), &error);
+    QVERIFY2(!said.isEmpty(), qPrintable(error));
+    QVERIFY2(said.contains(path) && said.contains(st->displayName()), qPrintable(said));
+    QVERIFY(m_page->noticeText().contains(path));
+    const auto profile = Profile::load(path, &error);
+    QVERIFY2(profile, qPrintable(error));
+    QCOMPARE(profile->comment, QStringLiteral("line 3, lead-free"));
+    QVERIFY2(said.contains(QString::number(profile->values.size())), qPrintable(said));
+
+    QString failed;
+    QVERIFY(m_page->saveProfileTo(dir.filePath(QStringLiteral("no/such/dir.json")), {}, &failed)
+                .isEmpty());
+    QVERIFY(failed.contains(QStringLiteral("cannot write")));
+}
+
+void TestSettingsPage::thePortBoxShowsItsWholeText() {
+    connectDemo();
+    auto *box = m_page->findChild<QComboBox *>();
+    QVERIFY(box);
+    QTRY_VERIFY_WITH_TIMEOUT(box->currentText().contains(QStringLiteral("T210")), kConnectMs);
+    for (int i = 0; i < box->count(); ++i)
+        QVERIFY2(box->sizeHint().width() > box->fontMetrics().horizontalAdvance(box->itemText(i)),
+                 qPrintable(box->itemText(i)));
+    QVERIFY(box->width() >= box->sizeHint().width());
+}
+
+QTEST_MAIN(TestSettingsPage)
+#include "tst_settingspage.moc"
