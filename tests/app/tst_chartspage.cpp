@@ -13,7 +13,9 @@
 #include "sim/simstation.h"
 
 #include <QApplication>
+#include <QFileInfo>
 #include <QImage>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QProgressDialog>
 #include <QPushButton>
@@ -51,6 +53,7 @@ private Q_SLOTS:
     void exportedCsvReplaysTheSameSamples();
     void aMalformedRecordingIsRefusedAndTheLiveViewStays();
     void aReplayIsReadWithProgressAndCancelWhileTheLiveChartsGoOn();
+    void aLongRecordingNameNeverWidensThePage();
     void recordingWritesTheNewSamplesToTheFile();
     void pngExportWritesAnImageOfThePanes();
     void onePanePerPortOnRequest();
@@ -405,6 +408,20 @@ void TestChartsPage::theDemoAtWorkShowsAJointsRecoveryAndTheFeederFeeding() {
                                                  feeder->firstTime(), feeder->lastTime() + 1)
                                      .max > 0,
                              kDataMs);
+}
+
+void TestChartsPage::aLongRecordingNameNeverWidensThePage() {
+    const int before = m_page->minimumSizeHint().width();
+    const QString path = m_dir.filePath(
+        QStringLiteral("line-3-station-12-%1.csv").arg(QString(120, QLatin1Char('x'))));
+    QCOMPARE(m_page->startRecording(path), QString());
+    auto *status = m_page->findChild<QLabel *>(QStringLiteral("sourceLabel"));
+    QVERIFY(status);
+    // Cut short where it is shown, the whole of it one hover away.
+    QTRY_VERIFY2(status->text().contains(QChar(0x2026)), qPrintable(status->text()));
+    QCOMPARE(m_page->minimumSizeHint().width(), before);
+    QVERIFY2(status->toolTip().endsWith(QFileInfo(path).fileName()), qPrintable(status->toolTip()));
+    m_page->stopRecording();
 }
 
 QTEST_MAIN(TestChartsPage)

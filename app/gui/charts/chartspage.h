@@ -45,6 +45,7 @@ class RecordingLoader;
 namespace tipscope::gui {
 
 class ChartWidget;
+class ElidedLabel;
 struct ChartBand;
 struct ChartMarker;
 struct ChartSeriesStyle;
@@ -149,7 +150,7 @@ private:
     QToolButton *m_hardware = nullptr; // checked: transistor and transformer curves too
     QToolButton *m_record = nullptr;
     QToolButton *m_live = nullptr;
-    QLabel *m_source = nullptr;
+    ElidedLabel *m_source = nullptr;
     QLabel *m_readout = nullptr;
     QDoubleSpinBox *m_tolerance = nullptr;
     QPlainTextEdit *m_measurements = nullptr;

@@ -6,6 +6,8 @@
 #include "model/recording/chartcsv.h"
 #include "model/recording/chartcsvreader.h"
 #include "model/recording/chartrecorder.h"
+#include "widgets/elidedlabel.h"
+#include "widgets/flowlayout.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -48,9 +50,16 @@ QToolButton *toolButton(const QString &text, const QString &name, QWidget *paren
 } // namespace
 
 void ChartsPage::buildToolbar(QVBoxLayout *layout) {
-    auto *row = new QHBoxLayout;
-    auto *windowLabel = new QLabel(tr("&Window"), this);
-    m_window = new QComboBox(this);
+    // The buttons wrap onto a second line rather than widen the window (German at 1280 px).
+    auto *row = new FlowLayout;
+    // The label and its combo stay on one line together.
+    auto *windowPair = new QWidget(this);
+    auto *pairLayout = new QHBoxLayout(windowPair);
+    pairLayout->setContentsMargins(0, 0, 0, 0);
+    auto *windowLabel = new QLabel(tr("&Window"), windowPair);
+    m_window = new QComboBox(windowPair);
+    pairLayout->addWidget(windowLabel);
+    pairLayout->addWidget(m_window);
     m_window->setObjectName(QStringLiteral("windowCombo"));
     m_window->setAccessibleName(tr("Time window"));
     windowLabel->setBuddy(m_window);
@@ -101,7 +110,7 @@ void ChartsPage::buildToolbar(QVBoxLayout *layout) {
     m_live = toolButton(tr("Back to &live"), QStringLiteral("liveButton"), this);
     m_live->setVisible(false);
     connect(m_live, &QToolButton::clicked, this, &ChartsPage::showLive);
-    m_source = new QLabel(this);
+    m_source = new ElidedLabel(this);
     m_source->setObjectName(QStringLiteral("sourceLabel"));
     m_source->setAccessibleName(tr("Data shown"));
     connect(m_recorder, &ChartRecorder::failed, this, [this](const QString &why) {
@@ -110,13 +119,12 @@ void ChartsPage::buildToolbar(QVBoxLayout *layout) {
                              tr("Writing %1 failed: %2").arg(m_recorder->path(), why));
     });
 
-    for (QWidget *w : {static_cast<QWidget *>(windowLabel), static_cast<QWidget *>(m_window),
-                       static_cast<QWidget *>(m_follow), static_cast<QWidget *>(reset),
+    for (QWidget *w : {windowPair, static_cast<QWidget *>(m_follow), static_cast<QWidget *>(reset),
                        static_cast<QWidget *>(m_layoutBox), static_cast<QWidget *>(m_hardware),
                        static_cast<QWidget *>(exportButton), static_cast<QWidget *>(m_record),
                        static_cast<QWidget *>(open), static_cast<QWidget *>(m_live)})
         row->addWidget(w);
-    row->addWidget(m_source, 1);
+    row->addWidget(m_source);
     layout->addLayout(row);
     updateSourceLabel();
 }
@@ -127,7 +135,7 @@ void ChartsPage::updateSourceLabel() {
                             : tr("Live");
     if (m_recorder->isRecording())
         text += tr(" · recording to %1").arg(QFileInfo(m_recorder->path()).fileName());
-    m_source->setText(text);
+    m_source->setFullText(text);
     m_live->setVisible(m_replay != nullptr);
     m_record->setChecked(m_recorder->isRecording());
 }
