@@ -29,25 +29,25 @@ struct PortReading {
     bool ok = false;
 };
 
-const QList<QByteArray> kLiveCodes = {"TT", "ST", "PP", "PS"};
+const QList<Role> kLiveRoles = {Role::TipTemperature, Role::Setpoint, Role::Power, Role::Status};
 
 PortReading readPort(CliSession &s, const DeviceInfo &d, int port, int *worst) {
     PortReading r;
     QStringList fields;
-    for (const QByteArray &base : kLiveCodes) {
-        const QByteArray code = base + QByteArray::number(port);
-        const auto cmd = Catalog::builtin().resolve(d.family, code, Direction::Read);
-        Reply *reply = s.ask(cmd ? Request::read(d.address, *cmd, Priority::LivePoll)
-                                 : Request::read(d.address, code, Priority::LivePoll));
+    for (const Role role : kLiveRoles) {
+        const auto cmd = Catalog::builtin().resolve(d.family, role, port, Direction::Read);
+        if (!cmd)
+            return r;
+        Reply *reply = s.ask(Request::read(d.address, *cmd, Priority::LivePoll));
         reply->deleteLater();
-        if (!cmd || !reply->ok()) {
+        if (!reply->ok()) {
             *worst = qMax(*worst, CliSession::exitCodeFor(*reply));
             return r;
         }
         const auto value = decodeAnswer(*cmd, reply->answer().data);
         if (!value)
             return r;
-        if (base == "PP")
+        if (role == Role::Power)
             fields.append(QString::number(value->number / 10.0, 'f', 1));
         else
             fields.append(describeValue(*cmd, *value, Wording::Catalog)); // data: English

@@ -100,7 +100,14 @@ int CliSession::exitCodeFor(const Reply &reply) {
 }
 
 int CliSession::identify(std::optional<int> address) {
-    Reply *smn = ask(Request::read(address, "SMN"));
+    // Identification comes before the family is known: the first model-name command of any.
+    const CommandSpec *modelName = Catalog::builtin().command(Role::ModelName);
+    if (!modelName) {
+        m_err << tr("tipscope-cli: the catalog names no command that identifies a device")
+              << Qt::endl;
+        return kNoAnswer;
+    }
+    Reply *smn = ask(Request::read(address, modelName->pattern.toLatin1()));
     if (!smn->ok()) {
         m_err << tr("tipscope-cli: the device %1 did not identify itself (R-SMN): %2")
                      .arg(address ? QString::number(*address) : tr("without addresses"),
@@ -116,8 +123,9 @@ int CliSession::identify(std::optional<int> address) {
         m_err << tr("tipscope-cli: unknown device model '%1'").arg(d.model) << Qt::endl;
         return kNoAnswer;
     }
-    if (Catalog::builtin().resolve(d.family, "SVR", Direction::Read)) {
-        Reply *svr = ask(Request::read(address, "SVR"));
+    if (const auto version =
+            Catalog::builtin().resolve(d.family, Role::SoftwareVersion, 0, Direction::Read)) {
+        Reply *svr = ask(Request::read(address, *version));
         if (svr->ok())
             d.softwareVersion = QString::fromLatin1(svr->answer().data).trimmed();
     }

@@ -182,6 +182,19 @@ QString Catalog::familyForModel(const QString &modelName) const {
     return {};
 }
 
+std::optional<ResolvedCommand> Catalog::resolve(const QString &familyName, Role role, int port,
+                                                Direction direction) const {
+    const CommandSpec *spec = command(role, familyName);
+    if (!spec)
+        return std::nullopt;
+    // A port pattern ("TTx") takes the port's digit; a device's own command has no 'x'.
+    QString code = spec->pattern;
+    if (code.contains(QLatin1Char('x')) != (port > 0))
+        return std::nullopt;
+    code.replace(QLatin1Char('x'), QString::number(port));
+    return resolve(familyName, code.toLatin1(), direction);
+}
+
 const CommandSpec *Catalog::command(Role role, const QString &familyName) const {
     const FamilyInfo *f = familyName.isEmpty() ? nullptr : family(familyName);
     if (role == Role::None || (!familyName.isEmpty() && !f))

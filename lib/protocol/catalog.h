@@ -143,6 +143,10 @@ public:
     // that must name a command before they know a device: identifying one, saying what a family
     // lacks. Null when there is none.
     [[nodiscard]] const CommandSpec *command(Role role, const QString &family = {}) const;
+    // The concrete command of a role on a port (0: the device's own) of a family, in one
+    // direction; none when the family lacks the role or it has no such port.
+    [[nodiscard]] std::optional<ResolvedCommand> resolve(const QString &family, Role role, int port,
+                                                         Direction direction) const;
 
     // What a code means, for people: the table's text, or a sentence for a code not listed.
     // Wording::Translated for what is shown, Wording::Catalog for data output (catalogtext.h).

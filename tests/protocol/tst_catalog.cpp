@@ -103,6 +103,8 @@ QByteArray concrete(const QString &pattern, const FamilyInfo &f) {
 class TestCatalog : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void aRoleOnAPortResolvesToItsWireCode_data();
+    void aRoleOnAPortResolvesToItsWireCode();
     void everyCommandOfTheGuidesIsPresentForItsFamilies();
     void everyEntryHasCompleteMetadata();
     void noFamilyHasTwoEntriesForTheSameCodeAndDirection();
@@ -441,6 +443,36 @@ void TestCatalog::rolesAndGroupsReadBackTheirNames() {
         QCOMPARE(groupFromName(groupName(Group(i))), std::optional<Group>(Group(i)));
     QVERIFY(roleName(Role::None).isEmpty());
     QVERIFY(!roleFromName(QString()));
+}
+
+void TestCatalog::aRoleOnAPortResolvesToItsWireCode_data() {
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<int>("role");
+    QTest::addColumn<int>("port");
+    QTest::addColumn<QByteArray>("code"); // empty: none
+    QTest::newRow("tip temperature, port 2")
+        << "DME" << int(Role::TipTemperature) << 2 << QByteArray("TT2");
+    QTest::newRow("power, port 4") << "DME" << int(Role::Power) << 4 << QByteArray("PP4");
+    QTest::newRow("the device's own software version")
+        << "DME" << int(Role::SoftwareVersion) << 0 << QByteArray("SVR");
+    QTest::newRow("a port command without a port")
+        << "DME" << int(Role::Setpoint) << 0 << QByteArray();
+    QTest::newRow("a device command on a port")
+        << "DME" << int(Role::SoftwareVersion) << 1 << QByteArray();
+    QTest::newRow("a port the family lacks") << "DME" << int(Role::Setpoint) << 9 << QByteArray();
+    QTest::newRow("a port a two-port family lacks")
+        << "DDE" << int(Role::Power) << 4 << QByteArray();
+    QTest::newRow("a role the family lacks")
+        << "SFR" << int(Role::TipTemperature) << 1 << QByteArray();
+}
+
+void TestCatalog::aRoleOnAPortResolvesToItsWireCode() {
+    QFETCH(QString, family);
+    QFETCH(int, role);
+    QFETCH(int, port);
+    QFETCH(QByteArray, code);
+    const auto resolved = Catalog::builtin().resolve(family, Role(role), port, Direction::Read);
+    QCOMPARE(resolved ? resolved->code : QByteArray(), code);
 }
 
 QTEST_GUILESS_MAIN(TestCatalog)

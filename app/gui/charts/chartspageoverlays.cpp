@@ -67,8 +67,8 @@ QList<ChartBand> ChartsPage::bandsFor(const Pane &pane) const {
                     return p && p->number() ? std::optional<qint32>(qint32(*p->number()))
                                             : std::nullopt;
                 };
-                c.highAlarm = read(st->port(c.port)->param("HA"));
-                c.lowAlarm = read(st->port(c.port)->param("LA"));
+                c.highAlarm = read(st->port(c.port)->parameter(protocol::Role::HighAlarm));
+                c.lowAlarm = read(st->port(c.port)->parameter(protocol::Role::LowAlarm));
             }
         }
         const QString who = pane.channels.size() > 1 ? tr("P%1").arg(c.port) : QString();

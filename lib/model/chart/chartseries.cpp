@@ -113,9 +113,9 @@ QList<ChartChannel> sessionChannels(Session &session) {
                 c.title = Tr::tr("Port %1").arg(c.port);
                 describe(*station, c);
                 c.tool = port->tool() ? port->toolName() : QString();
-                if (const auto high = numberOf(port->param("HA")))
+                if (const auto high = numberOf(port->parameter(protocol::Role::HighAlarm)))
                     c.highAlarm = qint32(*high);
-                if (const auto low = numberOf(port->param("LA")))
+                if (const auto low = numberOf(port->parameter(protocol::Role::LowAlarm)))
                     c.lowAlarm = qint32(*low);
                 if (const auto *buffer = session.telemetry().buffer(c.key))
                     c.series = buffer->seriesNames();
