@@ -40,17 +40,17 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="206"/>
+        <location filename="../lib/protocol/catalog.cpp" line="219"/>
         <source>Unknown NAK code %1</source>
         <translation>Unbekannter NAK-Code %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="211"/>
+        <location filename="../lib/protocol/catalog.cpp" line="224"/>
         <source>Unknown station error %1</source>
         <translation>Unbekannter Stationsfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="220"/>
+        <location filename="../lib/protocol/catalog.cpp" line="233"/>
         <source>Unknown port error %1</source>
         <translation>Unbekannter Portfehler %1</translation>
     </message>
@@ -1085,7 +1085,7 @@
         <translation>Teilzähler vorgeschobene Länge zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="225"/>
+        <location filename="../lib/protocol/catalog.cpp" line="238"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt)</translation>
     </message>
@@ -1790,27 +1790,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="105"/>
+        <location filename="../app/cli/clisession.cpp" line="106"/>
+        <source>tipscope-cli: the catalog names no command that identifies a device</source>
+        <translation>tipscope-cli: der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="112"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="106"/>
+        <location filename="../app/cli/clisession.cpp" line="113"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="116"/>
+        <location filename="../app/cli/clisession.cpp" line="123"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="147"/>
+        <location filename="../app/cli/clisession.cpp" line="155"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="152"/>
+        <location filename="../app/cli/clisession.cpp" line="160"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -3455,7 +3460,7 @@ Dauerhaft mit dieser udev-Regel:
     <name>tipscope::gui::ChartsPage</name>
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
-        <location filename="../app/gui/charts/chartspage.h" line="61"/>
+        <location filename="../app/gui/charts/chartspage.h" line="62"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
@@ -3540,142 +3545,142 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Zeigen Sie auf ein Diagramm, um alle Reihen zu diesem Zeitpunkt abzulesen. Mausrad: Zoom · Ziehen: Verschieben · Umschalt+Ziehen: auf einen Bereich zoomen · Doppelklick: Zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="52"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
         <source>&amp;Window</source>
         <translation>&amp;Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="55"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="64"/>
         <source>Time window</source>
         <translation>Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
         <source>1 h</source>
         <translation>1 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
         <source>4 h</source>
         <translation>4 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="60"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="69"/>
         <source>12 h</source>
         <translation>12 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="60"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="69"/>
         <source>24 h</source>
         <translation>24 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>&amp;Follow</source>
         <translation>&amp;Mitlaufen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="70"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="79"/>
         <source>Keep the newest data at the right edge; uncheck to pause</source>
         <translation>Die neuesten Daten am rechten Rand halten; zum Anhalten abwählen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="82"/>
         <source>&amp;Reset view</source>
         <translation>Ansicht zu&amp;rücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
         <source>Pane layout</source>
         <translation>Anordnung der Bereiche</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="78"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
         <source>Ports overlaid</source>
         <translation>Ports überlagert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="79"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="88"/>
         <source>One pane per port</source>
         <translation>Ein Bereich pro Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
         <source>Trans&amp;istor, transformer</source>
         <translation>Trans&amp;istor, Transformator</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="85"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="94"/>
         <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
         <translation>Auch die Transistortemperatur jedes Ports und die Transformatortemperatur der Station zeichnen (alle paar Sekunden gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="89"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="98"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="101"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Sichtbares Zeitfenster als &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Sichtbares Zeitfenster als &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="104"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Aufzeichnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="97"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Jeden neuen Messwert und jedes Ereignis in eine CSV-Datei schreiben, bis abgewählt</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="99"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="108"/>
         <source>&amp;Open recording…</source>
         <translation>Aufzeichnung ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="101"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Back to &amp;live</source>
         <translation>Zurück zu &amp;Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="115"/>
         <source>Data shown</source>
         <translation>Angezeigte Daten</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="118"/>
         <source>Recording stopped</source>
         <translation>Aufzeichnung beendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
         <source>Writing %1 failed: %2</source>
         <translation>Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
@@ -3695,7 +3700,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Alarm tief</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="125"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="133"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Wiedergabe: %1 (%Ln Zeile)</numerusform>
@@ -3703,68 +3708,68 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="127"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="135"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="129"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="137"/>
         <source> · recording to %1</source>
         <translation> · Aufzeichnung in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="138"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="146"/>
         <source>there is no chart to export</source>
         <translation>es gibt kein Diagramm zum Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="140"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="148"/>
         <source>could not write %1</source>
         <translation>%1 konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="159"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="167"/>
         <source>Export chart as PNG</source>
         <translation>Diagramm als PNG exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="159"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="167"/>
         <source>Export chart data as CSV</source>
         <translation>Diagrammdaten als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="161"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="169"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="161"/>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="194"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="169"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="202"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="166"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="174"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="166"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="174"/>
         <source>Export failed: %1</source>
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="201"/>
         <source>Record to CSV file</source>
         <translation>In CSV-Datei aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="197"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="205"/>
         <source>Record</source>
         <translation>Aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="197"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="205"/>
         <source>Cannot record: %1</source>
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>

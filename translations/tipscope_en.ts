@@ -138,7 +138,7 @@
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="125"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="133"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Replay: %1 (%Ln row)</numerusform>

@@ -40,17 +40,17 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="206"/>
+        <location filename="../lib/protocol/catalog.cpp" line="219"/>
         <source>Unknown NAK code %1</source>
         <translation>Código NAK desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="211"/>
+        <location filename="../lib/protocol/catalog.cpp" line="224"/>
         <source>Unknown station error %1</source>
         <translation>Error de estación desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="220"/>
+        <location filename="../lib/protocol/catalog.cpp" line="233"/>
         <source>Unknown port error %1</source>
         <translation>Error de puerto desconocido %1</translation>
     </message>
@@ -1085,7 +1085,7 @@
         <translation>Poner a cero la longitud alimentada parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="225"/>
+        <location filename="../lib/protocol/catalog.cpp" line="238"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Error del alimentador %1 (no figura en la guía del SFR)</translation>
     </message>
@@ -1792,27 +1792,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="105"/>
+        <location filename="../app/cli/clisession.cpp" line="106"/>
+        <source>tipscope-cli: the catalog names no command that identifies a device</source>
+        <translation>tipscope-cli: el catálogo no indica ningún comando que identifique un equipo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="112"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="106"/>
+        <location filename="../app/cli/clisession.cpp" line="113"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="116"/>
+        <location filename="../app/cli/clisession.cpp" line="123"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="147"/>
+        <location filename="../app/cli/clisession.cpp" line="155"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="152"/>
+        <location filename="../app/cli/clisession.cpp" line="160"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -3457,7 +3462,7 @@ Hágalo permanente con esta regla de udev:
     <name>tipscope::gui::ChartsPage</name>
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
-        <location filename="../app/gui/charts/chartspage.h" line="61"/>
+        <location filename="../app/gui/charts/chartspage.h" line="62"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
@@ -3542,142 +3547,142 @@ Hágalo permanente con esta regla de udev:
         <translation>Señale un gráfico para leer todas las series en ese instante. Rueda: zoom · arrastrar: desplazar · Mayús+arrastrar: ampliar un intervalo · doble clic: restablecer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="52"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
         <source>&amp;Window</source>
         <translation>&amp;Ventana</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="55"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="64"/>
         <source>Time window</source>
         <translation>Ventana de tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="58"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
         <source>1 h</source>
         <translation>1 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
         <source>4 h</source>
         <translation>4 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="60"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="69"/>
         <source>12 h</source>
         <translation>12 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="60"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="69"/>
         <source>24 h</source>
         <translation>24 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>&amp;Follow</source>
         <translation>Segu&amp;ir</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="70"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="79"/>
         <source>Keep the newest data at the right edge; uncheck to pause</source>
         <translation>Mantener los datos más recientes en el borde derecho; desmarque para pausar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="82"/>
         <source>&amp;Reset view</source>
         <translation>&amp;Restablecer vista</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
         <source>Pane layout</source>
         <translation>Disposición de los paneles</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="78"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
         <source>Ports overlaid</source>
         <translation>Puertos superpuestos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="79"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="88"/>
         <source>One pane per port</source>
         <translation>Un panel por puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
         <source>Trans&amp;istor, transformer</source>
         <translation>Trans&amp;istor, transformador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="85"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="94"/>
         <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
         <translation>Dibujar también la temperatura del transistor de cada puerto y la del transformador de la estación (leídas cada pocos segundos)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="89"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="98"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="101"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Ventana visible como &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Ventana visible como &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="104"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Grabar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="97"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Escribir cada nueva muestra y evento en un archivo CSV hasta desmarcarlo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="99"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="108"/>
         <source>&amp;Open recording…</source>
         <translation>Abrir grabació&amp;n…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="101"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Back to &amp;live</source>
         <translation>Volver a &amp;tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="115"/>
         <source>Data shown</source>
         <translation>Datos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="118"/>
         <source>Recording stopped</source>
         <translation>Grabación detenida</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
         <source>Writing %1 failed: %2</source>
         <translation>Falló la escritura de %1: %2</translation>
     </message>
@@ -3697,7 +3702,7 @@ Hágalo permanente con esta regla de udev:
         <translation>Alarma baja</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="125"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="133"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Reproducción: %1 (%Ln fila)</numerusform>
@@ -3705,68 +3710,68 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="127"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="135"/>
         <source>Live</source>
         <translation>Tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="129"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="137"/>
         <source> · recording to %1</source>
         <translation> · grabando en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="138"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="146"/>
         <source>there is no chart to export</source>
         <translation>no hay ningún gráfico que exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="140"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="148"/>
         <source>could not write %1</source>
         <translation>no se pudo escribir %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="159"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="167"/>
         <source>Export chart as PNG</source>
         <translation>Exportar gráfico como PNG</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="159"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="167"/>
         <source>Export chart data as CSV</source>
         <translation>Exportar datos del gráfico como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="161"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="169"/>
         <source>PNG image (*.png)</source>
         <translation>Imagen PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="161"/>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="194"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="169"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="202"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="166"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="174"/>
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="166"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="174"/>
         <source>Export failed: %1</source>
         <translation>Falló la exportación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="193"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="201"/>
         <source>Record to CSV file</source>
         <translation>Grabar en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="197"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="205"/>
         <source>Record</source>
         <translation>Grabar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="197"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="205"/>
         <source>Cannot record: %1</source>
         <translation>No se puede grabar: %1</translation>
     </message>
