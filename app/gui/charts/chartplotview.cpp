@@ -119,21 +119,31 @@ void ChartPlotView::drawTraces(QPainter &painter, const QRectF &plot) const {
     QPolygonF line;
     for (qsizetype i : std::as_const(order)) {
         const ChartSeriesStyle &style = d.styles.at(i);
+        const QList<QPointF> &points = d.points.at(i);
+        const bool dense = points.size() > plot.width();
+        const auto draw = [&] {
+            if (dense)
+                drawColumns(painter, line, denseColor(style));
+            else if (!line.isEmpty())
+                painter.drawPolyline(line);
+            line.clear();
+        };
+        painter.setPen(tracePen(style));
         line.clear();
-        line.reserve(d.points.at(i).size());
-        for (const QPointF &p : d.points.at(i)) {
+        line.reserve(points.size());
+        for (const QPointF &p : points) {
+            // A point without a value is a gap in the data: the curve stops and starts again.
+            if (!std::isfinite(p.y())) {
+                draw();
+                continue;
+            }
             const QPointF pixel(plot.left() + (p.x() - double(d.t0)) * xScale,
                                 d.yAt(style.axis, p.y(), plot));
             if (std::isfinite(pixel.x()) && std::isfinite(pixel.y()))
                 line.append(QPointF(qBound(plot.left() - 2, pixel.x(), plot.right() + 2),
                                     qBound(above, pixel.y(), below)));
         }
-        if (line.size() > plot.width()) {
-            drawColumns(painter, line, denseColor(style));
-        } else {
-            painter.setPen(tracePen(style));
-            painter.drawPolyline(line);
-        }
+        draw();
     }
 }
 

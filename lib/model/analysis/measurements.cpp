@@ -92,6 +92,28 @@ std::optional<qint64> Measurements::firstBelow(const TelemetryBuffer &buffer, in
 
 PortMeasurements Measurements::measurePort(const TelemetryBuffer &buffer, qint64 t0, qint64 t1,
                                            qint32 tolerance, int maxResults) {
+    // Nothing was measured in a gap: a heat-up or a dip that meets one has no end, and the first
+    // samples after it are no change from the last ones before.
+    PortMeasurements out;
+    for (const auto &[from, to] : buffer.gaps().continuousStretches(t0, t1)) {
+        const PortMeasurements part = measureStretch(buffer, from, to, tolerance, maxResults);
+        const auto keep = [&](auto &into, const auto &from) {
+            for (const auto &m : from) {
+                if (into.size() < maxResults)
+                    into.append(m);
+                else
+                    out.truncated = true;
+            }
+        };
+        keep(out.heatUps, part.heatUps);
+        keep(out.recoveries, part.recoveries);
+        out.truncated = out.truncated || part.truncated;
+    }
+    return out;
+}
+
+PortMeasurements Measurements::measureStretch(const TelemetryBuffer &buffer, qint64 t0, qint64 t1,
+                                              qint32 tolerance, int maxResults) {
     PortMeasurements out;
     const int tip = buffer.seriesIndex(QStringLiteral("tip"));
     const int setpoint = buffer.seriesIndex(QStringLiteral("setpoint"));

@@ -65,6 +65,12 @@ public:
     [[nodiscard]] static PortMeasurements measurePort(const TelemetryBuffer &buffer, qint64 t0,
                                                       qint64 t1, qint32 tolerance,
                                                       int maxResults = kMaxResults);
+
+private:
+    // measurePort() over a window that holds no gap.
+    [[nodiscard]] static PortMeasurements measureStretch(const TelemetryBuffer &buffer, qint64 t0,
+                                                         qint64 t1, qint32 tolerance,
+                                                         int maxResults);
 };
 
 } // namespace tipscope::model

@@ -38,15 +38,25 @@ void appendPoint(QList<QPointF> &points, const QPointF &p) {
 
 namespace {
 // The points of already decimated columns; `lead` is the last sample before the window, so the
-// curve enters the window from the left edge rather than starting at the first column.
+// curve enters the window from the left edge rather than starting at the first column. Where a
+// gap of `gaps` (sorted) begins between two points, a point with no value (NaN) breaks the curve:
+// nothing was measured there, and a line across it would invent the values.
 QList<QPointF> pointsOf(const QList<MinMaxBucket> &buckets,
                         const std::optional<TelemetryBuffer::Sample> &lead,
-                        const SeriesFormat &format, ValueSpan *span) {
+                        const QList<TelemetryGap> &gaps, const SeriesFormat &format,
+                        ValueSpan *span) {
     QList<QPointF> points;
-    points.reserve(buckets.size() * 2 + 1);
+    points.reserve(buckets.size() * 2 + 1 + gaps.size());
     if (lead)
         points.append(QPointF(double(lead->timeMs), format.toDisplay(lead->value)));
+    qsizetype nextGap = 0;
     for (const MinMaxBucket &b : buckets) {
+        const qint64 first = qMin(b.minTimeMs, b.maxTimeMs);
+        bool broken = false;
+        for (; nextGap < gaps.size() && gaps.at(nextGap).startMs <= first; ++nextGap)
+            broken = broken || (!points.isEmpty() && points.last().x() < gaps.at(nextGap).startMs);
+        if (broken)
+            points.append(QPointF(double(gaps.at(nextGap - 1).startMs), qQNaN()));
         const QPointF low(double(b.minTimeMs), format.toDisplay(b.min));
         const QPointF high(double(b.maxTimeMs), format.toDisplay(b.max));
         if (span) {
@@ -70,7 +80,7 @@ QList<QPointF> pointsOf(const QList<MinMaxBucket> &buckets,
 QList<QPointF> minMaxPoints(const TelemetryBuffer &buffer, int series, qint64 t0, qint64 t1,
                             int columns, const SeriesFormat &format, ValueSpan *span) {
     return pointsOf(buffer.decimate(series, t0, t1, qMax(1, columns)),
-                    buffer.valueAt(series, t0 - 1), format, span);
+                    buffer.valueAt(series, t0 - 1), buffer.gaps().within(t0, t1), format, span);
 }
 
 ChartFrame buildFrame(const Telemetry &telemetry, const QList<ChartChannel> &channels,
@@ -101,12 +111,13 @@ ChartFrame buildFrame(const Telemetry &telemetry, const QList<ChartChannel> &cha
         // by a few samples changes no pixel, and the day window costs a quarter as much.
         const QList<QList<MinMaxBucket>> buckets =
             buffer->decimate(series, t0, t1, qMax(1, columns), ColumnEdges::Blocks);
+        const QList<TelemetryGap> gaps = buffer->gaps().within(t0, t1);
         for (qsizetype g = 0; g < group.size(); ++g) {
             const ChartTrace &trace = traces.at(group.at(g));
             ValueSpan span;
             QList<QPointF> &points = frame.points[group.at(g)];
-            points =
-                pointsOf(buckets.at(g), buffer->valueAt(series.at(g), t0 - 1), trace.format, &span);
+            points = pointsOf(buckets.at(g), buffer->valueAt(series.at(g), t0 - 1), gaps,
+                              trace.format, &span);
             frame.pointCount += points.size();
             (trace.format.axis == ChartAxis::Left ? frame.left : frame.right).include(span);
         }

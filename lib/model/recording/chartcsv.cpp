@@ -103,6 +103,9 @@ ChannelRows ChartCsvWriter::collect(const Telemetry &telemetry, const ChartChann
     QList<QList<TelemetryBuffer::Sample>> bySeries;
     for (int s = 0; s < buffer->seriesCount(); ++s)
         bySeries.append(buffer->samples(s, t0, t1));
+    for (const TelemetryGap &g : buffer->gaps().within(t0, t1))
+        if (g.startMs >= t0)
+            rows.gaps.append(g);
     const qsizetype count = bySeries.isEmpty() ? 0 : bySeries.first().size();
     rows.times.reserve(count);
     rows.values.reserve(count);
@@ -131,6 +134,17 @@ bool ChartCsvWriter::writeWindow(const Telemetry &telemetry, const ChartEvents &
 }
 
 bool ChartCsvWriter::writeRows(const QList<ChannelRows> &rows, const QList<ChartEvent> &events) {
+    // Events and gaps share the events column; in time order, one a row.
+    QList<QPair<qint64, QString>> notes;
+    for (const ChartEvent &e : events)
+        notes.append({e.timeMs, e.toCsvCell()});
+    for (qsizetype c = 0; c < rows.size(); ++c)
+        for (const TelemetryGap &g : rows.at(c).gaps)
+            notes.append({g.startMs, m_channels.at(c).id + QLatin1Char(' ') +
+                                         QLatin1String(chartcsv::kGapKind) + QStringLiteral(": ") +
+                                         TelemetryGap::causeToken(g.cause)});
+    std::stable_sort(notes.begin(), notes.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
     QList<qsizetype> next(rows.size(), 0);
     qsizetype nextEvent = 0;
     QList<const QList<qint32> *> cells(rows.size(), nullptr);
@@ -141,8 +155,8 @@ bool ChartCsvWriter::writeRows(const QList<ChannelRows> &rows, const QList<Chart
             if (next.at(c) < rows.at(c).times.size())
                 time = qMin(time.value_or(rows.at(c).times.at(next.at(c))),
                             rows.at(c).times.at(next.at(c)));
-        if (nextEvent < events.size())
-            time = qMin(time.value_or(events.at(nextEvent).timeMs), events.at(nextEvent).timeMs);
+        if (nextEvent < notes.size())
+            time = qMin(time.value_or(notes.at(nextEvent).first), notes.at(nextEvent).first);
         if (!time)
             break;
         for (qsizetype c = 0; c < rows.size(); ++c) {
@@ -151,8 +165,8 @@ bool ChartCsvWriter::writeRows(const QList<ChannelRows> &rows, const QList<Chart
             cells[c] = here ? &rows.at(c).values.at(next[c]++) : nullptr;
         }
         QString event;
-        if (nextEvent < events.size() && events.at(nextEvent).timeMs == *time)
-            event = events.at(nextEvent++).toCsvCell();
+        if (nextEvent < notes.size() && notes.at(nextEvent).first == *time)
+            event = notes.at(nextEvent++).second;
         writeRow(*time, cells, event);
     }
     m_out.flush();

@@ -6,7 +6,7 @@
 // one column per series and channel with its unit ("port1 tip [°C]", "port1 power [%]",
 // "port1 status"), and "events". Each row is one instant: an ISO 8601 UTC time with
 // milliseconds, the values of the channels sampled at that instant in display units (cells of
-// channels without a sample there are empty), and at most one event marker. UTF-8, '\n' line
+// channels without a sample there are empty), and at most one event marker or gap. UTF-8, '\n' line
 // ends, '.' as the decimal point whatever the locale, so a spreadsheet and a script read the same.
 //
 // The writer does not own the device. Rows must be written in non-decreasing time.
@@ -27,6 +27,9 @@ namespace chartcsv {
 inline constexpr char kMagic[] = "# TipScope chart data, format 1";
 inline constexpr char kTimeColumn[] = "time";
 inline constexpr char kEventsColumn[] = "events";
+// The kind token of a gap in the events column: "port1 gap: line-down" starts a gap in port1's
+// history at that row's time, which its next sample ends.
+inline constexpr char kGapKind[] = "gap";
 // "port1 tip [°C]" or "port1 status".
 [[nodiscard]] QString columnName(const QString &channelId, const QString &series,
                                  const SeriesFormat &format);
@@ -37,6 +40,7 @@ inline constexpr char kEventsColumn[] = "events";
 struct ChannelRows {
     QList<qint64> times;
     QList<QList<qint32>> values; // values[i]: one per series, buffer order
+    QList<TelemetryGap> gaps;    // the gaps that start in the window
 };
 
 class ChartCsvWriter {

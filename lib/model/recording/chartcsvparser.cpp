@@ -325,12 +325,29 @@ bool ChartCsvParser::events(qint64 ms, const csv::Cells &cells) {
         if (cells.at(i + 1).isEmpty())
             continue;
         const QString cell = cells.text(i + 1);
+        if (gap(ms, cell))
+            continue;
         const auto event = ChartEvent::fromCsvCell(ms, cell);
         if (!event)
             return fail(Tr::tr("the event \"%1\" is not \"<channel> <kind>: <text>\"").arg(cell));
         m_data.recording->events.add(*event);
     }
     return true;
+}
+
+bool ChartCsvParser::gap(qint64 ms, const QString &cell) {
+    // "port1 gap: line-down"
+    const QString head = cell.section(QStringLiteral(": "), 0, 0);
+    const auto cause = TelemetryGap::causeFromToken(cell.section(QStringLiteral(": "), 1));
+    if (head.section(QLatin1Char(' '), 1) != QLatin1String(chartcsv::kGapKind) || !cause)
+        return false;
+    const QString id = head.section(QLatin1Char(' '), 0, 0);
+    for (qsizetype c = 0; c < m_data.recording->channels.size(); ++c)
+        if (m_data.recording->channels.at(c).id == id) {
+            m_data.buffers[size_t(c)].markGap(ms, *cause);
+            return true;
+        }
+    return false;
 }
 
 bool ChartCsvParser::finish() {

@@ -52,6 +52,8 @@ private:
     bool row(const csv::Cells &cells);
     bool channelValues(int channel, const csv::Cells &cells, QList<qint32> &out, bool &present);
     bool events(qint64 ms, const csv::Cells &cells);
+    // A gap cell ("port1 gap: line-down") of a known channel: marks the gap, true.
+    bool gap(qint64 ms, const QString &cell);
 
     qint64 m_line = 0;
     qint64 m_comments = 0;

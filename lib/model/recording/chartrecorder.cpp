@@ -88,6 +88,13 @@ void ChartRecorder::flush() {
         Cursor &cursor = m_cursors[c];
         ChannelRows r = ChartCsvWriter::collect(*m_telemetry, m_channels.at(c), cursor.time,
                                                 std::numeric_limits<qint64>::max());
+        // A gap stays in the window until the next sample: write it once, never before rows
+        // already in the file.
+        r.gaps.removeIf([&](const TelemetryGap &g) { return g.startMs <= cursor.gapsUntil; });
+        for (TelemetryGap &g : r.gaps) {
+            cursor.gapsUntil = g.startMs;
+            g.startMs = qMax(g.startMs, m_lastWrittenMs);
+        }
         const qsizetype skip = qMin(cursor.doneAtTime, r.times.size());
         r.times.remove(0, skip);
         r.values.remove(0, skip);

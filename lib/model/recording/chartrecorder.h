@@ -48,6 +48,7 @@ private:
     struct Cursor {
         qint64 time = 0;
         qsizetype doneAtTime = 0; // samples at `time` already written
+        qint64 gapsUntil = -1;    // the start of the last gap written
     };
 
     QPointer<Telemetry> m_telemetry;

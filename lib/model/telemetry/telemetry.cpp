@@ -61,6 +61,19 @@ AppendResult Telemetry::append(const TelemetryKey &key, qint64 timeMs, const qin
     return result;
 }
 
+bool Telemetry::markGap(const TelemetryKey &key, qint64 timeMs, TelemetryGap::Cause cause) {
+    const auto it = m_entries.find(key);
+    if (it == m_entries.end())
+        return false;
+    if (it->second.buffer.gaps().isOpen())
+        return true;
+    it->second.buffer.markGap(timeMs, cause);
+    it->second.changed = true;
+    if (!m_coalesceTimer.isActive())
+        m_coalesceTimer.start();
+    return true;
+}
+
 void Telemetry::setMaxSignalsPerSecond(int rate) {
     m_maxSignalsPerSecond = qBound(1, rate, 1000);
     // Rounded up so that the rate is never exceeded.

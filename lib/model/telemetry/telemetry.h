@@ -55,6 +55,10 @@ public:
         return append(key, timeMs, values.constData(), values.size());
     }
 
+    // The history of `key` has a gap from `timeMs` until its next sample
+    // (TelemetryBuffer::markGap); views are told as for samples. False for an unknown key.
+    bool markGap(const TelemetryKey &key, qint64 timeMs, TelemetryGap::Cause cause);
+
     // Clamped to 1..1000.
     void setMaxSignalsPerSecond(int rate);
     [[nodiscard]] int maxSignalsPerSecond() const { return m_maxSignalsPerSecond; }

@@ -71,6 +71,9 @@ AppendResult TelemetryBuffer::append(qint64 timeMs, const qint32 *values, qsizet
     updateSummaries(m_total, values);
     ++m_total;
     m_lastTime = timeMs;
+    m_gaps.close(timeMs);
+    if (m_total > m_capacity)
+        m_gaps.trim(firstTime());
     return AppendResult::Accepted;
 }
 

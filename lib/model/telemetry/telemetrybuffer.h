@@ -24,6 +24,8 @@
 // only writer.
 #pragma once
 
+#include "model/telemetry/telemetrygaps.h"
+
 #include <QList>
 #include <QStringList>
 #include <QtGlobal>
@@ -112,7 +114,15 @@ public:
         return append(timeMs, values.constData(), values.size());
     }
 
-    // The newest sample at or before `timeMs` (a crosshair readout); nullopt if there is none.
+    // Continuity broke at `timeMs` (the line went down, the device stopped answering): the next
+    // sample is not joined to the one before it, and nothing is read in between.
+    void markGap(qint64 timeMs, TelemetryGap::Cause cause) {
+        m_gaps.open(timeMs, m_lastTime, cause);
+    }
+    [[nodiscard]] const TelemetryGaps &gaps() const { return m_gaps; }
+
+    // The newest sample at or before `timeMs` (a crosshair readout); nullopt if there is none or
+    // `timeMs` falls in a gap.
     [[nodiscard]] std::optional<Sample> valueAt(int series, qint64 timeMs) const;
     // Every sample of [t0, t1), oldest first (CSV export).
     [[nodiscard]] QList<Sample> samples(int series, qint64 t0, qint64 t1) const;
@@ -223,6 +233,7 @@ private:
     std::vector<qint64> m_times;
     std::vector<Column> m_columns;
     std::vector<Level> m_levels;
+    TelemetryGaps m_gaps;
 };
 
 } // namespace tipscope::model

@@ -51,7 +51,7 @@ qint64 TelemetryBuffer::gallopLowerBound(qint64 timeMs, qint64 from, qint64 to) 
 }
 
 std::optional<TelemetryBuffer::Sample> TelemetryBuffer::valueAt(int series, qint64 timeMs) const {
-    if (!isSeries(series) || isEmpty())
+    if (!isSeries(series) || isEmpty() || m_gaps.at(timeMs))
         return std::nullopt;
     const qint64 after = upperBound(timeMs, oldestIndex(), m_total);
     if (after == oldestIndex())

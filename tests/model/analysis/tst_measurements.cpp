@@ -20,6 +20,7 @@ class TestMeasurements : public QObject {
 private Q_SLOTS:
     void heatUpRunsFromTheSetpointChangeUntilWithinTheBand();
     void recoveryRunsFromLeavingTheBandUntilBackInIt();
+    void noMeasurementSpansAGap();
     void restsAndAnUnheatedTipAreNoDips();
     void aWindowReachingBeforeTheDataIsMeasuredFromItsFirstSample();
     void theReportGivesEachSeriesItsWindowStatsThreeToALine();
@@ -41,6 +42,33 @@ void TestMeasurements::heatUpRunsFromTheSetpointChangeUntilWithinTheBand() {
     QVERIFY(m.heatUps.first().reachedMs);
     QCOMPARE(*m.heatUps.first().reachedMs - m.heatUps.first().startMs, 4400); // 345 at tick 144
     QVERIFY(m.recoveries.isEmpty());
+}
+
+void TestMeasurements::noMeasurementSpansAGap() {
+    TelemetryBuffer b(kPortSeries);
+    // A heat-up to 350 starts at 10 s; the line goes down at 12 s, before the tip is in the
+    // band, and is back 25 s later with the tip long there; a joint dips at 50 s and the line
+    // goes down again in the middle of it.
+    qint32 tip = 300;
+    for (int i = 0; i < 120; ++i) {
+        const qint32 setpoint = i < 100 ? 300 : 350;
+        if (i >= 100 && tip < 350)
+            ++tip;
+        b.append(kT0 + i * 100, {tip, setpoint, 500, 0});
+    }
+    b.markGap(kT0 + 12'000, TelemetryGap::Cause::LineDown);
+    for (int i = 370; i < 520; ++i)
+        b.append(kT0 + i * 100, {i >= 500 ? 320 : 350, 350, 500, 0});
+    b.markGap(kT0 + 52'000, TelemetryGap::Cause::NoAnswer);
+    for (int i = 800; i < 900; ++i)
+        b.append(kT0 + i * 100, {350, 350, 200, 0});
+    const PortMeasurements m = Measurements::measurePort(b, kT0, kT0 + 90'000, 5);
+    QCOMPARE(m.heatUps.size(), 1);
+    QCOMPARE(m.heatUps.first().startMs, kT0 + 10'000);
+    QVERIFY2(!m.heatUps.first().reachedMs, "the heat-up ended unseen, in the gap");
+    QCOMPARE(m.recoveries.size(), 1);
+    QCOMPARE(m.recoveries.first().startMs, kT0 + 50'000);
+    QVERIFY2(!m.recoveries.first().recoveredMs, "the recovery ended unseen, in the gap");
 }
 
 void TestMeasurements::recoveryRunsFromLeavingTheBandUntilBackInIt() {

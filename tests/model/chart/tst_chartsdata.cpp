@@ -39,6 +39,8 @@ private Q_SLOTS:
     void aOneSampleSpikeIsNeverLost();
     void pointsAreInTimeOrderAndLeadInFromTheLeft();
     void readoutIsTheBuffersNewestSampleAtOrBeforeTheInstant();
+    void aCurveIsNeverDrawnAcrossAGapAndTheReadoutThereIsBlank_data();
+    void aCurveIsNeverDrawnAcrossAGapAndTheReadoutThereIsBlank();
     void hardwareTemperaturesAreTracedOnlyWhenAskedAndTheTransformerOnce();
     void followingWindowMovesWithTheData();
     void zoomKeepsTheInstantUnderTheCursorAndStopsFollowing();
@@ -142,6 +144,52 @@ void TestChartsData::readoutIsTheBuffersNewestSampleAtOrBeforeTheInstant() {
     QVERIFY(readoutText(traces, at, kT0 + 2600).contains(QStringLiteral("P1 tip 210 °C")));
 }
 
+void TestChartsData::aCurveIsNeverDrawnAcrossAGapAndTheReadoutThereIsBlank_data() {
+    QTest::addColumn<int>("columns");
+    QTest::newRow("sparse: a line between samples") << 4000;
+    QTest::newRow("dense: a column per pixel") << 200;
+}
+
+void TestChartsData::aCurveIsNeverDrawnAcrossAGapAndTheReadoutThereIsBlank() {
+    QFETCH(int, columns);
+    model::Telemetry telemetry;
+    const QString key = QStringLiteral("line|01|DME-2C|1|port1");
+    telemetry.ensureBuffer(key, kPortSeries);
+    // 60 s at 4 Hz, a 25 s unplug, 60 s more.
+    for (int i = 0; i < 240; ++i)
+        telemetry.append(key, kT0 + i * 250, {300 + i % 7, 350, 100, 0});
+    QVERIFY(telemetry.markGap(key, kT0 + 60'000, TelemetryGap::Cause::LineDown));
+    const qint64 back = kT0 + 85'000;
+    for (int i = 0; i < 240; ++i)
+        telemetry.append(key, back + i * 250, {300 + i % 5, 350, 100, 0});
+    ChartChannel channel;
+    channel.key = key;
+    channel.port = 1;
+    channel.series = kPortSeries;
+    const QList<ChartTrace> traces = tracesFor({channel}, {0}, model::TemperatureUnit::Celsius);
+    const ChartFrame frame =
+        buildFrame(telemetry, {channel}, traces, kT0 - 10'000, back + 70'000, columns);
+    for (const QList<QPointF> &points : frame.points) {
+        int breaks = 0;
+        for (qsizetype i = 1; i < points.size(); ++i) {
+            const QPointF a = points.at(i - 1);
+            const QPointF b = points.at(i);
+            if (!std::isfinite(a.y()) || !std::isfinite(b.y())) {
+                breaks += std::isfinite(b.y()) ? 0 : 1;
+                continue;
+            }
+            QVERIFY2(!(a.x() < kT0 + 60'000 && b.x() >= back),
+                     qPrintable(QStringLiteral("a line joins %1 and %2 across the gap")
+                                    .arg(a.x() - kT0)
+                                    .arg(b.x() - kT0)));
+        }
+        QCOMPARE(breaks, 1);
+    }
+    QVERIFY(!readoutAt(telemetry, {channel}, traces, kT0 + 70'000).at(0).valid);
+    QVERIFY(readoutAt(telemetry, {channel}, traces, kT0 + 59'900).at(0).valid);
+    QVERIFY(readoutAt(telemetry, {channel}, traces, back).at(0).valid);
+}
+
 void TestChartsData::hardwareTemperaturesAreTracedOnlyWhenAskedAndTheTransformerOnce() {
     const QStringList series =
         kPortSeries + QStringList{QStringLiteral("transistor"), QStringLiteral("transformer")};
@@ -223,8 +271,12 @@ void TestChartsData::liveEventsKeepTheNewestWithTheirTextsAndAReplayKeepsAll() {
     for (int i = 0; i < kCount; ++i) {
         // Now and then one arrives late, stamped before the one added just before it.
         const qint64 t = kT0 + i * 100 - (i % 7 == 0 ? 150 : 0);
-        const ChartEvent e{t, model::Event::Kind::Write, model::Event::Severity::Info,
-                           QStringLiteral("@01"), QStringLiteral("ST1 = %1 °C").arg(i)};
+        const ChartEvent e{t,
+                           model::Event::Kind::Write,
+                           model::Event::Severity::Info,
+                           QStringLiteral("@01"),
+                           QStringLiteral("ST1 = %1 °C").arg(i),
+                           QString()};
         live.add(e);
         replay.add(e);
     }

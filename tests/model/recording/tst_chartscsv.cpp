@@ -50,11 +50,13 @@ void fill(Telemetry &t, QList<ChartChannel> &channels, ChartEvents &events) {
             t.append(channels.at(1).key, kT0 + i * 100 + (i % 2 ? 0 : 37), {351, 350, 123, 11});
         if (i % 10 == 0)
             t.append(channels.at(2).key, kT0 + i * 100, {i * 5, 125, 1});
+        if (i == 250) // port 2 stops answering for a while
+            t.markGap(channels.at(1).key, kT0 + i * 100 + 50, TelemetryGap::Cause::NoAnswer);
     }
     events.add({kT0 + 30'000, Event::Kind::Status, Event::Severity::Info, QStringLiteral("port1"),
-                QStringLiteral("Working → Stand")});
+                QStringLiteral("Working → Stand"), QString()});
     events.add({kT0 + 30'050, Event::Kind::Write, Event::Severity::Info, QStringLiteral("@01"),
-                QStringLiteral("ST1 = 350 °C, \"saved\"")});
+                QStringLiteral("ST1 = 350 °C, \"saved\""), QString()});
 }
 
 void compareSamples(const Telemetry &a, const QString &keyA, const Telemetry &b,
@@ -133,6 +135,18 @@ void TestChartsCsv::exportReadsBackExactlyForReplay() {
         QCOMPARE(c.highAlarm, channels.at(i).highAlarm);
         compareSamples(live, channels.at(i).key, *replay->telemetry, c.key);
     }
+    // The gap is in the file, and the replay has it where the live history had it.
+    QVERIFY(text.contains(QStringLiteral("port2 gap: no-answer")));
+    const auto liveGaps = live.buffer(channels.at(1).key)->gaps().within(kT0, kT0 + 3600'000);
+    const auto replayGaps =
+        replay->telemetry->buffer(replay->channels.at(1).key)->gaps().within(kT0, kT0 + 3600'000);
+    QCOMPARE(liveGaps.size(), 1);
+    QCOMPARE(replayGaps.size(), 1);
+    QCOMPARE(replayGaps.first().startMs, liveGaps.first().startMs);
+    QCOMPARE(replayGaps.first().endMs, liveGaps.first().endMs);
+    QCOMPARE(replayGaps.first().cause, TelemetryGap::Cause::NoAnswer);
+    QVERIFY(
+        replay->telemetry->buffer(replay->channels.at(0).key)->gaps().within(0, kT0 * 2).isEmpty());
     const QList<ChartEvent> back = replay->events.between(kT0, kT0 + 3600'000);
     QCOMPARE(back.size(), 2);
     QCOMPARE(back.at(1).kind, Event::Kind::Write);
@@ -221,7 +235,7 @@ void TestChartsCsv::recorderWritesEachNewSampleOnceInTimeOrder() {
     live.append(c.key, kT0 + 200, {104, 350, 0, 0});
     // An event stamped a little before rows already written must not break the time order.
     recorder.addEvent({kT0 + 50, Event::Kind::Status, Event::Severity::Info,
-                       QStringLiteral("port1"), QStringLiteral("Working → Stand")});
+                       QStringLiteral("port1"), QStringLiteral("Working → Stand"), QString()});
     recorder.flush();
     recorder.stop();
     QCOMPARE(recorder.rowsWritten(), 4); // the late event shares the row of the sample at +100

@@ -38,6 +38,9 @@ private Q_SLOTS:
     void valueAtGivesTheSampleAtOrJustBeforeTheTime_data();
     void valueAtGivesTheSampleAtOrJustBeforeTheTime();
     void valuesBeyondSixteenBitsAreKeptExactly();
+    void nothingIsReadInAGapAndTheNextSampleEndsIt();
+    void aWindowSplitsIntoTheStretchesBetweenItsGaps();
+    void gapsOlderThanTheOldestSampleAreDropped();
     void unknownSeriesGivesEmptyAnswers();
     void memoryPerSamplePerSeriesIsAtMostSixteenBytes_data();
     void memoryPerSamplePerSeriesIsAtMostSixteenBytes();
@@ -235,6 +238,55 @@ void TestTelemetryBuffer::emptyBufferAllocatesNoSampleStorage() {
     QVERIFY(buffer.memoryBytes() < 1024);
     QVERIFY(!buffer.valueAt(0, 0));
     QVERIFY(buffer.samples(0, 0, 1).isEmpty());
+}
+
+void TestTelemetryBuffer::nothingIsReadInAGapAndTheNextSampleEndsIt() {
+    TelemetryBuffer buffer(kPortSeries);
+    buffer.append(1000, {300, 350, 0, 0});
+    buffer.markGap(1500, TelemetryGap::Cause::LineDown);
+    buffer.markGap(2000, TelemetryGap::Cause::NoAnswer); // one gap: the first cause stays
+    QVERIFY(buffer.gaps().isOpen());
+    QCOMPARE(buffer.valueAt(0, 1000)->value, 300); // the last sample before it stays readable
+    QCOMPARE(buffer.valueAt(0, 1400)->value, 300);
+    QVERIFY(!buffer.valueAt(0, 1500));
+    QVERIFY(!buffer.valueAt(0, 99'000)); // still open: nothing known up to now
+    buffer.append(26'500, {340, 350, 0, 0});
+    QVERIFY(!buffer.gaps().isOpen());
+    QCOMPARE(buffer.gaps().size(), 1);
+    const TelemetryGap gap = *buffer.gaps().at(20'000);
+    QCOMPARE(gap.startMs, 1500);
+    QCOMPARE(gap.endMs, std::optional<qint64>(26'500));
+    QCOMPARE(gap.cause, TelemetryGap::Cause::LineDown);
+    QVERIFY(!buffer.valueAt(0, 26'499));
+    QCOMPARE(buffer.valueAt(0, 26'500)->value, 340);
+    QCOMPARE(buffer.valueAt(0, 30'000)->value, 340);
+}
+
+void TestTelemetryBuffer::aWindowSplitsIntoTheStretchesBetweenItsGaps() {
+    TelemetryBuffer buffer(kPortSeries);
+    buffer.append(0, {1, 1, 1, 1});
+    buffer.markGap(100, TelemetryGap::Cause::LineDown);
+    buffer.append(200, {1, 1, 1, 1});
+    buffer.markGap(300, TelemetryGap::Cause::Disconnected);
+    buffer.append(400, {1, 1, 1, 1});
+    using Stretch = QPair<qint64, qint64>;
+    QCOMPARE(buffer.gaps().continuousStretches(0, 1000),
+             (QList<Stretch>{{0, 100}, {200, 300}, {400, 1000}}));
+    QCOMPARE(buffer.gaps().continuousStretches(150, 350), (QList<Stretch>{{200, 300}}));
+    QCOMPARE(buffer.gaps().within(250, 1000).size(), 1);
+    buffer.markGap(500, TelemetryGap::Cause::NoAnswer); // an open gap ends the last stretch
+    QCOMPARE(buffer.gaps().continuousStretches(400, 1000), (QList<Stretch>{{400, 500}}));
+}
+
+void TestTelemetryBuffer::gapsOlderThanTheOldestSampleAreDropped() {
+    TelemetryBuffer buffer(kPortSeries, 4);
+    buffer.append(0, {1, 1, 1, 1});
+    buffer.markGap(10, TelemetryGap::Cause::LineDown);
+    for (int i = 1; i <= 4; ++i)
+        buffer.append(100 * i, {1, 1, 1, 1});
+    QCOMPARE(buffer.gaps().size(), 1); // it ends at 100, still held
+    buffer.append(500, {1, 1, 1, 1});  // 100 leaves the ring, the gap goes with it
+    QCOMPARE(buffer.gaps().size(), 0);
 }
 
 QTEST_GUILESS_MAIN(TestTelemetryBuffer)
