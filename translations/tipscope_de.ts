@@ -1344,62 +1344,62 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="78"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="79"/>
         <source>Tip</source>
         <translation>Lötspitze</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="80"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="81"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="82"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="83"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="84"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="85"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="86"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="87"/>
         <source>Fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="88"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="89"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="90"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="91"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="92"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="93"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="94"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="95"/>
         <source>Transformer</source>
         <translation>Transformator</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="115"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="128"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="130"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="157"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="159"/>
         <source>P%1 </source>
         <translation>P%1 </translation>
     </message>
@@ -1939,6 +1939,29 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>DeviceIdentity</name>
+    <message>
+        <location filename="../lib/model/deviceidentity.cpp" line="72"/>
+        <source>%1 at %2</source>
+        <translation>%1 an %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/deviceidentity.cpp" line="75"/>
+        <source>software unknown</source>
+        <translation>Software unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/deviceidentity.cpp" line="75"/>
+        <source>software %1</source>
+        <translation>Software %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
+        <source>%1 on %2, %3</source>
+        <translation>%1 über %2, %3</translation>
+    </message>
+</context>
+<context>
     <name>DeviceModel</name>
     <message>
         <location filename="../lib/model/devicemodel.cpp" line="70"/>
@@ -1957,7 +1980,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="206"/>
+        <location filename="../lib/model/devicemodel.cpp" line="205"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2059,27 +2082,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="107"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="109"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="109"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="111"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="111"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="113"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="113"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="115"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="115"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="117"/>
         <source>What happened</source>
         <translation>Ereignis</translation>
     </message>
@@ -2105,7 +2128,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1 hat keinen Befehl %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="117"/>
+        <location filename="../lib/model/feedermodel.cpp" line="115"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -2747,7 +2770,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="119"/>
-        <location filename="../lib/model/parameter.cpp" line="231"/>
+        <location filename="../lib/model/parameter.cpp" line="232"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
@@ -2757,47 +2780,47 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1: %2; zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="188"/>
+        <location filename="../lib/model/parameter.cpp" line="189"/>
         <source>reading %1 (%2)</source>
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="200"/>
+        <location filename="../lib/model/parameter.cpp" line="201"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="201"/>
+        <location filename="../lib/model/parameter.cpp" line="202"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="251"/>
+        <location filename="../lib/model/parameter.cpp" line="252"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="254"/>
+        <location filename="../lib/model/parameter.cpp" line="255"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="276"/>
+        <location filename="../lib/model/parameter.cpp" line="277"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="291"/>
+        <location filename="../lib/model/parameter.cpp" line="292"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="304"/>
+        <location filename="../lib/model/parameter.cpp" line="305"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="318"/>
+        <location filename="../lib/model/parameter.cpp" line="319"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -3206,41 +3229,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="42"/>
-        <location filename="../lib/model/session.cpp" line="113"/>
-        <location filename="../lib/model/session.cpp" line="116"/>
+        <location filename="../lib/model/session.cpp" line="26"/>
+        <location filename="../lib/model/session.cpp" line="92"/>
+        <location filename="../lib/model/session.cpp" line="95"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
+        <location filename="../lib/model/session.cpp" line="91"/>
+        <location filename="../lib/model/session.cpp" line="104"/>
         <location filename="../lib/model/session.cpp" line="112"/>
-        <location filename="../lib/model/session.cpp" line="125"/>
-        <location filename="../lib/model/session.cpp" line="132"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="148"/>
+        <location filename="../lib/model/session.cpp" line="128"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="221"/>
+        <location filename="../lib/model/session.cpp" line="198"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="222"/>
+        <location filename="../lib/model/session.cpp" line="199"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="228"/>
+        <location filename="../lib/model/session.cpp" line="205"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="236"/>
+        <location filename="../lib/model/session.cpp" line="213"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -3279,12 +3302,12 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%1 kann nicht im Speicher sichern</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="117"/>
+        <location filename="../lib/model/stationmodel.cpp" line="116"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="131"/>
+        <location filename="../lib/model/stationmodel.cpp" line="130"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -3353,6 +3376,29 @@ Dauerhaft mit dieser udev-Regel:
             <numerusform>%1 (%n-mal, bis %2)</numerusform>
             <numerusform>%1 (%n-mal, bis %2)</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>TelemetryGap</name>
+    <message>
+        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="39"/>
+        <source>line lost</source>
+        <translation>Leitung verloren</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="41"/>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="43"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="45"/>
+        <source>no data in the recording</source>
+        <translation>keine Daten in der Aufzeichnung</translation>
     </message>
 </context>
 <context>
@@ -3485,47 +3531,47 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Messungen im sichtbaren Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="180"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="182"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="183"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
         <source>%1 — feeder</source>
         <translation>%1 — Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
         <source>%1 — all ports</source>
         <translation>%1 — alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="192"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="194"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="196"/>
         <source>Temperature (%1)</source>
         <translation>Temperatur (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="197"/>
         <source>Power (%)</source>
         <translation>Leistung (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="197"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="314"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="316"/>
         <source>No samples in this window</source>
         <translation>Keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -3713,63 +3759,63 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="137"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="146"/>
         <source> · recording to %1</source>
         <translation> · Aufzeichnung in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="146"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
         <source>there is no chart to export</source>
         <translation>es gibt kein Diagramm zum Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="148"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="157"/>
         <source>could not write %1</source>
         <translation>%1 konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="167"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
         <source>Export chart as PNG</source>
         <translation>Diagramm als PNG exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="167"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
         <source>Export chart data as CSV</source>
         <translation>Diagrammdaten als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="169"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="178"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="169"/>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="202"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="178"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="211"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="174"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="183"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="174"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="183"/>
         <source>Export failed: %1</source>
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="201"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Record to CSV file</source>
         <translation>In CSV-Datei aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="205"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="214"/>
         <source>Record</source>
         <translation>Aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="205"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="214"/>
         <source>Cannot record: %1</source>
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>
@@ -4618,164 +4664,179 @@ Fortfahren?</translation>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="85"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
         <source>Show events of kind</source>
         <translation>Ereignisse dieser Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
         <source>Errors and alarms</source>
         <translation>Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>Station errors</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Port errors</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
         <source>Feeder errors</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Status changes</source>
         <translation>Statuswechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Writes</source>
         <translation>Schreibzugriffe</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
+        <source>Show events of device</source>
+        <translation>Ereignisse des Geräts anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <source>Every device</source>
+        <translation>Alle Geräte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="109"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
+        <source>&amp;Device:</source>
+        <translation>&amp;Gerät:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="120"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="141"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="155"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="169"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="183"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="170"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="184"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="172"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="173"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="174"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="176"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="295"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="318"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="325"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="233"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="263"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="235"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4783,17 +4844,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="318"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="293"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="323"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="326"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>
@@ -5227,62 +5288,62 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="115"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="117"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="122"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
         <source>family %1</source>
         <translation>Familie %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="123"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="125"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
         <source>transformer %1</source>
         <translation>Transformator %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="129"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Stationsfehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
         <source>feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>fed %1</source>
         <translation>vorgeschoben %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
         <source>speed %1</source>
         <translation>Geschwindigkeit %1</translation>
     </message>
@@ -5292,22 +5353,22 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Übersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
         <source>not connected, as last read</source>
         <translation>nicht verbunden, wie zuletzt gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="169"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="171"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: noch nichts gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="171"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt um %1 gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="177"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>Nur-Beobachten ist an: die Robotersteuerung ist aus.</translation>
     </message>
@@ -5950,42 +6011,42 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="22"/>
+        <location filename="../lib/link/line.cpp" line="23"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="45"/>
+        <location filename="../lib/link/line.cpp" line="61"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="47"/>
+        <location filename="../lib/link/line.cpp" line="63"/>
         <source>connecting to %1</source>
         <translation>Verbindung mit %1 wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="49"/>
+        <location filename="../lib/link/line.cpp" line="65"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="51"/>
+        <location filename="../lib/link/line.cpp" line="67"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>getrennt, neuer Versuch alle %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="55"/>
+        <location filename="../lib/link/line.cpp" line="71"/>
         <source>cannot connect: %1</source>
         <translation>Verbindung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="75"/>
+        <location filename="../lib/link/line.cpp" line="91"/>
         <source>disconnected by the user</source>
         <translation>vom Benutzer getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="117"/>
+        <location filename="../lib/link/line.cpp" line="133"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>keine Antwort auf %1 Anfragen in Folge (Kabel abgezogen, Gerät aus oder falsche Adressierung?)</translation>
     </message>

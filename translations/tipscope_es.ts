@@ -1344,62 +1344,62 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="78"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="79"/>
         <source>Tip</source>
         <translation>Punta</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="80"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="81"/>
         <source>Setpoint</source>
         <translation>Consigna</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="82"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="83"/>
         <source>Power</source>
         <translation>Potencia</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="84"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="85"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="86"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="87"/>
         <source>Fed length</source>
         <translation>Longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="88"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="89"/>
         <source>Speed</source>
         <translation>Velocidad</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="90"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="91"/>
         <source>Feeding</source>
         <translation>Alimentando</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="92"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="93"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="94"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="95"/>
         <source>Transformer</source>
         <translation>Transformador</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="115"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="128"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="130"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="157"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="159"/>
         <source>P%1 </source>
         <translation>P%1 </translation>
     </message>
@@ -1941,6 +1941,29 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>DeviceIdentity</name>
+    <message>
+        <location filename="../lib/model/deviceidentity.cpp" line="72"/>
+        <source>%1 at %2</source>
+        <translation>%1 en %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/deviceidentity.cpp" line="75"/>
+        <source>software unknown</source>
+        <translation>software desconocido</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/deviceidentity.cpp" line="75"/>
+        <source>software %1</source>
+        <translation>software %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
+        <source>%1 on %2, %3</source>
+        <translation>%1 en %2, %3</translation>
+    </message>
+</context>
+<context>
     <name>DeviceModel</name>
     <message>
         <location filename="../lib/model/devicemodel.cpp" line="70"/>
@@ -1959,7 +1982,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="206"/>
+        <location filename="../lib/model/devicemodel.cpp" line="205"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2061,27 +2084,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="107"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="109"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="109"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="111"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="111"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="113"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="113"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="115"/>
         <source>Source</source>
         <translation>Origen</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="115"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="117"/>
         <source>What happened</source>
         <translation>Qué ocurrió</translation>
     </message>
@@ -2107,7 +2130,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1 no tiene el comando %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="117"/>
+        <location filename="../lib/model/feedermodel.cpp" line="115"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -2749,7 +2772,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="119"/>
-        <location filename="../lib/model/parameter.cpp" line="231"/>
+        <location filename="../lib/model/parameter.cpp" line="232"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
@@ -2759,47 +2782,47 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="188"/>
+        <location filename="../lib/model/parameter.cpp" line="189"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="200"/>
+        <location filename="../lib/model/parameter.cpp" line="201"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="201"/>
+        <location filename="../lib/model/parameter.cpp" line="202"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="251"/>
+        <location filename="../lib/model/parameter.cpp" line="252"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="254"/>
+        <location filename="../lib/model/parameter.cpp" line="255"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="276"/>
+        <location filename="../lib/model/parameter.cpp" line="277"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="291"/>
+        <location filename="../lib/model/parameter.cpp" line="292"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="304"/>
+        <location filename="../lib/model/parameter.cpp" line="305"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="318"/>
+        <location filename="../lib/model/parameter.cpp" line="319"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -3208,41 +3231,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="42"/>
-        <location filename="../lib/model/session.cpp" line="113"/>
-        <location filename="../lib/model/session.cpp" line="116"/>
+        <location filename="../lib/model/session.cpp" line="26"/>
+        <location filename="../lib/model/session.cpp" line="92"/>
+        <location filename="../lib/model/session.cpp" line="95"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
+        <location filename="../lib/model/session.cpp" line="91"/>
+        <location filename="../lib/model/session.cpp" line="104"/>
         <location filename="../lib/model/session.cpp" line="112"/>
-        <location filename="../lib/model/session.cpp" line="125"/>
-        <location filename="../lib/model/session.cpp" line="132"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="148"/>
+        <location filename="../lib/model/session.cpp" line="128"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="221"/>
+        <location filename="../lib/model/session.cpp" line="198"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="222"/>
+        <location filename="../lib/model/session.cpp" line="199"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="228"/>
+        <location filename="../lib/model/session.cpp" line="205"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="236"/>
+        <location filename="../lib/model/session.cpp" line="213"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -3281,12 +3304,12 @@ Hágalo permanente con esta regla de udev:
         <translation>%1 no puede guardar en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="117"/>
+        <location filename="../lib/model/stationmodel.cpp" line="116"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="131"/>
+        <location filename="../lib/model/stationmodel.cpp" line="130"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -3355,6 +3378,29 @@ Hágalo permanente con esta regla de udev:
             <numerusform>%1 (%n vez, hasta %2)</numerusform>
             <numerusform>%1 (%n veces, hasta %2)</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>TelemetryGap</name>
+    <message>
+        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="39"/>
+        <source>line lost</source>
+        <translation>línea perdida</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="41"/>
+        <source>no answer</source>
+        <translation>sin respuesta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="43"/>
+        <source>disconnected</source>
+        <translation>desconectado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="45"/>
+        <source>no data in the recording</source>
+        <translation>sin datos en la grabación</translation>
     </message>
 </context>
 <context>
@@ -3487,47 +3533,47 @@ Hágalo permanente con esta regla de udev:
         <translation>Mediciones de la ventana visible</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="180"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="182"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="183"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
         <source>%1 — feeder</source>
         <translation>%1 — alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
         <source>%1 — all ports</source>
         <translation>%1 — todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="192"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="194"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="196"/>
         <source>Temperature (%1)</source>
         <translation>Temperatura (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="197"/>
         <source>Power (%)</source>
         <translation>Potencia (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="195"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="197"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="314"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="316"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>
@@ -3715,63 +3761,63 @@ Hágalo permanente con esta regla de udev:
         <translation>Tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="137"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="146"/>
         <source> · recording to %1</source>
         <translation> · grabando en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="146"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
         <source>there is no chart to export</source>
         <translation>no hay ningún gráfico que exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="148"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="157"/>
         <source>could not write %1</source>
         <translation>no se pudo escribir %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="167"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
         <source>Export chart as PNG</source>
         <translation>Exportar gráfico como PNG</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="167"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
         <source>Export chart data as CSV</source>
         <translation>Exportar datos del gráfico como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="169"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="178"/>
         <source>PNG image (*.png)</source>
         <translation>Imagen PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="169"/>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="202"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="178"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="211"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="174"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="183"/>
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="174"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="183"/>
         <source>Export failed: %1</source>
         <translation>Falló la exportación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="201"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Record to CSV file</source>
         <translation>Grabar en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="205"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="214"/>
         <source>Record</source>
         <translation>Grabar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="205"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="214"/>
         <source>Cannot record: %1</source>
         <translation>No se puede grabar: %1</translation>
     </message>
@@ -4620,164 +4666,179 @@ Continue?</source>
         <translation>Historial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="85"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
         <source>Show events of kind</source>
         <translation>Mostrar eventos del tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
         <source>All kinds</source>
         <translation>Todos los tipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
         <source>Errors and alarms</source>
         <translation>Errores y alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>Station errors</source>
         <translation>Errores de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Port errors</source>
         <translation>Errores de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
         <source>Feeder errors</source>
         <translation>Errores del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Alarms</source>
         <translation>Alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Status changes</source>
         <translation>Cambios de estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Writes</source>
         <translation>Escrituras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
+        <source>Show events of device</source>
+        <translation>Mostrar eventos del equipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <source>Every device</source>
+        <translation>Todos los equipos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="109"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
+        <source>&amp;Device:</source>
+        <translation>&amp;Equipo:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="120"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="141"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="155"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="169"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="183"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="170"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="184"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="172"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="173"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="174"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="176"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="295"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="318"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="325"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="233"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="263"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="235"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4785,17 +4846,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="318"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="293"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="323"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="326"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
@@ -5229,62 +5290,62 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="115"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="117"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="122"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
         <source>family %1</source>
         <translation>familia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="123"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="125"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
         <source>transformer %1</source>
         <translation>transformador %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="129"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Error de estación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
         <source>idle</source>
         <translation>en espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>fed %1</source>
         <translation>alimentado %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
         <source>speed %1</source>
         <translation>velocidad %1</translation>
     </message>
@@ -5294,22 +5355,22 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Vista general</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
         <source>not connected, as last read</source>
         <translation>no conectado, según la última lectura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="169"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="171"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: aún no se ha leído nada. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="171"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: los valores en gris son los de la última lectura a las %1. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="177"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>El modo solo monitorización está activo: los mandos del robot están desactivados.</translation>
     </message>
@@ -5952,42 +6013,42 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="22"/>
+        <location filename="../lib/link/line.cpp" line="23"/>
         <source>the line was closed</source>
         <translation>se cerró la línea</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="45"/>
+        <location filename="../lib/link/line.cpp" line="61"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="47"/>
+        <location filename="../lib/link/line.cpp" line="63"/>
         <source>connecting to %1</source>
         <translation>conectando con %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="49"/>
+        <location filename="../lib/link/line.cpp" line="65"/>
         <source>connected: %1</source>
         <translation>conectado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="51"/>
+        <location filename="../lib/link/line.cpp" line="67"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>desconectado, reintentando cada %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="55"/>
+        <location filename="../lib/link/line.cpp" line="71"/>
         <source>cannot connect: %1</source>
         <translation>no se puede conectar: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="75"/>
+        <location filename="../lib/link/line.cpp" line="91"/>
         <source>disconnected by the user</source>
         <translation>desconectado por el usuario</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="117"/>
+        <location filename="../lib/link/line.cpp" line="133"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>sin respuesta a %1 peticiones seguidas (¿cable desenchufado, equipo apagado o direccionamiento incorrecto?)</translation>
     </message>

@@ -1,5 +1,6 @@
 #include "line.h"
 
+#include "ports/serialportlist.h"
 #include "simtransport.h"
 
 namespace tipscope::link {
@@ -21,6 +22,21 @@ Line::Line(std::unique_ptr<Transport> transport, const LineSettings &settings, Q
 Line::~Line() {
     m_queue.stop(tr("the line was closed"));
     m_transport->close();
+}
+
+QString lineIdentityName(const LineSettings &settings) {
+    switch (settings.kind) {
+    case LineSettings::Kind::Demo:
+        return QStringLiteral("demo");
+    case LineSettings::Kind::Tcp:
+        return QStringLiteral("%1:%2").arg(settings.tcpHost).arg(settings.tcpPort);
+    case LineSettings::Kind::Serial:
+        break;
+    }
+    const QString &name = settings.serial.portName;
+    const QString path = name.contains(QLatin1Char('/')) ? name : QStringLiteral("/dev/") + name;
+    const QString byId = describePort(path).byIdPath;
+    return byId.isEmpty() ? path : byId;
 }
 
 std::unique_ptr<Transport> Line::makeTransport(const LineSettings &s, sim::SimLine *demoLine) {

@@ -36,6 +36,11 @@ struct LineSettings {
     bool retryInitialOpen = false;
 };
 
+// How the line is named in a device's identity: for a serial port its /dev/serial/by-id link when
+// it has one (it names the adapter, whatever ttyUSB number it got today), else its device path;
+// "host:port" for a TCP serial server; "demo" for the built-in simulated line.
+[[nodiscard]] QString lineIdentityName(const LineSettings &settings);
+
 class Line : public QObject {
     Q_OBJECT
 public:

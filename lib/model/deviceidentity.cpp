@@ -1,10 +1,15 @@
 #include "deviceidentity.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 
 namespace tipscope::model {
 
 namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(DeviceIdentity)
+};
 
 constexpr QChar kSeparator = QLatin1Char('|');
 constexpr QChar kEscape = QLatin1Char('\\');
@@ -61,6 +66,14 @@ std::optional<DeviceIdentity> DeviceIdentity::fromKey(const QString &key) {
         identity.address = address;
     }
     return identity;
+}
+
+QString DeviceIdentity::description() const {
+    const QString where =
+        address ? Tr::tr("%1 at %2").arg(model).arg(*address, 2, 10, QLatin1Char('0')) : model;
+    const QString software = softwareVersion.isEmpty() ? Tr::tr("software unknown")
+                                                       : Tr::tr("software %1").arg(softwareVersion);
+    return Tr::tr("%1 on %2, %3").arg(where, line, software);
 }
 
 } // namespace tipscope::model

@@ -23,6 +23,8 @@ struct DeviceIdentity {
     QString softwareVersion;
 
     [[nodiscard]] QString key() const;
+    // For people, whose history a view shows: "DME-2C at 01 on /dev/ttyUSB0, software 9996780".
+    [[nodiscard]] QString description() const;
     [[nodiscard]] static std::optional<DeviceIdentity> fromKey(const QString &key);
     // No line: a record about no device in particular (a context change, the journal itself).
     [[nodiscard]] bool isEmpty() const { return line.isEmpty(); }

@@ -201,14 +201,26 @@ void DeviceModel::refreshAll(Priority priority) {
 }
 
 void DeviceModel::logCommunication(const QString &what, const QString &reason) {
-    if (m_log)
-        m_log->add(Event::Kind::Communication, Event::Severity::Warning, displayName(),
-                   m_queue.isOpen() ? Tr::tr("%1: %2").arg(what, reason) : reason);
+    logEvent(Event::Kind::Communication, Event::Severity::Warning, 0,
+             m_queue.isOpen() ? Tr::tr("%1: %2").arg(what, reason) : reason);
 }
 
 void DeviceModel::logWrite(int port, const QString &what) {
-    if (m_log)
-        m_log->add(Event::Kind::Write, Event::Severity::Info, sourceName(port), what);
+    logEvent(Event::Kind::Write, Event::Severity::Info, port, what);
+}
+
+void DeviceModel::logEvent(Event::Kind kind, Event::Severity severity, int port,
+                           const QString &text) {
+    if (!m_log)
+        return;
+    Event e({}, kind, severity, sourceName(port), text);
+    e.device = identity();
+    e.port = port;
+    m_log->append(std::move(e));
+}
+
+DeviceIdentity DeviceModel::identity() const {
+    return {m_lineName, m_info.address, m_info.model, m_info.softwareVersion};
 }
 
 } // namespace tipscope::model

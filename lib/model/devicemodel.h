@@ -49,6 +49,11 @@ public:
     [[nodiscard]] const protocol::FamilyInfo &familyInfo() const;
     [[nodiscard]] std::optional<int> address() const { return m_info.address; }
     [[nodiscard]] QString displayName() const; // "DME-2C at 01"
+    // Which device this is: the line it is reached through, its address, model and software.
+    // Histories (telemetry, events, measurements) are kept under it, never under the address.
+    [[nodiscard]] DeviceIdentity identity() const;
+    // The line's name in the identity (lineIdentityName()); set by whoever built the line.
+    void setLineName(const QString &name) { m_lineName = name; }
     [[nodiscard]] link::RequestQueue &queue() const { return m_queue; }
     [[nodiscard]] const protocol::Catalog &catalog() const { return m_catalog; }
 
@@ -106,6 +111,8 @@ public:
     // device's own), so that the history's Source column does.
     void logCommunication(const QString &what, const QString &reason);
     void logWrite(int port, const QString &what);
+    // An event of this device (`port` 0: the device itself), with its identity and source name.
+    void logEvent(Event::Kind kind, Event::Severity severity, int port, const QString &text);
 
 Q_SIGNALS:
     void temperatureUnitChanged();
@@ -131,6 +138,7 @@ private:
     TemperatureUnit m_unit = TemperatureUnit::Celsius;
     bool m_writesBlocked = false;
     bool m_lineUp = false;
+    QString m_lineName;
     QPointer<EventLog> m_log;
 };
 

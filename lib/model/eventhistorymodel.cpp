@@ -87,6 +87,8 @@ QVariant EventHistoryModel::data(const QModelIndex &index, int role) const {
     case Qt::DisplayRole:
         return text(e, index.column(), false);
     case Qt::ToolTipRole:
+        if (index.column() == Source && !e.device.isEmpty())
+            return e.device.description(); // two devices at one address read alike otherwise
         return index.column() == Time ? text(e, Time, true) : text(e, index.column(), false);
     case LevelRole:
         return int(levelOf(e.severity));
@@ -125,8 +127,15 @@ void EventHistoryFilter::setFilter(quint32 kinds, Event::Severity minimum, const
     invalidateFilter();
 }
 
+void EventHistoryFilter::setDevice(const QString &device) {
+    m_device = device;
+    invalidateFilter();
+}
+
 bool EventHistoryFilter::filterAcceptsRow(int row, const QModelIndex &) const {
     const Event &e = static_cast<const EventHistoryModel *>(sourceModel())->event(row);
+    if (!m_device.isEmpty() && !e.device.isEmpty() && e.device.key() != m_device)
+        return false;
     if (!(m_kinds & eventKindBit(e.kind)) || int(e.severity) < int(m_minimum))
         return false;
     if (m_text.isEmpty())

@@ -1,8 +1,9 @@
 // The session's EventLog as a table (EventHistoryModel), one row per entry, oldest first and
 // bounded like the log, and a filter over it (EventHistoryFilter) by a set of kinds, a minimum
-// severity and free text in any column. Any front end can show it: each cell has its text and
-// the event's Level (LevelRole); how a level looks (icon, tint) is the front end's business.
-// A collapsed flood (EventLog::repeated) is one row whose text says how often and until when.
+// severity, one device and free text in any column. Any front end can show it: each cell has its
+// text and the event's Level (LevelRole); how a level looks (icon, tint) is the front end's
+// business. A collapsed flood (EventLog::repeated) is one row whose text says how often and until
+// when.
 #pragma once
 
 #include "eventlog.h"
@@ -61,6 +62,8 @@ public:
 
     // `kinds`: a set of eventKindBit()s; `text` is matched case-insensitively in any column.
     void setFilter(quint32 kinds, Event::Severity minimum, const QString &text);
+    // Only the events of `device` (an identity key) and of the line itself; empty: every device.
+    void setDevice(const QString &device);
 
 protected:
     bool filterAcceptsRow(int row, const QModelIndex &parent) const override;
@@ -69,6 +72,7 @@ private:
     quint32 m_kinds = kAllEventKinds;
     Event::Severity m_minimum = Event::Severity::Info;
     QString m_text;
+    QString m_device;
 };
 
 } // namespace tipscope::model

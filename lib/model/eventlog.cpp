@@ -68,7 +68,7 @@ QString Event::severityName(Severity severity) {
 
 bool Event::isSaidAgainBy(const Event &later) const {
     return later.kind == kind && later.severity == severity && later.source == source &&
-           later.text == text;
+           later.text == text && later.device == device && later.port == port;
 }
 
 EventLog::EventLog(QObject *parent, int capacity)
@@ -103,7 +103,7 @@ Event *EventLog::repeatTarget(const Event &event) {
     int looked = 0;
     for (auto it = m_events.rbegin(); it != m_events.rend() && looked < kRepeatLookback;
          ++it, ++looked) {
-        if (it->source != event.source || it->kind != event.kind)
+        if (it->source != event.source || it->kind != event.kind || it->device != event.device)
             continue;
         if (!it->isSaidAgainBy(event))
             return nullptr;

@@ -9,6 +9,8 @@
 // count on an entry already announced (found again by its id, as its position can shift).
 #pragma once
 
+#include "deviceidentity.h"
+
 #include <QDateTime>
 #include <QObject>
 #include <deque>
@@ -42,6 +44,11 @@ struct Event {
     Severity severity = Severity::Info;
     QString source; // "DME-2C at 01, port 2"
     QString text;   // "Short circuit"
+    // The device whose history this is (empty for the line's own events) and its port (0: the
+    // device itself). Two devices at one address on different lines, or one after the other,
+    // have different identities even when their sources read the same.
+    DeviceIdentity device;
+    int port = 0;
     // How often it happened (EventLog collapses a flood) and when it last did; lastTime equals
     // time while count is 1.
     int count = 1;
@@ -49,7 +56,8 @@ struct Event {
     // The log's sequence number: 1 for its first entry, never reused; 0 before the log has it.
     quint64 id = 0;
 
-    // Whether `later` says again what this entry says (same kind, severity, source and text).
+    // Whether `later` says again what this entry says (same kind, severity, device, port, source
+    // and text).
     [[nodiscard]] bool isSaidAgainBy(const Event &later) const;
 
     // Stable English keys, for files other programs read (the support report).

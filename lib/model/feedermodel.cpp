@@ -110,11 +110,9 @@ void FeederModel::onParameterChanged(Parameter *p) {
         return;
     m_lastError = v;
     if (v != 0)
-        eventLog()->add(Event::Kind::FeederError, Event::Severity::Error, displayName(),
-                        errorText());
+        logEvent(Event::Kind::FeederError, Event::Severity::Error, 0, errorText());
     else if (!first)
-        eventLog()->add(Event::Kind::FeederError, Event::Severity::Info, displayName(),
-                        Tr::tr("error cleared"));
+        logEvent(Event::Kind::FeederError, Event::Severity::Info, 0, Tr::tr("error cleared"));
 }
 
 } // namespace tipscope::model

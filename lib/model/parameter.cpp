@@ -184,6 +184,7 @@ Reply *Parameter::refresh(Priority priority) {
         } else if (m_state == State::Reading) {
             setState(m_value ? State::InSync : State::Unknown);
         }
+        Q_EMIT readFailed();
         m_device.logCommunication(
             Tr::tr("reading %1 (%2)").arg(settingName(*this), QString::fromLatin1(code())),
             reply->errorString());

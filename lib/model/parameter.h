@@ -92,7 +92,8 @@ public:
 
 Q_SIGNALS:
     void valueChanged();
-    void updated(); // every reading, changed or not (telemetry samples)
+    void updated();    // every reading, changed or not (telemetry samples)
+    void readFailed(); // a reading got no usable answer (a gap in the telemetry)
     void stateChanged();
     void editChanged();
     void writeFinished(bool ok, const QString &reason, quint64 writeId);

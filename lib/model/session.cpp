@@ -13,23 +13,6 @@ namespace {
 struct Tr {
     Q_DECLARE_TR_FUNCTIONS(Session)
 };
-// The hardware temperatures (QTx, TT0) are read with the status values, every few seconds; a
-// sample carries their latest reading. The transformer's is the station's, in every port.
-const QStringList kPortSeries = {QStringLiteral("tip"),        QStringLiteral("setpoint"),
-                                 QStringLiteral("power"),      QStringLiteral("status"),
-                                 QStringLiteral("transistor"), QStringLiteral("transformer")};
-
-// A value the sample can carry: its reading, or 0 for one that cannot be read (a failed
-// read, or a command the family lacks); nullopt while the first reading is still to come.
-std::optional<qint32> carried(const Parameter *p) {
-    if (!p || p->state() == Parameter::State::Failed)
-        return p && p->number() ? qint32(*p->number()) : 0;
-    if (const auto v = p->number())
-        return qint32(*v);
-    return std::nullopt;
-}
-const QStringList kFeederSeries = {QStringLiteral("fed"), QStringLiteral("speed"),
-                                   QStringLiteral("feeding")};
 } // namespace
 
 Session::Session(QObject *parent)
@@ -37,7 +20,8 @@ Session::Session(QObject *parent)
 
 Session::Session(const protocol::Catalog &catalog, QObject *parent)
     : QObject(parent)
-    , m_catalog(catalog) {
+    , m_catalog(catalog)
+    , m_recorder(m_telemetry, [this] { return sampleTimeMs(); }) {
     m_log.setClock([this] { return sampleTimeMs(); });
     m_stateText = Tr::tr("disconnected");
 }
@@ -61,12 +45,6 @@ FeederModel *Session::feeder() const {
     return nullptr;
 }
 
-TelemetryKey Session::telemetryKey(const DeviceModel &device, int port) {
-    const QString who = device.info().addressText();
-    return port > 0 ? QStringLiteral("%1/port%2").arg(who).arg(port)
-                    : who + QStringLiteral("/feeder");
-}
-
 void Session::setState(State s, const QString &text) {
     m_state = s;
     m_stateText = text;
@@ -75,6 +53,7 @@ void Session::setState(State s, const QString &text) {
 
 void Session::clearDevices() {
     for (DeviceModel *d : std::as_const(m_devices)) {
+        m_recorder.unwatch(d, TelemetryGap::Cause::Disconnected);
         m_scheduler.removeDevice(d);
         delete d;
     }
@@ -129,6 +108,7 @@ void Session::onLineState(Line::State s, const QString &) {
             setState(State::Connected, connectedText());
         break;
     case Line::State::Retrying:
+        m_recorder.markGaps(TelemetryGap::Cause::LineDown);
         m_log.add(Event::Kind::Connection, Event::Severity::Error, Tr::tr("line"), text);
         setState(State::Retrying, text);
         break;
@@ -203,24 +183,21 @@ void Session::adoptDevices(const QList<DeviceInfo> &found) {
         const protocol::FamilyInfo *family = m_catalog.family(info.family);
         if (!family)
             continue;
-        if (family->isFeeder()) {
-            auto *f = new FeederModel(m_line->queue(), info, m_catalog, this);
-            recordTelemetry(f);
-            d = f;
-        } else {
-            auto *s = new StationModel(m_line->queue(), info, m_catalog, this);
-            recordTelemetry(s);
-            d = s;
-        }
+        if (family->isFeeder())
+            d = new FeederModel(m_line->queue(), info, m_catalog, this);
+        else
+            d = new StationModel(m_line->queue(), info, m_catalog, this);
+        d->setLineName(lineIdentityName(m_settings.line));
+        m_recorder.watch(d);
         d->setEventLog(&m_log);
         d->setTemperatureUnit(m_unit);
         d->setWritesBlocked(m_monitorOnly);
         m_devices.append(d);
         m_scheduler.addDevice(d);
-        m_log.add(Event::Kind::Connection, Event::Severity::Info, d->displayName(),
-                  Tr::tr("found %1, software %2")
-                      .arg(info.family, info.softwareVersion.isEmpty() ? Tr::tr("unknown")
-                                                                       : info.softwareVersion));
+        d->logEvent(Event::Kind::Connection, Event::Severity::Info, 0,
+                    Tr::tr("found %1, software %2")
+                        .arg(info.family, info.softwareVersion.isEmpty() ? Tr::tr("unknown")
+                                                                         : info.softwareVersion));
     }
     m_scheduler.start();
     Q_EMIT devicesChanged();
@@ -239,51 +216,6 @@ QString Session::connectedText() const {
 
 qint64 Session::sampleTimeMs() const {
     return m_clock.nowMs();
-}
-
-void Session::recordTelemetry(StationModel *station) {
-    using protocol::Role;
-    for (PortModel *port : station->ports()) {
-        const TelemetryKey key = telemetryKey(*station, port->number());
-        m_telemetry.ensureBuffer(key, kPortSeries);
-        Parameter *tip = port->parameter(Role::TipTemperature);
-        if (!tip)
-            continue;
-        // A sample per tip-temperature reading; the other series carry their latest values.
-        connect(tip, &Parameter::updated, this, [this, station, port, key] {
-            const auto status = station->number(Role::Status, port->number());
-            // A series starting at 0 before its first reading would draw a false drop and spoil
-            // the measurements: record once the setpoint, power and temperatures are known.
-            const auto transistor = carried(port->parameter(Role::TransistorTemperature));
-            const auto transformer = carried(station->parameter(Role::TransformerTemperature));
-            if (!port->selectedTemperature() || !port->power() || !transistor || !transformer)
-                return;
-            m_telemetry.append(key, sampleTimeMs(),
-                               {qint32(port->tipTemperature().value_or(0)),
-                                qint32(port->selectedTemperature().value_or(0)),
-                                qint32(port->power().value_or(0)), qint32(status.value_or(0)),
-                                *transistor, *transformer});
-        });
-    }
-}
-
-void Session::recordTelemetry(FeederModel *feeder) {
-    const TelemetryKey key = telemetryKey(*feeder, 0);
-    m_telemetry.ensureBuffer(key, kFeederSeries);
-    using protocol::Role;
-    Parameter *fedLength = feeder->parameter(Role::FedLength);
-    if (!fedLength)
-        return;
-    connect(fedLength, &Parameter::updated, this, [this, feeder, fedLength, key] {
-        // As for the ports: the speed is a setting read less often than the fed length, and a
-        // 0 before its first reading would draw a false step and spoil the window's mean.
-        const auto fed = carried(fedLength);
-        const auto speed = carried(feeder->parameter(Role::FeedSpeed));
-        const auto feeding = carried(feeder->parameter(Role::Feeding));
-        if (!fed || !speed || !feeding)
-            return;
-        m_telemetry.append(key, sampleTimeMs(), {*fed, *speed, *feeding == 1 ? 1 : 0});
-    });
 }
 
 void Session::setTemperatureUnit(TemperatureUnit unit) {

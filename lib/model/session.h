@@ -16,6 +16,7 @@
 #include "sessionclock.h"
 #include "stationmodel.h"
 #include "telemetry/telemetry.h"
+#include "telemetryrecorder.h"
 
 #include "link/discovery.h"
 #include "link/line.h"
@@ -69,9 +70,6 @@ public:
     [[nodiscard]] bool monitorOnly() const { return m_monitorOnly; }
     void setMonitorOnly(bool on);
 
-    // The telemetry key of a port or feeder ("01/port2", "10/feeder", "--/port1").
-    [[nodiscard]] static TelemetryKey telemetryKey(const DeviceModel &device, int port);
-
 Q_SIGNALS:
     void stateChanged(tipscope::model::Session::State state, const QString &text);
     void devicesChanged();
@@ -85,8 +83,6 @@ private:
     void adoptDevices(const QList<link::DeviceInfo> &found);
     void identify(std::optional<int> address);
     void clearDevices();
-    void recordTelemetry(StationModel *station);
-    void recordTelemetry(FeederModel *feeder);
     [[nodiscard]] QString connectedText() const;
     [[nodiscard]] qint64 sampleTimeMs() const;
 
@@ -99,6 +95,7 @@ private:
     PollScheduler m_scheduler;
     EventLog m_log;
     Telemetry m_telemetry;
+    TelemetryRecorder m_recorder;
     State m_state = State::Disconnected;
     QString m_stateText;
     TemperatureUnit m_unit = TemperatureUnit::Celsius;

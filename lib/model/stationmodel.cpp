@@ -110,25 +110,24 @@ void StationModel::logChange(Parameter *p, int port) {
     if (before == *v && !first)
         return;
     const Role role = p->meta().role;
-    const QString source = sourceName(port);
     if (role == Role::Status) {
         if (!first)
-            log->add(Event::Kind::Status, Event::Severity::Info, source,
+            logEvent(Event::Kind::Status, Event::Severity::Info, port,
                      Tr::tr("%1 → %2").arg(PortStatus::fromNumber(before).text(),
                                            PortStatus::fromNumber(*v).text()));
     } else if (role == Role::Alarm) {
         if (*v != 0)
-            log->add(Event::Kind::Alarm, Event::Severity::Warning, source, p->displayText());
+            logEvent(Event::Kind::Alarm, Event::Severity::Warning, port, p->displayText());
     } else {
         const bool isStation = port == 0;
         const QString table = isStation ? familyInfo().stationErrors : familyInfo().portErrors;
         const int code = isStation ? int(*v) : catalog().canonicalPortError(int(*v));
         if (code != 0)
-            log->add(isStation ? Event::Kind::StationError : Event::Kind::PortError,
-                     severityOf(catalog(), table, code), source, p->displayText());
+            logEvent(isStation ? Event::Kind::StationError : Event::Kind::PortError,
+                     severityOf(catalog(), table, code), port, p->displayText());
         else if (!first)
-            log->add(isStation ? Event::Kind::StationError : Event::Kind::PortError,
-                     Event::Severity::Info, source, Tr::tr("error cleared"));
+            logEvent(isStation ? Event::Kind::StationError : Event::Kind::PortError,
+                     Event::Severity::Info, port, Tr::tr("error cleared"));
     }
 }
 

@@ -102,7 +102,7 @@ void TestChartsPage::connectDemo() {
 }
 
 void TestChartsPage::waitForSamples(int count) {
-    const QString key = Session::telemetryKey(*m_session->station(), 1);
+    const QString key = TelemetryRecorder::keyOf(*m_session->station(), 1);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->telemetry().buffer(key)->size() >= count, kDataMs);
 }
 
@@ -186,7 +186,7 @@ void TestChartsPage::zoomAndPanKeepTheCrosshairReadoutConsistentWithTheBuffer() 
 
     // Hover over data: the readout is the buffer's newest sample at or before that instant.
     const auto *tips =
-        m_session->telemetry().buffer(Session::telemetryKey(*m_session->station(), 1));
+        m_session->telemetry().buffer(TelemetryRecorder::keyOf(*m_session->station(), 1));
     const double x = pane->xAt(tips->lastTime() - 2000);
     QVERIFY(plot.contains(QPointF(x, plot.center().y())));
     sendMouse(surface, QEvent::MouseMove, QPointF(x, plot.center().y()), Qt::NoButton,
@@ -277,7 +277,7 @@ void TestChartsPage::aReplayIsReadWithProgressAndCancelWhileTheLiveChartsGoOn() 
              qPrintable(progress->labelText()));
     // Meanwhile the live charts go on: new samples are drawn.
     const qint64 redraws = m_page->redrawCount();
-    const QString key = Session::telemetryKey(*m_session->station(), 1);
+    const QString key = TelemetryRecorder::keyOf(*m_session->station(), 1);
     const qint64 samples = m_session->telemetry().buffer(key)->totalAppended();
     QTRY_VERIFY_WITH_TIMEOUT(m_page->redrawCount() > redraws + 2 &&
                                  m_session->telemetry().buffer(key)->totalAppended() > samples,
@@ -302,7 +302,7 @@ void TestChartsPage::recordingWritesTheNewSamplesToTheFile() {
     const QString path = m_dir.filePath(QStringLiteral("rec.csv"));
     QCOMPARE(m_page->startRecording(path), QString());
     QVERIFY(m_page->isRecording());
-    const QString key = Session::telemetryKey(*m_session->station(), 1);
+    const QString key = TelemetryRecorder::keyOf(*m_session->station(), 1);
     const qint64 before = m_session->telemetry().buffer(key)->totalAppended();
     QTRY_VERIFY_WITH_TIMEOUT(m_session->telemetry().buffer(key)->totalAppended() >= before + 8,
                              kDataMs);
@@ -361,7 +361,7 @@ void TestChartsPage::hardwareTemperaturesAreDrawnOnRequest() {
     m_page->redrawNow();
     for (int i = 12; i < 17; ++i)
         QVERIFY2(stationPane()->pointCount(i) > 0, qPrintable(names.at(i)));
-    const QString key = Session::telemetryKey(*m_session->station(), 1);
+    const QString key = TelemetryRecorder::keyOf(*m_session->station(), 1);
     const model::TelemetryBuffer *b = m_session->telemetry().buffer(key);
     for (const char *series : {"transistor", "transformer"}) {
         const qint32 newest =
@@ -378,7 +378,7 @@ void TestChartsPage::theFeedersSeriesStartAtTheirFirstReadings() {
     model::FeederModel *feeder = m_session->feeder();
     QVERIFY(feeder);
     const model::TelemetryBuffer *b =
-        m_session->telemetry().buffer(Session::telemetryKey(*feeder, 0));
+        m_session->telemetry().buffer(TelemetryRecorder::keyOf(*feeder, 0));
     QVERIFY(b);
     const model::Parameter *setting = feeder->parameter("SPD");
     QTRY_VERIFY_WITH_TIMEOUT(setting->number() && b->size() >= 5, kDataMs);
@@ -403,7 +403,7 @@ void TestChartsPage::theDemoAtWorkShowsAJointsRecoveryAndTheFeederFeeding() {
     QTRY_VERIFY2_WITH_TIMEOUT(m_page->measurementText().contains(QStringLiteral("recovery at ")),
                               qPrintable(m_page->measurementText()), jointMs + kDataMs);
     const model::TelemetryBuffer *feeder =
-        m_session->telemetry().buffer(Session::telemetryKey(*m_session->feeder(), 0));
+        m_session->telemetry().buffer(TelemetryRecorder::keyOf(*m_session->feeder(), 0));
     QTRY_VERIFY_WITH_TIMEOUT(feeder->windowStats(feeder->seriesIndex(QStringLiteral("fed")),
                                                  feeder->firstTime(), feeder->lastTime() + 1)
                                      .max > 0,

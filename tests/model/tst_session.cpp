@@ -66,8 +66,10 @@ void TestSession::samplesCarryTheValuesTheirRolesName() {
     Session session;
     session.connectTo(demoSettings());
     QTRY_VERIFY_WITH_TIMEOUT(session.station() && session.feeder(), kConnectMs);
-    const TelemetryBuffer *port = session.telemetry().buffer(QStringLiteral("01/port1"));
-    const TelemetryBuffer *feeder = session.telemetry().buffer(QStringLiteral("10/feeder"));
+    const TelemetryBuffer *port =
+        session.telemetry().buffer(TelemetryRecorder::keyOf(*session.station(), 1));
+    const TelemetryBuffer *feeder =
+        session.telemetry().buffer(TelemetryRecorder::keyOf(*session.feeder(), 0));
     QVERIFY(port && feeder);
     QTRY_VERIFY_WITH_TIMEOUT(!port->isEmpty() && !feeder->isEmpty(), kConnectMs);
     StationModel *st = session.station();

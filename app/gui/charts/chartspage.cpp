@@ -138,6 +138,8 @@ QList<ChartTrace> ChartsPage::traces(int pane) const {
 
 void ChartsPage::refreshLiveChannels() {
     m_liveChannels = sessionChannels(m_session);
+    if (m_source)
+        updateSourceLabel();
     if (!isReplay())
         rebuildPanes();
 }

@@ -133,6 +133,15 @@ void ChartsPage::updateSourceLabel() {
     QString text = m_replay ? tr("Replay: %1 (%Ln row(s))", nullptr, int(m_replay->rows))
                                   .arg(QFileInfo(m_replayPath).fileName())
                             : tr("Live");
+    // Whose history the curves are: another device at the same address has a history of its own.
+    if (!m_replay) {
+        QStringList devices;
+        for (const ChartChannel &c : m_liveChannels)
+            if (!c.device.isEmpty() && !devices.contains(c.device.description()))
+                devices.append(c.device.description());
+        if (!devices.isEmpty())
+            text += QStringLiteral(": ") + devices.join(QStringLiteral("; "));
+    }
     if (m_recorder->isRecording())
         text += tr(" · recording to %1").arg(QFileInfo(m_recorder->path()).fileName());
     m_source->setFullText(text);

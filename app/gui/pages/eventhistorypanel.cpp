@@ -74,6 +74,7 @@ EventHistoryPanel::EventHistoryPanel(Session &session, QWidget *parent)
         updateCount();
     });
     m_events->reset(m_session.eventLog().events());
+    addDevices(m_session.eventLog().events());
     fitTimeColumn();
     m_history->scrollToBottom();
     updateCount();
@@ -96,6 +97,13 @@ QLayout *EventHistoryPanel::buildFilters() {
         {Event::Kind::Connection, tr("Connection")}};
     for (const auto &[kind, name] : kinds)
         m_kindFilter->addItem(name, eventKindBit(kind));
+    m_deviceFilter = new QComboBox(this);
+    m_deviceFilter->setObjectName(QStringLiteral("deviceFilter"));
+    m_deviceFilter->setAccessibleName(tr("Show events of device"));
+    m_deviceFilter->addItem(tr("Every device"), QString());
+    // A device is named with its line and software, which can be long: the list shows it whole.
+    m_deviceFilter->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_deviceFilter->setMinimumContentsLength(14);
     m_severityFilter = new QComboBox(this);
     m_severityFilter->setObjectName(QStringLiteral("severityFilter"));
     m_severityFilter->setAccessibleName(tr("Show events of severity"));
@@ -107,6 +115,8 @@ QLayout *EventHistoryPanel::buildFilters() {
     m_textFilter->setAccessibleName(tr("Show events containing"));
     m_textFilter->setPlaceholderText(tr("Text in any column"));
     m_textFilter->setClearButtonEnabled(true);
+    auto *deviceLabel = new QLabel(tr("&Device:"), this);
+    deviceLabel->setBuddy(m_deviceFilter);
     auto *kindLabel = new QLabel(tr("&Kind:"), this);
     kindLabel->setBuddy(m_kindFilter);
     auto *severityLabel = new QLabel(tr("Se&verity:"), this);
@@ -114,6 +124,9 @@ QLayout *EventHistoryPanel::buildFilters() {
     auto *textLabel = new QLabel(tr("&Search:"), this);
     textLabel->setBuddy(m_textFilter);
     auto *filters = new QHBoxLayout;
+    filters->addWidget(deviceLabel);
+    filters->addWidget(m_deviceFilter);
+    filters->addSpacing(12);
     filters->addWidget(kindLabel);
     filters->addWidget(m_kindFilter);
     filters->addSpacing(12);
@@ -122,6 +135,8 @@ QLayout *EventHistoryPanel::buildFilters() {
     filters->addSpacing(12);
     filters->addWidget(textLabel);
     filters->addWidget(m_textFilter, 1);
+    connect(m_deviceFilter, &QComboBox::currentIndexChanged, this,
+            &EventHistoryPanel::applyFilters);
     connect(m_kindFilter, &QComboBox::currentIndexChanged, this, &EventHistoryPanel::applyFilters);
     connect(m_severityFilter, &QComboBox::currentIndexChanged, this,
             &EventHistoryPanel::applyFilters);
@@ -203,6 +218,7 @@ void EventHistoryPanel::flushEvents() {
     const QScrollBar *bar = m_history->verticalScrollBar();
     const bool follow = bar->value() >= bar->maximum();
     m_events->append(m_pending);
+    addDevices(m_pending);
     m_pending.clear();
     fitTimeColumn();
     if (follow)
@@ -221,7 +237,22 @@ void EventHistoryPanel::fitTimeColumn() {
                                                  fontMetrics().horizontalAdvance(widest) + pad);
 }
 
+void EventHistoryPanel::addDevices(const QList<Event> &events) {
+    for (const Event &e : events) {
+        if (e.device.isEmpty())
+            continue;
+        const QString key = e.device.key();
+        if (m_deviceFilter->findData(key) >= 0)
+            continue;
+        const QString name = e.device.description();
+        m_deviceFilter->addItem(name, key);
+        m_deviceFilter->setItemData(m_deviceFilter->count() - 1, name, Qt::ToolTipRole);
+    }
+}
+
 void EventHistoryPanel::applyFilters() {
+    m_filter->setDevice(m_deviceFilter->currentData().toString());
+    m_deviceFilter->setToolTip(m_deviceFilter->currentText());
     m_filter->setFilter(m_kindFilter->currentData().toUInt(),
                         Event::Severity(m_severityFilter->currentData().toInt()),
                         m_textFilter->text());

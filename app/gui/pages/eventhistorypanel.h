@@ -44,9 +44,12 @@ private:
     void updateCount();
     void updateButtons();
     void chooseExportFile();
+    // Offers each device the events name in the device filter, once.
+    void addDevices(const QList<model::Event> &events);
     [[nodiscard]] QString rowText(int proxyRow) const;
 
     model::Session &m_session;
+    QComboBox *m_deviceFilter = nullptr;
     QComboBox *m_kindFilter = nullptr;
     QComboBox *m_severityFilter = nullptr;
     QLineEdit *m_textFilter = nullptr;

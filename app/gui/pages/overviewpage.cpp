@@ -2,6 +2,8 @@
 
 #include "portcard.h"
 
+#include "model/telemetryrecorder.h"
+
 #include <QGridLayout>
 #include <QLabel>
 #include <QLocale>
@@ -74,7 +76,7 @@ void OverviewPage::rebuild() {
         const int columns = qMax(1, st->ports().size() > 2 ? 2 : int(st->ports().size()));
         for (PortModel *port : st->ports()) {
             auto *card = new PortCard(*port, m_session.telemetry(),
-                                      Session::telemetryKey(*st, port->number()), m_cardsHost);
+                                      TelemetryRecorder::keyOf(*st, port->number()), m_cardsHost);
             const int i = int(m_cards.size());
             m_grid->addWidget(card, i / columns, i % columns);
             m_grid->setRowStretch(i / columns, 1);

@@ -26,6 +26,8 @@ bool ChartEvent::isMarked(Event::Kind kind) {
 }
 
 bool ChartEvent::concerns(const ChartChannel &channel) const {
+    if (!device.isEmpty() && device != channel.device.key())
+        return false;
     return scope == channel.id || scope == QLatin1Char('@') + channel.address;
 }
 
@@ -67,23 +69,25 @@ std::optional<ChartEvent> ChartEvent::fromLog(const Event &event,
         return std::nullopt;
     QString scope;
     for (const ChartChannel &c : channels) {
-        const QString device = c.deviceName;
-        if (event.source == device) {
+        if (event.device.isEmpty() || event.device != c.device)
+            continue;
+        if (event.port == 0) {
             scope = QLatin1Char('@') + c.address;
             break;
         }
-        // The log names a port as "<device>, port <n>" (DeviceModel::sourceName); only the
-        // number is compared, so a translated "port" still matches.
-        if (!c.isFeeder() && event.source.startsWith(device + QStringLiteral(", ")) &&
-            event.source.section(QLatin1Char(' '), -1).toInt() == c.port) {
+        if (!c.isFeeder() && event.port == c.port) {
             scope = c.id;
             break;
         }
     }
     if (scope.isEmpty())
         return std::nullopt;
-    return ChartEvent{event.time.toMSecsSinceEpoch(), event.kind, event.severity, scope,
-                      event.text};
+    return ChartEvent{event.time.toMSecsSinceEpoch(),
+                      event.kind,
+                      event.severity,
+                      scope,
+                      event.text,
+                      event.device.key()};
 }
 
 std::optional<ChartEvent> ChartEvents::addFromLog(const Event &event,
@@ -104,6 +108,14 @@ void ChartEvents::add(const ChartEvent &event) {
     entry.textBytes = quint32(text.size());
     entry.kind = quint8(event.kind);
     entry.severity = quint8(event.severity);
+    if (!event.device.isEmpty()) {
+        qsizetype index = m_devices.indexOf(event.device);
+        if (index < 0) {
+            m_devices.append(event.device);
+            index = m_devices.size() - 1;
+        }
+        entry.device = quint16(qMin<qsizetype>(index + 1, 0xFFFF));
+    }
     m_texts.append(scope).append(text);
     // Events come in time order, so this is an append but for the odd late one.
     const auto at = std::upper_bound(m_entries.begin(), m_entries.end(), entry.timeMs,
@@ -115,6 +127,7 @@ void ChartEvents::add(const ChartEvent &event) {
 
 void ChartEvents::clear() {
     m_entries.clear();
+    m_devices.clear();
     m_texts.clear();
     m_deadBytes = 0;
 }
@@ -143,9 +156,12 @@ void ChartEvents::compactTexts() {
 
 ChartEvent ChartEvents::eventAt(const Entry &e) const {
     const char *scope = m_texts.constData() + e.offset;
-    return ChartEvent{e.timeMs, Event::Kind(e.kind), Event::Severity(e.severity),
+    return ChartEvent{e.timeMs,
+                      Event::Kind(e.kind),
+                      Event::Severity(e.severity),
                       QString::fromUtf8(scope, e.scopeBytes),
-                      QString::fromUtf8(scope + e.scopeBytes, qsizetype(e.textBytes))};
+                      QString::fromUtf8(scope + e.scopeBytes, qsizetype(e.textBytes)),
+                      e.device > 0 ? m_devices.value(e.device - 1) : QString()};
 }
 
 qint64 ChartEvents::memoryBytes() const {

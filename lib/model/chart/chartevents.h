@@ -8,8 +8,9 @@
 //
 // Each event has a scope: the channel it concerns ("port3", "feeder") or a whole device
 // ("@01": station errors and writes, which name no port). Live events get their scope from the
-// event log's source text ("DME-4C at 01, port 3"); replayed ones from the CSV. The CSV form of
-// an event is one cell, "port3 status: Working → Stand" (scope, kind token, text).
+// event's device identity and port, and concern only the channels of that very device (another
+// device once at the same address keeps its markers to itself); replayed ones from the CSV. The CSV
+// form of an event is one cell, "port3 status: Working → Stand" (scope, kind token, text).
 #pragma once
 
 #include "model/chart/chartseries.h"
@@ -27,6 +28,9 @@ struct ChartEvent {
     Event::Severity severity = Event::Severity::Info;
     QString scope;
     QString text;
+    // The identity key of the device it happened on (live events); empty when the file it came
+    // from names one device per channel anyway (a replay).
+    QString device;
 
     [[nodiscard]] bool concerns(const ChartChannel &channel) const;
     [[nodiscard]] QString toCsvCell() const;
@@ -71,6 +75,7 @@ private:
         quint32 scopeBytes = 0;
         quint8 kind = 0;     // Event::Kind
         quint8 severity = 0; // Event::Severity
+        quint16 device = 0;  // index into m_devices
     };
 
     [[nodiscard]] ChartEvent eventAt(const Entry &entry) const;
@@ -80,6 +85,8 @@ private:
     qsizetype m_capacity;
     std::deque<Entry> m_entries;
     QByteArray m_texts;
+    // The devices events were seen on; few per session, so each entry holds an index.
+    QStringList m_devices;
     qint64 m_deadBytes = 0; // of m_texts, no longer used by an entry
 };
 

@@ -1,6 +1,7 @@
 #include "model/chart/chartseries.h"
 
 #include "model/session.h"
+#include "model/telemetryrecorder.h"
 #include "protocol/catalog.h"
 
 #include <QCoreApplication>
@@ -102,12 +103,13 @@ QList<ChartChannel> sessionChannels(Session &session) {
         c.deviceName = d.displayName();
         c.address = d.info().addressText();
         c.softwareVersion = d.info().softwareVersion;
+        c.device = d.identity();
     };
     for (DeviceModel *d : session.devices()) {
         if (auto *station = qobject_cast<StationModel *>(d)) {
             for (PortModel *port : station->ports()) {
                 ChartChannel c;
-                c.key = Session::telemetryKey(*station, port->number());
+                c.key = TelemetryRecorder::keyOf(*station, port->number());
                 c.port = port->number();
                 c.id = QStringLiteral("port%1").arg(c.port);
                 c.title = Tr::tr("Port %1").arg(c.port);
@@ -123,7 +125,7 @@ QList<ChartChannel> sessionChannels(Session &session) {
             }
         } else if (auto *feeder = qobject_cast<FeederModel *>(d)) {
             ChartChannel c;
-            c.key = Session::telemetryKey(*feeder, 0);
+            c.key = TelemetryRecorder::keyOf(*feeder, 0);
             c.id = QStringLiteral("feeder");
             c.title = Tr::tr("Feeder");
             describe(*feeder, c);

@@ -7,6 +7,7 @@
 // (replay), so live and replay charts are drawn by the same code.
 #pragma once
 
+#include "model/deviceidentity.h"
 #include "model/displayunits.h"
 #include "model/telemetry/telemetry.h"
 
@@ -44,7 +45,7 @@ struct SeriesFormat {
 [[nodiscard]] QString seriesTitle(const QString &series);
 
 struct ChartChannel {
-    TelemetryKey key;        // its history ("01/port1", "10/feeder"; the id in a replay)
+    TelemetryKey key;        // its history (TelemetryRecorder::keyOf(); the id in a replay)
     QString id;              // CSV column prefix ("port1", "feeder"): letters and digits
     int port = 0;            // 0 for a feeder
     QString title;           // "Port 1", "Feeder"
@@ -52,6 +53,7 @@ struct ChartChannel {
     QString deviceName;      // "DME-4C at 01", as the event log names the device
     QString address;         // "01"
     QString softwareVersion; // the device's
+    DeviceIdentity device;   // whose history this is; empty in a replay
     QString tool;            // "T245", empty when not known
     QStringList series;      // the telemetry series, in buffer order
     // The port's alarm limits (HAx, LAx) in wire units (°C), when known.

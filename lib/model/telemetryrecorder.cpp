@@ -1,0 +1,113 @@
+#include "model/telemetryrecorder.h"
+
+namespace tipscope::model {
+
+namespace {
+// The hardware temperatures (QTx, TT0) are read with the status values, every few seconds; a
+// sample carries their latest reading. The transformer's is the station's, in every port.
+const QStringList kPortSeries = {QStringLiteral("tip"),        QStringLiteral("setpoint"),
+                                 QStringLiteral("power"),      QStringLiteral("status"),
+                                 QStringLiteral("transistor"), QStringLiteral("transformer")};
+const QStringList kFeederSeries = {QStringLiteral("fed"), QStringLiteral("speed"),
+                                   QStringLiteral("feeding")};
+
+// A value the sample can carry: its reading, or 0 for one that cannot be read (a failed
+// read, or a command the family lacks); nullopt while the first reading is still to come.
+std::optional<qint32> carried(const Parameter *p) {
+    if (!p || p->state() == Parameter::State::Failed)
+        return p && p->number() ? qint32(*p->number()) : 0;
+    if (const auto v = p->number())
+        return qint32(*v);
+    return std::nullopt;
+}
+} // namespace
+
+TelemetryRecorder::TelemetryRecorder(Telemetry &telemetry, Clock clock, QObject *parent)
+    : QObject(parent)
+    , m_telemetry(telemetry)
+    , m_clock(std::move(clock)) {}
+
+TelemetryKey TelemetryRecorder::keyOf(const DeviceModel &device, int port) {
+    const QString channel =
+        port > 0 ? QStringLiteral("port%1").arg(port) : QStringLiteral("feeder");
+    return device.identity().key() + QLatin1Char('|') + channel;
+}
+
+void TelemetryRecorder::watch(DeviceModel *device) {
+    if (auto *station = qobject_cast<StationModel *>(device))
+        watchStation(station);
+    else if (auto *feeder = qobject_cast<FeederModel *>(device))
+        watchFeeder(feeder);
+}
+
+void TelemetryRecorder::unwatch(DeviceModel *device, TelemetryGap::Cause cause) {
+    const qint64 now = m_clock();
+    for (const TelemetryKey &key : m_keys.take(device))
+        m_telemetry.markGap(key, now, cause);
+    // The device's readings stay connected to nothing of ours.
+    for (Parameter *p : device->parameters())
+        p->disconnect(this);
+}
+
+void TelemetryRecorder::markGaps(TelemetryGap::Cause cause) {
+    const qint64 now = m_clock();
+    for (const QList<TelemetryKey> &keys : std::as_const(m_keys))
+        for (const TelemetryKey &key : keys)
+            m_telemetry.markGap(key, now, cause);
+}
+
+void TelemetryRecorder::gapOnNoAnswer(Parameter *reading, const TelemetryKey &key) {
+    connect(reading, &Parameter::readFailed, this,
+            [this, key] { m_telemetry.markGap(key, m_clock(), TelemetryGap::Cause::NoAnswer); });
+}
+
+void TelemetryRecorder::watchStation(StationModel *station) {
+    using protocol::Role;
+    for (PortModel *port : station->ports()) {
+        const TelemetryKey key = keyOf(*station, port->number());
+        m_telemetry.ensureBuffer(key, kPortSeries);
+        m_keys[station].append(key);
+        Parameter *tip = port->parameter(Role::TipTemperature);
+        if (!tip)
+            continue;
+        gapOnNoAnswer(tip, key);
+        // A sample per tip-temperature reading; the other series carry their latest values.
+        connect(tip, &Parameter::updated, this, [this, station, port, key] {
+            const auto status = station->number(Role::Status, port->number());
+            // A series starting at 0 before its first reading would draw a false drop and spoil
+            // the measurements: record once the setpoint, power and temperatures are known.
+            const auto transistor = carried(port->parameter(Role::TransistorTemperature));
+            const auto transformer = carried(station->parameter(Role::TransformerTemperature));
+            if (!port->selectedTemperature() || !port->power() || !transistor || !transformer)
+                return;
+            m_telemetry.append(key, m_clock(),
+                               {qint32(port->tipTemperature().value_or(0)),
+                                qint32(port->selectedTemperature().value_or(0)),
+                                qint32(port->power().value_or(0)), qint32(status.value_or(0)),
+                                *transistor, *transformer});
+        });
+    }
+}
+
+void TelemetryRecorder::watchFeeder(FeederModel *feeder) {
+    using protocol::Role;
+    const TelemetryKey key = keyOf(*feeder, 0);
+    m_telemetry.ensureBuffer(key, kFeederSeries);
+    m_keys[feeder].append(key);
+    Parameter *fedLength = feeder->parameter(Role::FedLength);
+    if (!fedLength)
+        return;
+    gapOnNoAnswer(fedLength, key);
+    connect(fedLength, &Parameter::updated, this, [this, feeder, fedLength, key] {
+        // As for the ports: the speed is a setting read less often than the fed length, and a
+        // 0 before its first reading would draw a false step and spoil the window's mean.
+        const auto fed = carried(fedLength);
+        const auto speed = carried(feeder->parameter(Role::FeedSpeed));
+        const auto feeding = carried(feeder->parameter(Role::Feeding));
+        if (!fed || !speed || !feeding)
+            return;
+        m_telemetry.append(key, m_clock(), {*fed, *speed, *feeding == 1 ? 1 : 0});
+    });
+}
+
+} // namespace tipscope::model
