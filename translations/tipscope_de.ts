@@ -38,6 +38,14 @@
     </message>
 </context>
 <context>
+    <name>AtomicSave</name>
+    <message>
+        <location filename="../lib/model/io/atomicsave.cpp" line="21"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
     <name>Catalog</name>
     <message>
         <location filename="../lib/protocol/catalog.cpp" line="219"/>
@@ -1470,7 +1478,7 @@
     <message>
         <location filename="../app/cli/clicommands.cpp" line="168"/>
         <location filename="../app/cli/clicommands.cpp" line="214"/>
-        <location filename="../app/cli/clicommands.cpp" line="238"/>
+        <location filename="../app/cli/clicommands.cpp" line="237"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
@@ -1710,17 +1718,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: %1 konnte nicht gelesen werden; kein Profil geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="53"/>
+        <location filename="../app/cli/cliprofile.cpp" line="52"/>
         <source>saved %1 settings of %2 to %3</source>
         <translation>%1 Einstellungen von %2 in %3 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="67"/>
+        <location filename="../app/cli/cliprofile.cpp" line="66"/>
         <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
         <translation>tipscope-cli: profile erwartet save DATEI, diff DATEI oder apply DATEI</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <location filename="../app/cli/cliprofile.cpp" line="105"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: das Anwenden dieses Profils würde abgelehnt: %1</translation>
     </message>
@@ -1790,32 +1798,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="106"/>
+        <location filename="../app/cli/clisession.cpp" line="125"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="112"/>
+        <location filename="../app/cli/clisession.cpp" line="134"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="113"/>
+        <location filename="../app/cli/clisession.cpp" line="135"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="123"/>
+        <location filename="../app/cli/clisession.cpp" line="129"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="155"/>
+        <location filename="../app/cli/clisession.cpp" line="157"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="160"/>
+        <location filename="../app/cli/clisession.cpp" line="162"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -2212,77 +2220,77 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>FrameDecoder</name>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="16"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
         <source>frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
         <source>BCC error</source>
         <translation>BCC-Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
         <source>format error</source>
         <translation>Formatfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
         <source>overflow</source>
         <translation>Überlauf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="26"/>
         <source>garbage</source>
         <translation>Datenmüll</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="53"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="55"/>
         <source>not STX…ETX BCC or too short</source>
         <translation>kein STX…ETX BCC oder zu kurz</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="57"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="59"/>
         <source>BCC is %1, expected %2</source>
         <translation>BCC ist %1, erwartet %2</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="67"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="69"/>
         <source>malformed addresses</source>
         <translation>fehlerhafte Adressen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="73"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
         <source>too short for header and command</source>
         <translation>zu kurz für Kopf und Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="76"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="78"/>
         <source>unknown header</source>
         <translation>unbekannter Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="81"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="83"/>
         <source>command is not 3 letters or digits</source>
         <translation>Befehl besteht nicht aus 3 Buchstaben oder Ziffern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="86"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="88"/>
         <source>data field is not printable ASCII</source>
         <translation>Datenfeld ist kein druckbares ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="119"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="121"/>
         <source>frame interrupted by a new STX</source>
         <translation>Telegramm durch ein neues STX unterbrochen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="128"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="130"/>
         <source>no ETX within %1 bytes</source>
         <translation>kein ETX innerhalb von %1 Bytes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="147"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="155"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n Byte außerhalb eines Telegramms</numerusform>
@@ -2293,27 +2301,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>HexBytes</name>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="38"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="34"/>
         <source>odd number of hex digits before position %1</source>
         <translation>ungerade Anzahl von Hex-Ziffern vor Position %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="48"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="44"/>
         <source>&apos;%1&apos; at position %2 is not a hex digit</source>
         <translation>&apos;%1&apos; an Position %2 ist keine Hex-Ziffer</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="51"/>
         <source>more than %1 bytes</source>
         <translation>mehr als %1 Bytes</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="59"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
         <source>odd number of hex digits</source>
         <translation>ungerade Anzahl von Hex-Ziffern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="61"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="57"/>
         <source>no bytes given</source>
         <translation>keine Bytes angegeben</translation>
     </message>
@@ -2971,37 +2979,37 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="223"/>
+        <location filename="../lib/model/profile.cpp" line="209"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="141"/>
+        <location filename="../lib/model/profile.cpp" line="137"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152"/>
+        <location filename="../lib/model/profile.cpp" line="148"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="163"/>
+        <location filename="../lib/model/profile.cpp" line="159"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="171"/>
+        <location filename="../lib/model/profile.cpp" line="167"/>
         <source>the profile has no values</source>
         <translation>das Profil enthält keine Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="177"/>
+        <location filename="../lib/model/profile.cpp" line="173"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="191"/>
+        <location filename="../lib/model/profile.cpp" line="187"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
@@ -3009,31 +3017,26 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="199"/>
-        <source>cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/profile.cpp" line="208"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="214"/>
+        <location filename="../lib/model/profile.cpp" line="203"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="239"/>
+        <location filename="../lib/model/profile.cpp" line="225"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="132"/>
         <source>not a valid JSON file: %1</source>
         <translation>keine gültige JSON-Datei: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="146"/>
+        <location filename="../lib/model/profile.cpp" line="142"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>mehr als einmal angegeben, daher ist unklar, welcher Wert gemeint ist: %1; es wird nichts geschrieben</translation>
     </message>
@@ -3048,12 +3051,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Steuerzeichen 0x%1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="156"/>
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>Profilschema %1 wird nicht unterstützt (diese Version liest die Schemas %2 bis %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="180"/>
+        <location filename="../lib/model/profile.cpp" line="176"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;, oder ein Objekt mit einem in &quot;raw&quot; (und Text in &quot;name&quot; und &quot;value&quot;)</translation>
     </message>
@@ -4136,30 +4139,30 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="351"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="361"/>
-        <source>Could not save %1:
-%2</source>
-        <translation>%1 konnte nicht gespeichert werden:
-%2</translation>
+        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
+        <source>The console could not be saved:
+%1</source>
+        <translation>Die Konsole konnte nicht gespeichert werden:
+%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>angehalten: %n zurückgehalten</numerusform>
@@ -4347,7 +4350,7 @@ Dauerhaft mit dieser udev-Regel:
     </message>
     <message>
         <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="392"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
@@ -4357,17 +4360,17 @@ Dauerhaft mit dieser udev-Regel:
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="394"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="42"/>
+        <location filename="../app/gui/pages/counterspage.h" line="44"/>
         <source>Counters</source>
         <translation>Zähler</translation>
     </message>
@@ -4605,7 +4608,7 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.h" line="18"/>
+        <location filename="../app/gui/pages/errorspage.h" line="20"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
@@ -4613,169 +4616,169 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="45"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="46"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="85"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
         <source>Show events of kind</source>
         <translation>Ereignisse dieser Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
         <source>Errors and alarms</source>
         <translation>Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>Station errors</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Port errors</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
         <source>Feeder errors</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Status changes</source>
         <translation>Statuswechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Writes</source>
         <translation>Schreibzugriffe</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="105"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="109"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="141"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="142"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="164"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="169"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="170"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="170"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="171"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="172"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="173"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="173"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="174"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="174"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="175"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="176"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="178"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="282"/>
         <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="295"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="180"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="233"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="234"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="235"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="236"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4783,17 +4786,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="282"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="293"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="286"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="289"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>
@@ -5855,13 +5858,13 @@ Möchten Sie fortfahren?</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="353"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="352"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="359"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="354"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="360"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>
@@ -5891,7 +5894,7 @@ Möchten Sie fortfahren?</translation>
         <translation>kein Gerät ausgewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="345"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profil gespeichert: %n Einstellung von %1 in %2</numerusform>
@@ -5950,42 +5953,42 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="22"/>
+        <location filename="../lib/link/line.cpp" line="23"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="45"/>
+        <location filename="../lib/link/line.cpp" line="46"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="47"/>
+        <location filename="../lib/link/line.cpp" line="48"/>
         <source>connecting to %1</source>
         <translation>Verbindung mit %1 wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="49"/>
+        <location filename="../lib/link/line.cpp" line="50"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="51"/>
+        <location filename="../lib/link/line.cpp" line="52"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>getrennt, neuer Versuch alle %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="55"/>
+        <location filename="../lib/link/line.cpp" line="56"/>
         <source>cannot connect: %1</source>
         <translation>Verbindung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="75"/>
+        <location filename="../lib/link/line.cpp" line="77"/>
         <source>disconnected by the user</source>
         <translation>vom Benutzer getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="117"/>
+        <location filename="../lib/link/line.cpp" line="120"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>keine Antwort auf %1 Anfragen in Folge (Kabel abgezogen, Gerät aus oder falsche Adressierung?)</translation>
     </message>
@@ -6031,52 +6034,52 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="71"/>
+        <location filename="../lib/link/requestqueue.cpp" line="72"/>
         <source>the connection was closed</source>
         <translation>die Verbindung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="117"/>
+        <location filename="../lib/link/requestqueue.cpp" line="118"/>
         <source>the connection is closing</source>
         <translation>die Verbindung wird geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="121"/>
+        <location filename="../lib/link/requestqueue.cpp" line="122"/>
         <source>not sent: the line is not connected</source>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="208"/>
+        <location filename="../lib/link/requestqueue.cpp" line="211"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="237"/>
+        <location filename="../lib/link/requestqueue.cpp" line="240"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="246"/>
+        <location filename="../lib/link/requestqueue.cpp" line="249"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="250"/>
+        <location filename="../lib/link/requestqueue.cpp" line="253"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="268"/>
+        <location filename="../lib/link/requestqueue.cpp" line="271"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="289"/>
+        <location filename="../lib/link/requestqueue.cpp" line="292"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="304"/>
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -6084,7 +6087,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="307"/>
+        <location filename="../lib/link/requestqueue.cpp" line="313"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
@@ -6092,17 +6095,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <location filename="../lib/link/requestqueue.cpp" line="316"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="372"/>
+        <location filename="../lib/link/requestqueue.cpp" line="378"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="373"/>
+        <location filename="../lib/link/requestqueue.cpp" line="380"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>

@@ -56,7 +56,7 @@
 <context>
     <name>FrameDecoder</name>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="147"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="155"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n byte outside any frame</numerusform>
@@ -149,7 +149,7 @@
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>paused: %n held</numerusform>
@@ -160,7 +160,7 @@
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="235"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="236"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>
@@ -198,7 +198,7 @@
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="345"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profile saved: %n setting of %1 in %2</numerusform>
@@ -209,7 +209,7 @@
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="304"/>
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
@@ -217,7 +217,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="307"/>
+        <location filename="../lib/link/requestqueue.cpp" line="313"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>%n byte of garbage came instead</numerusform>

@@ -38,6 +38,14 @@
     </message>
 </context>
 <context>
+    <name>AtomicSave</name>
+    <message>
+        <location filename="../lib/model/io/atomicsave.cpp" line="21"/>
+        <source>cannot write %1: %2</source>
+        <translation>no se puede escribir %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>Catalog</name>
     <message>
         <location filename="../lib/protocol/catalog.cpp" line="219"/>
@@ -1470,7 +1478,7 @@
     <message>
         <location filename="../app/cli/clicommands.cpp" line="168"/>
         <location filename="../app/cli/clicommands.cpp" line="214"/>
-        <location filename="../app/cli/clicommands.cpp" line="238"/>
+        <location filename="../app/cli/clicommands.cpp" line="237"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
@@ -1712,17 +1720,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>tipscope-cli: no se pudo leer %1; no se escribió ningún perfil</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="53"/>
+        <location filename="../app/cli/cliprofile.cpp" line="52"/>
         <source>saved %1 settings of %2 to %3</source>
         <translation>se guardaron %1 ajustes de %2 en %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="67"/>
+        <location filename="../app/cli/cliprofile.cpp" line="66"/>
         <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
         <translation>tipscope-cli: profile requiere save ARCHIVO, diff ARCHIVO o apply ARCHIVO</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <location filename="../app/cli/cliprofile.cpp" line="105"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: aplicar este perfil se rechazaría: %1</translation>
     </message>
@@ -1792,32 +1800,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="106"/>
+        <location filename="../app/cli/clisession.cpp" line="125"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: el catálogo no indica ningún comando que identifique un equipo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="112"/>
+        <location filename="../app/cli/clisession.cpp" line="134"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="113"/>
+        <location filename="../app/cli/clisession.cpp" line="135"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="123"/>
+        <location filename="../app/cli/clisession.cpp" line="129"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="155"/>
+        <location filename="../app/cli/clisession.cpp" line="157"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="160"/>
+        <location filename="../app/cli/clisession.cpp" line="162"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -2214,77 +2222,77 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>FrameDecoder</name>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="16"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
         <source>frame</source>
         <translation>trama</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
         <source>BCC error</source>
         <translation>error de BCC</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
         <source>format error</source>
         <translation>error de formato</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
         <source>overflow</source>
         <translation>desbordamiento</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="26"/>
         <source>garbage</source>
         <translation>basura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="53"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="55"/>
         <source>not STX…ETX BCC or too short</source>
         <translation>no es STX…ETX BCC o es demasiado corta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="57"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="59"/>
         <source>BCC is %1, expected %2</source>
         <translation>el BCC es %1, se esperaba %2</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="67"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="69"/>
         <source>malformed addresses</source>
         <translation>direcciones mal formadas</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="73"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
         <source>too short for header and command</source>
         <translation>demasiado corta para cabecera y comando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="76"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="78"/>
         <source>unknown header</source>
         <translation>cabecera desconocida</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="81"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="83"/>
         <source>command is not 3 letters or digits</source>
         <translation>el comando no son 3 letras o dígitos</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="86"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="88"/>
         <source>data field is not printable ASCII</source>
         <translation>el campo de datos no es ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="119"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="121"/>
         <source>frame interrupted by a new STX</source>
         <translation>trama interrumpida por un nuevo STX</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="128"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="130"/>
         <source>no ETX within %1 bytes</source>
         <translation>ningún ETX en %1 bytes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="147"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="155"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n byte fuera de toda trama</numerusform>
@@ -2295,27 +2303,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>HexBytes</name>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="38"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="34"/>
         <source>odd number of hex digits before position %1</source>
         <translation>número impar de dígitos hexadecimales antes de la posición %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="48"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="44"/>
         <source>&apos;%1&apos; at position %2 is not a hex digit</source>
         <translation>&apos;%1&apos; en la posición %2 no es un dígito hexadecimal</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="51"/>
         <source>more than %1 bytes</source>
         <translation>más de %1 bytes</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="59"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
         <source>odd number of hex digits</source>
         <translation>número impar de dígitos hexadecimales</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="61"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="57"/>
         <source>no bytes given</source>
         <translation>no se indicó ningún byte</translation>
     </message>
@@ -2973,37 +2981,37 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="223"/>
+        <location filename="../lib/model/profile.cpp" line="209"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="141"/>
+        <location filename="../lib/model/profile.cpp" line="137"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152"/>
+        <location filename="../lib/model/profile.cpp" line="148"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="163"/>
+        <location filename="../lib/model/profile.cpp" line="159"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>familia de equipo desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="171"/>
+        <location filename="../lib/model/profile.cpp" line="167"/>
         <source>the profile has no values</source>
         <translation>el perfil no tiene valores</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="177"/>
+        <location filename="../lib/model/profile.cpp" line="173"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="191"/>
+        <location filename="../lib/model/profile.cpp" line="187"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>el perfil se rechaza, no se escribirá nada:
@@ -3011,31 +3019,26 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="199"/>
-        <source>cannot write %1: %2</source>
-        <translation>no se puede escribir %1: %2</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/profile.cpp" line="208"/>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="214"/>
+        <location filename="../lib/model/profile.cpp" line="203"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="239"/>
+        <location filename="../lib/model/profile.cpp" line="225"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="132"/>
         <source>not a valid JSON file: %1</source>
         <translation>no es un archivo JSON válido: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="146"/>
+        <location filename="../lib/model/profile.cpp" line="142"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>indicado más de una vez, así que no está claro qué valor se quiere: %1; no se escribirá nada</translation>
     </message>
@@ -3050,12 +3053,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>carácter de control 0x%1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="156"/>
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>el esquema de perfil %1 no es compatible (esta versión lee los esquemas %2 a %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="180"/>
+        <location filename="../lib/model/profile.cpp" line="176"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;, o un objeto con uno en &quot;raw&quot; (y texto en &quot;name&quot; y &quot;value&quot;)</translation>
     </message>
@@ -4138,30 +4141,30 @@ Hágalo permanente con esta regla de udev:
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="351"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="361"/>
-        <source>Could not save %1:
-%2</source>
-        <translation>No se pudo guardar %1:
-%2</translation>
+        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
+        <source>The console could not be saved:
+%1</source>
+        <translation>No se pudo guardar la consola:
+%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="380"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>en pausa: %n retenida</numerusform>
@@ -4349,7 +4352,7 @@ Hágalo permanente con esta regla de udev:
     </message>
     <message>
         <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="392"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
@@ -4359,17 +4362,17 @@ Hágalo permanente con esta regla de udev:
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="394"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="42"/>
+        <location filename="../app/gui/pages/counterspage.h" line="44"/>
         <source>Counters</source>
         <translation>Contadores</translation>
     </message>
@@ -4607,7 +4610,7 @@ Continue?</source>
 <context>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.h" line="18"/>
+        <location filename="../app/gui/pages/errorspage.h" line="20"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
@@ -4615,169 +4618,169 @@ Continue?</source>
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="45"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="46"/>
         <source>History</source>
         <translation>Historial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="85"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
         <source>Show events of kind</source>
         <translation>Mostrar eventos del tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="86"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
         <source>All kinds</source>
         <translation>Todos los tipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
         <source>Errors and alarms</source>
         <translation>Errores y alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>Station errors</source>
         <translation>Errores de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Port errors</source>
         <translation>Errores de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
         <source>Feeder errors</source>
         <translation>Errores del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Alarms</source>
         <translation>Alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Status changes</source>
         <translation>Cambios de estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Writes</source>
         <translation>Escrituras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="105"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="109"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="141"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="142"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="164"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="169"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="170"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="170"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="171"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="172"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="173"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="173"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="174"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="174"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="175"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="176"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="177"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="178"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="282"/>
         <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="295"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="180"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="233"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="234"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="235"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="236"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4785,17 +4788,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="288"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="282"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="293"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="286"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="289"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
@@ -5857,13 +5860,13 @@ Do you want to continue?</source>
     </message>
     <message>
         <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="353"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="352"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="359"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="354"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="360"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>
@@ -5893,7 +5896,7 @@ Do you want to continue?</source>
         <translation>no hay ningún equipo seleccionado</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="345"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Perfil guardado: %n ajuste de %1 en %2</numerusform>
@@ -5952,42 +5955,42 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="22"/>
+        <location filename="../lib/link/line.cpp" line="23"/>
         <source>the line was closed</source>
         <translation>se cerró la línea</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="45"/>
+        <location filename="../lib/link/line.cpp" line="46"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="47"/>
+        <location filename="../lib/link/line.cpp" line="48"/>
         <source>connecting to %1</source>
         <translation>conectando con %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="49"/>
+        <location filename="../lib/link/line.cpp" line="50"/>
         <source>connected: %1</source>
         <translation>conectado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="51"/>
+        <location filename="../lib/link/line.cpp" line="52"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>desconectado, reintentando cada %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="55"/>
+        <location filename="../lib/link/line.cpp" line="56"/>
         <source>cannot connect: %1</source>
         <translation>no se puede conectar: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="75"/>
+        <location filename="../lib/link/line.cpp" line="77"/>
         <source>disconnected by the user</source>
         <translation>desconectado por el usuario</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="117"/>
+        <location filename="../lib/link/line.cpp" line="120"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>sin respuesta a %1 peticiones seguidas (¿cable desenchufado, equipo apagado o direccionamiento incorrecto?)</translation>
     </message>
@@ -6033,52 +6036,52 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="71"/>
+        <location filename="../lib/link/requestqueue.cpp" line="72"/>
         <source>the connection was closed</source>
         <translation>se cerró la conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="117"/>
+        <location filename="../lib/link/requestqueue.cpp" line="118"/>
         <source>the connection is closing</source>
         <translation>la conexión se está cerrando</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="121"/>
+        <location filename="../lib/link/requestqueue.cpp" line="122"/>
         <source>not sent: the line is not connected</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="208"/>
+        <location filename="../lib/link/requestqueue.cpp" line="211"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="237"/>
+        <location filename="../lib/link/requestqueue.cpp" line="240"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="246"/>
+        <location filename="../lib/link/requestqueue.cpp" line="249"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="250"/>
+        <location filename="../lib/link/requestqueue.cpp" line="253"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="268"/>
+        <location filename="../lib/link/requestqueue.cpp" line="271"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="289"/>
+        <location filename="../lib/link/requestqueue.cpp" line="292"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="304"/>
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -6086,7 +6089,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="307"/>
+        <location filename="../lib/link/requestqueue.cpp" line="313"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>en su lugar llegó %n byte de basura</numerusform>
@@ -6094,17 +6097,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <location filename="../lib/link/requestqueue.cpp" line="316"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="372"/>
+        <location filename="../lib/link/requestqueue.cpp" line="378"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="373"/>
+        <location filename="../lib/link/requestqueue.cpp" line="380"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
