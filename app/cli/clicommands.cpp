@@ -232,10 +232,10 @@ int runSend(CliSession &s) {
                 << Qt::endl;
         return kUsage;
     }
-    QString error;
-    const auto bytes = parseHexBytes(s.options().args.join(QLatin1Char(' ')), &error);
-    if (!bytes) {
-        s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(error) << Qt::endl;
+    const auto bytes = parseHexBytes(s.options().args.join(QLatin1Char(' ')));
+    if (!bytes.ok()) {
+        s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(bytes.error())
+                << Qt::endl;
         return kRefused;
     }
     Request r;

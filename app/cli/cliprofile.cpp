@@ -45,9 +45,8 @@ int save(CliSession &s, DeviceModel &device, const QString &path) {
                 << Qt::endl;
         return s.line().state() == Line::State::Open ? kNoAnswer : kTransport;
     }
-    QString error;
-    if (!p.save(path, &error)) {
-        s.err() << "tipscope-cli: " << error << Qt::endl;
+    if (const auto saved = p.save(path); !saved.ok()) {
+        s.err() << "tipscope-cli: " << saved.error() << Qt::endl;
         return kUsage;
     }
     s.out() << Tr::tr("saved %1 settings of %2 to %3")
@@ -72,12 +71,12 @@ int runProfile(CliSession &s) {
     const QString path = args.at(1);
     std::optional<Profile> profile;
     if (verb != QLatin1String("save")) {
-        QString error;
-        profile = Profile::load(path, &error);
-        if (!profile) {
-            s.err() << "tipscope-cli: " << error << Qt::endl;
+        auto loaded = Profile::load(path);
+        if (!loaded.ok()) {
+            s.err() << "tipscope-cli: " << loaded.error() << Qt::endl;
             return kRefused;
         }
+        profile = std::move(loaded).value();
     }
     if (const int rc = s.resolveDevices(); rc != kOk)
         return rc;

@@ -83,7 +83,11 @@ Reply *CliSession::ask(const Request &request) {
 }
 
 int CliSession::exitCodeFor(const Reply &reply) {
-    switch (reply.error()) {
+    return exitCodeFor(reply.error());
+}
+
+int CliSession::exitCodeFor(ReplyError error) {
+    switch (error) {
     case ReplyError::None:
         return kOk;
     case ReplyError::Nak:
@@ -99,38 +103,39 @@ int CliSession::exitCodeFor(const Reply &reply) {
     return kTransport;
 }
 
+void CliSession::waitFor(Discovery &discovery) {
+    QEventLoop loop;
+    QObject::connect(&discovery, &Discovery::finished, &loop, &QEventLoop::quit);
+    if (discovery.isRunning())
+        loop.exec();
+}
+
 int CliSession::identify(std::optional<int> address) {
-    // Identification comes before the family is known: the first model-name command of any.
-    const CommandSpec *modelName = Catalog::builtin().command(Role::ModelName);
-    if (!modelName) {
+    Discovery discovery(m_line->queue());
+    discovery.identify(address);
+    waitFor(discovery);
+    const Identification &found = *discovery.identification();
+    if (found.ok()) {
+        m_devices = {found.value()};
+        return kOk;
+    }
+    const IdentifyFailure &why = found.error();
+    switch (why.kind) {
+    case IdentifyFailure::Kind::NoModelNameCommand:
         m_err << tr("tipscope-cli: the catalog names no command that identifies a device")
               << Qt::endl;
         return kNoAnswer;
-    }
-    Reply *smn = ask(Request::read(address, modelName->pattern.toLatin1()));
-    if (!smn->ok()) {
-        m_err << tr("tipscope-cli: the device %1 did not identify itself (R-SMN): %2")
-                     .arg(address ? QString::number(*address) : tr("without addresses"),
-                          smn->errorString())
-              << Qt::endl;
-        return exitCodeFor(*smn) == kOk ? kNoAnswer : exitCodeFor(*smn);
-    }
-    DeviceInfo d;
-    d.address = address;
-    d.model = QString::fromLatin1(smn->answer().data).trimmed();
-    d.family = Catalog::builtin().familyForModel(d.model);
-    if (d.family.isEmpty()) {
-        m_err << tr("tipscope-cli: unknown device model '%1'").arg(d.model) << Qt::endl;
+    case IdentifyFailure::Kind::UnknownModel:
+        m_err << tr("tipscope-cli: unknown device model '%1'").arg(why.model) << Qt::endl;
         return kNoAnswer;
+    case IdentifyFailure::Kind::Unanswered:
+        break;
     }
-    if (const auto version =
-            Catalog::builtin().resolve(d.family, Role::SoftwareVersion, 0, Direction::Read)) {
-        Reply *svr = ask(Request::read(address, *version));
-        if (svr->ok())
-            d.softwareVersion = QString::fromLatin1(svr->answer().data).trimmed();
-    }
-    m_devices = {d};
-    return kOk;
+    m_err << tr("tipscope-cli: the device %1 did not identify itself (R-SMN): %2")
+                 .arg(address ? QString::number(*address) : tr("without addresses"), why.reason)
+          << Qt::endl;
+    const int code = exitCodeFor(why.replyError);
+    return code == kOk ? kNoAnswer : code;
 }
 
 int CliSession::resolveDevices() {
@@ -139,12 +144,9 @@ int CliSession::resolveDevices() {
     if (m_options.addressing == CliOptions::Addressing::Without)
         return identify(std::nullopt);
     Discovery discovery(m_line->queue());
-    QEventLoop loop;
-    QObject::connect(&discovery, &Discovery::finished, &loop, &QEventLoop::quit);
     discovery.setScanAllAddresses(m_options.flags.contains(QStringLiteral("scan")));
     discovery.start();
-    if (discovery.isRunning())
-        loop.exec();
+    waitFor(discovery);
     m_devices.clear();
     for (const DeviceInfo &d : discovery.devices())
         if (!d.family.isEmpty())

@@ -38,6 +38,7 @@ public:
     // Sends and waits; the Reply stays valid until the session ends.
     link::Reply *ask(const link::Request &request);
     [[nodiscard]] static int exitCodeFor(const link::Reply &reply);
+    [[nodiscard]] static int exitCodeFor(link::ReplyError error);
 
     [[nodiscard]] link::Line &line() { return *m_line; }
     [[nodiscard]] const CliOptions &options() const { return m_options; }
@@ -48,6 +49,7 @@ private:
     void waitForLine();
     [[nodiscard]] QString withPortElided(QString message) const;
     int identify(std::optional<int> address);
+    static void waitFor(link::Discovery &discovery);
 
     CliOptions m_options;
     std::unique_ptr<sim::SimLine> m_demo;

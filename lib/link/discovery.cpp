@@ -40,44 +40,79 @@ void Discovery::start() {
     }
     if (m_mode != Mode::Addressed)
         probes.append(std::nullopt);
-    m_found = QList<std::optional<DeviceInfo>>(probes.size());
-    m_total = int(probes.size());
-    m_done = 0;
-    m_outstanding = 0;
+    m_named = false;
+    begin(int(probes.size()));
     for (int i = 0; i < probes.size(); ++i)
         probe(probes[i], i);
+    if (m_outstanding == 0) // no command to probe with
+        Q_EMIT finished();
+}
+
+void Discovery::identify(std::optional<int> address) {
+    m_named = true;
+    begin(1);
+    probe(address, 0);
+    if (m_outstanding == 0) {
+        m_identification = identificationOf(std::nullopt);
+        Q_EMIT finished();
+    }
+}
+
+void Discovery::begin(int probes) {
+    m_found = QList<std::optional<DeviceInfo>>(probes);
+    m_total = probes;
+    m_done = 0;
+    m_outstanding = 0;
+    m_failure.reset();
+    m_identification.reset();
 }
 
 void Discovery::probe(std::optional<int> address, int slot) {
-    Request r = Request::read(address, "SMN", Priority::UserRead);
-    r.retries = 1; // an absent device costs one timeout more, a noisy line still finds devices
-    r.probe = true;
+    // Identification comes before the family is known: the first model-name command of any.
+    const CommandSpec *modelName = Catalog::builtin().command(Role::ModelName);
+    if (!modelName) {
+        m_failure = IdentifyFailure{IdentifyFailure::Kind::NoModelNameCommand, {}, {}, {}};
+        return;
+    }
+    Request r = Request::read(address, modelName->pattern.toLatin1(), Priority::UserRead);
+    if (!m_named) {
+        r.retries = 1; // an absent device costs one timeout more, a noisy line still finds it
+        r.probe = true;
+    }
     Reply *reply = m_queue.enqueue(r, this);
     ++m_outstanding;
     connect(reply, &Reply::finished, this, [this, reply, address, slot] {
         reply->deleteLater();
         ++m_done;
         Q_EMIT progress(m_done, m_total);
-        if (reply->ok() || reply->error() == ReplyError::Nak) {
-            // A NAK is an answer too: something lives at this address.
-            DeviceInfo d;
-            d.address = address;
-            if (reply->ok()) {
-                d.model = QString::fromLatin1(reply->answer().data).trimmed();
-                d.family = Catalog::builtin().familyForModel(d.model);
-            }
-            m_found[slot] = d;
-            if (!d.family.isEmpty() &&
-                Catalog::builtin().resolve(d.family, "SVR", Direction::Read)) {
-                identify(slot);
-            }
-        }
+        take(*reply, address, slot);
         settle();
     });
 }
 
-void Discovery::identify(int slot) {
-    Reply *reply = m_queue.enqueue(Request::read(m_found[slot]->address, "SVR"), this);
+void Discovery::take(const Reply &reply, std::optional<int> address, int slot) {
+    if (!reply.ok() && (m_named || reply.error() != ReplyError::Nak)) {
+        m_failure = IdentifyFailure{
+            IdentifyFailure::Kind::Unanswered, reply.error(), reply.errorString(), {}};
+        return;
+    }
+    // In a search a NAK is an answer too: something lives at this address.
+    DeviceInfo d;
+    d.address = address;
+    if (reply.ok()) {
+        d.model = QString::fromLatin1(reply.answer().data).trimmed();
+        d.family = Catalog::builtin().familyForModel(d.model);
+    }
+    m_found[slot] = d;
+    if (!d.family.isEmpty() &&
+        Catalog::builtin().resolve(d.family, Role::SoftwareVersion, 0, Direction::Read))
+        askVersion(slot);
+}
+
+void Discovery::askVersion(int slot) {
+    const auto version = Catalog::builtin().resolve(m_found[slot]->family, Role::SoftwareVersion, 0,
+                                                    Direction::Read);
+    Reply *reply = m_queue.enqueue(Request::read(m_found[slot]->address, *version), this);
     ++m_outstanding;
     connect(reply, &Reply::finished, this, [this, reply, slot] {
         reply->deleteLater();
@@ -90,10 +125,21 @@ void Discovery::identify(int slot) {
 void Discovery::settle() {
     if (--m_outstanding > 0)
         return;
+    if (m_named)
+        m_identification = identificationOf(m_found.value(0));
     for (const auto &d : m_found)
         if (d)
             Q_EMIT deviceFound(*d);
     Q_EMIT finished();
+}
+
+Identification Discovery::identificationOf(const std::optional<DeviceInfo> &found) const {
+    if (!found)
+        return protocol::failure(*m_failure);
+    if (found->family.isEmpty())
+        return protocol::failure(
+            IdentifyFailure{IdentifyFailure::Kind::UnknownModel, {}, {}, found->model});
+    return *found;
 }
 
 QList<DeviceInfo> Discovery::devices() const {

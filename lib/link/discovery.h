@@ -1,12 +1,20 @@
-// Discovery: finds the devices on a line and identifies them.
+// Discovery: finds the devices on a line and identifies them; the one place that does.
 //
-// In addressed mode it probes the factory addresses first (station 01, feeder 10, extractor 20)
-// and, when asked, every other address 00-99; in the mode without addresses it sends one probe
-// without addresses; Auto does both. Each probe is R-SMN; a device that answers is identified by
-// the family its model name starts with, and asked for its software version (R-SVR) where its
-// family has that command. Probes go through the request queue like everything else, so
-// discovery can run beside other traffic and is cancelled by deleting it.
+// start() searches: in addressed mode it probes the factory addresses first (station 01, feeder
+// 10, extractor 20) and, when asked, every other address 00-99; in the mode without addresses it
+// sends one probe without addresses; Auto does both. identify() asks one named device (any
+// address, or the device without addresses) and reports why it could not be identified. Each
+// probe asks the catalog's model-name command (R-SMN); a device that answers is identified by the
+// family its model name starts with, and asked for its software version (R-SVR) where its family
+// has that command. A search probe is tried twice and its silence is normal; identify() asks as
+// firmly as any read (the queue's retries), since the device was named. Requests go through the
+// request queue like everything else, so discovery runs beside other traffic and is cancelled by
+// deleting it. finished() is emitted once per start() or identify().
 #pragma once
+
+#include "reply.h"
+
+#include "protocol/outcome.h"
 
 #include <QList>
 #include <QObject>
@@ -27,6 +35,21 @@ struct DeviceInfo {
     [[nodiscard]] QString summary() const;     // "01 DME-2C DME 9996780"
 };
 
+// Why identify() could not name the device.
+struct IdentifyFailure {
+    enum class Kind {
+        NoModelNameCommand, // the catalog names no command that identifies a device
+        Unanswered,         // the model-name request failed: replyError says how
+        UnknownModel,       // it answered with a model name of no known family
+    };
+    Kind kind = Kind::Unanswered;
+    ReplyError replyError = ReplyError::None; // for Unanswered: Timeout, Nak, Corrupted, ...
+    QString reason;                           // for Unanswered: the reply's error text
+    QString model;                            // for UnknownModel: the name it gave
+};
+
+using Identification = protocol::Outcome<DeviceInfo, IdentifyFailure>;
+
 class Discovery : public QObject {
     Q_OBJECT
 public:
@@ -37,8 +60,15 @@ public:
     void setMode(Mode mode) { m_mode = mode; }
     void setScanAllAddresses(bool on) { m_scanAll = on; }
     void start();
+    // Identifies the one device at `address` (nullopt: the device without addresses). On
+    // success devices() holds it; identification() says either way once finished() came.
+    void identify(std::optional<int> address);
     [[nodiscard]] bool isRunning() const { return m_outstanding > 0; }
     [[nodiscard]] QList<DeviceInfo> devices() const;
+    // The result of the last identify(); unset while it runs or after start().
+    [[nodiscard]] const std::optional<Identification> &identification() const {
+        return m_identification;
+    }
 
 Q_SIGNALS:
     void progress(int done, int total);
@@ -46,9 +76,12 @@ Q_SIGNALS:
     void finished();
 
 private:
+    void begin(int probes);
     void probe(std::optional<int> address, int slot);
-    void identify(int slot);
+    void take(const Reply &reply, std::optional<int> address, int slot);
+    void askVersion(int slot);
     void settle();
+    [[nodiscard]] Identification identificationOf(const std::optional<DeviceInfo> &found) const;
 
     RequestQueue &m_queue;
     Mode m_mode = Mode::Auto;
@@ -57,6 +90,9 @@ private:
     int m_outstanding = 0;
     int m_done = 0;
     int m_total = 0;
+    bool m_named = false; // identify(): one device was named, its failure is reported
+    std::optional<IdentifyFailure> m_failure;
+    std::optional<Identification> m_identification;
 };
 
 } // namespace tipscope::link

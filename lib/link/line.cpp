@@ -1,5 +1,6 @@
 #include "line.h"
 
+#include "linklogging.h"
 #include "ports/serialportlist.h"
 #include "simtransport.h"
 
@@ -76,6 +77,7 @@ QString Line::stateText() const {
 void Line::setState(State s, const QString &detail) {
     m_state = s;
     m_queue.tap().note(stateText());
+    qCDebug(lcLink).noquote() << stateText() << "(reconnects:" << m_reconnects << ")";
     Q_EMIT stateChanged(s, detail);
 }
 
@@ -129,6 +131,7 @@ void Line::onTimeoutStreak(int count) {
     if (m_settings.suspectAfterTimeouts <= 0 || count < m_settings.suspectAfterTimeouts ||
         m_state != State::Open)
         return;
+    qCDebug(lcLink) << count << "requests in a row unanswered: closing and reconnecting";
     m_transport->close();
     onLost(tr("no answer to %1 requests in a row (cable unplugged, device off, "
               "or wrong addressing?)")

@@ -1,5 +1,6 @@
 #include "requestqueue.h"
 
+#include "linklogging.h"
 #include "transport.h"
 
 #include "protocol/catalog.h"
@@ -155,6 +156,7 @@ void RequestQueue::transmit() {
     m_state = State::Writing;
     m_timer.start(kWriteWatchdogMs + int(2 * wireMs(int(bytes.size()))));
     m_tap.tx(bytes);
+    qCDebug(lcLinkHex).noquote() << "TX" << bytes.toHex(' ');
     m_transport->write(bytes);
 }
 
@@ -184,6 +186,7 @@ bool RequestQueue::matches(const Entry &e, const Frame &a) const {
 
 void RequestQueue::onReceived(const QByteArray &bytes) {
     m_tap.rx(bytes);
+    qCDebug(lcLinkHex).noquote() << "RX" << bytes.toHex(' ');
     for (const DecodeEvent &ev : m_decoder.feed(bytes)) {
         const bool waiting = m_current && (m_state == State::Writing || m_state == State::Waiting);
         switch (ev.kind) {
@@ -290,7 +293,10 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
     } else {
         m_timeoutRun = 0; // a garbled answer still proves the cable and the device are there
     }
-    if (canRetry(e)) {
+    const bool retry = canRetry(e);
+    qCDebug(lcLink).noquote() << e.frame.toString() << replyErrorName(error) << why << "attempt"
+                              << e.attempts << (retry ? "retrying" : "giving up");
+    if (retry) {
         m_state = State::Gap;
         m_gapTimer.start(m_settings.interFrameGapMs);
         return;
@@ -370,6 +376,7 @@ void RequestQueue::lineOpened() {
 void RequestQueue::lineLost(const QString &reason) {
     m_open = false;
     m_tap.note(tr("line lost: %1").arg(reason));
+    qCDebug(lcLink).noquote() << "line lost:" << reason;
     failEverything(ReplyError::Disconnected, tr("the line was lost: %1").arg(reason));
 }
 

@@ -2,6 +2,7 @@
 
 #include "session.h"
 
+#include "model/io/atomicsave.h"
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"
 #include "protocol/hexbytes.h"
@@ -10,7 +11,6 @@
 #include <QColor>
 #include <QCoreApplication>
 #include <QDateTime>
-#include <QSaveFile>
 
 namespace tipscope::model {
 
@@ -346,23 +346,14 @@ QString ConsoleModel::lineText(int row) const {
     return cells.join(QLatin1Char('\t'));
 }
 
-bool ConsoleModel::saveText(const QString &path, QString *error) const {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
-        *error = f.errorString();
-        return false;
-    }
+protocol::Outcome<void> ConsoleModel::saveText(const QString &path) const {
     QStringList header;
     for (int c = 0; c < ColumnCount; ++c)
         header.append(headerData(c, Qt::Horizontal, Qt::DisplayRole).toString());
-    f.write(header.join(QLatin1Char('\t')).toUtf8() + '\n');
+    QByteArray text = header.join(QLatin1Char('\t')).toUtf8() + '\n';
     for (int r = 0; r < rowCount(); ++r)
-        f.write(lineText(r).toUtf8() + '\n');
-    if (!f.commit()) {
-        *error = f.errorString();
-        return false;
-    }
-    return true;
+        text += lineText(r).toUtf8() + '\n';
+    return io::saveAtomically(path, text);
 }
 
 bool ConsoleModel::filterAccepts(int row, const Filter &filter) const {

@@ -16,6 +16,7 @@
 #include "consolesender.h"
 
 #include "link/frametap.h"
+#include "protocol/outcome.h"
 
 #include <QAbstractTableModel>
 #include <QMap>
@@ -100,7 +101,8 @@ public:
     [[nodiscard]] static QString headerText(protocol::Header h);
     // One line per entry, as shown; for "save to file".
     [[nodiscard]] QString lineText(int row) const;
-    bool saveText(const QString &path, QString *error) const;
+    // Every entry, with a header line, tab-separated; saved atomically.
+    [[nodiscard]] protocol::Outcome<void> saveText(const QString &path) const;
 
     struct Filter {
         bool tx = true, rx = true, decoded = true, errors = true, notes = true;

@@ -196,12 +196,12 @@ QString FrameComposer::codeOf(const QString &typed) {
 
 RawHex FrameComposer::readHex(const QString &text) {
     RawHex raw;
-    QString error;
-    raw.bytes = parseHexBytes(text, &error);
-    if (!raw.bytes) {
-        raw.text = error;
+    auto bytes = parseHexBytes(text);
+    if (!bytes.ok()) {
+        raw.text = bytes.error();
         return raw;
     }
+    raw.bytes = std::move(bytes).value();
     QString why;
     raw.frame = parseFrame(*raw.bytes, nullptr, &why);
     const int n = int(raw.bytes->size());

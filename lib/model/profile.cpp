@@ -3,13 +3,13 @@
 #include "devicemodel.h"
 #include "profilejson.h"
 
+#include "model/io/atomicsave.h"
 #include "protocol/elide.h"
 
 #include <QCoreApplication>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 namespace tipscope::model {
 
@@ -125,12 +125,8 @@ QStringList Profile::problemsFor(const QString &fam) const {
     return problems;
 }
 
-std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error) {
-    auto fail = [error](const QString &why) -> std::optional<Profile> {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
+Outcome<Profile> Profile::fromJson(const QByteArray &json) {
+    const auto fail = [](const QString &why) { return failure(why); };
     // Qt takes a NUL inside a string, and keeps the last of two equal keys: both are refused.
     if (const QString why = profilejson::controlCharacterProblem(json); !why.isEmpty())
         return fail(Tr::tr("not a valid JSON file: %1").arg(why));
@@ -193,34 +189,24 @@ std::optional<Profile> Profile::fromJson(const QByteArray &json, QString *error)
     return p;
 }
 
-bool Profile::save(const QString &path, QString *error) const {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(toJson()) < 0 || !f.commit()) {
-        *error = Tr::tr("cannot write %1: %2").arg(elidedPath(path), f.errorString());
-        return false;
-    }
-    return true;
+Outcome<void> Profile::save(const QString &path) const {
+    return io::saveAtomically(path, toJson());
 }
 
-std::optional<Profile> Profile::load(const QString &path, QString *error) {
+Outcome<Profile> Profile::load(const QString &path) {
     QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        *error = Tr::tr("cannot read %1: %2").arg(elidedPath(path), f.errorString());
-        return std::nullopt;
-    }
+    if (!f.open(QIODevice::ReadOnly))
+        return failure(Tr::tr("cannot read %1: %2").arg(elidedPath(path), f.errorString()));
     // Read at most one byte more than allowed: size() is 0 for a FIFO or standard input.
     const QByteArray bytes = f.read(kMaxProfileBytes + 1);
-    if (bytes.size() > kMaxProfileBytes) {
-        *error = Tr::tr("%1 is %2 bytes; a profile is at most %3")
-                     .arg(elidedPath(path))
-                     .arg(qMax<qint64>(f.size(), bytes.size()))
-                     .arg(kMaxProfileBytes);
-        return std::nullopt;
-    }
-    QString why;
-    auto p = fromJson(bytes, &why);
-    if (!p)
-        *error = Tr::tr("%1: %2").arg(elidedPath(path), why);
+    if (bytes.size() > kMaxProfileBytes)
+        return failure(Tr::tr("%1 is %2 bytes; a profile is at most %3")
+                           .arg(elidedPath(path))
+                           .arg(qMax<qint64>(f.size(), bytes.size()))
+                           .arg(kMaxProfileBytes));
+    auto p = fromJson(bytes);
+    if (!p.ok())
+        return failure(Tr::tr("%1: %2").arg(elidedPath(path), p.error()));
     return p;
 }
 

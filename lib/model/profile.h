@@ -12,6 +12,8 @@
 // profile writes nothing. Runtime state (port status) and actions are never part of a profile.
 #pragma once
 
+#include "protocol/outcome.h"
+
 #include <QDateTime>
 #include <QList>
 #include <QMap>
@@ -47,9 +49,10 @@ struct Profile {
     // Takes every profile parameter whose value is known. Unknown values are listed in `missing`.
     [[nodiscard]] static Profile capture(const DeviceModel &device, QStringList *missing = nullptr);
     [[nodiscard]] QByteArray toJson() const;
-    [[nodiscard]] static std::optional<Profile> fromJson(const QByteArray &json, QString *error);
-    [[nodiscard]] bool save(const QString &path, QString *error) const;
-    [[nodiscard]] static std::optional<Profile> load(const QString &path, QString *error);
+    // The reason a file is refused names the first problem; load() adds the file's name.
+    [[nodiscard]] static protocol::Outcome<Profile> fromJson(const QByteArray &json);
+    [[nodiscard]] protocol::Outcome<void> save(const QString &path) const; // atomic
+    [[nodiscard]] static protocol::Outcome<Profile> load(const QString &path);
     // Entries that are not valid for `family` (empty when all are), as "CODE: why" lines.
     [[nodiscard]] QStringList problemsFor(const QString &family) const;
 };

@@ -1,5 +1,7 @@
 #include "framedecoder.h"
 
+#include "protocollogging.h"
+
 #include <QCoreApplication>
 
 namespace tipscope::protocol {
@@ -138,6 +140,12 @@ std::vector<DecodeEvent> FrameDecoder::feed(QByteArrayView chunk) {
     return out;
 }
 
+void FrameDecoder::logSkipped(const DecodeEvent &e) {
+    ++m_skipped;
+    qCDebug(lcProtocol).noquote() << "skipped" << decodeEventKindName(e.kind) << '#' << m_skipped
+                                  << "(" << e.detail << "):" << e.raw.toHex(' ');
+}
+
 void FrameDecoder::flushGarbage(std::vector<DecodeEvent> &out) {
     if (m_garbage.isEmpty())
         return;
@@ -145,6 +153,7 @@ void FrameDecoder::flushGarbage(std::vector<DecodeEvent> &out) {
     e.kind = DecodeEvent::Kind::Garbage;
     e.raw = m_garbage;
     e.detail = Tr::tr("%n byte(s) outside any frame", nullptr, int(m_garbage.size()));
+    logSkipped(e);
     out.push_back(std::move(e));
     m_garbage.clear();
 }
@@ -171,6 +180,7 @@ void FrameDecoder::emitRejected(std::vector<DecodeEvent> &out, DecodeEvent::Kind
     e.kind = kind;
     e.raw = m_candidate;
     e.detail = why;
+    logSkipped(e);
     out.push_back(std::move(e));
     m_candidate.clear();
     m_state = State::Idle;

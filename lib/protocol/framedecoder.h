@@ -5,6 +5,7 @@
 // one event, either part of a good frame, part of a rejected candidate, or skipped garbage.
 // The byte after ETX is always taken as the BCC, so a BCC equal to STX or ETX is handled. A
 // candidate longer than maxFrameSize is reported as an overflow and dropped, which bounds memory.
+// Each rejected candidate and each run of garbage is counted and logged (tipscope.protocol).
 #pragma once
 
 #include "frame.h"
@@ -38,10 +39,13 @@ public:
     [[nodiscard]] std::vector<DecodeEvent> feed(QByteArrayView chunk);
     void reset();
     [[nodiscard]] int pendingBytes() const { return int(m_candidate.size() + m_garbage.size()); }
+    // Malformed candidates and runs of garbage skipped since construction (reset() keeps it).
+    [[nodiscard]] qint64 skipped() const { return m_skipped; }
 
 private:
     enum class State { Idle, InFrame, AwaitBcc };
 
+    void logSkipped(const DecodeEvent &e);
     void flushGarbage(std::vector<DecodeEvent> &out);
     void finishCandidate(std::vector<DecodeEvent> &out);
     void emitRejected(std::vector<DecodeEvent> &out, DecodeEvent::Kind kind, const QString &why);
@@ -50,6 +54,7 @@ private:
     State m_state = State::Idle;
     QByteArray m_candidate;
     QByteArray m_garbage;
+    qint64 m_skipped = 0;
 };
 
 } // namespace tipscope::protocol

@@ -23,12 +23,8 @@ static int hexValue(QChar c) {
     return -1;
 }
 
-std::optional<QByteArray> parseHexBytes(const QString &text, QString *error) {
-    auto fail = [error](const QString &why) -> std::optional<QByteArray> {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
+Outcome<QByteArray> parseHexBytes(const QString &text) {
+    const auto fail = [](const QString &why) { return failure(why); };
     QByteArray out;
     int pending = -1;
     for (qsizetype i = 0; i < text.size(); ++i) {

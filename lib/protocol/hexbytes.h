@@ -3,16 +3,16 @@
 // message that points at the first bad character.
 #pragma once
 
+#include "outcome.h"
+
 #include <QByteArray>
 #include <QString>
-#include <optional>
 
 namespace tipscope::protocol {
 
 inline constexpr int kMaxHexInputBytes = 4096;
 
-[[nodiscard]] std::optional<QByteArray> parseHexBytes(const QString &text,
-                                                      QString *error = nullptr);
+[[nodiscard]] Outcome<QByteArray> parseHexBytes(const QString &text);
 // "02 30 30 ..." with a space between bytes.
 [[nodiscard]] QString toHexText(const QByteArray &bytes);
 // Printable ASCII as is, control bytes by name: "<STX>0001RSMN<ETX><3E>".

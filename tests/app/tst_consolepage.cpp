@@ -344,8 +344,8 @@ void TestConsolePage::saveWritesEveryRowToTheFile() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("console.txt"));
-    QString error;
-    QVERIFY2(m_page->saveTo(path, &error), qPrintable(error));
+    const auto saved = m_page->saveTo(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.error()));
 
     QFile file(path);
     QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
@@ -360,9 +360,11 @@ void TestConsolePage::saveWritesEveryRowToTheFile() {
 void TestConsolePage::saveToAnUnwritablePathReportsTheError() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    QString error;
-    QVERIFY(!m_page->saveTo(dir.filePath(QStringLiteral("missing/console.txt")), &error));
-    QVERIFY(!error.isEmpty());
+    const QString path = dir.filePath(QStringLiteral("missing/console.txt"));
+    const auto saved = m_page->saveTo(path);
+    QVERIFY(!saved.ok());
+    QVERIFY2(saved.error().startsWith(QStringLiteral("cannot write %1: ").arg(path)),
+             qPrintable(saved.error()));
 }
 
 void TestConsolePage::pageFollowsTheNewLineAfterReconnecting() {

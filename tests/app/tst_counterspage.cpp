@@ -174,7 +174,7 @@ void TestCountersPage::tablesFollowDevicesAsTheyComeAndGo() {
     m_page->refresh();
     m_page->resetPartial("CPP");
     QTemporaryDir dir;
-    QVERIFY(m_page->exportCsv(dir.filePath(QStringLiteral("empty.csv")), nullptr));
+    QVERIFY(m_page->exportCsv(dir.filePath(QStringLiteral("empty.csv"))).ok());
 
     connectDemo();
     QVERIFY(stationTable());
@@ -237,8 +237,8 @@ void TestCountersPage::exportCsvRoundTripsHeaderAndValues() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("counters.csv"));
-    QString error;
-    QVERIFY2(m_page->exportCsv(path, &error), qPrintable(error));
+    const auto saved = m_page->exportCsv(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.error()));
 
     QFile file(path);
     QVERIFY(file.open(QIODevice::ReadOnly));
@@ -258,9 +258,11 @@ void TestCountersPage::exportCsvRoundTripsHeaderAndValues() {
 
 void TestCountersPage::exportCsvToAnUnwritablePathSaysWhy() {
     connectDemo();
-    QString error;
-    QVERIFY(!m_page->exportCsv(QStringLiteral("/nonexistent-dir/counters.csv"), &error));
-    QVERIFY(!error.isEmpty());
+    const auto saved = m_page->exportCsv(QStringLiteral("/nonexistent-dir/counters.csv"));
+    QVERIFY(!saved.ok());
+    QVERIFY2(
+        saved.error().startsWith(QStringLiteral("cannot write /nonexistent-dir/counters.csv: ")),
+        qPrintable(saved.error()));
 }
 
 void TestCountersPage::declinedPartialResetAsksAndChangesNothing() {

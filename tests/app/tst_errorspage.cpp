@@ -344,8 +344,8 @@ void TestErrorsPage::exportTextWritesTheShownRowsTabSeparated() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("events.txt"));
-    QString error;
-    QVERIFY2(m_page->exportText(path, &error), qPrintable(error));
+    const auto saved = m_page->exportText(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.error()));
 
     QFile file(path);
     QVERIFY(file.open(QIODevice::ReadOnly));
@@ -361,8 +361,11 @@ void TestErrorsPage::exportTextWritesTheShownRowsTabSeparated() {
     // A tab or a line break inside a text does not break the one-event-a-line format.
     QCOMPARE(lines[2].split(QLatin1Char('\t')).size(), 5);
 
-    QVERIFY(!m_page->exportText(QStringLiteral("/nonexistent-dir/events.txt"), &error));
-    QVERIFY(!error.isEmpty());
+    const auto refused = m_page->exportText(QStringLiteral("/nonexistent-dir/events.txt"));
+    QVERIFY(!refused.ok());
+    QVERIFY2(
+        refused.error().startsWith(QStringLiteral("cannot write /nonexistent-dir/events.txt: ")),
+        qPrintable(refused.error()));
 }
 
 void TestErrorsPage::aFloodOfOneWarningIsOneRowWithItsCountAndSpan() {

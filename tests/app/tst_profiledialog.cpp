@@ -25,12 +25,10 @@ void TestProfileDialog::aProfileThatBreaksTheLimitsSaysWhyAtTheTopAndWritesNothi
     dev.setSetting("MAT", 500);
     dev.setSetting("ST1", 450);
     auto station = f.station();
-    QString error;
     const auto profile = model::Profile::fromJson(
         R"({"format":"tipscope-profile","schema":1,"family":"DME",
-            "values":{"MAT":"00400","A11":"00005"}})",
-        &error);
-    QVERIFY2(profile, qPrintable(error));
+            "values":{"MAT":"00400","A11":"00005"}})");
+    QVERIFY2(profile.ok(), qPrintable(profile.error()));
     ProfileDialog dialog(*station, *profile);
     dialog.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dialog));
@@ -65,12 +63,10 @@ void TestProfileDialog::anotherFamilysProfileIsComparedGreyedWithItsSkippedSetti
     testing::SimFixture f(testing::singleDevice(QStringLiteral("DDR")));
     f.simLine->devices().first()->setSetting("ST1", 350);
     auto station = f.station();
-    QString error;
     const auto profile = model::Profile::fromJson(
         R"({"format":"tipscope-profile","schema":1,"family":"DME",
-            "values":{"ST1":"00300","ST4":"00300","S17":"00200"}})",
-        &error);
-    QVERIFY2(profile, qPrintable(error));
+            "values":{"ST1":"00300","ST4":"00300","S17":"00200"}})");
+    QVERIFY2(profile.ok(), qPrintable(profile.error()));
     ProfileDialog dialog(*station, *profile);
     dialog.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dialog));
@@ -106,11 +102,9 @@ void TestProfileDialog::afterAnApplyTheTableShowsTheDeviceAsItNowIs() {
     sim::SimDevice &dev = *f.simLine->devices().first();
     dev.setSetting("ST2", 350);
     auto station = f.station();
-    QString error;
     const auto profile = model::Profile::fromJson(
-        R"({"format":"tipscope-profile","schema":1,"family":"DME","values":{"ST2":"00320"}})",
-        &error);
-    QVERIFY2(profile, qPrintable(error));
+        R"({"format":"tipscope-profile","schema":1,"family":"DME","values":{"ST2":"00320"}})");
+    QVERIFY2(profile.ok(), qPrintable(profile.error()));
     ProfileDialog dialog(*station, *profile);
     dialog.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dialog));

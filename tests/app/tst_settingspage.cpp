@@ -169,8 +169,8 @@ void TestSettingsPage::aSavedProfileSaysWhereItWentAndCarriesTheComment() {
     QVERIFY2(!said.isEmpty(), qPrintable(error));
     QVERIFY2(said.contains(path) && said.contains(st->displayName()), qPrintable(said));
     QVERIFY(m_page->noticeText().contains(path));
-    const auto profile = Profile::load(path, &error);
-    QVERIFY2(profile, qPrintable(error));
+    const auto profile = Profile::load(path);
+    QVERIFY2(profile.ok(), qPrintable(profile.error()));
     QCOMPARE(profile->comment, QStringLiteral("line 3, lead-free"));
     QVERIFY2(said.contains(QString::number(profile->values.size())), qPrintable(said));
 

@@ -53,10 +53,9 @@ void TestBadHex::refusedWithTheReason_data() {
 void TestBadHex::refusedWithTheReason() {
     QFETCH(QString, text);
     QFETCH(QString, reason);
-    QString error;
-    QVERIFY(!parseHexBytes(text, &error));
-    QVERIFY2(error.contains(reason), qPrintable(error));
-    QVERIFY(!parseHexBytes(text)); // no error pointer: refused all the same, no crash
+    const auto bytes = parseHexBytes(text);
+    QVERIFY(!bytes.ok());
+    QVERIFY2(bytes.error().contains(reason), qPrintable(bytes.error()));
 }
 
 void TestBadHex::separatorsAndPrefixesAreAccepted_data() {
@@ -72,36 +71,41 @@ void TestBadHex::separatorsAndPrefixesAreAccepted_data() {
 void TestBadHex::separatorsAndPrefixesAreAccepted() {
     QFETCH(QString, text);
     // The guide's worked frame W MAT 00375 from 00 to 01, whatever the separators.
-    QCOMPARE(parseHexBytes(text), QByteArray::fromHex("0230303031574D41543030333735033E"));
+    const auto bytes = parseHexBytes(text);
+    QVERIFY2(bytes.ok(), qPrintable(bytes.error()));
+    QCOMPARE(bytes.value(), QByteArray::fromHex("0230303031574D41543030333735033E"));
 }
 
 void TestBadHex::exactlyTheLimitIsAcceptedOneMoreIsNot() {
     QCOMPARE(parseHexBytes(QString(kMaxHexInputBytes * 2, QLatin1Char('a')))->size(),
              kMaxHexInputBytes);
-    QString error;
-    QVERIFY(!parseHexBytes(QString((kMaxHexInputBytes + 1) * 2, QLatin1Char('a')), &error));
-    QVERIFY2(error.contains(QStringLiteral("more than %1 bytes").arg(kMaxHexInputBytes)),
-             qPrintable(error));
+    const auto tooMany = parseHexBytes(QString((kMaxHexInputBytes + 1) * 2, QLatin1Char('a')));
+    QVERIFY(!tooMany.ok());
+    QVERIFY2(tooMany.error().contains(QStringLiteral("more than %1 bytes").arg(kMaxHexInputBytes)),
+             qPrintable(tooMany.error()));
 }
 
 void TestBadHex::hugeInputIsRefusedWithoutGrowingWithIt() {
     // 100 kB of valid hex, then 100 kB of separators with one bad character at the very end.
-    QString error;
-    QVERIFY(!parseHexBytes(QString(100 * 1024, QLatin1Char('0')), &error));
-    QVERIFY2(error.contains(QStringLiteral("more than")), qPrintable(error));
-    QVERIFY(error.size() < 100);
+    const auto digits = parseHexBytes(QString(100 * 1024, QLatin1Char('0')));
+    QVERIFY(!digits.ok());
+    QVERIFY2(digits.error().contains(QStringLiteral("more than")), qPrintable(digits.error()));
+    QVERIFY(digits.error().size() < 100);
     const QString spaces = QString(100 * 1024, QLatin1Char(' ')) + QLatin1Char('z');
-    QVERIFY(!parseHexBytes(spaces, &error));
-    QVERIFY2(error.contains(QStringLiteral("position %1").arg(100 * 1024 + 1)), qPrintable(error));
+    const auto bad = parseHexBytes(spaces);
+    QVERIFY(!bad.ok());
+    QVERIFY2(bad.error().contains(QStringLiteral("position %1").arg(100 * 1024 + 1)),
+             qPrintable(bad.error()));
 }
 
 void TestBadHex::nonUtf8BytesBecomeReplacementCharactersAndAreRefused() {
     // What a console field or an argv holds after decoding bytes that are not UTF-8.
     for (const QByteArray &raw : {QByteArray("02 \xff 03"), QByteArray("\xc3\x28"),
                                   QByteArray("02\xed\xa0\x80"), QByteArray("\x80")}) {
-        QString error;
-        QVERIFY2(!parseHexBytes(QString::fromUtf8(raw), &error), raw.toHex().constData());
-        QVERIFY2(error.contains(QStringLiteral("not a hex digit")), qPrintable(error));
+        const auto bytes = parseHexBytes(QString::fromUtf8(raw));
+        QVERIFY2(!bytes.ok(), raw.toHex().constData());
+        QVERIFY2(bytes.error().contains(QStringLiteral("not a hex digit")),
+                 qPrintable(bytes.error()));
     }
 }
 

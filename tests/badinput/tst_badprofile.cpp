@@ -59,9 +59,9 @@ private Q_SLOTS:
 };
 
 void TestBadProfile::theGoodProfileLoads() {
-    QString error;
-    const auto p = Profile::fromJson(kGood, &error);
-    QVERIFY2(p, qPrintable(error));
+    const auto p = Profile::fromJson(kGood);
+    const QString error = p.error();
+    QVERIFY2(p.ok(), qPrintable(error));
     QCOMPARE(p->values.size(), 3);
 }
 
@@ -87,8 +87,8 @@ void TestBadProfile::editorHabitsAreAccepted_data() {
 
 void TestBadProfile::editorHabitsAreAccepted() {
     QFETCH(QByteArray, json);
-    QString error;
-    QVERIFY2(Profile::fromJson(json, &error), qPrintable(error));
+    const auto p = Profile::fromJson(json);
+    QVERIFY2(p.ok(), qPrintable(p.error()));
 }
 
 void TestBadProfile::refusedWholeWithTheReason_data() {
@@ -183,27 +183,27 @@ void TestBadProfile::refusedWholeWithTheReason_data() {
 void TestBadProfile::refusedWholeWithTheReason() {
     QFETCH(QByteArray, json);
     QFETCH(QString, reason);
-    QString error;
-    const auto p = Profile::fromJson(json, &error);
-    QVERIFY2(!p, "a bad profile was accepted");
+    const auto p = Profile::fromJson(json);
+    const QString error = p.error();
+    QVERIFY2(!p.ok(), "a bad profile was accepted");
     QVERIFY(!error.isEmpty());
     QVERIFY2(error.contains(reason), qPrintable(error.left(300)));
 }
 
 void TestBadProfile::filesThatCannotBeReadAreRefused() {
     QTemporaryDir dir;
-    QString error;
-    QVERIFY(!Profile::load(dir.filePath(QStringLiteral("missing.json")), &error));
-    QVERIFY2(error.contains(QStringLiteral("cannot read")), qPrintable(error));
-    error.clear();
-    QVERIFY(!Profile::load(dir.path(), &error));
-    QVERIFY2(!error.isEmpty(), "a folder must be refused with a reason");
-    error.clear();
-    QVERIFY(!Profile::load(QString(), &error));
-    QVERIFY(!error.isEmpty());
-    error.clear();
-    QVERIFY(!Profile::load(dir.filePath(QString(300, QLatin1Char('n'))), &error));
-    QVERIFY(!error.isEmpty());
+    const auto missing = Profile::load(dir.filePath(QStringLiteral("missing.json")));
+    QVERIFY(!missing.ok());
+    QVERIFY2(missing.error().contains(QStringLiteral("cannot read")), qPrintable(missing.error()));
+    const auto folder = Profile::load(dir.path());
+    QVERIFY(!folder.ok());
+    QVERIFY2(!folder.error().isEmpty(), "a folder must be refused with a reason");
+    const auto unnamed = Profile::load(QString());
+    QVERIFY(!unnamed.ok());
+    QVERIFY(!unnamed.error().isEmpty());
+    const auto longName = Profile::load(dir.filePath(QString(300, QLatin1Char('n'))));
+    QVERIFY(!longName.ok());
+    QVERIFY(!longName.error().isEmpty());
 }
 
 void TestBadProfile::aFileOverTheLimitIsRefusedBeforeReading() {
@@ -213,8 +213,9 @@ void TestBadProfile::aFileOverTheLimitIsRefusedBeforeReading() {
                   profileWith(R"({"ST1": "00350"})",
                               "\"comment\": \"" + QByteArray(int(kMaxProfileBytes), 'c') + "\", "));
     QVERIFY(!path.isEmpty());
-    QString error;
-    QVERIFY(!Profile::load(path, &error));
+    const auto p = Profile::load(path);
+    const QString error = p.error();
+    QVERIFY(!p.ok());
     QVERIFY2(error.contains(QStringLiteral("a profile is at most")), qPrintable(error));
 }
 
@@ -223,8 +224,8 @@ void TestBadProfile::aFileAtTheLimitLoads() {
     QByteArray json = kGood;
     json += QByteArray(int(kMaxProfileBytes) - json.size(), ' ');
     const QString path = writeFile(dir, QStringLiteral("full.json"), json);
-    QString error;
-    QVERIFY2(Profile::load(path, &error), qPrintable(error));
+    const auto p = Profile::load(path);
+    QVERIFY2(p.ok(), qPrintable(p.error()));
 }
 
 void TestBadProfile::aFifoCannotBypassTheSizeLimit() {
@@ -242,21 +243,21 @@ void TestBadProfile::aFifoCannotBypassTheSizeLimit() {
         if (f.open(QIODevice::WriteOnly))
             f.write(json);
     });
-    QString error;
-    const auto p = Profile::load(fifo, &error);
+    const auto p = Profile::load(fifo);
+    const QString error = p.error();
     writer.join();
-    QVERIFY2(!p, "a 2 MiB profile was read through a FIFO");
+    QVERIFY2(!p.ok(), "a 2 MiB profile was read through a FIFO");
 }
 
 void TestBadProfile::aUtf8ByteOrderMarkIsAccepted() {
-    QString error;
-    QVERIFY2(Profile::fromJson("\xef\xbb\xbf" + kGood, &error), qPrintable(error));
+    const auto p = Profile::fromJson("\xef\xbb\xbf" + kGood);
+    QVERIFY2(p.ok(), qPrintable(p.error()));
 }
 
 void TestBadProfile::codesThatDifferOnlyInCaseAreAmbiguous() {
-    QString error;
-    const auto p = Profile::fromJson(profileWith(R"({"st1": "00350", "ST1": "00400"})"), &error);
-    QVERIFY2(!p, "two values for ST1 were accepted");
+    const auto p = Profile::fromJson(profileWith(R"({"st1": "00350", "ST1": "00400"})"));
+    const QString error = p.error();
+    QVERIFY2(!p.ok(), "two values for ST1 were accepted");
     QVERIFY2(error.contains(QStringLiteral("more than once")) &&
                  error.contains(QStringLiteral("ST1")),
              qPrintable(error));
@@ -288,8 +289,9 @@ void TestBadProfile::keysGivenTwiceAreRefusedByName_data() {
 void TestBadProfile::keysGivenTwiceAreRefusedByName() {
     QFETCH(QByteArray, json);
     QFETCH(QStringList, named);
-    QString error;
-    QVERIFY2(!Profile::fromJson(json, &error), "a key given twice was accepted");
+    const auto p = Profile::fromJson(json);
+    const QString error = p.error();
+    QVERIFY2(!p.ok(), "a key given twice was accepted");
     QVERIFY2(error.contains(QStringLiteral("more than once")), qPrintable(error));
     QVERIFY2(error.contains(QStringLiteral("nothing will be written")), qPrintable(error));
     for (const QString &key : named)
@@ -318,8 +320,9 @@ void TestBadProfile::aNulInsideAStringIsInvalidJsonAtItsByte_data() {
 void TestBadProfile::aNulInsideAStringIsInvalidJsonAtItsByte() {
     QFETCH(QByteArray, json);
     QFETCH(QString, where);
-    QString error;
-    QVERIFY2(!Profile::fromJson(json, &error), "a raw NUL inside a string was accepted");
+    const auto p = Profile::fromJson(json);
+    const QString error = p.error();
+    QVERIFY2(!p.ok(), "a raw NUL inside a string was accepted");
     QVERIFY2(error.contains(QStringLiteral("not a valid JSON file")) && error.contains(where),
              qPrintable(error));
 }
@@ -337,8 +340,9 @@ void TestBadProfile::hugeCodesAndValuesAreEchoedCut_data() {
 
 void TestBadProfile::hugeCodesAndValuesAreEchoedCut() {
     QFETCH(QByteArray, json);
-    QString error;
-    QVERIFY(!Profile::fromJson(json, &error));
+    const auto p = Profile::fromJson(json);
+    const QString error = p.error();
+    QVERIFY(!p.ok());
     QVERIFY2(error.size() < 400, qPrintable(error.left(400)));
     QVERIFY2(error.contains(QStringLiteral("… (102400 characters)")), qPrintable(error));
 }

@@ -19,13 +19,13 @@ using namespace tipscope::protocol;
 
 namespace {
 
-struct Outcome {
+struct Decoded {
     std::vector<DecodeEvent> candidates; // everything but garbage
     QByteArray garbage;
     qint64 accounted = 0;
 };
 
-void collect(Outcome &out, std::vector<DecodeEvent> &&events, int maxFrameSize) {
+void collect(Decoded &out, std::vector<DecodeEvent> &&events, int maxFrameSize) {
     for (DecodeEvent &e : events) {
         FUZZ_CHECK(!e.raw.isEmpty());
         FUZZ_CHECK(e.raw.size() <= maxFrameSize + 1);
@@ -65,7 +65,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     const QByteArrayView stream(reinterpret_cast<const char *>(data + 2), qsizetype(size - 2));
 
     FrameDecoder chunked(maxFrameSize);
-    Outcome a;
+    Decoded a;
     qsizetype pos = 0;
     while (pos < stream.size()) {
         // xorshift: lengths of 1 to 16 bytes, mostly short, like reads from a slow serial line.
@@ -80,7 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     }
 
     FrameDecoder whole(maxFrameSize);
-    Outcome b;
+    Decoded b;
     collect(b, whole.feed(stream), maxFrameSize);
     FUZZ_CHECK(b.accounted + whole.pendingBytes() == stream.size());
     FUZZ_CHECK(whole.pendingBytes() == chunked.pendingBytes());

@@ -29,15 +29,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         text = QString(reinterpret_cast<const QChar *>(rest), n / 2);
         break;
     }
-    QString error;
-    const auto bytes = parseHexBytes(text, &error);
-    if (!bytes) {
-        FUZZ_CHECK(!error.isEmpty());
+    const auto bytes = parseHexBytes(text);
+    if (!bytes.ok()) {
+        FUZZ_CHECK(!bytes.error().isEmpty());
         return 0;
     }
     FUZZ_CHECK(!bytes->isEmpty() && bytes->size() <= kMaxHexInputBytes);
-    QString again;
-    FUZZ_CHECK(parseHexBytes(toHexText(*bytes), &again) == bytes);
+    const auto again = parseHexBytes(toHexText(*bytes));
+    FUZZ_CHECK(again.ok() && again.value() == bytes.value());
     (void)toAsciiText(*bytes);
     (void)toAsciiText(QByteArray(rest, n));
     return 0;

@@ -30,19 +30,17 @@ QMap<QByteArray, QByteArray> valueMap(const Profile &p) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
     const QByteArray json(reinterpret_cast<const char *>(data), qsizetype(size));
     const QStringList twice = profilejson::duplicateKeys(json);
-    QString error;
-    const auto profile = Profile::fromJson(json, &error);
-    if (!profile) {
-        FUZZ_CHECK(!error.isEmpty());
+    const auto profile = Profile::fromJson(json);
+    if (!profile.ok()) {
+        FUZZ_CHECK(!profile.error().isEmpty());
         return 0;
     }
     FUZZ_CHECK(!profile->family.isEmpty() && !profile->values.isEmpty());
     FUZZ_CHECK(twice.isEmpty());
     FUZZ_CHECK(valueMap(*profile).size() == profile->values.size()); // each code once
     FUZZ_CHECK(profile->problemsFor(profile->family).isEmpty());
-    QString again;
-    const auto reloaded = Profile::fromJson(profile->toJson(), &again);
-    FUZZ_CHECK(reloaded.has_value());
+    const auto reloaded = Profile::fromJson(profile->toJson());
+    FUZZ_CHECK(reloaded.ok());
     FUZZ_CHECK(reloaded->family == profile->family);
     FUZZ_CHECK(valueMap(*reloaded) == valueMap(*profile));
     return 0;

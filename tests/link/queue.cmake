@@ -10,3 +10,5 @@ tipscope_add_test(tst_discovery SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_discovery.
 tipscope_add_test(tst_serialtransport SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_serialtransport.cpp
     LIBS tipscope_link tipscope_testsupport)
 add_dependencies(tst_serialtransport tipscope-sim)
+tipscope_add_test(tst_linklogging SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_linklogging.cpp
+    LIBS tipscope_link)

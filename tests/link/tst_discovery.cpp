@@ -1,5 +1,6 @@
 // Discovery finds the simulated devices in probe order, identifies their family and software,
-// honours the addressing mode it is given, and reports its progress.
+// honours the addressing mode it is given, and reports its progress; identify() names one device
+// at any address, or says why it could not.
 #include "link/discovery.h"
 #include "link/line.h"
 #include "link/simtransport.h"
@@ -18,13 +19,23 @@ namespace {
 
 constexpr int kWaitMs = 20000; // a generous ceiling for "eventually", never asserted on
 
-enum class Wiring { Demo, Ddr };
+enum class Wiring { Demo, Ddr, DmeAt42, UnknownModelAt1 };
 
 std::unique_ptr<SimLine> makeSimLine(Wiring wiring) {
     if (wiring == Wiring::Demo)
         return SimLine::demo(); // DME at 01, SFR at 10
     auto sim = std::make_unique<SimLine>();
-    sim->addDevice(std::make_unique<SimStation>(QStringLiteral("DDR"))); // no addresses
+    if (wiring == Wiring::Ddr) {
+        sim->addDevice(std::make_unique<SimStation>(QStringLiteral("DDR"))); // no addresses
+    } else if (wiring == Wiring::DmeAt42) {
+        auto dme = std::make_unique<SimStation>(QStringLiteral("DME"), 42);
+        dme->setSoftwareVersion(QStringLiteral("1234567"));
+        sim->addDevice(std::move(dme));
+    } else {
+        auto odd = std::make_unique<SimStation>(QStringLiteral("DME"), 1);
+        odd->setModelName(QStringLiteral("XQ-9"));
+        sim->addDevice(std::move(odd));
+    }
     return sim;
 }
 
@@ -61,6 +72,10 @@ private Q_SLOTS:
     void ddrLineIsOneDeviceWithoutAddress();
     void modeDecidesWhichDevicesAreFound_data();
     void modeDecidesWhichDevicesAreFound();
+    void identifyNamesTheDeviceAtAnyAddress_data();
+    void identifyNamesTheDeviceAtAnyAddress();
+    void identifySaysWhyTheDeviceWasNotIdentified_data();
+    void identifySaysWhyTheDeviceWasNotIdentified();
 };
 
 void TestDiscovery::demoLineIsTwoIdentifiedDevicesInProbeOrder() {
@@ -157,6 +172,102 @@ void TestDiscovery::modeDecidesWhichDevicesAreFound() {
         QCOMPARE(progress.at(i).at(0).toInt(), i + 1);
         QCOMPARE(progress.at(i).at(1).toInt(), probes);
     }
+}
+
+void TestDiscovery::identifyNamesTheDeviceAtAnyAddress_data() {
+    QTest::addColumn<int>("wiring");
+    QTest::addColumn<int>("address"); // -1: the device without addresses
+    QTest::addColumn<QString>("summary");
+
+    QTest::newRow("feeder at its factory address")
+        << int(Wiring::Demo) << 10 << QStringLiteral("10 SFR-A SFR -"); // the SFR has no R-SVR
+    QTest::newRow("station where no search looks")
+        << int(Wiring::DmeAt42) << 42 << QStringLiteral("42 DME-2C DME 1234567");
+    QTest::newRow("device without addresses")
+        << int(Wiring::Ddr) << -1 << QStringLiteral("-- DDR DDR -");
+}
+
+void TestDiscovery::identifyNamesTheDeviceAtAnyAddress() {
+    QFETCH(int, wiring);
+    QFETCH(int, address);
+    QFETCH(QString, summary);
+
+    Bench b(static_cast<Wiring>(wiring));
+    b.line->open();
+    QTRY_COMPARE_WITH_TIMEOUT(b.line->state(), Line::State::Open, kWaitMs);
+    Discovery discovery(b.line->queue());
+    QSignalSpy finished(&discovery, &Discovery::finished);
+    QVERIFY(finished.isValid());
+
+    discovery.identify(address < 0 ? std::nullopt : std::optional<int>(address));
+    QVERIFY(discovery.isRunning());
+    QVERIFY(finished.wait(kWaitMs));
+
+    QVERIFY(discovery.identification().has_value());
+    const Identification &found = *discovery.identification();
+    QVERIFY(found.ok());
+    QCOMPARE(found.value().summary(), summary);
+    QCOMPARE(discovery.devices().size(), 1);
+    QCOMPARE(discovery.devices().at(0).summary(), summary);
+    QCOMPARE(finished.count(), 1);
+}
+
+void TestDiscovery::identifySaysWhyTheDeviceWasNotIdentified_data() {
+    QTest::addColumn<int>("wiring");
+    QTest::addColumn<int>("address");
+    QTest::addColumn<int>("nakCode");
+    QTest::addColumn<double>("corruptShare");
+    QTest::addColumn<int>("seed"); // of the simulator's faults
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<int>("replyError");
+    QTest::addColumn<QString>("model");
+
+    const int unanswered = int(IdentifyFailure::Kind::Unanswered);
+    QTest::newRow("nobody at the address") << int(Wiring::Demo) << 42 << 0 << 0.0 << 1 << unanswered
+                                           << int(ReplyError::Timeout) << QString();
+    QTest::newRow("the device refuses") << int(Wiring::Demo) << 1 << 5 << 0.0 << 1 << unanswered
+                                        << int(ReplyError::Nak) << QString();
+    // Seed 4: the last attempt's answer arrives whole but garbled (a cut-short one is silence).
+    QTest::newRow("every answer corrupted") << int(Wiring::Demo) << 1 << 0 << 1.0 << 4 << unanswered
+                                            << int(ReplyError::Corrupted) << QString();
+    QTest::newRow("a model of no known family") << int(Wiring::UnknownModelAt1) << 1 << 0 << 0.0
+                                                << 1 << int(IdentifyFailure::Kind::UnknownModel)
+                                                << int(ReplyError::None) << QStringLiteral("XQ-9");
+}
+
+void TestDiscovery::identifySaysWhyTheDeviceWasNotIdentified() {
+    QFETCH(int, wiring);
+    QFETCH(int, address);
+    QFETCH(int, nakCode);
+    QFETCH(double, corruptShare);
+    QFETCH(int, seed);
+    QFETCH(int, kind);
+    QFETCH(int, replyError);
+    QFETCH(QString, model);
+
+    Bench b(static_cast<Wiring>(wiring));
+    tipscope::sim::SimFaults faults;
+    faults.nakCode = nakCode;
+    faults.corruptShare = corruptShare;
+    faults.seed = quint32(seed);
+    b.sim->setFaults(faults);
+    b.line->open();
+    QTRY_COMPARE_WITH_TIMEOUT(b.line->state(), Line::State::Open, kWaitMs);
+    Discovery discovery(b.line->queue());
+    QSignalSpy finished(&discovery, &Discovery::finished);
+    QVERIFY(finished.isValid());
+
+    discovery.identify(address);
+    QVERIFY(finished.wait(kWaitMs));
+
+    QVERIFY(discovery.identification().has_value());
+    const Identification &found = *discovery.identification();
+    QVERIFY(!found.ok());
+    QCOMPARE(int(found.error().kind), kind);
+    QCOMPARE(int(found.error().replyError), replyError);
+    QCOMPARE(found.error().model, model);
+    // A reply's failure carries its reason for people; an unknown model names itself instead.
+    QCOMPARE(found.error().reason.isEmpty(), replyError == int(ReplyError::None));
 }
 
 QTEST_GUILESS_MAIN(TestDiscovery)

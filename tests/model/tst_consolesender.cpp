@@ -17,7 +17,8 @@ namespace {
 constexpr int kAnswerMs = 10000; // a ceiling for "eventually", never asserted on
 
 QByteArray hex(const QString &text) {
-    return protocol::parseHexBytes(text).value_or(QByteArray());
+    const auto bytes = protocol::parseHexBytes(text);
+    return bytes.ok() ? bytes.value() : QByteArray();
 }
 
 // The demo line with a sender on it, and what the sender reported.

@@ -94,10 +94,10 @@ void TestProfile::profileRoundTripsThroughAChangedDevice() {
     QVERIFY(saved.values.size() > 100);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("dme.json"));
-    QString error;
-    QVERIFY2(saved.save(path, &error), qPrintable(error));
-    const auto loaded = Profile::load(path, &error);
-    QVERIFY2(loaded, qPrintable(error));
+    const auto written = saved.save(path);
+    QVERIFY2(written.ok(), qPrintable(written.error()));
+    const auto loaded = Profile::load(path);
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error()));
     QCOMPARE(loaded->values.size(), saved.values.size());
     QCOMPARE(loaded->family, QStringLiteral("DME"));
 
@@ -163,23 +163,20 @@ void TestProfile::aSavedProfileNamesEachValueBesideItsRawDataField() {
     QCOMPARE(entry.value(QStringLiteral("name")).toString(), name);
     QCOMPARE(entry.value(QStringLiteral("value")).toString(), value);
     // Read back, the raw data field is what counts, the notes come along.
-    QString error;
-    const auto loaded = Profile::fromJson(saved.toJson(), &error);
-    QVERIFY2(loaded, qPrintable(error));
+    const auto loaded = Profile::fromJson(saved.toJson());
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error()));
     QVERIFY(loaded->values.contains(qMakePair(code.toLatin1(), raw.toLatin1())));
     QCOMPARE(loaded->notes.value(code.toLatin1()).name, name);
 }
 
 void TestProfile::theFirstSchemaAndBareDataFieldsStillLoad() {
-    QString error;
-    const auto first = Profile::fromJson(profileJson("DME", R"("ST1":"00300")"), &error);
-    QVERIFY2(first, qPrintable(error));
+    const auto first = Profile::fromJson(profileJson("DME", R"("ST1":"00300")"));
+    QVERIFY2(first.ok(), qPrintable(first.error()));
     QCOMPARE(first->values, (QList<QPair<QByteArray, QByteArray>>{{"ST1", "00300"}}));
     const auto mixed = Profile::fromJson(
         R"({"format":"tipscope-profile","schema":2,"family":"DME","values":{"ST1":"00300",
-            "ST2":{"raw":"00320","name":"a note that is not applied","value":"999 °C"}}})",
-        &error);
-    QVERIFY2(mixed, qPrintable(error));
+            "ST2":{"raw":"00320","name":"a note that is not applied","value":"999 °C"}}})");
+    QVERIFY2(mixed.ok(), qPrintable(mixed.error()));
     QCOMPARE(mixed->values,
              (QList<QPair<QByteArray, QByteArray>>{{"ST1", "00300"}, {"ST2", "00320"}}));
 }
@@ -211,36 +208,36 @@ void TestProfile::malformedProfilesAreRefusedWithAReason_data() {
 void TestProfile::malformedProfilesAreRefusedWithAReason() {
     QFETCH(QByteArray, json);
     QFETCH(QString, expected);
-    QString error;
-    QVERIFY(!Profile::fromJson(json, &error));
-    QVERIFY2(error.contains(expected), qPrintable(error));
+    const auto p = Profile::fromJson(json);
+    QVERIFY(!p.ok());
+    QVERIFY2(p.error().contains(expected), qPrintable(p.error()));
 }
 
 void TestProfile::unreadableOrHugeFilesAreRefused() {
     QTemporaryDir dir;
-    QString error;
-    QVERIFY(!Profile::load(dir.filePath(QStringLiteral("missing.json")), &error));
-    QVERIFY(error.contains(QStringLiteral("cannot read")));
+    const auto missing = Profile::load(dir.filePath(QStringLiteral("missing.json")));
+    QVERIFY(!missing.ok());
+    QVERIFY(missing.error().contains(QStringLiteral("cannot read")));
     QFile huge(dir.filePath(QStringLiteral("huge.json")));
     QVERIFY(huge.open(QIODevice::WriteOnly));
     huge.write(QByteArray(kMaxProfileBytes + 10, ' '));
     huge.close();
-    QVERIFY(!Profile::load(huge.fileName(), &error));
-    QVERIFY(error.contains(QStringLiteral("at most")));
+    const auto tooBig = Profile::load(huge.fileName());
+    QVERIFY(!tooBig.ok());
+    QVERIFY(tooBig.error().contains(QStringLiteral("at most")));
     QFile binary(dir.filePath(QStringLiteral("bin.json")));
     QVERIFY(binary.open(QIODevice::WriteOnly));
     binary.write(QByteArray("\xff\xfe\x00\x01garbage", 12));
     binary.close();
-    QVERIFY(!Profile::load(binary.fileName(), &error));
+    QVERIFY(!Profile::load(binary.fileName()).ok());
 }
 
 void TestProfile::anotherFamilysProfileIsRefusedUnlessForced() {
     SimFixture f(singleDevice(QStringLiteral("DDR")));
     auto st = f.station();
-    QString error;
     const auto p = Profile::fromJson(
-        profileJson("DME", "\"ST1\":\"00300\",\"ST4\":\"00300\",\"HD1\":\"01.00\""), &error);
-    QVERIFY2(p, qPrintable(error));
+        profileJson("DME", "\"ST1\":\"00300\",\"ST4\":\"00300\",\"HD1\":\"01.00\""));
+    QVERIFY2(p.ok(), qPrintable(p.error()));
     const ApplyReport refused = run(*st, *p, ProfileApplier::Mode::Apply);
     QVERIFY(refused.refused);
     QVERIFY(refused.reason.contains(QStringLiteral("DME")));
@@ -263,9 +260,7 @@ void TestProfile::anotherFamilysProfileIsRefusedUnlessForced() {
 void TestProfile::dryRunListsTheFramesAndWritesNothing() {
     SimFixture f(singleDevice(QStringLiteral("DME")));
     auto st = f.station();
-    QString error;
-    const auto p =
-        Profile::fromJson(profileJson("DME", "\"ST1\":\"00300\",\"MAT\":\"00500\""), &error);
+    const auto p = Profile::fromJson(profileJson("DME", "\"ST1\":\"00300\",\"MAT\":\"00500\""));
     const ApplyReport dry = run(*st, *p, ProfileApplier::Mode::DryRun);
     QCOMPARE(dry.frames.size(), 1);
     QVERIFY2(dry.frames.first().contains(QStringLiteral("00→01 W ST1 00300")),
@@ -281,9 +276,8 @@ void TestProfile::limitsAreWrittenInAnOrderTheDeviceAccepts() {
     f.simLine->station()->setSetting("MAT", 200);
     f.simLine->station()->setSetting("MIT", 150);
     f.simLine->station()->setSetting("ST1", 200);
-    QString error;
     const auto p = Profile::fromJson(
-        profileJson("DME", "\"ST1\":\"00400\",\"MIT\":\"00300\",\"MAT\":\"00450\""), &error);
+        profileJson("DME", "\"ST1\":\"00400\",\"MIT\":\"00300\",\"MAT\":\"00450\""));
     const ApplyReport r = run(*st, *p, ProfileApplier::Mode::Apply);
     QVERIFY2(r.ok(), qPrintable(r.text()));
     QCOMPARE(f.simLine->station()->setting("ST1").value(), 400);
@@ -328,9 +322,8 @@ void TestProfile::aProfileThatBreaksALimitIsRefusedWhole() {
     setDevice(dev, device);
     const Settings before = limitSettings(dev);
     auto st = f.station();
-    QString error;
-    const auto p = Profile::fromJson(profileJson("DME", values), &error);
-    QVERIFY2(p, qPrintable(error));
+    const auto p = Profile::fromJson(profileJson("DME", values));
+    QVERIFY2(p.ok(), qPrintable(p.error()));
     for (const auto mode :
          {ProfileApplier::Mode::Diff, ProfileApplier::Mode::DryRun, ProfileApplier::Mode::Apply}) {
         const ApplyReport r = run(*st, *p, mode);
@@ -376,9 +369,8 @@ void TestProfile::everyStateBetweenTwoWritesKeepsTheLimits() {
     sim::SimDevice &dev = *f.simLine->station();
     setDevice(dev, device);
     auto st = f.station();
-    QString error;
-    const auto p = Profile::fromJson(profileJson("DME", values), &error);
-    QVERIFY2(p, qPrintable(error));
+    const auto p = Profile::fromJson(profileJson("DME", values));
+    QVERIFY2(p.ok(), qPrintable(p.error()));
     const ApplyReport dry = run(*st, *p, ProfileApplier::Mode::DryRun);
     QVERIFY2(dry.conflicts.isEmpty() && !dry.refused, qPrintable(dry.text()));
     const ApplyReport r = run(*st, *p, ProfileApplier::Mode::Apply);
@@ -414,9 +406,8 @@ void TestProfile::aLimitThatCannotBeReadRefusesTheProfile() {
         f.settle();
         QCOMPARE(st->parameter("MAT")->number(), 500);
     }
-    QString error;
-    const auto p = Profile::fromJson(profileJson("DME", R"("ST1":"00400")"), &error);
-    QVERIFY2(p, qPrintable(error));
+    const auto p = Profile::fromJson(profileJson("DME", R"("ST1":"00400")"));
+    QVERIFY2(p.ok(), qPrintable(p.error()));
     sim::SimFaults faults;
     faults.nakCode = 4;
     f.simLine->setFaults(faults);
@@ -431,10 +422,9 @@ void TestProfile::aLimitThatCannotBeReadRefusesTheProfile() {
 void TestProfile::aForcedProfileWithNothingInCommonIsRefused() {
     SimFixture f(singleDevice(QStringLiteral("DDR")));
     auto st = f.station();
-    QString error;
     // The DDR has two ports and no alarm delays: nothing here exists on it.
-    const auto p = Profile::fromJson(profileJson("DME", R"("ST4":"00300","HD1":"01.00")"), &error);
-    QVERIFY2(p, qPrintable(error));
+    const auto p = Profile::fromJson(profileJson("DME", R"("ST4":"00300","HD1":"01.00")"));
+    QVERIFY2(p.ok(), qPrintable(p.error()));
     const ApplyReport r = run(*st, *p, ProfileApplier::Mode::Apply, true);
     QVERIFY(r.refused);
     QVERIFY(!r.ok());

@@ -338,13 +338,9 @@ void ConsolePage::setPaused(bool paused) {
     updateCount();
 }
 
-bool ConsolePage::saveTo(const QString &path, QString *error) {
-    QString why;
+protocol::Outcome<void> ConsolePage::saveTo(const QString &path) {
     m_model->flush(); // the file has every row up to now
-    const bool ok = m_model->saveText(path, &why);
-    if (!ok && error)
-        *error = why;
-    return ok;
+    return m_model->saveText(path);
 }
 
 void ConsolePage::save() {
@@ -355,10 +351,9 @@ void ConsolePage::save() {
                                                       tr("Text files (*.txt);;All files (*)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!saveTo(path, &error))
+    if (const auto saved = saveTo(path); !saved.ok())
         QMessageBox::warning(this, tr("Save console"),
-                             tr("Could not save %1:\n%2").arg(path, error));
+                             tr("The console could not be saved:\n%1").arg(saved.error()));
 }
 
 void ConsolePage::copySelection() {

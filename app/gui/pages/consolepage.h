@@ -63,8 +63,8 @@ public:
     // Hidden, the table takes new frames once a second; shown, it catches up at once.
     void setActive(bool active) override;
 
-    // Writes every row (not only the filtered ones) as tab-separated text; false with `error`.
-    bool saveTo(const QString &path, QString *error);
+    // Writes every row (not only the filtered ones) as tab-separated text.
+    [[nodiscard]] protocol::Outcome<void> saveTo(const QString &path);
     [[nodiscard]] model::ConsoleModel &consoleModel() { return *m_model; }
     [[nodiscard]] QAbstractItemModel *visibleRows() { return m_proxy; }
 

@@ -1,6 +1,7 @@
 #include "counterspage.h"
 
 #include "model/displayunits.h"
+#include "model/io/atomicsave.h"
 #include "model/io/csv.h"
 #include "widgets/deferredrefresh.h"
 
@@ -13,7 +14,6 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScrollArea>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -386,15 +386,14 @@ void CountersPage::chooseExportFile() {
         this, tr("Export counters"), QDir(dir).filePath(name), tr("CSV files (*.csv)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (exportCsv(path, &error))
+    if (const auto saved = exportCsv(path); saved.ok())
         showStatus(tr("%1 Counters saved to %2").arg(now(), QDir::toNativeSeparators(path)));
     else
         QMessageBox::warning(this, tr("Export counters"),
-                             tr("The counters could not be saved: %1").arg(error));
+                             tr("The counters could not be saved: %1").arg(saved.error()));
 }
 
-bool CountersPage::exportCsv(const QString &path, QString *error) const {
+protocol::Outcome<void> CountersPage::exportCsv(const QString &path) const {
     // The header is a file format that scripts match on, so it is not translated.
     QString text = QStringLiteral("device,port,counter,value,unit\n");
     for (DeviceModel *device : m_session.devices()) {
@@ -409,14 +408,7 @@ bool CountersPage::exportCsv(const QString &path, QString *error) const {
                 text += csvLine(feeder->displayName(), 0, *p);
         }
     }
-    // QSaveFile: a failed export never leaves half a file where an old one was.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
-    return true;
+    return io::saveAtomically(path, text.toUtf8());
 }
 
 } // namespace tipscope::gui

@@ -20,6 +20,8 @@
 
 #include "page.h"
 
+#include "protocol/outcome.h"
+
 #include <QDateTime>
 #include <functional>
 
@@ -50,7 +52,7 @@ public:
     // Every counter of every device as CSV (UTF-8, header row "device,port,counter,value,unit",
     // values in display units with a '.' decimal point). Returns false and sets *error (if
     // given) when the file cannot be written.
-    [[nodiscard]] bool exportCsv(const QString &path, QString *error) const;
+    [[nodiscard]] protocol::Outcome<void> exportCsv(const QString &path) const;
 
 private:
     struct ResetButton {

@@ -34,8 +34,8 @@ void ErrorsPage::copySelection() const {
     m_history->copySelection();
 }
 
-bool ErrorsPage::exportText(const QString &path, QString *error) const {
-    return m_history->exportText(path, error);
+protocol::Outcome<void> ErrorsPage::exportText(const QString &path) const {
+    return m_history->exportText(path);
 }
 
 } // namespace tipscope::gui

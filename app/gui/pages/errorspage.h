@@ -5,6 +5,8 @@
 
 #include "page.h"
 
+#include "protocol/outcome.h"
+
 namespace tipscope::gui {
 
 class ErrorStatePanel;
@@ -24,7 +26,7 @@ public:
     void copySelection() const;
     // Writes the history rows that pass the filters, with a header line, tab-separated, UTF-8.
     // Returns false and sets *error (if given) when the file cannot be written.
-    [[nodiscard]] bool exportText(const QString &path, QString *error) const;
+    [[nodiscard]] protocol::Outcome<void> exportText(const QString &path) const;
 
 private:
     ErrorStatePanel *m_state;

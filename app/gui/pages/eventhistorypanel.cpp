@@ -2,6 +2,8 @@
 
 #include "levelstyle.h"
 
+#include "model/io/atomicsave.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QClipboard>
@@ -15,7 +17,6 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScrollBar>
 #include <QStandardPaths>
 #include <QStyle>
@@ -293,21 +294,14 @@ void EventHistoryPanel::copySelection() const {
     QApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
 }
 
-bool EventHistoryPanel::exportText(const QString &path, QString *error) const {
+protocol::Outcome<void> EventHistoryPanel::exportText(const QString &path) const {
     QStringList header;
     for (int c = 0; c < EventHistoryModel::ColumnCount; ++c)
         header.append(EventHistoryModel::columnName(c));
     QString text = header.join(QLatin1Char('\t')) + QLatin1Char('\n');
     for (int row = 0; row < m_filter->rowCount(); ++row)
         text += rowText(row) + QLatin1Char('\n');
-    // QSaveFile: a failed export never leaves half a file where an old one was.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
-    return true;
+    return model::io::saveAtomically(path, text.toUtf8());
 }
 
 void EventHistoryPanel::chooseExportFile() {
@@ -319,12 +313,11 @@ void EventHistoryPanel::chooseExportFile() {
         this, tr("Export events"), QDir(dir).filePath(name), tr("Text files (*.txt *.tsv)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (exportText(path, &error))
+    if (const auto saved = exportText(path); saved.ok())
         m_status->setText(tr("Saved to %1").arg(QDir::toNativeSeparators(path)));
     else
         QMessageBox::warning(this, tr("Export events"),
-                             tr("The events could not be saved: %1").arg(error));
+                             tr("The events could not be saved: %1").arg(saved.error()));
 }
 
 } // namespace tipscope::gui

@@ -9,6 +9,7 @@
 
 #include "model/eventhistorymodel.h"
 #include "model/session.h"
+#include "protocol/outcome.h"
 
 #include <QGroupBox>
 #include <QHash>
@@ -33,7 +34,7 @@ public:
     void copySelection() const;
     // Writes the rows that pass the filters, with a header line, tab-separated, UTF-8. Returns
     // false and sets *error (if given) when the file cannot be written.
-    [[nodiscard]] bool exportText(const QString &path, QString *error) const;
+    [[nodiscard]] protocol::Outcome<void> exportText(const QString &path) const;
 
 private:
     [[nodiscard]] QLayout *buildFilters();

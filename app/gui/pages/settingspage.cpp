@@ -338,8 +338,10 @@ QString SettingsPage::saveProfileTo(const QString &path, const QString &comment,
     }
     Profile p = Profile::capture(*m_device);
     p.comment = comment.trimmed();
-    if (!p.save(path, error))
+    if (const auto saved = p.save(path); !saved.ok()) {
+        *error = saved.error();
         return {};
+    }
     m_saved = tr("✓ Profile saved: %n setting(s) of %1 in %2", nullptr, int(p.values.size()))
                   .arg(m_device->displayName(), QDir::toNativeSeparators(path));
     updateButtons();
@@ -353,13 +355,12 @@ void SettingsPage::openProfile() {
                                                       tr("TipScope profiles (*.json)"));
     if (path.isEmpty())
         return;
-    QString error;
-    const auto profile = Profile::load(path, &error);
-    if (!profile) {
-        QMessageBox::critical(this, tr("Open profile"), error);
+    const auto profile = Profile::load(path);
+    if (!profile.ok()) {
+        QMessageBox::critical(this, tr("Open profile"), profile.error());
         return;
     }
-    ProfileDialog dialog(*m_device, *profile, this);
+    ProfileDialog dialog(*m_device, profile.value(), this);
     dialog.exec();
 }
 

@@ -1,0 +1,24 @@
+#include "model/io/atomicsave.h"
+
+#include "protocol/elide.h"
+
+#include <QCoreApplication>
+#include <QSaveFile>
+
+namespace tipscope::model::io {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(AtomicSave)
+};
+} // namespace
+
+protocol::Outcome<void> saveAtomically(const QString &path, const QByteArray &bytes) {
+    QSaveFile f(path);
+    if (f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size() && f.commit())
+        return {};
+    return protocol::failure(
+        Tr::tr("cannot write %1: %2").arg(protocol::elidedPath(path), f.errorString()));
+}
+
+} // namespace tipscope::model::io

@@ -1,0 +1,19 @@
+// Atomic saves: every file TipScope writes in one go is replaced whole or not at all.
+//
+// saveAtomically() writes through QSaveFile: the old file stays as it was until the new one is
+// complete on disk, so a full disk, a pulled USB stick or a crash never leaves half a file where
+// a good one was. A failure says "cannot write <path>: <reason>" in the user's language, the
+// path elided the way every echoed input is. Files written as they grow (recordings, the CLI's
+// monitor CSV) are not saves and do not come here.
+#pragma once
+
+#include "protocol/outcome.h"
+
+#include <QByteArray>
+#include <QString>
+
+namespace tipscope::model::io {
+
+[[nodiscard]] protocol::Outcome<void> saveAtomically(const QString &path, const QByteArray &bytes);
+
+} // namespace tipscope::model::io

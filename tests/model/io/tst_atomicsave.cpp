@@ -1,0 +1,58 @@
+// The one atomic-save helper: a save replaces the file whole, and a save that cannot be done
+// leaves what was there, leaves no temporary file behind, and says which file and why.
+#include "model/io/atomicsave.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace tipscope::model;
+
+class TestAtomicSave : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void aSaveReplacesTheFileWhole();
+    void aFailedSaveLeavesWhatWasThereAndSaysWhy_data();
+    void aFailedSaveLeavesWhatWasThereAndSaysWhy();
+};
+
+void TestAtomicSave::aSaveReplacesTheFileWhole() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("out.txt"));
+    QVERIFY(io::saveAtomically(path, QByteArray("a much longer first version\n")).ok());
+    const auto saved = io::saveAtomically(path, QByteArray("second\n"));
+    QVERIFY(saved.ok());
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), QByteArray("second\n"));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{QStringLiteral("out.txt")});
+}
+
+void TestAtomicSave::aFailedSaveLeavesWhatWasThereAndSaysWhy_data() {
+    QTest::addColumn<QString>("name");
+    QTest::newRow("no such folder") << QStringLiteral("missing/out.txt");
+    QTest::newRow("a folder in the way") << QStringLiteral("folder");
+}
+
+void TestAtomicSave::aFailedSaveLeavesWhatWasThereAndSaysWhy() {
+    QFETCH(QString, name);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("folder")));
+    const QString path = dir.filePath(name);
+
+    const auto saved = io::saveAtomically(path, QByteArray("data\n"));
+
+    QVERIFY(!saved.ok());
+    QVERIFY2(saved.error().startsWith(QStringLiteral("cannot write %1: ").arg(path)),
+             qPrintable(saved.error()));
+    QVERIFY2(saved.error().size() > QStringLiteral("cannot write %1: ").arg(path).size(),
+             qPrintable(saved.error()));
+    QVERIFY(QFileInfo(dir.filePath(QStringLiteral("folder"))).isDir());
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList());
+}
+
+QTEST_GUILESS_MAIN(TestAtomicSave)
+#include "tst_atomicsave.moc"
