@@ -1090,42 +1090,42 @@
         <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>The station switched off its power because the transformer was overloaded. Let it cool for a few minutes with the ventilation slots free, then switch it off and on. Check that the tools working at once do not need more than the station can give (large heat sinks, high temperatures, several ports at full power). If it stops again with one tool at normal work, the station needs JBC service.</source>
         <translation>Die Station hat ihre Leistung abgeschaltet, weil der Transformator überlastet war. Lassen Sie sie einige Minuten mit freien Lüftungsschlitzen abkühlen, dann aus- und wieder einschalten. Prüfen Sie, ob die gleichzeitig arbeitenden Werkzeuge mehr brauchen, als die Station liefern kann (große Wärmesenken, hohe Temperaturen, mehrere Ports mit voller Leistung). Schaltet sie mit einem Werkzeug bei normaler Arbeit wieder ab, muss die Station zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>The station cannot read its internal temperature sensor. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
         <translation>Die Station kann ihren internen Temperatursensor nicht lesen. Aus- und wieder einschalten; bleibt der Fehler, muss die Steuereinheit zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
         <source>The station&apos;s memory failed its check. Switch it off and on. If the error stays, restore the factory settings and set the station up again (save a profile first if the settings can still be read); if it still stays, the control unit needs JBC service.</source>
         <translation>Der Speicher der Station hat seine Prüfung nicht bestanden. Aus- und wieder einschalten. Bleibt der Fehler, die Werkseinstellungen wiederherstellen und die Station neu einrichten (vorher ein Profil speichern, wenn sich die Einstellungen noch lesen lassen); bleibt er dann noch, muss die Steuereinheit zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
         <source>The station does not accept the mains frequency. Check that the voltage and frequency on the station&apos;s label match the supply, and that no generator, UPS or long extension cord makes it unstable; then switch the station off and on.</source>
         <translation>Die Station akzeptiert die Netzfrequenz nicht. Prüfen Sie, ob Spannung und Frequenz auf dem Typenschild der Station zur Versorgung passen und ob kein Generator, keine USV und kein langes Verlängerungskabel sie instabil macht; dann die Station aus- und wieder einschalten.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="217"/>
         <source>The station does not recognise its own model: its configuration is damaged. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
         <translation>Die Station erkennt ihr eigenes Modell nicht: Ihre Konfiguration ist beschädigt. Aus- und wieder einschalten; bleibt der Fehler, muss die Steuereinheit zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="217"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="218"/>
         <source>The station&apos;s tool control board does not answer. Switch the station off, wait ten seconds and switch it on; if the error stays, the control unit needs JBC service.</source>
         <translation>Die Werkzeug-Steuerplatine der Station antwortet nicht. Station ausschalten, zehn Sekunden warten und einschalten; bleibt der Fehler, muss die Steuereinheit zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="218"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="219"/>
         <source>The transformer is close to overload; the station stops if this goes on. Reduce the load: fewer tools heating at once, lower temperatures, no tip resting on a large heat sink; keep the ventilation slots free.</source>
         <translation>Der Transformator ist nahe an der Überlast; hält das an, schaltet die Station ab. Verringern Sie die Last: weniger Werkzeuge gleichzeitig heizen, niedrigere Temperaturen, keine Spitze auf einer großen Wärmesenke liegen lassen; Lüftungsschlitze frei halten.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="219"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
         <source>The guide&apos;s table does not list this code. Note the code and the time, switch the station off and on, and give the code to JBC service if it comes back.</source>
         <translation>Die Tabelle der Anleitung führt diesen Code nicht. Notieren Sie Code und Uhrzeit, schalten Sie die Station aus und wieder ein, und geben Sie den Code an den JBC-Service, wenn er wiederkommt.</translation>
     </message>
@@ -2059,32 +2059,35 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="107"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="106"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="109"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="108"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="111"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="110"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="113"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="112"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="115"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="114"/>
         <source>What happened</source>
         <translation>Ereignis</translation>
     </message>
+</context>
+<context>
+    <name>EventText</name>
     <message numerus="yes">
-        <location filename="../lib/model/eventhistorymodel.cpp" line="72"/>
+        <location filename="../lib/model/eventtext.cpp" line="16"/>
         <source>%1 (%n times, until %2)</source>
         <translation>
             <numerusform>%1 (%n-mal, bis %2)</numerusform>
@@ -2903,8 +2906,8 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="109"/>
-        <location filename="../lib/model/portmodel.cpp" line="124"/>
+        <location filename="../lib/model/portmodel.cpp" line="105"/>
+        <location filename="../lib/model/portmodel.cpp" line="120"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -2924,7 +2927,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Keiner</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="185"/>
+        <location filename="../lib/model/portmodel.cpp" line="181"/>
         <source>this port has no %1 command</source>
         <translation>dieser Port hat keinen Befehl %1</translation>
     </message>
@@ -3292,67 +3295,59 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="142"/>
+        <location filename="../lib/model/supportreport.cpp" line="143"/>
         <source>TipScope support report, %1</source>
         <translation>TipScope-Supportbericht, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="143"/>
+        <location filename="../lib/model/supportreport.cpp" line="144"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="149"/>
+        <location filename="../lib/model/supportreport.cpp" line="150"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="150"/>
+        <location filename="../lib/model/supportreport.cpp" line="151"/>
         <source>State: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="151"/>
+        <location filename="../lib/model/supportreport.cpp" line="152"/>
         <source>Statistics: %1</source>
         <translation>Statistik: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="176"/>
+        <location filename="../lib/model/supportreport.cpp" line="177"/>
         <source>Recent events:</source>
         <translation>Letzte Ereignisse:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="205"/>
+        <location filename="../lib/model/supportreport.cpp" line="204"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="79"/>
+        <location filename="../lib/model/supportreport.cpp" line="80"/>
         <source>Device %1</source>
         <translation>Gerät %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="84"/>
+        <location filename="../lib/model/supportreport.cpp" line="85"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="86"/>
+        <location filename="../lib/model/supportreport.cpp" line="87"/>
         <source>, software %1</source>
         <translation>, Software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="166"/>
+        <location filename="../lib/model/supportreport.cpp" line="167"/>
         <source>  What to check:</source>
         <translation>  Was zu prüfen ist:</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../lib/model/supportreport.cpp" line="182"/>
-        <source>%1 (%n times, until %2)</source>
-        <translation>
-            <numerusform>%1 (%n-mal, bis %2)</numerusform>
-            <numerusform>%1 (%n-mal, bis %2)</numerusform>
-        </translation>
     </message>
 </context>
 <context>

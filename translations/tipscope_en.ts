@@ -24,9 +24,9 @@
     </message>
 </context>
 <context>
-    <name>EventHistoryModel</name>
+    <name>EventText</name>
     <message numerus="yes">
-        <location filename="../lib/model/eventhistorymodel.cpp" line="72"/>
+        <location filename="../lib/model/eventtext.cpp" line="16"/>
         <source>%1 (%n times, until %2)</source>
         <translation>
             <numerusform>%1 (%n time, until %2)</numerusform>
@@ -110,17 +110,6 @@
         <translation>
             <numerusform>%1, %n device</numerusform>
             <numerusform>%1, %n devices</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>SupportReport</name>
-    <message numerus="yes">
-        <location filename="../lib/model/supportreport.cpp" line="182"/>
-        <source>%1 (%n times, until %2)</source>
-        <translation>
-            <numerusform>%1 (%n time, until %2)</numerusform>
-            <numerusform>%1 (%n times, until %2)</numerusform>
         </translation>
     </message>
 </context>

@@ -1090,42 +1090,42 @@
         <translation>Error del alimentador %1 (no figura en la guía del SFR)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>The station switched off its power because the transformer was overloaded. Let it cool for a few minutes with the ventilation slots free, then switch it off and on. Check that the tools working at once do not need more than the station can give (large heat sinks, high temperatures, several ports at full power). If it stops again with one tool at normal work, the station needs JBC service.</source>
         <translation>La estación cortó su potencia porque el transformador se sobrecargó. Déjela enfriar unos minutos con las rejillas de ventilación libres y luego apáguela y enciéndala. Compruebe que las herramientas que trabajan a la vez no necesitan más de lo que la estación puede dar (disipadores grandes, temperaturas altas, varios puertos a plena potencia). Si vuelve a pararse con una herramienta en trabajo normal, la estación necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>The station cannot read its internal temperature sensor. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
         <translation>La estación no puede leer su sensor de temperatura interno. Apáguela y enciéndala; si el error sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
         <source>The station&apos;s memory failed its check. Switch it off and on. If the error stays, restore the factory settings and set the station up again (save a profile first if the settings can still be read); if it still stays, the control unit needs JBC service.</source>
         <translation>La memoria de la estación no superó su comprobación. Apáguela y enciéndala. Si el error sigue, restaure los ajustes de fábrica y vuelva a configurar la estación (guarde antes un perfil si aún se pueden leer los ajustes); si aun así sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
         <source>The station does not accept the mains frequency. Check that the voltage and frequency on the station&apos;s label match the supply, and that no generator, UPS or long extension cord makes it unstable; then switch the station off and on.</source>
         <translation>La estación no acepta la frecuencia de la red. Compruebe que la tensión y la frecuencia de la etiqueta de la estación coinciden con la alimentación y que ningún generador, SAI o alargador largo la vuelve inestable; luego apague y encienda la estación.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="217"/>
         <source>The station does not recognise its own model: its configuration is damaged. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
         <translation>La estación no reconoce su propio modelo: su configuración está dañada. Apáguela y enciéndala; si el error sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="217"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="218"/>
         <source>The station&apos;s tool control board does not answer. Switch the station off, wait ten seconds and switch it on; if the error stays, the control unit needs JBC service.</source>
         <translation>La placa de control de herramientas de la estación no responde. Apague la estación, espere diez segundos y enciéndala; si el error sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="218"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="219"/>
         <source>The transformer is close to overload; the station stops if this goes on. Reduce the load: fewer tools heating at once, lower temperatures, no tip resting on a large heat sink; keep the ventilation slots free.</source>
         <translation>El transformador está cerca de la sobrecarga; la estación se parará si esto continúa. Reduzca la carga: menos herramientas calentando a la vez, temperaturas más bajas, ninguna punta apoyada en un disipador grande; mantenga libres las rejillas de ventilación.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="219"/>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
         <source>The guide&apos;s table does not list this code. Note the code and the time, switch the station off and on, and give the code to JBC service if it comes back.</source>
         <translation>La tabla de la guía no incluye este código. Anote el código y la hora, apague y encienda la estación y, si vuelve a aparecer, comunique el código al servicio técnico de JBC.</translation>
     </message>
@@ -2061,32 +2061,35 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="107"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="106"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="109"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="108"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="111"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="110"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="113"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="112"/>
         <source>Source</source>
         <translation>Origen</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="115"/>
+        <location filename="../lib/model/eventhistorymodel.cpp" line="114"/>
         <source>What happened</source>
         <translation>Qué ocurrió</translation>
     </message>
+</context>
+<context>
+    <name>EventText</name>
     <message numerus="yes">
-        <location filename="../lib/model/eventhistorymodel.cpp" line="72"/>
+        <location filename="../lib/model/eventtext.cpp" line="16"/>
         <source>%1 (%n times, until %2)</source>
         <translation>
             <numerusform>%1 (%n vez, hasta %2)</numerusform>
@@ -2905,8 +2908,8 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="109"/>
-        <location filename="../lib/model/portmodel.cpp" line="124"/>
+        <location filename="../lib/model/portmodel.cpp" line="105"/>
+        <location filename="../lib/model/portmodel.cpp" line="120"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -2926,7 +2929,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>Ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="185"/>
+        <location filename="../lib/model/portmodel.cpp" line="181"/>
         <source>this port has no %1 command</source>
         <translation>este puerto no tiene el comando %1</translation>
     </message>
@@ -3294,67 +3297,59 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="142"/>
+        <location filename="../lib/model/supportreport.cpp" line="143"/>
         <source>TipScope support report, %1</source>
         <translation>Informe de soporte de TipScope, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="143"/>
+        <location filename="../lib/model/supportreport.cpp" line="144"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="149"/>
+        <location filename="../lib/model/supportreport.cpp" line="150"/>
         <source>Line: %1</source>
         <translation>Línea: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="150"/>
+        <location filename="../lib/model/supportreport.cpp" line="151"/>
         <source>State: %1</source>
         <translation>Estado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="151"/>
+        <location filename="../lib/model/supportreport.cpp" line="152"/>
         <source>Statistics: %1</source>
         <translation>Estadísticas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="176"/>
+        <location filename="../lib/model/supportreport.cpp" line="177"/>
         <source>Recent events:</source>
         <translation>Eventos recientes:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="205"/>
+        <location filename="../lib/model/supportreport.cpp" line="204"/>
         <source>cannot write %1: %2</source>
         <translation>no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="79"/>
+        <location filename="../lib/model/supportreport.cpp" line="80"/>
         <source>Device %1</source>
         <translation>Equipo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="84"/>
+        <location filename="../lib/model/supportreport.cpp" line="85"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="86"/>
+        <location filename="../lib/model/supportreport.cpp" line="87"/>
         <source>, software %1</source>
         <translation>, software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="166"/>
+        <location filename="../lib/model/supportreport.cpp" line="167"/>
         <source>  What to check:</source>
         <translation>  Qué comprobar:</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../lib/model/supportreport.cpp" line="182"/>
-        <source>%1 (%n times, until %2)</source>
-        <translation>
-            <numerusform>%1 (%n vez, hasta %2)</numerusform>
-            <numerusform>%1 (%n veces, hasta %2)</numerusform>
-        </translation>
     </message>
 </context>
 <context>
