@@ -27,12 +27,12 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../app/gui/appsettings.cpp" line="107"/>
+        <location filename="../lib/model/appsettings.cpp" line="105"/>
         <source>choose a serial port</source>
         <translation>wählen Sie eine serielle Schnittstelle</translation>
     </message>
     <message>
-        <location filename="../app/gui/appsettings.cpp" line="117"/>
+        <location filename="../lib/model/appsettings.cpp" line="115"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; hat nicht die Form HOST:PORT (zum Beispiel 192.168.1.20:4001)</translation>
     </message>
@@ -3407,27 +3407,27 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="28"/>
+        <location filename="../app/gui/main.cpp" line="30"/>
         <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
         <translation>JBC-Lötstationen und den SFR-Lotdrahtvorschub konfigurieren und überwachen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="34"/>
+        <location filename="../app/gui/main.cpp" line="36"/>
         <source>Start on the built-in simulated DME station and SFR feeder.</source>
         <translation>Mit der eingebauten simulierten DME-Station und dem SFR-Lotdrahtvorschub starten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="37"/>
+        <location filename="../app/gui/main.cpp" line="39"/>
         <source>Connect to this serial port.</source>
         <translation>Mit dieser seriellen Schnittstelle verbinden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="40"/>
+        <location filename="../app/gui/main.cpp" line="42"/>
         <source>Connect to a TCP serial server.</source>
         <translation>Mit einem seriellen TCP-Server verbinden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="44"/>
+        <location filename="../app/gui/main.cpp" line="46"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Ein PNG jeder Seite in DIR speichern, dann beenden.</translation>
     </message>

@@ -27,12 +27,12 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../app/gui/appsettings.cpp" line="107"/>
+        <location filename="../lib/model/appsettings.cpp" line="105"/>
         <source>choose a serial port</source>
         <translation>elija un puerto serie</translation>
     </message>
     <message>
-        <location filename="../app/gui/appsettings.cpp" line="117"/>
+        <location filename="../lib/model/appsettings.cpp" line="115"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; no tiene la forma HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
     </message>
@@ -3409,27 +3409,27 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="28"/>
+        <location filename="../app/gui/main.cpp" line="30"/>
         <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
         <translation>Configure y supervise estaciones de soldadura JBC y el alimentador SFR.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="34"/>
+        <location filename="../app/gui/main.cpp" line="36"/>
         <source>Start on the built-in simulated DME station and SFR feeder.</source>
         <translation>Iniciar con la estación DME y el alimentador SFR simulados integrados.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="37"/>
+        <location filename="../app/gui/main.cpp" line="39"/>
         <source>Connect to this serial port.</source>
         <translation>Conectar a este puerto serie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="40"/>
+        <location filename="../app/gui/main.cpp" line="42"/>
         <source>Connect to a TCP serial server.</source>
         <translation>Conectar a un servidor serie TCP.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="44"/>
+        <location filename="../app/gui/main.cpp" line="46"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Guardar un PNG de cada página en DIR y salir.</translation>
     </message>
