@@ -6285,4 +6285,12 @@ Möchten Sie fortfahren?</translation>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
+</context><context><name>EventText</name><message numerus="yes">
+        <location filename="../lib/model/eventtext.cpp" line="16" />
+        <source>%1 (%n times, until %2)</source>
+        <translation>
+            <numerusform>%1 (%n-mal, bis %2)</numerusform>
+            <numerusform>%1 (%n-mal, bis %2)</numerusform>
+        </translation>
+    </message>
 </context></TS>

@@ -236,4 +236,12 @@
         </translation>
     </message>
 </context>
-</TS>
+<context><name>EventText</name><message numerus="yes">
+        <location filename="../lib/model/eventtext.cpp" line="16" />
+        <source>%1 (%n times, until %2)</source>
+        <translation>
+            <numerusform>%1 (%n time, until %2)</numerusform>
+            <numerusform>%1 (%n times, until %2)</numerusform>
+        </translation>
+    </message>
+</context></TS>

@@ -6287,4 +6287,12 @@ Do you want to continue?</source>
         <source>cannot write %1: %2</source>
         <translation>no se puede escribir %1: %2</translation>
     </message>
+</context><context><name>EventText</name><message numerus="yes">
+        <location filename="../lib/model/eventtext.cpp" line="16" />
+        <source>%1 (%n times, until %2)</source>
+        <translation>
+            <numerusform>%1 (%n vez, hasta %2)</numerusform>
+            <numerusform>%1 (%n veces, hasta %2)</numerusform>
+        </translation>
+    </message>
 </context></TS>

@@ -4,7 +4,7 @@
 // Connect / Disconnect; monitor-only; and the line's state, always visible, in words and colour.
 #pragma once
 
-#include "appsettings.h"
+#include "model/appsettings.h"
 
 #include <QWidget>
 
@@ -26,9 +26,9 @@ class ConnectionBar : public QWidget {
 public:
     explicit ConnectionBar(QWidget *parent = nullptr);
 
-    void setSettings(const AppSettings &settings);
+    void setSettings(const model::AppSettings &settings);
     // The bar's fields written over `base` (which carries the preferences).
-    [[nodiscard]] AppSettings settings(const AppSettings &base) const;
+    [[nodiscard]] model::AppSettings settings(const model::AppSettings &base) const;
     void setState(model::Session::State state, const QString &text);
     void setMonitorOnly(bool on);
     [[nodiscard]] QString stateText() const;

@@ -1,6 +1,7 @@
 // tipscope: the desktop application.
 #include "i18n/translations.h"
 #include "mainwindow.h"
+#include "model/appsettings.h"
 #include "screenshots.h"
 
 #include <QApplication>
@@ -11,6 +12,7 @@
 #include <memory>
 
 using namespace tipscope::gui;
+using tipscope::model::AppSettings;
 
 int main(int argc, char *argv[]) {
     QApplication app(argc, argv);

@@ -3,7 +3,7 @@
 // Window geometry, splitter state and the last connection are remembered (AppSettings).
 #pragma once
 
-#include "appsettings.h"
+#include "model/appsettings.h"
 
 #include "model/session.h"
 
@@ -34,7 +34,7 @@ public:
 
     // Connects with the connection bar's settings (saving them); a refusal is shown and returned.
     QString connectLine();
-    void connectWith(const AppSettings &settings);
+    void connectWith(const model::AppSettings &settings);
     void writeSupportReport();
 
 protected:
@@ -42,14 +42,14 @@ protected:
 
 private:
     void buildMenus();
-    void applyPreferences(const AppSettings &settings);
+    void applyPreferences(const model::AppSettings &settings);
     void onSelection(model::DeviceModel *device, int port);
     void onTabChanged(int index);
     void updateVisiblePorts();
     void updateTitle();
 
     model::Session m_session;
-    AppSettings m_settings;
+    model::AppSettings m_settings;
     ConnectionBar *m_connection;
     DeviceTree *m_tree;
     QTabWidget *m_tabs;

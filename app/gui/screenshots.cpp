@@ -7,6 +7,7 @@
 #include "widgets/parametereditor.h"
 
 #include "link/simtransport.h"
+#include "protocol/valuecodec.h"
 #include "sim/simline.h"
 
 #include <QAbstractButton>
@@ -159,6 +160,21 @@ void Shooter::shootDisconnected(int index) {
     });
 }
 
+// Two settings of the first port as a profile for another line might have them: the setpoint
+// and the high alarm, found and encoded by the catalog for whatever family is connected.
+void changeTwoSettings(model::Profile &profile, const model::StationModel &station) {
+    const std::pair<protocol::Role, qint64> changes[] = {{protocol::Role::Setpoint, 320},
+                                                         {protocol::Role::HighAlarm, 450}};
+    for (const auto &[role, value] : changes) {
+        const auto write =
+            station.catalog().resolve(station.family(), role, 1, protocol::Direction::Write);
+        const auto data = write ? protocol::encodeWrite(*write, value) : std::nullopt;
+        for (auto &[code, field] : profile.values)
+            if (data && code == write->code)
+                field = *data;
+    }
+}
+
 // A profile against the station: two settings differ.
 void Shooter::shootProfile(int index) {
     model::StationModel *st = m_window.session().station();
@@ -167,9 +183,7 @@ void Shooter::shootProfile(int index) {
         return;
     }
     model::Profile profile = model::Profile::capture(*st);
-    for (auto &[code, data] : profile.values)
-        if (code == "ST1" || code == "S12")
-            data = code == "ST1" ? QByteArray("00320") : QByteArray("00180");
+    changeTwoSettings(profile, *st);
     profile.comment = QStringLiteral("line 3, lead-free");
     auto *dialog = new ProfileDialog(*st, profile, &m_window);
     dialog->resize(m_window.width() * 3 / 4, m_window.height() * 3 / 4);

@@ -1,5 +1,6 @@
 #include "eventhistorymodel.h"
 
+#include "eventtext.h"
 #include "timetext.h"
 
 #include <QCoreApplication>
@@ -68,12 +69,10 @@ QString EventHistoryModel::text(const Event &e, int column, bool full) {
     case Source:
         return e.source;
     case Text:
-        return e.count > 1
-                   ? Tr::tr("%1 (%n times, until %2)", nullptr, e.count)
-                         .arg(e.text,
-                              full ? e.lastTime.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
-                                   : clockText(e.lastTime))
-                   : e.text;
+        return repeatedEventText(
+            e.text, e.count,
+            full ? e.lastTime.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
+                 : clockText(e.lastTime));
     default:
         return {};
     }

@@ -80,10 +80,6 @@ QString PortModel::displayText(Role role) const {
     return m_station.displayText(role, m_port);
 }
 
-Parameter *PortModel::param(const char *base) const {
-    return m_station.parameter(QByteArray(base) + QByteArray::number(m_port));
-}
-
 std::optional<qint64> PortModel::tipTemperature() const {
     return m_station.number(Role::TipTemperature, m_port);
 }

@@ -60,9 +60,6 @@ public:
     [[nodiscard]] QString displayText(protocol::Role role) const;
     // The values of this port with these roles that the family has, in the order asked.
     [[nodiscard]] QList<Parameter *> parameters(std::initializer_list<protocol::Role> roles) const;
-    // The parameter of this port with the given two-letter base (the code without the port
-    // digit), for the console and tools that speak codes; the pages use parameter(Role).
-    [[nodiscard]] Parameter *param(const char *base) const;
 
     [[nodiscard]] std::optional<qint64> tipTemperature() const;
     [[nodiscard]] std::optional<qint64> selectedTemperature() const;

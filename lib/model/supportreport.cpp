@@ -1,5 +1,6 @@
 #include "supportreport.h"
 
+#include "eventtext.h"
 #include "session.h"
 #include "settingname.h"
 #include "timetext.h"
@@ -176,11 +177,9 @@ QString supportReportText(const QJsonObject &r) {
     out << Tr::tr("Recent events:");
     for (const QJsonValue &ev : r.value(QStringLiteral("events")).toArray()) {
         const QJsonObject e = ev.toObject();
-        QString text = e.value(QStringLiteral("text")).toString();
-        const int count = e.value(QStringLiteral("count")).toInt(1);
-        if (count > 1)
-            text = Tr::tr("%1 (%n times, until %2)", nullptr, count)
-                       .arg(text, e.value(QStringLiteral("lastTime")).toString());
+        const QString text = repeatedEventText(e.value(QStringLiteral("text")).toString(),
+                                               e.value(QStringLiteral("count")).toInt(1),
+                                               e.value(QStringLiteral("lastTime")).toString());
         out << QStringLiteral("  %1 [%2] %3 %4: %5")
                    .arg(e.value(QStringLiteral("time")).toString(),
                         e.value(QStringLiteral("severity")).toString(),

@@ -255,7 +255,10 @@ QString Catalog::errorAdvice(const ResolvedCommand &command, int code, Wording w
     const auto advice = m_advice.constFind(key);
     if (advice == m_advice.constEnd())
         return {};
-    const QString text = advice->value(code, advice->value(-1));
+    // A code the family's error table does not list gets the advice for unlisted codes, even
+    // when the table the advice was taken from knows it: there it may mean something else.
+    const bool listed = m_tables.value(key).contains(code);
+    const QString text = listed ? advice->value(code, advice->value(-1)) : advice->value(-1);
     return text.isEmpty() ? QString() : catalogText(text, wording);
 }
 

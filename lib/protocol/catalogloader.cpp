@@ -25,6 +25,7 @@ private:
     }
     static QMap<int, QString> intMap(const QJsonObject &o);
     bool loadAdvice(const QJsonObject &advice);
+    bool inheritAdvice(const QMap<QString, QString> &from);
     bool parseCommand(const QJsonObject &o, const QJsonObject &groups, CommandSpec &spec);
     Catalog &m_c;
 };
@@ -36,12 +37,19 @@ QMap<int, QString> CatalogLoader::intMap(const QJsonObject &o) {
     return m;
 }
 
-// What to check, per error table and code; "other" (kept as -1) for codes the table lacks.
+// What to check, per error table and code; "other" (kept as -1) for codes the table lacks. A
+// table may take another's texts ("adviceFrom") and add or replace codes of its own, so that a
+// text shared by error tables that mean the same is written, and translated, once.
 bool CatalogLoader::loadAdvice(const QJsonObject &advice) {
+    QMap<QString, QString> from;
     for (auto table = advice.begin(); table != advice.end(); ++table) {
         const QJsonObject codes = table.value().toObject();
         QMap<int, QString> byCode;
         for (auto it = codes.begin(); it != codes.end(); ++it) {
+            if (it.key() == QLatin1String("adviceFrom")) {
+                from.insert(table.key(), it.value().toString());
+                continue;
+            }
             bool isNumber = false;
             const int code = it.key().toInt(&isNumber);
             if (!isNumber && it.key() != QLatin1String("other"))
@@ -50,6 +58,32 @@ bool CatalogLoader::loadAdvice(const QJsonObject &advice) {
             byCode.insert(isNumber ? code : -1, it.value().toString());
         }
         m_c.m_advice.insert(table.key(), byCode);
+    }
+    return inheritAdvice(from);
+}
+
+// Each table that names another gets the texts of the whole chain it names, its own last so
+// that they win. A name that is no advice table, or a chain that comes back to itself, is
+// refused: either would silently leave a table without the texts it was meant to have.
+bool CatalogLoader::inheritAdvice(const QMap<QString, QString> &from) {
+    const QMap<QString, QMap<int, QString>> own = m_c.m_advice;
+    for (auto it = from.cbegin(); it != from.cend(); ++it) {
+        QStringList chain{it.key()};
+        while (from.contains(chain.last())) {
+            const QString next = from.value(chain.last());
+            if (!own.contains(next))
+                return fail(QStringLiteral("advice for %1 takes its texts from '%2', which is no "
+                                           "advice table")
+                                .arg(chain.last(), next));
+            if (chain.contains(next))
+                return fail(QStringLiteral("advice for %1 takes its texts from itself: %2")
+                                .arg(it.key(), (chain << next).join(QStringLiteral(" -> "))));
+            chain.append(next);
+        }
+        QMap<int, QString> merged;
+        for (auto t = chain.crbegin(); t != chain.crend(); ++t)
+            merged.insert(own.value(*t));
+        m_c.m_advice.insert(it.key(), merged);
     }
     return true;
 }

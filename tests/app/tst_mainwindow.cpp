@@ -114,8 +114,9 @@ void TestMainWindow::robotControlsSetStatusAndSetpoint() {
     w.show();
     connectDemo(w);
     auto *overview = qobject_cast<OverviewPage *>(w.page(QStringLiteral("Overview")));
-    QTRY_VERIFY_WITH_TIMEOUT(w.session().station()->port(2)->param("ST")->value().has_value(),
-                             10000);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        w.session().station()->port(2)->parameter(protocol::Role::Setpoint)->value().has_value(),
+        10000);
     QCOMPARE(overview->card(2)->requestMode(10), QString());
     QTRY_VERIFY_WITH_TIMEOUT(w.session().demoLine()->station()->port(2).cooling, 10000);
     QCOMPARE(overview->card(2)->requestSetpoint(300), QString());

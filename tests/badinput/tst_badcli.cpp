@@ -7,7 +7,7 @@
 //
 // Known bugs are pinned with QEXPECT_FAIL (reported in docs/reliability.md): when one is fixed
 // its test XPASSes, which fails, so the expectation is removed with the fix.
-#include "ptyfixtures.h"
+#include "programrun.h"
 
 #include <QRegularExpression>
 #include <QTemporaryFile>
@@ -17,11 +17,7 @@ using namespace tipscope::testing;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
+using Run = ProgramRun;
 
 struct WireCount {
     qint64 requests = -1;
@@ -54,16 +50,7 @@ Run runCli(const QByteArrayList &args) {
     QProcess p;
     p.start(QStringLiteral("/bin/sh"),
             {script.fileName(), binaryPath(QStringLiteral("tipscope-cli"))});
-    if (!p.waitForFinished(30000)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return finishProcess(p, 30000);
 }
 
 // A sanitizer build reports undefined behaviour or memory errors on standard error and exits;

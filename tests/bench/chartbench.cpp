@@ -3,10 +3,10 @@
 #include "benchsupport.h"
 #include "naivechart.h"
 
-#include "appsettings.h"
 #include "charts/chartspage.h"
 #include "charts/chartwidget.h"
 #include "mainwindow.h"
+#include "model/appsettings.h"
 #include "model/chart/chartframe.h"
 #include "model/session.h"
 #include "model/stationmodel.h"
@@ -225,9 +225,9 @@ double cpuPercent(gui::MainWindow &window, gui::Page *page, int seconds) {
 // GUI's CPU that no widget can save (the in-process simulator, the link, the parameters).
 double sessionCpuPercent(int seconds) {
     model::Session session;
-    const gui::AppSettings demo = [] {
-        gui::AppSettings a;
-        a.kind = gui::AppSettings::Kind::Demo;
+    const model::AppSettings demo = [] {
+        model::AppSettings a;
+        a.kind = model::AppSettings::Kind::Demo;
         return a;
     }();
     session.scheduler().setInterval(model::PollClass::Live, demo.liveMs);
@@ -258,8 +258,8 @@ int runGuiCpu(int seconds, bool baseline) {
     gui::MainWindow window;
     window.resize(1360, 860);
     window.show();
-    gui::AppSettings demo;
-    demo.kind = gui::AppSettings::Kind::Demo;
+    model::AppSettings demo;
+    demo.kind = model::AppSettings::Kind::Demo;
     window.connectWith(demo);
     for (int i = 0; i < 300 && window.session().state() != model::Session::State::Connected; ++i)
         waitMs(100);

@@ -1,5 +1,5 @@
 // tipscope-cli end to end: the real binary, a socat PTY pair, and tipscope-sim on the other end.
-#include "ptyfixtures.h"
+#include "programrun.h"
 
 #include <QFile>
 #include <QRegularExpression>
@@ -9,27 +9,13 @@ using namespace tipscope::testing;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
+using Run = ProgramRun;
 
 Run runCli(const QStringList &args, int timeoutMs = 30000, const QString &folder = {}) {
     QProcess p;
     p.setWorkingDirectory(folder);
     p.start(binaryPath(QStringLiteral("tipscope-cli")), args);
-    Run r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return finishProcess(p, timeoutMs);
 }
 
 } // namespace

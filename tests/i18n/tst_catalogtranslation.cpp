@@ -5,7 +5,10 @@
 // run) or a label shown without catalogText() stays English here and fails.
 #include "../model/simfixture.h"
 #include "i18n/translations.h"
+#include "model/eventhistorymodel.h"
+#include "model/eventtext.h"
 #include "model/supportreport.h"
+#include "model/timetext.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -28,6 +31,7 @@ private Q_SLOTS:
     void aNakReachesTheParameterInGerman();
     void supportReportTextNamesParametersInGerman();
     void eventKindsAreGermanForPeopleAndEnglishAsData();
+    void aRepeatedEventSaysHowOftenInGermanInTheTableAndTheReport();
 };
 
 void TestCatalogTranslation::initTestCase() {
@@ -140,6 +144,27 @@ void TestCatalogTranslation::eventKindsAreGermanForPeopleAndEnglishAsData() {
     QCOMPARE(Event::kindTitle(Event::Kind::StationError), QStringLiteral("Stationsfehler"));
     QCOMPARE(Event::kindTitle(Event::Kind::Write), QStringLiteral("Schreiben"));
     QCOMPARE(Event::kindName(Event::Kind::Write), QStringLiteral("write"));
+}
+
+void TestCatalogTranslation::aRepeatedEventSaysHowOftenInGermanInTheTableAndTheReport() {
+    const QString text = QStringLiteral("nicht gesendet");
+    QCOMPARE(repeatedEventText(text, 1, QStringLiteral("10:02:13")), text);
+    const QString repeated = QStringLiteral("nicht gesendet (75-mal, bis 10:02:13)");
+    QCOMPARE(repeatedEventText(text, 75, QStringLiteral("10:02:13")), repeated);
+
+    Event e;
+    e.text = text;
+    e.count = 75;
+    e.time = QDateTime::currentDateTime().addSecs(-60);
+    e.lastTime = e.time.addSecs(30);
+    QCOMPARE(EventHistoryModel::text(e, EventHistoryModel::Text, false),
+             QStringLiteral("nicht gesendet (75-mal, bis %1)").arg(clockText(e.lastTime)));
+    const QJsonObject event{{QStringLiteral("text"), text},
+                            {QStringLiteral("count"), 75},
+                            {QStringLiteral("lastTime"), QStringLiteral("10:02:13")}};
+    const QString report =
+        supportReportText(QJsonObject{{QStringLiteral("events"), QJsonArray{event}}});
+    QVERIFY2(report.contains(repeated), qPrintable(report));
 }
 
 QTEST_GUILESS_MAIN(TestCatalogTranslation)

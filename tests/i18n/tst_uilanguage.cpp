@@ -3,9 +3,9 @@
 // has no such locale installed); tipscope follows the ui/language preference or the system.
 #include "i18n/translations.h"
 #include "mainwindow.h"
+#include "programrun.h"
 #include "protocol/catalog.h"
 #include "protocol/catalogtext.h"
-#include "ptyfixtures.h"
 
 #include <QDir>
 #include <QLibraryInfo>
@@ -20,11 +20,7 @@ using namespace tipscope;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
+using Run = testing::ProgramRun;
 
 // Runs a built program with the language variables replaced by `env` ("NAME=value" each).
 Run runWith(const QString &program, const QStringList &args, const QStringList &env) {
@@ -37,17 +33,7 @@ Run runWith(const QString &program, const QStringList &args, const QStringList &
     QProcess p;
     p.setProcessEnvironment(e);
     p.start(testing::binaryPath(program), args);
-    Run r;
-    if (!p.waitForFinished(30000)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return testing::finishProcess(p, 30000);
 }
 
 // What TipScope's embedded catalogue for `language` says for a source text.

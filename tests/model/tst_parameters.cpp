@@ -321,7 +321,7 @@ void TestParameters::portStatusDecodesFlagsAndRobotControlsWork() {
     st->refreshAll();
     f.settle();
     PortModel *port = st->port(2);
-    QSignalSpy written(port->param("PS"), &Parameter::writeFinished);
+    QSignalSpy written(port->parameter(Role::Status), &Parameter::writeFinished);
     QVERIFY(port->setMode(10).isEmpty());
     QVERIFY(written.wait());
     QVERIFY2(written.first().at(0).toBool(), qPrintable(written.first().at(1).toString()));
@@ -344,8 +344,8 @@ void TestParameters::injectedErrorsAndAlarmsReachTheEventLog() {
     f.simLine->station()->setPortError(3, 1);
     f.simLine->station()->latchAlarm(1, 10);
     f.simLine->station()->setStationError(7);
-    st->port(3)->param("PE")->refresh();
-    st->port(1)->param("TA")->refresh();
+    st->port(3)->parameter(Role::Error)->refresh();
+    st->port(1)->parameter(Role::Alarm)->refresh();
     st->parameter("SER")->refresh();
     f.settle();
     QStringList texts;

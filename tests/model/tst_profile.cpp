@@ -455,7 +455,8 @@ void TestProfile::liveValuesKeepUpdatingWhileAProfileIsApplied() {
     QTimer sampler;
     connect(&sampler, &QTimer::timeout, this, [&] {
         for (PortModel *port : st->ports())
-            updates[port->number()].insert(port->param("TT")->lastUpdate().toMSecsSinceEpoch());
+            updates[port->number()].insert(
+                port->parameter(protocol::Role::TipTemperature)->lastUpdate().toMSecsSinceEpoch());
     });
     sampler.start(50);
     const ApplyReport r = run(*st, p, ProfileApplier::Mode::Apply);

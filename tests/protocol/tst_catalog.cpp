@@ -1,6 +1,7 @@
 // The command catalog covers every command of the four guides with complete, consistent data.
 #include "protocol/catalog.h"
 #include "protocol/valuecodec.h"
+#include "support/testcatalog.h"
 
 #include <QSet>
 #include <QtTest>
@@ -98,6 +99,30 @@ QByteArray concrete(const QString &pattern, const FamilyInfo &f) {
         c.replace(QLatin1Char('y'), QString::number(f.tools.first()));
     return c.toLatin1();
 }
+
+// What to check for `code` read from the error of `port` (0: the station's own) of `family`;
+// nullopt when the family has no such error. (resolve() by role finds only the first command of
+// a role, the port's PEx, so the station's own error is looked for among all.)
+std::optional<QString> adviceFor(const Catalog &cat, const QString &family, int port, int code) {
+    for (const ResolvedCommand &r : cat.expand(family, Direction::Read))
+        if (r.spec->role == Role::Error && r.port == port)
+            return cat.errorAdvice(r, code, Wording::Catalog);
+    return std::nullopt;
+}
+
+// A catalog with one family X, whose station errors (read with SER) are the table "errors" and
+// whose advice tables are `advice`.
+std::optional<Catalog> catalogWithAdvice(const QByteArray &advice, QString *error) {
+    const QByteArray fams =
+        R"({"families":{"X":{"kind":"station","stationErrors":"errors"}},"units":{"none":{}},)"
+        R"("tables":{"errors":{"0":"OK","1":"one","2":"two","3":"three"},"advice":)" +
+        advice + "}}";
+    return Catalog::load(
+        fams,
+        R"({"commands":[{"code":"SER","access":"r","kind":"enum","families":["X"],)"
+        R"("table":"$stationErrors","group":"errors","role":"error"}]})",
+        error);
+}
 } // namespace
 
 class TestCatalog : public QObject {
@@ -113,6 +138,12 @@ private Q_SLOTS:
     void resolveRejectsPortsAndToolsTheFamilyDoesNotHave();
     void familyIsFoundFromTheModelName();
     void errorTablesExplainCodesIncludingTheMisprintedOne();
+    void errorTablesThatMeanTheSameShareOneAdvice_data();
+    void errorTablesThatMeanTheSameShareOneAdvice();
+    void everyAdviceTextIsWrittenOnceInTheCatalog();
+    void adviceTakenFromAnotherTableFollowsTheChainAndKeepsItsOwnTexts();
+    void adviceFromNoTableOrFromItselfIsRefusedWithAReason_data();
+    void adviceFromNoTableOrFromItselfIsRefusedWithAReason();
     void validationSaysWhatIsAllowed();
     void malformedCatalogDataIsRefusedWithAReason();
     void aRoleFindsOneValueAndOneActionPerPort();
@@ -262,6 +293,112 @@ void TestCatalog::errorTablesExplainCodesIncludingTheMisprintedOne() {
     QCOMPARE(cat.severity("portErrorsUcrGroup", 9), QStringLiteral("warning"));
     QCOMPARE(cat.severity("portErrorsUcrGroup", 1), QStringLiteral("error"));
     QVERIFY(cat.feederErrorText(3, w).contains("3"));
+}
+
+void TestCatalog::errorTablesThatMeanTheSameShareOneAdvice_data() {
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<int>("port");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("sameAsFamily");
+    QTest::addColumn<int>("sameAsPort");
+    QTest::addColumn<int>("sameAsCode");
+    // The robot stations' errors mean what the UCR group's do, code for code.
+    for (const QString &robot : kRobot) {
+        for (int code = 1; code <= 4; ++code)
+            QTest::addRow("%s station %d", qPrintable(robot), code)
+                << robot << 0 << code << QStringLiteral("DME") << 0 << code;
+        for (int code = 1; code <= 8; ++code)
+            QTest::addRow("%s port %d", qPrintable(robot), code)
+                << robot << 1 << code << QStringLiteral("DME") << 1 << code;
+    }
+    // A code the robot station's guide does not list gets the advice for unlisted codes, not
+    // what the UCR group's table says for it; a station's and a port's unlisted codes share one.
+    QTest::newRow("DDR station 5 is unlisted") << "DDR" << 0 << 5 << "DME" << 0 << 42;
+    QTest::newRow("HDR port 9 is unlisted") << "HDR" << 1 << 9 << "DME" << 1 << 42;
+    QTest::newRow("a port's unlisted code") << "DME" << 1 << 42 << "DME" << 0 << 42;
+}
+
+void TestCatalog::errorTablesThatMeanTheSameShareOneAdvice() {
+    QFETCH(QString, family);
+    QFETCH(int, port);
+    QFETCH(int, code);
+    QFETCH(QString, sameAsFamily);
+    QFETCH(int, sameAsPort);
+    QFETCH(int, sameAsCode);
+    const Catalog &cat = Catalog::builtin();
+    const auto advice = adviceFor(cat, family, port, code);
+    const auto same = adviceFor(cat, sameAsFamily, sameAsPort, sameAsCode);
+    QVERIFY(advice && same);
+    QVERIFY(!advice->isEmpty());
+    QCOMPARE(*advice, *same);
+    if (sameAsCode != code) // an unlisted code: the referenced table's text for it is not used
+        QVERIFY(advice != adviceFor(cat, sameAsFamily, sameAsPort, code));
+}
+
+void TestCatalog::everyAdviceTextIsWrittenOnceInTheCatalog() {
+    const QJsonObject advice =
+        QJsonDocument::fromJson(tipscope::testing::builtinCatalogFile("families.json"))
+            .object()
+            .value(QLatin1String("tables"))
+            .toObject()
+            .value(QLatin1String("advice"))
+            .toObject();
+    QVERIFY(advice.size() >= 5);
+    QMap<QString, QString> written; // text -> where
+    for (auto table = advice.begin(); table != advice.end(); ++table) {
+        const QJsonObject codes = table.value().toObject();
+        for (auto it = codes.begin(); it != codes.end(); ++it) {
+            if (it.key() == QLatin1String("adviceFrom"))
+                continue;
+            const QString where = table.key() + QLatin1Char(' ') + it.key();
+            QVERIFY2(!written.contains(it.value().toString()),
+                     qPrintable(where + QStringLiteral(" repeats ") +
+                                written.value(it.value().toString())));
+            written.insert(it.value().toString(), where);
+        }
+    }
+}
+
+void TestCatalog::adviceTakenFromAnotherTableFollowsTheChainAndKeepsItsOwnTexts() {
+    QString error;
+    const auto cat = catalogWithAdvice(
+        R"({"errors":{"adviceFrom":"middle","2":"own two"},)"
+        R"("middle":{"adviceFrom":"base","1":"middle one"},)"
+        R"("base":{"1":"base one","2":"base two","3":"base three","other":"unlisted"}})",
+        &error);
+    QVERIFY2(cat, qPrintable(error));
+    QCOMPARE(adviceFor(*cat, "X", 0, 1).value_or("none"), QStringLiteral("middle one"));
+    QCOMPARE(adviceFor(*cat, "X", 0, 2).value_or("none"), QStringLiteral("own two"));
+    QCOMPARE(adviceFor(*cat, "X", 0, 3).value_or("none"), QStringLiteral("base three"));
+    QCOMPARE(adviceFor(*cat, "X", 0, 7).value_or("none"), QStringLiteral("unlisted"));
+    QCOMPARE(adviceFor(*cat, "X", 0, 0).value_or("none"), QString()); // no error
+}
+
+void TestCatalog::adviceFromNoTableOrFromItselfIsRefusedWithAReason_data() {
+    QTest::addColumn<QByteArray>("advice");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("no such table")
+        << QByteArray(R"({"errors":{"adviceFrom":"missing","1":"x"}})")
+        << "advice for errors takes its texts from 'missing', which is no advice table";
+    QTest::newRow("a name that is no text")
+        << QByteArray(R"({"errors":{"adviceFrom":3}})")
+        << "advice for errors takes its texts from '', which is no advice table";
+    QTest::newRow("the end of a chain")
+        << QByteArray(R"({"errors":{"adviceFrom":"a"},"a":{"adviceFrom":"b"}})")
+        << "advice for a takes its texts from 'b', which is no advice table";
+    QTest::newRow("itself") << QByteArray(R"({"errors":{"adviceFrom":"errors"}})")
+                            << "advice for errors takes its texts from itself: errors -> errors";
+    QTest::newRow("a cycle") << QByteArray(R"({"errors":{"adviceFrom":"a"},"a":{"adviceFrom":"b"},)"
+                                           R"("b":{"adviceFrom":"a"}})")
+                             << "advice for a takes its texts from itself: a -> b -> a";
+}
+
+void TestCatalog::adviceFromNoTableOrFromItselfIsRefusedWithAReason() {
+    QFETCH(QByteArray, advice);
+    QFETCH(QString, reason);
+    QString error;
+    QVERIFY(!catalogWithAdvice(advice, &error));
+    QCOMPARE(error, reason);
 }
 
 void TestCatalog::validationSaysWhatIsAllowed() {

@@ -2,7 +2,7 @@
 // next start). The theme follows the desktop's; nothing to choose.
 #pragma once
 
-#include "appsettings.h"
+#include "model/appsettings.h"
 
 #include <QDialog>
 
@@ -14,11 +14,11 @@ namespace tipscope::gui {
 class PreferencesDialog : public QDialog {
     Q_OBJECT
 public:
-    PreferencesDialog(const AppSettings &settings, QWidget *parent = nullptr);
-    [[nodiscard]] AppSettings result() const;
+    PreferencesDialog(const model::AppSettings &settings, QWidget *parent = nullptr);
+    [[nodiscard]] model::AppSettings result() const;
 
 private:
-    AppSettings m_base;
+    model::AppSettings m_base;
     QComboBox *m_unit;
     QSpinBox *m_live;
     QSpinBox *m_status;

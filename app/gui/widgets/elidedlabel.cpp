@@ -1,6 +1,7 @@
 #include "elidedlabel.h"
 
 #include <QResizeEvent>
+#include <QtMath>
 
 namespace tipscope::gui {
 
@@ -18,18 +19,21 @@ void ElidedLabel::setFullText(const QString &text) {
 }
 
 QSize ElidedLabel::minimumSizeHint() const {
-    // Room for "…" and a few letters: enough to see that there is more to read.
+    // Room for "…" and two characters of the label's font: enough to see that there is more to
+    // read, in whatever font and size the label is shown.
     const QFontMetrics fm = fontMetrics();
-    const int width =
-        qMin(fm.horizontalAdvance(m_full), fm.horizontalAdvance(QStringLiteral("Wwww…")));
-    return {width + 2 * margin(), QLabel::minimumSizeHint().height()};
+    const int least = fm.horizontalAdvance(QChar(0x2026)) + 2 * fm.averageCharWidth();
+    return {qMin(textWidth(), least) + 2 * margin(), QLabel::minimumSizeHint().height()};
 }
 
 QSize ElidedLabel::sizeHint() const {
-    // A pixel more than the advance: glyph overhang and rounding would otherwise elide a text that
-    // just fits.
-    return {fontMetrics().horizontalAdvance(m_full) + 2 * margin() + 2,
-            QLabel::sizeHint().height()};
+    return {textWidth() + 2 * margin(), QLabel::sizeHint().height()};
+}
+
+int ElidedLabel::textWidth() const {
+    // The exact advance rounded up: QFontMetrics rounds to the nearest pixel, and a text given a
+    // width below its exact advance would be elided although it was asked to fit.
+    return qCeil(QFontMetricsF(font()).horizontalAdvance(m_full));
 }
 
 void ElidedLabel::resizeEvent(QResizeEvent *event) {

@@ -25,6 +25,7 @@ protected:
 
 private:
     void elide();
+    [[nodiscard]] int textWidth() const; // of the full text, in whole pixels that hold it all
 
     QString m_full;
 };

@@ -3,14 +3,14 @@
 // reaching the line: the last connection, line settings, units, poll rates, timeouts, language.
 #pragma once
 
-#include "model/session.h"
+#include "session.h"
 
 #include <QByteArray>
 #include <QString>
 
 class QSettings;
 
-namespace tipscope::gui {
+namespace tipscope::model {
 
 struct AppSettings {
     enum class Kind { Serial, Tcp, Demo };
@@ -20,10 +20,10 @@ struct AppSettings {
     int baud = 19200;
     QString parity = QStringLiteral("none");
     int stopBits = 1;
-    model::Session::Addressing addressing = model::Session::Addressing::Auto;
+    Session::Addressing addressing = Session::Addressing::Auto;
     int robotAddress = 0;
     int targetAddress = 1;
-    model::TemperatureUnit unit = model::TemperatureUnit::Celsius;
+    TemperatureUnit unit = TemperatureUnit::Celsius;
     int liveMs = 250;
     int statusMs = 2000;
     int counterMs = 60000;
@@ -34,7 +34,7 @@ struct AppSettings {
     [[nodiscard]] static AppSettings load(QSettings &s);
     void save(QSettings &s) const;
     // The session settings these describe; `error` says why when they cannot be used.
-    [[nodiscard]] std::optional<model::Session::Settings> sessionSettings(QString *error) const;
+    [[nodiscard]] std::optional<Session::Settings> sessionSettings(QString *error) const;
 };
 
-} // namespace tipscope::gui
+} // namespace tipscope::model

@@ -1,12 +1,11 @@
 // Settings from an older version or edited by hand fall back to defaults; they never reach the
 // line.
-#include "appsettings.h"
+#include "model/appsettings.h"
 
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest>
 
-using namespace tipscope::gui;
 using namespace tipscope::model;
 
 class TestAppSettings : public QObject {

@@ -5,9 +5,7 @@
 #include <QCoreApplication>
 #include <QSettings>
 
-namespace tipscope::gui {
-
-using namespace tipscope::model;
+namespace tipscope::model {
 
 namespace {
 struct Tr {
@@ -123,4 +121,4 @@ std::optional<Session::Settings> AppSettings::sessionSettings(QString *error) co
     return s;
 }
 
-} // namespace tipscope::gui
+} // namespace tipscope::model
