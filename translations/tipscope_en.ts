@@ -4,7 +4,7 @@
 <context>
     <name>CliCommands</name>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="50" />
+        <location filename="../app/cli/clicommands.cpp" line="50"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n raw byte, not a frame (%1)</numerusform>
@@ -15,7 +15,7 @@
 <context>
     <name>CliRecord</name>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="193" />
+        <location filename="../app/cli/clirecord.cpp" line="193"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>recorded %n row to %1</numerusform>
@@ -24,9 +24,9 @@
     </message>
 </context>
 <context>
-    <name>EventHistoryModel</name>
+    <name>EventText</name>
     <message numerus="yes">
-        <location filename="../lib/model/eventhistorymodel.cpp" line="72" />
+        <location filename="../lib/model/eventtext.cpp" line="16"/>
         <source>%1 (%n times, until %2)</source>
         <translation>
             <numerusform>%1 (%n time, until %2)</numerusform>
@@ -37,7 +37,7 @@
 <context>
     <name>FrameComposer</name>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="209" />
+        <location filename="../lib/model/framecomposer.cpp" line="209"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, a valid frame: %1</numerusform>
@@ -45,7 +45,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="211" />
+        <location filename="../lib/model/framecomposer.cpp" line="211"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
@@ -56,7 +56,7 @@
 <context>
     <name>FrameDecoder</name>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="147" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="155"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n byte outside any frame</numerusform>
@@ -67,7 +67,7 @@
 <context>
     <name>MeasurementReport</name>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="50" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n more heat-up</numerusform>
@@ -75,7 +75,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="66" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n more recovery</numerusform>
@@ -86,7 +86,7 @@
 <context>
     <name>ProfileApplier</name>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="55" />
+        <location filename="../lib/model/profileapplier.cpp" line="55"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -94,7 +94,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="49" />
+        <location filename="../lib/model/profileapplier.cpp" line="49"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n skipped</numerusform>
@@ -105,7 +105,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="213" />
+        <location filename="../lib/model/session.cpp" line="188"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -114,20 +114,9 @@
     </message>
 </context>
 <context>
-    <name>SupportReport</name>
-    <message numerus="yes">
-        <location filename="../lib/model/supportreport.cpp" line="182" />
-        <source>%1 (%n times, until %2)</source>
-        <translation>
-            <numerusform>%1 (%n time, until %2)</numerusform>
-            <numerusform>%1 (%n times, until %2)</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="413" />
+        <location filename="../app/gui/charts/chartwidget.cpp" line="413"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… and %n more</numerusform>
@@ -138,7 +127,7 @@
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="133" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="133"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Replay: %1 (%Ln row)</numerusform>
@@ -149,7 +138,7 @@
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="380" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>paused: %n held</numerusform>
@@ -160,7 +149,7 @@
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>
@@ -171,7 +160,7 @@
 <context>
     <name>tipscope::gui::ProfileDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="185" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="185"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Profile from %1 (%2, software %3), created %4: %n setting differs from the device.</numerusform>
@@ -179,7 +168,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="176" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="176"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Dry run: %n frame would be sent; nothing was written.</numerusform>
@@ -187,7 +176,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="165" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="165"/>
         <source>%n setting(s) of the profile skipped: this device does not take them.</source>
         <translation>
             <numerusform>%n setting of the profile skipped: this device does not take it.</numerusform>
@@ -198,7 +187,7 @@
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="343" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="345"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profile saved: %n setting of %1 in %2</numerusform>
@@ -209,7 +198,7 @@
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="304" />
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
@@ -217,7 +206,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="307" />
+        <location filename="../lib/link/requestqueue.cpp" line="313"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>%n byte of garbage came instead</numerusform>
@@ -228,7 +217,7 @@
 <context>
     <name>tipscope::model::ConsoleSender</name>
     <message numerus="yes">
-        <location filename="../lib/model/consolesender.cpp" line="69" />
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n raw byte</numerusform>
@@ -236,12 +225,4 @@
         </translation>
     </message>
 </context>
-<context><name>EventText</name><message numerus="yes">
-        <location filename="../lib/model/eventtext.cpp" line="16" />
-        <source>%1 (%n times, until %2)</source>
-        <translation>
-            <numerusform>%1 (%n time, until %2)</numerusform>
-            <numerusform>%1 (%n times, until %2)</numerusform>
-        </translation>
-    </message>
-</context></TS>
+</TS>

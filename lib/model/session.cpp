@@ -142,36 +142,11 @@ void Session::detect() {
 }
 
 void Session::identify(std::optional<int> address) {
-    // Discovery in one mode, limited to the named device.
+    // The one device the settings name, at any address: Discovery asks it as the CLI does.
     m_discovery = std::make_unique<Discovery>(m_line->queue());
-    m_discovery->setMode(address ? Discovery::Mode::Addressed : Discovery::Mode::Unaddressed);
-    connect(m_discovery.get(), &Discovery::finished, this, [this, address] {
-        QList<DeviceInfo> found;
-        for (const DeviceInfo &d : m_discovery->devices())
-            if (d.address == address)
-                found.append(d);
-        // Not a factory address: ask it directly (a catalog without a model name cannot).
-        const protocol::CommandSpec *modelName = m_catalog.command(protocol::Role::ModelName);
-        if (found.isEmpty() && address && modelName) {
-            Reply *r = m_line->queue().enqueue(
-                Request::read(address, modelName->pattern.toLatin1()), this);
-            connect(r, &Reply::finished, this, [this, r, address] {
-                r->deleteLater();
-                QList<DeviceInfo> one;
-                if (r->ok()) {
-                    DeviceInfo d;
-                    d.address = address;
-                    d.model = QString::fromLatin1(r->answer().data).trimmed();
-                    d.family = m_catalog.familyForModel(d.model);
-                    one.append(d);
-                }
-                adoptDevices(one);
-            });
-            return;
-        }
-        adoptDevices(found);
-    });
-    m_discovery->start();
+    connect(m_discovery.get(), &Discovery::finished, this,
+            [this] { adoptDevices(m_discovery->devices()); });
+    m_discovery->identify(address);
 }
 
 void Session::adoptDevices(const QList<DeviceInfo> &found) {

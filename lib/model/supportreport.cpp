@@ -1,6 +1,7 @@
 #include "supportreport.h"
 
 #include "eventtext.h"
+#include "model/io/atomicsave.h"
 #include "session.h"
 #include "settingname.h"
 #include "timetext.h"
@@ -12,7 +13,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QMetaEnum>
-#include <QSaveFile>
 #include <QSysInfo>
 
 namespace tipscope::model {
@@ -199,9 +199,8 @@ QStringList writeSupportReport(Session &session, const QString &folder, QString 
         {stem + QStringLiteral(".txt"), supportReportText(report).toUtf8()}};
     QStringList written;
     for (const auto &[path, bytes] : files) {
-        QSaveFile f(path);
-        if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
-            *error = Tr::tr("cannot write %1: %2").arg(path, f.errorString());
+        if (const auto saved = io::saveAtomically(path, bytes); !saved.ok()) {
+            *error = saved.error();
             return {};
         }
         written.append(path);
