@@ -44,6 +44,9 @@ public:
         bool scanAllAddresses = false;
         // On the demo line: its station's ports solder and rest, its feeder feeds.
         bool demoActivity = false;
+        // The demo line answers as a real station on a 19200-baud wire through a USB adapter
+        // would; off, it answers at once (tests that do not measure the wire).
+        bool demoPaced = true;
     };
 
     explicit Session(QObject *parent = nullptr);

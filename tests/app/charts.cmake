@@ -3,4 +3,4 @@
 tipscope_add_test(tst_chartwidget SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_chartwidget.cpp
                   LIBS tipscope_gui)
 tipscope_add_test(tst_chartspage SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_chartspage.cpp
-                  LIBS tipscope_gui TIMEOUT 300)
+                  LIBS tipscope_gui tipscope_demosupport TIMEOUT 300)

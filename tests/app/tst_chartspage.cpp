@@ -9,6 +9,7 @@
 #include "model/recording/chartcsvreader.h"
 #include "support/fifowriter.h"
 
+#include "demosession.h"
 #include "sim/simline.h"
 #include "sim/simstation.h"
 
@@ -94,8 +95,7 @@ void TestChartsPage::cleanup() {
 }
 
 void TestChartsPage::connectDemo() {
-    Session::Settings settings;
-    settings.line.kind = link::LineSettings::Kind::Demo;
+    Session::Settings settings = tipscope::testing::unpacedDemoSettings();
     m_session->connectTo(settings);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);
     m_session->scheduler().setVisiblePorts(m_session->station(), m_page->visiblePorts());
@@ -392,8 +392,7 @@ void TestChartsPage::theFeedersSeriesStartAtTheirFirstReadings() {
 
 void TestChartsPage::theDemoAtWorkShowsAJointsRecoveryAndTheFeederFeeding() {
     m_session->disconnectFromLine();
-    Session::Settings settings;
-    settings.line.kind = link::LineSettings::Kind::Demo;
+    Session::Settings settings = tipscope::testing::unpacedDemoSettings();
     settings.demoActivity = true;
     m_session->connectTo(settings);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);

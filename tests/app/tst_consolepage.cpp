@@ -4,6 +4,7 @@
 #include "pages/consolepage.h"
 #include "pages/framebuilder.h"
 
+#include "demosession.h"
 #include "link/line.h"
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
@@ -86,8 +87,7 @@ void TestConsolePage::cleanup() {
 }
 
 void TestConsolePage::connectDemo() {
-    Session::Settings settings;
-    settings.line.kind = link::LineSettings::Kind::Demo;
+    Session::Settings settings = tipscope::testing::unpacedDemoSettings();
     m_session->connectTo(settings);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);
     QCOMPARE(m_session->devices().size(), 2);

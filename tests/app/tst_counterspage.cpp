@@ -2,6 +2,7 @@
 // plugged hours) and the SFR at 10 (partial plugged hours start at 12).
 #include "pages/counterspage.h"
 
+#include "demosession.h"
 #include "protocol/frame.h"
 #include "sim/simline.h"
 
@@ -140,8 +141,7 @@ void TestCountersPage::cleanup() {
 }
 
 void TestCountersPage::connectDemo() {
-    Session::Settings settings;
-    settings.line.kind = link::LineSettings::Kind::Demo;
+    Session::Settings settings = tipscope::testing::unpacedDemoSettings();
     m_session->connectTo(settings);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected &&
                                  m_session->station() && m_session->feeder(),

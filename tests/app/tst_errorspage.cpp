@@ -2,6 +2,7 @@
 // and alarms injected into the simulator.
 #include "pages/errorspage.h"
 
+#include "demosession.h"
 #include "sim/simline.h"
 
 #include <QApplication>
@@ -113,8 +114,7 @@ void TestErrorsPage::cleanup() {
 }
 
 void TestErrorsPage::connectDemo() {
-    Session::Settings settings;
-    settings.line.kind = link::LineSettings::Kind::Demo;
+    Session::Settings settings = tipscope::testing::unpacedDemoSettings();
     m_session->connectTo(settings);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected &&
                                  m_session->station() && m_session->feeder(),

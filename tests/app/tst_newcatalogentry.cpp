@@ -7,6 +7,7 @@
 #include "pages/settingspage.h"
 #include "widgets/parametereditor.h"
 
+#include "demosession.h"
 #include "support/testcatalog.h"
 
 #include <QGroupBox>
@@ -60,8 +61,7 @@ void TestNewCatalogEntry::initTestCase() {
     m_catalog = testing::catalogWith(testing::newCommandEntries(), &error);
     QVERIFY2(m_catalog, qPrintable(error));
     m_session = std::make_unique<Session>(*m_catalog);
-    Session::Settings settings;
-    settings.line.kind = link::LineSettings::Kind::Demo;
+    Session::Settings settings = tipscope::testing::unpacedDemoSettings();
     m_session->connectTo(settings);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected &&
                                  m_session->station() && m_session->feeder(),

@@ -10,6 +10,7 @@
 #include "link/simtransport.h"
 #include "sim/simline.h"
 
+#include "demosession.h"
 #include "support/typing.h"
 
 #include <QDoubleSpinBox>
@@ -61,8 +62,7 @@ void TestOverviewPage::cleanup() {
 }
 
 void TestOverviewPage::connectDemo() {
-    Session::Settings settings;
-    settings.line.kind = link::LineSettings::Kind::Demo;
+    Session::Settings settings = tipscope::testing::unpacedDemoSettings();
     m_session->connectTo(settings);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);
     m_session->scheduler().setVisiblePorts(m_session->station(), m_page->visiblePorts());

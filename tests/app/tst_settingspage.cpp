@@ -7,6 +7,7 @@
 #include "link/simtransport.h"
 #include "model/profile.h"
 
+#include "demosession.h"
 #include "support/typing.h"
 
 #include <QComboBox>
@@ -62,8 +63,7 @@ void TestSettingsPage::cleanup() {
 }
 
 void TestSettingsPage::connectDemo() {
-    Session::Settings settings;
-    settings.line.kind = link::LineSettings::Kind::Demo;
+    Session::Settings settings = tipscope::testing::unpacedDemoSettings();
     m_session->connectTo(settings);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);
     m_page->setSelection(m_session->station(), 1);
