@@ -3236,40 +3236,40 @@ Dauerhaft mit dieser udev-Regel:
     <name>Session</name>
     <message>
         <location filename="../lib/model/session.cpp" line="26"/>
-        <location filename="../lib/model/session.cpp" line="92"/>
-        <location filename="../lib/model/session.cpp" line="95"/>
+        <location filename="../lib/model/session.cpp" line="94"/>
+        <location filename="../lib/model/session.cpp" line="97"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="91"/>
-        <location filename="../lib/model/session.cpp" line="104"/>
-        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="93"/>
+        <location filename="../lib/model/session.cpp" line="106"/>
+        <location filename="../lib/model/session.cpp" line="114"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="130"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="173"/>
+        <location filename="../lib/model/session.cpp" line="175"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="174"/>
+        <location filename="../lib/model/session.cpp" line="176"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="180"/>
+        <location filename="../lib/model/session.cpp" line="182"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="188"/>
+        <location filename="../lib/model/session.cpp" line="190"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -3369,29 +3369,6 @@ Dauerhaft mit dieser udev-Regel:
         <location filename="../lib/model/supportreport.cpp" line="167"/>
         <source>  What to check:</source>
         <translation>  Was zu prüfen ist:</translation>
-    </message>
-</context>
-<context>
-    <name>TelemetryGap</name>
-    <message>
-        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="39"/>
-        <source>line lost</source>
-        <translation>Leitung verloren</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="41"/>
-        <source>no answer</source>
-        <translation>keine Antwort</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="43"/>
-        <source>disconnected</source>
-        <translation>getrennt</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="45"/>
-        <source>no data in the recording</source>
-        <translation>keine Daten in der Aufzeichnung</translation>
     </message>
 </context>
 <context>

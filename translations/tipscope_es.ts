@@ -3238,40 +3238,40 @@ Hágalo permanente con esta regla de udev:
     <name>Session</name>
     <message>
         <location filename="../lib/model/session.cpp" line="26"/>
-        <location filename="../lib/model/session.cpp" line="92"/>
-        <location filename="../lib/model/session.cpp" line="95"/>
+        <location filename="../lib/model/session.cpp" line="94"/>
+        <location filename="../lib/model/session.cpp" line="97"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="91"/>
-        <location filename="../lib/model/session.cpp" line="104"/>
-        <location filename="../lib/model/session.cpp" line="112"/>
+        <location filename="../lib/model/session.cpp" line="93"/>
+        <location filename="../lib/model/session.cpp" line="106"/>
+        <location filename="../lib/model/session.cpp" line="114"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="130"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="173"/>
+        <location filename="../lib/model/session.cpp" line="175"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="174"/>
+        <location filename="../lib/model/session.cpp" line="176"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="180"/>
+        <location filename="../lib/model/session.cpp" line="182"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="188"/>
+        <location filename="../lib/model/session.cpp" line="190"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -3371,29 +3371,6 @@ Hágalo permanente con esta regla de udev:
         <location filename="../lib/model/supportreport.cpp" line="167"/>
         <source>  What to check:</source>
         <translation>  Qué comprobar:</translation>
-    </message>
-</context>
-<context>
-    <name>TelemetryGap</name>
-    <message>
-        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="39"/>
-        <source>line lost</source>
-        <translation>línea perdida</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="41"/>
-        <source>no answer</source>
-        <translation>sin respuesta</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="43"/>
-        <source>disconnected</source>
-        <translation>desconectado</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/telemetry/telemetrygaps.cpp" line="45"/>
-        <source>no data in the recording</source>
-        <translation>sin datos en la grabación</translation>
     </message>
 </context>
 <context>

@@ -1,22 +1,17 @@
 #include "model/telemetry/telemetrygaps.h"
 
-#include <QCoreApplication>
 #include <algorithm>
 
 namespace tipscope::model {
 
 namespace {
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(TelemetryGap)
-};
 struct CauseToken {
     TelemetryGap::Cause cause;
     const char *token;
 };
 constexpr CauseToken kTokens[] = {{TelemetryGap::Cause::LineDown, "line-down"},
                                   {TelemetryGap::Cause::NoAnswer, "no-answer"},
-                                  {TelemetryGap::Cause::Disconnected, "disconnected"},
-                                  {TelemetryGap::Cause::Recorded, "recorded"}};
+                                  {TelemetryGap::Cause::Disconnected, "disconnected"}};
 } // namespace
 
 QString TelemetryGap::causeToken(Cause cause) {
@@ -31,20 +26,6 @@ std::optional<TelemetryGap::Cause> TelemetryGap::causeFromToken(const QString &t
         if (token == QLatin1String(t.token))
             return t.cause;
     return std::nullopt;
-}
-
-QString TelemetryGap::causeText(Cause cause) {
-    switch (cause) {
-    case Cause::LineDown:
-        return Tr::tr("line lost");
-    case Cause::NoAnswer:
-        return Tr::tr("no answer");
-    case Cause::Disconnected:
-        return Tr::tr("disconnected");
-    case Cause::Recorded:
-        return Tr::tr("no data in the recording");
-    }
-    return {};
 }
 
 void TelemetryGaps::open(qint64 timeMs, qint64 lastSampleMs, TelemetryGap::Cause cause) {

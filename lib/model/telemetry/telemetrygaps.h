@@ -19,7 +19,7 @@
 namespace tipscope::model {
 
 struct TelemetryGap {
-    enum class Cause { LineDown, NoAnswer, Disconnected, Recorded };
+    enum class Cause { LineDown, NoAnswer, Disconnected };
 
     qint64 startMs = 0;
     std::optional<qint64> endMs; // the first sample after it; nullopt while it is still open
@@ -28,11 +28,9 @@ struct TelemetryGap {
     [[nodiscard]] bool contains(qint64 timeMs) const {
         return timeMs >= startMs && (!endMs || timeMs < *endMs);
     }
-    // Stable English token for files ("line-down", "no-answer", "disconnected", "recorded").
+    // Stable English token for files ("line-down", "no-answer", "disconnected").
     [[nodiscard]] static QString causeToken(Cause cause);
     [[nodiscard]] static std::optional<Cause> causeFromToken(const QString &token);
-    // For people, in the user's language: "line lost", "no answer".
-    [[nodiscard]] static QString causeText(Cause cause);
 };
 
 class TelemetryGaps {
