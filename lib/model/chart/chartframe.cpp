@@ -145,17 +145,23 @@ QList<ReadoutValue> readoutAt(const Telemetry &telemetry, const QList<ChartChann
     return out;
 }
 
-QString readoutText(const QList<ChartTrace> &traces, const QList<ReadoutValue> &values,
-                    qint64 timeMs) {
+QString readoutValuesText(const QList<ChartTrace> &traces, const QList<ReadoutValue> &values) {
     QStringList parts;
     for (const ReadoutValue &v : values) {
         const ChartTrace &t = traces.at(v.trace);
         parts.append(t.name + QLatin1Char(' ') +
                      (v.valid ? t.format.format(v.display) : QStringLiteral("—")));
     }
-    const QString time =
-        QDateTime::fromMSecsSinceEpoch(timeMs).toString(QStringLiteral("HH:mm:ss.zzz"));
-    return time + QStringLiteral("   ") + parts.join(QStringLiteral(" · "));
+    return parts.join(QStringLiteral(" · "));
+}
+
+QString readoutTimeText(qint64 timeMs) {
+    return QDateTime::fromMSecsSinceEpoch(timeMs).toString(QStringLiteral("HH:mm:ss.zzz"));
+}
+
+QString readoutText(const QList<ChartTrace> &traces, const QList<ReadoutValue> &values,
+                    qint64 timeMs) {
+    return readoutTimeText(timeMs) + QStringLiteral("   ") + readoutValuesText(traces, values);
 }
 
 ValueSpan niceRange(const ValueSpan &span, double minimumWidth) {

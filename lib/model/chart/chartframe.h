@@ -60,6 +60,11 @@ struct ReadoutValue {
 // "12:03:04.250  P1 tip 351 °C · P1 setpoint 350 °C · P1 power 12.5 %".
 [[nodiscard]] QString readoutText(const QList<ChartTrace> &traces,
                                   const QList<ReadoutValue> &values, qint64 timeMs);
+// The same without the time: "P1 tip 351 °C · P1 setpoint 350 °C · …", "—" where a series has
+// no sample.
+[[nodiscard]] QString readoutValuesText(const QList<ChartTrace> &traces,
+                                        const QList<ReadoutValue> &values);
+[[nodiscard]] QString readoutTimeText(qint64 timeMs);
 
 // A round axis range around `span` (steps of 1, 2, 5 × 10^n) with a little headroom, so a
 // follow-mode axis does not twitch with every new sample.

@@ -13,23 +13,41 @@ void ChartViewport::setDataRange(qint64 first, qint64 last) {
     m_dataEnd = qMax(first, last);
     m_hasData = true;
     if (m_following)
-        place(m_dataEnd + 1, m_window, true); // +1: the window is half-open
+        follow(m_followWindow);
     else if (!same)
         place(m_end, m_window, false); // data left the ring: keep the window over what remains
 }
 
 void ChartViewport::setWindowLength(qint64 ms) {
     m_chosenWindow = qBound(kMinWindowMs, ms, kMaxWindowMs);
+    m_followWindow = m_chosenWindow;
     // A new length keeps the right edge where it is, so a paused view keeps its end in sight.
-    place(m_end, m_chosenWindow, m_following);
+    if (m_following)
+        follow(m_chosenWindow);
+    else
+        place(m_end, m_chosenWindow, false);
 }
 
 void ChartViewport::setFollowing(bool on) {
-    place(on ? m_dataEnd + 1 : m_end, m_window, on);
+    if (on)
+        follow(m_window);
+    else
+        place(m_end, m_window, false);
 }
 
 void ChartViewport::reset() {
-    place(m_dataEnd + 1, m_chosenWindow, true);
+    follow(m_chosenWindow);
+}
+
+void ChartViewport::follow(qint64 window) {
+    m_followWindow = window;
+    if (!m_hasData) {
+        place(m_end, window, true);
+        return;
+    }
+    const qint64 end = m_dataEnd + 1; // +1: the window is half-open
+    const qint64 shown = qBound(kMinWindowMs, end - m_dataStart, window);
+    place(qMax(end, m_dataStart + shown), shown, true);
 }
 
 void ChartViewport::zoom(double factor, qint64 anchorMs) {

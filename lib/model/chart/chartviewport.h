@@ -2,6 +2,9 @@
 //
 // The window is [start(), end()), its length between kMinWindowMs (30 s) and kMaxWindowMs
 // (24 h). Following, the window ends just after the newest sample and moves with the data;
+// while there is less data than the chosen length, the window spans the data (at least 30 s,
+// starting at the first sample), so the first minutes fill the view as on a scope instead of
+// a sliver at the right of an empty window;
 // zooming, panning or choosing a range by hand stops following (the person is looking at
 // something), and setFollowing(true) or reset() resumes it. Zoom keeps the instant under the
 // cursor where it is. Panning stops at the data: the window keeps some overlap with
@@ -27,6 +30,9 @@ public:
     [[nodiscard]] qint64 start() const { return m_end - m_window; }
     [[nodiscard]] qint64 end() const { return m_end; }
     [[nodiscard]] qint64 windowMs() const { return m_window; }
+    // The length the window is meant to have: while following data shorter than it, the window
+    // grows towards it; otherwise windowMs(). The toolbar shows this one.
+    [[nodiscard]] qint64 targetWindowMs() const { return m_following ? m_followWindow : m_window; }
     [[nodiscard]] bool isFollowing() const { return m_following; }
     [[nodiscard]] qint64 dataStart() const { return m_dataStart; }
     [[nodiscard]] qint64 dataEnd() const { return m_dataEnd; }
@@ -51,9 +57,12 @@ Q_SIGNALS:
 private:
     void place(qint64 end, qint64 window, bool following);
     [[nodiscard]] qint64 clampEnd(qint64 end, qint64 window) const;
+    // Following: the data's end, and a window no longer than the data (see the class comment).
+    void follow(qint64 window);
 
     qint64 m_window = kDefaultWindowMs;
     qint64 m_chosenWindow = kDefaultWindowMs;
+    qint64 m_followWindow = kDefaultWindowMs;
     qint64 m_end = 0;
     qint64 m_dataStart = 0;
     qint64 m_dataEnd = 0;

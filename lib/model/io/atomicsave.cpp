@@ -14,8 +14,14 @@ struct Tr {
 } // namespace
 
 protocol::Outcome<void> saveAtomically(const QString &path, const QByteArray &bytes) {
+    return saveAtomically(path,
+                          [&bytes](QIODevice &file) { return file.write(bytes) == bytes.size(); });
+}
+
+protocol::Outcome<void> saveAtomically(const QString &path,
+                                       const std::function<bool(QIODevice &)> &write) {
     QSaveFile f(path);
-    if (f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size() && f.commit())
+    if (f.open(QIODevice::WriteOnly) && write(f) && f.commit())
         return {};
     return protocol::failure(
         Tr::tr("cannot write %1: %2").arg(protocol::elidedPath(path), f.errorString()));

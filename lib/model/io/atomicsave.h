@@ -10,10 +10,16 @@
 #include "protocol/outcome.h"
 
 #include <QByteArray>
+#include <QIODevice>
 #include <QString>
+#include <functional>
 
 namespace tipscope::model::io {
 
 [[nodiscard]] protocol::Outcome<void> saveAtomically(const QString &path, const QByteArray &bytes);
+// The same for a file too big to build in memory first (a day of a chart as CSV): `write` fills
+// the device and returns false when writing failed.
+[[nodiscard]] protocol::Outcome<void> saveAtomically(const QString &path,
+                                                     const std::function<bool(QIODevice &)> &write);
 
 } // namespace tipscope::model::io

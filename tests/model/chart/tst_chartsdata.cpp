@@ -43,6 +43,7 @@ private Q_SLOTS:
     void aCurveIsNeverDrawnAcrossAGapAndTheReadoutThereIsBlank();
     void hardwareTemperaturesAreTracedOnlyWhenAskedAndTheTransformerOnce();
     void followingWindowMovesWithTheData();
+    void theFirstMinutesFillTheViewUntilTheWindowIsFull();
     void zoomKeepsTheInstantUnderTheCursorAndStopsFollowing();
     void windowLengthStaysBetween30SecondsAnd24Hours();
     void panStopsAtTheData();
@@ -226,6 +227,29 @@ void TestChartsData::followingWindowMovesWithTheData() {
     v.setFollowing(false);
     v.setDataRange(kT0, kT0 + 800'000);
     QCOMPARE(v.end(), kT0 + 700'001); // paused: the window stays
+}
+
+void TestChartsData::theFirstMinutesFillTheViewUntilTheWindowIsFull() {
+    ChartViewport v;
+    // Ten seconds of data: the shortest window, starting at the first sample (a scope's sweep).
+    v.setDataRange(kT0, kT0 + 10'000);
+    QCOMPARE(v.start(), kT0);
+    QCOMPARE(v.windowMs(), ChartViewport::kMinWindowMs);
+    // Two minutes: the window is the data, not a sliver at the right of five empty minutes.
+    v.setDataRange(kT0, kT0 + 120'000);
+    QCOMPARE(v.start(), kT0);
+    QCOMPARE(v.end(), kT0 + 120'001);
+    QCOMPARE(v.targetWindowMs(), ChartViewport::kDefaultWindowMs);
+    // Full: the chosen length, moving with the data.
+    v.setDataRange(kT0, kT0 + 400'000);
+    QCOMPARE(v.windowMs(), ChartViewport::kDefaultWindowMs);
+    QCOMPARE(v.end(), kT0 + 400'001);
+    // Paused while filling, the window keeps its span; zoomed, the target is the zoomed span.
+    v.setDataRange(kT0 + 1000, kT0 + 61'000);
+    v.zoom(0.5, v.end());
+    QVERIFY(!v.isFollowing());
+    QCOMPARE(v.targetWindowMs(), v.windowMs());
+    QCOMPARE(v.windowMs(), (60'001 + 1) / 2);
 }
 
 void TestChartsData::zoomKeepsTheInstantUnderTheCursorAndStopsFollowing() {

@@ -15,6 +15,7 @@ private Q_SLOTS:
     void aSaveReplacesTheFileWhole();
     void aFailedSaveLeavesWhatWasThereAndSaysWhy_data();
     void aFailedSaveLeavesWhatWasThereAndSaysWhy();
+    void aStreamedSaveThatFailsHalfWayLeavesTheOldFile();
 };
 
 void TestAtomicSave::aSaveReplacesTheFileWhole() {
@@ -52,6 +53,31 @@ void TestAtomicSave::aFailedSaveLeavesWhatWasThereAndSaysWhy() {
              qPrintable(saved.error()));
     QVERIFY(QFileInfo(dir.filePath(QStringLiteral("folder"))).isDir());
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList());
+}
+
+// A file written piece by piece (a day of a chart as CSV) is replaced whole or not at all too.
+void TestAtomicSave::aStreamedSaveThatFailsHalfWayLeavesTheOldFile() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("out.csv"));
+    QVERIFY(io::saveAtomically(path, QByteArray("old\n")).ok());
+    const auto failed = io::saveAtomically(path, [](QIODevice &file) {
+        file.write("first half of the new file\n");
+        return false;
+    });
+    QVERIFY(!failed.ok());
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), QByteArray("old\n"));
+    f.close();
+    const auto streamed = io::saveAtomically(path, [](QIODevice &file) {
+        return file.write("new, ") == 5 && file.write("in two pieces\n") == 14;
+    });
+    QVERIFY2(streamed.ok(), qPrintable(streamed.error()));
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), QByteArray("new, in two pieces\n"));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+             QStringList{QStringLiteral("out.csv")});
 }
 
 QTEST_GUILESS_MAIN(TestAtomicSave)
