@@ -116,7 +116,7 @@
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="413"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="479"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… and %n more</numerusform>
@@ -127,7 +127,7 @@
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="133"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="154"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Replay: %1 (%Ln row)</numerusform>

@@ -40,7 +40,7 @@
 <context>
     <name>AtomicSave</name>
     <message>
-        <location filename="../lib/model/io/atomicsave.cpp" line="21"/>
+        <location filename="../lib/model/io/atomicsave.cpp" line="27"/>
         <source>cannot write %1: %2</source>
         <translation>no se puede escribir %1: %2</translation>
     </message>
@@ -3466,7 +3466,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="413"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="479"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -3478,247 +3478,262 @@ Hágalo permanente con esta regla de udev:
     <name>tipscope::gui::ChartsPage</name>
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
-        <location filename="../app/gui/charts/chartspage.h" line="62"/>
+        <location filename="../app/gui/charts/chartspage.h" line="69"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="47"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="108"/>
         <source>Values under the cursor</source>
         <translation>Valores bajo el cursor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="52"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="127"/>
+        <source>&amp;Measurements</source>
+        <translation>&amp;Mediciones</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="131"/>
+        <source>Heat-ups, recoveries and min/max/mean of the visible window</source>
+        <translation>Calentamientos, recuperaciones y mín./máx./media de la ventana visible</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="136"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>&amp;Banda de calentamiento y recuperación ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="55"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="139"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Banda de tolerancia alrededor de la consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="66"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="152"/>
         <source>Measurements of the visible window</source>
         <translation>Mediciones de la ventana visible</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="182"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="195"/>
+        <source>Point at a chart to read every series at that instant.</source>
+        <translation>Señale un gráfico para leer todas las series en ese instante.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="197"/>
+        <source>Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
+        <translation>Rueda: zoom · arrastrar: desplazar · Mayús+arrastrar: zoom a un intervalo · doble clic: restablecer.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspage.cpp" line="175"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
         <source>%1 — feeder</source>
         <translation>%1 — alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="191"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
         <source>%1 — all ports</source>
         <translation>%1 — todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="192"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="196"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>Temperature (%1)</source>
         <translation>Temperatura (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="197"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>Power (%)</source>
         <translation>Potencia (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="197"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="316"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="302"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="45"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="50"/>
         <source>device</source>
         <translation>equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="47"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="52"/>
         <source>%1 · %2 · %3: %4</source>
         <translation>%1 · %2 · %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="113"/>
-        <source>Point at a chart to read every series at that instant. Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
-        <translation>Señale un gráfico para leer todas las series en ese instante. Rueda: zoom · arrastrar: desplazar · Mayús+arrastrar: ampliar un intervalo · doble clic: restablecer.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="59"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="63"/>
         <source>&amp;Window</source>
         <translation>&amp;Ventana</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="64"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
         <source>Time window</source>
         <translation>Ventana de tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="67"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
         <source>1 h</source>
         <translation>1 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
         <source>4 h</source>
         <translation>4 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="69"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
         <source>12 h</source>
         <translation>12 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="69"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
         <source>24 h</source>
         <translation>24 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="80"/>
         <source>&amp;Follow</source>
         <translation>Segu&amp;ir</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="79"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
         <source>Keep the newest data at the right edge; uncheck to pause</source>
         <translation>Mantener los datos más recientes en el borde derecho; desmarque para pausar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="82"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
         <source>&amp;Reset view</source>
         <translation>&amp;Restablecer vista</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="90"/>
         <source>Pane layout</source>
         <translation>Disposición de los paneles</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
         <source>Ports overlaid</source>
         <translation>Puertos superpuestos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="88"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
         <source>One pane per port</source>
         <translation>Un panel por puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="96"/>
         <source>Trans&amp;istor, transformer</source>
         <translation>Trans&amp;istor, transformador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="94"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="98"/>
         <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
         <translation>Dibujar también la temperatura del transistor de cada puerto y la del transformador de la estación (leídas cada pocos segundos)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="98"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="101"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="105"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Ventana visible como &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Ventana visible como &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="104"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="108"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Grabar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Escribir cada nueva muestra y evento en un archivo CSV hasta desmarcarlo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="108"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="112"/>
         <source>&amp;Open recording…</source>
         <translation>Abrir grabació&amp;n…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="114"/>
         <source>Back to &amp;live</source>
         <translation>Volver a &amp;tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="115"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
         <source>Data shown</source>
         <translation>Datos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="118"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="122"/>
         <source>Recording stopped</source>
         <translation>Grabación detenida</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
         <source>Writing %1 failed: %2</source>
         <translation>Falló la escritura de %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="74"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="79"/>
         <source>P%1</source>
         <translation>P%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="90"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="95"/>
         <source>High alarm</source>
         <translation>Alarma alta</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="93"/>
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="98"/>
         <source>Low alarm</source>
         <translation>Alarma baja</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="133"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="154"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Reproducción: %1 (%Ln fila)</numerusform>
@@ -3726,68 +3741,89 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="135"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="156"/>
         <source>Live</source>
         <translation>Tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="146"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="172"/>
         <source> · recording to %1</source>
         <translation> · grabando en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="56"/>
         <source>there is no chart to export</source>
         <translation>no hay ningún gráfico que exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="157"/>
-        <source>could not write %1</source>
-        <translation>no se pudo escribir %1</translation>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="47"/>
+        <source>%1 – %2 (%3)</source>
+        <translation>%1 – %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="110"/>
+        <source>the image could not be encoded</source>
+        <translation>no se pudo generar la imagen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="134"/>
+        <source>%1 × %2 (twice the charts on screen)</source>
+        <translation>%1 × %2 (el doble de los gráficos en pantalla)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
         <source>Export chart as PNG</source>
         <translation>Exportar gráfico como PNG</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
+        <source>Image size in pixels:</source>
+        <translation>Tamaño de la imagen en píxeles:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
         <source>Export chart data as CSV</source>
         <translation>Exportar datos del gráfico como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="178"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
         <source>PNG image (*.png)</source>
         <translation>Imagen PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="178"/>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="211"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="183"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="183"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
         <source>Export failed: %1</source>
         <translation>Falló la exportación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="202"/>
         <source>Record to CSV file</source>
         <translation>Grabar en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="214"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Record</source>
         <translation>Grabar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="214"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Cannot record: %1</source>
         <translation>No se puede grabar: %1</translation>
     </message>

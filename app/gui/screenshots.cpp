@@ -1,5 +1,6 @@
 #include "screenshots.h"
 
+#include "charts/chartspage.h"
 #include "devicetree.h"
 #include "dialogs/profiledialog.h"
 #include "mainwindow.h"
@@ -134,8 +135,13 @@ void Shooter::afterShot(int index) {
         return;
     }
     hardware->click();
-    later(kPerPageMs, [this, index, name, hardware] {
+    later(kPerPageMs, [this, index, name, hardware, page] {
         save(m_window, path(name + QStringLiteral("-hardware")));
+        // And what the PNG export makes of it, at its default size.
+        if (auto *charts = qobject_cast<ChartsPage *>(page))
+            if (const QString error = charts->exportPng(path(name + QStringLiteral("-export")));
+                !error.isEmpty())
+                qWarning("chart export: %s", qPrintable(error));
         hardware->click();
         shootPage(index + 1);
     });

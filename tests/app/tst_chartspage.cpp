@@ -56,7 +56,7 @@ private Q_SLOTS:
     void aReplayIsReadWithProgressAndCancelWhileTheLiveChartsGoOn();
     void aLongRecordingNameNeverWidensThePage();
     void recordingWritesTheNewSamplesToTheFile();
-    void pngExportWritesAnImageOfThePanes();
+    void pngExportRendersTheChartsAtTheChosenSize();
     void onePanePerPortOnRequest();
     void hardwareTemperaturesAreDrawnOnRequest();
     void theFeedersSeriesStartAtTheirFirstReadings();
@@ -167,7 +167,11 @@ void TestChartsPage::zoomAndPanKeepTheCrosshairReadoutConsistentWithTheBuffer() 
     ChartWidget *pane = stationPane();
     QWidget *surface = pane->plotSurface();
     const QRectF plot = pane->plotArea();
-    // Zoom in twice about a point right of the middle, then drag the view to the right.
+    // From five minutes (while less data than that fills the view, the window is shorter):
+    // zoom in twice about a point right of the middle, then drag the view to the right.
+    m_page->viewport().setFollowing(false);
+    m_page->viewport().setWindowLength(ChartViewport::kDefaultWindowMs);
+    m_page->redrawNow();
     const QPointF at(plot.left() + plot.width() * 0.8, plot.center().y());
     for (int notch = 0; notch < 2; ++notch) {
         QWheelEvent wheel(at, surface->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
@@ -318,14 +322,26 @@ void TestChartsPage::recordingWritesTheNewSamplesToTheFile() {
     QVERIFY(stationPane()->pointCount(0) > 0);
 }
 
-void TestChartsPage::pngExportWritesAnImageOfThePanes() {
+// Drawn afresh at the size asked for, not a grab of the window: by default at least 1920×1080
+// or twice the panes on screen.
+void TestChartsPage::pngExportRendersTheChartsAtTheChosenSize() {
     waitForSamples(3);
     const QString path = m_dir.filePath(QStringLiteral("chart.png"));
-    QCOMPARE(m_page->exportPng(path), QString());
+    QCOMPARE(m_page->exportPng(path, QSize(2560, 1440)), QString());
     const QImage image(path);
-    QVERIFY(!image.isNull());
-    QVERIFY(image.width() > 600 && image.height() > 300);
-    QVERIFY(!m_page->exportPng(QStringLiteral("/no/such/folder/chart.png")).isEmpty());
+    QCOMPARE(image.size(), QSize(2560, 1440));
+    const QSize byDefault = m_page->defaultPngSize();
+    QVERIFY(byDefault.width() >= 1920 && byDefault.height() >= 1080);
+    QVERIFY(byDefault.width() >= 2 * m_page->panes().first()->width());
+    QCOMPARE(m_page->exportPng(path), QString());
+    QCOMPARE(QImage(path).size(), byDefault);
+    // The window on screen is as it was: the export drew charts of its own.
+    QCOMPARE(m_page->panes().size(), 2);
+    QVERIFY(m_page->panes().first()->width() < byDefault.width());
+    // A failed export says why and leaves the last good file.
+    const QString error = m_page->exportPng(QStringLiteral("/no/such/folder/chart.png"));
+    QVERIFY2(error.startsWith(QStringLiteral("cannot write")), qPrintable(error));
+    QCOMPARE(QImage(path).size(), byDefault);
 }
 
 void TestChartsPage::onePanePerPortOnRequest() {

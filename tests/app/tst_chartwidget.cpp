@@ -49,6 +49,7 @@ private Q_SLOTS:
     void aSparseCurveIsALineThroughItsPoints();
     void aFollowingChartRepaintsOnlyPartsAndLeavesNothingStale();
     void aShortPaneLabelsFewerValuesSoTheyDoNotCrowd();
+    void anAlarmLabelNeverCoversACurve();
 
 private:
     void show(qint64 t0, qint64 t1, const QList<QList<QPointF>> &points);
@@ -193,6 +194,33 @@ void TestChartWidget::aShortPaneLabelsFewerValuesSoTheyDoNotCrowd() {
     // Tall again, the steps come back.
     m_chart->resize(1200, 600);
     QTRY_COMPARE(m_chart->valueTickStep(ChartAxis::Left), 5.0);
+}
+
+void TestChartWidget::anAlarmLabelNeverCoversACurve() {
+    const qint64 t1 = kT0 + 60'000;
+    const ChartBand high{
+        ChartAxis::Left, 500, qInf(), Qt::red, QStringLiteral("High alarm 500 °C"), true};
+    m_chart->setBands({high});
+    // A curve just inside the band at the left: the label moves along the line.
+    show(kT0, t1,
+         {{QPointF(double(kT0), 510), QPointF(double(kT0 + 20'000), 510),
+           QPointF(double(kT0 + 20'001), 300), QPointF(double(t1), 300)},
+          {}});
+    QVERIFY(!m_chart->toImage().isNull()); // paints
+    QList<QRectF> labels = m_chart->bandLabelRects();
+    QCOMPARE(labels.size(), 1);
+    const double curveEnd = m_chart->xAt(kT0 + 20'000);
+    QVERIFY2(
+        labels.first().left() > curveEnd,
+        qPrintable(
+            QStringLiteral("label at %1, curve to %2").arg(labels.first().left()).arg(curveEnd)));
+    // A curve along the whole line, on both sides of it: no place is free, so no label.
+    QList<QPointF> zigzag;
+    for (int i = 0; i <= 600; ++i)
+        zigzag.append(QPointF(double(kT0 + i * 100), i % 2 ? 530 : 470));
+    show(kT0, t1, {zigzag, {}});
+    QVERIFY(!m_chart->toImage().isNull());
+    QCOMPARE(m_chart->bandLabelRects().size(), 0);
 }
 
 QTEST_MAIN(TestChartWidget)

@@ -61,8 +61,8 @@ void ChartPlotView::drawForeground(QPainter *painter, const QRectF &rect) {
     drawValueGrid(*painter, plot);
     drawTimeAxis(*painter, plot);
     painter->setClipRect(plot);
-    drawTraces(*painter, plot);
-    drawBands(*painter, plot);
+    const QList<QPolygonF> curves = drawTraces(*painter, plot);
+    drawBands(*painter, plot, curves);
     drawMarkers(*painter, plot);
     painter->restore();
 }
@@ -103,7 +103,7 @@ void ChartPlotView::drawTimeAxis(QPainter &painter, const QRectF &plot) const {
         painter.drawStaticText(l.rect.topLeft(), d.tickTexts.at(l.index));
 }
 
-void ChartPlotView::drawTraces(QPainter &painter, const QRectF &plot) const {
+QList<QPolygonF> ChartPlotView::drawTraces(QPainter &painter, const QRectF &plot) const {
     const ChartWidgetPrivate &d = *m_owner.d;
     const double xScale = plot.width() / double(d.t1 - d.t0);
     // Off-plot points are clipped; bounding them first keeps the pixel arithmetic in range.
@@ -116,6 +116,7 @@ void ChartPlotView::drawTraces(QPainter &painter, const QRectF &plot) const {
         for (qsizetype i = 0; i < d.points.size() && i < d.styles.size(); ++i)
             if (d.styles.at(i).axis == axis)
                 order.append(i);
+    QList<QPolygonF> drawn;
     QPolygonF line;
     for (qsizetype i : std::as_const(order)) {
         const ChartSeriesStyle &style = d.styles.at(i);
@@ -126,6 +127,8 @@ void ChartPlotView::drawTraces(QPainter &painter, const QRectF &plot) const {
                 drawColumns(painter, line, denseColor(style));
             else if (!line.isEmpty())
                 painter.drawPolyline(line);
+            if (!line.isEmpty())
+                drawn.append(line);
             line.clear();
         };
         painter.setPen(tracePen(style));
@@ -145,6 +148,7 @@ void ChartPlotView::drawTraces(QPainter &painter, const QRectF &plot) const {
         }
         draw();
     }
+    return drawn;
 }
 
 // A min/max curve denser than the pixels is a vertical run per pixel column. Drawn as one
@@ -183,7 +187,9 @@ void ChartPlotView::drawColumns(QPainter &painter, const QPolygonF &line,
         flush();
 }
 
-void ChartPlotView::drawBands(QPainter &painter, const QRectF &plot) const {
+void ChartPlotView::drawBands(QPainter &painter, const QRectF &plot,
+                              const QList<QPolygonF> &curves) const {
+    m_owner.d->bandLabels.clear();
     for (const ChartBand &b : std::as_const(m_owner.d->bands)) {
         const double top =
             std::isfinite(b.high) ? m_owner.d->yAt(b.axis, b.high, plot) : plot.top();
@@ -197,10 +203,57 @@ void ChartPlotView::drawBands(QPainter &painter, const QRectF &plot) const {
             continue;
         painter.setPen(QPen(b.color, 1, Qt::DashDotLine));
         painter.drawLine(QPointF(plot.left(), edge), QPointF(plot.right(), edge));
-        const QFontMetricsF metrics(painter.font());
-        const double y = b.labelAtLow ? edge - 3 : edge + metrics.ascent() + 2;
-        painter.drawText(QPointF(plot.left() + 4, y), b.label);
+        if (const auto place = bandLabelPlace(b, edge, plot, painter.font(), curves)) {
+            painter.drawText(*place, Qt::AlignLeft | Qt::AlignVCenter, b.label);
+            m_owner.d->bandLabels.append(*place);
+        }
     }
+}
+
+namespace {
+// Whether any segment of the curves passes through `rect`.
+bool crossesAny(const QRectF &rect, const QList<QPolygonF> &curves) {
+    const QLineF edges[] = {{rect.topLeft(), rect.topRight()},
+                            {rect.topRight(), rect.bottomRight()},
+                            {rect.bottomRight(), rect.bottomLeft()},
+                            {rect.bottomLeft(), rect.topLeft()}};
+    for (const QPolygonF &curve : curves) {
+        if (!curve.boundingRect().adjusted(-1, -1, 1, 1).intersects(rect))
+            continue;
+        for (qsizetype i = 0; i < curve.size(); ++i) {
+            if (rect.contains(curve.at(i)))
+                return true;
+            if (i == 0)
+                continue;
+            const QLineF segment(curve.at(i - 1), curve.at(i));
+            for (const QLineF &e : edges)
+                if (segment.intersects(e, nullptr) == QLineF::BoundedIntersection)
+                    return true;
+        }
+    }
+    return false;
+}
+} // namespace
+
+// A band's label goes beside its limit line, inside the band first, at the left, the middle or
+// the right, wherever no curve passes; when every place is crossed it is left out (the shading
+// and the line still show the limit) rather than hide the curve a person is watching.
+std::optional<QRectF> ChartPlotView::bandLabelPlace(const ChartBand &band, double edge,
+                                                    const QRectF &plot, const QFont &font,
+                                                    const QList<QPolygonF> &curves) const {
+    const QFontMetricsF metrics(font);
+    const QSizeF size(metrics.horizontalAdvance(band.label) + 4, metrics.height());
+    const double inside = band.labelAtLow ? edge - 2 - size.height() : edge + 2;
+    const double outside = band.labelAtLow ? edge + 2 : edge - 2 - size.height();
+    for (const double y : {inside, outside}) {
+        for (const double x : {plot.left() + 4, plot.center().x() - size.width() / 2,
+                               plot.right() - 4 - size.width()}) {
+            const QRectF rect(QPointF(x, y), size);
+            if (plot.contains(rect) && !crossesAny(rect.adjusted(-2, -1, 2, 1), curves))
+                return rect;
+        }
+    }
+    return std::nullopt;
 }
 
 void ChartPlotView::drawMarkers(QPainter &painter, const QRectF &plot) const {

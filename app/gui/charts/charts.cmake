@@ -13,6 +13,7 @@ target_sources(tipscope_gui PRIVATE
     ${CMAKE_CURRENT_LIST_DIR}/chartspage.h
     ${CMAKE_CURRENT_LIST_DIR}/chartspage.cpp
     ${CMAKE_CURRENT_LIST_DIR}/chartspageactions.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/chartspageexport.cpp
     ${CMAKE_CURRENT_LIST_DIR}/chartspageoverlays.cpp
     ${CMAKE_CURRENT_LIST_DIR}/chartspagereplay.cpp
 )

@@ -42,31 +42,8 @@ ChartsPage::ChartsPage(Session &session, QWidget *parent)
     m_panesLayout->setContentsMargins(0, 0, 0, 0);
     m_panesLayout->setSpacing(2);
     layout->addWidget(scroll, 1);
-    m_readout = new QLabel(this);
-    m_readout->setObjectName(QStringLiteral("chartReadout"));
-    m_readout->setAccessibleName(tr("Values under the cursor"));
-    m_readout->setWordWrap(true);
-    m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    layout->addWidget(m_readout);
-    auto *measureRow = new QHBoxLayout;
-    auto *toleranceLabel = new QLabel(tr("Heat-up and recovery &band ±"), this);
-    m_tolerance = new QDoubleSpinBox(this);
-    m_tolerance->setObjectName(QStringLiteral("toleranceSpin"));
-    m_tolerance->setAccessibleName(tr("Tolerance band around the setpoint"));
-    m_tolerance->setRange(1, 50);
-    m_tolerance->setDecimals(0);
-    m_tolerance->setValue(5);
-    toleranceLabel->setBuddy(m_tolerance);
-    measureRow->addWidget(toleranceLabel);
-    measureRow->addWidget(m_tolerance);
-    measureRow->addStretch(1);
-    layout->addLayout(measureRow);
-    m_measurements = new QPlainTextEdit(this);
-    m_measurements->setObjectName(QStringLiteral("measurementText"));
-    m_measurements->setAccessibleName(tr("Measurements of the visible window"));
-    m_measurements->setReadOnly(true);
-    m_measurements->setMaximumHeight(fontMetrics().lineSpacing() * 7);
-    layout->addWidget(m_measurements);
+    buildReadout(layout);
+    buildMeasurements(layout);
 
     m_redrawTimer.setSingleShot(true);
     m_measureTimer.setSingleShot(true);
@@ -176,34 +153,43 @@ void ChartsPage::rebuildPanes() {
         const ChartChannel &first = cs.at(pane.channels.first());
         pane.traces =
             tracesFor(cs, pane.channels, m_session.temperatureUnit(), m_hardware->isChecked());
-        pane.widget = new ChartWidget(m_panesHost);
-        QList<ChartSeriesStyle> styles;
-        for (const ChartTrace &t : std::as_const(pane.traces))
-            styles.append({first.isFeeder() ? tr("%1 (%2)").arg(t.name, t.format.unit) : t.name,
-                           t.color, t.style, t.format.axis});
-        pane.widget->setSeries(styles, overlaidLegend(cs, pane));
-        const QString device = tr("%1 at %2").arg(first.deviceModel, first.address);
-        if (first.isFeeder()) {
-            // A short pane: the units go in the legend, rotated axis titles would not fit.
-            pane.widget->setTitle(tr("%1 — feeder").arg(device));
-        } else {
-            pane.widget->setTitle(pane.channels.size() > 1
-                                      ? tr("%1 — all ports").arg(device)
-                                      : tr("%1 — %2 %3").arg(device, first.title, first.tool));
-            // A pane per port is short: the bare units fit beside it, the words would not.
-            const bool roomy = m_layout == Layout::Overlaid;
-            pane.widget->setAxisTitle(ChartAxis::Left,
-                                      roomy ? tr("Temperature (%1)").arg(temp.unit) : temp.unit);
-            pane.widget->setAxisTitle(ChartAxis::Right, roomy ? tr("Power (%)") : tr("%"));
-            pane.widget->setCompact(!roomy);
-        }
-        pane.widget->setMinimumHeight(first.isFeeder() ? 150 : 170);
+        // The source line above names the devices: on screen the title is only the pane's
+        // accessible name, and its row goes to the plot.
+        pane.widget = createPaneWidget(pane, m_layout == Layout::Overlaid, m_panesHost);
+        pane.widget->setTitleShown(false);
+        pane.widget->setMinimumHeight(first.isFeeder() ? 120 : 170);
         // Until the first redraw the pane shows the page's window (a hover reads real times).
         pane.widget->setTimeRange(m_viewport.start(), m_viewport.end());
         connectPane(pane.widget);
-        m_panesLayout->addWidget(pane.widget, first.isFeeder() ? 2 : 5);
+        m_panesLayout->addWidget(pane.widget, first.isFeeder() ? kFeederStretch : kStationStretch);
     }
     scheduleRedraw();
+}
+
+ChartWidget *ChartsPage::createPaneWidget(const Pane &pane, bool roomy, QWidget *parent) const {
+    const QList<ChartChannel> &cs = shownChannels();
+    const ChartChannel &first = cs.at(pane.channels.first());
+    auto *widget = new ChartWidget(parent);
+    QList<ChartSeriesStyle> styles;
+    for (const ChartTrace &t : std::as_const(pane.traces))
+        styles.append({first.isFeeder() ? tr("%1 (%2)").arg(t.name, t.format.unit) : t.name,
+                       t.color, t.style, t.format.axis});
+    widget->setSeries(styles, overlaidLegend(cs, pane));
+    const QString device = tr("%1 at %2").arg(first.deviceModel, first.address);
+    if (first.isFeeder()) {
+        // A short pane: the units go in the legend, rotated axis titles would not fit.
+        widget->setTitle(tr("%1 — feeder").arg(device));
+        return widget;
+    }
+    widget->setTitle(pane.channels.size() > 1
+                         ? tr("%1 — all ports").arg(device)
+                         : tr("%1 — %2 %3").arg(device, first.title, first.tool));
+    // A pane per port is short: the bare units fit beside it, the words would not.
+    const QString unit = seriesFormat(QStringLiteral("tip"), m_session.temperatureUnit()).unit;
+    widget->setAxisTitle(ChartAxis::Left, roomy ? tr("Temperature (%1)").arg(unit) : unit);
+    widget->setAxisTitle(ChartAxis::Right, roomy ? tr("Power (%)") : tr("%"));
+    widget->setCompact(!roomy);
+    return widget;
 }
 
 void ChartsPage::connectPane(ChartWidget *w) {
@@ -213,7 +199,10 @@ void ChartsPage::connectPane(ChartWidget *w) {
     connect(w, &ChartWidget::panRequested, &m_viewport, &ChartViewport::pan);
     connect(w, &ChartWidget::rangeSelected, &m_viewport, &ChartViewport::showRange);
     connect(w, &ChartWidget::resetRequested, this, &ChartsPage::resetView);
-    connect(w, &ChartWidget::plotResized, this, &ChartsPage::scheduleRedraw);
+    connect(w, &ChartWidget::plotResized, this, [this] {
+        alignPlots(panes());
+        scheduleRedraw();
+    });
 }
 
 void ChartsPage::resetView() {
@@ -237,8 +226,13 @@ void ChartsPage::onSamplesAdded() {
         first = qMin(first.value_or(b->firstTime()), b->firstTime());
         last = qMax(last.value_or(b->lastTime()), b->lastTime());
     }
-    if (first)
-        m_viewport.setDataRange(*first, *last);
+    if (!first)
+        return;
+    m_viewport.setDataRange(*first, *last);
+    // While the first minutes fill the view the window stands still, and the new samples are in
+    // it: they are drawn without the window moving.
+    if (*last >= m_viewport.start() && *last < m_viewport.end())
+        scheduleRedraw();
 }
 
 void ChartsPage::scheduleRedraw() {
@@ -266,8 +260,7 @@ void ChartsPage::redraw() {
         drawPane(pane);
     if (m_hover)
         onHover(*m_hover);
-    // The preset that matches the window, or none after a zoom (a stale "5 min" would mislead).
-    m_window->setCurrentIndex(m_window->findData(m_viewport.windowMs()));
+    showWindowLength();
     if (!m_measureTimer.isActive())
         m_measureTimer.start(m_viewport.isFollowing() ? kMeasureFollowingMs : kMeasureSettleMs);
 }
@@ -298,20 +291,13 @@ void ChartsPage::drawPane(Pane &pane) {
     const qint64 t0 = m_viewport.start(), t1 = m_viewport.end();
     const ChartFrame frame =
         buildFrame(shownTelemetry(), shownChannels(), pane.traces, t0, t1, w->plotWidth());
-    const QList<ChartBand> bands = bandsFor(pane);
-    ValueSpan left = frame.left;
-    const double reach = left.valid ? qMax(30.0, left.max - left.min) : 0;
-    for (const ChartBand &b : bands) {
-        const double limit = b.labelAtLow ? b.low : b.high;
-        // A limit near the curves is worth the room it takes; a far one would flatten them.
-        if (left.valid && limit > left.min - reach && limit < left.max + reach)
-            left.include(limit);
-    }
+    // The range follows the curves; an alarm limit is a shaded band, and widening the range to
+    // show a far one would flatten the curves a person is reading.
     const bool feeder = shownChannels().at(pane.channels.first()).isFeeder();
-    const ValueSpan l = niceRange(left, feeder ? 1 : 10);
+    const ValueSpan l = niceRange(frame.left, feeder ? 1 : 10);
     const ValueSpan r = feeder ? niceRange(frame.right, 1) : ValueSpan{0, 100, true};
     w->showData(ChartData{t0, t1, l.min, l.max, r.min, r.max, frame.points});
-    w->setBands(bands);
+    w->setBands(bandsFor(pane));
     w->setMarkers(markersFor(pane));
     w->setEmptyText(frame.pointCount == 0 ? tr("No samples in this window") : QString());
 }

@@ -26,6 +26,7 @@
 #include <QElapsedTimer>
 #include <QTimer>
 #include <memory>
+#include <optional>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -54,6 +55,12 @@ class ChartsPage : public Page {
     Q_OBJECT
 public:
     static constexpr int kMaxRedrawsPerSecond = 20;
+    // How the panes share the height: a station's pane twice the feeder's, whose two curves
+    // need less room than four ports' temperatures and power.
+    static constexpr int kStationStretch = 2;
+    static constexpr int kFeederStretch = 1;
+    // Below this page height the measurements start folded, so the plots keep their room.
+    static constexpr int kMeasurementsFromHeight = 700;
     enum class Layout { Overlaid, PerPort };
 
     explicit ChartsPage(model::Session &session, QWidget *parent = nullptr);
@@ -75,9 +82,14 @@ public:
     [[nodiscard]] QString measurementText() const;
     void setTolerance(double display);
     void updateMeasurements();
+    [[nodiscard]] bool measurementsShown() const;
 
-    // Each returns an error, or empty on success.
-    QString exportPng(const QString &path);
+    // The charts drawn afresh at `size` (the default: the larger of 1920×1080 and twice the
+    // panes on screen), with the devices, the date and the time range above them, full axis
+    // titles and legends. Each export returns an error, or empty on success; a file is replaced
+    // whole or not at all.
+    QString exportPng(const QString &path, QSize size = {});
+    [[nodiscard]] QSize defaultPngSize() const;
     QString exportCsv(const QString &path);
     QString startRecording(const QString &path);
     void stopRecording();
@@ -92,6 +104,9 @@ public:
     [[nodiscard]] const model::Telemetry &shownTelemetry() const;
     [[nodiscard]] const QList<model::ChartChannel> &shownChannels() const;
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
 Q_SIGNALS:
     // After openReplay(): empty when the recording is shown, else why not (cancelled included).
     void replayOpened(const QString &error);
@@ -104,6 +119,18 @@ private:
     };
 
     void buildToolbar(QVBoxLayout *layout);
+    void buildReadout(QVBoxLayout *layout);
+    void buildMeasurements(QVBoxLayout *layout);
+    void showMeasurements(bool shown);
+    void showWindowLength();
+    [[nodiscard]] static QString softwareVersion();
+    [[nodiscard]] static QString suggestedPath(const QString &suffix);
+    [[nodiscard]] QString sourceText() const;
+    [[nodiscard]] QString rangeText() const;
+    [[nodiscard]] std::optional<QSize> choosePngSize();
+    // A pane's chart, titled and labelled; `roomy` gives the value axes their full titles.
+    [[nodiscard]] ChartWidget *createPaneWidget(const Pane &pane, bool roomy,
+                                                QWidget *parent) const;
     void rebuildPanes();
     void connectPane(ChartWidget *widget);
     void resetView();
@@ -151,7 +178,9 @@ private:
     QToolButton *m_record = nullptr;
     QToolButton *m_live = nullptr;
     ElidedLabel *m_source = nullptr;
-    QLabel *m_readout = nullptr;
+    ElidedLabel *m_readout[2] = {nullptr, nullptr};
+    QToolButton *m_measureToggle = nullptr;
+    bool m_measureChosen = false; // folded or unfolded by hand: the page no longer decides
     QDoubleSpinBox *m_tolerance = nullptr;
     QPlainTextEdit *m_measurements = nullptr;
 };

@@ -1,8 +1,9 @@
-// ChartsPage's toolbar and what its buttons do with files: PNG and CSV export of the visible
-// window and continuous recording (replay: chartspagereplay.cpp).
+// ChartsPage's toolbar and continuous recording (exports: chartspageexport.cpp, replay:
+// chartspagereplay.cpp).
 #include "chartspage.h"
 
 #include "chartwidget.h"
+#include "model/analysis/measurementreport.h"
 #include "model/recording/chartcsv.h"
 #include "model/recording/chartcsvreader.h"
 #include "model/recording/chartrecorder.h"
@@ -27,17 +28,20 @@ namespace tipscope::gui {
 
 using namespace tipscope::model;
 
-namespace {
-QString softwareVersion() {
+QString ChartsPage::softwareVersion() {
     const QString v = QCoreApplication::applicationVersion();
     return v.isEmpty() ? QStringLiteral("unknown") : v;
 }
 
-QString suggestedPath(const QString &suffix) {
+QString ChartsPage::suggestedPath(const QString &suffix) {
     const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     return folder + QStringLiteral("/tipscope-") +
            QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")) + suffix;
 }
+
+namespace {
+// Marks the Window box's entry that shows a zoomed span rather than a preset.
+constexpr int kZoomedSpan = 1;
 
 QToolButton *toolButton(const QString &text, const QString &name, QWidget *parent) {
     auto *b = new QToolButton(parent);
@@ -129,7 +133,24 @@ void ChartsPage::buildToolbar(QVBoxLayout *layout) {
     updateSourceLabel();
 }
 
-void ChartsPage::updateSourceLabel() {
+// The length in the Window box: a preset's name, or after a zoom the span itself ("2 min 14 s"),
+// never a blank box or a stale "5 min".
+void ChartsPage::showWindowLength() {
+    const qint64 ms = m_viewport.targetWindowMs();
+    if (const int zoomed = m_window->findData(kZoomedSpan, Qt::UserRole + 1); zoomed >= 0)
+        m_window->removeItem(zoomed);
+    int index = m_window->findData(ms);
+    if (index < 0) {
+        index = 0;
+        while (index < m_window->count() && m_window->itemData(index).toLongLong() < ms)
+            ++index;
+        m_window->insertItem(index, durationText(ms), ms);
+        m_window->setItemData(index, kZoomedSpan, Qt::UserRole + 1);
+    }
+    m_window->setCurrentIndex(index);
+}
+
+QString ChartsPage::sourceText() const {
     QString text = m_replay ? tr("Replay: %1 (%Ln row(s))", nullptr, int(m_replay->rows))
                                   .arg(QFileInfo(m_replayPath).fileName())
                             : tr("Live");
@@ -142,45 +163,16 @@ void ChartsPage::updateSourceLabel() {
         if (!devices.isEmpty())
             text += QStringLiteral(": ") + devices.join(QStringLiteral("; "));
     }
+    return text;
+}
+
+void ChartsPage::updateSourceLabel() {
+    QString text = sourceText();
     if (m_recorder->isRecording())
         text += tr(" · recording to %1").arg(QFileInfo(m_recorder->path()).fileName());
     m_source->setFullText(text);
     m_live->setVisible(m_replay != nullptr);
     m_record->setChecked(m_recorder->isRecording());
-}
-
-QString ChartsPage::exportPng(const QString &path) {
-    redrawNow();
-    if (m_panes.isEmpty())
-        return tr("there is no chart to export");
-    if (!m_panesHost->grab().save(path, "PNG"))
-        return tr("could not write %1").arg(path);
-    return {};
-}
-
-QString ChartsPage::exportCsv(const QString &path) {
-    if (!m_replay) // the header names today's tools and alarm limits
-        m_liveChannels = sessionChannels(m_session);
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
-        return file.errorString();
-    ChartCsvWriter writer(file, shownChannels(), m_session.temperatureUnit());
-    if (!writer.writeHeader(softwareVersion()) ||
-        !writer.writeWindow(shownTelemetry(), events(), m_viewport.start(), m_viewport.end()))
-        return writer.errorString();
-    return {};
-}
-
-void ChartsPage::chooseAndExport(bool png) {
-    const QString path = QFileDialog::getSaveFileName(
-        this, png ? tr("Export chart as PNG") : tr("Export chart data as CSV"),
-        suggestedPath(png ? QStringLiteral(".png") : QStringLiteral(".csv")),
-        png ? tr("PNG image (*.png)") : tr("CSV file (*.csv)"));
-    if (path.isEmpty())
-        return;
-    const QString error = png ? exportPng(path) : exportCsv(path);
-    if (!error.isEmpty())
-        QMessageBox::warning(this, tr("Export"), tr("Export failed: %1").arg(error));
 }
 
 QString ChartsPage::startRecording(const QString &path) {

@@ -5,12 +5,16 @@
 #include "chartwidget.h"
 #include "model/analysis/measurementreport.h"
 #include "model/chart/chartframe.h"
+#include "widgets/elidedlabel.h"
 
 #include <QDateTime>
 #include <QDoubleSpinBox>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QScrollBar>
 #include <QToolButton>
+#include <QVBoxLayout>
 #include <cmath>
 #include <limits>
 
@@ -19,6 +23,7 @@ namespace tipscope::gui {
 using namespace tipscope::model;
 
 namespace {
+const QString kReadoutJoin = QStringLiteral(" · ");
 QColor eventColor(const ChartEvent &e) {
     switch (e.kind) {
     case Event::Kind::Status:
@@ -94,28 +99,106 @@ QList<ChartBand> ChartsPage::bandsFor(const Pane &pane) const {
     return out;
 }
 
+// The readout has a fixed place of two lines under the panes, so hovering never moves the
+// plots: the station's values on the first, the feeder's on the second, each cut short with
+// "…" when it does not fit (the whole text is the line's tooltip).
+void ChartsPage::buildReadout(QVBoxLayout *layout) {
+    auto *box = new QWidget(this);
+    box->setObjectName(QStringLiteral("chartReadout"));
+    box->setAccessibleName(tr("Values under the cursor"));
+    auto *lines = new QVBoxLayout(box);
+    lines->setContentsMargins(0, 0, 0, 0);
+    lines->setSpacing(0);
+    for (ElidedLabel *&line : m_readout) {
+        line = new ElidedLabel(box);
+        line->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        lines->addWidget(line);
+    }
+    box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    layout->addWidget(box);
+}
+
+// The measurements sit under a header that folds them away; until someone folds or unfolds
+// them, they are shown only where the page is tall enough to keep the plots roomy.
+void ChartsPage::buildMeasurements(QVBoxLayout *layout) {
+    auto *header = new QHBoxLayout;
+    m_measureToggle = new QToolButton(this);
+    m_measureToggle->setObjectName(QStringLiteral("measurementsToggle"));
+    m_measureToggle->setText(tr("&Measurements"));
+    m_measureToggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_measureToggle->setCheckable(true);
+    m_measureToggle->setAutoRaise(true);
+    m_measureToggle->setToolTip(tr("Heat-ups, recoveries and min/max/mean of the visible window"));
+    connect(m_measureToggle, &QToolButton::clicked, this, [this](bool on) {
+        m_measureChosen = true;
+        showMeasurements(on);
+    });
+    auto *toleranceLabel = new QLabel(tr("Heat-up and recovery &band ±"), this);
+    m_tolerance = new QDoubleSpinBox(this);
+    m_tolerance->setObjectName(QStringLiteral("toleranceSpin"));
+    m_tolerance->setAccessibleName(tr("Tolerance band around the setpoint"));
+    m_tolerance->setRange(1, 50);
+    m_tolerance->setDecimals(0);
+    m_tolerance->setValue(5);
+    toleranceLabel->setBuddy(m_tolerance);
+    header->addWidget(m_measureToggle);
+    header->addSpacing(12);
+    header->addWidget(toleranceLabel);
+    header->addWidget(m_tolerance);
+    header->addStretch(1);
+    layout->addLayout(header);
+    m_measurements = new QPlainTextEdit(this);
+    m_measurements->setObjectName(QStringLiteral("measurementText"));
+    m_measurements->setAccessibleName(tr("Measurements of the visible window"));
+    m_measurements->setReadOnly(true);
+    m_measurements->setMaximumHeight(fontMetrics().lineSpacing() * 7);
+    layout->addWidget(m_measurements);
+    showMeasurements(true);
+}
+
+void ChartsPage::showMeasurements(bool shown) {
+    m_measureToggle->setChecked(shown);
+    m_measureToggle->setArrowType(shown ? Qt::DownArrow : Qt::RightArrow);
+    m_measurements->setVisible(shown);
+    if (shown)
+        updateMeasurements();
+}
+
+bool ChartsPage::measurementsShown() const {
+    return m_measureToggle->isChecked();
+}
+
+void ChartsPage::resizeEvent(QResizeEvent *event) {
+    Page::resizeEvent(event);
+    if (!m_measureChosen)
+        showMeasurements(height() >= kMeasurementsFromHeight);
+}
+
 void ChartsPage::onHover(qint64 timeMs) {
     m_hover = timeMs;
-    QStringList lines;
+    QStringList station, feeder;
     for (const Pane &pane : std::as_const(m_panes)) {
         pane.widget->setCrosshair(timeMs);
-        lines.append(gui::readoutText(
-            pane.traces, readoutAt(shownTelemetry(), shownChannels(), pane.traces, timeMs),
-            timeMs));
+        const QString values = readoutValuesText(
+            pane.traces, readoutAt(shownTelemetry(), shownChannels(), pane.traces, timeMs));
+        (shownChannels().at(pane.channels.first()).isFeeder() ? feeder : station).append(values);
     }
-    m_readout->setText(lines.join(QLatin1Char('\n')));
+    const QString time = readoutTimeText(timeMs) + QStringLiteral("   ");
+    m_readout[0]->setFullText(station.isEmpty() ? QString() : time + station.join(kReadoutJoin));
+    m_readout[1]->setFullText(feeder.isEmpty() ? QString() : time + feeder.join(kReadoutJoin));
 }
 
 void ChartsPage::onLeave() {
     m_hover.reset();
     for (const Pane &pane : std::as_const(m_panes))
         pane.widget->setCrosshair(std::nullopt);
-    m_readout->setText(tr("Point at a chart to read every series at that instant. Wheel: zoom · "
-                          "drag: pan · Shift+drag: zoom to a range · double-click: reset."));
+    m_readout[0]->setFullText(tr("Point at a chart to read every series at that instant."));
+    m_readout[1]->setFullText(
+        tr("Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset."));
 }
 
 QString ChartsPage::readoutText() const {
-    return m_readout->text();
+    return m_readout[0]->fullText() + QLatin1Char('\n') + m_readout[1]->fullText();
 }
 
 QString ChartsPage::measurementText() const {
@@ -137,8 +220,14 @@ void ChartsPage::updateMeasurements() {
     r.toleranceWire = qMax(1, int(std::lround(m_tolerance->value() / scale)));
     // Unchanged text is not set again: that would relayout and repaint the panel every second.
     const QString text = measurementReport(shownTelemetry(), shownChannels(), r);
-    if (text != m_measurements->toPlainText())
-        m_measurements->setPlainText(text);
+    if (text == m_measurements->toPlainText())
+        return;
+    // Where the reader had scrolled to stays in view: a following chart updates this every
+    // second, and jumping back to the top each time made the lower ports unreadable.
+    QScrollBar *bar = m_measurements->verticalScrollBar();
+    const int scrolled = bar->value();
+    m_measurements->setPlainText(text);
+    bar->setValue(qMin(scrolled, bar->maximum()));
 }
 
 } // namespace tipscope::gui

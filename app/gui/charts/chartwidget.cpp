@@ -15,6 +15,7 @@ namespace {
 constexpr double kMarkerHitPx = 5;
 
 constexpr int kMaxValueSteps = 5;
+constexpr int kMinValueLabels = 4;
 
 // 1, 2 or 5 times a power of ten, at least `span / steps`: ticks on round values. A step wider
 // than the span would label one value at most, so the next smaller round step is taken then.
@@ -28,6 +29,18 @@ double valueStep(double span, int steps) {
     while (k < 4 && magnitude * kRound[k] < raw)
         ++k;
     return magnitude * kRound[magnitude * kRound[k] > span ? k - 1 : k];
+}
+
+// The next round step below `step` (5 → 2 → 1 → 0.5 times a power of ten).
+double smallerStep(double step) {
+    const double magnitude = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+    const double lead = step / magnitude;
+    return magnitude * (lead > 4.5 ? 2 : lead > 1.5 ? 1 : 0.5);
+}
+
+// How many multiples of `step` lie in [min, max]: the labels the axis will show.
+int labelsWithin(double min, double max, double step) {
+    return int(std::floor(max / step + 1e-9) - std::ceil(min / step - 1e-9)) + 1;
 }
 
 void styleValueAxis(QValueAxis *axis) {
@@ -53,7 +66,7 @@ ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
     // The light theme's background is a white-to-white gradient: a plain white fill looks the
     // same and is the cheapest thing to repaint under the curves on every frame.
     chart->setBackgroundBrush(QColor(Qt::white));
-    chart->setMargins(QMargins(4, 4, 4, 4 + timeLabelStrip()));
+    applyMargins();
     chart->legend()->setAlignment(Qt::AlignTop);
     // The time axis only holds the plot's bottom edge: its range never changes, and the ticks,
     // grid lines and labels of time are drawn by ChartPlotView. Moving a Qt Charts axis relaid
@@ -85,6 +98,10 @@ ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
     emptyText->setBrush(QColor(120, 120, 120));
     emptyText->setZValue(100);
     emptyText->setVisible(false);
+}
+
+void ChartWidgetPrivate::applyMargins() {
+    chart->setMargins(QMargins(4 + padLeft, 4, 4 + padRight, 4 + timeLabelStrip()));
 }
 
 // Only the plot: Qt Charts repaints the axis labels and the legend itself when they change, and
@@ -198,12 +215,17 @@ void ChartWidgetPrivate::updateValueTicks() {
     const double height = plot().height();
     const int steps =
         height > 0 ? qBound(1, int(height / (2 * labelHeight)), kMaxValueSteps) : kMaxValueSteps;
+    // At least four labelled values where the pane has room for them: two labels say little
+    // about the scale of a curve between them.
+    const int wanted = steps + 1 >= kMinValueLabels ? kMinValueLabels : 1;
     for (int i = 0; i < 2; ++i) {
         const double span = ranges[i][1] - ranges[i][0];
         if (!(span > 0))
             continue;
         QValueAxis *axis = i == 0 ? leftAxis : rightAxis;
-        const double step = valueStep(span, steps);
+        double step = valueStep(span, steps);
+        while (labelsWithin(ranges[i][0], ranges[i][1], step) < wanted && step > span * 1e-6)
+            step = smallerStep(step);
         if (axis->tickInterval() != step)
             axis->setTickInterval(step);
     }
@@ -228,14 +250,53 @@ ChartWidget::~ChartWidget() = default;
 
 void ChartWidget::setTitle(const QString &title) {
     d->title = title;
-    d->chart->setTitle(d->compact ? QString() : title);
+    d->showTitle();
     d->view->setAccessibleName(title);
+}
+
+void ChartWidget::setTitleShown(bool shown) {
+    d->titleShown = shown;
+    d->showTitle();
 }
 
 void ChartWidget::setCompact(bool compact) {
     d->compact = compact;
-    d->chart->setTitle(compact ? QString() : d->title);
+    d->showTitle();
     d->placeLegend();
+}
+
+void ChartWidgetPrivate::showTitle() {
+    chart->setTitle(compact || !titleShown ? QString() : title);
+}
+
+QPair<int, int> ChartWidget::naturalPlotInsets() const {
+    const QRectF p = d->plot();
+    const double width = d->chart->size().width();
+    return {int(std::lround(p.left())) - d->padLeft,
+            int(std::lround(width - p.right())) - d->padRight};
+}
+
+void ChartWidget::alignPlot(int left, int right) {
+    const auto [naturalLeft, naturalRight] = naturalPlotInsets();
+    const int padLeft = qMax(0, left - naturalLeft);
+    const int padRight = qMax(0, right - naturalRight);
+    if (padLeft == d->padLeft && padRight == d->padRight)
+        return;
+    d->padLeft = padLeft;
+    d->padRight = padRight;
+    d->applyMargins();
+}
+
+void alignPlots(const QList<ChartWidget *> &charts) {
+    int left = 0;
+    int right = 0;
+    for (const ChartWidget *c : charts) {
+        const auto [l, r] = c->naturalPlotInsets();
+        left = qMax(left, l);
+        right = qMax(right, r);
+    }
+    for (ChartWidget *c : charts)
+        c->alignPlot(left, right);
 }
 
 // Above the plot the legend is one row, and Qt Charts cuts its names short ("P1 …") when they do
@@ -373,6 +434,11 @@ double ChartWidget::valueTickStep(ChartAxis axis) const {
     return (axis == ChartAxis::Left ? d->leftAxis : d->rightAxis)->tickInterval();
 }
 
+QPair<double, double> ChartWidget::valueRange(ChartAxis axis) const {
+    const double *r = d->ranges[axis == ChartAxis::Left ? 0 : 1];
+    return {r[0], r[1]};
+}
+
 QFont ChartWidget::valueLabelFont() const {
     return d->leftAxis->labelsFont();
 }
@@ -420,6 +486,10 @@ int ChartWidget::markerCount() const {
 
 QImage ChartWidget::toImage() const {
     return d->view->grab().toImage();
+}
+
+QList<QRectF> ChartWidget::bandLabelRects() const {
+    return d->bandLabels;
 }
 
 } // namespace tipscope::gui

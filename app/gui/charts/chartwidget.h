@@ -72,6 +72,9 @@ public:
     ~ChartWidget() override;
 
     void setTitle(const QString &title);
+    // Whether the title is drawn above the plot (an exported image); on screen the page names
+    // what is shown, and the title stays the accessible name. Shown by default.
+    void setTitleShown(bool shown);
     // For short panes: no title (it stays the accessible name) and the legend at the side.
     void setCompact(bool compact);
     // The curves, and the legend's entries when they should not be one per curve (ports
@@ -105,6 +108,7 @@ public:
     [[nodiscard]] int plotWidth() const;
     // The step between the labelled values of an axis, and the font of those labels.
     [[nodiscard]] double valueTickStep(model::ChartAxis axis) const;
+    [[nodiscard]] QPair<double, double> valueRange(model::ChartAxis axis) const;
     [[nodiscard]] QFont valueLabelFont() const;
     [[nodiscard]] qint64 timeAt(double x) const;
     [[nodiscard]] double xAt(qint64 timeMs) const;
@@ -116,6 +120,14 @@ public:
     [[nodiscard]] int markerCount() const;
     // The chart as an image at its current size (PNG export).
     [[nodiscard]] QImage toImage() const;
+    // Where the alarm bands' labels were drawn in the last paint: never over a curve.
+    [[nodiscard]] QList<QRectF> bandLabelRects() const;
+
+    // The room Qt Charts gives the axes and legend left and right of the plot, in pixels, and
+    // extra room so that the plot starts `left` and ends `right` pixels from the widget's edges
+    // (never less than its natural room). See alignPlots().
+    [[nodiscard]] QPair<int, int> naturalPlotInsets() const;
+    void alignPlot(int left, int right);
 
 Q_SIGNALS:
     void hovered(qint64 timeMs);
@@ -131,5 +143,10 @@ private:
     friend class ChartPlotView;
     std::unique_ptr<ChartWidgetPrivate> d;
 };
+
+// Charts stacked in one column share one time axis: each gets the widest natural room of them
+// all on either side, so the same instant sits at the same x in every one of them. Call it
+// again when a chart's plot area changes (ChartWidget::plotResized).
+void alignPlots(const QList<ChartWidget *> &charts);
 
 } // namespace tipscope::gui

@@ -42,10 +42,14 @@ private:
     // more than painting the curve itself.
     void drawValueGrid(QPainter &painter, const QRectF &plot) const;
     void drawTimeAxis(QPainter &painter, const QRectF &plot) const;
-    void drawTraces(QPainter &painter, const QRectF &plot) const;
+    // Returns the curves as drawn, in pixels, so labels can keep off them.
+    [[nodiscard]] QList<QPolygonF> drawTraces(QPainter &painter, const QRectF &plot) const;
     void drawColumns(QPainter &painter, const QPolygonF &line, const QColor &color) const;
-    void drawBands(QPainter &painter, const QRectF &plot) const;
+    void drawBands(QPainter &painter, const QRectF &plot, const QList<QPolygonF> &curves) const;
     void drawMarkers(QPainter &painter, const QRectF &plot) const;
+    [[nodiscard]] std::optional<QRectF> bandLabelPlace(const ChartBand &band, double edge,
+                                                       const QRectF &plot, const QFont &font,
+                                                       const QList<QPolygonF> &curves) const;
     [[nodiscard]] double msPerPixel() const;
 
     ChartWidget &m_owner;
@@ -64,6 +68,8 @@ public:
     [[nodiscard]] QRectF plot() const { return chart->plotArea(); }
     [[nodiscard]] double yAt(model::ChartAxis axis, double value, const QRectF &plot) const;
     void placeOverlays();
+    void applyMargins();
+    void showTitle();
     void placeLegend();
     void updatePlot();
     // Ticks on round times (every 10 s, 1 min, 1 h...), which QDateTimeAxis cannot do: its
@@ -95,6 +101,13 @@ public:
     QGraphicsSimpleTextItem *emptyText;
     QString title;
     bool compact = false;
+    bool titleShown = true;
+    // Extra room beside the plot so that panes stacked on one page start and end their plots at
+    // the same x (see alignPlots()).
+    int padLeft = 0;
+    int padRight = 0;
+    // Where the alarm bands' labels were drawn in the last paint (tests).
+    mutable QList<QRectF> bandLabels;
     qint64 t0 = 0;
     qint64 t1 = 1;
     double ranges[2][2] = {{qQNaN(), qQNaN()}, {qQNaN(), qQNaN()}}; // [axis][min, max]
