@@ -15,6 +15,8 @@
 
 #include <QDoubleSpinBox>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QtTest>
 
 using namespace tipscope;
@@ -36,6 +38,7 @@ private Q_SLOTS:
     void whileTheLineIsDownTheCardsAreGreyedWithTheTimeAndTheControlsOff();
     void aControlTheLostLineRefusedIsNoErrorAfterTheReconnect();
     void theCardsShareTheHeightAndTheirSparklinesDrawTheLastMinute();
+    void fourPortsFitWithoutScrollingAt1280x720();
     void aSetpointOutOfRangeIsRefusedNotClamped();
 
 private:
@@ -93,6 +96,9 @@ void TestOverviewPage::aPortInErrorIsUnmistakableOnItsCard() {
 
 void TestOverviewPage::whileTheLineIsDownTheCardsAreGreyedWithTheTimeAndTheControlsOff() {
     connectDemo();
+    m_session->demoLine()->station()->setPortError(4, 4);
+    PortCard *noTool = m_page->card(4);
+    QTRY_VERIFY_WITH_TIMEOUT(noTool->statusText().contains(QStringLiteral("color:")), kConnectMs);
     PortCard *card = m_page->card(2);
     QVERIFY(card->controlsEnabled());
     QVERIFY(card->staleText().isEmpty());
@@ -106,6 +112,10 @@ void TestOverviewPage::whileTheLineIsDownTheCardsAreGreyedWithTheTimeAndTheContr
     QVERIFY(!card->controlsEnabled());
     QCOMPARE(card->look(), Level::Unknown);
     QVERIFY(!card->findChild<Sparkline *>()->isEnabled());
+    // An error stays in words but loses its colour: amber would read as current.
+    QVERIFY2(noTool->statusText().contains(QStringLiteral("Error: ")) &&
+                 !noTool->statusText().contains(QStringLiteral("color:")),
+             qPrintable(noTool->statusText()));
     QVERIFY2(m_page->noticeText().contains(QStringLiteral("Not connected")) &&
                  m_page->noticeText().contains(QStringLiteral("robot controls are off")),
              qPrintable(m_page->noticeText()));
@@ -115,6 +125,23 @@ void TestOverviewPage::whileTheLineIsDownTheCardsAreGreyedWithTheTimeAndTheContr
     QVERIFY(card->staleText().isEmpty());
     QVERIFY(m_page->noticeText().isEmpty());
     QVERIFY(card->findChild<Sparkline *>()->isEnabled());
+    QTRY_VERIFY2(noTool->statusText().contains(QStringLiteral("color:")),
+                 qPrintable(noTool->statusText()));
+}
+
+// The page is about 1040×560 in the main window at 1280×720: the four cards share it, and no
+// port hides below a scroll bar.
+void TestOverviewPage::fourPortsFitWithoutScrollingAt1280x720() {
+    connectDemo();
+    auto *scroll = m_page->findChild<QScrollArea *>();
+    QVERIFY(scroll);
+    QTRY_VERIFY2(scroll->verticalScrollBar()->maximum() == 0,
+                 qPrintable(QStringLiteral("%1 px to scroll, cards %2 px tall")
+                                .arg(scroll->verticalScrollBar()->maximum())
+                                .arg(m_page->card(1)->height())));
+    PortCard *last = m_page->card(4);
+    const QPoint bottom = last->mapTo(scroll->viewport(), QPoint(0, last->height()));
+    QVERIFY2(bottom.y() <= scroll->viewport()->height(), qPrintable(QString::number(bottom.y())));
 }
 
 void TestOverviewPage::aControlTheLostLineRefusedIsNoErrorAfterTheReconnect() {

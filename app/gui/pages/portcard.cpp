@@ -21,6 +21,8 @@ using protocol::Role;
 namespace {
 const QString kRed = QStringLiteral("#c01c28");
 const QString kAmber = QStringLiteral("#8a5a00");
+constexpr int kLineSpacing = 2;
+constexpr int kMargin = 8;
 
 QString coloured(const QString &colour, const QString &text) {
     return QStringLiteral("<span style='color:%1'>%2</span>").arg(colour, text.toHtmlEscaped());
@@ -82,18 +84,25 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
     m_set = new QPushButton(tr("Set"), this);
     m_feedback = new QLabel(this);
     m_feedback->setWordWrap(true);
+    m_feedback->hide();
 
     auto *temps = new QHBoxLayout;
     temps->addWidget(m_tip);
     temps->addStretch(1);
     temps->addWidget(m_setpoint, 0, Qt::AlignBottom);
+    // What the port does and its side readings share a line; the lines sit close together, so
+    // four cards fit in two rows at 1280×720 and the rest of a taller page goes to the sparkline.
+    auto *state = new QHBoxLayout;
+    state->addWidget(m_status, 1);
+    state->addWidget(m_details, 0, Qt::AlignBottom);
+    m_details->setAlignment(Qt::AlignRight | Qt::AlignBottom);
     auto *values = new QVBoxLayout(m_values);
     values->setContentsMargins(0, 0, 0, 0);
+    values->setSpacing(kLineSpacing);
     values->addWidget(m_title);
     values->addLayout(temps);
     values->addWidget(m_power);
-    values->addWidget(m_status);
-    values->addWidget(m_details);
+    values->addLayout(state);
     values->addWidget(m_problem);
     values->addWidget(m_sparkline, 1);
     auto *controls = new QHBoxLayout;
@@ -104,6 +113,8 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
     controls->addWidget(m_newSetpoint);
     controls->addWidget(m_set);
     auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(kMargin, kMargin, kMargin, kMargin);
+    layout->setSpacing(kLineSpacing * 2);
     layout->addWidget(m_values, 1);
     layout->addWidget(m_stale);
     layout->addLayout(controls);
@@ -182,7 +193,7 @@ void PortCard::refresh() {
         details.append(tr("transistor %1").arg(qt->displayText()));
     if (Parameter *ed = port.parameter(Role::TimeToNextMode); ed && ed->number().value_or(0) > 0)
         details.append(tr("%1 until the next mode").arg(ed->displayText()));
-    m_details->setText(details.join(QStringLiteral(" · ")));
+    showLine(m_details, details.join(QStringLiteral(" · ")));
     refreshProblem();
     const Parameter *tip = port.parameter(Role::TipTemperature);
     const bool stale = !port.station().isLineUp();
@@ -206,11 +217,15 @@ void PortCard::refreshProblem() {
     const bool inError = error && *error != 0;
     const auto alarm = port.alarm();
     const bool alarmed = alarm && alarm->any();
+    // Not connected, the words stay but their colour goes: an amber error would read as current.
+    const bool stale = !port.station().isLineUp();
     // The error in words is the status line; what the port is doing besides goes under it.
     m_look = inError   ? qMax(Level::Warning, port.errorLevel())
              : alarmed ? Level::Warning
                        : Level::Ok;
-    if (inError)
+    if (inError && stale)
+        m_status->setText(tr("⚠ Error: %1").arg(port.errorText()).toHtmlEscaped());
+    else if (inError)
         m_status->setText(coloured(m_look == Level::Error ? kRed : kAmber,
                                    tr("⚠ Error: %1").arg(port.errorText())));
     else
@@ -220,9 +235,10 @@ void PortCard::refreshProblem() {
         problems.append(tr("status: %1").arg(mode));
     if (alarmed)
         problems.append(tr("alarm: %1").arg(port.displayText(Role::Alarm)));
-    m_problem->setText(problems.join(QLatin1String(" · ")));
-    m_problem->setStyleSheet(alarmed ? QStringLiteral("color: %1; font-weight: bold;").arg(kAmber)
-                                     : QString());
+    showLine(m_problem, problems.join(QLatin1String(" · ")));
+    m_problem->setStyleSheet(alarmed && !stale
+                                 ? QStringLiteral("color: %1; font-weight: bold;").arg(kAmber)
+                                 : QString());
 }
 
 void PortCard::applyLook(Level level) {
@@ -260,7 +276,13 @@ void PortCard::refreshSetpointEditor() {
 }
 
 void PortCard::showFeedback(const QString &why) {
-    m_feedback->setText(why.isEmpty() ? QString() : coloured(kRed, why));
+    showLine(m_feedback, why.isEmpty() ? QString() : coloured(kRed, why));
+}
+
+// An empty line takes no room: four cards fit in two rows at 1280×720 without scrolling.
+void PortCard::showLine(QLabel *label, const QString &text) {
+    label->setText(text);
+    label->setVisible(!text.isEmpty());
 }
 
 QString PortCard::requestMode(int mode) {

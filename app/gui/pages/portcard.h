@@ -52,6 +52,7 @@ public:
     QString requestSetpoint(double displayValue);
 
 private:
+    static void showLine(QLabel *label, const QString &text);
     void refresh();
     void refreshProblem();
     void refreshSetpointEditor();
