@@ -60,6 +60,8 @@ void FrameBuilder::buildLayout() {
     m_device = new QComboBox(this);
     named(m_device, "deviceCombo", tr("Device"));
     m_device->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    // Its few short entries are never cut ("01 DME-2C" in Spanish was): the command box gives.
+    m_device->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
     m_header = new QComboBox(this);
     named(m_header, "headerCombo", tr("Header"));
     m_header->addItem(tr("R (read)"), QChar(QLatin1Char('R')));
