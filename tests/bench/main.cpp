@@ -6,6 +6,7 @@
 // subcommand's figures, one "name: value unit" per line.
 #include "benchsupport.h"
 #include "chartbench.h"
+#include "jointbench.h"
 #include "journalbench.h"
 #include "linkbench.h"
 #include "mqttbench.h"
@@ -36,6 +37,10 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runChartBench, true},
     {"journal", "journal inserts under polling, a year's file: size and queries (--rows N)",
      tipscope::bench::runJournalBench},
+    {"joints",
+     "joint detection: precision, recall, recovery error at two poll periods (--joints N, --noise "
+     "K)",
+     tipscope::bench::runJointBench},
     {"mqtt", "MQTT client: idle CPU and wake-ups, QoS 1 messages a second (--seconds N)",
      tipscope::bench::runMqttBench},
     {"replay", "reading recordings: speed and memory over file size (--mb N, --no-fifo)",
