@@ -1352,163 +1352,233 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="79"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="44"/>
+        <source>tip</source>
+        <translation>Lötspitze</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="44"/>
+        <source>P%1 tip</source>
+        <translation>P%1 Lötspitze</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="45"/>
+        <source>setpoint</source>
+        <translation>Sollwert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="46"/>
+        <source>P%1 setpoint</source>
+        <translation>P%1 Sollwert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="47"/>
+        <source>power</source>
+        <translation>Leistung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="48"/>
+        <source>P%1 power</source>
+        <translation>P%1 Leistung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="49"/>
+        <source>status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="50"/>
+        <source>P%1 status</source>
+        <translation>P%1 Status</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="51"/>
+        <source>fed length</source>
+        <translation>Vorgeschobene Länge</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="52"/>
+        <source>speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="53"/>
+        <source>feeding</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="54"/>
+        <source>transistor</source>
+        <translation>Transistor</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="55"/>
+        <source>P%1 transistor</source>
+        <translation>P%1 Transistor</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="56"/>
+        <source>transformer</source>
+        <translation>Transformator</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="103"/>
         <source>Tip</source>
         <translation>Lötspitze</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="81"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="105"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="83"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="107"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="85"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="109"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="87"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="111"/>
         <source>Fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="89"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="91"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="115"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="93"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="117"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="95"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="119"/>
         <source>Transformer</source>
         <translation>Transformator</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="115"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="131"/>
+        <source>P%1 %2</source>
+        <translation>P%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="150"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="130"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="165"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="159"/>
-        <source>P%1 </source>
-        <translation>P%1 </translation>
     </message>
 </context>
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="38"/>
+        <location filename="../app/cli/clicommands.cpp" line="39"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="61"/>
+        <location filename="../app/cli/clicommands.cpp" line="62"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="88"/>
+        <location filename="../app/cli/clicommands.cpp" line="91"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="99"/>
+        <location filename="../app/cli/clicommands.cpp" line="102"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="122"/>
+        <location filename="../app/cli/clicommands.cpp" line="125"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127"/>
+        <location filename="../app/cli/clicommands.cpp" line="130"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="135"/>
+        <location filename="../app/cli/clicommands.cpp" line="138"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="140"/>
+        <location filename="../app/cli/clicommands.cpp" line="143"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="178"/>
+        <location filename="../app/cli/clicommands.cpp" line="181"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="187"/>
+        <location filename="../app/cli/clicommands.cpp" line="190"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="200"/>
-        <location filename="../app/cli/clicommands.cpp" line="202"/>
+        <location filename="../app/cli/clicommands.cpp" line="203"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="205"/>
+        <location filename="../app/cli/clicommands.cpp" line="208"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="168"/>
-        <location filename="../app/cli/clicommands.cpp" line="214"/>
-        <location filename="../app/cli/clicommands.cpp" line="237"/>
+        <location filename="../app/cli/clicommands.cpp" line="171"/>
+        <location filename="../app/cli/clicommands.cpp" line="218"/>
+        <location filename="../app/cli/clicommands.cpp" line="241"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="230"/>
+        <location filename="../app/cli/clicommands.cpp" line="234"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="303"/>
+        <location filename="../app/cli/clicommands.cpp" line="307"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="326"/>
+        <location filename="../app/cli/clicommands.cpp" line="330"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="329"/>
+        <location filename="../app/cli/clicommands.cpp" line="333"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="330"/>
+        <location filename="../app/cli/clicommands.cpp" line="334"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="50"/>
+        <location filename="../app/cli/clicommands.cpp" line="51"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n Rohbyte, kein Telegramm (%1)</numerusform>
@@ -1516,7 +1586,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <location filename="../app/cli/clicommands.cpp" line="163"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 wurde nicht gesendet: seine Grenze %2 ließ sich nicht lesen: %3</translation>
     </message>
@@ -1552,7 +1622,12 @@
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="114"/>
+        <location filename="../app/cli/climonitor.cpp" line="107"/>
+        <source>reconnected to %1</source>
+        <translation>wieder verbunden mit %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="123"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -1826,6 +1901,19 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <location filename="../app/cli/clisession.cpp" line="162"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
+    </message>
+</context>
+<context>
+    <name>CliUnits</name>
+    <message>
+        <location filename="../app/cli/cliunits.cpp" line="44"/>
+        <source>&apos;%1&apos; is not a number; %2 takes %3</source>
+        <translation>„%1“ ist keine Zahl; %2 nimmt %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliunits.cpp" line="51"/>
+        <source>%1 takes steps of %2 %3</source>
+        <translation>%1 nimmt Schritte von %2 %3</translation>
     </message>
 </context>
 <context>
@@ -3428,29 +3516,34 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="30"/>
+        <location filename="../app/gui/main.cpp" line="45"/>
         <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
         <translation>JBC-Lötstationen und den SFR-Lotdrahtvorschub konfigurieren und überwachen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="36"/>
+        <location filename="../app/gui/main.cpp" line="51"/>
         <source>Start on the built-in simulated DME station and SFR feeder.</source>
         <translation>Mit der eingebauten simulierten DME-Station und dem SFR-Lotdrahtvorschub starten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="39"/>
+        <location filename="../app/gui/main.cpp" line="54"/>
         <source>Connect to this serial port.</source>
         <translation>Mit dieser seriellen Schnittstelle verbinden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="42"/>
+        <location filename="../app/gui/main.cpp" line="57"/>
         <source>Connect to a TCP serial server.</source>
         <translation>Mit einem seriellen TCP-Server verbinden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="46"/>
+        <location filename="../app/gui/main.cpp" line="61"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Ein PNG jeder Seite in DIR speichern, dann beenden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="66"/>
+        <source>tipscope: there is no display (neither DISPLAY nor WAYLAND_DISPLAY is set); start it on a desktop, or use tipscope-cli</source>
+        <translation>tipscope: es gibt keine Anzeige (weder DISPLAY noch WAYLAND_DISPLAY ist gesetzt); starten Sie es auf einem Desktop, oder verwenden Sie tipscope-cli</translation>
     </message>
 </context>
 <context>
@@ -3541,7 +3634,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="316"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="315"/>
         <source>No samples in this window</source>
         <translation>Keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -3828,160 +3921,160 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ConnectionBar</name>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="23"/>
-        <location filename="../app/gui/connectionbar.cpp" line="30"/>
+        <location filename="../app/gui/connectionbar.cpp" line="35"/>
+        <location filename="../app/gui/connectionbar.cpp" line="42"/>
         <source>Serial port</source>
         <translation>Serielle Schnittstelle</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="24"/>
-        <location filename="../app/gui/connectionbar.cpp" line="34"/>
+        <location filename="../app/gui/connectionbar.cpp" line="36"/>
+        <location filename="../app/gui/connectionbar.cpp" line="46"/>
         <source>TCP serial server</source>
         <translation>Serieller TCP-Server</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="25"/>
+        <location filename="../app/gui/connectionbar.cpp" line="37"/>
         <source>Demo (simulated DME + SFR)</source>
         <translation>Demo (simulierte DME + SFR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="26"/>
+        <location filename="../app/gui/connectionbar.cpp" line="38"/>
         <source>Connection type</source>
         <translation>Verbindungsart</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="31"/>
+        <location filename="../app/gui/connectionbar.cpp" line="43"/>
         <source>Serial ports on this computer; you may also type a device path</source>
         <translation>Serielle Schnittstellen dieses Computers; Sie können auch einen Gerätepfad eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="33"/>
+        <location filename="../app/gui/connectionbar.cpp" line="45"/>
         <source>host:port</source>
         <translation>Host:Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="38"/>
+        <location filename="../app/gui/connectionbar.cpp" line="50"/>
         <source>Baud rate</source>
         <translation>Baudrate</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="40"/>
+        <location filename="../app/gui/connectionbar.cpp" line="52"/>
         <source>no parity</source>
         <translation>keine Parität</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="41"/>
+        <location filename="../app/gui/connectionbar.cpp" line="53"/>
         <source>even</source>
         <translation>gerade</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="42"/>
+        <location filename="../app/gui/connectionbar.cpp" line="54"/>
         <source>odd</source>
         <translation>ungerade</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="44"/>
+        <location filename="../app/gui/connectionbar.cpp" line="56"/>
         <source>1 stop bit</source>
         <translation>1 Stoppbit</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="45"/>
+        <location filename="../app/gui/connectionbar.cpp" line="57"/>
         <source>2 stop bits</source>
         <translation>2 Stoppbits</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="47"/>
+        <location filename="../app/gui/connectionbar.cpp" line="59"/>
         <source>Find devices</source>
         <translation>Geräte suchen</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="48"/>
+        <location filename="../app/gui/connectionbar.cpp" line="60"/>
         <source>With addresses</source>
         <translation>Mit Adressen</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="49"/>
+        <location filename="../app/gui/connectionbar.cpp" line="61"/>
         <source>Without addresses</source>
         <translation>Ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="50"/>
+        <location filename="../app/gui/connectionbar.cpp" line="62"/>
         <source>Addressing</source>
         <translation>Adressierung</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="53"/>
+        <location filename="../app/gui/connectionbar.cpp" line="65"/>
         <source>robot </source>
         <translation>Roboter </translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="54"/>
+        <location filename="../app/gui/connectionbar.cpp" line="66"/>
         <source>Robot address</source>
         <translation>Roboteradresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="57"/>
+        <location filename="../app/gui/connectionbar.cpp" line="69"/>
         <source>device </source>
         <translation>Gerät </translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="58"/>
+        <location filename="../app/gui/connectionbar.cpp" line="70"/>
         <source>Device address</source>
         <translation>Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="59"/>
-        <location filename="../app/gui/connectionbar.cpp" line="167"/>
+        <location filename="../app/gui/connectionbar.cpp" line="71"/>
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
         <source>&amp;Connect</source>
         <translation>&amp;Verbinden</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="60"/>
+        <location filename="../app/gui/connectionbar.cpp" line="72"/>
         <source>&amp;Monitor only</source>
         <translation>Nur &amp;beobachten</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="61"/>
+        <location filename="../app/gui/connectionbar.cpp" line="73"/>
         <source>Block every write: watch a production line without risk</source>
         <translation>Sperrt jeden Schreibzugriff: eine Fertigungslinie ohne Risiko beobachten</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="93"/>
+        <location filename="../app/gui/connectionbar.cpp" line="105"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="167"/>
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Trennen</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="179"/>
+        <location filename="../app/gui/connectionbar.cpp" line="191"/>
         <source>Connected</source>
         <translation>Verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="184"/>
+        <location filename="../app/gui/connectionbar.cpp" line="196"/>
         <source>Connecting</source>
         <translation>Verbindung wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="184"/>
+        <location filename="../app/gui/connectionbar.cpp" line="196"/>
         <source>Detecting devices</source>
         <translation>Geräte werden erkannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="188"/>
+        <location filename="../app/gui/connectionbar.cpp" line="200"/>
         <source>Disconnected, retrying</source>
-        <translation>Getrennt, neuer Versuch läuft</translation>
+        <translation>Getrennt, neuer Versuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="192"/>
+        <location filename="../app/gui/connectionbar.cpp" line="204"/>
         <source>Cannot connect</source>
         <translation>Verbindung nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="195"/>
+        <location filename="../app/gui/connectionbar.cpp" line="207"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
@@ -5258,62 +5351,62 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="117"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="119"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
         <source>family %1</source>
         <translation>Familie %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="125"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="127"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
         <source>transformer %1</source>
         <translation>Transformator %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="139"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Stationsfehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
         <source>fed %1</source>
         <translation>vorgeschoben %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="154"/>
         <source>speed %1</source>
         <translation>Geschwindigkeit %1</translation>
     </message>
@@ -5323,22 +5416,22 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Übersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
         <source>not connected, as last read</source>
         <translation>nicht verbunden, wie zuletzt gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="171"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: noch nichts gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt um %1 gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="177"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="179"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>Nur-Beobachten ist an: die Robotersteuerung ist aus.</translation>
     </message>
@@ -5527,70 +5620,74 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PreferencesDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="24"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
         <source>Preferences</source>
         <translation>Optionen</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="26"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
         <source>Celsius (°C)</source>
         <translation>Celsius (°C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="27"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="33"/>
         <source>Fahrenheit (°F)</source>
         <translation>Fahrenheit (°F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="29"/>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="31"/>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="36"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="38"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
         <source>Follow the system</source>
         <translation>Systemsprache</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
         <source>Temperature unit:</source>
         <translation>Temperatureinheit:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="42"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="48"/>
         <source>Live values (visible ports) every:</source>
         <translation>Live-Werte (sichtbare Ports) alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
         <source>Errors, alarms and status every:</source>
         <translation>Fehler, Alarme und Status alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
         <source>Counters every:</source>
         <translation>Zähler alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="45"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Antwortzeit des Geräts (zur Übertragungszeit addiert):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="46"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Wiederholungen nach verlorener oder beschädigter Antwort:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
         <source>Language (on the next start):</source>
         <translation>Sprache (beim nächsten Start):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
         <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
         <translation>Auf der Leitung wird immer °C übertragen; die Einheit ändert nur, was Sie sehen und eingeben. Die Farben folgen dem Desktop-Design.</translation>
     </message>
@@ -5993,7 +6090,7 @@ Möchten Sie fortfahren?</translation>
     <message>
         <location filename="../lib/link/line.cpp" line="64"/>
         <source>connecting to %1</source>
-        <translation>Verbindung mit %1 wird aufgebaut</translation>
+        <translation>Verbindung wird aufgebaut: %1</translation>
     </message>
     <message>
         <location filename="../lib/link/line.cpp" line="66"/>

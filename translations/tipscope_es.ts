@@ -1352,163 +1352,233 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="79"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="44"/>
+        <source>tip</source>
+        <translation>punta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="44"/>
+        <source>P%1 tip</source>
+        <translation>P%1 punta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="45"/>
+        <source>setpoint</source>
+        <translation>consigna</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="46"/>
+        <source>P%1 setpoint</source>
+        <translation>P%1 consigna</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="47"/>
+        <source>power</source>
+        <translation>potencia</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="48"/>
+        <source>P%1 power</source>
+        <translation>P%1 potencia</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="49"/>
+        <source>status</source>
+        <translation>estado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="50"/>
+        <source>P%1 status</source>
+        <translation>P%1 estado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="51"/>
+        <source>fed length</source>
+        <translation>longitud alimentada</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="52"/>
+        <source>speed</source>
+        <translation>velocidad</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="53"/>
+        <source>feeding</source>
+        <translation>alimentando</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="54"/>
+        <source>transistor</source>
+        <translation>transistor</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="55"/>
+        <source>P%1 transistor</source>
+        <translation>P%1 transistor</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="56"/>
+        <source>transformer</source>
+        <translation>transformador</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="103"/>
         <source>Tip</source>
         <translation>Punta</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="81"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="105"/>
         <source>Setpoint</source>
         <translation>Consigna</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="83"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="107"/>
         <source>Power</source>
         <translation>Potencia</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="85"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="109"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="87"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="111"/>
         <source>Fed length</source>
         <translation>Longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="89"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
         <source>Speed</source>
         <translation>Velocidad</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="91"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="115"/>
         <source>Feeding</source>
         <translation>Alimentando</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="93"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="117"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="95"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="119"/>
         <source>Transformer</source>
         <translation>Transformador</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="115"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="131"/>
+        <source>P%1 %2</source>
+        <translation>P%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/chart/chartseries.cpp" line="150"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="130"/>
+        <location filename="../lib/model/chart/chartseries.cpp" line="165"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="159"/>
-        <source>P%1 </source>
-        <translation>P%1 </translation>
     </message>
 </context>
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="38"/>
+        <location filename="../app/cli/clicommands.cpp" line="39"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="61"/>
+        <location filename="../app/cli/clicommands.cpp" line="62"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="88"/>
+        <location filename="../app/cli/clicommands.cpp" line="91"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="99"/>
+        <location filename="../app/cli/clicommands.cpp" line="102"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="122"/>
+        <location filename="../app/cli/clicommands.cpp" line="125"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127"/>
+        <location filename="../app/cli/clicommands.cpp" line="130"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="135"/>
+        <location filename="../app/cli/clicommands.cpp" line="138"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="140"/>
+        <location filename="../app/cli/clicommands.cpp" line="143"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="178"/>
+        <location filename="../app/cli/clicommands.cpp" line="181"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="187"/>
+        <location filename="../app/cli/clicommands.cpp" line="190"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="200"/>
-        <location filename="../app/cli/clicommands.cpp" line="202"/>
+        <location filename="../app/cli/clicommands.cpp" line="203"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="205"/>
+        <location filename="../app/cli/clicommands.cpp" line="208"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="168"/>
-        <location filename="../app/cli/clicommands.cpp" line="214"/>
-        <location filename="../app/cli/clicommands.cpp" line="237"/>
+        <location filename="../app/cli/clicommands.cpp" line="171"/>
+        <location filename="../app/cli/clicommands.cpp" line="218"/>
+        <location filename="../app/cli/clicommands.cpp" line="241"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="230"/>
+        <location filename="../app/cli/clicommands.cpp" line="234"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="303"/>
+        <location filename="../app/cli/clicommands.cpp" line="307"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="326"/>
+        <location filename="../app/cli/clicommands.cpp" line="330"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="329"/>
+        <location filename="../app/cli/clicommands.cpp" line="333"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="330"/>
+        <location filename="../app/cli/clicommands.cpp" line="334"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="50"/>
+        <location filename="../app/cli/clicommands.cpp" line="51"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n byte en bruto, no es una trama (%1)</numerusform>
@@ -1516,7 +1586,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="160"/>
+        <location filename="../app/cli/clicommands.cpp" line="163"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 no se envió: no se pudo leer su límite %2: %3</translation>
     </message>
@@ -1552,7 +1622,12 @@
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="114"/>
+        <location filename="../app/cli/climonitor.cpp" line="107"/>
+        <source>reconnected to %1</source>
+        <translation>reconectado a %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="123"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
@@ -1828,6 +1903,19 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <location filename="../app/cli/clisession.cpp" line="162"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
+    </message>
+</context>
+<context>
+    <name>CliUnits</name>
+    <message>
+        <location filename="../app/cli/cliunits.cpp" line="44"/>
+        <source>&apos;%1&apos; is not a number; %2 takes %3</source>
+        <translation>«%1» no es un número; %2 admite %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliunits.cpp" line="51"/>
+        <source>%1 takes steps of %2 %3</source>
+        <translation>%1 admite pasos de %2 %3</translation>
     </message>
 </context>
 <context>
@@ -3430,29 +3518,34 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="30"/>
+        <location filename="../app/gui/main.cpp" line="45"/>
         <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
         <translation>Configure y supervise estaciones de soldadura JBC y el alimentador SFR.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="36"/>
+        <location filename="../app/gui/main.cpp" line="51"/>
         <source>Start on the built-in simulated DME station and SFR feeder.</source>
         <translation>Iniciar con la estación DME y el alimentador SFR simulados integrados.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="39"/>
+        <location filename="../app/gui/main.cpp" line="54"/>
         <source>Connect to this serial port.</source>
         <translation>Conectar a este puerto serie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="42"/>
+        <location filename="../app/gui/main.cpp" line="57"/>
         <source>Connect to a TCP serial server.</source>
         <translation>Conectar a un servidor serie TCP.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="46"/>
+        <location filename="../app/gui/main.cpp" line="61"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Guardar un PNG de cada página en DIR y salir.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="66"/>
+        <source>tipscope: there is no display (neither DISPLAY nor WAYLAND_DISPLAY is set); start it on a desktop, or use tipscope-cli</source>
+        <translation>tipscope: no hay pantalla (no están definidas DISPLAY ni WAYLAND_DISPLAY); inícielo en un escritorio, o use tipscope-cli</translation>
     </message>
 </context>
 <context>
@@ -3543,7 +3636,7 @@ Hágalo permanente con esta regla de udev:
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="316"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="315"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>
@@ -3830,160 +3923,160 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConnectionBar</name>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="23"/>
-        <location filename="../app/gui/connectionbar.cpp" line="30"/>
+        <location filename="../app/gui/connectionbar.cpp" line="35"/>
+        <location filename="../app/gui/connectionbar.cpp" line="42"/>
         <source>Serial port</source>
         <translation>Puerto serie</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="24"/>
-        <location filename="../app/gui/connectionbar.cpp" line="34"/>
+        <location filename="../app/gui/connectionbar.cpp" line="36"/>
+        <location filename="../app/gui/connectionbar.cpp" line="46"/>
         <source>TCP serial server</source>
         <translation>Servidor serie TCP</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="25"/>
+        <location filename="../app/gui/connectionbar.cpp" line="37"/>
         <source>Demo (simulated DME + SFR)</source>
         <translation>Demo (DME + SFR simulados)</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="26"/>
+        <location filename="../app/gui/connectionbar.cpp" line="38"/>
         <source>Connection type</source>
         <translation>Tipo de conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="31"/>
+        <location filename="../app/gui/connectionbar.cpp" line="43"/>
         <source>Serial ports on this computer; you may also type a device path</source>
         <translation>Puertos serie de este ordenador; también puede escribir la ruta de un dispositivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="33"/>
+        <location filename="../app/gui/connectionbar.cpp" line="45"/>
         <source>host:port</source>
         <translation>host:puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="38"/>
+        <location filename="../app/gui/connectionbar.cpp" line="50"/>
         <source>Baud rate</source>
         <translation>Velocidad en baudios</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="40"/>
+        <location filename="../app/gui/connectionbar.cpp" line="52"/>
         <source>no parity</source>
         <translation>sin paridad</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="41"/>
+        <location filename="../app/gui/connectionbar.cpp" line="53"/>
         <source>even</source>
         <translation>par</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="42"/>
+        <location filename="../app/gui/connectionbar.cpp" line="54"/>
         <source>odd</source>
         <translation>impar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="44"/>
+        <location filename="../app/gui/connectionbar.cpp" line="56"/>
         <source>1 stop bit</source>
         <translation>1 bit de parada</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="45"/>
+        <location filename="../app/gui/connectionbar.cpp" line="57"/>
         <source>2 stop bits</source>
         <translation>2 bits de parada</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="47"/>
+        <location filename="../app/gui/connectionbar.cpp" line="59"/>
         <source>Find devices</source>
         <translation>Buscar equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="48"/>
+        <location filename="../app/gui/connectionbar.cpp" line="60"/>
         <source>With addresses</source>
         <translation>Con direcciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="49"/>
+        <location filename="../app/gui/connectionbar.cpp" line="61"/>
         <source>Without addresses</source>
         <translation>Sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="50"/>
+        <location filename="../app/gui/connectionbar.cpp" line="62"/>
         <source>Addressing</source>
         <translation>Direccionamiento</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="53"/>
+        <location filename="../app/gui/connectionbar.cpp" line="65"/>
         <source>robot </source>
         <translation>robot </translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="54"/>
+        <location filename="../app/gui/connectionbar.cpp" line="66"/>
         <source>Robot address</source>
         <translation>Dirección del robot</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="57"/>
+        <location filename="../app/gui/connectionbar.cpp" line="69"/>
         <source>device </source>
         <translation>equipo </translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="58"/>
+        <location filename="../app/gui/connectionbar.cpp" line="70"/>
         <source>Device address</source>
         <translation>Dirección del equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="59"/>
-        <location filename="../app/gui/connectionbar.cpp" line="167"/>
+        <location filename="../app/gui/connectionbar.cpp" line="71"/>
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
         <source>&amp;Connect</source>
         <translation>&amp;Conectar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="60"/>
+        <location filename="../app/gui/connectionbar.cpp" line="72"/>
         <source>&amp;Monitor only</source>
         <translation>Solo &amp;supervisión</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="61"/>
+        <location filename="../app/gui/connectionbar.cpp" line="73"/>
         <source>Block every write: watch a production line without risk</source>
         <translation>Bloquea toda escritura: supervise una línea de producción sin riesgo</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="93"/>
+        <location filename="../app/gui/connectionbar.cpp" line="105"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="167"/>
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Desconectar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="179"/>
+        <location filename="../app/gui/connectionbar.cpp" line="191"/>
         <source>Connected</source>
         <translation>Conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="184"/>
+        <location filename="../app/gui/connectionbar.cpp" line="196"/>
         <source>Connecting</source>
         <translation>Conectando</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="184"/>
+        <location filename="../app/gui/connectionbar.cpp" line="196"/>
         <source>Detecting devices</source>
         <translation>Detectando equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="188"/>
+        <location filename="../app/gui/connectionbar.cpp" line="200"/>
         <source>Disconnected, retrying</source>
         <translation>Desconectado, reintentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="192"/>
+        <location filename="../app/gui/connectionbar.cpp" line="204"/>
         <source>Cannot connect</source>
         <translation>No se puede conectar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="195"/>
+        <location filename="../app/gui/connectionbar.cpp" line="207"/>
         <source>Disconnected</source>
         <translation>Desconectado</translation>
     </message>
@@ -5260,62 +5353,62 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="117"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="119"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
         <source>family %1</source>
         <translation>familia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="125"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="127"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
         <source>transformer %1</source>
         <translation>transformador %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="139"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Error de estación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>idle</source>
         <translation>en espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
         <source>fed %1</source>
         <translation>alimentado %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="154"/>
         <source>speed %1</source>
         <translation>velocidad %1</translation>
     </message>
@@ -5325,22 +5418,22 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Vista general</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
         <source>not connected, as last read</source>
         <translation>no conectado, según la última lectura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="171"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: aún no se ha leído nada. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: los valores en gris son los de la última lectura a las %1. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="177"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="179"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>El modo solo monitorización está activo: los mandos del robot están desactivados.</translation>
     </message>
@@ -5529,70 +5622,74 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PreferencesDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="24"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
         <source>Preferences</source>
         <translation>Preferencias</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="26"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
         <source>Celsius (°C)</source>
         <translation>Celsius (°C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="27"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="33"/>
         <source>Fahrenheit (°F)</source>
         <translation>Fahrenheit (°F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="29"/>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="31"/>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="36"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="38"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
         <source>Follow the system</source>
         <translation>Idioma del sistema</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
         <source>Temperature unit:</source>
         <translation>Unidad de temperatura:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="42"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="48"/>
         <source>Live values (visible ports) every:</source>
         <translation>Valores en tiempo real (puertos visibles) cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
         <source>Errors, alarms and status every:</source>
         <translation>Errores, alarmas y estado cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
         <source>Counters every:</source>
         <translation>Contadores cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="45"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Tiempo de respuesta del equipo (se suma al tiempo de transmisión):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="46"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Reintentos tras una respuesta perdida o dañada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
         <source>Language (on the next start):</source>
         <translation>Idioma (en el próximo inicio):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
         <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
         <translation>En la línea siempre viaja °C; la unidad solo cambia lo que ve y escribe. Los colores siguen el tema del escritorio.</translation>
     </message>
