@@ -1,5 +1,6 @@
 #include "clicommands.h"
 
+#include "cliunits.h"
 #include "protocol/elide.h"
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
@@ -65,6 +66,8 @@ QString formatReading(const ResolvedCommand &cmd, const QByteArray &data, bool r
     if ((k == ValueKind::Enum || k == ValueKind::Flags) && !value->isText &&
         !cmd.spec->special.contains(int(value->number)))
         return QStringLiteral("%1 %2 %3").arg(code).arg(value->number).arg(described);
+    if (shownConverted(cmd) && !value->isText && !cmd.spec->special.contains(int(value->number)))
+        return code + QLatin1Char(' ') + shownNumber(cmd, value->number);
     return code + QLatin1Char(' ') + described + unitSuffix(cmd, *value);
 }
 
@@ -206,7 +209,8 @@ int runWrite(CliSession &s) {
     } else if (cmd.spec->kind == ValueKind::Action && args.size() == 1) {
         data = cmd.spec->fixedData;
     } else {
-        wire = parseUserValue(cmd, args.value(1), &error);
+        wire = shownConverted(cmd) ? parseShown(cmd, args.value(1), &error)
+                                   : parseUserValue(cmd, args.value(1), &error);
         if (wire)
             data = encodeWrite(cmd, *wire, &error).value_or(QByteArray());
     }

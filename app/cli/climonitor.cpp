@@ -96,9 +96,18 @@ int runMonitor(CliSession &s) {
                       .arg(d.summary())
                       .toUtf8());
     }
-    QObject::connect(&s.line(), &Line::stateChanged, &s.line(), [&s](Line::State state) {
-        if (state == Line::State::Retrying || state == Line::State::Open)
+    // The line retries every second while it is down, and each attempt changes its state: the
+    // loss is said once, and so is the return.
+    QObject watching;
+    bool lost = false;
+    QObject::connect(&s.line(), &Line::stateChanged, &watching, [&s, &lost](Line::State state) {
+        if (state == Line::State::Retrying && !lost)
             s.err() << "# " << s.line().stateText() << Qt::endl;
+        else if (state == Line::State::Open && lost)
+            s.err() << "# " << Tr::tr("reconnected to %1").arg(s.line().transport().description())
+                    << Qt::endl;
+        if (state == Line::State::Retrying || state == Line::State::Open)
+            lost = state == Line::State::Retrying;
     });
     QElapsedTimer clock;
     clock.start();

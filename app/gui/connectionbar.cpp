@@ -15,6 +15,18 @@ namespace tipscope::gui {
 
 using namespace tipscope::model;
 
+namespace {
+// What follows the coloured state word. The session's and the line's texts stand alone in the
+// event log and in tipscope-cli, so they begin with the state ("disconnected, retrying every
+// 5 s: …"); after the bar's own word that would say it twice, so the repeated start is dropped
+// and the rest continues the sentence.
+QString detailAfter(const QString &label, const QString &text) {
+    if (text.startsWith(label, Qt::CaseInsensitive))
+        return text.mid(label.size());
+    return text.isEmpty() ? QString() : QStringLiteral(": ") + text;
+}
+} // namespace
+
 ConnectionBar::ConnectionBar(QWidget *parent)
     : QWidget(parent)
     , m_ports(new link::SerialPortList(QStringLiteral("/sys"), QStringLiteral("/dev/serial/by-id"),
@@ -195,9 +207,10 @@ void ConnectionBar::setState(Session::State state, const QString &text) {
         label = tr("Disconnected");
         break;
     }
-    m_state->setText(QStringLiteral("<span style='color:%1; font-weight:bold'>● %2</span> %3")
-                         .arg(colour, label, text.toHtmlEscaped()));
-    m_state->setAccessibleName(label + QStringLiteral(": ") + text);
+    const QString detail = detailAfter(label, text);
+    m_state->setText(QStringLiteral("<span style='color:%1; font-weight:bold'>● %2</span>%3")
+                         .arg(colour, label, detail.toHtmlEscaped()));
+    m_state->setAccessibleName(label + detail);
 }
 
 void ConnectionBar::setMonitorOnly(bool on) {

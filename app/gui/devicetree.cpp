@@ -1,6 +1,8 @@
 #include "devicetree.h"
 
 #include <QHeaderView>
+#include <QStyle>
+#include <QTreeWidgetItemIterator>
 
 namespace tipscope::gui {
 
@@ -17,6 +19,11 @@ DeviceTree::DeviceTree(Session &session, QWidget *parent)
     setHeaderHidden(true);
     setAccessibleName(tr("Devices"));
     setMinimumWidth(200);
+    // German labels are long ("SFR-A, Adresse 10 (Lotdrahtvorschub)") and so are some tools'
+    // names ("T245/T470 (TR245/TR470)"); the pages leave the tree no more width at 1280 px, so a
+    // label wraps at its spaces instead of being cut.
+    setWordWrap(true);
+    setTextElideMode(Qt::ElideNone);
     connect(&session, &Session::devicesChanged, this, &DeviceTree::rebuild);
     connect(&session, &Session::stateChanged, this, &DeviceTree::relabel);
     // A port's model changes with every live value; its label (tool, error) far more rarely.
@@ -93,6 +100,36 @@ void DeviceTree::relabel() {
             item->child(c)->setText(0, text);
         }
     }
+    fitLabels();
+}
+
+// QTreeView wraps a long label but keeps one line's height for its row, which hides the rest:
+// each row is given the height of its label wrapped to the width the tree has.
+void DeviceTree::fitLabels() {
+    const QFontMetrics metrics(font());
+    // The delegate's text margins, and two pixels more: a row a line too high beats a line cut.
+    const int margins =
+        2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, this) + 1) + 2;
+    for (QTreeWidgetItemIterator it(this); *it; ++it) {
+        QTreeWidgetItem *item = *it;
+        item->setToolTip(0, item->text(0)); // whole, wherever a single word is wider than the tree
+        int depth = 1;
+        for (const QTreeWidgetItem *p = item->parent(); p; p = p->parent())
+            ++depth;
+        const int width = qMax(1, viewport()->width() - indentation() * depth - margins);
+        const QRect text =
+            metrics.boundingRect(QRect(0, 0, width, 0), Qt::TextWordWrap, item->text(0));
+        const int lines = qMax(1, text.height() / metrics.lineSpacing());
+        const QSize hint =
+            lines > 1 ? QSize(text.width(), text.height() + metrics.height() / 2) : QSize();
+        if (item->sizeHint(0) != hint)
+            item->setSizeHint(0, hint);
+    }
+}
+
+void DeviceTree::resizeEvent(QResizeEvent *event) {
+    QTreeWidget::resizeEvent(event);
+    fitLabels(); // wider or narrower, a label takes fewer or more lines
 }
 
 } // namespace tipscope::gui

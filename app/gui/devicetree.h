@@ -1,5 +1,6 @@
 // DeviceTree: line -> station (model, address) -> ports (tool); feeder. Selecting an item
-// selects that device (and port) on every page. Labels follow the models live.
+// selects that device (and port) on every page. Labels follow the models live and are never cut:
+// a long one wraps at its spaces, and each label's tooltip carries its whole text.
 #pragma once
 
 #include "model/session.h"
@@ -20,9 +21,13 @@ public:
 Q_SIGNALS:
     void selectionChangedTo(tipscope::model::DeviceModel *device, int port);
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
     void rebuild();
     void relabel();
+    void fitLabels();
 
     static constexpr int kRelabelMs = 250;
 

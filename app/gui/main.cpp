@@ -8,13 +8,28 @@
 #include <QCommandLineParser>
 #include <QIcon>
 #include <QSettings>
+#include <QTextStream>
 #include <QTimer>
 #include <memory>
 
 using namespace tipscope::gui;
 using tipscope::model::AppSettings;
 
+namespace {
+// Over SSH there is no display, and Qt aborts without one before the command line is read. There
+// the offscreen platform stands in, so that what only prints (--help, --version, an option's
+// error) and --screenshots work; opening the window is refused with the reason.
+bool withoutDisplay() {
+    return qEnvironmentVariableIsEmpty("DISPLAY") &&
+           qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
+           qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+}
+} // namespace
+
 int main(int argc, char *argv[]) {
+    const bool headless = withoutDisplay();
+    if (headless)
+        qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("TipScope"));
     QApplication::setOrganizationName(QStringLiteral("TipScope"));
@@ -47,6 +62,14 @@ int main(int argc, char *argv[]) {
         QStringLiteral("DIR"));
     parser.addOptions({demo, port, tcp, shots});
     parser.process(app);
+    if (headless && !parser.isSet(shots)) {
+        QTextStream(stderr) << QApplication::translate(
+                                   "main", "tipscope: there is no display (neither DISPLAY nor "
+                                           "WAYLAND_DISPLAY is set); start it on a desktop, or "
+                                           "use tipscope-cli")
+                            << Qt::endl;
+        return 1;
+    }
 
     MainWindow window;
     window.show();

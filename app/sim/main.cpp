@@ -13,6 +13,7 @@
 #include <QTextStream>
 
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <unistd.h>
 
@@ -230,6 +231,34 @@ int main(int argc, char *argv[]) {
                         << (o.noAddr ? " without addresses" : " with addresses") << " on " << where
                         << Qt::endl;
 
+    // The endpoint's own commands, beside SimControl's; help lists both.
+    struct EndpointCommand {
+        QString verb;
+        std::function<QString()> run;
+    };
+    QList<EndpointCommand> endpointCommands;
+    if (pty) {
+        endpointCommands.append({QStringLiteral("unplug"), [&] {
+                                     pty->unplug();
+                                     return QStringLiteral("ok");
+                                 }});
+        endpointCommands.append({QStringLiteral("plug"), [&] {
+                                     return pty->plug(&error) ? pty->slavePath()
+                                                              : QStringLiteral("error: ") + error;
+                                 }});
+    }
+    const auto reply = [&](const QString &c) {
+        for (const EndpointCommand &e : endpointCommands)
+            if (c == e.verb)
+                return e.run();
+        if (c.section(QLatin1Char(' '), 0, 0) != QLatin1String("help"))
+            return executeSimCommand(*line, c);
+        QStringList verbs;
+        for (const EndpointCommand &e : endpointCommands)
+            verbs.append(e.verb);
+        return simCommandUsage(verbs);
+    };
+
     QSocketNotifier input(STDIN_FILENO, QSocketNotifier::Read);
     QObject::connect(&input, &QSocketNotifier::activated, &app, [&] {
         char buf[1024];
@@ -240,18 +269,8 @@ int main(int argc, char *argv[]) {
         }
         for (const QByteArray &cmd : QByteArray(buf, int(n)).split('\n')) {
             const QString c = QString::fromLocal8Bit(cmd).trimmed();
-            if (c.isEmpty())
-                continue;
-            QString reply;
-            if (c == QLatin1String("unplug") && pty) {
-                pty->unplug();
-                reply = QStringLiteral("ok");
-            } else if (c == QLatin1String("plug") && pty) {
-                reply = pty->plug(&error) ? pty->slavePath() : QStringLiteral("error: ") + error;
-            } else {
-                reply = executeSimCommand(*line, c);
-            }
-            out() << reply << Qt::endl;
+            if (!c.isEmpty())
+                out() << reply(c) << Qt::endl;
         }
     });
     return app.exec();

@@ -9,13 +9,48 @@ namespace tipscope::sim {
 
 namespace {
 
+enum class Handler { Station, Line, Feeder, Get, Stats, Help };
+
+struct CommandEntry {
+    const char *verb;
+    const char *arguments;
+    Handler handler;
+};
+
+// Every command executeSimCommand() accepts: the parser dispatches through this table and help
+// lists it, so a command cannot be accepted without being listed.
+constexpr CommandEntry kCommands[] = {
+    {"port-error", "PORT CODE", Handler::Station},
+    {"station-error", "CODE", Handler::Station},
+    {"tool", "PORT TOOL", Handler::Station},
+    {"alarm", "PORT FLAGS", Handler::Station},
+    {"status", "PORT STATUS", Handler::Station},
+    {"robot-mode", "on|off", Handler::Station},
+    {"fuse", "on|off", Handler::Station},
+    {"feeder-error", "CODE", Handler::Feeder},
+    {"drop", "SHARE", Handler::Line},
+    {"corrupt", "SHARE", Handler::Line},
+    {"garbage", "SHARE", Handler::Line},
+    {"bad-data", "SHARE", Handler::Line},
+    {"drop-requests", "SHARE", Handler::Line},
+    {"corrupt-requests", "SHARE", Handler::Line},
+    {"nak", "CODE [all|writes|COMMAND]", Handler::Line},
+    {"latency", "MS", Handler::Line},
+    {"pace", "BAUD", Handler::Line},
+    {"get", "[CODE...]", Handler::Get},
+    {"stats", "", Handler::Stats},
+    {"help", "", Handler::Help},
+};
+
+const CommandEntry *findCommand(const QString &verb) {
+    for (const CommandEntry &e : kCommands)
+        if (verb == QLatin1String(e.verb))
+            return &e;
+    return nullptr;
+}
+
 QString usage() {
-    return QStringLiteral(
-        "commands: port-error PORT CODE | station-error CODE | tool PORT TOOL | alarm PORT FLAGS "
-        "| status PORT STATUS | robot-mode on|off | fuse on|off | feeder-error CODE | drop SHARE "
-        "| corrupt SHARE | garbage SHARE | bad-data SHARE | drop-requests SHARE "
-        "| corrupt-requests SHARE | nak CODE [all|writes|COMMAND] | latency MS | pace BAUD "
-        "| get [CODE...] | stats");
+    return simCommandUsage({});
 }
 
 QString stats(const SimLine &line) {
@@ -161,6 +196,15 @@ QString applyLineCommand(SimLine &line, const QString &verb, Args &a) {
     return QStringLiteral("ok");
 }
 
+QString applyFeederCommand(SimLine &line, Args &a) {
+    SimFeeder *f = line.feeder();
+    const int code = a.integer(1);
+    if (!f || !a.ok)
+        return QStringLiteral("error: no feeder on this line, or a bad code");
+    f->setError(code);
+    return QStringLiteral("ok");
+}
+
 } // namespace
 
 bool parseNakScope(const QString &text, SimFaults *faults) {
@@ -180,38 +224,37 @@ bool parseNakScope(const QString &text, SimFaults *faults) {
     return true;
 }
 
+QString simCommandUsage(const QStringList &more) {
+    QStringList forms;
+    for (const CommandEntry &e : kCommands)
+        forms.append(
+            QString::fromLatin1(e.verb) +
+            (*e.arguments ? QLatin1Char(' ') + QString::fromLatin1(e.arguments) : QString()));
+    return QStringLiteral("commands: ") + (forms + more).join(QLatin1String(" | "));
+}
+
 QString executeSimCommand(SimLine &line, const QString &command) {
     Args a{command.simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts)};
     const QString verb = a.words.value(0);
-    static const QStringList stationVerbs = {
-        QStringLiteral("port-error"), QStringLiteral("station-error"), QStringLiteral("tool"),
-        QStringLiteral("alarm"),      QStringLiteral("status"),        QStringLiteral("robot-mode"),
-        QStringLiteral("fuse")};
-    static const QStringList lineVerbs = {
-        QStringLiteral("drop"),          QStringLiteral("corrupt"),
-        QStringLiteral("garbage"),       QStringLiteral("bad-data"),
-        QStringLiteral("drop-requests"), QStringLiteral("corrupt-requests"),
-        QStringLiteral("nak"),           QStringLiteral("latency"),
-        QStringLiteral("pace")};
-    if (verb.isEmpty() || verb == QLatin1String("help"))
+    const CommandEntry *entry =
+        verb.isEmpty() ? findCommand(QStringLiteral("help")) : findCommand(verb);
+    if (!entry)
+        return QStringLiteral("error: unknown command '%1'; ").arg(verb) + usage();
+    switch (entry->handler) {
+    case Handler::Help:
         return usage();
-    if (verb == QLatin1String("stats"))
+    case Handler::Stats:
         return stats(line);
-    if (verb == QLatin1String("get"))
+    case Handler::Get:
         return storedSettings(line, a.words.mid(1));
-    if (stationVerbs.contains(verb))
+    case Handler::Station:
         return applyStationCommand(line, verb, a);
-    if (lineVerbs.contains(verb))
+    case Handler::Line:
         return applyLineCommand(line, verb, a);
-    if (verb == QLatin1String("feeder-error")) {
-        SimFeeder *f = line.feeder();
-        const int code = a.integer(1);
-        if (!f || !a.ok)
-            return QStringLiteral("error: no feeder on this line, or a bad code");
-        f->setError(code);
-        return QStringLiteral("ok");
+    case Handler::Feeder:
+        return applyFeederCommand(line, a);
     }
-    return QStringLiteral("error: unknown command '%1'; ").arg(verb) + usage();
+    return usage();
 }
 
 } // namespace tipscope::sim

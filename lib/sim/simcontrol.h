@@ -6,6 +6,8 @@
 //   drop SHARE   corrupt SHARE   garbage SHARE   bad-data SHARE   drop-requests SHARE
 //   corrupt-requests SHARE   nak CODE [all|writes|COMMAND]   latency MS   pace BAUD
 //   get [CODE...]           stats                  help
+// One table holds them: what help lists is what is accepted (simCommandUsage() adds a front
+// end's own commands, such as tipscope-sim's unplug and plug).
 // execute() returns the reply line; an unknown or malformed command gets a reply that starts
 // with "error:" and changes nothing.
 #pragma once
@@ -17,6 +19,8 @@
 namespace tipscope::sim {
 
 [[nodiscard]] QString executeSimCommand(SimLine &line, const QString &command);
+// "commands: port-error PORT CODE | … | help", then `more` (a front end's own commands).
+[[nodiscard]] QString simCommandUsage(const QStringList &more);
 // What a NAK fault applies to: "all", "writes" or a command ("ST1", any case). Sets `faults`'
 // nakFor and nakCommand; false for anything else.
 [[nodiscard]] bool parseNakScope(const QString &text, SimFaults *faults);

@@ -7,11 +7,15 @@
 #include "pages/settingspage.h"
 #include "widgets/parametereditor.h"
 
+#include "i18n/translations.h"
 #include "link/simtransport.h"
 #include "sim/simline.h"
 
 #include <QSettings>
+#include <QStyle>
 #include <QTabWidget>
+#include <QTranslator>
+#include <QTreeWidgetItemIterator>
 #include <QtTest>
 
 using namespace tipscope;
@@ -29,6 +33,7 @@ private Q_SLOTS:
     void robotControlsSetStatusAndSetpoint();
     void unplugShowsRetryingAndRecovers();
     void badConnectionSettingsAreRefusedWithAReason();
+    void germanDeviceTreeLabelsAreShownWholeAt1280();
 
 private:
     void connectDemo(MainWindow &w);
@@ -153,6 +158,42 @@ void TestMainWindow::badConnectionSettingsAreRefusedWithAReason() {
     QTRY_VERIFY_WITH_TIMEOUT(
         w.connectionBar().stateText().contains(QStringLiteral("no such port"), Qt::CaseInsensitive),
         5000);
+}
+
+// German device labels are long ("SFR-A, Adresse 10 (Lotdrahtvorschub)") and so are some tools'
+// names: at 1280 px each label is shown whole, on as many lines as it takes, and is its tooltip.
+void TestMainWindow::germanDeviceTreeLabelsAreShownWholeAt1280() {
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), QStringLiteral("de")),
+             QStringLiteral("de"));
+    {
+        MainWindow w;
+        w.resize(1280, 720);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        connectDemo(w);
+        DeviceTree &tree = w.deviceTree();
+        QTreeWidgetItem *station = tree.topLevelItem(0)->child(0);
+        QTRY_VERIFY_WITH_TIMEOUT(station->child(1)->text(0).contains(QStringLiteral("TR245")),
+                                 10000);
+        QTest::qWait(300); // the relabelled rows laid out
+        const QFontMetrics metrics(tree.font());
+        const int margins =
+            2 * (tree.style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, &tree) + 1);
+        for (QTreeWidgetItemIterator it(&tree); *it; ++it) {
+            const QString text = (*it)->text(0);
+            const QRect cell = tree.visualItemRect(*it);
+            const QRect needed = metrics.boundingRect(QRect(0, 0, cell.width() - margins, 0),
+                                                      Qt::TextWordWrap, text);
+            QVERIFY2(cell.height() >= needed.height() && needed.width() <= cell.width() - margins,
+                     qPrintable(QStringLiteral("%1: %2 px high, needs %3")
+                                    .arg(text)
+                                    .arg(cell.height())
+                                    .arg(needed.height())));
+        }
+        for (QTreeWidgetItemIterator it(&tree); *it; ++it)
+            QCOMPARE((*it)->toolTip(0), (*it)->text(0));
+    }
+    qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
 }
 
 QTEST_MAIN(TestMainWindow)

@@ -40,6 +40,7 @@ private Q_SLOTS:
     void theCardsShareTheHeightAndTheirSparklinesDrawTheLastMinute();
     void fourPortsFitWithoutScrollingAt1280x720();
     void aSetpointOutOfRangeIsRefusedNotClamped();
+    void theTransformerTemperatureFollowsTheTemperatureUnit();
 
 private:
     void connectDemo();
@@ -50,6 +51,20 @@ private:
     std::unique_ptr<Session> m_session;
     std::unique_ptr<OverviewPage> m_page;
 };
+
+// The transformer's temperature converts with the unit as the tips' do, even when no new value
+// comes: here the line is down, so nothing is read after the change.
+void TestOverviewPage::theTransformerTemperatureFollowsTheTemperatureUnit() {
+    connectDemo();
+    QTRY_VERIFY_WITH_TIMEOUT(m_page->stationText().contains(QStringLiteral("°C")), kConnectMs);
+    transport().setPlugged(false);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_session->station()->isLineUp(), kConnectMs);
+    m_session->setTemperatureUnit(TemperatureUnit::Fahrenheit);
+    QVERIFY2(m_page->stationText().contains(QStringLiteral("°F")) &&
+                 !m_page->stationText().contains(QStringLiteral("°C")),
+             qPrintable(m_page->stationText()));
+    QVERIFY(m_page->card(1)->tipText().contains(QStringLiteral("°F")));
+}
 
 void TestOverviewPage::init() {
     m_session = std::make_unique<Session>();

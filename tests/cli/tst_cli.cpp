@@ -28,6 +28,7 @@ private Q_SLOTS:
     void readPrintsValuesWithUnits();
     void writeIsReadBackAndTheSimulatorHoldsTheValue();
     void negativeValuesAndCommandOptionsAfterTheCommandParse();
+    void feederLengthsAndSpeedsAreInMillimetres();
     void refusedValueNeverReachesTheWire();
     void nakIsExitThreeWithTheCodesMeaning();
     void garbageBeforeAnswersIsSkipped();
@@ -36,7 +37,7 @@ private Q_SLOTS:
     void nonexistentPortIsExitFiveWithAReason();
     void aPortPathWithASlashIsTakenFromTheCurrentFolder();
     void sendPrintsTheAnswerInHexAndDecoded();
-    void monitorSurvivesAnUnplugAndResumes();
+    void monitorSurvivesAnUnplugAndResumesSayingSoOnce();
     void usageErrorsAreExitOne();
     void profileSavesDiffsAndAppliesWithReadBack();
 
@@ -85,7 +86,7 @@ void TestCli::readPrintsValuesWithUnits() {
     const Run r = runCli({"--port", port, "read", "ST2", "HD1", "D12", "CT1", "LEN", "SMN"});
     QCOMPARE(r.exitCode, 0);
     QCOMPARE(r.out.split('\n'), QStringList({"ST2 350 °C", "HD1 disabled", "D12 0 min",
-                                             "CT1 1 T210", "LEN 200 dmm", "SMN DME-2C", ""}));
+                                             "CT1 1 T210", "LEN 20.0 mm", "SMN DME-2C", ""}));
     const Run raw = runCli({"--port", port, "--addr", "00:01", "read", "--raw", "ST2"});
     QCOMPARE(raw.out, QStringLiteral("ST2 00350\n"));
 }
@@ -112,7 +113,40 @@ void TestCli::negativeValuesAndCommandOptionsAfterTheCommandParse() {
     QCOMPARE(a.out, QStringLiteral("A12 -50 °C (verified)\n"));
     const Run len = runCli({"--port", port, "write", "LEN", "--raw", "00150"});
     QCOMPARE(len.exitCode, 0);
-    QCOMPARE(len.out, QStringLiteral("LEN 150 dmm (verified)\n"));
+    QCOMPARE(len.out, QStringLiteral("LEN 15.0 mm (verified)\n"));
+}
+
+// Lengths and speeds read and are written in mm and mm/s, as the GUI shows them; the wire still
+// carries tenths of a millimetre, and a value finer than that is refused, not rounded.
+void TestCli::feederLengthsAndSpeedsAreInMillimetres() {
+    const QString port = startSim({"--model", "DME", "--feeder"});
+    QVERIFY(!port.isEmpty());
+    const Run r = runCli({"--port", port, "read", "LEN", "SPD", "FDL"});
+    QCOMPARE(r.exitCode, 0);
+    const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 3);
+    QVERIFY2(lines.at(0) == QStringLiteral("LEN 20.0 mm"), qPrintable(r.out));
+    QVERIFY2(
+        QRegularExpression(QStringLiteral("^SPD \\d+\\.\\d mm/s$")).match(lines.at(1)).hasMatch(),
+        qPrintable(r.out));
+    QVERIFY2(
+        QRegularExpression(QStringLiteral("^FDL \\d+\\.\\d mm$")).match(lines.at(2)).hasMatch(),
+        qPrintable(r.out));
+    for (const QStringList &typed : {QStringList{"LEN", "12.5"}, QStringList{"LEN", "12.5mm"}}) {
+        const Run w = runCli(QStringList{"--port", port, "write"} + typed);
+        QCOMPARE(w.exitCode, 0);
+        QCOMPARE(w.out, QStringLiteral("LEN 12.5 mm (verified)\n"));
+    }
+    QCOMPARE(runCli({"--port", port, "--addr", "00:10", "read", "--raw", "LEN"}).out,
+             QStringLiteral("LEN 00125\n"));
+    const Run speed = runCli({"--port", port, "write", "SPD", "7.5"});
+    QCOMPARE(speed.exitCode, 0);
+    QCOMPARE(speed.out, QStringLiteral("SPD 7.5 mm/s (verified)\n"));
+    const Run finer = runCli({"--port", port, "write", "LEN", "12.55"});
+    QCOMPARE(finer.exitCode, 2);
+    QVERIFY2(finer.err.contains(QStringLiteral("nothing was sent")), qPrintable(finer.err));
+    QCOMPARE(runCli({"--port", port, "--addr", "00:10", "read", "--raw", "LEN"}).out,
+             QStringLiteral("LEN 00125\n"));
 }
 
 void TestCli::refusedValueNeverReachesTheWire() {
@@ -205,7 +239,7 @@ void TestCli::sendPrintsTheAnswerInHexAndDecoded() {
     QCOMPARE(bad.exitCode, 2);
 }
 
-void TestCli::monitorSurvivesAnUnplugAndResumes() {
+void TestCli::monitorSurvivesAnUnplugAndResumesSayingSoOnce() {
     QTemporaryDir dir;
     const QString link = dir.filePath(QStringLiteral("station"));
     SimProcess sim;
@@ -215,17 +249,20 @@ void TestCli::monitorSurvivesAnUnplugAndResumes() {
     QProcess cli;
     cli.start(binaryPath(QStringLiteral("tipscope-cli")),
               {"--port", link, "--addr", "00:01", "--timeout", "50", "monitor", "--interval", "200",
-               "--duration", "7"});
+               "--duration", "9"});
     QVERIFY(cli.waitForStarted());
     QTest::qWait(1500);
     QCOMPARE(sim.command(QStringLiteral("unplug")), QStringLiteral("ok"));
-    QTest::qWait(1500);
+    QTest::qWait(3500); // the line retries every second meanwhile
     QVERIFY(sim.command(QStringLiteral("plug")).startsWith(QStringLiteral("/dev/pts/")));
     QVERIFY(cli.waitForFinished(20000));
     const QString out = QString::fromUtf8(cli.readAllStandardOutput());
     const QString err = QString::fromUtf8(cli.readAllStandardError());
     QCOMPARE(cli.exitCode(), 0);
     QVERIFY2(err.contains(QStringLiteral("retrying")), qPrintable(err));
+    // Said once each, not at every retry.
+    QVERIFY2(err.count(QStringLiteral("# disconnected")) == 1, qPrintable(err));
+    QVERIFY2(err.count(QStringLiteral("# reconnected to ")) == 1, qPrintable(err));
     const QStringList lines = out.split('\n', Qt::SkipEmptyParts);
     QVERIFY(lines.size() > 10);
     QVERIFY2(lines.last().contains(QStringLiteral("/350 °C")), qPrintable(lines.last()));

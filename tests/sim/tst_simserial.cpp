@@ -84,6 +84,7 @@ private Q_SLOTS:
     void tcpServesRawFrames();
     void tcpClientThatNeverReadsCostsABoundedBuffer();
     void pacedJunkDoesNotSilenceTheSimulator();
+    void helpListsEveryCommandThePtySimulatorAccepts();
 
 private:
     void withSocatSim(const QStringList &simArgs, const QList<Step> &script);
@@ -168,6 +169,29 @@ void TestSimSerial::ownPtyServesAPlainSerialClient() {
     runScript(port, {{rd("SMN", 1), "ADME-2C"}, {rd("SMN", 10), "ASFR-A"}});
     QCOMPARE(sim.command(QStringLiteral("port-error 1 3")), QStringLiteral("ok"));
     runScript(port, {{rd("PE1", 1), "A00003"}});
+}
+
+// What help lists is accepted, and what the PTY simulator accepts beside SimControl's commands
+// (unplug, plug) is listed. A bare listed verb may be refused for its missing arguments, never as
+// an unknown command.
+void TestSimSerial::helpListsEveryCommandThePtySimulatorAccepts() {
+    SimProcess sim;
+    QString error;
+    const QString path = sim.start(
+        {QStringLiteral("--model"), QStringLiteral("DME"), QStringLiteral("--feeder")}, &error);
+    QVERIFY2(path.startsWith(QStringLiteral("/dev/pts/")), qPrintable(error + path));
+    const QString help = sim.command(QStringLiteral("help"));
+    QVERIFY2(help.startsWith(QStringLiteral("commands: ")), qPrintable(help));
+    QStringList verbs;
+    for (const QString &form : help.mid(10).split(QStringLiteral(" | ")))
+        verbs.append(form.section(QLatin1Char(' '), 0, 0));
+    for (const char *needed : {"port-error", "nak", "get", "stats", "help", "unplug", "plug"})
+        QVERIFY2(verbs.contains(QLatin1String(needed)), qPrintable(needed + (": " + help)));
+    for (const QString &verb : verbs) {
+        const QString reply = sim.command(verb);
+        QVERIFY2(!reply.startsWith(QStringLiteral("error: unknown command")),
+                 qPrintable(verb + QStringLiteral(": ") + reply));
+    }
 }
 
 void TestSimSerial::tcpServesRawFrames() {

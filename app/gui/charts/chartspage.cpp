@@ -280,8 +280,7 @@ QList<ChartSeriesStyle> ChartsPage::overlaidLegend(const QList<ChartChannel> &cs
         if (kinds.contains(t.series))
             continue;
         kinds.append(t.series);
-        legend.append(
-            {seriesTitle(t.series).toLower(), QColor(0x60, 0x60, 0x60), t.style, t.format.axis});
+        legend.append({traceName(t.series, 0), QColor(0x60, 0x60, 0x60), t.style, t.format.axis});
     }
     return legend;
 }

@@ -10,6 +10,12 @@ namespace tipscope::gui {
 
 using namespace tipscope::model;
 
+// Counters change slowly and are polled every minute or so: that interval reads in seconds
+// ("60 s"), and is stored in milliseconds as before.
+static int wholeSeconds(int ms) {
+    return qMax(1, (ms + 500) / 1000);
+}
+
 static QSpinBox *spin(QWidget *parent, int lo, int hi, int value, const QString &suffix) {
     auto *s = new QSpinBox(parent);
     s->setRange(lo, hi);
@@ -28,7 +34,7 @@ PreferencesDialog::PreferencesDialog(const AppSettings &settings, QWidget *paren
     m_unit->setCurrentIndex(m_unit->findData(int(settings.unit)));
     m_live = spin(this, 50, 60000, settings.liveMs, tr(" ms"));
     m_status = spin(this, 100, 600000, settings.statusMs, tr(" ms"));
-    m_counters = spin(this, 1000, 3600000, settings.counterMs, tr(" ms"));
+    m_counters = spin(this, 1, 3600, wholeSeconds(settings.counterMs), tr(" s"));
     m_turnaround = spin(this, 5, 10000, settings.turnaroundMs, tr(" ms"));
     m_retries = spin(this, 0, 10, settings.retries, QString());
     m_language = new QComboBox(this);
@@ -62,7 +68,9 @@ AppSettings PreferencesDialog::result() const {
     a.unit = TemperatureUnit(m_unit->currentData().toInt());
     a.liveMs = m_live->value();
     a.statusMs = m_status->value();
-    a.counterMs = m_counters->value();
+    // A stored value that is not whole seconds stays as it is unless the field was changed.
+    if (m_counters->value() != wholeSeconds(m_base.counterMs))
+        a.counterMs = m_counters->value() * 1000;
     a.turnaroundMs = m_turnaround->value();
     a.retries = m_retries->value();
     a.language = m_language->currentData().toString();

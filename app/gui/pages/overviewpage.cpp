@@ -85,6 +85,8 @@ void OverviewPage::rebuild() {
         for (Role role : {Role::Error, Role::TransformerTemperature, Role::Fuse})
             if (Parameter *p = st->parameter(role))
                 connect(p, &Parameter::valueChanged, this, &OverviewPage::refreshStation);
+        // A steady transformer temperature sends no new value: the unit's change redraws it.
+        connect(st, &DeviceModel::temperatureUnitChanged, this, &OverviewPage::refreshStation);
     }
     for (DeviceModel *d : m_session.devices()) {
         connect(d, &DeviceModel::lineUpChanged, this, &OverviewPage::updateWritesAllowed,

@@ -32,6 +32,30 @@ QString wireUnit(const QString &series) {
     return {};
 }
 
+// A curve's name in a legend, whole per language: German writes its nouns capitalised
+// ("P1 Lötspitze") where English writes "P1 tip", so neither is made from the title by
+// lower-casing it and putting "P1" before it.
+struct TraceNames {
+    const char *series;
+    const char *alone;  // a feeder's curve, the station's transformer, a kind of curve
+    const char *onPort; // nullptr: the curve is never a port's
+};
+constexpr TraceNames kTraceNames[] = {
+    {"tip", QT_TRANSLATE_NOOP("ChartSeries", "tip"), QT_TRANSLATE_NOOP("ChartSeries", "P%1 tip")},
+    {"setpoint", QT_TRANSLATE_NOOP("ChartSeries", "setpoint"),
+     QT_TRANSLATE_NOOP("ChartSeries", "P%1 setpoint")},
+    {"power", QT_TRANSLATE_NOOP("ChartSeries", "power"),
+     QT_TRANSLATE_NOOP("ChartSeries", "P%1 power")},
+    {"status", QT_TRANSLATE_NOOP("ChartSeries", "status"),
+     QT_TRANSLATE_NOOP("ChartSeries", "P%1 status")},
+    {"fed", QT_TRANSLATE_NOOP("ChartSeries", "fed length"), nullptr},
+    {"speed", QT_TRANSLATE_NOOP("ChartSeries", "speed"), nullptr},
+    {"feeding", QT_TRANSLATE_NOOP("ChartSeries", "feeding"), nullptr},
+    {"transistor", QT_TRANSLATE_NOOP("ChartSeries", "transistor"),
+     QT_TRANSLATE_NOOP("ChartSeries", "P%1 transistor")},
+    {"transformer", QT_TRANSLATE_NOOP("ChartSeries", "transformer"), nullptr},
+};
+
 std::optional<qint64> numberOf(const Parameter *p) {
     return p ? p->number() : std::nullopt;
 }
@@ -96,6 +120,17 @@ QString seriesTitle(const QString &series) {
     return series;
 }
 
+QString traceName(const QString &series, int port) {
+    for (const TraceNames &n : kTraceNames) {
+        if (series != QLatin1String(n.series))
+            continue;
+        if (port == 0 || !n.onPort)
+            return QCoreApplication::translate("ChartSeries", n.alone);
+        return QCoreApplication::translate("ChartSeries", n.onPort).arg(port);
+    }
+    return port == 0 ? series : Tr::tr("P%1 %2").arg(port).arg(series);
+}
+
 QList<ChartChannel> sessionChannels(Session &session) {
     QList<ChartChannel> out;
     const auto describe = [](const DeviceModel &d, ChartChannel &c) {
@@ -156,9 +191,8 @@ QList<ChartTrace> tracesFor(const QList<ChartChannel> &channels, const QList<int
     for (int index : which) {
         const ChartChannel &c = channels.at(index);
         const QColor base = c.isFeeder() ? portColor(1) : portColor(c.port);
-        const QString prefix = c.isFeeder() ? QString() : Tr::tr("P%1 ").arg(c.port);
         for (const QString &series : c.series) {
-            ChartTrace t{index, series,        prefix + seriesTitle(series).toLower(),
+            ChartTrace t{index, series,        traceName(series, c.port),
                          base,  Qt::SolidLine, seriesFormat(series, unit)};
             if (!t.format.plotted || (isHardwareSeries(series) && !hardware))
                 continue;
@@ -166,7 +200,7 @@ QList<ChartTrace> tracesFor(const QList<ChartChannel> &channels, const QList<int
                 if (transformers.contains(c.address))
                     continue;
                 transformers.insert(c.address);
-                t.name = seriesTitle(series).toLower();
+                t.name = traceName(series, 0);
                 t.color = QColor(0x55, 0x55, 0x55);
                 t.style = Qt::DashDotDotLine;
             } else if (series == QLatin1String("transistor")) {

@@ -43,6 +43,9 @@ struct SeriesFormat {
 [[nodiscard]] SeriesFormat seriesFormat(const QString &series, TemperatureUnit unit);
 // The person-readable name of a series ("Tip", "Setpoint", "Power", "Fed length"...).
 [[nodiscard]] QString seriesTitle(const QString &series);
+// A curve's name in a legend, a whole phrase in each language: "P1 tip" on port 1, "tip" for a
+// kind of curve, a feeder's or the station's transformer (port 0).
+[[nodiscard]] QString traceName(const QString &series, int port);
 
 struct ChartChannel {
     TelemetryKey key;        // its history (TelemetryRecorder::keyOf(); the id in a replay)

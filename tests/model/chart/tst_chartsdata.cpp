@@ -5,8 +5,11 @@
 #include "model/chart/chartframe.h"
 #include "model/chart/chartviewport.h"
 
+#include "i18n/translations.h"
+
 #include <QSignalSpy>
 #include <QTest>
+#include <QTranslator>
 #include <random>
 
 using namespace tipscope;
@@ -42,6 +45,8 @@ private Q_SLOTS:
     void aCurveIsNeverDrawnAcrossAGapAndTheReadoutThereIsBlank_data();
     void aCurveIsNeverDrawnAcrossAGapAndTheReadoutThereIsBlank();
     void hardwareTemperaturesAreTracedOnlyWhenAskedAndTheTransformerOnce();
+    void legendNamesAreWholePhrasesInEachLanguage_data();
+    void legendNamesAreWholePhrasesInEachLanguage();
     void followingWindowMovesWithTheData();
     void theFirstMinutesFillTheViewUntilTheWindowIsFull();
     void zoomKeepsTheInstantUnderTheCursorAndStopsFollowing();
@@ -212,6 +217,50 @@ void TestChartsData::hardwareTemperaturesAreTracedOnlyWhenAskedAndTheTransformer
     QVERIFY(on.contains(QStringLiteral("P1 transistor °F")));
     QVERIFY(on.contains(QStringLiteral("P2 transistor °F")));
     QCOMPARE(on.count(QStringLiteral("transformer °F")), 1);
+}
+
+void TestChartsData::legendNamesAreWholePhrasesInEachLanguage_data() {
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<bool>("nounsCapitalised");
+    QTest::newRow("German") << "de" << true;
+    QTest::newRow("Spanish") << "es" << false;
+    QTest::newRow("English") << "en" << false;
+}
+
+// German nouns keep their capital in a legend ("P1 Lötspitze", not "P1 lötspitze"), where English
+// and Spanish write the same names in lower case ("P1 tip", "P1 punta").
+void TestChartsData::legendNamesAreWholePhrasesInEachLanguage() {
+    QFETCH(QString, language);
+    QFETCH(bool, nounsCapitalised);
+    QList<ChartChannel> channels(2);
+    channels[0].port = 1;
+    channels[0].series =
+        kPortSeries + QStringList{QStringLiteral("transistor"), QStringLiteral("transformer")};
+    channels[1].series = {QStringLiteral("fed"), QStringLiteral("speed")};
+    const QList<ChartTrace> english =
+        tracesFor(channels, {0, 1}, model::TemperatureUnit::Celsius, true);
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), language), language);
+    const QList<ChartTrace> shown =
+        tracesFor(channels, {0, 1}, model::TemperatureUnit::Celsius, true);
+    QStringList kinds;
+    for (const QString &series : channels[0].series + channels[1].series)
+        kinds.append(traceName(series, 0));
+    qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
+
+    QCOMPARE(shown.size(), english.size());
+    QCOMPARE(english.first().name, QStringLiteral("P1 tip"));
+    QStringList names = kinds;
+    for (const ChartTrace &t : shown)
+        names.append(t.name);
+    for (const QString &name : names) {
+        const QString words =
+            name.startsWith(QLatin1String("P1 ")) ? name.mid(3) : name; // after the port
+        QVERIFY2(!words.isEmpty(), qPrintable(name));
+        if (nounsCapitalised)
+            QVERIFY2(words.at(0).isUpper(), qPrintable(name));
+        else
+            QVERIFY2(words.at(0).isLower(), qPrintable(name));
+    }
 }
 
 void TestChartsData::followingWindowMovesWithTheData() {

@@ -1,0 +1,24 @@
+// How tipscope-cli shows and reads lengths and speeds: in the units the GUI shows ("25.0 mm",
+// "12.5 mm/s", not "250 dmm"), through the GUI's own conversion (model::displayFormat), with the
+// C locale's point, because this is data for scripts. Everything else is shown as the catalog
+// writes it (temperatures in °C, power in ‰, delays in s, minutes, enums).
+#pragma once
+
+#include "protocol/catalog.h"
+
+#include <QString>
+#include <optional>
+
+namespace tipscope::cli {
+
+// Whether `cmd` is a length or a speed, shown converted from the wire's unit (dmm, cmm, dmm/s).
+[[nodiscard]] bool shownConverted(const protocol::ResolvedCommand &cmd);
+// "25.0 mm" for a wire value of 250 dmm.
+[[nodiscard]] QString shownNumber(const protocol::ResolvedCommand &cmd, qint64 wire);
+// The wire value of what a person typed in the shown unit ("25", "25.0", "25.0 mm") or of a
+// special value's name; nullopt with the reason in `error`. A value finer than the unit's step
+// is refused, not rounded: nothing is written that was not typed.
+[[nodiscard]] std::optional<qint64> parseShown(const protocol::ResolvedCommand &cmd,
+                                               const QString &typed, QString *error);
+
+} // namespace tipscope::cli

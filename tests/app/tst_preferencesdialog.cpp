@@ -1,0 +1,67 @@
+// PreferencesDialog shows the counters' poll interval in seconds ("60 s", not "60000 ms") and
+// stores it in milliseconds as before; a stored interval that is not whole seconds is kept
+// unless the field is changed.
+#include "dialogs/preferencesdialog.h"
+
+#include <QLabel>
+#include <QSpinBox>
+#include <QtTest>
+
+using namespace tipscope;
+
+namespace {
+QSpinBox *fieldOf(const QDialog &dialog, const QString &label) {
+    for (QLabel *l : dialog.findChildren<QLabel *>())
+        if (l->text() == label)
+            return qobject_cast<QSpinBox *>(l->buddy());
+    return nullptr;
+}
+} // namespace
+
+class TestPreferencesDialog : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void theCountersIntervalReadsInSeconds_data();
+    void theCountersIntervalReadsInSeconds();
+    void aChangedCountersIntervalIsStoredInMilliseconds();
+    void anUntouchedIntervalOfNoWholeSecondsIsKept();
+};
+
+void TestPreferencesDialog::theCountersIntervalReadsInSeconds_data() {
+    QTest::addColumn<int>("storedMs");
+    QTest::addColumn<QString>("shown");
+    QTest::newRow("the default minute") << 60000 << "60 s";
+    QTest::newRow("the shortest") << 1000 << "1 s";
+    QTest::newRow("the longest") << 3600000 << "3600 s";
+}
+
+void TestPreferencesDialog::theCountersIntervalReadsInSeconds() {
+    QFETCH(int, storedMs);
+    QFETCH(QString, shown);
+    model::AppSettings settings;
+    settings.counterMs = storedMs;
+    gui::PreferencesDialog dialog(settings);
+    QSpinBox *counters = fieldOf(dialog, QStringLiteral("Counters every:"));
+    QVERIFY(counters);
+    QCOMPARE(counters->text(), shown);
+    QCOMPARE(dialog.result().counterMs, storedMs);
+}
+
+void TestPreferencesDialog::aChangedCountersIntervalIsStoredInMilliseconds() {
+    gui::PreferencesDialog dialog(model::AppSettings{});
+    QSpinBox *counters = fieldOf(dialog, QStringLiteral("Counters every:"));
+    QVERIFY(counters);
+    counters->setValue(90);
+    QCOMPARE(counters->text(), QStringLiteral("90 s"));
+    QCOMPARE(dialog.result().counterMs, 90000);
+}
+
+void TestPreferencesDialog::anUntouchedIntervalOfNoWholeSecondsIsKept() {
+    model::AppSettings settings;
+    settings.counterMs = 1500;
+    gui::PreferencesDialog dialog(settings);
+    QCOMPARE(dialog.result().counterMs, 1500);
+}
+
+QTEST_MAIN(TestPreferencesDialog)
+#include "tst_preferencesdialog.moc"
