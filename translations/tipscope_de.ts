@@ -4,22 +4,22 @@
 <context>
     <name>Action</name>
     <message>
-        <location filename="../lib/model/action.cpp" line="28" />
+        <location filename="../lib/model/action.cpp" line="28"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="30" />
+        <location filename="../lib/model/action.cpp" line="30"/>
         <source>%1 needs an explicit confirmation: %2</source>
         <translation>%1 erfordert eine ausdrückliche Bestätigung: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="32" />
+        <location filename="../lib/model/action.cpp" line="32"/>
         <source>%1 is already running</source>
         <translation>%1 läuft bereits</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="44" />
+        <location filename="../lib/model/action.cpp" line="44"/>
         <source>%1 done</source>
         <translation>%1 erledigt</translation>
     </message>
@@ -27,20 +27,20 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="105" />
+        <location filename="../lib/model/appsettings.cpp" line="105"/>
         <source>choose a serial port</source>
         <translation>wählen Sie eine serielle Schnittstelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="115" />
-        <source>'%1' is not HOST:PORT (for example 192.168.1.20:4001)</source>
-        <translation>'%1' hat nicht die Form HOST:PORT (zum Beispiel 192.168.1.20:4001)</translation>
+        <location filename="../lib/model/appsettings.cpp" line="115"/>
+        <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
+        <translation>&apos;%1&apos; hat nicht die Form HOST:PORT (zum Beispiel 192.168.1.20:4001)</translation>
     </message>
 </context>
 <context>
     <name>AtomicSave</name>
     <message>
-        <location filename="../lib/model/io/atomicsave.cpp" line="27" />
+        <location filename="../lib/model/io/atomicsave.cpp" line="27"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -48,1150 +48,1150 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="219" />
+        <location filename="../lib/protocol/catalog.cpp" line="219"/>
         <source>Unknown NAK code %1</source>
         <translation>Unbekannter NAK-Code %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="224" />
+        <location filename="../lib/protocol/catalog.cpp" line="224"/>
         <source>Unknown station error %1</source>
         <translation>Unbekannter Stationsfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="233" />
+        <location filename="../lib/protocol/catalog.cpp" line="233"/>
         <source>Unknown port error %1</source>
         <translation>Unbekannter Portfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="13" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="13"/>
         <source>Port status</source>
         <translation>Portstatus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="14" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="14"/>
         <source>Tool operating status: working, stand, sleep, hibernation, with cooling, suction and motor flags</source>
         <translation>Betriebszustand des Werkzeugs: in Betrieb, Ablage, Ruhemodus, Tiefschlaf, mit Flags für Abkühlen, Absaugung und Motor</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="15" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="15"/>
         <source>Working</source>
         <translation>In Betrieb</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="16" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="16"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="17" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="17"/>
         <source>Cooling</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="18" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="18"/>
         <source>Tool operating status: no stand (working), stand, sleep, hibernation, with extractor and suction flags</source>
         <translation>Betriebszustand des Werkzeugs: nicht in der Ablage (in Betrieb), Ablage, Ruhemodus, Tiefschlaf, mit Flags für Rauchabsaugung und Absaugung</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="19" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="19"/>
         <source>Selected temperature</source>
         <translation>Eingestellte Temperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="20" />
-        <source>Tip working temperature, in steps of 5 °C between the station's minimum and maximum; volatile until saved</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="20"/>
+        <source>Tip working temperature, in steps of 5 °C between the station&apos;s minimum and maximum; volatile until saved</source>
         <translation>Arbeitstemperatur der Spitze, in Schritten von 5 °C zwischen Minimum und Maximum der Station; flüchtig bis zum Speichern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="21" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="21"/>
         <source>Tip temperature</source>
         <translation>Spitzentemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="22" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="22"/>
         <source>Current tip temperature</source>
         <translation>Aktuelle Spitzentemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="23" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="23"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="24" />
-        <source>Power delivered to the tip, in thousandths of the station's maximum</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="24"/>
+        <source>Power delivered to the tip, in thousandths of the station&apos;s maximum</source>
         <translation>An die Spitze abgegebene Leistung, in Tausendsteln des Stationsmaximums</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="25" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="25"/>
         <source>Time to sleep/hibernation</source>
         <translation>Zeit bis Ruhemodus/Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="26" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="26"/>
         <source>Seconds left before the tool enters sleep or hibernation</source>
         <translation>Verbleibende Sekunden, bis das Werkzeug in den Ruhemodus oder Tiefschlaf wechselt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="27" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="27"/>
         <source>Transistor temperature</source>
         <translation>Transistortemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="28" />
-        <source>Temperature of the port's power transistor</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="28"/>
+        <source>Temperature of the port&apos;s power transistor</source>
         <translation>Temperatur des Leistungstransistors des Ports</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="29" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="29"/>
         <source>Connected tool</source>
         <translation>Angeschlossenes Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="30" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="30"/>
         <source>Tool connected to the port</source>
         <translation>Am Port angeschlossenes Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="31" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="31"/>
         <source>Port error</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="32" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="32"/>
         <source>Current error of the port</source>
         <translation>Aktueller Fehler des Ports</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="33" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="33"/>
         <source>High temperature alarm</source>
         <translation>Übertemperaturalarm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="34" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="34"/>
         <source>Upper tip temperature alarm limit, in steps of 5 °C</source>
         <translation>Obere Alarmgrenze der Spitzentemperatur, in Schritten von 5 °C</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="35" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="35"/>
         <source>Low temperature alarm</source>
         <translation>Untertemperaturalarm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="36" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="36"/>
         <source>Lower tip temperature alarm limit, in steps of 5 °C</source>
         <translation>Untere Alarmgrenze der Spitzentemperatur, in Schritten von 5 °C</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="37" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="37"/>
         <source>High alarm delay</source>
         <translation>Verzögerung Alarm hoch</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="38" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="38"/>
         <source>How long the tip must stay above the high alarm limit before the alarm is set (ss.cc)</source>
         <translation>Wie lange die Spitze über der oberen Alarmgrenze bleiben muss, bevor der Alarm ausgelöst wird (ss.cc)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="39" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="39"/>
         <source>disabled</source>
         <translation>deaktiviert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="40" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="40"/>
         <source>Low alarm delay</source>
         <translation>Verzögerung Alarm tief</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="41" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="41"/>
         <source>How long the tip must stay below the low alarm limit before the alarm is set (ss.cc)</source>
         <translation>Wie lange die Spitze unter der unteren Alarmgrenze bleiben muss, bevor der Alarm ausgelöst wird (ss.cc)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="42" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="42"/>
         <source>Temperature alarm</source>
         <translation>Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="43" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="43"/>
         <source>Alarm flags: units digit high alarm, tens digit low alarm (DDR/HDR clear them when read)</source>
         <translation>Alarm-Flags: Einerstelle Alarm hoch, Zehnerstelle Alarm tief (DDR/HDR löschen sie beim Lesen)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="44" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="44"/>
         <source>Plugged hours</source>
         <translation>Einschaltstunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="45" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="45"/>
         <source>Hours with a tool plugged into the port</source>
         <translation>Stunden mit am Port angeschlossenem Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="52" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
         <source>No-tool hours</source>
         <translation>Stunden ohne Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="53" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
         <source>Hours the port was powered with no tool</source>
         <translation>Stunden, in denen der Port ohne Werkzeug eingeschaltet war</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="48" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="48"/>
         <source>Sleep hours</source>
         <translation>Ruhemodus-Stunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="49" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="49"/>
         <source>Hours in sleep</source>
         <translation>Stunden im Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="50" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="50"/>
         <source>Hibernation hours</source>
         <translation>Tiefschlafstunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="51" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="51"/>
         <source>Hours in hibernation</source>
         <translation>Stunden im Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="46" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
         <source>Work hours</source>
         <translation>Arbeitsstunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="47" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
         <source>Hours working</source>
         <translation>Stunden in Betrieb</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="54" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="54"/>
         <source>Sleep cycles</source>
         <translation>Ruhemodus-Zyklen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="55" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="55"/>
         <source>Number of times the tool went into sleep</source>
         <translation>Anzahl der Wechsel des Werkzeugs in den Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="56" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="56"/>
         <source>Desoldering cycles</source>
         <translation>Entlötzyklen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="57" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="57"/>
         <source>Number of times the desoldering tool was activated</source>
         <translation>Anzahl der Aktivierungen des Entlötwerkzeugs</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="58" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="58"/>
         <source>Dispensed cycles</source>
         <translation>Dosierzyklen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="59" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="59"/>
         <source>Number of dispensing cycles of the built-in wire feed</source>
         <translation>Anzahl der Dosierzyklen des eingebauten Drahtvorschubs</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="60" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="60"/>
         <source>Dispensed length</source>
         <translation>Dosierte Länge</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="61" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="61"/>
         <source>Total wire length dispensed (hexadecimal on the wire)</source>
         <translation>Insgesamt dosierte Drahtlänge (auf der Leitung hexadezimal)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="62" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="62"/>
         <source>Temperature adjust</source>
         <translation>Temperaturkorrektur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="63" />
-        <source>Offset added to the tool's temperature, ±50 °C in steps of 1</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="63"/>
+        <source>Offset added to the tool&apos;s temperature, ±50 °C in steps of 1</source>
         <translation>Zur Werkzeugtemperatur addierter Offset, ±50 °C in Schritten von 1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="64" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="64"/>
         <source>Sleep temperature</source>
         <translation>Ruhemodus-Temperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="65" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="65"/>
         <source>Tip temperature in sleep, in steps of 5 °C</source>
         <translation>Spitzentemperatur im Ruhemodus, in Schritten von 5 °C</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="66" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="66"/>
         <source>Sleep delay</source>
         <translation>Ruhemodus-Verzögerung</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="67" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="67"/>
         <source>Minutes in the stand before sleep, 0 to 9, or disabled</source>
         <translation>Minuten in der Ablage bis zum Ruhemodus, 0 bis 9, oder deaktiviert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="68" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="68"/>
         <source>Hibernation delay</source>
         <translation>Tiefschlafverzögerung</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="69" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="69"/>
         <source>Minutes in sleep before hibernation, 0 to 60 in steps of 5, or disabled</source>
         <translation>Minuten im Ruhemodus bis zum Tiefschlaf, 0 bis 60 in Schritten von 5, oder deaktiviert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="70" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="70"/>
         <source>Maximum temperature</source>
         <translation>Höchsttemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="71" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="71"/>
         <source>Highest temperature selectable with the selected temperature</source>
         <translation>Höchste als eingestellte Temperatur wählbare Temperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="72" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="72"/>
         <source>Minimum temperature</source>
         <translation>Mindesttemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="73" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="73"/>
         <source>Lowest temperature selectable with the selected temperature</source>
         <translation>Niedrigste als eingestellte Temperatur wählbare Temperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="74" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="74"/>
         <source>Power limit</source>
         <translation>Leistungsgrenze</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="75" />
-        <source>Maximum power delivered to a tool, in thousandths of the station's maximum</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="75"/>
+        <source>Maximum power delivered to a tool, in thousandths of the station&apos;s maximum</source>
         <translation>Maximale an ein Werkzeug abgegebene Leistung, in Tausendsteln des Stationsmaximums</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="76" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="76"/>
         <source>Transformer temperature</source>
         <translation>Transformatortemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="77" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="77"/>
         <source>Temperature of the power supply transformer (R-TT; see protocol notes)</source>
         <translation>Temperatur des Netztransformators (R-TT; siehe Protokollhinweise)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="78" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="78"/>
         <source>Station error</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="79" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="79"/>
         <source>Current error of the station</source>
         <translation>Aktueller Fehler der Station</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="80" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="80"/>
         <source>Fuse status</source>
         <translation>Sicherungsstatus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="81" />
-        <source>Whether the station's fuse is in place</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="81"/>
+        <source>Whether the station&apos;s fuse is in place</source>
         <translation>Ob die Sicherung der Station eingesetzt ist</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="82" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="82"/>
         <source>No fuse (blown or missing)</source>
         <translation>Keine Sicherung (durchgebrannt oder fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="83" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="83"/>
         <source>Fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="84" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="84"/>
         <source>Model name</source>
         <translation>Modellname</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="85" />
-        <source>The device's model name</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="85"/>
+        <source>The device&apos;s model name</source>
         <translation>Modellname des Geräts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="86" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="86"/>
         <source>Software version</source>
         <translation>Softwareversion</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="87" />
-        <source>The device's software version</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="87"/>
+        <source>The device&apos;s software version</source>
         <translation>Softwareversion des Geräts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="88" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="88"/>
         <source>Save to station memory</source>
         <translation>Im Stationsspeicher sichern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="89" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="89"/>
         <source>Stores the volatile settings (selected temperature; feeder mode, speed, length) in non-volatile memory</source>
         <translation>Speichert die flüchtigen Einstellungen (eingestellte Temperatur; Vorschubmodus, -geschwindigkeit, -länge) im nichtflüchtigen Speicher</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="90" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="90"/>
         <source>Factory reset</source>
         <translation>Werkseinstellungen wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="91" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="91"/>
         <source>Resets every parameter of the device to its factory value</source>
         <translation>Setzt alle Parameter des Geräts auf ihre Werkswerte zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="92" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="92"/>
         <source>Every setting of the device returns to its factory value; the feeder restarts and goes back to address 10 in addressed mode.</source>
         <translation>Alle Einstellungen des Geräts werden auf ihre Werkswerte zurückgesetzt; der Lotdrahtvorschub startet neu und kehrt im adressierten Betrieb zur Adresse 10 zurück.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="93" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="93"/>
         <source>Restart station</source>
         <translation>Station neu starten</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="94" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="94"/>
         <source>Restarts the control unit</source>
         <translation>Startet das Steuergerät neu</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="95" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="95"/>
         <source>The control unit restarts: tools cool down and the station does not answer until it is back.</source>
         <translation>Das Steuergerät startet neu: die Werkzeuge kühlen ab, und die Station antwortet erst wieder, wenn sie bereit ist.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="96" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="96"/>
         <source>Device address</source>
         <translation>Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="97" />
-        <source>Sets the device's own address (1-99); 0 switches it to frames without addresses</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="97"/>
+        <source>Sets the device&apos;s own address (1-99); 0 switches it to frames without addresses</source>
         <translation>Setzt die eigene Adresse des Geräts (1-99); 0 schaltet auf Telegramme ohne Adressen um</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="98" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="98"/>
         <source>The device answers only at the new address (or only without addresses for 0); TipScope must reconnect with the new setting.</source>
         <translation>Das Gerät antwortet nur noch unter der neuen Adresse (bzw. bei 0 nur ohne Adressen); TipScope muss sich mit der neuen Einstellung neu verbinden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="99" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="99"/>
         <source>Ignore fuse error</source>
         <translation>Sicherungsfehler ignorieren</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="100" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="100"/>
         <source>Lets the station keep working despite a fuse error</source>
         <translation>Lässt die Station trotz Sicherungsfehler weiterarbeiten</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="101" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="101"/>
         <source>The station keeps heating although its fuse is reported missing or blown.</source>
         <translation>Die Station heizt weiter, obwohl ihre Sicherung als fehlend oder durchgebrannt gemeldet wird.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="102" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="102"/>
         <source>Dispensing mode</source>
         <translation>Dosiermodus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="103" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="103"/>
         <source>How the built-in feed dispenses wire</source>
         <translation>Wie der eingebaute Vorschub den Draht dosiert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="104" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="104"/>
         <source>Continuous</source>
         <translation>Kontinuierlich</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="105" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="105"/>
         <source>Discontinuous</source>
         <translation>Diskontinuierlich</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="106" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="106"/>
         <source>Program</source>
         <translation>Programm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="107" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="107"/>
         <source>Tin reload</source>
         <translation>Lötzinn nachladen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="108" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="108"/>
         <source>Dispensing length</source>
         <translation>Dosierlänge</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="109" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="109"/>
         <source>Wire length dispensed per cycle, in tenths of a millimetre</source>
         <translation>Pro Zyklus dosierte Drahtlänge, in Zehntelmillimetern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="110" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="110"/>
         <source>Dispensing speed</source>
         <translation>Dosiergeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="111" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="111"/>
         <source>Wire speed, in tenths of a millimetre per second</source>
         <translation>Drahtgeschwindigkeit, in Zehntelmillimetern pro Sekunde</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="112" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="112"/>
         <source>Wire diameter</source>
         <translation>Drahtdurchmesser</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="113" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="113"/>
         <source>Solder wire diameter, in hundredths of a millimetre</source>
         <translation>Durchmesser des Lötdrahts, in Hundertstelmillimetern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="114" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="114"/>
         <source>Backward length</source>
         <translation>Rückzuglänge</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="115" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="115"/>
         <source>Wire pulled back after each cycle, in tenths of a millimetre</source>
         <translation>Nach jedem Zyklus zurückgezogener Draht, in Zehntelmillimetern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="116" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="116"/>
         <source>Wire clogging detection</source>
         <translation>Drahtstauerkennung</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="117" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="117"/>
         <source>Detects a clogged wire feed</source>
         <translation>Erkennt einen verstopften Drahtvorschub</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="118" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="118"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="119" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="119"/>
         <source>On</source>
         <translation>Ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="120" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="120"/>
         <source>Dispensing status</source>
         <translation>Dosierstatus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="121" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="121"/>
         <source>Whether the dispensing motor is running</source>
         <translation>Ob der Dosiermotor läuft</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="122" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="122"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="123" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="123"/>
         <source>Running</source>
         <translation>Läuft</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="124" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="124"/>
         <source>Start dispensing</source>
         <translation>Dosieren starten</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="125" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="125"/>
         <source>Starts the dispensing motor</source>
         <translation>Startet den Dosiermotor</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="126" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="126"/>
         <source>Stop dispensing</source>
         <translation>Dosieren stoppen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="127" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="127"/>
         <source>Stops the dispensing motor</source>
         <translation>Stoppt den Dosiermotor</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="128" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="128"/>
         <source>Feeding mode</source>
         <translation>Vorschubmodus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="129" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="129"/>
         <source>Continuous feeds until stopped; discontinuous feeds the set length</source>
         <translation>Kontinuierlich: Vorschub bis zum Stopp; diskontinuierlich: Vorschub um die eingestellte Länge</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="130" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="130"/>
         <source>Start feeding</source>
         <translation>Vorschub starten</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="131" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="131"/>
         <source>Starts feeding wire forward or backward</source>
         <translation>Startet den Drahtvorschub vorwärts oder rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="132" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="132"/>
         <source>Forward</source>
         <translation>Vorwärts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="133" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="133"/>
         <source>Backward</source>
         <translation>Rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="134" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="134"/>
         <source>Stop feeding</source>
         <translation>Vorschub stoppen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="135" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="135"/>
         <source>Stops feeding (continuous mode)</source>
         <translation>Stoppt den Vorschub (kontinuierlicher Modus)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="138" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
         <source>Feeding length</source>
         <translation>Vorschublänge</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="139" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
         <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
         <translation>Vorschublänge pro Start im diskontinuierlichen Modus, in Zehntelmillimetern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="136" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
         <source>Feeding speed</source>
         <translation>Vorschubgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="137" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
         <source>Feeding speed, in tenths of a millimetre per second</source>
         <translation>Vorschubgeschwindigkeit, in Zehntelmillimetern pro Sekunde</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="140" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="140"/>
         <source>Wire thickness</source>
         <translation>Drahtstärke</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="141" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="141"/>
         <source>Diameter class of the solder wire</source>
         <translation>Durchmesserklasse des Lötdrahts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="142" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="142"/>
         <source>≤ 0.8 mm</source>
         <translation>≤ 0,8 mm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="143" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="143"/>
         <source>&gt; 0.8 mm and ≤ 1.2 mm</source>
         <translation>&gt; 0,8 mm und ≤ 1,2 mm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="144" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="144"/>
         <source>&gt; 1.2 mm</source>
         <translation>&gt; 1,2 mm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="145" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="145"/>
         <source>Switch input</source>
         <translation>Schaltereingang</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="146" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="146"/>
         <source>Whether the switch input can start feeding</source>
         <translation>Ob der Schaltereingang den Vorschub starten kann</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="147" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="147"/>
         <source>Disabled</source>
         <translation>Deaktiviert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="148" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="148"/>
         <source>Enabled</source>
         <translation>Aktiviert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="149" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="149"/>
         <source>Feeder error code</source>
         <translation>Vorschub-Fehlercode</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="150" />
-        <source>The feeder's last error code</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="150"/>
+        <source>The feeder&apos;s last error code</source>
         <translation>Letzter Fehlercode des Lotdrahtvorschubs</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="151" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="151"/>
         <source>Reset feeder error</source>
         <translation>Vorschubfehler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="152" />
-        <source>Clears the feeder's last error code</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="152"/>
+        <source>Clears the feeder&apos;s last error code</source>
         <translation>Löscht den letzten Fehlercode des Lotdrahtvorschubs</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="153" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="153"/>
         <source>Feeding status</source>
         <translation>Vorschubstatus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="154" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="154"/>
         <source>Whether the feeder is feeding</source>
         <translation>Ob der Lotdrahtvorschub gerade Draht fördert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="155" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="155"/>
         <source>Idle</source>
         <translation>Bereit</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="156" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="156"/>
         <source>Feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="157" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="157"/>
         <source>Fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="158" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="158"/>
         <source>Length fed since the last start, in tenths of a millimetre</source>
         <translation>Seit dem letzten Start vorgeschobene Länge, in Zehntelmillimetern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="159" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="159"/>
         <source>Loading</source>
         <translation>Einfädeln</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="160" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="160"/>
         <source>Feeds wire ignoring feeding errors, for loading a new spool</source>
         <translation>Schiebt Draht ohne Prüfung auf Vorschubfehler vor, zum Einfädeln einer neuen Spule</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="161" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="161"/>
         <source>Start loading</source>
         <translation>Einfädeln starten</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="162" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="162"/>
         <source>End loading</source>
         <translation>Einfädeln beenden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="163" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="163"/>
         <source>Plugged hours (total)</source>
         <translation>Einschaltstunden (gesamt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="164" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="164"/>
         <source>Hours powered, total counter</source>
         <translation>Stunden eingeschaltet, Gesamtzähler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="165" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="165"/>
         <source>Plugged hours (partial)</source>
         <translation>Einschaltstunden (Teilzähler)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="166" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="166"/>
         <source>Hours powered since the partial counter was reset</source>
         <translation>Stunden eingeschaltet seit dem Zurücksetzen des Teilzählers</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="167" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="167"/>
         <source>Reset plugged hours (partial)</source>
         <translation>Einschaltstunden (Teilzähler) zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="168" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="168"/>
         <source>Resets the partial plugged-hours counter</source>
         <translation>Setzt den Teilzähler der Einschaltstunden zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="169" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="169"/>
         <source>The partial plugged-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>Der Teilzähler der Einschaltstunden wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="171" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
         <source>Feeding hours (total)</source>
         <translation>Vorschubstunden (gesamt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="172" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
         <source>Hours feeding, total counter</source>
         <translation>Stunden mit Vorschub, Gesamtzähler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="174" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
         <source>Feeding hours (partial)</source>
         <translation>Vorschubstunden (Teilzähler)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="175" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
         <source>Hours feeding since the partial counter was reset</source>
         <translation>Stunden mit Vorschub seit dem Zurücksetzen des Teilzählers</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="176" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
         <source>Reset feeding hours (partial)</source>
         <translation>Vorschubstunden (Teilzähler) zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="177" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
         <source>Resets the partial feeding-hours counter</source>
         <translation>Setzt den Teilzähler der Vorschubstunden zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="178" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
         <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>Der Teilzähler der Vorschubstunden wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="180" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
         <source>Fed length (total)</source>
         <translation>Vorgeschobene Länge (gesamt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="181" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
         <source>Metres of wire fed, total counter</source>
         <translation>Vorgeschobener Draht in Metern, Gesamtzähler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="182" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
         <source>Fed length (partial)</source>
         <translation>Vorgeschobene Länge (Teilzähler)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="183" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
         <source>Metres of wire fed since the partial counter was reset</source>
         <translation>Vorgeschobener Draht in Metern seit dem Zurücksetzen des Teilzählers</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="184" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
         <source>Reset fed length (partial)</source>
         <translation>Vorgeschobene Länge (Teilzähler) zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="185" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
         <source>Resets the partial fed-length counter</source>
         <translation>Setzt den Teilzähler der vorgeschobenen Länge zurück</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="186" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
         <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
         <translation>Der Teilzähler der vorgeschobenen Länge wird auf null gesetzt; der alte Wert kann nicht wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="188" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
         <source>No tool</source>
         <translation>Kein Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="189" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
         <source>BCC error: the frame failed the sum check</source>
         <translation>BCC-Fehler: das Telegramm hat die Prüfsummenkontrolle nicht bestanden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="190" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
         <source>Format error: the frame has the wrong size or layout</source>
         <translation>Formatfehler: das Telegramm hat die falsche Länge oder den falschen Aufbau</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="191" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
         <source>Out of range: the value is outside the allowed limits or off-step</source>
         <translation>Außerhalb des Bereichs: der Wert liegt außerhalb der zulässigen Grenzen oder nicht im Schrittraster</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="192" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
         <source>Control error: the command is not accepted by this device</source>
         <translation>Steuerungsfehler: dieses Gerät nimmt den Befehl nicht an</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="193" />
-        <source>Robot mode is off: switch "Robot mode" on in the station menu</source>
-        <translation>Der Robotermodus ist aus: schalten Sie im Stationsmenü "Robot mode" ein</translation>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
+        <translation>Der Robotermodus ist aus: schalten Sie im Stationsmenü &quot;Robot mode&quot; ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="194" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
         <source>Device model error: the device model is unknown</source>
         <translation>Gerätemodellfehler: das Gerätemodell ist unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="195" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
         <source>Undefined error</source>
         <translation>Undefinierter Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="196" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
         <source>Stopped by transformer overload</source>
         <translation>Wegen Überlast des Transformators gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="197" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
         <source>Temperature sensor error</source>
         <translation>Fehler des Temperatursensors</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="198" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
         <source>Memory error</source>
         <translation>Speicherfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="199" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
         <source>Mains frequency error</source>
         <translation>Netzfrequenzfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="200" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
         <source>Device model error</source>
         <translation>Gerätemodellfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="201" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
         <source>MCU tools not connected</source>
         <translation>Werkzeug-MCU nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="202" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
         <source>Warning: transformer overload</source>
         <translation>Warnung: Überlast des Transformators</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="203" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
         <source>Short circuit</source>
         <translation>Kurzschluss</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="204" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
         <source>Short circuit, not recoverable: restart the station</source>
         <translation>Kurzschluss, nicht behebbar: Station neu starten</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="205" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
         <source>Open circuit</source>
         <translation>Leitungsunterbrechung</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="206" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
         <source>Tool not accepted</source>
         <translation>Werkzeug nicht akzeptiert</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="207" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
         <source>Detecting tool</source>
         <translation>Werkzeug wird erkannt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="208" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
         <source>Stopped at maximum power</source>
         <translation>Bei maximaler Leistung gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="209" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
         <source>Stopped by transistor (MOS) overload</source>
         <translation>Wegen Überlast des Transistors (MOS) gestoppt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="210" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
         <source>Warning: transistor (MOS) overload</source>
         <translation>Warnung: Überlast des Transistors (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="211" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
         <source>No error</source>
         <translation>Kein Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="230" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="230"/>
         <source>Sleep</source>
         <translation>Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="231" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="231"/>
         <source>Hibernation</source>
         <translation>Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="232" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="232"/>
         <source>Suction on</source>
         <translation>Absaugung ein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="233" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="233"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor vorwärts (Dosieren)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="234" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="234"/>
         <source>Motor backward</source>
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="226" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="226"/>
         <source>unknown (%1)</source>
         <translation>unbekannt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="233" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="233"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="170" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
         <source>Reset partial plugged hours</source>
         <translation>Teilzähler Einschaltstunden zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="173" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
         <source>Feeding hours</source>
         <translation>Vorschubstunden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="179" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
         <source>Reset partial feeding hours</source>
         <translation>Teilzähler Vorschubstunden zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="187" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
         <source>Reset partial fed length</source>
         <translation>Teilzähler vorgeschobene Länge zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="238" />
+        <location filename="../lib/protocol/catalog.cpp" line="238"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="213" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>The station switched off its power because the transformer was overloaded. Let it cool for a few minutes with the ventilation slots free, then switch it off and on. Check that the tools working at once do not need more than the station can give (large heat sinks, high temperatures, several ports at full power). If it stops again with one tool at normal work, the station needs JBC service.</source>
         <translation>Die Station hat ihre Leistung abgeschaltet, weil der Transformator überlastet war. Lassen Sie sie einige Minuten mit freien Lüftungsschlitzen abkühlen, dann aus- und wieder einschalten. Prüfen Sie, ob die gleichzeitig arbeitenden Werkzeuge mehr brauchen, als die Station liefern kann (große Wärmesenken, hohe Temperaturen, mehrere Ports mit voller Leistung). Schaltet sie mit einem Werkzeug bei normaler Arbeit wieder ab, muss die Station zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="214" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>The station cannot read its internal temperature sensor. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
         <translation>Die Station kann ihren internen Temperatursensor nicht lesen. Aus- und wieder einschalten; bleibt der Fehler, muss die Steuereinheit zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="215" />
-        <source>The station's memory failed its check. Switch it off and on. If the error stays, restore the factory settings and set the station up again (save a profile first if the settings can still be read); if it still stays, the control unit needs JBC service.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
+        <source>The station&apos;s memory failed its check. Switch it off and on. If the error stays, restore the factory settings and set the station up again (save a profile first if the settings can still be read); if it still stays, the control unit needs JBC service.</source>
         <translation>Der Speicher der Station hat seine Prüfung nicht bestanden. Aus- und wieder einschalten. Bleibt der Fehler, die Werkseinstellungen wiederherstellen und die Station neu einrichten (vorher ein Profil speichern, wenn sich die Einstellungen noch lesen lassen); bleibt er dann noch, muss die Steuereinheit zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="216" />
-        <source>The station does not accept the mains frequency. Check that the voltage and frequency on the station's label match the supply, and that no generator, UPS or long extension cord makes it unstable; then switch the station off and on.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
+        <source>The station does not accept the mains frequency. Check that the voltage and frequency on the station&apos;s label match the supply, and that no generator, UPS or long extension cord makes it unstable; then switch the station off and on.</source>
         <translation>Die Station akzeptiert die Netzfrequenz nicht. Prüfen Sie, ob Spannung und Frequenz auf dem Typenschild der Station zur Versorgung passen und ob kein Generator, keine USV und kein langes Verlängerungskabel sie instabil macht; dann die Station aus- und wieder einschalten.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="217" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="217"/>
         <source>The station does not recognise its own model: its configuration is damaged. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
         <translation>Die Station erkennt ihr eigenes Modell nicht: Ihre Konfiguration ist beschädigt. Aus- und wieder einschalten; bleibt der Fehler, muss die Steuereinheit zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="218" />
-        <source>The station's tool control board does not answer. Switch the station off, wait ten seconds and switch it on; if the error stays, the control unit needs JBC service.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="218"/>
+        <source>The station&apos;s tool control board does not answer. Switch the station off, wait ten seconds and switch it on; if the error stays, the control unit needs JBC service.</source>
         <translation>Die Werkzeug-Steuerplatine der Station antwortet nicht. Station ausschalten, zehn Sekunden warten und einschalten; bleibt der Fehler, muss die Steuereinheit zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="219" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="219"/>
         <source>The transformer is close to overload; the station stops if this goes on. Reduce the load: fewer tools heating at once, lower temperatures, no tip resting on a large heat sink; keep the ventilation slots free.</source>
         <translation>Der Transformator ist nahe an der Überlast; hält das an, schaltet die Station ab. Verringern Sie die Last: weniger Werkzeuge gleichzeitig heizen, niedrigere Temperaturen, keine Spitze auf einer großen Wärmesenke liegen lassen; Lüftungsschlitze frei halten.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212" />
-        <source>The guide's table does not list this code. Note the code and the time, switch the station off and on, and give the code to JBC service if it comes back.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <source>The guide&apos;s table does not list this code. Note the code and the time, switch the station off and on, and give the code to JBC service if it comes back.</source>
         <translation>Die Tabelle der Anleitung führt diesen Code nicht. Notieren Sie Code und Uhrzeit, schalten Sie die Station aus und wieder ein, und geben Sie den Code an den JBC-Service, wenn er wiederkommt.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="220" />
-        <source>The heater circuit of the tool is short-circuited. Check that the cartridge is seated fully and is not damaged, then try another cartridge. If the error stays, check the tool's cable and connector for damage and try the tool on another port.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="220"/>
+        <source>The heater circuit of the tool is short-circuited. Check that the cartridge is seated fully and is not damaged, then try another cartridge. If the error stays, check the tool&apos;s cable and connector for damage and try the tool on another port.</source>
         <translation>Der Heizkreis des Werkzeugs ist kurzgeschlossen. Prüfen Sie, ob die Kartusche ganz eingesetzt und unbeschädigt ist, und versuchen Sie dann eine andere Kartusche. Bleibt der Fehler, Kabel und Stecker des Werkzeugs auf Schäden prüfen und das Werkzeug an einem anderen Port versuchen.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="221" />
-        <source>The port was switched off after a short circuit and stays off until the station restarts. Switch the station off, change the cartridge, check the tool's cable and connector for damage, then switch it on again.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="221"/>
+        <source>The port was switched off after a short circuit and stays off until the station restarts. Switch the station off, change the cartridge, check the tool&apos;s cable and connector for damage, then switch it on again.</source>
         <translation>Der Port wurde nach einem Kurzschluss abgeschaltet und bleibt aus, bis die Station neu startet. Station ausschalten, Kartusche wechseln, Kabel und Stecker des Werkzeugs auf Schäden prüfen, dann wieder einschalten.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="222" />
-        <source>The station finds no heater in the tool. Check that the cartridge is seated fully in the handle, then try another cartridge. If the error stays, check the tool's cable and connector and try the tool on another port.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="222"/>
+        <source>The station finds no heater in the tool. Check that the cartridge is seated fully in the handle, then try another cartridge. If the error stays, check the tool&apos;s cable and connector and try the tool on another port.</source>
         <translation>Die Station findet keine Heizung im Werkzeug. Prüfen Sie, ob die Kartusche ganz im Handgriff sitzt, und versuchen Sie dann eine andere Kartusche. Bleibt der Fehler, Kabel und Stecker des Werkzeugs prüfen und das Werkzeug an einem anderen Port versuchen.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="223" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="223"/>
         <source>No tool is connected to this port. If one is plugged in, push its connector fully home, then try it on another port.</source>
         <translation>An diesem Port ist kein Werkzeug angeschlossen. Ist eines eingesteckt, den Stecker ganz eindrücken, dann an einem anderen Port versuchen.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="224" />
-        <source>The station cannot drive the tool plugged into this port. Check the tool's model against the station's list of compatible tools and use a tool that is on it, or another station.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="224"/>
+        <source>The station cannot drive the tool plugged into this port. Check the tool&apos;s model against the station&apos;s list of compatible tools and use a tool that is on it, or another station.</source>
         <translation>Die Station kann das an diesem Port eingesteckte Werkzeug nicht betreiben. Vergleichen Sie das Werkzeugmodell mit der Liste kompatibler Werkzeuge der Station und verwenden Sie ein Werkzeug daraus oder eine andere Station.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="225" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="225"/>
         <source>The station is identifying the tool; this takes a few seconds. If it does not end, unplug the tool, check its connector and plug it in again.</source>
         <translation>Die Station erkennt gerade das Werkzeug; das dauert einige Sekunden. Endet es nicht, das Werkzeug ausstecken, den Stecker prüfen und wieder einstecken.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="226" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="226"/>
         <source>The port stopped after giving its maximum power for too long. Check that the tip suits the work (a larger tip for large joints) and is not resting on a large heat sink; lower the load and restart the tool.</source>
         <translation>Der Port hat abgeschaltet, nachdem er zu lange seine Höchstleistung gab. Prüfen Sie, ob die Spitze zur Arbeit passt (eine größere Spitze für große Lötstellen) und nicht auf einer großen Wärmesenke liegt; Last verringern und das Werkzeug neu starten.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="227" />
-        <source>The port's power transistor overheated and the port stopped. Let the station cool with the ventilation slots free, then reduce the load on this port (a larger tip, a lower temperature, shorter contact with large heat sinks). If it happens at normal work, the station needs JBC service.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="227"/>
+        <source>The port&apos;s power transistor overheated and the port stopped. Let the station cool with the ventilation slots free, then reduce the load on this port (a larger tip, a lower temperature, shorter contact with large heat sinks). If it happens at normal work, the station needs JBC service.</source>
         <translation>Der Leistungstransistor des Ports war überhitzt, und der Port hat abgeschaltet. Station mit freien Lüftungsschlitzen abkühlen lassen, dann die Last an diesem Port verringern (eine größere Spitze, eine niedrigere Temperatur, kürzerer Kontakt mit großen Wärmesenken). Geschieht das bei normaler Arbeit, muss die Station zum JBC-Service.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="228" />
-        <source>The port's power transistor is close to overload; the port stops if this goes on. Reduce the load on this port: a lower temperature, shorter contact with large heat sinks; keep the ventilation slots free.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="228"/>
+        <source>The port&apos;s power transistor is close to overload; the port stops if this goes on. Reduce the load on this port: a lower temperature, shorter contact with large heat sinks; keep the ventilation slots free.</source>
         <translation>Der Leistungstransistor des Ports ist nahe an der Überlast; hält das an, schaltet der Port ab. Verringern Sie die Last an diesem Port: eine niedrigere Temperatur, kürzerer Kontakt mit großen Wärmesenken; Lüftungsschlitze frei halten.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="229" />
-        <source>The SFR guide does not say what the feeder's error codes mean. Check that the solder wire is loaded and runs freely from the reel to the tool (no knot, no jam, the reel not empty) and that the wire thickness setting matches the wire; then reset the error. If it comes back at once, note the code and see the SFR manual.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="229"/>
+        <source>The SFR guide does not say what the feeder&apos;s error codes mean. Check that the solder wire is loaded and runs freely from the reel to the tool (no knot, no jam, the reel not empty) and that the wire thickness setting matches the wire; then reset the error. If it comes back at once, note the code and see the SFR manual.</source>
         <translation>Die SFR-Anleitung sagt nicht, was die Fehlercodes des Vorschubs bedeuten. Prüfen Sie, ob Lötdraht eingelegt ist und frei von der Rolle zum Werkzeug läuft (kein Knoten, kein Stau, die Rolle nicht leer) und ob die eingestellte Drahtstärke zum Draht passt; dann den Fehler zurücksetzen. Kommt er sofort wieder, den Code notieren und im SFR-Handbuch nachsehen.</translation>
     </message>
 </context>
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="195" />
+        <location filename="../lib/model/recording/chartcsv.cpp" line="195"/>
         <source>the file could not be written</source>
         <translation>die Datei konnte nicht geschrieben werden</translation>
     </message>
@@ -1199,144 +1199,144 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117" />
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>die Zeile ist länger als %1 Bytes (ist das eine Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106" />
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>die Datei enthält Binärdaten, keinen CSV-Text</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151" />
-        <source>the text is not UTF-8 (save the file as "CSV UTF-8")</source>
-        <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als "CSV UTF-8")</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151"/>
+        <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
+        <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155" />
-        <source>more than %1 comment lines ("#"); a recording has a few, and one per channel</source>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155"/>
+        <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>mehr als %1 Kommentarzeilen („#“); eine Aufzeichnung hat wenige, und eine je Kanal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190" />
-        <source>the header row should start with "time" (is this a chart CSV written by TipScope?)</source>
-        <translation>die Kopfzeile muss mit "time" beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190"/>
+        <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
+        <translation>die Kopfzeile muss mit &quot;time&quot; beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 Spalten; die Wiedergabe liest höchstens %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206" />
-        <source>column %1 "%2" is not "port&lt;n&gt; &lt;series&gt; [unit]" or "feeder &lt;series&gt; [unit]"</source>
-        <translation>Spalte %1 "%2" ist weder "port&lt;n&gt; &lt;Reihe&gt; [Einheit]" noch "feeder &lt;Reihe&gt; [Einheit]"</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206"/>
+        <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
+        <translation>Spalte %1 &quot;%2&quot; ist weder &quot;port&lt;n&gt; &lt;Reihe&gt; [Einheit]&quot; noch &quot;feeder &lt;Reihe&gt; [Einheit]&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219" />
-        <source>column %1 "%2": the unit should be "%3"</source>
-        <translation>Spalte %1 "%2": die Einheit muss "%3" sein</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219"/>
+        <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
+        <translation>Spalte %1 &quot;%2&quot;: die Einheit muss &quot;%3&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228" />
-        <source>column %1 "%2" appears twice</source>
-        <translation>Spalte %1 "%2" kommt zweimal vor</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
+        <source>column %1 &quot;%2&quot; appears twice</source>
+        <translation>Spalte %1 &quot;%2&quot; kommt zweimal vor</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234"/>
         <source>the header names no series columns</source>
         <translation>die Kopfzeile nennt keine Spalten mit Datenreihen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276" />
-        <source>column %1: "%2" is not a number</source>
-        <translation>Spalte %1: "%2" ist keine Zahl</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276"/>
+        <source>column %1: &quot;%2&quot; is not a number</source>
+        <translation>Spalte %1: &quot;%2&quot; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 hat nur in einem Teil seiner Spalten Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 Zellen, aber die Kopfzeile hat %2 Spalten</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295" />
-        <source>"%1" is not an ISO 8601 time</source>
-        <translation>"%1" ist keine Zeitangabe nach ISO 8601</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295"/>
+        <source>&quot;%1&quot; is not an ISO 8601 time</source>
+        <translation>&quot;%1&quot; ist keine Zeitangabe nach ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>die Zeit %1 liegt vor der der vorigen Zeile (die Zeilen müssen zeitlich geordnet sein)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 hat mehr als %2 Messwerte, mehr als die Wiedergabe fasst; teilen Sie die Datei auf</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="332" />
-        <source>the event "%1" is not "&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;"</source>
-        <translation>das Ereignis "%1" hat nicht die Form "&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;"</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="332"/>
+        <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
+        <translation>das Ereignis &quot;%1&quot; hat nicht die Form &quot;&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164"/>
         <source>a quoted cell is not closed</source>
         <translation>eine Zelle in Anführungszeichen ist nicht geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="364" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="364"/>
         <source>the file has a header but no rows</source>
         <translation>die Datei hat eine Kopfzeile, aber keine Zeilen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="362" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="362"/>
         <source>the file is empty or holds only comments</source>
         <translation>die Datei ist leer oder enthält nur Kommentare</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27" />
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27"/>
         <source>the file is larger than %1 MB; replay reads files up to %1 MB</source>
         <translation>die Datei ist größer als %1 MB; die Wiedergabe liest Dateien bis %1 MB</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114" />
-        <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file's size); a recording TipScope writes takes far less</source>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114"/>
+        <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
         <translation>ihre Messwerte belegen nach %2 MB Gelesenem %1 MB Speicher, mehr als die Wiedergabe erlaubt (das Doppelte der Dateigröße); eine von TipScope geschriebene Aufzeichnung braucht weit weniger</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151" />
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151"/>
         <source>reading was cancelled</source>
         <translation>das Lesen wurde abgebrochen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170" />
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>die Datei ist %1 MB groß; die Wiedergabe liest Dateien bis %2 MB</translation>
     </message>
@@ -1344,7 +1344,7 @@
 <context>
     <name>ChartRecorder</name>
     <message>
-        <location filename="../lib/model/recording/chartrecorder.cpp" line="32" />
+        <location filename="../lib/model/recording/chartrecorder.cpp" line="32"/>
         <source>nothing to record: no station or feeder is connected</source>
         <translation>nichts aufzuzeichnen: weder Station noch Lotdrahtvorschub verbunden</translation>
     </message>
@@ -1352,238 +1352,233 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="79" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="103"/>
         <source>Tip</source>
         <translation>Lötspitze</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="81" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="105"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="83" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="107"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="85" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="109"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="87" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="111"/>
         <source>Fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="89" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="91" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="115"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="93" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="117"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="95" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="119"/>
         <source>Transformer</source>
         <translation>Transformator</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="115" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="150"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="130" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="165"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="159" />
-        <source>P%1 </source>
-        <translation>P%1 </translation>
-    </message>
-<message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="44" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="44"/>
         <source>tip</source>
         <translation>Lötspitze</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="44" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="44"/>
         <source>P%1 tip</source>
         <translation>P%1 Lötspitze</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="45" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="45"/>
         <source>setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="46" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="46"/>
         <source>P%1 setpoint</source>
         <translation>P%1 Sollwert</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="47" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="47"/>
         <source>power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="48" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="48"/>
         <source>P%1 power</source>
         <translation>P%1 Leistung</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="49" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="49"/>
         <source>status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="50" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="50"/>
         <source>P%1 status</source>
         <translation>P%1 Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="51" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="51"/>
         <source>fed length</source>
         <translation>Vorgeschobene Länge</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="52" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="52"/>
         <source>speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="53" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="53"/>
         <source>feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="54" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="54"/>
         <source>transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="55" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="55"/>
         <source>P%1 transistor</source>
         <translation>P%1 Transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="56" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="56"/>
         <source>transformer</source>
         <translation>Transformator</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="131" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="131"/>
         <source>P%1 %2</source>
         <translation>P%1 %2</translation>
     </message>
-    </context>
+</context>
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="38" />
+        <location filename="../app/cli/clicommands.cpp" line="39"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="61" />
-        <source>%1 unreadable data field '%2'</source>
-        <translation>%1 unlesbares Datenfeld '%2'</translation>
+        <location filename="../app/cli/clicommands.cpp" line="62"/>
+        <source>%1 unreadable data field &apos;%2&apos;</source>
+        <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="88" />
+        <location filename="../app/cli/clicommands.cpp" line="91"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="99" />
-        <source>tipscope-cli: no device here can read '%1'</source>
-        <translation>tipscope-cli: kein Gerät an dieser Leitung kann '%1' lesen</translation>
+        <location filename="../app/cli/clicommands.cpp" line="102"/>
+        <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
+        <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="122" />
+        <location filename="../app/cli/clicommands.cpp" line="125"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127" />
+        <location filename="../app/cli/clicommands.cpp" line="130"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="135" />
+        <location filename="../app/cli/clicommands.cpp" line="138"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="140" />
+        <location filename="../app/cli/clicommands.cpp" line="143"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="178" />
+        <location filename="../app/cli/clicommands.cpp" line="181"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="187" />
-        <source>tipscope-cli: no device here accepts writes of '%1'</source>
-        <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf '%1' an</translation>
+        <location filename="../app/cli/clicommands.cpp" line="190"/>
+        <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
+        <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="200" />
-        <location filename="../app/cli/clicommands.cpp" line="202" />
+        <location filename="../app/cli/clicommands.cpp" line="203"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="205" />
+        <location filename="../app/cli/clicommands.cpp" line="208"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="168" />
-        <location filename="../app/cli/clicommands.cpp" line="214" />
-        <location filename="../app/cli/clicommands.cpp" line="237" />
+        <location filename="../app/cli/clicommands.cpp" line="171"/>
+        <location filename="../app/cli/clicommands.cpp" line="218"/>
+        <location filename="../app/cli/clicommands.cpp" line="241"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="230" />
+        <location filename="../app/cli/clicommands.cpp" line="234"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="303" />
-        <source>tipscope-cli: unknown family '%1'; known: %2</source>
-        <translation>tipscope-cli: unbekannte Familie '%1'; bekannt sind: %2</translation>
+        <location filename="../app/cli/clicommands.cpp" line="307"/>
+        <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
+        <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="326" />
+        <location filename="../app/cli/clicommands.cpp" line="330"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="329" />
+        <location filename="../app/cli/clicommands.cpp" line="333"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="330" />
+        <location filename="../app/cli/clicommands.cpp" line="334"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="50" />
+        <location filename="../app/cli/clicommands.cpp" line="51"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n Rohbyte, kein Telegramm (%1)</numerusform>
@@ -1591,7 +1586,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="160" />
+        <location filename="../app/cli/clicommands.cpp" line="163"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 wurde nicht gesendet: seine Grenze %2 ließ sich nicht lesen: %3</translation>
     </message>
@@ -1599,56 +1594,56 @@
 <context>
     <name>CliMeasure</name>
     <message>
-        <location filename="../app/cli/climeasure.cpp" line="66" />
-        <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page's Record or CSV export)</source>
+        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
         <translation>tipscope-cli: measure erwartet eine DATEI, eine Aufzeichnung (von record oder von „Aufzeichnen“ bzw. dem CSV-Export der Diagrammseite)</translation>
     </message>
 </context>
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="67" />
+        <location filename="../app/cli/climonitor.cpp" line="67"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74" />
+        <location filename="../app/cli/climonitor.cpp" line="74"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="81" />
+        <location filename="../app/cli/climonitor.cpp" line="81"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="90" />
+        <location filename="../app/cli/climonitor.cpp" line="90"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="114" />
+        <location filename="../app/cli/climonitor.cpp" line="123"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
-<message>
-        <location filename="../app/cli/climonitor.cpp" line="107" />
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="107"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
     </message>
-    </context>
+</context>
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="47" />
+        <location filename="../app/cli/clioptions.cpp" line="47"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
 
 Commands:
-  detect [--json] [--scan]  one line per device: "&lt;address or --&gt; &lt;model&gt; &lt;family&gt; &lt;version&gt;"
-  read CODE... [--raw]      one line per code: "&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;"
+  detect [--json] [--scan]  one line per device: &quot;&lt;address or --&gt; &lt;model&gt; &lt;family&gt; &lt;version&gt;&quot;
+  read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
   write CODE VALUE [--raw]  validate, send, and read back
   send HEX                  send a raw frame; print the answer in hex and decoded
   monitor [--interval MS] [--duration S] [--csv FILE]
@@ -1661,7 +1656,7 @@ Commands:
                             write what differs, each value read back; --dry-run lists
                             the frames; --force applies a profile of another family
   record FILE [--duration S]
-                            every port's and the feeder's curves and events to a chart
+                            every port&apos;s and the feeder&apos;s curves and events to a chart
                             recording, as the Charts page records them
   measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
 
@@ -1680,8 +1675,8 @@ Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
                      [--timeout MS] [--retries N] [--verbose] BEFEHL ...
 
 Befehle:
-  detect [--json] [--scan]  eine Zeile pro Gerät: "&lt;Adresse oder --&gt; &lt;Modell&gt; &lt;Familie&gt; &lt;Version&gt;"
-  read CODE... [--raw]      eine Zeile pro Code: "&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;"
+  detect [--json] [--scan]  eine Zeile pro Gerät: &quot;&lt;Adresse oder --&gt; &lt;Modell&gt; &lt;Familie&gt; &lt;Version&gt;&quot;
+  read CODE... [--raw]      eine Zeile pro Code: &quot;&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;&quot;
   write CODE WERT [--raw]   prüfen, senden und zurücklesen
   send HEX                  ein Roh-Telegramm senden; die Antwort hexadezimal und dekodiert ausgeben
   monitor [--interval MS] [--duration S] [--csv DATEI]
@@ -1710,82 +1705,82 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="98" />
-        <source>unknown command '%1'</source>
-        <translation>unbekannter Befehl '%1'</translation>
+        <location filename="../app/cli/clioptions.cpp" line="98"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="131" />
+        <location filename="../app/cli/clioptions.cpp" line="131"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="137" />
+        <location filename="../app/cli/clioptions.cpp" line="137"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="144" />
+        <location filename="../app/cli/clioptions.cpp" line="144"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="149" />
+        <location filename="../app/cli/clioptions.cpp" line="149"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud erwartet eine Baudrate wie 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="156" />
+        <location filename="../app/cli/clioptions.cpp" line="156"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity erwartet none, even oder odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="160" />
+        <location filename="../app/cli/clioptions.cpp" line="160"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits erwartet 1 oder 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="168" />
+        <location filename="../app/cli/clioptions.cpp" line="168"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="176" />
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="179" />
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="183" />
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
         <source>--%1 needs a value</source>
         <translation>--%1 braucht einen Wert</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="187" />
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="192" />
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="193" />
-        <source>'%1' has no option --%2</source>
-        <translation>'%1' hat keine Option --%2</translation>
+        <location filename="../app/cli/clioptions.cpp" line="193"/>
+        <source>&apos;%1&apos; has no option --%2</source>
+        <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="199" />
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="201" />
+        <location filename="../app/cli/clioptions.cpp" line="201"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -1793,22 +1788,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliProfile</name>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="43" />
+        <location filename="../app/cli/cliprofile.cpp" line="43"/>
         <source>tipscope-cli: could not read %1; no profile written</source>
         <translation>tipscope-cli: %1 konnte nicht gelesen werden; kein Profil geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="52" />
+        <location filename="../app/cli/cliprofile.cpp" line="52"/>
         <source>saved %1 settings of %2 to %3</source>
         <translation>%1 Einstellungen von %2 in %3 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="66" />
+        <location filename="../app/cli/cliprofile.cpp" line="66"/>
         <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
         <translation>tipscope-cli: profile erwartet save DATEI, diff DATEI oder apply DATEI</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="105" />
+        <location filename="../app/cli/cliprofile.cpp" line="105"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: das Anwenden dieses Profils würde abgelehnt: %1</translation>
     </message>
@@ -1816,53 +1811,53 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="77" />
+        <location filename="../app/cli/clirecord.cpp" line="77"/>
         <source>tipscope-cli: interrupted before the recording started</source>
         <translation>tipscope-cli: abgebrochen, bevor die Aufzeichnung begann</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="82" />
+        <location filename="../app/cli/clirecord.cpp" line="82"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="117" />
+        <location filename="../app/cli/clirecord.cpp" line="117"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record erwartet eine DATEI, z. B. record linie3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="125" />
+        <location filename="../app/cli/clirecord.cpp" line="125"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration erwartet Sekunden (0: bis zum Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="132" />
-        <location filename="../app/cli/clirecord.cpp" line="160" />
+        <location filename="../app/cli/clirecord.cpp" line="132"/>
+        <location filename="../app/cli/clirecord.cpp" line="160"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: in %1 kann nicht aufgezeichnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="134" />
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
         <source>no such folder</source>
         <translation>Ordner nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="134" />
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
         <source>not writable</source>
         <translation>nicht beschreibbar</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="181" />
+        <location filename="../app/cli/clirecord.cpp" line="181"/>
         <source># recording %1 of %2 to %3</source>
         <translation># zeichne %1 von %2 in %3 auf</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="189" />
+        <location filename="../app/cli/clirecord.cpp" line="189"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="193" />
+        <location filename="../app/cli/clirecord.cpp" line="193"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n Zeile nach %1 aufgezeichnet</numerusform>
@@ -1873,155 +1868,168 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="69" />
+        <location filename="../app/cli/clisession.cpp" line="69"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="125" />
+        <location filename="../app/cli/clisession.cpp" line="125"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134" />
+        <location filename="../app/cli/clisession.cpp" line="134"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="135" />
+        <location filename="../app/cli/clisession.cpp" line="135"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="129" />
-        <source>tipscope-cli: unknown device model '%1'</source>
-        <translation>tipscope-cli: unbekanntes Gerätemodell '%1'</translation>
+        <location filename="../app/cli/clisession.cpp" line="129"/>
+        <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
+        <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="157" />
+        <location filename="../app/cli/clisession.cpp" line="157"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="162" />
+        <location filename="../app/cli/clisession.cpp" line="162"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
 </context>
 <context>
+    <name>CliUnits</name>
+    <message>
+        <location filename="../app/cli/cliunits.cpp" line="47"/>
+        <source>&apos;%1&apos; is not a number; %2 takes %3</source>
+        <translation>„%1“ ist keine Zahl; %2 nimmt %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliunits.cpp" line="54"/>
+        <source>%1 takes steps of %2 %3</source>
+        <translation>%1 nimmt Schritte von %2 %3</translation>
+    </message>
+</context>
+<context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="102" />
+        <location filename="../lib/model/consolemodel.cpp" line="102"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>unverändert gesendet (kein gültiges Telegramm)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="118" />
+        <location filename="../lib/model/consolemodel.cpp" line="118"/>
         <source>stray: answers no pending request</source>
         <translation>verwaist: beantwortet keine offene Anfrage</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="250" />
+        <location filename="../lib/model/consolemodel.cpp" line="250"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="252" />
+        <location filename="../lib/model/consolemodel.cpp" line="252"/>
         <source>RX chunk</source>
         <translation>RX-Block</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="254" />
+        <location filename="../lib/model/consolemodel.cpp" line="254"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256" />
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="258" />
+        <location filename="../lib/model/consolemodel.cpp" line="258"/>
         <source>note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="266" />
+        <location filename="../lib/model/consolemodel.cpp" line="266"/>
         <source>Read</source>
         <translation>Lesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="268" />
+        <location filename="../lib/model/consolemodel.cpp" line="268"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="270" />
+        <location filename="../lib/model/consolemodel.cpp" line="270"/>
         <source>Answer</source>
         <translation>Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="315" />
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="315" />
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="331" />
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="331" />
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Dir</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="332" />
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Addr</source>
         <translation>Adr.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="332" />
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="333" />
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Cmd</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="333" />
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="334" />
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>Data</source>
         <translation>Daten</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="334" />
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="335" />
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="335" />
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="336" />
+        <location filename="../lib/model/consolemodel.cpp" line="336"/>
         <source>Remark</source>
         <translation>Bemerkung</translation>
     </message>
@@ -2029,22 +2037,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>DeviceIdentity</name>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="73" />
+        <location filename="../lib/model/deviceidentity.cpp" line="73"/>
         <source>%1 at %2</source>
         <translation>%1 an %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="74" />
+        <location filename="../lib/model/deviceidentity.cpp" line="74"/>
         <source>software unknown</source>
         <translation>Software unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="75" />
+        <location filename="../lib/model/deviceidentity.cpp" line="75"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="76" />
+        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
         <source>%1 on %2, %3</source>
         <translation>%1 über %2, %3</translation>
     </message>
@@ -2052,53 +2060,53 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="70" />
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="71" />
+        <location filename="../lib/model/devicemodel.cpp" line="71"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="75" />
-        <location filename="../lib/model/devicemodel.cpp" line="145" />
+        <location filename="../lib/model/devicemodel.cpp" line="75"/>
+        <location filename="../lib/model/devicemodel.cpp" line="145"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="205" />
+        <location filename="../lib/model/devicemodel.cpp" line="205"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="107" />
+        <location filename="../lib/model/devicemodel.cpp" line="107"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="131" />
+        <location filename="../lib/model/devicemodel.cpp" line="131"/>
         <source>tool %1</source>
         <translation>Werkzeug %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="142" />
+        <location filename="../lib/model/devicemodel.cpp" line="142"/>
         <source>%1, %2, port %3</source>
         <translation>%1, %2, Port %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="148" />
+        <location filename="../lib/model/devicemodel.cpp" line="148"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="191" />
+        <location filename="../lib/model/devicemodel.cpp" line="191"/>
         <source>Monitor-only mode is on: nothing is written.</source>
         <translation>Nur-Beobachten ist an: nichts wird geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="193" />
+        <location filename="../lib/model/devicemodel.cpp" line="193"/>
         <source>Not connected: nothing can be sent until the line is back.</source>
         <translation>Nicht verbunden: nichts kann gesendet werden, bis die Leitung wieder da ist.</translation>
     </message>
@@ -2106,12 +2114,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>DisplayUnits</name>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="82" />
-        <source>'%1' is not a number</source>
-        <translation>'%1' ist keine Zahl</translation>
+        <location filename="../lib/model/displayunits.cpp" line="82"/>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>&apos;%1&apos; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="89" />
+        <location filename="../lib/model/displayunits.cpp" line="89"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 hat mehr Nachkommastellen, als %2 zulässt</translation>
     </message>
@@ -2119,7 +2127,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Elide</name>
     <message>
-        <location filename="../lib/protocol/elide.cpp" line="39" />
+        <location filename="../lib/protocol/elide.cpp" line="39"/>
         <source>%1… (%2 characters)</source>
         <translation>%1… (%2 Zeichen)</translation>
     </message>
@@ -2127,42 +2135,42 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="38" />
+        <location filename="../lib/model/eventlog.cpp" line="38"/>
         <source>Station error</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="40" />
+        <location filename="../lib/model/eventlog.cpp" line="40"/>
         <source>Port error</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="42" />
+        <location filename="../lib/model/eventlog.cpp" line="42"/>
         <source>Feeder error</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44" />
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
         <source>Alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46" />
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48" />
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50" />
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52" />
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
@@ -2170,27 +2178,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="108" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="108"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="110" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="110"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="112" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="112"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="114" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="114"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="116" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="116"/>
         <source>What happened</source>
         <translation>Ereignis</translation>
     </message>
@@ -2198,7 +2206,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>EventText</name>
     <message numerus="yes">
-        <location filename="../lib/model/eventtext.cpp" line="16" />
+        <location filename="../lib/model/eventtext.cpp" line="16"/>
         <source>%1 (%n times, until %2)</source>
         <translation>
             <numerusform>%1 (%n-mal, bis %2)</numerusform>
@@ -2209,17 +2217,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="82" />
+        <location filename="../lib/model/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="100" />
+        <location filename="../lib/model/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 hat keinen Befehl %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="115" />
+        <location filename="../lib/model/feedermodel.cpp" line="115"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -2227,87 +2235,87 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>FrameComposer</name>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="40" />
+        <location filename="../lib/model/framecomposer.cpp" line="40"/>
         <source>%1 carries the data field %2.</source>
         <translation>%1 enthält das Datenfeld %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="43" />
+        <location filename="../lib/model/framecomposer.cpp" line="43"/>
         <source>A write needs a data field: %1.</source>
         <translation>Ein Schreibbefehl braucht ein Datenfeld: %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="54" />
+        <location filename="../lib/model/framecomposer.cpp" line="54"/>
         <source>On the wire this value is written %1.</source>
         <translation>Auf der Leitung wird dieser Wert als %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="69" />
+        <location filename="../lib/model/framecomposer.cpp" line="69"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Unbekannte Gerätefamilie: der Katalog kann dieses Telegramm nicht prüfen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="77" />
+        <location filename="../lib/model/framecomposer.cpp" line="77"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 ist im Katalog kein Schreibbefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="78" />
+        <location filename="../lib/model/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 ist im Katalog kein Lesebefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="81" />
+        <location filename="../lib/model/framecomposer.cpp" line="81"/>
         <source>Did you mean %1?</source>
         <translation>Meinten Sie %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="82" />
+        <location filename="../lib/model/framecomposer.cpp" line="82"/>
         <source>It is sent as typed.</source>
         <translation>Es wird unverändert gesendet.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="87" />
+        <location filename="../lib/model/framecomposer.cpp" line="87"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Lesebefehle haben kein Datenfeld; das Gerät kann dieses Telegramm ablehnen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="93" />
+        <location filename="../lib/model/framecomposer.cpp" line="93"/>
         <source>Dangerous: %1</source>
         <translation>Gefährlich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="97" />
+        <location filename="../lib/model/framecomposer.cpp" line="97"/>
         <source>Catalog check: %1</source>
         <translation>Katalogprüfung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="111" />
+        <location filename="../lib/model/framecomposer.cpp" line="111"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="153" />
+        <location filename="../lib/model/framecomposer.cpp" line="153"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="171" />
+        <location filename="../lib/model/framecomposer.cpp" line="171"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>Nicht sendbar: der Befehl muss aus 3 druckbaren Zeichen bestehen, z. B. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="175" />
+        <location filename="../lib/model/framecomposer.cpp" line="175"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>Nicht sendbar: das Datenfeld darf nur druckbare ASCII-Zeichen enthalten.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="180" />
+        <location filename="../lib/model/framecomposer.cpp" line="180"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>Nicht sendbar: Adressen gehen von 00 bis 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="209" />
+        <location filename="../lib/model/framecomposer.cpp" line="209"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
@@ -2315,7 +2323,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="211" />
+        <location filename="../lib/model/framecomposer.cpp" line="211"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
@@ -2326,77 +2334,77 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>FrameDecoder</name>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="18" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
         <source>frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="20" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
         <source>BCC error</source>
         <translation>BCC-Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="22" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
         <source>format error</source>
         <translation>Formatfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="24" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
         <source>overflow</source>
         <translation>Überlauf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="26" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="26"/>
         <source>garbage</source>
         <translation>Datenmüll</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="55" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="55"/>
         <source>not STX…ETX BCC or too short</source>
         <translation>kein STX…ETX BCC oder zu kurz</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="59" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="59"/>
         <source>BCC is %1, expected %2</source>
         <translation>BCC ist %1, erwartet %2</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="69" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="69"/>
         <source>malformed addresses</source>
         <translation>fehlerhafte Adressen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="75" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
         <source>too short for header and command</source>
         <translation>zu kurz für Kopf und Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="78" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="78"/>
         <source>unknown header</source>
         <translation>unbekannter Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="83" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="83"/>
         <source>command is not 3 letters or digits</source>
         <translation>Befehl besteht nicht aus 3 Buchstaben oder Ziffern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="88" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="88"/>
         <source>data field is not printable ASCII</source>
         <translation>Datenfeld ist kein druckbares ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="121" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="121"/>
         <source>frame interrupted by a new STX</source>
         <translation>Telegramm durch ein neues STX unterbrochen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="130" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="130"/>
         <source>no ETX within %1 bytes</source>
         <translation>kein ETX innerhalb von %1 Bytes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="155" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="155"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n Byte außerhalb eines Telegramms</numerusform>
@@ -2407,27 +2415,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>HexBytes</name>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="34" />
+        <location filename="../lib/protocol/hexbytes.cpp" line="34"/>
         <source>odd number of hex digits before position %1</source>
         <translation>ungerade Anzahl von Hex-Ziffern vor Position %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="44" />
-        <source>'%1' at position %2 is not a hex digit</source>
-        <translation>'%1' an Position %2 ist keine Hex-Ziffer</translation>
+        <location filename="../lib/protocol/hexbytes.cpp" line="44"/>
+        <source>&apos;%1&apos; at position %2 is not a hex digit</source>
+        <translation>&apos;%1&apos; an Position %2 ist keine Hex-Ziffer</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="51" />
+        <location filename="../lib/protocol/hexbytes.cpp" line="51"/>
         <source>more than %1 bytes</source>
         <translation>mehr als %1 Bytes</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="55" />
+        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
         <source>odd number of hex digits</source>
         <translation>ungerade Anzahl von Hex-Ziffern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="57" />
+        <location filename="../lib/protocol/hexbytes.cpp" line="57"/>
         <source>no bytes given</source>
         <translation>keine Bytes angegeben</translation>
     </message>
@@ -2435,67 +2443,67 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Journal</name>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="28" />
+        <location filename="../lib/journal/journalreader.cpp" line="28"/>
         <source>No journal is open.</source>
         <translation>Kein Journal ist geöffnet.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="86" />
+        <location filename="../lib/journal/journalreader.cpp" line="86"/>
         <source>There is no journal at %1.</source>
         <translation>Unter %1 gibt es kein Journal.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="81" />
+        <location filename="../lib/journal/journalschema.cpp" line="81"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>Das Journal %1 wurde von einem neueren TipScope geschrieben (Schema %2; dieses kennt bis %3). Es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="96" />
+        <location filename="../lib/journal/journalschema.cpp" line="96"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>Die Datei %1 ist kein TipScope-Journal. Sie wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="162" />
+        <location filename="../lib/journal/journalschema.cpp" line="162"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="221" />
+        <location filename="../lib/journal/journalwriter.cpp" line="221"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Verlorene Einträge: %1. Grund: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="305" />
+        <location filename="../lib/journal/journalwriter.cpp" line="305"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="41" />
+        <location filename="../lib/journal/sqlerror.cpp" line="41"/>
         <source>The journal %1 cannot grow: the disk is full or the journal reached its size limit.</source>
         <translation>Das Journal %1 kann nicht wachsen: Der Datenträger ist voll oder das Journal hat seine Größengrenze erreicht.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="51" />
+        <location filename="../lib/journal/sqlerror.cpp" line="51"/>
         <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
         <translation>Das Journal %1 ist beschädigt oder kein Journal; es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="55" />
+        <location filename="../lib/journal/sqlerror.cpp" line="55"/>
         <source>The journal %1 is locked by another program.</source>
         <translation>Das Journal %1 ist von einem anderen Programm gesperrt.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="57" />
+        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
         <source>The disk holding the journal %1 reported an error.</source>
         <translation>Der Datenträger des Journals %1 hat einen Fehler gemeldet.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="59" />
+        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
         <source>The journal %1 reported an error: %2</source>
         <translation>Das Journal %1 hat einen Fehler gemeldet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="64" />
+        <location filename="../lib/journal/sqlerror.cpp" line="64"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>Das Journal %1 kann nicht geschrieben werden: Sein Ordner oder die Datei ist schreibgeschützt oder nicht zugänglich.</translation>
     </message>
@@ -2503,7 +2511,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>LinkStats</name>
     <message>
-        <location filename="../lib/link/linkstats.cpp" line="60" />
+        <location filename="../lib/link/linkstats.cpp" line="60"/>
         <source>%1 tx/s, latency %2 ms median (%3-%4), %5 sent, %6 answered, %7 timeouts, %8 corrupted, %9 NAKs, %10 stray, %11 retries</source>
         <translation>%1 tx/s, Latenz %2 ms Median (%3-%4), %5 gesendet, %6 beantwortet, %7 Zeitüberschreitungen, %8 beschädigt, %9 NAKs, %10 verwaist, %11 Wiederholungen</translation>
     </message>
@@ -2511,32 +2519,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="32" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="32"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: Min. %2, Max. %3, Mittel %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="41" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>wake</source>
         <translation>Aufwachen</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="41" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>heat-up</source>
         <translation>Aufheizen</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="43" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="43"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 um %2 auf %3: %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="46" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 um %2 auf %3: in diesem Zeitfenster nicht erreicht</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="50" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n weiteres Aufheizen</numerusform>
@@ -2544,17 +2552,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="59" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="59"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>Erholung um %1: %2 (Einbruch auf %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="62" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="62"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>Einbruch um %1 auf %2: in diesem Zeitfenster nicht erholt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="66" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n weitere Erholung</numerusform>
@@ -2562,22 +2570,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="74" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="74"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="76" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="76"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="77" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="77"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="103" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="103"/>
         <source>%1: no samples in this window</source>
         <translation>%1: keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -2585,210 +2593,210 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MqttClient</name>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="232" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="232"/>
         <source>The broker %1 refused the message: %2.</source>
         <translation>Der Broker %1 hat die Nachricht abgelehnt: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="284" />
-        <source>'%1' is not a topic a message can be published to.</source>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
+        <source>&apos;%1&apos; is not a topic a message can be published to.</source>
         <translation>„%1“ ist kein Topic, an das eine Nachricht veröffentlicht werden kann.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="286" />
-        <location filename="../lib/mqtt/mqttclient.cpp" line="311" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="311"/>
         <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
         <translation>QoS %1 gibt es nicht; MQTT kennt 0, 1 und 2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="288" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="288"/>
         <source>Not connected to the broker %1: the message to %2 is dropped.</source>
         <translation>Nicht mit dem Broker %1 verbunden: die Nachricht an %2 wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="291" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="291"/>
         <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
         <translation>%1 Nachrichten warten darauf, vom Broker %2 angenommen zu werden: die Nachricht an %3 wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="301" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="301"/>
         <source>The message to %1 was not sent: %2</source>
         <translation>Die Nachricht an %1 wurde nicht gesendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="309" />
-        <source>'%1' is not a valid subscription filter.</source>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
+        <source>&apos;%1&apos; is not a valid subscription filter.</source>
         <translation>„%1“ ist kein gültiger Abonnement-Filter.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="320" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
         <source>The subscription to %1 was not sent: %2</source>
         <translation>Das Abonnement von %1 wurde nicht gesendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="327" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="327"/>
         <source>There is no subscription to %1.</source>
         <translation>Es gibt kein Abonnement von %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="335" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="335"/>
         <source>The subscription to %1 was not ended: %2</source>
         <translation>Das Abonnement von %1 wurde nicht beendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="27" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="27"/>
         <source>The broker %1 refused the connection: bad user name or password.</source>
         <translation>Der Broker %1 hat die Verbindung abgelehnt: falscher Benutzername oder falsches Passwort.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="32" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="32"/>
         <source>The broker %1 refused the connection: not authorised (wrong user name or password, or this user may not connect).</source>
         <translation>Der Broker %1 hat die Verbindung abgelehnt: nicht berechtigt (falscher Benutzername oder falsches Passwort, oder dieser Benutzer darf sich nicht verbinden).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="39" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="39"/>
         <source>The broker %1 refused the connection: %2.</source>
         <translation>Der Broker %1 hat die Verbindung abgelehnt: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="45" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="45"/>
         <source>it does not speak MQTT 3.1.1</source>
         <translation>er spricht kein MQTT 3.1.1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="47" />
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="69" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="69"/>
         <source>it does not accept this client id</source>
         <translation>er akzeptiert diese Client-ID nicht</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="49" />
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="72" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="49"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="72"/>
         <source>the service is unavailable</source>
         <translation>der Dienst ist nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="55" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="55"/>
         <source>return code %1</source>
         <translation>Rückgabecode %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="67" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="67"/>
         <source>it does not speak MQTT 5</source>
         <translation>er spricht kein MQTT 5</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="74" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="74"/>
         <source>reason code %1</source>
         <translation>Grundcode %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="84" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="84"/>
         <source>No MQTT broker accepts connections at %1 (connection refused).</source>
         <translation>Unter %1 nimmt kein MQTT-Broker Verbindungen an (Verbindung abgelehnt).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="88" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="88"/>
         <source>The broker %1 closed the connection (%2).</source>
         <translation>Der Broker %1 hat die Verbindung geschlossen (%2).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="91" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="91"/>
         <source>The broker %1 cannot be reached: %2.</source>
         <translation>Der Broker %1 ist nicht erreichbar: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="112" />
-        <source>The broker's address %1 cannot be resolved.</source>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="112"/>
+        <source>The broker&apos;s address %1 cannot be resolved.</source>
         <translation>Die Adresse %1 des Brokers lässt sich nicht auflösen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="116" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="116"/>
         <source>The TLS handshake with the broker %1 failed.</source>
         <translation>Der TLS-Verbindungsaufbau mit dem Broker %1 ist fehlgeschlagen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="117" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="117"/>
         <source>The TLS handshake with the broker %1 failed: %2</source>
         <translation>Der TLS-Verbindungsaufbau mit dem Broker %1 ist fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="120" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="120"/>
         <source>The broker %1 stopped answering within the keep-alive time.</source>
         <translation>Der Broker %1 hat innerhalb der Keep-Alive-Zeit nicht mehr geantwortet.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="124" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="124"/>
         <source>The connection to the broker %1 was lost.</source>
         <translation>Die Verbindung zum Broker %1 ist abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="128" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="128"/>
         <source>The broker %1 sent data that is not valid MQTT.</source>
         <translation>Der Broker %1 hat Daten gesendet, die kein gültiges MQTT sind.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="131" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="131"/>
         <source>The connection to the broker %1 failed: %2.</source>
         <translation>Die Verbindung zum Broker %1 ist fehlgeschlagen: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="139" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="139"/>
         <source>The broker %1 cannot be reached: the connection was refused or reset.</source>
         <translation>Der Broker %1 ist nicht erreichbar: die Verbindung wurde abgelehnt oder zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="144" />
-        <source>The broker's host name %1 cannot be resolved: %2</source>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="144"/>
+        <source>The broker&apos;s host name %1 cannot be resolved: %2</source>
         <translation>Der Hostname %1 des Brokers lässt sich nicht auflösen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="38" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="38"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Ein Passwort ist gesetzt, aber kein Benutzername: MQTT sendet ein Passwort nur mit einem Benutzernamen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="47" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
         <source>The user name %1 is not accepted: %2</source>
         <translation>Der Benutzername %1 wird nicht angenommen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="59" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
         <source>The last will on %1 is not accepted: %2</source>
         <translation>Der letzte Wille auf %1 wird nicht angenommen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="66" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>Die CA-Zertifikatsdatei %1 kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="70" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="70"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Ein Client-Zertifikat braucht sowohl seine Zertifikatsdatei als auch seine Schlüsseldatei.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="75" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
         <source>The file %1 cannot be read.</source>
         <translation>Die Datei %1 kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="96" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="96"/>
         <source>TLS cannot be set up: %1</source>
         <translation>TLS kann nicht eingerichtet werden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="104" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="104"/>
         <source>The MQTT version cannot be set: %1</source>
         <translation>Die MQTT-Version kann nicht eingestellt werden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="128" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
         <source>The client id %1 is not accepted.</source>
         <translation>Die Client-ID %1 wird nicht angenommen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="129" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="129"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Kein Speicher mehr für einen MQTT-Client.</translation>
     </message>
@@ -2796,27 +2804,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MqttSecret</name>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="30" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="30"/>
         <source>The password file %1 does not exist.</source>
         <translation>Die Passwortdatei %1 existiert nicht.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="34" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
         <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
         <translation>Die Passwortdatei %1 ist größer als %2 Bytes; ist es die richtige Datei?</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="41" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="41"/>
         <source>The password file %1 cannot be read: %2</source>
         <translation>Die Passwortdatei %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="46" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="46"/>
         <source>The password file %1 is empty.</source>
         <translation>Die Passwortdatei %1 ist leer.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="55" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="55"/>
         <source>The environment variable %1 that should hold the password is not set or empty.</source>
         <translation>Die Umgebungsvariable %1, die das Passwort enthalten soll, ist nicht gesetzt oder leer.</translation>
     </message>
@@ -2824,94 +2832,94 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="71" />
+        <location filename="../lib/model/parameter.cpp" line="71"/>
         <source>read-only</source>
         <translation>schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="77" />
+        <location filename="../lib/model/parameter.cpp" line="77"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="80" />
+        <location filename="../lib/model/parameter.cpp" line="80"/>
         <source> in steps of %1 %2</source>
         <translation> in Schritten von %1 %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="87" />
+        <location filename="../lib/model/parameter.cpp" line="87"/>
         <source>, or %1</source>
         <translation>, oder %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="93" />
-        <location filename="../lib/model/parameter.cpp" line="134" />
+        <location filename="../lib/model/parameter.cpp" line="93"/>
+        <location filename="../lib/model/parameter.cpp" line="134"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="102" />
+        <location filename="../lib/model/parameter.cpp" line="102"/>
         <source>%1 is not allowed for %2: allowed is %3</source>
         <translation>%1 ist für %2 nicht zulässig: zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="107" />
+        <location filename="../lib/model/parameter.cpp" line="107"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="119" />
-        <location filename="../lib/model/parameter.cpp" line="232" />
+        <location filename="../lib/model/parameter.cpp" line="119"/>
+        <location filename="../lib/model/parameter.cpp" line="232"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="138" />
+        <location filename="../lib/model/parameter.cpp" line="138"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="189" />
+        <location filename="../lib/model/parameter.cpp" line="189"/>
         <source>reading %1 (%2)</source>
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="201" />
+        <location filename="../lib/model/parameter.cpp" line="201"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="202" />
-        <source>unreadable data field '%1'</source>
-        <translation>unlesbares Datenfeld '%1'</translation>
+        <location filename="../lib/model/parameter.cpp" line="202"/>
+        <source>unreadable data field &apos;%1&apos;</source>
+        <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="252" />
+        <location filename="../lib/model/parameter.cpp" line="252"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="255" />
+        <location filename="../lib/model/parameter.cpp" line="255"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="277" />
+        <location filename="../lib/model/parameter.cpp" line="277"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="292" />
+        <location filename="../lib/model/parameter.cpp" line="292"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="305" />
+        <location filename="../lib/model/parameter.cpp" line="305"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="319" />
+        <location filename="../lib/model/parameter.cpp" line="319"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -2919,57 +2927,57 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>PortDiagnostics</name>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
         <source>this program</source>
         <translation>dieses Programm</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
         <source>, this program</source>
         <translation>, dieses Programm</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="46" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="46"/>
         <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
         <translation>führen Sie `sudo usermod -aG %1 $USER` aus und melden Sie sich danach ab und wieder an.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
         <source>You are not allowed to open %1: %2</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50" />
-        <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP="dialout". Then %2</source>
-        <translation>Sie haben keine Berechtigung, %1 zu öffnen, und die Schnittstelle gehört zur Gruppe root statt zu dialout; ein Gruppenbeitritt hilft daher erst, wenn eine udev-Regel ihr GROUP="dialout" zuweist. Dann %2</translation>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
+        <translation>Sie haben keine Berechtigung, %1 zu öffnen, und die Schnittstelle gehört zur Gruppe root statt zu dialout; ein Gruppenbeitritt hilft daher erst, wenn eine udev-Regel ihr GROUP=&quot;dialout&quot; zuweist. Dann %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="54" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="54"/>
         <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen; die Schnittstelle gehört zur Gruppe %2 (nicht dialout): %3</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="96" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="96"/>
         <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
         <translation>%1 wird bereits von %2 verwendet. Schließen Sie diese Verbindung und versuchen Sie es dann erneut.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
         <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
         <translation>Diesen Port gibt es nicht: %1. Möglicherweise ist der Adapter abgezogen oder der Portname falsch geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="105" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="105"/>
         <source>%1 is already open in TipScope; close that connection first</source>
         <translation>%1 ist in TipScope bereits geöffnet; schließen Sie zuerst diese Verbindung</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="109" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="109"/>
         <source>%1 stopped working, perhaps because the adapter was unplugged</source>
         <translation>%1 funktioniert nicht mehr, vielleicht wurde der Adapter abgezogen</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
@@ -2977,68 +2985,68 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>PortModel</name>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="29" />
+        <location filename="../lib/model/portmodel.cpp" line="29"/>
         <source>Working</source>
         <translation>In Betrieb</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="31" />
+        <location filename="../lib/model/portmodel.cpp" line="31"/>
         <source>Stand</source>
         <translation>In der Ablage</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="33" />
+        <location filename="../lib/model/portmodel.cpp" line="33"/>
         <source>Sleep</source>
         <translation>Ruhemodus</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="35" />
+        <location filename="../lib/model/portmodel.cpp" line="35"/>
         <source>Hibernation</source>
         <translation>Tiefschlaf</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="43" />
+        <location filename="../lib/model/portmodel.cpp" line="43"/>
         <source>Cooling</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="45" />
+        <location filename="../lib/model/portmodel.cpp" line="45"/>
         <source>Suction</source>
         <translation>Absaugung</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="47" />
+        <location filename="../lib/model/portmodel.cpp" line="47"/>
         <source>Motor forward</source>
         <translation>Motor vorwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="49" />
+        <location filename="../lib/model/portmodel.cpp" line="49"/>
         <source>Motor backward</source>
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="105" />
-        <location filename="../lib/model/portmodel.cpp" line="120" />
+        <location filename="../lib/model/portmodel.cpp" line="105"/>
+        <location filename="../lib/model/portmodel.cpp" line="120"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="60" />
+        <location filename="../lib/model/portmodel.cpp" line="60"/>
         <source>High temperature</source>
         <translation>Übertemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="62" />
+        <location filename="../lib/model/portmodel.cpp" line="62"/>
         <source>Low temperature</source>
         <translation>Untertemperatur</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="63" />
+        <location filename="../lib/model/portmodel.cpp" line="63"/>
         <source>None</source>
         <translation>Keiner</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="181" />
+        <location filename="../lib/model/portmodel.cpp" line="181"/>
         <source>this port has no %1 command</source>
         <translation>dieser Port hat keinen Befehl %1</translation>
     </message>
@@ -3046,27 +3054,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>ProblemLevel</name>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="44" />
+        <location filename="../lib/model/problemlevel.cpp" line="44"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="46" />
+        <location filename="../lib/model/problemlevel.cpp" line="46"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="48" />
+        <location filename="../lib/model/problemlevel.cpp" line="48"/>
         <source>Info</source>
         <translation>Info</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="50" />
+        <location filename="../lib/model/problemlevel.cpp" line="50"/>
         <source>Warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="52" />
+        <location filename="../lib/model/problemlevel.cpp" line="52"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
@@ -3074,133 +3082,133 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="113" />
+        <location filename="../lib/model/profile.cpp" line="113"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: keine Einstellung von %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="118" />
-        <source>%1: '%2' is not a valid data field</source>
-        <translation>%1: '%2' ist kein gültiges Datenfeld</translation>
+        <location filename="../lib/model/profile.cpp" line="118"/>
+        <source>%1: &apos;%2&apos; is not a valid data field</source>
+        <translation>%1: &apos;%2&apos; ist kein gültiges Datenfeld</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="123" />
-        <location filename="../lib/model/profile.cpp" line="209" />
+        <location filename="../lib/model/profile.cpp" line="123"/>
+        <location filename="../lib/model/profile.cpp" line="209"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="137" />
+        <location filename="../lib/model/profile.cpp" line="137"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="148" />
-        <source>not a TipScope profile (no "format": "tipscope-profile")</source>
-        <translation>kein TipScope-Profil ("format": "tipscope-profile" fehlt)</translation>
+        <location filename="../lib/model/profile.cpp" line="148"/>
+        <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
+        <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="159" />
-        <source>unknown device family '%1'</source>
-        <translation>unbekannte Gerätefamilie '%1'</translation>
+        <location filename="../lib/model/profile.cpp" line="159"/>
+        <source>unknown device family &apos;%1&apos;</source>
+        <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="167" />
+        <location filename="../lib/model/profile.cpp" line="167"/>
         <source>the profile has no values</source>
         <translation>das Profil enthält keine Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="173" />
-        <source>%1: the value must be a data field in quotes, e.g. "00350"</source>
-        <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. "00350"</translation>
+        <location filename="../lib/model/profile.cpp" line="173"/>
+        <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
+        <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="187" />
+        <location filename="../lib/model/profile.cpp" line="187"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="199" />
+        <location filename="../lib/model/profile.cpp" line="199"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="203" />
+        <location filename="../lib/model/profile.cpp" line="203"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="225" />
+        <location filename="../lib/model/profile.cpp" line="225"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="132" />
+        <location filename="../lib/model/profile.cpp" line="132"/>
         <source>not a valid JSON file: %1</source>
         <translation>keine gültige JSON-Datei: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="142" />
+        <location filename="../lib/model/profile.cpp" line="142"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>mehr als einmal angegeben, daher ist unklar, welcher Wert gemeint ist: %1; es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="101" />
+        <location filename="../lib/model/profilejson.cpp" line="101"/>
         <source>a NUL byte at byte %1</source>
         <translation>ein NUL-Byte bei Byte %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="102" />
+        <location filename="../lib/model/profilejson.cpp" line="102"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>Steuerzeichen 0x%1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152" />
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>Profilschema %1 wird nicht unterstützt (diese Version liest die Schemas %2 bis %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="176" />
-        <source>%1: the value must be a data field in quotes, e.g. "00350", or an object with one in "raw" (and text in "name" and "value")</source>
-        <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. "00350", oder ein Objekt mit einem in "raw" (und Text in "name" und "value")</translation>
+        <location filename="../lib/model/profile.cpp" line="176"/>
+        <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
+        <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;, oder ein Objekt mit einem in &quot;raw&quot; (und Text in &quot;name&quot; und &quot;value&quot;)</translation>
     </message>
 </context>
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="30" />
+        <location filename="../lib/model/profileapplier.cpp" line="30"/>
         <source>refused, nothing was written: %1</source>
         <translation>abgelehnt, nichts wurde geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="34" />
+        <location filename="../lib/model/profileapplier.cpp" line="34"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="38" />
+        <location filename="../lib/model/profileapplier.cpp" line="38"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>geändert %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="40" />
+        <location filename="../lib/model/profileapplier.cpp" line="40"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FEHLER %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="42" />
+        <location filename="../lib/model/profileapplier.cpp" line="42"/>
         <source>would send %1</source>
         <translation>würde %1 senden</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47" />
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>abgebrochen: die übrigen Werte wurden nicht geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="55" />
+        <location filename="../lib/model/profileapplier.cpp" line="55"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n Unterschied</numerusform>
@@ -3208,49 +3216,49 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="56" />
+        <location filename="../lib/model/profileapplier.cpp" line="56"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 geändert, %2 bereits richtig, %3 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="101" />
+        <location filename="../lib/model/profileapplier.cpp" line="101"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>das Profil ist für %1, dieses Gerät ist %2 (erzwingen, um die gemeinsamen Einstellungen anzuwenden)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="106" />
+        <location filename="../lib/model/profileapplier.cpp" line="106"/>
         <source>monitor-only mode is on</source>
         <translation>der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="165" />
+        <location filename="../lib/model/profileapplier.cpp" line="165"/>
         <source>reading the device</source>
         <translation>Gerät wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="227" />
+        <location filename="../lib/model/profileapplier.cpp" line="227"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="229" />
+        <location filename="../lib/model/profileapplier.cpp" line="229"/>
         <source>unreadable value</source>
         <translation>unlesbarer Wert</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="76" />
+        <location filename="../lib/model/profileapplier.cpp" line="76"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>das Profil würde die Grenzen seiner Einstellungen verletzen (MIT ≤ MAT, MIT ≤ ausgewählte Temperatur ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="96" />
-        <source>none of the profile's settings exists on this %1 (skipped: %2)</source>
+        <location filename="../lib/model/profileapplier.cpp" line="96"/>
+        <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>keine der Einstellungen des Profils gibt es an diesem %1 (übersprungen: %2)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="49" />
+        <location filename="../lib/model/profileapplier.cpp" line="49"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n übersprungen</numerusform>
@@ -3258,12 +3266,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="121" />
+        <location filename="../lib/model/profileapplier.cpp" line="121"/>
         <source>this %1 has no such setting</source>
         <translation>dieses %1 hat keine solche Einstellung</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45" />
+        <location filename="../lib/model/profileapplier.cpp" line="45"/>
         <source>skipped %1 %2: %3</source>
         <translation>übersprungen %1 %2: %3</translation>
     </message>
@@ -3271,27 +3279,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>ProfileLimits</name>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="64" />
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
         <source>in the profile</source>
         <translation>im Profil</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="64" />
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
         <source>on the device now</source>
         <translation>jetzt am Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="65" />
+        <location filename="../lib/model/profilelimits.cpp" line="65"/>
         <source>%1 %2 (%3)</source>
         <translation>%1 %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="83" />
+        <location filename="../lib/model/profilelimits.cpp" line="83"/>
         <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
         <translation>%1 ist unbekannt (das Gerät hat nicht geantwortet), daher lässt sich %2 nicht dagegen prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="90" />
+        <location filename="../lib/model/profilelimits.cpp" line="90"/>
         <source>%1 is above %2</source>
         <translation>%1 liegt über %2</translation>
     </message>
@@ -3299,57 +3307,57 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>SerialPortList</name>
     <message>
-        <location filename="../lib/link/ports/serialportlist.cpp" line="161" />
+        <location filename="../lib/link/ports/serialportlist.cpp" line="161"/>
         <source>%1 is an FTDI adapter with a %2 ms latency timer (the kernel default is 16 ms), which holds back every short answer and throttles request/answer traffic.
 Set it to 1 ms now with:
   echo 1 | sudo tee /sys/bus/usb-serial/devices/%1/latency_timer
 Make it permanent with this udev rule:
-  echo 'ACTION=="add", SUBSYSTEM=="usb-serial", DRIVER=="ftdi_sio", ATTR{latency_timer}="1"' | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</source>
+  echo &apos;ACTION==&quot;add&quot;, SUBSYSTEM==&quot;usb-serial&quot;, DRIVER==&quot;ftdi_sio&quot;, ATTR{latency_timer}=&quot;1&quot;&apos; | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</source>
         <translation>%1 ist ein FTDI-Adapter mit einem Latenz-Timer von %2 ms (Kernel-Standard: 16 ms); dieser hält jede kurze Antwort zurück und bremst den Anfrage-Antwort-Verkehr.
 Sofort auf 1 ms stellen mit:
   echo 1 | sudo tee /sys/bus/usb-serial/devices/%1/latency_timer
 Dauerhaft mit dieser udev-Regel:
-  echo 'ACTION=="add", SUBSYSTEM=="usb-serial", DRIVER=="ftdi_sio", ATTR{latency_timer}="1"' | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</translation>
+  echo &apos;ACTION==&quot;add&quot;, SUBSYSTEM==&quot;usb-serial&quot;, DRIVER==&quot;ftdi_sio&quot;, ATTR{latency_timer}=&quot;1&quot;&apos; | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</translation>
     </message>
 </context>
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="26" />
-        <location filename="../lib/model/session.cpp" line="94" />
-        <location filename="../lib/model/session.cpp" line="97" />
+        <location filename="../lib/model/session.cpp" line="26"/>
+        <location filename="../lib/model/session.cpp" line="94"/>
+        <location filename="../lib/model/session.cpp" line="97"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="93" />
-        <location filename="../lib/model/session.cpp" line="106" />
-        <location filename="../lib/model/session.cpp" line="114" />
+        <location filename="../lib/model/session.cpp" line="93"/>
+        <location filename="../lib/model/session.cpp" line="106"/>
+        <location filename="../lib/model/session.cpp" line="114"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="130" />
+        <location filename="../lib/model/session.cpp" line="130"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="175" />
+        <location filename="../lib/model/session.cpp" line="175"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="176" />
+        <location filename="../lib/model/session.cpp" line="176"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="182" />
+        <location filename="../lib/model/session.cpp" line="182"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="190" />
+        <location filename="../lib/model/session.cpp" line="190"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -3360,12 +3368,12 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SettingName</name>
     <message>
-        <location filename="../lib/model/settingname.cpp" line="22" />
+        <location filename="../lib/model/settingname.cpp" line="22"/>
         <source>tool %1</source>
         <translation>Werkzeug %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/settingname.cpp" line="33" />
+        <location filename="../lib/model/settingname.cpp" line="33"/>
         <source>port %1</source>
         <translation>Port %1</translation>
     </message>
@@ -3373,27 +3381,27 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>StationModel</name>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="55" />
+        <location filename="../lib/model/stationmodel.cpp" line="55"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="74" />
+        <location filename="../lib/model/stationmodel.cpp" line="74"/>
         <source>%1 does not support %2</source>
         <translation>%1 unterstützt %2 nicht</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="81" />
+        <location filename="../lib/model/stationmodel.cpp" line="81"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 kann nicht im Speicher sichern</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="116" />
+        <location filename="../lib/model/stationmodel.cpp" line="116"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="130" />
+        <location filename="../lib/model/stationmodel.cpp" line="130"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -3401,52 +3409,52 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="143" />
+        <location filename="../lib/model/supportreport.cpp" line="143"/>
         <source>TipScope support report, %1</source>
         <translation>TipScope-Supportbericht, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="144" />
+        <location filename="../lib/model/supportreport.cpp" line="144"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="150" />
+        <location filename="../lib/model/supportreport.cpp" line="150"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="151" />
+        <location filename="../lib/model/supportreport.cpp" line="151"/>
         <source>State: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="152" />
+        <location filename="../lib/model/supportreport.cpp" line="152"/>
         <source>Statistics: %1</source>
         <translation>Statistik: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="177" />
+        <location filename="../lib/model/supportreport.cpp" line="177"/>
         <source>Recent events:</source>
         <translation>Letzte Ereignisse:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="80" />
+        <location filename="../lib/model/supportreport.cpp" line="80"/>
         <source>Device %1</source>
         <translation>Gerät %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="85" />
+        <location filename="../lib/model/supportreport.cpp" line="85"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="87" />
+        <location filename="../lib/model/supportreport.cpp" line="87"/>
         <source>, software %1</source>
         <translation>, Software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="167" />
+        <location filename="../lib/model/supportreport.cpp" line="167"/>
         <source>  What to check:</source>
         <translation>  Was zu prüfen ist:</translation>
     </message>
@@ -3454,86 +3462,86 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>ValueCodec</name>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="43" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="43"/>
         <source>%1 to %2%3</source>
         <translation>%1 bis %2%3</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="47" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="47"/>
         <source> in steps of %1</source>
         <translation> in Schritten von %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="49" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="49"/>
         <source>, or %1</source>
         <translation>, oder %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="57" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="57"/>
         <source>one of %1</source>
         <translation>einer der Werte %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="60" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="60"/>
         <source>no value (the command carries %1)</source>
         <translation>kein Wert (der Befehl enthält %1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="63" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="63"/>
         <source>nothing: it is read-only</source>
         <translation>nichts: schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="72" />
-        <location filename="../lib/protocol/valuecodec.cpp" line="78" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="72"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="92" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="92"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 für %2 (%3) abgelehnt: zulässig ist %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="183" />
-        <source>'%1' is not a delay in seconds such as 1.6 or 01.60</source>
-        <translation>'%1' ist keine Verzögerung in Sekunden wie 1.6 oder 01.60</translation>
+        <location filename="../lib/protocol/valuecodec.cpp" line="183"/>
+        <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
+        <translation>&apos;%1&apos; ist keine Verzögerung in Sekunden wie 1.6 oder 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="188" />
-        <source>'%1' is not a whole number; %2 takes %3</source>
-        <translation>'%1' ist keine ganze Zahl; für %2 zulässig: %3</translation>
+        <location filename="../lib/protocol/valuecodec.cpp" line="188"/>
+        <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
+        <translation>&apos;%1&apos; ist keine ganze Zahl; für %2 zulässig: %3</translation>
     </message>
 </context>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="30" />
+        <location filename="../app/gui/main.cpp" line="45"/>
         <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
         <translation>JBC-Lötstationen und den SFR-Lotdrahtvorschub konfigurieren und überwachen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="36" />
+        <location filename="../app/gui/main.cpp" line="51"/>
         <source>Start on the built-in simulated DME station and SFR feeder.</source>
         <translation>Mit der eingebauten simulierten DME-Station und dem SFR-Lotdrahtvorschub starten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="39" />
+        <location filename="../app/gui/main.cpp" line="54"/>
         <source>Connect to this serial port.</source>
         <translation>Mit dieser seriellen Schnittstelle verbinden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="42" />
+        <location filename="../app/gui/main.cpp" line="57"/>
         <source>Connect to a TCP serial server.</source>
         <translation>Mit einem seriellen TCP-Server verbinden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="46" />
+        <location filename="../app/gui/main.cpp" line="61"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Ein PNG jeder Seite in DIR speichern, dann beenden.</translation>
     </message>
-<message>
-        <location filename="../app/gui/main.cpp" line="66" />
+    <message>
+        <location filename="../app/gui/main.cpp" line="66"/>
         <source>tipscope: there is no display (neither DISPLAY nor WAYLAND_DISPLAY is set); start it on a desktop, or use tipscope-cli</source>
         <translation>tipscope: es gibt keine Anzeige (weder DISPLAY noch WAYLAND_DISPLAY ist gesetzt); starten Sie es auf einem Desktop, oder verwenden Sie tipscope-cli</translation>
     </message>
@@ -3541,7 +3549,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="45" />
+        <location filename="../app/gui/charts/chartplotview.cpp" line="45"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Zeitdiagramm. Mausrad oder Plus- und Minustaste zoomen, Ziehen oder Pfeiltasten verschieben, Umschalt+Ziehen wählt einen Bereich, Doppelklick oder Pos1 setzt zurück.</translation>
     </message>
@@ -3549,7 +3557,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="479" />
+        <location filename="../app/gui/charts/chartwidget.cpp" line="479"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -3560,263 +3568,263 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="31" />
-        <location filename="../app/gui/charts/chartspage.h" line="69" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
+        <location filename="../app/gui/charts/chartspage.h" line="69"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="108" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="108"/>
         <source>Values under the cursor</source>
         <translation>Werte unter dem Mauszeiger</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="127" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="127"/>
         <source>&amp;Measurements</source>
         <translation>&amp;Messwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="131" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="131"/>
         <source>Heat-ups, recoveries and min/max/mean of the visible window</source>
         <translation>Aufheizen, Erholungen und Min./Max./Mittel des sichtbaren Zeitfensters</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="136" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="136"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>Toleranzband für A&amp;ufheizen und Erholung ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="139" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="139"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Toleranzband um den Sollwert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="152" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="152"/>
         <source>Measurements of the visible window</source>
         <translation>Messungen im sichtbaren Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="195" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="195"/>
         <source>Point at a chart to read every series at that instant.</source>
         <translation>Zeigen Sie auf ein Diagramm, um alle Reihen zu diesem Zeitpunkt abzulesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="197" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="197"/>
         <source>Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
         <translation>Mausrad: Zoom · Ziehen: Verschieben · Umschalt+Ziehen: auf einen Bereich zoomen · Doppelklick: Zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="175" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="175"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="178" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="181" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
         <source>%1 — feeder</source>
         <translation>%1 — Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="185" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
         <source>%1 — all ports</source>
         <translation>%1 — alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="186" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="189" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>Temperature (%1)</source>
         <translation>Temperatur (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>Power (%)</source>
         <translation>Leistung (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="302" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="301"/>
         <source>No samples in this window</source>
         <translation>Keine Messwerte in diesem Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="50" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="50"/>
         <source>device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="52" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="52"/>
         <source>%1 · %2 · %3: %4</source>
         <translation>%1 · %2 · %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="63" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="63"/>
         <source>&amp;Window</source>
         <translation>&amp;Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="68" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
         <source>Time window</source>
         <translation>Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
         <source>1 h</source>
         <translation>1 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
         <source>4 h</source>
         <translation>4 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
         <source>12 h</source>
         <translation>12 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
         <source>24 h</source>
         <translation>24 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="80" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="80"/>
         <source>&amp;Follow</source>
         <translation>&amp;Mitlaufen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="83" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
         <source>Keep the newest data at the right edge; uncheck to pause</source>
         <translation>Die neuesten Daten am rechten Rand halten; zum Anhalten abwählen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="86" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
         <source>&amp;Reset view</source>
         <translation>Ansicht zu&amp;rücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="90" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="90"/>
         <source>Pane layout</source>
         <translation>Anordnung der Bereiche</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="91" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
         <source>Ports overlaid</source>
         <translation>Ports überlagert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="92" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
         <source>One pane per port</source>
         <translation>Ein Bereich pro Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="96" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="96"/>
         <source>Trans&amp;istor, transformer</source>
         <translation>Trans&amp;istor, Transformator</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="98" />
-        <source>Also draw each port's transistor temperature and the station's transformer temperature (read every few seconds)</source>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="98"/>
+        <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
         <translation>Auch die Transistortemperatur jedes Ports und die Transformatortemperatur der Station zeichnen (alle paar Sekunden gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="102" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="105" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="105"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Sichtbares Zeitfenster als &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="106" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Sichtbares Zeitfenster als &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="108" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="108"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Aufzeichnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="110" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Jeden neuen Messwert und jedes Ereignis in eine CSV-Datei schreiben, bis abgewählt</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="112" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="112"/>
         <source>&amp;Open recording…</source>
         <translation>Aufzeichnung ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="114" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="114"/>
         <source>Back to &amp;live</source>
         <translation>Zurück zu &amp;Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="119" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
         <source>Data shown</source>
         <translation>Angezeigte Daten</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="122" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="122"/>
         <source>Recording stopped</source>
         <translation>Aufzeichnung beendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="123" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
         <source>Writing %1 failed: %2</source>
         <translation>Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="79" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="79"/>
         <source>P%1</source>
         <translation>P%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="95" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="95"/>
         <source>High alarm</source>
         <translation>Alarm hoch</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="98" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="98"/>
         <source>Low alarm</source>
         <translation>Alarm tief</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="154" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="154"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Wiedergabe: %1 (%Ln Zeile)</numerusform>
@@ -3824,295 +3832,285 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="156" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="156"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="172" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="172"/>
         <source> · recording to %1</source>
         <translation> · Aufzeichnung in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="56" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="56"/>
         <source>there is no chart to export</source>
         <translation>es gibt kein Diagramm zum Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="47" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="47"/>
         <source>%1 – %2 (%3)</source>
         <translation>%1 – %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="110" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="110"/>
         <source>the image could not be encoded</source>
         <translation>das Bild konnte nicht erzeugt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="134" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="134"/>
         <source>%1 × %2 (twice the charts on screen)</source>
         <translation>%1 × %2 (doppelte Größe der Diagramme am Bildschirm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="135" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138" />
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
         <source>Export chart as PNG</source>
         <translation>Diagramm als PNG exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
         <source>Image size in pixels:</source>
         <translation>Bildgröße in Pixeln:</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
         <source>Export chart data as CSV</source>
         <translation>Diagrammdaten als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="203" />
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
         <source>Export failed: %1</source>
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="202" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="202"/>
         <source>Record to CSV file</source>
         <translation>In CSV-Datei aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="206" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Record</source>
         <translation>Aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="206" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Cannot record: %1</source>
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
         <source>Open recording</source>
         <translation>Aufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
         <source>Reading %1: %2 MB</source>
         <translation>Lese %1: %2 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
         <source>Reading %1…</source>
         <translation>Lese %1 …</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
         <source>Open a chart recording</source>
         <translation>Diagrammaufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>CSV-Datei (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Replay</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Cannot replay %1</source>
         <translation>%1 kann nicht wiedergegeben werden</translation>
     </message>
-<message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="113" />
-        <source>Point at a chart to read every series at that instant. Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
-        <translation>Zeigen Sie auf ein Diagramm, um alle Reihen zu diesem Zeitpunkt abzulesen. Mausrad: Zoom · Ziehen: Verschieben · Umschalt+Ziehen: auf einen Bereich zoomen · Doppelklick: Zurücksetzen.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="157" />
-        <source>could not write %1</source>
-        <translation>%1 konnte nicht geschrieben werden</translation>
-    </message>
-    </context>
+</context>
 <context>
     <name>tipscope::gui::ConnectionBar</name>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="23" />
-        <location filename="../app/gui/connectionbar.cpp" line="30" />
+        <location filename="../app/gui/connectionbar.cpp" line="35"/>
+        <location filename="../app/gui/connectionbar.cpp" line="42"/>
         <source>Serial port</source>
         <translation>Serielle Schnittstelle</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="24" />
-        <location filename="../app/gui/connectionbar.cpp" line="34" />
+        <location filename="../app/gui/connectionbar.cpp" line="36"/>
+        <location filename="../app/gui/connectionbar.cpp" line="46"/>
         <source>TCP serial server</source>
         <translation>Serieller TCP-Server</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="25" />
+        <location filename="../app/gui/connectionbar.cpp" line="37"/>
         <source>Demo (simulated DME + SFR)</source>
         <translation>Demo (simulierte DME + SFR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="26" />
+        <location filename="../app/gui/connectionbar.cpp" line="38"/>
         <source>Connection type</source>
         <translation>Verbindungsart</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="31" />
+        <location filename="../app/gui/connectionbar.cpp" line="43"/>
         <source>Serial ports on this computer; you may also type a device path</source>
         <translation>Serielle Schnittstellen dieses Computers; Sie können auch einen Gerätepfad eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="33" />
+        <location filename="../app/gui/connectionbar.cpp" line="45"/>
         <source>host:port</source>
         <translation>Host:Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="38" />
+        <location filename="../app/gui/connectionbar.cpp" line="50"/>
         <source>Baud rate</source>
         <translation>Baudrate</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="40" />
+        <location filename="../app/gui/connectionbar.cpp" line="52"/>
         <source>no parity</source>
         <translation>keine Parität</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="41" />
+        <location filename="../app/gui/connectionbar.cpp" line="53"/>
         <source>even</source>
         <translation>gerade</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="42" />
+        <location filename="../app/gui/connectionbar.cpp" line="54"/>
         <source>odd</source>
         <translation>ungerade</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="44" />
+        <location filename="../app/gui/connectionbar.cpp" line="56"/>
         <source>1 stop bit</source>
         <translation>1 Stoppbit</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="45" />
+        <location filename="../app/gui/connectionbar.cpp" line="57"/>
         <source>2 stop bits</source>
         <translation>2 Stoppbits</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="47" />
+        <location filename="../app/gui/connectionbar.cpp" line="59"/>
         <source>Find devices</source>
         <translation>Geräte suchen</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="48" />
+        <location filename="../app/gui/connectionbar.cpp" line="60"/>
         <source>With addresses</source>
         <translation>Mit Adressen</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="49" />
+        <location filename="../app/gui/connectionbar.cpp" line="61"/>
         <source>Without addresses</source>
         <translation>Ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="50" />
+        <location filename="../app/gui/connectionbar.cpp" line="62"/>
         <source>Addressing</source>
         <translation>Adressierung</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="53" />
+        <location filename="../app/gui/connectionbar.cpp" line="65"/>
         <source>robot </source>
         <translation>Roboter </translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="54" />
+        <location filename="../app/gui/connectionbar.cpp" line="66"/>
         <source>Robot address</source>
         <translation>Roboteradresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="57" />
+        <location filename="../app/gui/connectionbar.cpp" line="69"/>
         <source>device </source>
         <translation>Gerät </translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="58" />
+        <location filename="../app/gui/connectionbar.cpp" line="70"/>
         <source>Device address</source>
         <translation>Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="59" />
-        <location filename="../app/gui/connectionbar.cpp" line="167" />
+        <location filename="../app/gui/connectionbar.cpp" line="71"/>
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
         <source>&amp;Connect</source>
         <translation>&amp;Verbinden</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="60" />
+        <location filename="../app/gui/connectionbar.cpp" line="72"/>
         <source>&amp;Monitor only</source>
         <translation>Nur &amp;beobachten</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="61" />
+        <location filename="../app/gui/connectionbar.cpp" line="73"/>
         <source>Block every write: watch a production line without risk</source>
         <translation>Sperrt jeden Schreibzugriff: eine Fertigungslinie ohne Risiko beobachten</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="93" />
+        <location filename="../app/gui/connectionbar.cpp" line="105"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="167" />
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Trennen</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="179" />
+        <location filename="../app/gui/connectionbar.cpp" line="191"/>
         <source>Connected</source>
         <translation>Verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="184" />
+        <location filename="../app/gui/connectionbar.cpp" line="196"/>
         <source>Connecting</source>
         <translation>Verbindung wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="184" />
+        <location filename="../app/gui/connectionbar.cpp" line="196"/>
         <source>Detecting devices</source>
         <translation>Geräte werden erkannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="188" />
+        <location filename="../app/gui/connectionbar.cpp" line="200"/>
         <source>Disconnected, retrying</source>
         <translation>Getrennt, neuer Versuch läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="192" />
+        <location filename="../app/gui/connectionbar.cpp" line="204"/>
         <source>Cannot connect</source>
         <translation>Verbindung nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="195" />
+        <location filename="../app/gui/connectionbar.cpp" line="207"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
@@ -4120,186 +4118,186 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="87" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="96" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="96"/>
         <source>While paused, new rows are held; they appear on resume.</source>
         <translation>Solange angehalten ist, werden neue Zeilen zurückgehalten; sie erscheinen beim Fortsetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136" />
-        <location filename="../app/gui/pages/consolepage.cpp" line="337" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="141" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="145" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
         <source>Relative time</source>
         <translation>Relative Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="148" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>Show bytes sent</source>
         <translation>Gesendete Bytes anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>RX chunks</source>
         <translation>RX-Blöcke</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Frames</source>
         <translation>Telegramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show received frames, decoded</source>
         <translation>Empfangene Telegramme dekodiert anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Notes</source>
         <translation>Hinweise</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="177" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>De&amp;vice:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="180" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>Device address filter</source>
         <translation>Filter für Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="181" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="190" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
         <source>Co&amp;mmand:</source>
         <translation>Be&amp;fehl:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="193" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Command filter</source>
         <translation>Befehlsfilter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="194" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
         <source>e.g. ST1</source>
         <translation>z. B. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="205" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
         <source>Remove every row, held ones included</source>
         <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="206" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
         <source>Save…</source>
         <translation>Speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="208" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="214" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="214"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="260" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="260"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="274" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="288" />
-        <location filename="../app/gui/pages/consolepage.cpp" line="298" />
-        <location filename="../app/gui/pages/consolepage.cpp" line="316" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="288"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="316"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="337" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="350" />
-        <location filename="../app/gui/pages/consolepage.cpp" line="355" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="351" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="351"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="373" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 von %2 Zeilen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="375" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>angehalten: %n zurückgehalten</numerusform>
@@ -4307,12 +4305,12 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.h" line="62" />
+        <location filename="../app/gui/pages/consolepage.h" line="62"/>
         <source>Console</source>
         <translation>Konsole</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="356" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
         <source>The console could not be saved:
 %1</source>
         <translation>Die Konsole konnte nicht gespeichert werden:
@@ -4322,199 +4320,199 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="72" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="72"/>
         <source>When the counters were read</source>
         <translation>Zeitpunkt der Zählerabfrage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="74" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="74"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="76" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="76"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="77" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="79" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
         <source>Refresh counters</source>
         <translation>Zähler aktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="81" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>&amp;Export CSV…</source>
         <translation>CSV e&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="82" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="83" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Export counters as CSV</source>
         <translation>Zähler als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="145" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="145"/>
         <source>Reading the counters…</source>
         <translation>Zähler werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="148" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
         <source>Last reading at %1</source>
         <translation>Letzte Abfrage um %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="150" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="150"/>
         <source>Waiting for the first reading…</source>
         <translation>Warte auf die erste Abfrage…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="210" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
         <source>Station %1</source>
         <translation>Station %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="212" />
-        <location filename="../app/gui/pages/counterspage.cpp" line="243" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Counters of %1</source>
         <translation>Zähler von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="228" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="228"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="241" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="241"/>
         <source>Solder feeder %1</source>
         <translation>Lotdrahtvorschub %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="247" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="247" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Partial</source>
         <translation>Teilzähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="289" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="291" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="291"/>
         <source>Last read failed: %1</source>
         <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="294" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
         <source>Read at %1</source>
         <translation>Gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="297" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="297"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="326" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="326"/>
         <source>Reset partial counter</source>
         <translation>Teilzähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="327" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>Reset “%1” on %2?</source>
         <translation>„%1“ an %2 zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="329" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="329"/>
         <source>It now reads %1.</source>
         <translation>Er steht jetzt auf %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
         <source>The total counter is not affected.</source>
         <translation>Der Gesamtzähler bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>Reset counter</source>
         <translation>Zähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 Es wurde nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="343" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 Nicht zurückgesetzt: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="346" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 %2 wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="352" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="353" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="366" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386" />
-        <location filename="../app/gui/pages/counterspage.cpp" line="392" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="392"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="390" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="393" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="44" />
+        <location filename="../app/gui/pages/counterspage.h" line="44"/>
         <source>Counters</source>
         <translation>Zähler</translation>
     </message>
@@ -4522,27 +4520,27 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::DeviceTree</name>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="18" />
+        <location filename="../app/gui/devicetree.cpp" line="20"/>
         <source>Devices</source>
         <translation>Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="79" />
+        <location filename="../app/gui/devicetree.cpp" line="86"/>
         <source>No line</source>
         <translation>Keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="85" />
+        <location filename="../app/gui/devicetree.cpp" line="92"/>
         <source>feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="85" />
+        <location filename="../app/gui/devicetree.cpp" line="92"/>
         <source>station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="90" />
+        <location filename="../app/gui/devicetree.cpp" line="97"/>
         <source>Port %1: %2</source>
         <translation>Port %1: %2</translation>
     </message>
@@ -4550,27 +4548,27 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::DispensingPage</name>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="47" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="47"/>
         <source>Only the ALE has a built-in wire feed.</source>
         <translation>Nur die ALE hat einen eingebauten Drahtvorschub.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="57" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
         <source>&amp;Start dispensing</source>
         <translation>Dosieren &amp;starten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="58" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="58"/>
         <source>S&amp;top dispensing</source>
         <translation>Dosieren sto&amp;ppen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="59" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="59"/>
         <source>Ignore fuse error…</source>
         <translation>Sicherungsfehler ignorieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="65" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="65"/>
         <source>
 
 Continue?</source>
@@ -4579,43 +4577,43 @@ Continue?</source>
 Fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="77" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="77"/>
         <source>Wire feed settings</source>
         <translation>Einstellungen des Drahtvorschubs</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="87" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="87"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="112" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="112"/>
         <source>%1 · dispensed %2 in %3 cycles · %4</source>
         <translation>%1 · %2 in %3 Zyklen dosiert · %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="116" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
         <source>fuse unknown</source>
         <translation>Sicherung unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="117" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="117"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="118" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="118"/>
         <source>fuse missing or blown</source>
         <translation>Sicherung fehlt oder ist durchgebrannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="124" />
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="132" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="132"/>
         <source>no ALE</source>
         <translation>keine ALE</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.h" line="21" />
+        <location filename="../app/gui/pages/dispensingpage.h" line="21"/>
         <source>Dispensing</source>
         <translation>Dosierung</translation>
     </message>
@@ -4623,128 +4621,128 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
         <source>Current state</source>
         <translation>Aktueller Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
         <source>Current errors and alarms</source>
         <translation>Aktuelle Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Where</source>
         <translation>Ort</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Temperature alarm</source>
         <translation>Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
         <source>&amp;Reset feeder error</source>
         <translation>Vorschubfehler &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
         <source>Reset feeder error</source>
         <translation>Vorschubfehler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149"/>
         <source>No device is connected.</source>
         <translation>Kein Gerät verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180" />
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182"/>
         <source>Error code %1: %2</source>
         <translation>Fehlercode %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
         <source>This device has no temperature alarm</source>
         <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="227" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="227"/>
         <source>Not reset: %1</source>
         <translation>Nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="230" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="230"/>
         <source>Resetting the feeder error…</source>
         <translation>Vorschubfehler wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="237" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="237"/>
         <source>Feeder error reset.</source>
         <translation>Vorschubfehler zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="238" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="238"/>
         <source>The feeder error was not reset: %1</source>
         <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="251" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="251"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
         <source>No feeder is connected</source>
         <translation>Kein Lotdrahtvorschub verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="257" />
-        <source>Clears the feeder's error code (W-ECV); the feeder does not feed while an error is set</source>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="257"/>
+        <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106"/>
         <source>What to check</source>
         <translation>Was zu prüfen ist</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="201" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="201"/>
         <source>%1, %2: %3</source>
         <translation>%1, %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
         <source>What to check:</source>
         <translation>Was zu prüfen ist:</translation>
     </message>
@@ -4752,7 +4750,7 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.h" line="20" />
+        <location filename="../app/gui/pages/errorspage.h" line="20"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
@@ -4760,184 +4758,184 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="46" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="46"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
         <source>Show events of kind</source>
         <translation>Ereignisse dieser Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
         <source>Errors and alarms</source>
         <translation>Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Station errors</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
         <source>Port errors</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Feeder errors</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Status changes</source>
         <translation>Statuswechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Writes</source>
         <translation>Schreibzugriffe</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Show events of device</source>
         <translation>Ereignisse des Geräts anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
         <source>Every device</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
         <source>&amp;Device:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="157" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="157"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="185" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="185"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193" />
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313" />
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4945,17 +4943,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="317" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="317"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>
@@ -4963,145 +4961,145 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::FeederPage</name>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="45" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="45"/>
         <source>No feeder on this line.</source>
         <translation>Kein Lotdrahtvorschub an dieser Leitung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="69" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
         <source>Feed &amp;forward</source>
         <translation>Draht vor&amp;wärts</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="69" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
         <source>W-SFD 00001</source>
         <translation>W-SFD 00001</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="70" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
         <source>Feed &amp;backward</source>
         <translation>Draht &amp;rückwärts</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="70" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
         <source>W-SFD 00000</source>
         <translation>W-SFD 00000</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="71" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
         <source>&amp;Stop</source>
         <translation>&amp;Stopp</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="71" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
         <source>W-SSD</source>
         <translation>W-SSD</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="72" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
         <source>Start &amp;loading</source>
         <translation>Ein&amp;fädeln starten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="72" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
         <source>W-SLD 00001: feed ignoring errors, for a new spool</source>
         <translation>W-SLD 00001: Vorschub ohne Fehlerprüfung, für eine neue Spule</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="74" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
         <source>End loading</source>
         <translation>Einfädeln beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="74" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
         <source>W-SLD 00000</source>
         <translation>W-SLD 00000</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="80" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="80"/>
         <source>&amp;Reset error</source>
         <translation>Fehler &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="86" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="86"/>
         <source>Feeding settings</source>
         <translation>Vorschubeinstellungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="94" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="94"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="95" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="95"/>
         <source>Save to feeder memory</source>
         <translation>Im Speicher des Lotdrahtvorschubs sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="96" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="96"/>
         <source>W-NVS: mode, speed and length survive a restart</source>
         <translation>W-NVS: Modus, Geschwindigkeit und Länge bleiben nach einem Neustart erhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="108" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="108"/>
         <source>Counters</source>
         <translation>Zähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="116" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="116"/>
         <source>Reset</source>
         <translation>Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
         <source>Feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
         <source>Idle</source>
         <translation>Bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="142" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="142"/>
         <source>%1 · fed %2</source>
         <translation>%1 · vorgeschoben %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="144" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
         <source>⚠ %1</source>
         <translation>⚠ %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="144" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
         <source>No feeder error</source>
         <translation>Kein Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="154" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="154"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="167" />
-        <location filename="../app/gui/pages/feederpage.cpp" line="173" />
-        <location filename="../app/gui/pages/feederpage.cpp" line="179" />
-        <location filename="../app/gui/pages/feederpage.cpp" line="185" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="167"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="179"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="185"/>
         <source>no feeder</source>
         <translation>kein Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="194" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="194"/>
         <source>no such counter</source>
         <translation>diesen Zähler gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="197" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="197"/>
         <source>
 
 Reset it?</source>
@@ -5110,12 +5108,12 @@ Reset it?</source>
 Zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="200" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="200"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.h" line="23" />
+        <location filename="../app/gui/pages/feederpage.h" line="23"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
@@ -5123,152 +5121,152 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="34" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
         <source>Send a frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="61" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="64" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="65" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
         <source>R (read)</source>
         <translation>R (lesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="66" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>W (write)</source>
         <translation>W (schreiben)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="68" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="70"/>
         <source>Command</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="78" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="80"/>
         <source>Data field</source>
         <translation>Datenfeld</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="82" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="84"/>
         <source>&amp;Send frame</source>
         <translation>Telegramm &amp;senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="83" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
         <source>Send frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="85" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
         <source>Frame to be sent</source>
         <translation>Zu sendendes Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="89" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="91"/>
         <source>Catalog check</source>
         <translation>Katalogprüfung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="92" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
         <source>Raw bytes in hex</source>
         <translation>Rohbytes hexadezimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="96" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
         <source>Send ra&amp;w hex</source>
         <translation>Roh-He&amp;x senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="97" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
         <source>Send raw hex</source>
         <translation>Roh-Hex senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="99" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Raw bytes check</source>
         <translation>Prüfung der Rohbytes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="100" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
         <source>Nothing sent yet.</source>
         <translation>Noch nichts gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="101" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="103"/>
         <source>Outcome of the last send</source>
         <translation>Ergebnis des letzten Sendens</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="110" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
         <source>&amp;Device</source>
         <translation>Ger&amp;ät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="112" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
         <source>&amp;Header</source>
         <translation>&amp;Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="114" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
         <source>C&amp;ommand</source>
         <translation>Befeh&amp;l</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="116" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="118"/>
         <source>D&amp;ata</source>
         <translation>Date&amp;n</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="119" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>Frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="122" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
         <source>&amp;Raw hex</source>
         <translation>&amp;Roh-Hex</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="126" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="128"/>
         <source>Last send</source>
         <translation>Letztes Senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="235" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="237"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Diese Bytes genau wie eingegeben senden; die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="206" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="208"/>
         <source>(nothing to send)</source>
         <translation>(nichts zu senden)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="210" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
         <source>none for reads</source>
         <translation>keins bei Lesebefehlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="210" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
         <source>e.g. 00350</source>
         <translation>z. B. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="222" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="224"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Dieses Telegramm einmal wie angezeigt senden (ohne Wiederholungen; Katalogwarnungen halten es nicht auf). Die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="257" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="259"/>
         <source>Not sent: %1</source>
         <translation>Nicht gesendet: %1</translation>
     </message>
@@ -5276,27 +5274,27 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::LinkStatusLabel</name>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="10" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
         <source>Line statistics</source>
         <translation>Leitungsstatistik</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="19" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="19"/>
         <source>no line</source>
         <translation>keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="25" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="25"/>
         <source>%L1 tx/s · %L2 ms · %3 timeouts · %4 BCC errors · %5 NAKs</source>
         <translation>%L1 tx/s · %L2 ms · %3 Zeitüberschreitungen · %4 BCC-Fehler · %5 NAKs</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="33" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="33"/>
         <source>NAK %1 × %2: %3</source>
         <translation>NAK %1 × %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="38" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="38"/>
         <source>Reconnects: %1</source>
         <translation>Neuverbindungen: %1</translation>
     </message>
@@ -5304,78 +5302,78 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="36" />
+        <location filename="../app/gui/mainwindow.cpp" line="36"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="88" />
+        <location filename="../app/gui/mainwindow.cpp" line="88"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="89" />
+        <location filename="../app/gui/mainwindow.cpp" line="89"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="91" />
+        <location filename="../app/gui/mainwindow.cpp" line="91"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="92" />
+        <location filename="../app/gui/mainwindow.cpp" line="92"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="93" />
+        <location filename="../app/gui/mainwindow.cpp" line="93"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="98" />
+        <location filename="../app/gui/mainwindow.cpp" line="98"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="99" />
+        <location filename="../app/gui/mainwindow.cpp" line="99"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="101" />
+        <location filename="../app/gui/mainwindow.cpp" line="101"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="102" />
+        <location filename="../app/gui/mainwindow.cpp" line="102"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="177" />
+        <location filename="../app/gui/mainwindow.cpp" line="177"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="182" />
+        <location filename="../app/gui/mainwindow.cpp" line="182"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="187" />
+        <location filename="../app/gui/mainwindow.cpp" line="187"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="194" />
-        <location filename="../app/gui/mainwindow.cpp" line="197" />
+        <location filename="../app/gui/mainwindow.cpp" line="194"/>
+        <location filename="../app/gui/mainwindow.cpp" line="197"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="198" />
+        <location filename="../app/gui/mainwindow.cpp" line="198"/>
         <source>Written:
 %1
 
@@ -5389,87 +5387,87 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="117" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="119"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="124" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
         <source>family %1</source>
         <translation>Familie %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="125" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="127"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
         <source>transformer %1</source>
         <translation>Transformator %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="130" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="131" />
-        <source>&lt;span style='color:#c01c28'&gt;fuse missing or blown&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c01c28'&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="137" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="139"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Stationsfehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
         <source>fed %1</source>
         <translation>vorgeschoben %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="152" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="154"/>
         <source>speed %1</source>
         <translation>Geschwindigkeit %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.h" line="24" />
+        <location filename="../app/gui/pages/overviewpage.h" line="24"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="157" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
         <source>not connected, as last read</source>
         <translation>nicht verbunden, wie zuletzt gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="171" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: noch nichts gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="173" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt um %1 gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="177" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="179"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>Nur-Beobachten ist an: die Robotersteuerung ist aus.</translation>
     </message>
@@ -5477,62 +5475,62 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="72" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="72"/>
         <source>Allowed: %1</source>
         <translation>Zulässig: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="73" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="73"/>
         <source>Command: %1</source>
         <translation>Befehl: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="94" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="94"/>
         <source>%1 disabled</source>
         <translation>%1 deaktiviert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="175" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="175"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="178" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="178"/>
         <source>reading…</source>
         <translation>wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="181" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
         <source>not saved</source>
         <translation>nicht gesichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="181" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
         <source>✓ in sync</source>
         <translation>✓ synchron</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="188" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="188"/>
         <source>edited</source>
         <translation>geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="192" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="192"/>
         <source>writing…</source>
         <translation>wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="195" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="195"/>
         <source>✗ failed</source>
         <translation>✗ fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="200" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="200"/>
         <source>✗ refused</source>
         <translation>✗ abgelehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="184" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
         <source>last read %1</source>
         <translation>zuletzt gelesen %1</translation>
     </message>
@@ -5540,117 +5538,118 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="43" />
+        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49" />
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
         <source>Tip temperature, port %1</source>
         <translation>Spitzentemperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="55" />
+        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
         <source>Power, port %1</source>
         <translation>Leistung, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="71" />
+        <location filename="../app/gui/pages/portcard.cpp" line="73"/>
         <source>Work</source>
         <translation>Arbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="72" />
+        <location filename="../app/gui/pages/portcard.cpp" line="74"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="73" />
+        <location filename="../app/gui/pages/portcard.cpp" line="75"/>
         <source>Cool</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="74" />
+        <location filename="../app/gui/pages/portcard.cpp" line="76"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="75" />
+        <location filename="../app/gui/pages/portcard.cpp" line="77"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="77" />
+        <location filename="../app/gui/pages/portcard.cpp" line="79"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="81" />
+        <location filename="../app/gui/pages/portcard.cpp" line="83"/>
         <source>New selected temperature, port %1</source>
         <translation>Neue eingestellte Temperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="82" />
+        <location filename="../app/gui/pages/portcard.cpp" line="84"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="175" />
+        <location filename="../app/gui/pages/portcard.cpp" line="186"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="176" />
+        <location filename="../app/gui/pages/portcard.cpp" line="187"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="177" />
+        <location filename="../app/gui/pages/portcard.cpp" line="188"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="179" />
+        <location filename="../app/gui/pages/portcard.cpp" line="190"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="204" />
+        <location filename="../app/gui/pages/portcard.cpp" line="215"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="182" />
+        <location filename="../app/gui/pages/portcard.cpp" line="193"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="184" />
+        <location filename="../app/gui/pages/portcard.cpp" line="195"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="215" />
+        <location filename="../app/gui/pages/portcard.cpp" line="227"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="230"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Fehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="220" />
+        <location filename="../app/gui/pages/portcard.cpp" line="235"/>
         <source>status: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="222" />
+        <location filename="../app/gui/pages/portcard.cpp" line="237"/>
         <source>alarm: %1</source>
         <translation>Alarm: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="194" />
+        <location filename="../app/gui/pages/portcard.cpp" line="205"/>
         <source>Not connected: last read %1</source>
         <translation>Nicht verbunden: zuletzt gelesen %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="196" />
+        <location filename="../app/gui/pages/portcard.cpp" line="207"/>
         <source>Not connected: not read yet</source>
         <translation>Nicht verbunden: noch nicht gelesen</translation>
     </message>
@@ -5658,139 +5657,138 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PreferencesDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="24" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
         <source>Preferences</source>
         <translation>Optionen</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="26" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
         <source>Celsius (°C)</source>
         <translation>Celsius (°C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="27" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="33"/>
         <source>Fahrenheit (°F)</source>
         <translation>Fahrenheit (°F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="29" />
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30" />
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="31" />
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="36"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="38"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
         <source>Follow the system</source>
         <translation>Systemsprache</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
         <source>Temperature unit:</source>
         <translation>Temperatureinheit:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="42" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="48"/>
         <source>Live values (visible ports) every:</source>
         <translation>Live-Werte (sichtbare Ports) alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
         <source>Errors, alarms and status every:</source>
         <translation>Fehler, Alarme und Status alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
         <source>Counters every:</source>
         <translation>Zähler alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="45" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Antwortzeit des Geräts (zur Übertragungszeit addiert):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="46" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Wiederholungen nach verlorener oder beschädigter Antwort:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
         <source>Language (on the next start):</source>
         <translation>Sprache (beim nächsten Start):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
         <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
         <translation>Auf der Leitung wird immer °C übertragen; die Einheit ändert nur, was Sie sehen und eingeben. Die Farben folgen dem Desktop-Design.</translation>
     </message>
-<message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37" />
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37"/>
         <source> s</source>
         <translation> s</translation>
     </message>
-    </context>
+</context>
 <context>
     <name>tipscope::gui::ProfileDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="23" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="23"/>
         <source>Profile for %1</source>
         <translation>Profil für %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Setting</source>
         <translation>Einstellung</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Device now</source>
         <translation>Gerät jetzt</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Profile</source>
         <translation>Profil</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38" />
-        <source>The dry run's frames and the apply report appear here.</source>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38"/>
+        <source>The dry run&apos;s frames and the apply report appear here.</source>
         <translation>Hier erscheinen die Telegramme des Probelaufs und der Bericht der Übernahme.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="42" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="42"/>
         <source>Apply anyway: the profile is for a %1, this is a %2 (only the settings both have are written)</source>
         <translation>Trotzdem anwenden: das Profil ist für %1, dieses Gerät ist %2 (nur die Einstellungen, die beide haben, werden geschrieben)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="48" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="48"/>
         <source>Compare again</source>
         <translation>Erneut vergleichen</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="49" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="49"/>
         <source>Dry run</source>
         <translation>Probelauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="50" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="50"/>
         <source>Apply to device</source>
         <translation>Auf Gerät anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="51" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="51"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="71" />
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="116" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="71"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="116"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="185" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="185"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Profil von %1 (%2, Software %3), erstellt: %4. %n Einstellung weicht vom Gerät ab.</numerusform>
@@ -5798,7 +5796,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="176" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="176"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Probelauf: %n Telegramm würde gesendet; nichts wurde geschrieben.</numerusform>
@@ -5806,58 +5804,58 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="114" />
-        <source>The profile would break the device's limits; see above</source>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="114"/>
+        <source>The profile would break the device&apos;s limits; see above</source>
         <translation>Das Profil würde die Grenzen des Geräts verletzen; siehe oben</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="172" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="172"/>
         <source>&lt;b&gt;This profile cannot be applied to this device:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Dieses Profil lässt sich auf dieses Gerät nicht anwenden:&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Note</source>
         <translation>Hinweis</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="180" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="180"/>
         <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches; the table shows the device as it now is.</source>
         <translation>&lt;b&gt;Angewendet.&lt;/b&gt; Jeder geschriebene Wert wurde zurückgelesen und stimmt; die Tabelle zeigt das Gerät, wie es jetzt ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="182" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="182"/>
         <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; The table shows the device as it now is; see the report below.</source>
         <translation>&lt;b&gt;Nicht alles wurde angewendet.&lt;/b&gt; Die Tabelle zeigt das Gerät, wie es jetzt ist; siehe den Bericht unten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="193" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="193"/>
         <source>Comment: %1</source>
         <translation>Kommentar: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="151" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="151"/>
         <source>✓ changed from %1</source>
         <translation>✓ geändert von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="152" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="152"/>
         <source>✗ failed: %1</source>
         <translation>✗ fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="156" />
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="156"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157"/>
         <source>skipped: %1</source>
         <translation>übersprungen: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="165" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="165"/>
         <source>%n setting(s) of the profile skipped: this device does not take them.</source>
         <translation>
             <numerusform>%n Einstellung des Profils übersprungen: dieses Gerät nimmt sie nicht an.</numerusform>
@@ -5865,13 +5863,13 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="168" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="168"/>
         <source>&lt;b&gt;Refused, nothing was written:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Abgelehnt, nichts wurde geschrieben:&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="170" />
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="174" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="170"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="174"/>
         <source>The table shows what the profile would change.</source>
         <translation>Die Tabelle zeigt, was das Profil ändern würde.</translation>
     </message>
@@ -5879,123 +5877,123 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="37" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="38" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="223" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="39" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Zurücknehmen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="40" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Save to station &amp;memory</source>
         <translation>Im Stations&amp;speicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="41" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>Die eingestellte Temperatur ist flüchtig: W-NVS speichert sie, damit sie einen Neustart übersteht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="44" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
         <source>Station actions</source>
         <translation>Stationsaktionen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="47" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
         <source>Profiles</source>
         <translation>Profile</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="50" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
         <source>Save device settings to a profile…</source>
         <translation>Geräteeinstellungen in einem Profil speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="52" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="52"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Profil öffnen (vergleichen, Probelauf, anwenden)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="55" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="55"/>
         <source>Port:</source>
         <translation>Port:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="143" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Verbinden Sie sich und wählen Sie ein Gerät, um seine Einstellungen zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="146" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
         <source>Port %1 (%2)</source>
         <translation>Port %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="158" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
         <source>Station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="165" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="165"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="166" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="166"/>
         <source>Alarms, port %1</source>
         <translation>Alarme, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="168" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
         <source>Tool %1, port %2</source>
         <translation>Werkzeug %1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="170" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
         <source> (connected)</source>
         <translation> (angeschlossen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="174" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="174"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dosierung (Drahtvorschub der ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="182" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="182"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>&amp;Apply (%1)</source>
         <translation>&amp;Anwenden (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="278" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="278"/>
         <source>Save to station memory</source>
         <translation>Im Stationsspeicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="289" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="289"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Neue Adresse (1-99) oder 0 für Telegramme ohne Adressen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="296" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="296"/>
         <source>%1
 
 %2
@@ -6008,57 +6006,57 @@ Do you want to continue?</source>
 Möchten Sie fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="311" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="317" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="323" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="331" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="311"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="317"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="331"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="312" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Einige Einstellungen wurden noch nicht gelesen (%1). Aktualisieren Sie und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="318" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="355" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="354" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="360" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="354"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="360"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.h" line="32" />
+        <location filename="../app/gui/pages/settingspage.h" line="32"/>
         <source>Settings</source>
         <translation>Einstellungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="232" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
         <source>⚠ Not connected: the greyed values are as last read (the time is beside each). Apply, Save to station memory, Station actions and Profiles wait for the line.</source>
         <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt gelesen (die Zeit steht daneben). Anwenden, Im Stationsspeicher sichern, Stationsaktionen und Profile warten auf die Leitung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="236" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="236"/>
         <source>Monitor-only mode is on: Apply, Save to station memory and Station actions are off, nothing is written.</source>
         <translation>Nur-Beobachten ist an: Anwenden, Im Stationsspeicher sichern und Stationsaktionen sind aus, nichts wird geschrieben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="324" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="324"/>
         <source>A comment for the profile (optional), e.g. what it is for or who set it:</source>
         <translation>Ein Kommentar zum Profil (optional), z. B. wofür es ist oder wer es eingestellt hat:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="336" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="336"/>
         <source>no device is selected</source>
         <translation>kein Gerät ausgewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="345" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="345"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profil gespeichert: %n Einstellung von %1 in %2</numerusform>
@@ -6069,28 +6067,28 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::gui::Sparkline</name>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="63" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="63"/>
         <source>Last minute of tip temperature and power</source>
         <translation>Letzte Minute von Spitzentemperatur und Leistung</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="83" />
-        <location filename="../app/gui/widgets/sparkline.cpp" line="87" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="83"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="87"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="88" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="88"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="100" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="100"/>
         <source>no samples yet</source>
         <translation>noch keine Messwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="151" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
@@ -6098,18 +6096,18 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="85" />
-        <location filename="../lib/journal/journal.cpp" line="99" />
+        <location filename="../lib/journal/journal.cpp" line="85"/>
+        <location filename="../lib/journal/journal.cpp" line="99"/>
         <source>The journal is closed.</source>
         <translation>Das Journal ist geschlossen.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="89" />
+        <location filename="../lib/journal/journal.cpp" line="89"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>Das Journal kommt nicht nach: %1 Einträge warten darauf, geschrieben zu werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="137" />
+        <location filename="../lib/journal/journal.cpp" line="137"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Auftrag: %1, Platine: %2, Bediener: %3</translation>
     </message>
@@ -6117,42 +6115,42 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="24" />
+        <location filename="../lib/link/line.cpp" line="24"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="62" />
+        <location filename="../lib/link/line.cpp" line="62"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="64" />
+        <location filename="../lib/link/line.cpp" line="64"/>
         <source>connecting to %1</source>
         <translation>Verbindung mit %1 wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="66" />
+        <location filename="../lib/link/line.cpp" line="66"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="68" />
+        <location filename="../lib/link/line.cpp" line="68"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>getrennt, neuer Versuch alle %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="72" />
+        <location filename="../lib/link/line.cpp" line="72"/>
         <source>cannot connect: %1</source>
         <translation>Verbindung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="93" />
+        <location filename="../lib/link/line.cpp" line="93"/>
         <source>disconnected by the user</source>
         <translation>vom Benutzer getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="136" />
+        <location filename="../lib/link/line.cpp" line="136"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>keine Antwort auf %1 Anfragen in Folge (Kabel abgezogen, Gerät aus oder falsche Adressierung?)</translation>
     </message>
@@ -6160,37 +6158,37 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::Reply</name>
     <message>
-        <location filename="../lib/link/reply.cpp" line="10" />
+        <location filename="../lib/link/reply.cpp" line="10"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="12" />
+        <location filename="../lib/link/reply.cpp" line="12"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="14" />
+        <location filename="../lib/link/reply.cpp" line="14"/>
         <source>corrupted answer</source>
         <translation>beschädigte Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="16" />
+        <location filename="../lib/link/reply.cpp" line="16"/>
         <source>refused (NAK)</source>
         <translation>abgelehnt (NAK)</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="18" />
+        <location filename="../lib/link/reply.cpp" line="18"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="20" />
+        <location filename="../lib/link/reply.cpp" line="20"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="22" />
+        <location filename="../lib/link/reply.cpp" line="22"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
@@ -6198,52 +6196,52 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="72" />
+        <location filename="../lib/link/requestqueue.cpp" line="72"/>
         <source>the connection was closed</source>
         <translation>die Verbindung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="118" />
+        <location filename="../lib/link/requestqueue.cpp" line="118"/>
         <source>the connection is closing</source>
         <translation>die Verbindung wird geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="122" />
+        <location filename="../lib/link/requestqueue.cpp" line="122"/>
         <source>not sent: the line is not connected</source>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="211" />
+        <location filename="../lib/link/requestqueue.cpp" line="211"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="240" />
-        <source>unreadable data field '%1' in the answer</source>
-        <translation>unlesbares Datenfeld '%1' in der Antwort</translation>
+        <location filename="../lib/link/requestqueue.cpp" line="240"/>
+        <source>unreadable data field &apos;%1&apos; in the answer</source>
+        <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="249" />
+        <location filename="../lib/link/requestqueue.cpp" line="249"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="253" />
+        <location filename="../lib/link/requestqueue.cpp" line="253"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="271" />
+        <location filename="../lib/link/requestqueue.cpp" line="271"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="292" />
+        <location filename="../lib/link/requestqueue.cpp" line="292"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="310" />
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -6251,7 +6249,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="313" />
+        <location filename="../lib/link/requestqueue.cpp" line="313"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
@@ -6259,17 +6257,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="316" />
+        <location filename="../lib/link/requestqueue.cpp" line="316"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="378" />
+        <location filename="../lib/link/requestqueue.cpp" line="378"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="380" />
+        <location filename="../lib/link/requestqueue.cpp" line="380"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>
@@ -6277,12 +6275,12 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::SerialTransport</name>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="82" />
+        <location filename="../lib/link/serialtransport.cpp" line="82"/>
         <source>the port %1 disappeared (unplugged?)</source>
         <translation>der Port %1 ist verschwunden (ausgesteckt?)</translation>
     </message>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="84" />
+        <location filename="../lib/link/serialtransport.cpp" line="84"/>
         <source>the port stopped responding (%1)</source>
         <translation>der Port reagiert nicht mehr (%1)</translation>
     </message>
@@ -6290,17 +6288,17 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::SimTransport</name>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="24" />
+        <location filename="../lib/link/simtransport.cpp" line="24"/>
         <source>the simulated line is unplugged</source>
         <translation>die simulierte Leitung ist abgezogen</translation>
     </message>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="51" />
+        <location filename="../lib/link/simtransport.cpp" line="51"/>
         <source>demo (simulated %1)</source>
         <translation>Demo (simulierte %1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="62" />
+        <location filename="../lib/link/simtransport.cpp" line="62"/>
         <source>the simulated cable was pulled</source>
         <translation>das simulierte Kabel wurde abgezogen</translation>
     </message>
@@ -6308,17 +6306,17 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::TcpTransport</name>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="27" />
+        <location filename="../lib/link/tcptransport.cpp" line="27"/>
         <source>the connection to %1 dropped (%2)</source>
         <translation>die Verbindung zu %1 ist abgebrochen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="34" />
+        <location filename="../lib/link/tcptransport.cpp" line="34"/>
         <source>cannot connect to %1: %2</source>
         <translation>Verbindung zu %1 nicht möglich: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="63" />
+        <location filename="../lib/link/tcptransport.cpp" line="63"/>
         <source>cannot connect to %1: no connection within %2 s</source>
         <translation>Verbindung zu %1 nicht möglich: keine Verbindung innerhalb von %2 s</translation>
     </message>
@@ -6326,37 +6324,37 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::model::ConsoleSender</name>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="15" />
+        <location filename="../lib/model/consolesender.cpp" line="15"/>
         <source>%1: answered %2 after %L3 ms</source>
         <translation>%1: Antwort %2 nach %L3 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="19" />
+        <location filename="../lib/model/consolesender.cpp" line="19"/>
         <source>%1: refused, %2</source>
         <translation>%1: abgelehnt, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="21" />
+        <location filename="../lib/model/consolesender.cpp" line="21"/>
         <source>%1: no answer (timeout)</source>
         <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="23" />
+        <location filename="../lib/model/consolesender.cpp" line="23"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="52" />
+        <location filename="../lib/model/consolesender.cpp" line="52"/>
         <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: W-Telegramme werden nicht gesendet, Lesebefehle schon.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="58" />
+        <location filename="../lib/model/consolesender.cpp" line="58"/>
         <source>Monitor-only mode is on: bytes that are not one valid R frame may be a write, so they are not sent.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: Bytes, die kein gültiges R-Telegramm sind, könnten ein Schreibbefehl sein und werden daher nicht gesendet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/consolesender.cpp" line="69" />
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n Rohbyte</numerusform>
@@ -6364,29 +6362,19 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="75" />
+        <location filename="../lib/model/consolesender.cpp" line="75"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: nicht gesendet, nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="79" />
+        <location filename="../lib/model/consolesender.cpp" line="79"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: nicht gesendet, der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="91" />
+        <location filename="../lib/model/consolesender.cpp" line="91"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: gesendet, warte auf Antwort…</translation>
     </message>
 </context>
-<context><name>CliUnits</name><message>
-        <location filename="../app/cli/cliunits.cpp" line="44" />
-        <source>'%1' is not a number; %2 takes %3</source>
-        <translation>„%1“ ist keine Zahl; %2 nimmt %3</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/cliunits.cpp" line="51" />
-        <source>%1 takes steps of %2 %3</source>
-        <translation>%1 nimmt Schritte von %2 %3</translation>
-    </message>
-</context></TS>
+</TS>

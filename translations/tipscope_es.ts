@@ -4,22 +4,22 @@
 <context>
     <name>Action</name>
     <message>
-        <location filename="../lib/model/action.cpp" line="28" />
+        <location filename="../lib/model/action.cpp" line="28"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="30" />
+        <location filename="../lib/model/action.cpp" line="30"/>
         <source>%1 needs an explicit confirmation: %2</source>
         <translation>%1 necesita una confirmación explícita: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="32" />
+        <location filename="../lib/model/action.cpp" line="32"/>
         <source>%1 is already running</source>
         <translation>%1 ya está en curso</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="44" />
+        <location filename="../lib/model/action.cpp" line="44"/>
         <source>%1 done</source>
         <translation>%1 completado</translation>
     </message>
@@ -27,20 +27,20 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="105" />
+        <location filename="../lib/model/appsettings.cpp" line="105"/>
         <source>choose a serial port</source>
         <translation>elija un puerto serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="115" />
-        <source>'%1' is not HOST:PORT (for example 192.168.1.20:4001)</source>
-        <translation>'%1' no tiene la forma HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
+        <location filename="../lib/model/appsettings.cpp" line="115"/>
+        <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
+        <translation>&apos;%1&apos; no tiene la forma HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
     </message>
 </context>
 <context>
     <name>AtomicSave</name>
     <message>
-        <location filename="../lib/model/io/atomicsave.cpp" line="27" />
+        <location filename="../lib/model/io/atomicsave.cpp" line="27"/>
         <source>cannot write %1: %2</source>
         <translation>no se puede escribir %1: %2</translation>
     </message>
@@ -48,1150 +48,1150 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="219" />
+        <location filename="../lib/protocol/catalog.cpp" line="219"/>
         <source>Unknown NAK code %1</source>
         <translation>Código NAK desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="224" />
+        <location filename="../lib/protocol/catalog.cpp" line="224"/>
         <source>Unknown station error %1</source>
         <translation>Error de estación desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="233" />
+        <location filename="../lib/protocol/catalog.cpp" line="233"/>
         <source>Unknown port error %1</source>
         <translation>Error de puerto desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="13" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="13"/>
         <source>Port status</source>
         <translation>Estado del puerto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="14" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="14"/>
         <source>Tool operating status: working, stand, sleep, hibernation, with cooling, suction and motor flags</source>
         <translation>Estado de funcionamiento de la herramienta: trabajando, soporte, reposo, hibernación, con indicadores de enfriamiento, succión y motor</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="15" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="15"/>
         <source>Working</source>
         <translation>Trabajando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="16" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="16"/>
         <source>Stand</source>
         <translation>En soporte</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="17" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="17"/>
         <source>Cooling</source>
         <translation>Enfriando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="18" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="18"/>
         <source>Tool operating status: no stand (working), stand, sleep, hibernation, with extractor and suction flags</source>
         <translation>Estado de funcionamiento de la herramienta: sin soporte (trabajando), soporte, reposo, hibernación, con indicadores de extractor y succión</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="19" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="19"/>
         <source>Selected temperature</source>
         <translation>Temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="20" />
-        <source>Tip working temperature, in steps of 5 °C between the station's minimum and maximum; volatile until saved</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="20"/>
+        <source>Tip working temperature, in steps of 5 °C between the station&apos;s minimum and maximum; volatile until saved</source>
         <translation>Temperatura de trabajo de la punta, en pasos de 5 °C entre la mínima y la máxima de la estación; volátil hasta que se guarde</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="21" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="21"/>
         <source>Tip temperature</source>
         <translation>Temperatura de la punta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="22" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="22"/>
         <source>Current tip temperature</source>
         <translation>Temperatura actual de la punta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="23" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="23"/>
         <source>Power</source>
         <translation>Potencia</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="24" />
-        <source>Power delivered to the tip, in thousandths of the station's maximum</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="24"/>
+        <source>Power delivered to the tip, in thousandths of the station&apos;s maximum</source>
         <translation>Potencia entregada a la punta, en milésimas de la máxima de la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="25" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="25"/>
         <source>Time to sleep/hibernation</source>
         <translation>Tiempo hasta reposo/hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="26" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="26"/>
         <source>Seconds left before the tool enters sleep or hibernation</source>
         <translation>Segundos que faltan para que la herramienta entre en reposo o hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="27" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="27"/>
         <source>Transistor temperature</source>
         <translation>Temperatura del transistor</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="28" />
-        <source>Temperature of the port's power transistor</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="28"/>
+        <source>Temperature of the port&apos;s power transistor</source>
         <translation>Temperatura del transistor de potencia del puerto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="29" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="29"/>
         <source>Connected tool</source>
         <translation>Herramienta conectada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="30" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="30"/>
         <source>Tool connected to the port</source>
         <translation>Herramienta conectada al puerto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="31" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="31"/>
         <source>Port error</source>
         <translation>Error de puerto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="32" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="32"/>
         <source>Current error of the port</source>
         <translation>Error actual del puerto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="33" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="33"/>
         <source>High temperature alarm</source>
         <translation>Alarma de temperatura alta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="34" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="34"/>
         <source>Upper tip temperature alarm limit, in steps of 5 °C</source>
         <translation>Límite superior de alarma de temperatura de la punta, en pasos de 5 °C</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="35" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="35"/>
         <source>Low temperature alarm</source>
         <translation>Alarma de temperatura baja</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="36" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="36"/>
         <source>Lower tip temperature alarm limit, in steps of 5 °C</source>
         <translation>Límite inferior de alarma de temperatura de la punta, en pasos de 5 °C</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="37" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="37"/>
         <source>High alarm delay</source>
         <translation>Retardo de alarma alta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="38" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="38"/>
         <source>How long the tip must stay above the high alarm limit before the alarm is set (ss.cc)</source>
         <translation>Tiempo que la punta debe permanecer por encima del límite de alarma alta antes de que se active la alarma (ss.cc)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="39" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="39"/>
         <source>disabled</source>
         <translation>desactivado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="40" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="40"/>
         <source>Low alarm delay</source>
         <translation>Retardo de alarma baja</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="41" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="41"/>
         <source>How long the tip must stay below the low alarm limit before the alarm is set (ss.cc)</source>
         <translation>Tiempo que la punta debe permanecer por debajo del límite de alarma baja antes de que se active la alarma (ss.cc)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="42" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="42"/>
         <source>Temperature alarm</source>
         <translation>Alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="43" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="43"/>
         <source>Alarm flags: units digit high alarm, tens digit low alarm (DDR/HDR clear them when read)</source>
         <translation>Indicadores de alarma: dígito de las unidades, alarma alta; dígito de las decenas, alarma baja (en DDR/HDR se borran al leerlos)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="44" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="44"/>
         <source>Plugged hours</source>
         <translation>Horas conectado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="45" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="45"/>
         <source>Hours with a tool plugged into the port</source>
         <translation>Horas con una herramienta conectada al puerto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="52" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="52"/>
         <source>No-tool hours</source>
         <translation>Horas sin herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="53" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="53"/>
         <source>Hours the port was powered with no tool</source>
         <translation>Horas que el puerto estuvo con tensión sin herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="48" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="48"/>
         <source>Sleep hours</source>
         <translation>Horas en reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="49" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="49"/>
         <source>Hours in sleep</source>
         <translation>Horas en modo reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="50" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="50"/>
         <source>Hibernation hours</source>
         <translation>Horas en hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="51" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="51"/>
         <source>Hours in hibernation</source>
         <translation>Horas en modo hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="46" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="46"/>
         <source>Work hours</source>
         <translation>Horas de trabajo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="47" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="47"/>
         <source>Hours working</source>
         <translation>Horas trabajando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="54" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="54"/>
         <source>Sleep cycles</source>
         <translation>Ciclos de reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="55" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="55"/>
         <source>Number of times the tool went into sleep</source>
         <translation>Número de veces que la herramienta entró en reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="56" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="56"/>
         <source>Desoldering cycles</source>
         <translation>Ciclos de desoldadura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="57" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="57"/>
         <source>Number of times the desoldering tool was activated</source>
         <translation>Número de veces que se activó la herramienta de desoldadura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="58" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="58"/>
         <source>Dispensed cycles</source>
         <translation>Ciclos de dispensado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="59" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="59"/>
         <source>Number of dispensing cycles of the built-in wire feed</source>
         <translation>Número de ciclos de dispensado de la alimentación de hilo integrada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="60" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="60"/>
         <source>Dispensed length</source>
         <translation>Longitud dispensada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="61" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="61"/>
         <source>Total wire length dispensed (hexadecimal on the wire)</source>
         <translation>Longitud total de hilo dispensada (hexadecimal en la línea)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="62" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="62"/>
         <source>Temperature adjust</source>
         <translation>Ajuste de temperatura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="63" />
-        <source>Offset added to the tool's temperature, ±50 °C in steps of 1</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="63"/>
+        <source>Offset added to the tool&apos;s temperature, ±50 °C in steps of 1</source>
         <translation>Desviación sumada a la temperatura de la herramienta, ±50 °C en pasos de 1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="64" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="64"/>
         <source>Sleep temperature</source>
         <translation>Temperatura de reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="65" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="65"/>
         <source>Tip temperature in sleep, in steps of 5 °C</source>
         <translation>Temperatura de la punta en reposo, en pasos de 5 °C</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="66" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="66"/>
         <source>Sleep delay</source>
         <translation>Retardo de reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="67" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="67"/>
         <source>Minutes in the stand before sleep, 0 to 9, or disabled</source>
         <translation>Minutos en el soporte antes del reposo, de 0 a 9, o desactivado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="68" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="68"/>
         <source>Hibernation delay</source>
         <translation>Retardo de hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="69" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="69"/>
         <source>Minutes in sleep before hibernation, 0 to 60 in steps of 5, or disabled</source>
         <translation>Minutos en reposo antes de la hibernación, de 0 a 60 en pasos de 5, o desactivado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="70" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="70"/>
         <source>Maximum temperature</source>
         <translation>Temperatura máxima</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="71" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="71"/>
         <source>Highest temperature selectable with the selected temperature</source>
         <translation>Temperatura más alta que se puede elegir como temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="72" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="72"/>
         <source>Minimum temperature</source>
         <translation>Temperatura mínima</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="73" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="73"/>
         <source>Lowest temperature selectable with the selected temperature</source>
         <translation>Temperatura más baja que se puede elegir como temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="74" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="74"/>
         <source>Power limit</source>
         <translation>Límite de potencia</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="75" />
-        <source>Maximum power delivered to a tool, in thousandths of the station's maximum</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="75"/>
+        <source>Maximum power delivered to a tool, in thousandths of the station&apos;s maximum</source>
         <translation>Potencia máxima entregada a una herramienta, en milésimas de la máxima de la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="76" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="76"/>
         <source>Transformer temperature</source>
         <translation>Temperatura del transformador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="77" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="77"/>
         <source>Temperature of the power supply transformer (R-TT; see protocol notes)</source>
         <translation>Temperatura del transformador de alimentación (R-TT; véanse las notas del protocolo)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="78" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="78"/>
         <source>Station error</source>
         <translation>Error de estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="79" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="79"/>
         <source>Current error of the station</source>
         <translation>Error actual de la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="80" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="80"/>
         <source>Fuse status</source>
         <translation>Estado del fusible</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="81" />
-        <source>Whether the station's fuse is in place</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="81"/>
+        <source>Whether the station&apos;s fuse is in place</source>
         <translation>Indica si el fusible de la estación está colocado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="82" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="82"/>
         <source>No fuse (blown or missing)</source>
         <translation>Sin fusible (fundido o ausente)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="83" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="83"/>
         <source>Fuse present</source>
         <translation>Fusible presente</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="84" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="84"/>
         <source>Model name</source>
         <translation>Nombre del modelo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="85" />
-        <source>The device's model name</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="85"/>
+        <source>The device&apos;s model name</source>
         <translation>Nombre del modelo del equipo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="86" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="86"/>
         <source>Software version</source>
         <translation>Versión de software</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="87" />
-        <source>The device's software version</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="87"/>
+        <source>The device&apos;s software version</source>
         <translation>Versión de software del equipo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="88" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="88"/>
         <source>Save to station memory</source>
         <translation>Guardar en la memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="89" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="89"/>
         <source>Stores the volatile settings (selected temperature; feeder mode, speed, length) in non-volatile memory</source>
         <translation>Guarda los ajustes volátiles (temperatura seleccionada; modo, velocidad y longitud del alimentador) en la memoria no volátil</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="90" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="90"/>
         <source>Factory reset</source>
         <translation>Restablecer valores de fábrica</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="91" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="91"/>
         <source>Resets every parameter of the device to its factory value</source>
         <translation>Restablece todos los parámetros del equipo a su valor de fábrica</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="92" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="92"/>
         <source>Every setting of the device returns to its factory value; the feeder restarts and goes back to address 10 in addressed mode.</source>
         <translation>Todos los ajustes del equipo vuelven a su valor de fábrica; el alimentador se reinicia y vuelve a la dirección 10 en modo con direcciones.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="93" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="93"/>
         <source>Restart station</source>
         <translation>Reiniciar estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="94" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="94"/>
         <source>Restarts the control unit</source>
         <translation>Reinicia la unidad de control</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="95" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="95"/>
         <source>The control unit restarts: tools cool down and the station does not answer until it is back.</source>
         <translation>La unidad de control se reinicia: las herramientas se enfrían y la estación no responde hasta que vuelve a estar operativa.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="96" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="96"/>
         <source>Device address</source>
         <translation>Dirección del equipo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="97" />
-        <source>Sets the device's own address (1-99); 0 switches it to frames without addresses</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="97"/>
+        <source>Sets the device&apos;s own address (1-99); 0 switches it to frames without addresses</source>
         <translation>Fija la dirección propia del equipo (1-99); 0 lo cambia a tramas sin direcciones</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="98" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="98"/>
         <source>The device answers only at the new address (or only without addresses for 0); TipScope must reconnect with the new setting.</source>
         <translation>El equipo solo responde en la nueva dirección (o solo sin direcciones si es 0); TipScope debe volver a conectarse con el nuevo ajuste.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="99" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="99"/>
         <source>Ignore fuse error</source>
         <translation>Ignorar error de fusible</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="100" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="100"/>
         <source>Lets the station keep working despite a fuse error</source>
         <translation>Permite que la estación siga funcionando pese a un error de fusible</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="101" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="101"/>
         <source>The station keeps heating although its fuse is reported missing or blown.</source>
         <translation>La estación sigue calentando aunque se indique que su fusible falta o está fundido.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="102" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="102"/>
         <source>Dispensing mode</source>
         <translation>Modo de dispensado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="103" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="103"/>
         <source>How the built-in feed dispenses wire</source>
         <translation>Cómo dispensa el hilo la alimentación integrada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="104" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="104"/>
         <source>Continuous</source>
         <translation>Continuo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="105" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="105"/>
         <source>Discontinuous</source>
         <translation>Discontinuo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="106" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="106"/>
         <source>Program</source>
         <translation>Programa</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="107" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="107"/>
         <source>Tin reload</source>
         <translation>Recarga de estaño</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="108" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="108"/>
         <source>Dispensing length</source>
         <translation>Longitud de dispensado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="109" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="109"/>
         <source>Wire length dispensed per cycle, in tenths of a millimetre</source>
         <translation>Longitud de hilo dispensada por ciclo, en décimas de milímetro</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="110" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="110"/>
         <source>Dispensing speed</source>
         <translation>Velocidad de dispensado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="111" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="111"/>
         <source>Wire speed, in tenths of a millimetre per second</source>
         <translation>Velocidad del hilo, en décimas de milímetro por segundo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="112" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="112"/>
         <source>Wire diameter</source>
         <translation>Diámetro del hilo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="113" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="113"/>
         <source>Solder wire diameter, in hundredths of a millimetre</source>
         <translation>Diámetro del hilo de soldadura, en centésimas de milímetro</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="114" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="114"/>
         <source>Backward length</source>
         <translation>Longitud de retroceso</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="115" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="115"/>
         <source>Wire pulled back after each cycle, in tenths of a millimetre</source>
         <translation>Hilo que se retrae tras cada ciclo, en décimas de milímetro</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="116" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="116"/>
         <source>Wire clogging detection</source>
         <translation>Detección de atasco del hilo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="117" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="117"/>
         <source>Detects a clogged wire feed</source>
         <translation>Detecta un atasco en la alimentación de hilo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="118" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="118"/>
         <source>Off</source>
         <translation>Desactivada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="119" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="119"/>
         <source>On</source>
         <translation>Activada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="120" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="120"/>
         <source>Dispensing status</source>
         <translation>Estado del dispensado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="121" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="121"/>
         <source>Whether the dispensing motor is running</source>
         <translation>Indica si el motor de dispensado está en marcha</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="122" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="122"/>
         <source>Stopped</source>
         <translation>Detenido</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="123" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="123"/>
         <source>Running</source>
         <translation>En marcha</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="124" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="124"/>
         <source>Start dispensing</source>
         <translation>Iniciar dispensado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="125" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="125"/>
         <source>Starts the dispensing motor</source>
         <translation>Pone en marcha el motor de dispensado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="126" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="126"/>
         <source>Stop dispensing</source>
         <translation>Detener dispensado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="127" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="127"/>
         <source>Stops the dispensing motor</source>
         <translation>Detiene el motor de dispensado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="128" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="128"/>
         <source>Feeding mode</source>
         <translation>Modo de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="129" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="129"/>
         <source>Continuous feeds until stopped; discontinuous feeds the set length</source>
         <translation>Continuo alimenta hasta que se detiene; discontinuo alimenta la longitud ajustada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="130" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="130"/>
         <source>Start feeding</source>
         <translation>Iniciar alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="131" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="131"/>
         <source>Starts feeding wire forward or backward</source>
         <translation>Inicia la alimentación de hilo hacia delante o hacia atrás</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="132" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="132"/>
         <source>Forward</source>
         <translation>Adelante</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="133" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="133"/>
         <source>Backward</source>
         <translation>Atrás</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="134" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="134"/>
         <source>Stop feeding</source>
         <translation>Detener alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="135" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="135"/>
         <source>Stops feeding (continuous mode)</source>
         <translation>Detiene la alimentación (modo continuo)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="138" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="138"/>
         <source>Feeding length</source>
         <translation>Longitud de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="139" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="139"/>
         <source>Length fed per start in discontinuous mode, in tenths of a millimetre</source>
         <translation>Longitud alimentada en cada inicio en modo discontinuo, en décimas de milímetro</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="136" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="136"/>
         <source>Feeding speed</source>
         <translation>Velocidad de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="137" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="137"/>
         <source>Feeding speed, in tenths of a millimetre per second</source>
         <translation>Velocidad de alimentación, en décimas de milímetro por segundo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="140" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="140"/>
         <source>Wire thickness</source>
         <translation>Grosor del hilo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="141" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="141"/>
         <source>Diameter class of the solder wire</source>
         <translation>Clase de diámetro del hilo de soldadura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="142" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="142"/>
         <source>≤ 0.8 mm</source>
         <translation>≤ 0,8 mm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="143" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="143"/>
         <source>&gt; 0.8 mm and ≤ 1.2 mm</source>
         <translation>&gt; 0,8 mm y ≤ 1,2 mm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="144" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="144"/>
         <source>&gt; 1.2 mm</source>
         <translation>&gt; 1,2 mm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="145" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="145"/>
         <source>Switch input</source>
         <translation>Entrada de interruptor</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="146" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="146"/>
         <source>Whether the switch input can start feeding</source>
         <translation>Indica si la entrada de interruptor puede iniciar la alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="147" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="147"/>
         <source>Disabled</source>
         <translation>Desactivada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="148" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="148"/>
         <source>Enabled</source>
         <translation>Activada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="149" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="149"/>
         <source>Feeder error code</source>
         <translation>Código de error del alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="150" />
-        <source>The feeder's last error code</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="150"/>
+        <source>The feeder&apos;s last error code</source>
         <translation>Último código de error del alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="151" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="151"/>
         <source>Reset feeder error</source>
         <translation>Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="152" />
-        <source>Clears the feeder's last error code</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="152"/>
+        <source>Clears the feeder&apos;s last error code</source>
         <translation>Borra el último código de error del alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="153" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="153"/>
         <source>Feeding status</source>
         <translation>Estado de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="154" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="154"/>
         <source>Whether the feeder is feeding</source>
         <translation>Indica si el alimentador está alimentando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="155" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="155"/>
         <source>Idle</source>
         <translation>En espera</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="156" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="156"/>
         <source>Feeding</source>
         <translation>Alimentando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="157" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="157"/>
         <source>Fed length</source>
         <translation>Longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="158" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="158"/>
         <source>Length fed since the last start, in tenths of a millimetre</source>
         <translation>Longitud alimentada desde el último inicio, en décimas de milímetro</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="159" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="159"/>
         <source>Loading</source>
         <translation>Carga</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="160" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="160"/>
         <source>Feeds wire ignoring feeding errors, for loading a new spool</source>
         <translation>Alimenta hilo ignorando los errores de alimentación, para cargar una bobina nueva</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="161" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="161"/>
         <source>Start loading</source>
         <translation>Iniciar carga</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="162" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="162"/>
         <source>End loading</source>
         <translation>Terminar carga</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="163" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="163"/>
         <source>Plugged hours (total)</source>
         <translation>Horas conectado (total)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="164" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="164"/>
         <source>Hours powered, total counter</source>
         <translation>Horas con tensión, contador total</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="165" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="165"/>
         <source>Plugged hours (partial)</source>
         <translation>Horas conectado (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="166" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="166"/>
         <source>Hours powered since the partial counter was reset</source>
         <translation>Horas con tensión desde la última puesta a cero del contador parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="167" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="167"/>
         <source>Reset plugged hours (partial)</source>
         <translation>Poner a cero horas conectado (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="168" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="168"/>
         <source>Resets the partial plugged-hours counter</source>
         <translation>Pone a cero el contador parcial de horas conectado</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="169" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="169"/>
         <source>The partial plugged-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>El contador parcial de horas conectado vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="171" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="171"/>
         <source>Feeding hours (total)</source>
         <translation>Horas de alimentación (total)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="172" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="172"/>
         <source>Hours feeding, total counter</source>
         <translation>Horas alimentando, contador total</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="174" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="174"/>
         <source>Feeding hours (partial)</source>
         <translation>Horas de alimentación (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="175" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="175"/>
         <source>Hours feeding since the partial counter was reset</source>
         <translation>Horas alimentando desde la última puesta a cero del contador parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="176" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="176"/>
         <source>Reset feeding hours (partial)</source>
         <translation>Poner a cero horas de alimentación (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="177" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="177"/>
         <source>Resets the partial feeding-hours counter</source>
         <translation>Pone a cero el contador parcial de horas de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="178" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="178"/>
         <source>The partial feeding-hours counter goes back to zero; the old value cannot be recovered.</source>
         <translation>El contador parcial de horas de alimentación vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="180" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="180"/>
         <source>Fed length (total)</source>
         <translation>Longitud alimentada (total)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="181" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="181"/>
         <source>Metres of wire fed, total counter</source>
         <translation>Metros de hilo alimentados, contador total</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="182" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="182"/>
         <source>Fed length (partial)</source>
         <translation>Longitud alimentada (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="183" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="183"/>
         <source>Metres of wire fed since the partial counter was reset</source>
         <translation>Metros de hilo alimentados desde la última puesta a cero del contador parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="184" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="184"/>
         <source>Reset fed length (partial)</source>
         <translation>Poner a cero longitud alimentada (parcial)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="185" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="185"/>
         <source>Resets the partial fed-length counter</source>
         <translation>Pone a cero el contador parcial de longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="186" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="186"/>
         <source>The partial fed-length counter goes back to zero; the old value cannot be recovered.</source>
         <translation>El contador parcial de longitud alimentada vuelve a cero; el valor anterior no se puede recuperar.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="188" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="188"/>
         <source>No tool</source>
         <translation>Sin herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="189" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="189"/>
         <source>BCC error: the frame failed the sum check</source>
         <translation>Error de BCC: la trama no superó la comprobación de suma</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="190" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="190"/>
         <source>Format error: the frame has the wrong size or layout</source>
         <translation>Error de formato: la trama tiene un tamaño o una estructura incorrectos</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="191" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="191"/>
         <source>Out of range: the value is outside the allowed limits or off-step</source>
         <translation>Fuera de rango: el valor está fuera de los límites permitidos o no respeta el paso</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="192" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="192"/>
         <source>Control error: the command is not accepted by this device</source>
         <translation>Error de control: este equipo no acepta el comando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="193" />
-        <source>Robot mode is off: switch "Robot mode" on in the station menu</source>
-        <translation>El modo robot está desactivado: active "Robot mode" en el menú de la estación</translation>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="193"/>
+        <source>Robot mode is off: switch &quot;Robot mode&quot; on in the station menu</source>
+        <translation>El modo robot está desactivado: active &quot;Robot mode&quot; en el menú de la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="194" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="194"/>
         <source>Device model error: the device model is unknown</source>
         <translation>Error de modelo de equipo: el modelo del equipo es desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="195" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="195"/>
         <source>Undefined error</source>
         <translation>Error no definido</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="196" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="196"/>
         <source>Stopped by transformer overload</source>
         <translation>Detenido por sobrecarga del transformador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="197" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="197"/>
         <source>Temperature sensor error</source>
         <translation>Error del sensor de temperatura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="198" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="198"/>
         <source>Memory error</source>
         <translation>Error de memoria</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="199" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="199"/>
         <source>Mains frequency error</source>
         <translation>Error de frecuencia de red</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="200" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="200"/>
         <source>Device model error</source>
         <translation>Error de modelo de equipo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="201" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="201"/>
         <source>MCU tools not connected</source>
         <translation>Herramientas MCU no conectadas</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="202" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="202"/>
         <source>Warning: transformer overload</source>
         <translation>Advertencia: sobrecarga del transformador</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="203" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="203"/>
         <source>Short circuit</source>
         <translation>Cortocircuito</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="204" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="204"/>
         <source>Short circuit, not recoverable: restart the station</source>
         <translation>Cortocircuito no recuperable: reinicie la estación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="205" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="205"/>
         <source>Open circuit</source>
         <translation>Circuito abierto</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="206" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="206"/>
         <source>Tool not accepted</source>
         <translation>Herramienta no aceptada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="207" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="207"/>
         <source>Detecting tool</source>
         <translation>Detectando herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="208" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="208"/>
         <source>Stopped at maximum power</source>
         <translation>Detenido a potencia máxima</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="209" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="209"/>
         <source>Stopped by transistor (MOS) overload</source>
         <translation>Detenido por sobrecarga del transistor (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="210" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="210"/>
         <source>Warning: transistor (MOS) overload</source>
         <translation>Advertencia: sobrecarga del transistor (MOS)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="211" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="211"/>
         <source>No error</source>
         <translation>Sin error</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="230" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="230"/>
         <source>Sleep</source>
         <translation>Reposo</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="231" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="231"/>
         <source>Hibernation</source>
         <translation>Hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="232" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="232"/>
         <source>Suction on</source>
         <translation>Succión activada</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="233" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="233"/>
         <source>Motor forward (dispensing)</source>
         <translation>Motor adelante (dispensado)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="234" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="234"/>
         <source>Motor backward</source>
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="226" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="226"/>
         <source>unknown (%1)</source>
         <translation>desconocido (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="233" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="233"/>
         <source>none</source>
         <translation>ninguno</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="170" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="170"/>
         <source>Reset partial plugged hours</source>
         <translation>Poner a cero las horas conectado parciales</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="173" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="173"/>
         <source>Feeding hours</source>
         <translation>Horas de alimentación</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="179" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="179"/>
         <source>Reset partial feeding hours</source>
         <translation>Poner a cero las horas de alimentación parciales</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="187" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="187"/>
         <source>Reset partial fed length</source>
         <translation>Poner a cero la longitud alimentada parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="238" />
+        <location filename="../lib/protocol/catalog.cpp" line="238"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Error del alimentador %1 (no figura en la guía del SFR)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="213" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="213"/>
         <source>The station switched off its power because the transformer was overloaded. Let it cool for a few minutes with the ventilation slots free, then switch it off and on. Check that the tools working at once do not need more than the station can give (large heat sinks, high temperatures, several ports at full power). If it stops again with one tool at normal work, the station needs JBC service.</source>
         <translation>La estación cortó su potencia porque el transformador se sobrecargó. Déjela enfriar unos minutos con las rejillas de ventilación libres y luego apáguela y enciéndala. Compruebe que las herramientas que trabajan a la vez no necesitan más de lo que la estación puede dar (disipadores grandes, temperaturas altas, varios puertos a plena potencia). Si vuelve a pararse con una herramienta en trabajo normal, la estación necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="214" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="214"/>
         <source>The station cannot read its internal temperature sensor. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
         <translation>La estación no puede leer su sensor de temperatura interno. Apáguela y enciéndala; si el error sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="215" />
-        <source>The station's memory failed its check. Switch it off and on. If the error stays, restore the factory settings and set the station up again (save a profile first if the settings can still be read); if it still stays, the control unit needs JBC service.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="215"/>
+        <source>The station&apos;s memory failed its check. Switch it off and on. If the error stays, restore the factory settings and set the station up again (save a profile first if the settings can still be read); if it still stays, the control unit needs JBC service.</source>
         <translation>La memoria de la estación no superó su comprobación. Apáguela y enciéndala. Si el error sigue, restaure los ajustes de fábrica y vuelva a configurar la estación (guarde antes un perfil si aún se pueden leer los ajustes); si aun así sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="216" />
-        <source>The station does not accept the mains frequency. Check that the voltage and frequency on the station's label match the supply, and that no generator, UPS or long extension cord makes it unstable; then switch the station off and on.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="216"/>
+        <source>The station does not accept the mains frequency. Check that the voltage and frequency on the station&apos;s label match the supply, and that no generator, UPS or long extension cord makes it unstable; then switch the station off and on.</source>
         <translation>La estación no acepta la frecuencia de la red. Compruebe que la tensión y la frecuencia de la etiqueta de la estación coinciden con la alimentación y que ningún generador, SAI o alargador largo la vuelve inestable; luego apague y encienda la estación.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="217" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="217"/>
         <source>The station does not recognise its own model: its configuration is damaged. Switch it off and on; if the error stays, the control unit needs JBC service.</source>
         <translation>La estación no reconoce su propio modelo: su configuración está dañada. Apáguela y enciéndala; si el error sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="218" />
-        <source>The station's tool control board does not answer. Switch the station off, wait ten seconds and switch it on; if the error stays, the control unit needs JBC service.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="218"/>
+        <source>The station&apos;s tool control board does not answer. Switch the station off, wait ten seconds and switch it on; if the error stays, the control unit needs JBC service.</source>
         <translation>La placa de control de herramientas de la estación no responde. Apague la estación, espere diez segundos y enciéndala; si el error sigue, la unidad de control necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="219" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="219"/>
         <source>The transformer is close to overload; the station stops if this goes on. Reduce the load: fewer tools heating at once, lower temperatures, no tip resting on a large heat sink; keep the ventilation slots free.</source>
         <translation>El transformador está cerca de la sobrecarga; la estación se parará si esto continúa. Reduzca la carga: menos herramientas calentando a la vez, temperaturas más bajas, ninguna punta apoyada en un disipador grande; mantenga libres las rejillas de ventilación.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="212" />
-        <source>The guide's table does not list this code. Note the code and the time, switch the station off and on, and give the code to JBC service if it comes back.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="212"/>
+        <source>The guide&apos;s table does not list this code. Note the code and the time, switch the station off and on, and give the code to JBC service if it comes back.</source>
         <translation>La tabla de la guía no incluye este código. Anote el código y la hora, apague y encienda la estación y, si vuelve a aparecer, comunique el código al servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="220" />
-        <source>The heater circuit of the tool is short-circuited. Check that the cartridge is seated fully and is not damaged, then try another cartridge. If the error stays, check the tool's cable and connector for damage and try the tool on another port.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="220"/>
+        <source>The heater circuit of the tool is short-circuited. Check that the cartridge is seated fully and is not damaged, then try another cartridge. If the error stays, check the tool&apos;s cable and connector for damage and try the tool on another port.</source>
         <translation>El circuito calefactor de la herramienta está en cortocircuito. Compruebe que el cartucho está bien insertado y no está dañado, y pruebe otro cartucho. Si el error sigue, revise si el cable y el conector de la herramienta están dañados y pruebe la herramienta en otro puerto.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="221" />
-        <source>The port was switched off after a short circuit and stays off until the station restarts. Switch the station off, change the cartridge, check the tool's cable and connector for damage, then switch it on again.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="221"/>
+        <source>The port was switched off after a short circuit and stays off until the station restarts. Switch the station off, change the cartridge, check the tool&apos;s cable and connector for damage, then switch it on again.</source>
         <translation>El puerto se apagó tras un cortocircuito y sigue apagado hasta que la estación se reinicie. Apague la estación, cambie el cartucho, revise si el cable y el conector de la herramienta están dañados y vuelva a encenderla.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="222" />
-        <source>The station finds no heater in the tool. Check that the cartridge is seated fully in the handle, then try another cartridge. If the error stays, check the tool's cable and connector and try the tool on another port.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="222"/>
+        <source>The station finds no heater in the tool. Check that the cartridge is seated fully in the handle, then try another cartridge. If the error stays, check the tool&apos;s cable and connector and try the tool on another port.</source>
         <translation>La estación no encuentra calefactor en la herramienta. Compruebe que el cartucho está bien insertado en el mango y pruebe otro cartucho. Si el error sigue, revise el cable y el conector de la herramienta y pruébela en otro puerto.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="223" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="223"/>
         <source>No tool is connected to this port. If one is plugged in, push its connector fully home, then try it on another port.</source>
         <translation>No hay ninguna herramienta conectada a este puerto. Si hay una enchufada, introduzca su conector hasta el fondo y luego pruébela en otro puerto.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="224" />
-        <source>The station cannot drive the tool plugged into this port. Check the tool's model against the station's list of compatible tools and use a tool that is on it, or another station.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="224"/>
+        <source>The station cannot drive the tool plugged into this port. Check the tool&apos;s model against the station&apos;s list of compatible tools and use a tool that is on it, or another station.</source>
         <translation>La estación no puede controlar la herramienta enchufada en este puerto. Compare el modelo de la herramienta con la lista de herramientas compatibles de la estación y use una que figure en ella, u otra estación.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="225" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="225"/>
         <source>The station is identifying the tool; this takes a few seconds. If it does not end, unplug the tool, check its connector and plug it in again.</source>
         <translation>La estación está identificando la herramienta; tarda unos segundos. Si no termina, desenchufe la herramienta, revise su conector y vuelva a enchufarla.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="226" />
+        <location filename="../lib/protocol/catalogstrings.cpp" line="226"/>
         <source>The port stopped after giving its maximum power for too long. Check that the tip suits the work (a larger tip for large joints) and is not resting on a large heat sink; lower the load and restart the tool.</source>
         <translation>El puerto se paró tras dar su potencia máxima demasiado tiempo. Compruebe que la punta es adecuada para el trabajo (una punta mayor para soldaduras grandes) y que no está apoyada en un disipador grande; reduzca la carga y reinicie la herramienta.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="227" />
-        <source>The port's power transistor overheated and the port stopped. Let the station cool with the ventilation slots free, then reduce the load on this port (a larger tip, a lower temperature, shorter contact with large heat sinks). If it happens at normal work, the station needs JBC service.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="227"/>
+        <source>The port&apos;s power transistor overheated and the port stopped. Let the station cool with the ventilation slots free, then reduce the load on this port (a larger tip, a lower temperature, shorter contact with large heat sinks). If it happens at normal work, the station needs JBC service.</source>
         <translation>El transistor de potencia del puerto se sobrecalentó y el puerto se paró. Deje enfriar la estación con las rejillas de ventilación libres y luego reduzca la carga de este puerto (una punta mayor, una temperatura más baja, menos contacto con disipadores grandes). Si ocurre en trabajo normal, la estación necesita el servicio técnico de JBC.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="228" />
-        <source>The port's power transistor is close to overload; the port stops if this goes on. Reduce the load on this port: a lower temperature, shorter contact with large heat sinks; keep the ventilation slots free.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="228"/>
+        <source>The port&apos;s power transistor is close to overload; the port stops if this goes on. Reduce the load on this port: a lower temperature, shorter contact with large heat sinks; keep the ventilation slots free.</source>
         <translation>El transistor de potencia del puerto está cerca de la sobrecarga; el puerto se parará si esto continúa. Reduzca la carga de este puerto: una temperatura más baja, menos contacto con disipadores grandes; mantenga libres las rejillas de ventilación.</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalogstrings.cpp" line="229" />
-        <source>The SFR guide does not say what the feeder's error codes mean. Check that the solder wire is loaded and runs freely from the reel to the tool (no knot, no jam, the reel not empty) and that the wire thickness setting matches the wire; then reset the error. If it comes back at once, note the code and see the SFR manual.</source>
+        <location filename="../lib/protocol/catalogstrings.cpp" line="229"/>
+        <source>The SFR guide does not say what the feeder&apos;s error codes mean. Check that the solder wire is loaded and runs freely from the reel to the tool (no knot, no jam, the reel not empty) and that the wire thickness setting matches the wire; then reset the error. If it comes back at once, note the code and see the SFR manual.</source>
         <translation>La guía del SFR no dice qué significan los códigos de error del alimentador. Compruebe que el hilo de soldadura está cargado y corre libremente del carrete a la herramienta (sin nudos, sin atascos, el carrete no vacío) y que el grosor de hilo ajustado coincide con el hilo; luego restablezca el error. Si vuelve enseguida, anote el código y consulte el manual del SFR.</translation>
     </message>
 </context>
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="195" />
+        <location filename="../lib/model/recording/chartcsv.cpp" line="195"/>
         <source>the file could not be written</source>
         <translation>no se pudo escribir el archivo</translation>
     </message>
@@ -1199,144 +1199,144 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117" />
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>la línea supera los %1 bytes (¿es un CSV de gráficos?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106" />
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>el archivo contiene datos binarios, no texto CSV</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151" />
-        <source>the text is not UTF-8 (save the file as "CSV UTF-8")</source>
-        <translation>el texto no está en UTF-8 (guarde el archivo como "CSV UTF-8")</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151"/>
+        <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
+        <translation>el texto no está en UTF-8 (guarde el archivo como &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155" />
-        <source>more than %1 comment lines ("#"); a recording has a few, and one per channel</source>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155"/>
+        <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>más de %1 líneas de comentario («#»); una grabación tiene unas pocas, y una por canal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190" />
-        <source>the header row should start with "time" (is this a chart CSV written by TipScope?)</source>
-        <translation>la fila de cabecera debe empezar por "time" (¿es un CSV de gráficos escrito por TipScope?)</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190"/>
+        <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
+        <translation>la fila de cabecera debe empezar por &quot;time&quot; (¿es un CSV de gráficos escrito por TipScope?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 columnas; la reproducción lee como máximo %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206" />
-        <source>column %1 "%2" is not "port&lt;n&gt; &lt;series&gt; [unit]" or "feeder &lt;series&gt; [unit]"</source>
-        <translation>la columna %1 "%2" no es "port&lt;n&gt; &lt;serie&gt; [unidad]" ni "feeder &lt;serie&gt; [unidad]"</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206"/>
+        <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
+        <translation>la columna %1 &quot;%2&quot; no es &quot;port&lt;n&gt; &lt;serie&gt; [unidad]&quot; ni &quot;feeder &lt;serie&gt; [unidad]&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219" />
-        <source>column %1 "%2": the unit should be "%3"</source>
-        <translation>columna %1 "%2": la unidad debería ser "%3"</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219"/>
+        <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
+        <translation>columna %1 &quot;%2&quot;: la unidad debería ser &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228" />
-        <source>column %1 "%2" appears twice</source>
-        <translation>la columna %1 "%2" aparece dos veces</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
+        <source>column %1 &quot;%2&quot; appears twice</source>
+        <translation>la columna %1 &quot;%2&quot; aparece dos veces</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234"/>
         <source>the header names no series columns</source>
         <translation>la cabecera no nombra ninguna columna de serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276" />
-        <source>column %1: "%2" is not a number</source>
-        <translation>columna %1: "%2" no es un número</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276"/>
+        <source>column %1: &quot;%2&quot; is not a number</source>
+        <translation>columna %1: &quot;%2&quot; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 tiene valores en algunas de sus columnas, pero no en todas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 celdas, pero la cabecera tiene %2 columnas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295" />
-        <source>"%1" is not an ISO 8601 time</source>
-        <translation>"%1" no es una hora ISO 8601</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295"/>
+        <source>&quot;%1&quot; is not an ISO 8601 time</source>
+        <translation>&quot;%1&quot; no es una hora ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>la hora %1 es anterior a la de la fila precedente (las filas deben estar en orden cronológico)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 tiene más de %2 muestras, más de las que admite la reproducción; divida el archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="332" />
-        <source>the event "%1" is not "&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;"</source>
-        <translation>el evento "%1" no tiene la forma "&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;"</translation>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="332"/>
+        <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
+        <translation>el evento &quot;%1&quot; no tiene la forma &quot;&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164"/>
         <source>a quoted cell is not closed</source>
         <translation>una celda entre comillas no está cerrada</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="364" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="364"/>
         <source>the file has a header but no rows</source>
         <translation>el archivo tiene cabecera pero ninguna fila</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="362" />
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="362"/>
         <source>the file is empty or holds only comments</source>
         <translation>el archivo está vacío o solo contiene comentarios</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27" />
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27"/>
         <source>the file is larger than %1 MB; replay reads files up to %1 MB</source>
         <translation>el archivo ocupa más de %1 MB; la reproducción lee archivos de hasta %1 MB</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114" />
-        <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file's size); a recording TipScope writes takes far less</source>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114"/>
+        <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
         <translation>sus muestras ocupan %1 MB de memoria tras leer %2 MB, más de lo que permite la reproducción (el doble del tamaño del archivo); una grabación escrita por TipScope ocupa mucho menos</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151" />
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151"/>
         <source>reading was cancelled</source>
         <translation>se canceló la lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170" />
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>el archivo ocupa %1 MB; la reproducción lee archivos de hasta %2 MB</translation>
     </message>
@@ -1344,7 +1344,7 @@
 <context>
     <name>ChartRecorder</name>
     <message>
-        <location filename="../lib/model/recording/chartrecorder.cpp" line="32" />
+        <location filename="../lib/model/recording/chartrecorder.cpp" line="32"/>
         <source>nothing to record: no station or feeder is connected</source>
         <translation>nada que grabar: no hay ninguna estación ni alimentador conectados</translation>
     </message>
@@ -1352,238 +1352,233 @@
 <context>
     <name>ChartSeries</name>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="79" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="103"/>
         <source>Tip</source>
         <translation>Punta</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="81" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="105"/>
         <source>Setpoint</source>
         <translation>Consigna</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="83" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="107"/>
         <source>Power</source>
         <translation>Potencia</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="85" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="109"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="87" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="111"/>
         <source>Fed length</source>
         <translation>Longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="89" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="113"/>
         <source>Speed</source>
         <translation>Velocidad</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="91" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="115"/>
         <source>Feeding</source>
         <translation>Alimentando</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="93" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="117"/>
         <source>Transistor</source>
         <translation>Transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="95" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="119"/>
         <source>Transformer</source>
         <translation>Transformador</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="115" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="150"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="130" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="165"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="159" />
-        <source>P%1 </source>
-        <translation>P%1 </translation>
-    </message>
-<message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="44" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="44"/>
         <source>tip</source>
         <translation>punta</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="44" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="44"/>
         <source>P%1 tip</source>
         <translation>P%1 punta</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="45" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="45"/>
         <source>setpoint</source>
         <translation>consigna</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="46" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="46"/>
         <source>P%1 setpoint</source>
         <translation>P%1 consigna</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="47" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="47"/>
         <source>power</source>
         <translation>potencia</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="48" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="48"/>
         <source>P%1 power</source>
         <translation>P%1 potencia</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="49" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="49"/>
         <source>status</source>
         <translation>estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="50" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="50"/>
         <source>P%1 status</source>
         <translation>P%1 estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="51" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="51"/>
         <source>fed length</source>
         <translation>longitud alimentada</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="52" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="52"/>
         <source>speed</source>
         <translation>velocidad</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="53" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="53"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="54" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="54"/>
         <source>transistor</source>
         <translation>transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="55" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="55"/>
         <source>P%1 transistor</source>
         <translation>P%1 transistor</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="56" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="56"/>
         <source>transformer</source>
         <translation>transformador</translation>
     </message>
     <message>
-        <location filename="../lib/model/chart/chartseries.cpp" line="131" />
+        <location filename="../lib/model/chart/chartseries.cpp" line="131"/>
         <source>P%1 %2</source>
         <translation>P%1 %2</translation>
     </message>
-    </context>
+</context>
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="38" />
+        <location filename="../app/cli/clicommands.cpp" line="39"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="61" />
-        <source>%1 unreadable data field '%2'</source>
-        <translation>%1 campo de datos ilegible '%2'</translation>
+        <location filename="../app/cli/clicommands.cpp" line="62"/>
+        <source>%1 unreadable data field &apos;%2&apos;</source>
+        <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="88" />
+        <location filename="../app/cli/clicommands.cpp" line="91"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="99" />
-        <source>tipscope-cli: no device here can read '%1'</source>
-        <translation>tipscope-cli: ningún equipo de esta línea puede leer '%1'</translation>
+        <location filename="../app/cli/clicommands.cpp" line="102"/>
+        <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
+        <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="122" />
+        <location filename="../app/cli/clicommands.cpp" line="125"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127" />
+        <location filename="../app/cli/clicommands.cpp" line="130"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="135" />
+        <location filename="../app/cli/clicommands.cpp" line="138"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="140" />
+        <location filename="../app/cli/clicommands.cpp" line="143"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="178" />
+        <location filename="../app/cli/clicommands.cpp" line="181"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="187" />
-        <source>tipscope-cli: no device here accepts writes of '%1'</source>
-        <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de '%1'</translation>
+        <location filename="../app/cli/clicommands.cpp" line="190"/>
+        <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
+        <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="200" />
-        <location filename="../app/cli/clicommands.cpp" line="202" />
+        <location filename="../app/cli/clicommands.cpp" line="203"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="205" />
+        <location filename="../app/cli/clicommands.cpp" line="208"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="168" />
-        <location filename="../app/cli/clicommands.cpp" line="214" />
-        <location filename="../app/cli/clicommands.cpp" line="237" />
+        <location filename="../app/cli/clicommands.cpp" line="171"/>
+        <location filename="../app/cli/clicommands.cpp" line="218"/>
+        <location filename="../app/cli/clicommands.cpp" line="241"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="230" />
+        <location filename="../app/cli/clicommands.cpp" line="234"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="303" />
-        <source>tipscope-cli: unknown family '%1'; known: %2</source>
-        <translation>tipscope-cli: familia desconocida '%1'; conocidas: %2</translation>
+        <location filename="../app/cli/clicommands.cpp" line="307"/>
+        <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
+        <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="326" />
+        <location filename="../app/cli/clicommands.cpp" line="330"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="329" />
+        <location filename="../app/cli/clicommands.cpp" line="333"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="330" />
+        <location filename="../app/cli/clicommands.cpp" line="334"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="50" />
+        <location filename="../app/cli/clicommands.cpp" line="51"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n byte en bruto, no es una trama (%1)</numerusform>
@@ -1591,7 +1586,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="160" />
+        <location filename="../app/cli/clicommands.cpp" line="163"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 no se envió: no se pudo leer su límite %2: %3</translation>
     </message>
@@ -1599,56 +1594,56 @@
 <context>
     <name>CliMeasure</name>
     <message>
-        <location filename="../app/cli/climeasure.cpp" line="66" />
-        <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page's Record or CSV export)</source>
+        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
         <translation>tipscope-cli: measure espera un ARCHIVO, una grabación (de record, o de «Grabar» o la exportación CSV de la página de gráficos)</translation>
     </message>
 </context>
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="67" />
+        <location filename="../app/cli/climonitor.cpp" line="67"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74" />
+        <location filename="../app/cli/climonitor.cpp" line="74"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="81" />
+        <location filename="../app/cli/climonitor.cpp" line="81"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="90" />
+        <location filename="../app/cli/climonitor.cpp" line="90"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="114" />
+        <location filename="../app/cli/climonitor.cpp" line="123"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
-<message>
-        <location filename="../app/cli/climonitor.cpp" line="107" />
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="107"/>
         <source>reconnected to %1</source>
         <translation>reconectado a %1</translation>
     </message>
-    </context>
+</context>
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="47" />
+        <location filename="../app/cli/clioptions.cpp" line="47"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
 
 Commands:
-  detect [--json] [--scan]  one line per device: "&lt;address or --&gt; &lt;model&gt; &lt;family&gt; &lt;version&gt;"
-  read CODE... [--raw]      one line per code: "&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;"
+  detect [--json] [--scan]  one line per device: &quot;&lt;address or --&gt; &lt;model&gt; &lt;family&gt; &lt;version&gt;&quot;
+  read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
   write CODE VALUE [--raw]  validate, send, and read back
   send HEX                  send a raw frame; print the answer in hex and decoded
   monitor [--interval MS] [--duration S] [--csv FILE]
@@ -1661,7 +1656,7 @@ Commands:
                             write what differs, each value read back; --dry-run lists
                             the frames; --force applies a profile of another family
   record FILE [--duration S]
-                            every port's and the feeder's curves and events to a chart
+                            every port&apos;s and the feeder&apos;s curves and events to a chart
                             recording, as the Charts page records them
   measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
 
@@ -1680,8 +1675,8 @@ Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
                   [--timeout MS] [--retries N] [--verbose] COMANDO ...
 
 Comandos:
-  detect [--json] [--scan]  una línea por equipo: "&lt;dirección o --&gt; &lt;modelo&gt; &lt;familia&gt; &lt;versión&gt;"
-  read CÓDIGO... [--raw]    una línea por código: "&lt;CÓDIGO&gt; &lt;valor&gt; &lt;unidad&gt;"
+  detect [--json] [--scan]  una línea por equipo: &quot;&lt;dirección o --&gt; &lt;modelo&gt; &lt;familia&gt; &lt;versión&gt;&quot;
+  read CÓDIGO... [--raw]    una línea por código: &quot;&lt;CÓDIGO&gt; &lt;valor&gt; &lt;unidad&gt;&quot;
   write CÓDIGO VALOR [--raw]
                             valida, envía y vuelve a leer
   send HEX                  envía una trama en bruto; muestra la respuesta en hex y decodificada
@@ -1712,82 +1707,82 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="98" />
-        <source>unknown command '%1'</source>
-        <translation>comando desconocido '%1'</translation>
+        <location filename="../app/cli/clioptions.cpp" line="98"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="131" />
+        <location filename="../app/cli/clioptions.cpp" line="131"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>indique solo una de --port, --tcp y --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="137" />
+        <location filename="../app/cli/clioptions.cpp" line="137"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="144" />
+        <location filename="../app/cli/clioptions.cpp" line="144"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="149" />
+        <location filename="../app/cli/clioptions.cpp" line="149"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud requiere una velocidad como 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="156" />
+        <location filename="../app/cli/clioptions.cpp" line="156"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity admite none, even u odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="160" />
+        <location filename="../app/cli/clioptions.cpp" line="160"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits admite 1 o 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="168" />
+        <location filename="../app/cli/clioptions.cpp" line="168"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="176" />
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout requiere milisegundos de 1 a 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="179" />
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries requiere un número de 0 a 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="183" />
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
         <source>--%1 needs a value</source>
         <translation>--%1 necesita un valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="187" />
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="192" />
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="193" />
-        <source>'%1' has no option --%2</source>
-        <translation>'%1' no tiene la opción --%2</translation>
+        <location filename="../app/cli/clioptions.cpp" line="193"/>
+        <source>&apos;%1&apos; has no option --%2</source>
+        <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="199" />
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="201" />
+        <location filename="../app/cli/clioptions.cpp" line="201"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -1795,22 +1790,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliProfile</name>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="43" />
+        <location filename="../app/cli/cliprofile.cpp" line="43"/>
         <source>tipscope-cli: could not read %1; no profile written</source>
         <translation>tipscope-cli: no se pudo leer %1; no se escribió ningún perfil</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="52" />
+        <location filename="../app/cli/cliprofile.cpp" line="52"/>
         <source>saved %1 settings of %2 to %3</source>
         <translation>se guardaron %1 ajustes de %2 en %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="66" />
+        <location filename="../app/cli/cliprofile.cpp" line="66"/>
         <source>tipscope-cli: profile takes save FILE, diff FILE or apply FILE</source>
         <translation>tipscope-cli: profile requiere save ARCHIVO, diff ARCHIVO o apply ARCHIVO</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="105" />
+        <location filename="../app/cli/cliprofile.cpp" line="105"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: aplicar este perfil se rechazaría: %1</translation>
     </message>
@@ -1818,53 +1813,53 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="77" />
+        <location filename="../app/cli/clirecord.cpp" line="77"/>
         <source>tipscope-cli: interrupted before the recording started</source>
         <translation>tipscope-cli: interrumpido antes de que empezara la grabación</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="82" />
+        <location filename="../app/cli/clirecord.cpp" line="82"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="117" />
+        <location filename="../app/cli/clirecord.cpp" line="117"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record espera un ARCHIVO, p. ej. record linea3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="125" />
+        <location filename="../app/cli/clirecord.cpp" line="125"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration espera segundos (0: hasta que se interrumpa)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="132" />
-        <location filename="../app/cli/clirecord.cpp" line="160" />
+        <location filename="../app/cli/clirecord.cpp" line="132"/>
+        <location filename="../app/cli/clirecord.cpp" line="160"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: no se puede grabar en %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="134" />
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
         <source>no such folder</source>
         <translation>la carpeta no existe</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="134" />
+        <location filename="../app/cli/clirecord.cpp" line="134"/>
         <source>not writable</source>
         <translation>sin permiso de escritura</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="181" />
+        <location filename="../app/cli/clirecord.cpp" line="181"/>
         <source># recording %1 of %2 to %3</source>
         <translation># grabando %1 de %2 en %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="189" />
+        <location filename="../app/cli/clirecord.cpp" line="189"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: falló la escritura de %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="193" />
+        <location filename="../app/cli/clirecord.cpp" line="193"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n fila grabada en %1</numerusform>
@@ -1875,155 +1870,168 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="69" />
+        <location filename="../app/cli/clisession.cpp" line="69"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="125" />
+        <location filename="../app/cli/clisession.cpp" line="125"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: el catálogo no indica ningún comando que identifique un equipo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134" />
+        <location filename="../app/cli/clisession.cpp" line="134"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="135" />
+        <location filename="../app/cli/clisession.cpp" line="135"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="129" />
-        <source>tipscope-cli: unknown device model '%1'</source>
-        <translation>tipscope-cli: modelo de equipo desconocido '%1'</translation>
+        <location filename="../app/cli/clisession.cpp" line="129"/>
+        <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
+        <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="157" />
+        <location filename="../app/cli/clisession.cpp" line="157"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="162" />
+        <location filename="../app/cli/clisession.cpp" line="162"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
 </context>
 <context>
+    <name>CliUnits</name>
+    <message>
+        <location filename="../app/cli/cliunits.cpp" line="47"/>
+        <source>&apos;%1&apos; is not a number; %2 takes %3</source>
+        <translation>«%1» no es un número; %2 admite %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliunits.cpp" line="54"/>
+        <source>%1 takes steps of %2 %3</source>
+        <translation>%1 admite pasos de %2 %3</translation>
+    </message>
+</context>
+<context>
     <name>ConsoleModel</name>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="102" />
+        <location filename="../lib/model/consolemodel.cpp" line="102"/>
         <source>sent as typed (not a valid frame)</source>
         <translation>enviado tal cual (no es una trama válida)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="118" />
+        <location filename="../lib/model/consolemodel.cpp" line="118"/>
         <source>stray: answers no pending request</source>
         <translation>huérfana: no responde a ninguna petición pendiente</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="250" />
+        <location filename="../lib/model/consolemodel.cpp" line="250"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="252" />
+        <location filename="../lib/model/consolemodel.cpp" line="252"/>
         <source>RX chunk</source>
         <translation>Bloque RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="254" />
+        <location filename="../lib/model/consolemodel.cpp" line="254"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="256" />
+        <location filename="../lib/model/consolemodel.cpp" line="256"/>
         <source>error</source>
         <translation>error</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="258" />
+        <location filename="../lib/model/consolemodel.cpp" line="258"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="266" />
+        <location filename="../lib/model/consolemodel.cpp" line="266"/>
         <source>Read</source>
         <translation>Lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="268" />
+        <location filename="../lib/model/consolemodel.cpp" line="268"/>
         <source>Write</source>
         <translation>Escritura</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="270" />
+        <location filename="../lib/model/consolemodel.cpp" line="270"/>
         <source>Answer</source>
         <translation>Respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="315" />
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="315" />
+        <location filename="../lib/model/consolemodel.cpp" line="315"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="331" />
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="331" />
+        <location filename="../lib/model/consolemodel.cpp" line="331"/>
         <source>Dir</source>
         <translation>Sentido</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="332" />
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Addr</source>
         <translation>Dir.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="332" />
+        <location filename="../lib/model/consolemodel.cpp" line="332"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="333" />
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Cmd</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="333" />
+        <location filename="../lib/model/consolemodel.cpp" line="333"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="334" />
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>Data</source>
         <translation>Datos</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="334" />
+        <location filename="../lib/model/consolemodel.cpp" line="334"/>
         <source>BCC</source>
         <translation>BCC</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="335" />
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="335" />
+        <location filename="../lib/model/consolemodel.cpp" line="335"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolemodel.cpp" line="336" />
+        <location filename="../lib/model/consolemodel.cpp" line="336"/>
         <source>Remark</source>
         <translation>Observación</translation>
     </message>
@@ -2031,22 +2039,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>DeviceIdentity</name>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="73" />
+        <location filename="../lib/model/deviceidentity.cpp" line="73"/>
         <source>%1 at %2</source>
         <translation>%1 en %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="74" />
+        <location filename="../lib/model/deviceidentity.cpp" line="74"/>
         <source>software unknown</source>
         <translation>software desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="75" />
+        <location filename="../lib/model/deviceidentity.cpp" line="75"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="76" />
+        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
         <source>%1 on %2, %3</source>
         <translation>%1 en %2, %3</translation>
     </message>
@@ -2054,53 +2062,53 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="70" />
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="71" />
+        <location filename="../lib/model/devicemodel.cpp" line="71"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="75" />
-        <location filename="../lib/model/devicemodel.cpp" line="145" />
+        <location filename="../lib/model/devicemodel.cpp" line="75"/>
+        <location filename="../lib/model/devicemodel.cpp" line="145"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="205" />
+        <location filename="../lib/model/devicemodel.cpp" line="205"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="107" />
+        <location filename="../lib/model/devicemodel.cpp" line="107"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="131" />
+        <location filename="../lib/model/devicemodel.cpp" line="131"/>
         <source>tool %1</source>
         <translation>herramienta %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="142" />
+        <location filename="../lib/model/devicemodel.cpp" line="142"/>
         <source>%1, %2, port %3</source>
         <translation>%1, %2, puerto %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="148" />
+        <location filename="../lib/model/devicemodel.cpp" line="148"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="191" />
+        <location filename="../lib/model/devicemodel.cpp" line="191"/>
         <source>Monitor-only mode is on: nothing is written.</source>
         <translation>El modo solo monitorización está activo: no se escribe nada.</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="193" />
+        <location filename="../lib/model/devicemodel.cpp" line="193"/>
         <source>Not connected: nothing can be sent until the line is back.</source>
         <translation>No conectado: no se puede enviar nada hasta que vuelva la línea.</translation>
     </message>
@@ -2108,12 +2116,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>DisplayUnits</name>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="82" />
-        <source>'%1' is not a number</source>
-        <translation>'%1' no es un número</translation>
+        <location filename="../lib/model/displayunits.cpp" line="82"/>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>&apos;%1&apos; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="89" />
+        <location filename="../lib/model/displayunits.cpp" line="89"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 tiene más decimales de los que admite %2</translation>
     </message>
@@ -2121,7 +2129,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Elide</name>
     <message>
-        <location filename="../lib/protocol/elide.cpp" line="39" />
+        <location filename="../lib/protocol/elide.cpp" line="39"/>
         <source>%1… (%2 characters)</source>
         <translation>%1… (%2 caracteres)</translation>
     </message>
@@ -2129,42 +2137,42 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="38" />
+        <location filename="../lib/model/eventlog.cpp" line="38"/>
         <source>Station error</source>
         <translation>Error de estación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="40" />
+        <location filename="../lib/model/eventlog.cpp" line="40"/>
         <source>Port error</source>
         <translation>Error de puerto</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="42" />
+        <location filename="../lib/model/eventlog.cpp" line="42"/>
         <source>Feeder error</source>
         <translation>Error del alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44" />
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
         <source>Alarm</source>
         <translation>Alarma</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46" />
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48" />
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
         <source>Write</source>
         <translation>Escritura</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50" />
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52" />
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
@@ -2172,27 +2180,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>EventHistoryModel</name>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="108" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="108"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="110" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="110"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="112" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="112"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="114" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="114"/>
         <source>Source</source>
         <translation>Origen</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventhistorymodel.cpp" line="116" />
+        <location filename="../lib/model/eventhistorymodel.cpp" line="116"/>
         <source>What happened</source>
         <translation>Qué ocurrió</translation>
     </message>
@@ -2200,7 +2208,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>EventText</name>
     <message numerus="yes">
-        <location filename="../lib/model/eventtext.cpp" line="16" />
+        <location filename="../lib/model/eventtext.cpp" line="16"/>
         <source>%1 (%n times, until %2)</source>
         <translation>
             <numerusform>%1 (%n vez, hasta %2)</numerusform>
@@ -2211,17 +2219,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>FeederModel</name>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="82" />
+        <location filename="../lib/model/feedermodel.cpp" line="82"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="100" />
+        <location filename="../lib/model/feedermodel.cpp" line="100"/>
         <source>%1 has no command %2</source>
         <translation>%1 no tiene el comando %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="115" />
+        <location filename="../lib/model/feedermodel.cpp" line="115"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -2229,87 +2237,87 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>FrameComposer</name>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="40" />
+        <location filename="../lib/model/framecomposer.cpp" line="40"/>
         <source>%1 carries the data field %2.</source>
         <translation>%1 lleva el campo de datos %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="43" />
+        <location filename="../lib/model/framecomposer.cpp" line="43"/>
         <source>A write needs a data field: %1.</source>
         <translation>Una escritura necesita un campo de datos: %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="54" />
+        <location filename="../lib/model/framecomposer.cpp" line="54"/>
         <source>On the wire this value is written %1.</source>
         <translation>En la línea este valor se escribe %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="69" />
+        <location filename="../lib/model/framecomposer.cpp" line="69"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Familia de equipo desconocida: el catálogo no puede comprobar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="77" />
+        <location filename="../lib/model/framecomposer.cpp" line="77"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 no es un comando de escritura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="78" />
+        <location filename="../lib/model/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 no es un comando de lectura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="81" />
+        <location filename="../lib/model/framecomposer.cpp" line="81"/>
         <source>Did you mean %1?</source>
         <translation>¿Quería decir %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="82" />
+        <location filename="../lib/model/framecomposer.cpp" line="82"/>
         <source>It is sent as typed.</source>
         <translation>Se envía tal cual.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="87" />
+        <location filename="../lib/model/framecomposer.cpp" line="87"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Las lecturas no llevan campo de datos; el equipo puede rechazar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="93" />
+        <location filename="../lib/model/framecomposer.cpp" line="93"/>
         <source>Dangerous: %1</source>
         <translation>Peligroso: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="97" />
+        <location filename="../lib/model/framecomposer.cpp" line="97"/>
         <source>Catalog check: %1</source>
         <translation>Comprobación del catálogo: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="111" />
+        <location filename="../lib/model/framecomposer.cpp" line="111"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="153" />
+        <location filename="../lib/model/framecomposer.cpp" line="153"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="171" />
+        <location filename="../lib/model/framecomposer.cpp" line="171"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="175" />
+        <location filename="../lib/model/framecomposer.cpp" line="175"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="180" />
+        <location filename="../lib/model/framecomposer.cpp" line="180"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="209" />
+        <location filename="../lib/model/framecomposer.cpp" line="209"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, una trama válida: %1</numerusform>
@@ -2317,7 +2325,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="211" />
+        <location filename="../lib/model/framecomposer.cpp" line="211"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
@@ -2328,77 +2336,77 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>FrameDecoder</name>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="18" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
         <source>frame</source>
         <translation>trama</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="20" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
         <source>BCC error</source>
         <translation>error de BCC</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="22" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
         <source>format error</source>
         <translation>error de formato</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="24" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
         <source>overflow</source>
         <translation>desbordamiento</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="26" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="26"/>
         <source>garbage</source>
         <translation>basura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="55" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="55"/>
         <source>not STX…ETX BCC or too short</source>
         <translation>no es STX…ETX BCC o es demasiado corta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="59" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="59"/>
         <source>BCC is %1, expected %2</source>
         <translation>el BCC es %1, se esperaba %2</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="69" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="69"/>
         <source>malformed addresses</source>
         <translation>direcciones mal formadas</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="75" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
         <source>too short for header and command</source>
         <translation>demasiado corta para cabecera y comando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="78" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="78"/>
         <source>unknown header</source>
         <translation>cabecera desconocida</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="83" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="83"/>
         <source>command is not 3 letters or digits</source>
         <translation>el comando no son 3 letras o dígitos</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="88" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="88"/>
         <source>data field is not printable ASCII</source>
         <translation>el campo de datos no es ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="121" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="121"/>
         <source>frame interrupted by a new STX</source>
         <translation>trama interrumpida por un nuevo STX</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="130" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="130"/>
         <source>no ETX within %1 bytes</source>
         <translation>ningún ETX en %1 bytes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="155" />
+        <location filename="../lib/protocol/framedecoder.cpp" line="155"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n byte fuera de toda trama</numerusform>
@@ -2409,27 +2417,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>HexBytes</name>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="34" />
+        <location filename="../lib/protocol/hexbytes.cpp" line="34"/>
         <source>odd number of hex digits before position %1</source>
         <translation>número impar de dígitos hexadecimales antes de la posición %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="44" />
-        <source>'%1' at position %2 is not a hex digit</source>
-        <translation>'%1' en la posición %2 no es un dígito hexadecimal</translation>
+        <location filename="../lib/protocol/hexbytes.cpp" line="44"/>
+        <source>&apos;%1&apos; at position %2 is not a hex digit</source>
+        <translation>&apos;%1&apos; en la posición %2 no es un dígito hexadecimal</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="51" />
+        <location filename="../lib/protocol/hexbytes.cpp" line="51"/>
         <source>more than %1 bytes</source>
         <translation>más de %1 bytes</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="55" />
+        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
         <source>odd number of hex digits</source>
         <translation>número impar de dígitos hexadecimales</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="57" />
+        <location filename="../lib/protocol/hexbytes.cpp" line="57"/>
         <source>no bytes given</source>
         <translation>no se indicó ningún byte</translation>
     </message>
@@ -2437,67 +2445,67 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Journal</name>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="28" />
+        <location filename="../lib/journal/journalreader.cpp" line="28"/>
         <source>No journal is open.</source>
         <translation>No hay ningún diario abierto.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="86" />
+        <location filename="../lib/journal/journalreader.cpp" line="86"/>
         <source>There is no journal at %1.</source>
         <translation>No hay ningún diario en %1.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="81" />
+        <location filename="../lib/journal/journalschema.cpp" line="81"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="96" />
+        <location filename="../lib/journal/journalschema.cpp" line="96"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="162" />
+        <location filename="../lib/journal/journalschema.cpp" line="162"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>No se puede crear la carpeta %1 para el diario.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="221" />
+        <location filename="../lib/journal/journalwriter.cpp" line="221"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Registros perdidos: %1. Motivo: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="305" />
+        <location filename="../lib/journal/journalwriter.cpp" line="305"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>El diario se cerró antes de poder escribirlos: %1</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="41" />
+        <location filename="../lib/journal/sqlerror.cpp" line="41"/>
         <source>The journal %1 cannot grow: the disk is full or the journal reached its size limit.</source>
         <translation>El diario %1 no puede crecer: el disco está lleno o el diario alcanzó su tamaño máximo.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="51" />
+        <location filename="../lib/journal/sqlerror.cpp" line="51"/>
         <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
         <translation>El diario %1 está dañado o no es un diario; no se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="55" />
+        <location filename="../lib/journal/sqlerror.cpp" line="55"/>
         <source>The journal %1 is locked by another program.</source>
         <translation>Otro programa tiene bloqueado el diario %1.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="57" />
+        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
         <source>The disk holding the journal %1 reported an error.</source>
         <translation>El disco del diario %1 ha informado de un error.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="59" />
+        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
         <source>The journal %1 reported an error: %2</source>
         <translation>El diario %1 ha informado de un error: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="64" />
+        <location filename="../lib/journal/sqlerror.cpp" line="64"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>No se puede escribir el diario %1: su carpeta o el archivo es de solo lectura o no es accesible.</translation>
     </message>
@@ -2505,7 +2513,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>LinkStats</name>
     <message>
-        <location filename="../lib/link/linkstats.cpp" line="60" />
+        <location filename="../lib/link/linkstats.cpp" line="60"/>
         <source>%1 tx/s, latency %2 ms median (%3-%4), %5 sent, %6 answered, %7 timeouts, %8 corrupted, %9 NAKs, %10 stray, %11 retries</source>
         <translation>%1 tx/s, latencia %2 ms de mediana (%3-%4), %5 enviadas, %6 respondidas, %7 tiempos agotados, %8 dañadas, %9 NAK, %10 huérfanas, %11 reintentos</translation>
     </message>
@@ -2513,32 +2521,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>MeasurementReport</name>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="32" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="32"/>
         <source>%1: min %2, max %3, mean %4</source>
         <translation>%1: mín. %2, máx. %3, media %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="41" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>wake</source>
         <translation>salida del reposo</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="41" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
         <source>heat-up</source>
         <translation>calentamiento</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="43" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="43"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 a las %2 hasta %3: %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="46" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 a las %2 hasta %3: no alcanzado en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="50" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n calentamiento más</numerusform>
@@ -2546,17 +2554,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="59" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="59"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>recuperación a las %1: %2 (caída hasta %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="62" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="62"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>caída a las %1 hasta %2: sin recuperar en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="66" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n recuperación más</numerusform>
@@ -2564,22 +2572,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="74" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="74"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="76" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="76"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="77" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="77"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="103" />
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="103"/>
         <source>%1: no samples in this window</source>
         <translation>%1: sin muestras en esta ventana</translation>
     </message>
@@ -2587,210 +2595,210 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>MqttClient</name>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="232" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="232"/>
         <source>The broker %1 refused the message: %2.</source>
         <translation>El broker %1 rechazó el mensaje: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="284" />
-        <source>'%1' is not a topic a message can be published to.</source>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
+        <source>&apos;%1&apos; is not a topic a message can be published to.</source>
         <translation>«%1» no es un tema en el que se pueda publicar un mensaje.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="286" />
-        <location filename="../lib/mqtt/mqttclient.cpp" line="311" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="311"/>
         <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
         <translation>QoS %1 no existe; MQTT tiene 0, 1 y 2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="288" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="288"/>
         <source>Not connected to the broker %1: the message to %2 is dropped.</source>
         <translation>Sin conexión con el broker %1: se descarta el mensaje a %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="291" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="291"/>
         <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
         <translation>%1 mensajes esperan a que el broker %2 los acepte: se descarta el mensaje a %3.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="301" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="301"/>
         <source>The message to %1 was not sent: %2</source>
         <translation>No se envió el mensaje a %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="309" />
-        <source>'%1' is not a valid subscription filter.</source>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
+        <source>&apos;%1&apos; is not a valid subscription filter.</source>
         <translation>«%1» no es un filtro de suscripción válido.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="320" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
         <source>The subscription to %1 was not sent: %2</source>
         <translation>No se envió la suscripción a %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="327" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="327"/>
         <source>There is no subscription to %1.</source>
         <translation>No hay ninguna suscripción a %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="335" />
+        <location filename="../lib/mqtt/mqttclient.cpp" line="335"/>
         <source>The subscription to %1 was not ended: %2</source>
         <translation>No se terminó la suscripción a %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="27" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="27"/>
         <source>The broker %1 refused the connection: bad user name or password.</source>
         <translation>El broker %1 rechazó la conexión: nombre de usuario o contraseña incorrectos.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="32" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="32"/>
         <source>The broker %1 refused the connection: not authorised (wrong user name or password, or this user may not connect).</source>
         <translation>El broker %1 rechazó la conexión: no autorizado (nombre de usuario o contraseña incorrectos, o este usuario no puede conectarse).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="39" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="39"/>
         <source>The broker %1 refused the connection: %2.</source>
         <translation>El broker %1 rechazó la conexión: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="45" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="45"/>
         <source>it does not speak MQTT 3.1.1</source>
         <translation>no habla MQTT 3.1.1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="47" />
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="69" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="69"/>
         <source>it does not accept this client id</source>
         <translation>no acepta este identificador de cliente</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="49" />
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="72" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="49"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="72"/>
         <source>the service is unavailable</source>
         <translation>el servicio no está disponible</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="55" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="55"/>
         <source>return code %1</source>
         <translation>código de retorno %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="67" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="67"/>
         <source>it does not speak MQTT 5</source>
         <translation>no habla MQTT 5</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="74" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="74"/>
         <source>reason code %1</source>
         <translation>código de motivo %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="84" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="84"/>
         <source>No MQTT broker accepts connections at %1 (connection refused).</source>
         <translation>Ningún broker MQTT acepta conexiones en %1 (conexión rechazada).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="88" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="88"/>
         <source>The broker %1 closed the connection (%2).</source>
         <translation>El broker %1 cerró la conexión (%2).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="91" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="91"/>
         <source>The broker %1 cannot be reached: %2.</source>
         <translation>No se puede llegar al broker %1: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="112" />
-        <source>The broker's address %1 cannot be resolved.</source>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="112"/>
+        <source>The broker&apos;s address %1 cannot be resolved.</source>
         <translation>No se puede resolver la dirección %1 del broker.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="116" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="116"/>
         <source>The TLS handshake with the broker %1 failed.</source>
         <translation>Falló el establecimiento de TLS con el broker %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="117" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="117"/>
         <source>The TLS handshake with the broker %1 failed: %2</source>
         <translation>Falló el establecimiento de TLS con el broker %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="120" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="120"/>
         <source>The broker %1 stopped answering within the keep-alive time.</source>
         <translation>El broker %1 dejó de responder dentro del tiempo de keep-alive.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="124" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="124"/>
         <source>The connection to the broker %1 was lost.</source>
         <translation>Se perdió la conexión con el broker %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="128" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="128"/>
         <source>The broker %1 sent data that is not valid MQTT.</source>
         <translation>El broker %1 envió datos que no son MQTT válido.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="131" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="131"/>
         <source>The connection to the broker %1 failed: %2.</source>
         <translation>Falló la conexión con el broker %1: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="139" />
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="139"/>
         <source>The broker %1 cannot be reached: the connection was refused or reset.</source>
         <translation>No se puede llegar al broker %1: la conexión fue rechazada o restablecida.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="144" />
-        <source>The broker's host name %1 cannot be resolved: %2</source>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="144"/>
+        <source>The broker&apos;s host name %1 cannot be resolved: %2</source>
         <translation>No se puede resolver el nombre de host %1 del broker: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="38" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="38"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Hay una contraseña pero ningún nombre de usuario: MQTT solo envía una contraseña con un nombre de usuario.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="47" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
         <source>The user name %1 is not accepted: %2</source>
         <translation>No se acepta el nombre de usuario %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="59" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
         <source>The last will on %1 is not accepted: %2</source>
         <translation>No se acepta la última voluntad en %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="66" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>No se puede leer el archivo de certificado de la CA %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="70" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="70"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Un certificado de cliente necesita tanto su archivo de certificado como su archivo de clave.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="75" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
         <source>The file %1 cannot be read.</source>
         <translation>No se puede leer el archivo %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="96" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="96"/>
         <source>TLS cannot be set up: %1</source>
         <translation>No se puede configurar TLS: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="104" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="104"/>
         <source>The MQTT version cannot be set: %1</source>
         <translation>No se puede fijar la versión de MQTT: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="128" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
         <source>The client id %1 is not accepted.</source>
         <translation>No se acepta el identificador de cliente %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="129" />
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="129"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Sin memoria para un cliente MQTT.</translation>
     </message>
@@ -2798,27 +2806,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>MqttSecret</name>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="30" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="30"/>
         <source>The password file %1 does not exist.</source>
         <translation>El archivo de contraseña %1 no existe.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="34" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
         <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
         <translation>El archivo de contraseña %1 tiene más de %2 bytes; ¿es el archivo correcto?</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="41" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="41"/>
         <source>The password file %1 cannot be read: %2</source>
         <translation>No se puede leer el archivo de contraseña %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="46" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="46"/>
         <source>The password file %1 is empty.</source>
         <translation>El archivo de contraseña %1 está vacío.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="55" />
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="55"/>
         <source>The environment variable %1 that should hold the password is not set or empty.</source>
         <translation>La variable de entorno %1, que debería contener la contraseña, no está definida o está vacía.</translation>
     </message>
@@ -2826,94 +2834,94 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="71" />
+        <location filename="../lib/model/parameter.cpp" line="71"/>
         <source>read-only</source>
         <translation>solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="77" />
+        <location filename="../lib/model/parameter.cpp" line="77"/>
         <source>%1 to %2</source>
         <translation>de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="80" />
+        <location filename="../lib/model/parameter.cpp" line="80"/>
         <source> in steps of %1 %2</source>
         <translation> en pasos de %1 %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="87" />
+        <location filename="../lib/model/parameter.cpp" line="87"/>
         <source>, or %1</source>
         <translation>, o %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="93" />
-        <location filename="../lib/model/parameter.cpp" line="134" />
+        <location filename="../lib/model/parameter.cpp" line="93"/>
+        <location filename="../lib/model/parameter.cpp" line="134"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="102" />
+        <location filename="../lib/model/parameter.cpp" line="102"/>
         <source>%1 is not allowed for %2: allowed is %3</source>
         <translation>%1 no está permitido para %2: se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="107" />
+        <location filename="../lib/model/parameter.cpp" line="107"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="119" />
-        <location filename="../lib/model/parameter.cpp" line="232" />
+        <location filename="../lib/model/parameter.cpp" line="119"/>
+        <location filename="../lib/model/parameter.cpp" line="232"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="138" />
+        <location filename="../lib/model/parameter.cpp" line="138"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="189" />
+        <location filename="../lib/model/parameter.cpp" line="189"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="201" />
+        <location filename="../lib/model/parameter.cpp" line="201"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="202" />
-        <source>unreadable data field '%1'</source>
-        <translation>campo de datos ilegible '%1'</translation>
+        <location filename="../lib/model/parameter.cpp" line="202"/>
+        <source>unreadable data field &apos;%1&apos;</source>
+        <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="252" />
+        <location filename="../lib/model/parameter.cpp" line="252"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="255" />
+        <location filename="../lib/model/parameter.cpp" line="255"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="277" />
+        <location filename="../lib/model/parameter.cpp" line="277"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="292" />
+        <location filename="../lib/model/parameter.cpp" line="292"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="305" />
+        <location filename="../lib/model/parameter.cpp" line="305"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="319" />
+        <location filename="../lib/model/parameter.cpp" line="319"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -2921,57 +2929,57 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>PortDiagnostics</name>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
         <source>this program</source>
         <translation>este programa</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
         <source>, this program</source>
         <translation>, este programa</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="46" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="46"/>
         <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
         <translation>ejecute `sudo usermod -aG %1 $USER` y después cierre la sesión y vuelva a iniciarla.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
         <source>You are not allowed to open %1: %2</source>
         <translation>No tiene permiso para abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50" />
-        <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP="dialout". Then %2</source>
-        <translation>No tiene permiso para abrir %1, y pertenece al grupo root en lugar de dialout, así que unirse a un grupo no servirá hasta que una regla de udev le asigne GROUP="dialout". Después, %2</translation>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
+        <translation>No tiene permiso para abrir %1, y pertenece al grupo root en lugar de dialout, así que unirse a un grupo no servirá hasta que una regla de udev le asigne GROUP=&quot;dialout&quot;. Después, %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="54" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="54"/>
         <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
         <translation>No tiene permiso para abrir %1, que pertenece al grupo %2 (no a dialout): %3</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="96" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="96"/>
         <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
         <translation>%1 está ocupado: lo tiene abierto %2. Cierre esa conexión e inténtelo de nuevo.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
         <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
         <translation>No existe el puerto %1. Puede que el adaptador esté desenchufado o que el nombre del puerto esté mal escrito.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="105" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="105"/>
         <source>%1 is already open in TipScope; close that connection first</source>
         <translation>%1 ya está abierto en TipScope; cierre primero esa conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="109" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="109"/>
         <source>%1 stopped working, perhaps because the adapter was unplugged</source>
         <translation>%1 dejó de funcionar, quizá porque se desenchufó el adaptador</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113" />
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
         <source>Could not open %1</source>
         <translation>No se pudo abrir %1</translation>
     </message>
@@ -2979,68 +2987,68 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>PortModel</name>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="29" />
+        <location filename="../lib/model/portmodel.cpp" line="29"/>
         <source>Working</source>
         <translation>Trabajando</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="31" />
+        <location filename="../lib/model/portmodel.cpp" line="31"/>
         <source>Stand</source>
         <translation>En soporte</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="33" />
+        <location filename="../lib/model/portmodel.cpp" line="33"/>
         <source>Sleep</source>
         <translation>Reposo</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="35" />
+        <location filename="../lib/model/portmodel.cpp" line="35"/>
         <source>Hibernation</source>
         <translation>Hibernación</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="43" />
+        <location filename="../lib/model/portmodel.cpp" line="43"/>
         <source>Cooling</source>
         <translation>Enfriando</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="45" />
+        <location filename="../lib/model/portmodel.cpp" line="45"/>
         <source>Suction</source>
         <translation>Succión</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="47" />
+        <location filename="../lib/model/portmodel.cpp" line="47"/>
         <source>Motor forward</source>
         <translation>Motor adelante</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="49" />
+        <location filename="../lib/model/portmodel.cpp" line="49"/>
         <source>Motor backward</source>
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="105" />
-        <location filename="../lib/model/portmodel.cpp" line="120" />
+        <location filename="../lib/model/portmodel.cpp" line="105"/>
+        <location filename="../lib/model/portmodel.cpp" line="120"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="60" />
+        <location filename="../lib/model/portmodel.cpp" line="60"/>
         <source>High temperature</source>
         <translation>Temperatura alta</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="62" />
+        <location filename="../lib/model/portmodel.cpp" line="62"/>
         <source>Low temperature</source>
         <translation>Temperatura baja</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="63" />
+        <location filename="../lib/model/portmodel.cpp" line="63"/>
         <source>None</source>
         <translation>Ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="181" />
+        <location filename="../lib/model/portmodel.cpp" line="181"/>
         <source>this port has no %1 command</source>
         <translation>este puerto no tiene el comando %1</translation>
     </message>
@@ -3048,27 +3056,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ProblemLevel</name>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="44" />
+        <location filename="../lib/model/problemlevel.cpp" line="44"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="46" />
+        <location filename="../lib/model/problemlevel.cpp" line="46"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="48" />
+        <location filename="../lib/model/problemlevel.cpp" line="48"/>
         <source>Info</source>
         <translation>Información</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="50" />
+        <location filename="../lib/model/problemlevel.cpp" line="50"/>
         <source>Warning</source>
         <translation>Advertencia</translation>
     </message>
     <message>
-        <location filename="../lib/model/problemlevel.cpp" line="52" />
+        <location filename="../lib/model/problemlevel.cpp" line="52"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
@@ -3076,133 +3084,133 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Profile</name>
     <message>
-        <location filename="../lib/model/profile.cpp" line="113" />
+        <location filename="../lib/model/profile.cpp" line="113"/>
         <source>%1: not a setting of a %2</source>
         <translation>%1: no es un ajuste de %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="118" />
-        <source>%1: '%2' is not a valid data field</source>
-        <translation>%1: '%2' no es un campo de datos válido</translation>
+        <location filename="../lib/model/profile.cpp" line="118"/>
+        <source>%1: &apos;%2&apos; is not a valid data field</source>
+        <translation>%1: &apos;%2&apos; no es un campo de datos válido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="123" />
-        <location filename="../lib/model/profile.cpp" line="209" />
+        <location filename="../lib/model/profile.cpp" line="123"/>
+        <location filename="../lib/model/profile.cpp" line="209"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="137" />
+        <location filename="../lib/model/profile.cpp" line="137"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="148" />
-        <source>not a TipScope profile (no "format": "tipscope-profile")</source>
-        <translation>no es un perfil de TipScope (falta "format": "tipscope-profile")</translation>
+        <location filename="../lib/model/profile.cpp" line="148"/>
+        <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
+        <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="159" />
-        <source>unknown device family '%1'</source>
-        <translation>familia de equipo desconocida '%1'</translation>
+        <location filename="../lib/model/profile.cpp" line="159"/>
+        <source>unknown device family &apos;%1&apos;</source>
+        <translation>familia de equipo desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="167" />
+        <location filename="../lib/model/profile.cpp" line="167"/>
         <source>the profile has no values</source>
         <translation>el perfil no tiene valores</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="173" />
-        <source>%1: the value must be a data field in quotes, e.g. "00350"</source>
-        <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. "00350"</translation>
+        <location filename="../lib/model/profile.cpp" line="173"/>
+        <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
+        <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="187" />
+        <location filename="../lib/model/profile.cpp" line="187"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>el perfil se rechaza, no se escribirá nada:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="199" />
+        <location filename="../lib/model/profile.cpp" line="199"/>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="203" />
+        <location filename="../lib/model/profile.cpp" line="203"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="225" />
+        <location filename="../lib/model/profile.cpp" line="225"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="132" />
+        <location filename="../lib/model/profile.cpp" line="132"/>
         <source>not a valid JSON file: %1</source>
         <translation>no es un archivo JSON válido: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="142" />
+        <location filename="../lib/model/profile.cpp" line="142"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>indicado más de una vez, así que no está claro qué valor se quiere: %1; no se escribirá nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="101" />
+        <location filename="../lib/model/profilejson.cpp" line="101"/>
         <source>a NUL byte at byte %1</source>
         <translation>un byte NUL en el byte %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="102" />
+        <location filename="../lib/model/profilejson.cpp" line="102"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>carácter de control 0x%1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152" />
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>el esquema de perfil %1 no es compatible (esta versión lee los esquemas %2 a %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="176" />
-        <source>%1: the value must be a data field in quotes, e.g. "00350", or an object with one in "raw" (and text in "name" and "value")</source>
-        <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. "00350", o un objeto con uno en "raw" (y texto en "name" y "value")</translation>
+        <location filename="../lib/model/profile.cpp" line="176"/>
+        <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
+        <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;, o un objeto con uno en &quot;raw&quot; (y texto en &quot;name&quot; y &quot;value&quot;)</translation>
     </message>
 </context>
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="30" />
+        <location filename="../lib/model/profileapplier.cpp" line="30"/>
         <source>refused, nothing was written: %1</source>
         <translation>rechazado, no se escribió nada: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="34" />
+        <location filename="../lib/model/profileapplier.cpp" line="34"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="38" />
+        <location filename="../lib/model/profileapplier.cpp" line="38"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>cambiado %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="40" />
+        <location filename="../lib/model/profileapplier.cpp" line="40"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FALLÓ %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="42" />
+        <location filename="../lib/model/profileapplier.cpp" line="42"/>
         <source>would send %1</source>
         <translation>se enviaría %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47" />
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>cancelado: los valores restantes no se escribieron</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="55" />
+        <location filename="../lib/model/profileapplier.cpp" line="55"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n diferencia</numerusform>
@@ -3210,49 +3218,49 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="56" />
+        <location filename="../lib/model/profileapplier.cpp" line="56"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 cambiados, %2 ya correctos, %3 fallidos</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="101" />
+        <location filename="../lib/model/profileapplier.cpp" line="101"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>el perfil es para %1 y este equipo es %2 (fuerce la aplicación para escribir los ajustes que comparten)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="106" />
+        <location filename="../lib/model/profileapplier.cpp" line="106"/>
         <source>monitor-only mode is on</source>
         <translation>el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="165" />
+        <location filename="../lib/model/profileapplier.cpp" line="165"/>
         <source>reading the device</source>
         <translation>leyendo el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="227" />
+        <location filename="../lib/model/profileapplier.cpp" line="227"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="229" />
+        <location filename="../lib/model/profileapplier.cpp" line="229"/>
         <source>unreadable value</source>
         <translation>valor ilegible</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="76" />
+        <location filename="../lib/model/profileapplier.cpp" line="76"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>el perfil rompería los límites de sus ajustes (MIT ≤ MAT, MIT ≤ temperatura seleccionada ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="96" />
-        <source>none of the profile's settings exists on this %1 (skipped: %2)</source>
+        <location filename="../lib/model/profileapplier.cpp" line="96"/>
+        <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>ninguno de los ajustes del perfil existe en este %1 (omitidos: %2)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="49" />
+        <location filename="../lib/model/profileapplier.cpp" line="49"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n omitido</numerusform>
@@ -3260,12 +3268,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="121" />
+        <location filename="../lib/model/profileapplier.cpp" line="121"/>
         <source>this %1 has no such setting</source>
         <translation>este %1 no tiene ese ajuste</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45" />
+        <location filename="../lib/model/profileapplier.cpp" line="45"/>
         <source>skipped %1 %2: %3</source>
         <translation>omitido %1 %2: %3</translation>
     </message>
@@ -3273,27 +3281,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ProfileLimits</name>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="64" />
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
         <source>in the profile</source>
         <translation>en el perfil</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="64" />
+        <location filename="../lib/model/profilelimits.cpp" line="64"/>
         <source>on the device now</source>
         <translation>ahora en el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="65" />
+        <location filename="../lib/model/profilelimits.cpp" line="65"/>
         <source>%1 %2 (%3)</source>
         <translation>%1 %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="83" />
+        <location filename="../lib/model/profilelimits.cpp" line="83"/>
         <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
         <translation>%1 es desconocido (el equipo no respondió), así que %2 no se puede comprobar con él</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="90" />
+        <location filename="../lib/model/profilelimits.cpp" line="90"/>
         <source>%1 is above %2</source>
         <translation>%1 está por encima de %2</translation>
     </message>
@@ -3301,57 +3309,57 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>SerialPortList</name>
     <message>
-        <location filename="../lib/link/ports/serialportlist.cpp" line="161" />
+        <location filename="../lib/link/ports/serialportlist.cpp" line="161"/>
         <source>%1 is an FTDI adapter with a %2 ms latency timer (the kernel default is 16 ms), which holds back every short answer and throttles request/answer traffic.
 Set it to 1 ms now with:
   echo 1 | sudo tee /sys/bus/usb-serial/devices/%1/latency_timer
 Make it permanent with this udev rule:
-  echo 'ACTION=="add", SUBSYSTEM=="usb-serial", DRIVER=="ftdi_sio", ATTR{latency_timer}="1"' | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</source>
+  echo &apos;ACTION==&quot;add&quot;, SUBSYSTEM==&quot;usb-serial&quot;, DRIVER==&quot;ftdi_sio&quot;, ATTR{latency_timer}=&quot;1&quot;&apos; | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</source>
         <translation>%1 es un adaptador FTDI con un temporizador de latencia de %2 ms (el valor por defecto del kernel es 16 ms), que retiene cada respuesta corta y frena el tráfico de peticiones y respuestas.
 Ajústelo ahora a 1 ms con:
   echo 1 | sudo tee /sys/bus/usb-serial/devices/%1/latency_timer
 Hágalo permanente con esta regla de udev:
-  echo 'ACTION=="add", SUBSYSTEM=="usb-serial", DRIVER=="ftdi_sio", ATTR{latency_timer}="1"' | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</translation>
+  echo &apos;ACTION==&quot;add&quot;, SUBSYSTEM==&quot;usb-serial&quot;, DRIVER==&quot;ftdi_sio&quot;, ATTR{latency_timer}=&quot;1&quot;&apos; | sudo tee /etc/udev/rules.d/99-ftdi-latency.rules</translation>
     </message>
 </context>
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="26" />
-        <location filename="../lib/model/session.cpp" line="94" />
-        <location filename="../lib/model/session.cpp" line="97" />
+        <location filename="../lib/model/session.cpp" line="26"/>
+        <location filename="../lib/model/session.cpp" line="94"/>
+        <location filename="../lib/model/session.cpp" line="97"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="93" />
-        <location filename="../lib/model/session.cpp" line="106" />
-        <location filename="../lib/model/session.cpp" line="114" />
+        <location filename="../lib/model/session.cpp" line="93"/>
+        <location filename="../lib/model/session.cpp" line="106"/>
+        <location filename="../lib/model/session.cpp" line="114"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="130" />
+        <location filename="../lib/model/session.cpp" line="130"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="175" />
+        <location filename="../lib/model/session.cpp" line="175"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="176" />
+        <location filename="../lib/model/session.cpp" line="176"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="182" />
+        <location filename="../lib/model/session.cpp" line="182"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="190" />
+        <location filename="../lib/model/session.cpp" line="190"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -3362,12 +3370,12 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SettingName</name>
     <message>
-        <location filename="../lib/model/settingname.cpp" line="22" />
+        <location filename="../lib/model/settingname.cpp" line="22"/>
         <source>tool %1</source>
         <translation>herramienta %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/settingname.cpp" line="33" />
+        <location filename="../lib/model/settingname.cpp" line="33"/>
         <source>port %1</source>
         <translation>puerto %1</translation>
     </message>
@@ -3375,27 +3383,27 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>StationModel</name>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="55" />
+        <location filename="../lib/model/stationmodel.cpp" line="55"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="74" />
+        <location filename="../lib/model/stationmodel.cpp" line="74"/>
         <source>%1 does not support %2</source>
         <translation>%1 no admite %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="81" />
+        <location filename="../lib/model/stationmodel.cpp" line="81"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 no puede guardar en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="116" />
+        <location filename="../lib/model/stationmodel.cpp" line="116"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="130" />
+        <location filename="../lib/model/stationmodel.cpp" line="130"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -3403,52 +3411,52 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="143" />
+        <location filename="../lib/model/supportreport.cpp" line="143"/>
         <source>TipScope support report, %1</source>
         <translation>Informe de soporte de TipScope, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="144" />
+        <location filename="../lib/model/supportreport.cpp" line="144"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="150" />
+        <location filename="../lib/model/supportreport.cpp" line="150"/>
         <source>Line: %1</source>
         <translation>Línea: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="151" />
+        <location filename="../lib/model/supportreport.cpp" line="151"/>
         <source>State: %1</source>
         <translation>Estado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="152" />
+        <location filename="../lib/model/supportreport.cpp" line="152"/>
         <source>Statistics: %1</source>
         <translation>Estadísticas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="177" />
+        <location filename="../lib/model/supportreport.cpp" line="177"/>
         <source>Recent events:</source>
         <translation>Eventos recientes:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="80" />
+        <location filename="../lib/model/supportreport.cpp" line="80"/>
         <source>Device %1</source>
         <translation>Equipo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="85" />
+        <location filename="../lib/model/supportreport.cpp" line="85"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="87" />
+        <location filename="../lib/model/supportreport.cpp" line="87"/>
         <source>, software %1</source>
         <translation>, software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="167" />
+        <location filename="../lib/model/supportreport.cpp" line="167"/>
         <source>  What to check:</source>
         <translation>  Qué comprobar:</translation>
     </message>
@@ -3456,86 +3464,86 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>ValueCodec</name>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="43" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="43"/>
         <source>%1 to %2%3</source>
         <translation>de %1 a %2%3</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="47" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="47"/>
         <source> in steps of %1</source>
         <translation> en pasos de %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="49" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="49"/>
         <source>, or %1</source>
         <translation>, o %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="57" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="57"/>
         <source>one of %1</source>
         <translation>uno de %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="60" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="60"/>
         <source>no value (the command carries %1)</source>
         <translation>ningún valor (el comando lleva %1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="63" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="63"/>
         <source>nothing: it is read-only</source>
         <translation>nada: es de solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="72" />
-        <location filename="../lib/protocol/valuecodec.cpp" line="78" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="72"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="92" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="92"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 rechazado para %2 (%3): se permite %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="183" />
-        <source>'%1' is not a delay in seconds such as 1.6 or 01.60</source>
-        <translation>'%1' no es un retardo en segundos como 1.6 o 01.60</translation>
+        <location filename="../lib/protocol/valuecodec.cpp" line="183"/>
+        <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
+        <translation>&apos;%1&apos; no es un retardo en segundos como 1.6 o 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="188" />
-        <source>'%1' is not a whole number; %2 takes %3</source>
-        <translation>'%1' no es un número entero; %2 admite %3</translation>
+        <location filename="../lib/protocol/valuecodec.cpp" line="188"/>
+        <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
+        <translation>&apos;%1&apos; no es un número entero; %2 admite %3</translation>
     </message>
 </context>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="30" />
+        <location filename="../app/gui/main.cpp" line="45"/>
         <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
         <translation>Configure y supervise estaciones de soldadura JBC y el alimentador SFR.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="36" />
+        <location filename="../app/gui/main.cpp" line="51"/>
         <source>Start on the built-in simulated DME station and SFR feeder.</source>
         <translation>Iniciar con la estación DME y el alimentador SFR simulados integrados.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="39" />
+        <location filename="../app/gui/main.cpp" line="54"/>
         <source>Connect to this serial port.</source>
         <translation>Conectar a este puerto serie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="42" />
+        <location filename="../app/gui/main.cpp" line="57"/>
         <source>Connect to a TCP serial server.</source>
         <translation>Conectar a un servidor serie TCP.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="46" />
+        <location filename="../app/gui/main.cpp" line="61"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Guardar un PNG de cada página en DIR y salir.</translation>
     </message>
-<message>
-        <location filename="../app/gui/main.cpp" line="66" />
+    <message>
+        <location filename="../app/gui/main.cpp" line="66"/>
         <source>tipscope: there is no display (neither DISPLAY nor WAYLAND_DISPLAY is set); start it on a desktop, or use tipscope-cli</source>
         <translation>tipscope: no hay pantalla (no están definidas DISPLAY ni WAYLAND_DISPLAY); inícielo en un escritorio, o use tipscope-cli</translation>
     </message>
@@ -3543,7 +3551,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="45" />
+        <location filename="../app/gui/charts/chartplotview.cpp" line="45"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Gráfico temporal. La rueda o las teclas más y menos hacen zoom, arrastrar o las flechas desplazan, Mayús+arrastrar selecciona un intervalo, doble clic o Inicio restablece.</translation>
     </message>
@@ -3551,7 +3559,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="479" />
+        <location filename="../app/gui/charts/chartwidget.cpp" line="479"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -3562,263 +3570,263 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="31" />
-        <location filename="../app/gui/charts/chartspage.h" line="69" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
+        <location filename="../app/gui/charts/chartspage.h" line="69"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="108" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="108"/>
         <source>Values under the cursor</source>
         <translation>Valores bajo el cursor</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="127" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="127"/>
         <source>&amp;Measurements</source>
         <translation>&amp;Mediciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="131" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="131"/>
         <source>Heat-ups, recoveries and min/max/mean of the visible window</source>
         <translation>Calentamientos, recuperaciones y mín./máx./media de la ventana visible</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="136" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="136"/>
         <source>Heat-up and recovery &amp;band ±</source>
         <translation>&amp;Banda de calentamiento y recuperación ±</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="139" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="139"/>
         <source>Tolerance band around the setpoint</source>
         <translation>Banda de tolerancia alrededor de la consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="152" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="152"/>
         <source>Measurements of the visible window</source>
         <translation>Mediciones de la ventana visible</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="195" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="195"/>
         <source>Point at a chart to read every series at that instant.</source>
         <translation>Señale un gráfico para leer todas las series en ese instante.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="197" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="197"/>
         <source>Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
         <translation>Rueda: zoom · arrastrar: desplazar · Mayús+arrastrar: zoom a un intervalo · doble clic: restablecer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="175" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="175"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="178" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="181" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
         <source>%1 — feeder</source>
         <translation>%1 — alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="185" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
         <source>%1 — all ports</source>
         <translation>%1 — todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="186" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="189" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>Temperature (%1)</source>
         <translation>Temperatura (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>Power (%)</source>
         <translation>Potencia (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="302" />
+        <location filename="../app/gui/charts/chartspage.cpp" line="301"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="50" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="50"/>
         <source>device</source>
         <translation>equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="52" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="52"/>
         <source>%1 · %2 · %3: %4</source>
         <translation>%1 · %2 · %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="63" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="63"/>
         <source>&amp;Window</source>
         <translation>&amp;Ventana</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="68" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
         <source>Time window</source>
         <translation>Ventana de tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
         <source>1 h</source>
         <translation>1 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
         <source>4 h</source>
         <translation>4 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
         <source>12 h</source>
         <translation>12 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
         <source>24 h</source>
         <translation>24 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="80" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="80"/>
         <source>&amp;Follow</source>
         <translation>Segu&amp;ir</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="83" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
         <source>Keep the newest data at the right edge; uncheck to pause</source>
         <translation>Mantener los datos más recientes en el borde derecho; desmarque para pausar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="86" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
         <source>&amp;Reset view</source>
         <translation>&amp;Restablecer vista</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="90" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="90"/>
         <source>Pane layout</source>
         <translation>Disposición de los paneles</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="91" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
         <source>Ports overlaid</source>
         <translation>Puertos superpuestos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="92" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
         <source>One pane per port</source>
         <translation>Un panel por puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="96" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="96"/>
         <source>Trans&amp;istor, transformer</source>
         <translation>Trans&amp;istor, transformador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="98" />
-        <source>Also draw each port's transistor temperature and the station's transformer temperature (read every few seconds)</source>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="98"/>
+        <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
         <translation>Dibujar también la temperatura del transistor de cada puerto y la del transformador de la estación (leídas cada pocos segundos)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="102" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="105" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="105"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Ventana visible como &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="106" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Ventana visible como &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="108" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="108"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Grabar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="110" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Escribir cada nueva muestra y evento en un archivo CSV hasta desmarcarlo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="112" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="112"/>
         <source>&amp;Open recording…</source>
         <translation>Abrir grabació&amp;n…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="114" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="114"/>
         <source>Back to &amp;live</source>
         <translation>Volver a &amp;tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="119" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
         <source>Data shown</source>
         <translation>Datos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="122" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="122"/>
         <source>Recording stopped</source>
         <translation>Grabación detenida</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="123" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
         <source>Writing %1 failed: %2</source>
         <translation>Falló la escritura de %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="79" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="79"/>
         <source>P%1</source>
         <translation>P%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="95" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="95"/>
         <source>High alarm</source>
         <translation>Alarma alta</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="98" />
+        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="98"/>
         <source>Low alarm</source>
         <translation>Alarma baja</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="154" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="154"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Reproducción: %1 (%Ln fila)</numerusform>
@@ -3826,295 +3834,285 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="156" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="156"/>
         <source>Live</source>
         <translation>Tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="172" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="172"/>
         <source> · recording to %1</source>
         <translation> · grabando en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="56" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="56"/>
         <source>there is no chart to export</source>
         <translation>no hay ningún gráfico que exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="47" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="47"/>
         <source>%1 – %2 (%3)</source>
         <translation>%1 – %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="110" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="110"/>
         <source>the image could not be encoded</source>
         <translation>no se pudo generar la imagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="134" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="134"/>
         <source>%1 × %2 (twice the charts on screen)</source>
         <translation>%1 × %2 (el doble de los gráficos en pantalla)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="135" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138" />
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
         <source>Export chart as PNG</source>
         <translation>Exportar gráfico como PNG</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
         <source>Image size in pixels:</source>
         <translation>Tamaño de la imagen en píxeles:</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
         <source>Export chart data as CSV</source>
         <translation>Exportar datos del gráfico como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
         <source>PNG image (*.png)</source>
         <translation>Imagen PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="203" />
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157" />
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
         <source>Export failed: %1</source>
         <translation>Falló la exportación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="202" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="202"/>
         <source>Record to CSV file</source>
         <translation>Grabar en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="206" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Record</source>
         <translation>Grabar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="206" />
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Cannot record: %1</source>
         <translation>No se puede grabar: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
         <source>Open recording</source>
         <translation>Abrir grabación</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
         <source>Reading %1: %2 MB</source>
         <translation>Leyendo %1: %2 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
         <source>Reading %1…</source>
         <translation>Leyendo %1…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
         <source>Open a chart recording</source>
         <translation>Abrir una grabación de gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>Archivo CSV (*.csv);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Replay</source>
         <translation>Reproducción</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114" />
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
         <source>Cannot replay %1</source>
         <translation>No se puede reproducir %1</translation>
     </message>
-<message>
-        <location filename="../app/gui/charts/chartspageoverlays.cpp" line="113" />
-        <source>Point at a chart to read every series at that instant. Wheel: zoom · drag: pan · Shift+drag: zoom to a range · double-click: reset.</source>
-        <translation>Señale un gráfico para leer todas las series en ese instante. Rueda: zoom · arrastrar: desplazar · Mayús+arrastrar: ampliar un intervalo · doble clic: restablecer.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="157" />
-        <source>could not write %1</source>
-        <translation>no se pudo escribir %1</translation>
-    </message>
-    </context>
+</context>
 <context>
     <name>tipscope::gui::ConnectionBar</name>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="23" />
-        <location filename="../app/gui/connectionbar.cpp" line="30" />
+        <location filename="../app/gui/connectionbar.cpp" line="35"/>
+        <location filename="../app/gui/connectionbar.cpp" line="42"/>
         <source>Serial port</source>
         <translation>Puerto serie</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="24" />
-        <location filename="../app/gui/connectionbar.cpp" line="34" />
+        <location filename="../app/gui/connectionbar.cpp" line="36"/>
+        <location filename="../app/gui/connectionbar.cpp" line="46"/>
         <source>TCP serial server</source>
         <translation>Servidor serie TCP</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="25" />
+        <location filename="../app/gui/connectionbar.cpp" line="37"/>
         <source>Demo (simulated DME + SFR)</source>
         <translation>Demo (DME + SFR simulados)</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="26" />
+        <location filename="../app/gui/connectionbar.cpp" line="38"/>
         <source>Connection type</source>
         <translation>Tipo de conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="31" />
+        <location filename="../app/gui/connectionbar.cpp" line="43"/>
         <source>Serial ports on this computer; you may also type a device path</source>
         <translation>Puertos serie de este ordenador; también puede escribir la ruta de un dispositivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="33" />
+        <location filename="../app/gui/connectionbar.cpp" line="45"/>
         <source>host:port</source>
         <translation>host:puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="38" />
+        <location filename="../app/gui/connectionbar.cpp" line="50"/>
         <source>Baud rate</source>
         <translation>Velocidad en baudios</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="40" />
+        <location filename="../app/gui/connectionbar.cpp" line="52"/>
         <source>no parity</source>
         <translation>sin paridad</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="41" />
+        <location filename="../app/gui/connectionbar.cpp" line="53"/>
         <source>even</source>
         <translation>par</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="42" />
+        <location filename="../app/gui/connectionbar.cpp" line="54"/>
         <source>odd</source>
         <translation>impar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="44" />
+        <location filename="../app/gui/connectionbar.cpp" line="56"/>
         <source>1 stop bit</source>
         <translation>1 bit de parada</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="45" />
+        <location filename="../app/gui/connectionbar.cpp" line="57"/>
         <source>2 stop bits</source>
         <translation>2 bits de parada</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="47" />
+        <location filename="../app/gui/connectionbar.cpp" line="59"/>
         <source>Find devices</source>
         <translation>Buscar equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="48" />
+        <location filename="../app/gui/connectionbar.cpp" line="60"/>
         <source>With addresses</source>
         <translation>Con direcciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="49" />
+        <location filename="../app/gui/connectionbar.cpp" line="61"/>
         <source>Without addresses</source>
         <translation>Sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="50" />
+        <location filename="../app/gui/connectionbar.cpp" line="62"/>
         <source>Addressing</source>
         <translation>Direccionamiento</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="53" />
+        <location filename="../app/gui/connectionbar.cpp" line="65"/>
         <source>robot </source>
         <translation>robot </translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="54" />
+        <location filename="../app/gui/connectionbar.cpp" line="66"/>
         <source>Robot address</source>
         <translation>Dirección del robot</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="57" />
+        <location filename="../app/gui/connectionbar.cpp" line="69"/>
         <source>device </source>
         <translation>equipo </translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="58" />
+        <location filename="../app/gui/connectionbar.cpp" line="70"/>
         <source>Device address</source>
         <translation>Dirección del equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="59" />
-        <location filename="../app/gui/connectionbar.cpp" line="167" />
+        <location filename="../app/gui/connectionbar.cpp" line="71"/>
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
         <source>&amp;Connect</source>
         <translation>&amp;Conectar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="60" />
+        <location filename="../app/gui/connectionbar.cpp" line="72"/>
         <source>&amp;Monitor only</source>
         <translation>Solo &amp;supervisión</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="61" />
+        <location filename="../app/gui/connectionbar.cpp" line="73"/>
         <source>Block every write: watch a production line without risk</source>
         <translation>Bloquea toda escritura: supervise una línea de producción sin riesgo</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="93" />
+        <location filename="../app/gui/connectionbar.cpp" line="105"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="167" />
+        <location filename="../app/gui/connectionbar.cpp" line="179"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Desconectar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="179" />
+        <location filename="../app/gui/connectionbar.cpp" line="191"/>
         <source>Connected</source>
         <translation>Conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="184" />
+        <location filename="../app/gui/connectionbar.cpp" line="196"/>
         <source>Connecting</source>
         <translation>Conectando</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="184" />
+        <location filename="../app/gui/connectionbar.cpp" line="196"/>
         <source>Detecting devices</source>
         <translation>Detectando equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="188" />
+        <location filename="../app/gui/connectionbar.cpp" line="200"/>
         <source>Disconnected, retrying</source>
         <translation>Desconectado, reintentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="192" />
+        <location filename="../app/gui/connectionbar.cpp" line="204"/>
         <source>Cannot connect</source>
         <translation>No se puede conectar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="195" />
+        <location filename="../app/gui/connectionbar.cpp" line="207"/>
         <source>Disconnected</source>
         <translation>Desconectado</translation>
     </message>
@@ -4122,186 +4120,186 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="87" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="96" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="96"/>
         <source>While paused, new rows are held; they appear on resume.</source>
         <translation>En pausa, las filas nuevas se retienen; aparecen al reanudar.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136" />
-        <location filename="../app/gui/pages/consolepage.cpp" line="337" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="141" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="145" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
         <source>Relative time</source>
         <translation>Tiempo relativo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="148" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
         <source>Show:</source>
         <translation>Mostrar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
         <source>Show bytes sent</source>
         <translation>Mostrar los bytes enviados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>RX chunks</source>
         <translation>Bloques RX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Frames</source>
         <translation>Tramas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show received frames, decoded</source>
         <translation>Mostrar las tramas recibidas, decodificadas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="177" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>De&amp;vice:</source>
         <translation>Equi&amp;po:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="180" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>Device address filter</source>
         <translation>Filtro de dirección de equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="181" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="190" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
         <source>Co&amp;mmand:</source>
         <translation>Co&amp;mando:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="193" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Command filter</source>
         <translation>Filtro de comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="194" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
         <source>e.g. ST1</source>
         <translation>p. ej. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="205" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
         <source>Remove every row, held ones included</source>
         <translation>Quitar todas las filas, incluidas las retenidas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="206" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="208" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="214" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="214"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="260" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="260"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="274" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="288" />
-        <location filename="../app/gui/pages/consolepage.cpp" line="298" />
-        <location filename="../app/gui/pages/consolepage.cpp" line="316" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="288"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="316"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="337" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="350" />
-        <location filename="../app/gui/pages/consolepage.cpp" line="355" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="351" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="351"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="373" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
         <source>%1 of %2 rows shown</source>
         <translation>%1 de %2 filas mostradas</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="375" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>en pausa: %n retenida</numerusform>
@@ -4309,12 +4307,12 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.h" line="62" />
+        <location filename="../app/gui/pages/consolepage.h" line="62"/>
         <source>Console</source>
         <translation>Consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="356" />
+        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
         <source>The console could not be saved:
 %1</source>
         <translation>No se pudo guardar la consola:
@@ -4324,199 +4322,199 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="72" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="72"/>
         <source>When the counters were read</source>
         <translation>Cuándo se leyeron los contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="74" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="74"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="76" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="76"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="77" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="79" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
         <source>Refresh counters</source>
         <translation>Actualizar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="81" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
         <source>&amp;Export CSV…</source>
         <translation>E&amp;xportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="82" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="83" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Export counters as CSV</source>
         <translation>Exportar contadores como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="145" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="145"/>
         <source>Reading the counters…</source>
         <translation>Leyendo los contadores…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="148" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
         <source>Last reading at %1</source>
         <translation>Última lectura a las %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="150" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="150"/>
         <source>Waiting for the first reading…</source>
         <translation>Esperando la primera lectura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="210" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
         <source>Station %1</source>
         <translation>Estación %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="212" />
-        <location filename="../app/gui/pages/counterspage.cpp" line="243" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
         <source>Counters of %1</source>
         <translation>Contadores de %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="228" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="228"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="241" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="241"/>
         <source>Solder feeder %1</source>
         <translation>Alimentador de estaño %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="247" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="247" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
         <source>Partial</source>
         <translation>Parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="289" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="291" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="291"/>
         <source>Last read failed: %1</source>
         <translation>Falló la última lectura: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="294" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
         <source>Read at %1</source>
         <translation>Leído: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="297" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="297"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="326" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="326"/>
         <source>Reset partial counter</source>
         <translation>Poner a cero el contador parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="327" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>Reset “%1” on %2?</source>
         <translation>¿Poner a cero «%1» en %2?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="329" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="329"/>
         <source>It now reads %1.</source>
         <translation>Ahora marca %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
         <source>The total counter is not affected.</source>
         <translation>El contador total no se ve afectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>Reset counter</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 No se puso nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="343" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 No se puso a cero: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="346" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 Poniendo a cero %2…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="352" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 puesto a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="353" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 no se puso a cero: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="366" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386" />
-        <location filename="../app/gui/pages/counterspage.cpp" line="392" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="392"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="390" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="393" />
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.h" line="44" />
+        <location filename="../app/gui/pages/counterspage.h" line="44"/>
         <source>Counters</source>
         <translation>Contadores</translation>
     </message>
@@ -4524,27 +4522,27 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::DeviceTree</name>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="18" />
+        <location filename="../app/gui/devicetree.cpp" line="20"/>
         <source>Devices</source>
         <translation>Equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="79" />
+        <location filename="../app/gui/devicetree.cpp" line="86"/>
         <source>No line</source>
         <translation>Sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="85" />
+        <location filename="../app/gui/devicetree.cpp" line="92"/>
         <source>feeder</source>
         <translation>alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="85" />
+        <location filename="../app/gui/devicetree.cpp" line="92"/>
         <source>station</source>
         <translation>estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="90" />
+        <location filename="../app/gui/devicetree.cpp" line="97"/>
         <source>Port %1: %2</source>
         <translation>Puerto %1: %2</translation>
     </message>
@@ -4552,27 +4550,27 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::DispensingPage</name>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="47" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="47"/>
         <source>Only the ALE has a built-in wire feed.</source>
         <translation>Solo la ALE tiene alimentación de hilo integrada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="57" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="57"/>
         <source>&amp;Start dispensing</source>
         <translation>&amp;Iniciar dispensado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="58" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="58"/>
         <source>S&amp;top dispensing</source>
         <translation>De&amp;tener dispensado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="59" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="59"/>
         <source>Ignore fuse error…</source>
         <translation>Ignorar error de fusible…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="65" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="65"/>
         <source>
 
 Continue?</source>
@@ -4581,43 +4579,43 @@ Continue?</source>
 ¿Continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="77" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="77"/>
         <source>Wire feed settings</source>
         <translation>Ajustes de alimentación de hilo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="87" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="87"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="112" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="112"/>
         <source>%1 · dispensed %2 in %3 cycles · %4</source>
         <translation>%1 · dispensado %2 en %3 ciclos · %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="116" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="116"/>
         <source>fuse unknown</source>
         <translation>fusible desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="117" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="117"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="118" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="118"/>
         <source>fuse missing or blown</source>
         <translation>fusible ausente o fundido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="124" />
-        <location filename="../app/gui/pages/dispensingpage.cpp" line="132" />
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/dispensingpage.cpp" line="132"/>
         <source>no ALE</source>
         <translation>sin ALE</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/dispensingpage.h" line="21" />
+        <location filename="../app/gui/pages/dispensingpage.h" line="21"/>
         <source>Dispensing</source>
         <translation>Dispensado</translation>
     </message>
@@ -4625,128 +4623,128 @@ Continue?</source>
 <context>
     <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
         <source>Current state</source>
         <translation>Estado actual</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
         <source>Current errors and alarms</source>
         <translation>Errores y alarmas actuales</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Where</source>
         <translation>Dónde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Temperature alarm</source>
         <translation>Alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
         <source>&amp;Reset feeder error</source>
         <translation>&amp;Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
         <source>Reset feeder error</source>
         <translation>Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149"/>
         <source>No device is connected.</source>
         <translation>No hay ningún equipo conectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180" />
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182"/>
         <source>Error code %1: %2</source>
         <translation>Código de error %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
         <source>This device has no temperature alarm</source>
         <translation>Este equipo no tiene alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="227" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="227"/>
         <source>Not reset: %1</source>
         <translation>No se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="230" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="230"/>
         <source>Resetting the feeder error…</source>
         <translation>Borrando el error del alimentador…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="237" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="237"/>
         <source>Feeder error reset.</source>
         <translation>Error del alimentador borrado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="238" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="238"/>
         <source>The feeder error was not reset: %1</source>
         <translation>El error del alimentador no se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="251" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="251"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
         <source>No feeder is connected</source>
         <translation>No hay ningún alimentador conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="257" />
-        <source>Clears the feeder's error code (W-ECV); the feeder does not feed while an error is set</source>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="257"/>
+        <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106"/>
         <source>What to check</source>
         <translation>Qué comprobar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="201" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="201"/>
         <source>%1, %2: %3</source>
         <translation>%1, %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216" />
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
         <source>What to check:</source>
         <translation>Qué comprobar:</translation>
     </message>
@@ -4754,7 +4752,7 @@ Continue?</source>
 <context>
     <name>tipscope::gui::ErrorsPage</name>
     <message>
-        <location filename="../app/gui/pages/errorspage.h" line="20" />
+        <location filename="../app/gui/pages/errorspage.h" line="20"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
@@ -4762,184 +4760,184 @@ Continue?</source>
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="46" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="46"/>
         <source>History</source>
         <translation>Historial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
         <source>Show events of kind</source>
         <translation>Mostrar eventos del tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
         <source>All kinds</source>
         <translation>Todos los tipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
         <source>Errors and alarms</source>
         <translation>Errores y alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Station errors</source>
         <translation>Errores de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
         <source>Port errors</source>
         <translation>Errores de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Feeder errors</source>
         <translation>Errores del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Alarms</source>
         <translation>Alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Status changes</source>
         <translation>Cambios de estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Writes</source>
         <translation>Escrituras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Show events of device</source>
         <translation>Mostrar eventos del equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
         <source>Every device</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
         <source>&amp;Device:</source>
         <translation>&amp;Equipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="157" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="157"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="185" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="185"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193" />
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313" />
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4947,17 +4945,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="317" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="317"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320" />
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
@@ -4965,145 +4963,145 @@ Continue?</source>
 <context>
     <name>tipscope::gui::FeederPage</name>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="45" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="45"/>
         <source>No feeder on this line.</source>
         <translation>No hay alimentador en esta línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="69" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
         <source>Feed &amp;forward</source>
         <translation>A&amp;vanzar hilo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="69" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
         <source>W-SFD 00001</source>
         <translation>W-SFD 00001</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="70" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
         <source>Feed &amp;backward</source>
         <translation>Re&amp;troceder hilo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="70" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
         <source>W-SFD 00000</source>
         <translation>W-SFD 00000</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="71" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
         <source>&amp;Stop</source>
         <translation>&amp;Parar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="71" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
         <source>W-SSD</source>
         <translation>W-SSD</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="72" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
         <source>Start &amp;loading</source>
         <translation>Iniciar car&amp;ga</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="72" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
         <source>W-SLD 00001: feed ignoring errors, for a new spool</source>
         <translation>W-SLD 00001: alimentar ignorando los errores, para una bobina nueva</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="74" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
         <source>End loading</source>
         <translation>Terminar carga</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="74" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
         <source>W-SLD 00000</source>
         <translation>W-SLD 00000</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="80" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="80"/>
         <source>&amp;Reset error</source>
         <translation>&amp;Borrar error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="86" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="86"/>
         <source>Feeding settings</source>
         <translation>Ajustes de alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="94" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="94"/>
         <source>&amp;Apply</source>
         <translation>Ap&amp;licar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="95" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="95"/>
         <source>Save to feeder memory</source>
         <translation>Guardar en la memoria del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="96" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="96"/>
         <source>W-NVS: mode, speed and length survive a restart</source>
         <translation>W-NVS: el modo, la velocidad y la longitud se conservan tras reiniciar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="108" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="108"/>
         <source>Counters</source>
         <translation>Contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="116" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="116"/>
         <source>Reset</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
         <source>Feeding</source>
         <translation>Alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
         <source>Idle</source>
         <translation>En espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="142" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="142"/>
         <source>%1 · fed %2</source>
         <translation>%1 · alimentado %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="144" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
         <source>⚠ %1</source>
         <translation>⚠ %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="144" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
         <source>No feeder error</source>
         <translation>Sin error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="154" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="154"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="167" />
-        <location filename="../app/gui/pages/feederpage.cpp" line="173" />
-        <location filename="../app/gui/pages/feederpage.cpp" line="179" />
-        <location filename="../app/gui/pages/feederpage.cpp" line="185" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="167"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="179"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="185"/>
         <source>no feeder</source>
         <translation>sin alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="194" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="194"/>
         <source>no such counter</source>
         <translation>no existe ese contador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="197" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="197"/>
         <source>
 
 Reset it?</source>
@@ -5112,12 +5110,12 @@ Reset it?</source>
 ¿Ponerlo a cero?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="200" />
+        <location filename="../app/gui/pages/feederpage.cpp" line="200"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.h" line="23" />
+        <location filename="../app/gui/pages/feederpage.h" line="23"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
@@ -5125,152 +5123,152 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="34" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
         <source>Send a frame</source>
         <translation>Enviar una trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="61" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="64" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="65" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
         <source>R (read)</source>
         <translation>R (lectura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="66" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>W (write)</source>
         <translation>W (escritura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="68" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="70"/>
         <source>Command</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="78" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="80"/>
         <source>Data field</source>
         <translation>Campo de datos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="82" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="84"/>
         <source>&amp;Send frame</source>
         <translation>&amp;Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="83" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
         <source>Send frame</source>
         <translation>Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="85" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
         <source>Frame to be sent</source>
         <translation>Trama que se enviará</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="89" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="91"/>
         <source>Catalog check</source>
         <translation>Comprobación del catálogo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="92" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
         <source>Raw bytes in hex</source>
         <translation>Bytes en bruto en hexadecimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="96" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
         <source>Send ra&amp;w hex</source>
         <translation>Enviar he&amp;x en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="97" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
         <source>Send raw hex</source>
         <translation>Enviar hex en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="99" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Raw bytes check</source>
         <translation>Comprobación de los bytes en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="100" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
         <source>Nothing sent yet.</source>
         <translation>Aún no se ha enviado nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="101" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="103"/>
         <source>Outcome of the last send</source>
         <translation>Resultado del último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="110" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
         <source>&amp;Device</source>
         <translation>E&amp;quipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="112" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
         <source>&amp;Header</source>
         <translation>Ca&amp;becera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="114" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
         <source>C&amp;ommand</source>
         <translation>C&amp;omando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="116" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="118"/>
         <source>D&amp;ata</source>
         <translation>Da&amp;tos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="119" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>Frame</source>
         <translation>Trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="122" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
         <source>&amp;Raw hex</source>
         <translation>Hex en b&amp;ruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="126" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="128"/>
         <source>Last send</source>
         <translation>Último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="235" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="237"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Enviar estos bytes exactamente como se han escrito; la respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="206" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="208"/>
         <source>(nothing to send)</source>
         <translation>(nada que enviar)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="210" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
         <source>none for reads</source>
         <translation>ninguno en lecturas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="210" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
         <source>e.g. 00350</source>
         <translation>p. ej. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="222" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="224"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Enviar esta trama una vez, tal como se muestra (sin reintentos; los avisos del catálogo no la detienen). Su respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="257" />
+        <location filename="../app/gui/pages/framebuilder.cpp" line="259"/>
         <source>Not sent: %1</source>
         <translation>No enviado: %1</translation>
     </message>
@@ -5278,27 +5276,27 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::LinkStatusLabel</name>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="10" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
         <source>Line statistics</source>
         <translation>Estadísticas de la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="19" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="19"/>
         <source>no line</source>
         <translation>sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="25" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="25"/>
         <source>%L1 tx/s · %L2 ms · %3 timeouts · %4 BCC errors · %5 NAKs</source>
         <translation>%L1 tx/s · %L2 ms · %3 tiempos agotados · %4 errores BCC · %5 NAK</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="33" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="33"/>
         <source>NAK %1 × %2: %3</source>
         <translation>NAK %1 × %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="38" />
+        <location filename="../app/gui/linkstatuslabel.cpp" line="38"/>
         <source>Reconnects: %1</source>
         <translation>Reconexiones: %1</translation>
     </message>
@@ -5306,78 +5304,78 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="36" />
+        <location filename="../app/gui/mainwindow.cpp" line="36"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="88" />
+        <location filename="../app/gui/mainwindow.cpp" line="88"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="89" />
+        <location filename="../app/gui/mainwindow.cpp" line="89"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="91" />
+        <location filename="../app/gui/mainwindow.cpp" line="91"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="92" />
+        <location filename="../app/gui/mainwindow.cpp" line="92"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="93" />
+        <location filename="../app/gui/mainwindow.cpp" line="93"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="98" />
+        <location filename="../app/gui/mainwindow.cpp" line="98"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="99" />
+        <location filename="../app/gui/mainwindow.cpp" line="99"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="101" />
+        <location filename="../app/gui/mainwindow.cpp" line="101"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="102" />
+        <location filename="../app/gui/mainwindow.cpp" line="102"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="177" />
+        <location filename="../app/gui/mainwindow.cpp" line="177"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="182" />
+        <location filename="../app/gui/mainwindow.cpp" line="182"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="187" />
+        <location filename="../app/gui/mainwindow.cpp" line="187"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="194" />
-        <location filename="../app/gui/mainwindow.cpp" line="197" />
+        <location filename="../app/gui/mainwindow.cpp" line="194"/>
+        <location filename="../app/gui/mainwindow.cpp" line="197"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="198" />
+        <location filename="../app/gui/mainwindow.cpp" line="198"/>
         <source>Written:
 %1
 
@@ -5391,87 +5389,87 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="117" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="119"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="124" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
         <source>family %1</source>
         <translation>familia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="125" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="127"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
         <source>transformer %1</source>
         <translation>transformador %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="130" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="131" />
-        <source>&lt;span style='color:#c01c28'&gt;fuse missing or blown&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c01c28'&gt;fusible ausente o fundido&lt;/span&gt;</translation>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="137" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="139"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Error de estación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="148" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
         <source>idle</source>
         <translation>en espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
         <source>fed %1</source>
         <translation>alimentado %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="152" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="154"/>
         <source>speed %1</source>
         <translation>velocidad %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.h" line="24" />
+        <location filename="../app/gui/pages/overviewpage.h" line="24"/>
         <source>Overview</source>
         <translation>Vista general</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="157" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
         <source>not connected, as last read</source>
         <translation>no conectado, según la última lectura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="171" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: aún no se ha leído nada. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="173" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: los valores en gris son los de la última lectura a las %1. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="177" />
+        <location filename="../app/gui/pages/overviewpage.cpp" line="179"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>El modo solo monitorización está activo: los mandos del robot están desactivados.</translation>
     </message>
@@ -5479,62 +5477,62 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="72" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="72"/>
         <source>Allowed: %1</source>
         <translation>Permitido: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="73" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="73"/>
         <source>Command: %1</source>
         <translation>Comando: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="94" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="94"/>
         <source>%1 disabled</source>
         <translation>%1 desactivado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="175" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="175"/>
         <source>not read</source>
         <translation>no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="178" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="178"/>
         <source>reading…</source>
         <translation>leyendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="181" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
         <source>not saved</source>
         <translation>no guardado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="181" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
         <source>✓ in sync</source>
         <translation>✓ sincronizado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="188" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="188"/>
         <source>edited</source>
         <translation>editado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="192" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="192"/>
         <source>writing…</source>
         <translation>escribiendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="195" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="195"/>
         <source>✗ failed</source>
         <translation>✗ falló</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="200" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="200"/>
         <source>✗ refused</source>
         <translation>✗ rechazado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="184" />
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
         <source>last read %1</source>
         <translation>última lectura %1</translation>
     </message>
@@ -5542,117 +5540,118 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="43" />
+        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="49" />
+        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
         <source>Tip temperature, port %1</source>
         <translation>Temperatura de la punta, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="55" />
+        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
         <source>Power, port %1</source>
         <translation>Potencia, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="71" />
+        <location filename="../app/gui/pages/portcard.cpp" line="73"/>
         <source>Work</source>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="72" />
+        <location filename="../app/gui/pages/portcard.cpp" line="74"/>
         <source>Stand</source>
         <translation>Soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="73" />
+        <location filename="../app/gui/pages/portcard.cpp" line="75"/>
         <source>Cool</source>
         <translation>Enfriar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="74" />
+        <location filename="../app/gui/pages/portcard.cpp" line="76"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: calentar a la temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="75" />
+        <location filename="../app/gui/pages/portcard.cpp" line="77"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: soporte; el reposo y la hibernación siguen tras sus retardos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="77" />
+        <location filename="../app/gui/pages/portcard.cpp" line="79"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: enfriamiento (extractor en espera)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="81" />
+        <location filename="../app/gui/pages/portcard.cpp" line="83"/>
         <source>New selected temperature, port %1</source>
         <translation>Nueva temperatura seleccionada, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="82" />
+        <location filename="../app/gui/pages/portcard.cpp" line="84"/>
         <source>Set</source>
         <translation>Fijar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="175" />
+        <location filename="../app/gui/pages/portcard.cpp" line="186"/>
         <source>Port %1 — %2</source>
         <translation>Puerto %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="176" />
+        <location filename="../app/gui/pages/portcard.cpp" line="187"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="177" />
+        <location filename="../app/gui/pages/portcard.cpp" line="188"/>
         <source>set %1</source>
         <translation>consigna %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="179" />
+        <location filename="../app/gui/pages/portcard.cpp" line="190"/>
         <source>power %1</source>
         <translation>potencia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="204" />
+        <location filename="../app/gui/pages/portcard.cpp" line="215"/>
         <source>status unknown</source>
         <translation>estado desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="182" />
+        <location filename="../app/gui/pages/portcard.cpp" line="193"/>
         <source>transistor %1</source>
         <translation>transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="184" />
+        <location filename="../app/gui/pages/portcard.cpp" line="195"/>
         <source>%1 until the next mode</source>
         <translation>%1 hasta el siguiente modo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="215" />
+        <location filename="../app/gui/pages/portcard.cpp" line="227"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="230"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="220" />
+        <location filename="../app/gui/pages/portcard.cpp" line="235"/>
         <source>status: %1</source>
         <translation>estado: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="222" />
+        <location filename="../app/gui/pages/portcard.cpp" line="237"/>
         <source>alarm: %1</source>
         <translation>alarma: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="194" />
+        <location filename="../app/gui/pages/portcard.cpp" line="205"/>
         <source>Not connected: last read %1</source>
         <translation>No conectado: última lectura %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="196" />
+        <location filename="../app/gui/pages/portcard.cpp" line="207"/>
         <source>Not connected: not read yet</source>
         <translation>No conectado: aún sin leer</translation>
     </message>
@@ -5660,139 +5659,138 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PreferencesDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="24" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
         <source>Preferences</source>
         <translation>Preferencias</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="26" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
         <source>Celsius (°C)</source>
         <translation>Celsius (°C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="27" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="33"/>
         <source>Fahrenheit (°F)</source>
         <translation>Fahrenheit (°F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="29" />
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30" />
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="31" />
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="36"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="38"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
         <source>Follow the system</source>
         <translation>Idioma del sistema</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
         <source>Temperature unit:</source>
         <translation>Unidad de temperatura:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="42" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="48"/>
         <source>Live values (visible ports) every:</source>
         <translation>Valores en tiempo real (puertos visibles) cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
         <source>Errors, alarms and status every:</source>
         <translation>Errores, alarmas y estado cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
         <source>Counters every:</source>
         <translation>Contadores cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="45" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Tiempo de respuesta del equipo (se suma al tiempo de transmisión):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="46" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Reintentos tras una respuesta perdida o dañada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
         <source>Language (on the next start):</source>
         <translation>Idioma (en el próximo inicio):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49" />
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
         <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
         <translation>En la línea siempre viaja °C; la unidad solo cambia lo que ve y escribe. Los colores siguen el tema del escritorio.</translation>
     </message>
-<message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37" />
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37"/>
         <source> s</source>
         <translation> s</translation>
     </message>
-    </context>
+</context>
 <context>
     <name>tipscope::gui::ProfileDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="23" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="23"/>
         <source>Profile for %1</source>
         <translation>Perfil para %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Setting</source>
         <translation>Ajuste</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Device now</source>
         <translation>Equipo ahora</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Profile</source>
         <translation>Perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38" />
-        <source>The dry run's frames and the apply report appear here.</source>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="38"/>
+        <source>The dry run&apos;s frames and the apply report appear here.</source>
         <translation>Aquí aparecen las tramas de la simulación y el informe de la aplicación.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="42" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="42"/>
         <source>Apply anyway: the profile is for a %1, this is a %2 (only the settings both have are written)</source>
         <translation>Aplicar de todos modos: el perfil es para %1 y este equipo es %2 (solo se escriben los ajustes que tienen ambos)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="48" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="48"/>
         <source>Compare again</source>
         <translation>Comparar de nuevo</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="49" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="49"/>
         <source>Dry run</source>
         <translation>Simulación</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="50" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="50"/>
         <source>Apply to device</source>
         <translation>Aplicar al equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="51" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="51"/>
         <source>Stop</source>
         <translation>Detener</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="71" />
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="116" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="71"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="116"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="185" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="185"/>
         <source>Profile from %1 (%2, software %3), created %4: %n setting(s) differ from the device.</source>
         <translation>
             <numerusform>Perfil de %1 (%2, software %3), creado: %4. %n ajuste difiere del equipo.</numerusform>
@@ -5800,7 +5798,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="176" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="176"/>
         <source>Dry run: %n frame(s) would be sent; nothing was written.</source>
         <translation>
             <numerusform>Simulación: se enviaría %n trama; no se escribió nada.</numerusform>
@@ -5808,58 +5806,58 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="114" />
-        <source>The profile would break the device's limits; see above</source>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="114"/>
+        <source>The profile would break the device&apos;s limits; see above</source>
         <translation>El perfil rompería los límites del equipo; véase arriba</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="172" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="172"/>
         <source>&lt;b&gt;This profile cannot be applied to this device:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Este perfil no se puede aplicar a este equipo:&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="30"/>
         <source>Note</source>
         <translation>Nota</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="180" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="180"/>
         <source>&lt;b&gt;Applied.&lt;/b&gt; Every written value was read back and matches; the table shows the device as it now is.</source>
         <translation>&lt;b&gt;Aplicado.&lt;/b&gt; Cada valor escrito se ha releído y coincide; la tabla muestra el equipo tal como está ahora.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="182" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="182"/>
         <source>&lt;b&gt;Not everything was applied.&lt;/b&gt; The table shows the device as it now is; see the report below.</source>
         <translation>&lt;b&gt;No se ha aplicado todo.&lt;/b&gt; La tabla muestra el equipo tal como está ahora; vea el informe abajo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="193" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="193"/>
         <source>Comment: %1</source>
         <translation>Comentario: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="151" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="151"/>
         <source>✓ changed from %1</source>
         <translation>✓ cambiado desde %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="152" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="152"/>
         <source>✗ failed: %1</source>
         <translation>✗ fallido: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="156" />
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="156"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="157"/>
         <source>skipped: %1</source>
         <translation>omitido: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="165" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="165"/>
         <source>%n setting(s) of the profile skipped: this device does not take them.</source>
         <translation>
             <numerusform>%n ajuste del perfil omitido: este equipo no lo admite.</numerusform>
@@ -5867,13 +5865,13 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="168" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="168"/>
         <source>&lt;b&gt;Refused, nothing was written:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Rechazado, no se ha escrito nada:&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="170" />
-        <location filename="../app/gui/dialogs/profiledialog.cpp" line="174" />
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="170"/>
+        <location filename="../app/gui/dialogs/profiledialog.cpp" line="174"/>
         <source>The table shows what the profile would change.</source>
         <translation>La tabla muestra lo que el perfil cambiaría.</translation>
     </message>
@@ -5881,123 +5879,123 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="34" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="34"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="37" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="37"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="38" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="223" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="39" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="39"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Revertir</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="40" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="40"/>
         <source>Save to station &amp;memory</source>
         <translation>Guardar en la &amp;memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="41" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="41"/>
         <source>The selected temperature is volatile: W-NVS stores it so that it survives a restart</source>
         <translation>La temperatura seleccionada es volátil: W-NVS la guarda para que se conserve tras reiniciar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="44" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="44"/>
         <source>Station actions</source>
         <translation>Acciones de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="47" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="47"/>
         <source>Profiles</source>
         <translation>Perfiles</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="50" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="50"/>
         <source>Save device settings to a profile…</source>
         <translation>Guardar los ajustes del equipo en un perfil…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="52" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="52"/>
         <source>Open a profile (compare, dry run, apply)…</source>
         <translation>Abrir un perfil (comparar, simular, aplicar)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="55" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="55"/>
         <source>Port:</source>
         <translation>Puerto:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="143" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Conéctese y seleccione un equipo para ver sus ajustes.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="146" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
         <source>Port %1 (%2)</source>
         <translation>Puerto %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="158" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
         <source>Station</source>
         <translation>Estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="165" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="165"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="166" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="166"/>
         <source>Alarms, port %1</source>
         <translation>Alarmas, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="168" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
         <source>Tool %1, port %2</source>
         <translation>Herramienta %1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="170" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
         <source> (connected)</source>
         <translation> (conectada)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="174" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="174"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dispensado (alimentación de hilo de la ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="182" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="182"/>
         <source>Feeding</source>
         <translation>Alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
         <source>&amp;Apply (%1)</source>
         <translation>A&amp;plicar (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="278" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="278"/>
         <source>Save to station memory</source>
         <translation>Guardar en la memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="289" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="289"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Nueva dirección (1-99), o 0 para tramas sin direcciones:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="296" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="296"/>
         <source>%1
 
 %2
@@ -6010,57 +6008,57 @@ Do you want to continue?</source>
 ¿Desea continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="311" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="317" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="323" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="331" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="311"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="317"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="331"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="312" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Algunos ajustes aún no se han leído (%1). Actualice y vuelva a intentarlo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="318" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="355" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="354" />
-        <location filename="../app/gui/pages/settingspage.cpp" line="360" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="354"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="360"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.h" line="32" />
+        <location filename="../app/gui/pages/settingspage.h" line="32"/>
         <source>Settings</source>
         <translation>Ajustes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="232" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
         <source>⚠ Not connected: the greyed values are as last read (the time is beside each). Apply, Save to station memory, Station actions and Profiles wait for the line.</source>
         <translation>⚠ No conectado: los valores en gris son los de la última lectura (la hora está al lado). Aplicar, Guardar en la memoria de la estación, Acciones de la estación y Perfiles esperan a la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="236" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="236"/>
         <source>Monitor-only mode is on: Apply, Save to station memory and Station actions are off, nothing is written.</source>
         <translation>El modo solo monitorización está activo: Aplicar, Guardar en la memoria de la estación y Acciones de la estación están desactivados, no se escribe nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="324" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="324"/>
         <source>A comment for the profile (optional), e.g. what it is for or who set it:</source>
         <translation>Un comentario para el perfil (opcional), p. ej. para qué es o quién lo configuró:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="336" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="336"/>
         <source>no device is selected</source>
         <translation>no hay ningún equipo seleccionado</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="345" />
+        <location filename="../app/gui/pages/settingspage.cpp" line="345"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Perfil guardado: %n ajuste de %1 en %2</numerusform>
@@ -6071,28 +6069,28 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::gui::Sparkline</name>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="63" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="63"/>
         <source>Last minute of tip temperature and power</source>
         <translation>Último minuto de temperatura de punta y potencia</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="83" />
-        <location filename="../app/gui/widgets/sparkline.cpp" line="87" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="83"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="87"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="88" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="88"/>
         <source>%1 to %2</source>
         <translation>de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="100" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="100"/>
         <source>no samples yet</source>
         <translation>aún no hay muestras</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="151" />
+        <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
@@ -6100,18 +6098,18 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="85" />
-        <location filename="../lib/journal/journal.cpp" line="99" />
+        <location filename="../lib/journal/journal.cpp" line="85"/>
+        <location filename="../lib/journal/journal.cpp" line="99"/>
         <source>The journal is closed.</source>
         <translation>El diario está cerrado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="89" />
+        <location filename="../lib/journal/journal.cpp" line="89"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>El diario no da abasto: %1 registros esperan a ser escritos.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="137" />
+        <location filename="../lib/journal/journal.cpp" line="137"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
     </message>
@@ -6119,42 +6117,42 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::Line</name>
     <message>
-        <location filename="../lib/link/line.cpp" line="24" />
+        <location filename="../lib/link/line.cpp" line="24"/>
         <source>the line was closed</source>
         <translation>se cerró la línea</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="62" />
+        <location filename="../lib/link/line.cpp" line="62"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="64" />
+        <location filename="../lib/link/line.cpp" line="64"/>
         <source>connecting to %1</source>
         <translation>conectando con %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="66" />
+        <location filename="../lib/link/line.cpp" line="66"/>
         <source>connected: %1</source>
         <translation>conectado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="68" />
+        <location filename="../lib/link/line.cpp" line="68"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>desconectado, reintentando cada %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="72" />
+        <location filename="../lib/link/line.cpp" line="72"/>
         <source>cannot connect: %1</source>
         <translation>no se puede conectar: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="93" />
+        <location filename="../lib/link/line.cpp" line="93"/>
         <source>disconnected by the user</source>
         <translation>desconectado por el usuario</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="136" />
+        <location filename="../lib/link/line.cpp" line="136"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>sin respuesta a %1 peticiones seguidas (¿cable desenchufado, equipo apagado o direccionamiento incorrecto?)</translation>
     </message>
@@ -6162,37 +6160,37 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::Reply</name>
     <message>
-        <location filename="../lib/link/reply.cpp" line="10" />
+        <location filename="../lib/link/reply.cpp" line="10"/>
         <source>ok</source>
         <translation>correcto</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="12" />
+        <location filename="../lib/link/reply.cpp" line="12"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="14" />
+        <location filename="../lib/link/reply.cpp" line="14"/>
         <source>corrupted answer</source>
         <translation>respuesta dañada</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="16" />
+        <location filename="../lib/link/reply.cpp" line="16"/>
         <source>refused (NAK)</source>
         <translation>rechazado (NAK)</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="18" />
+        <location filename="../lib/link/reply.cpp" line="18"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="20" />
+        <location filename="../lib/link/reply.cpp" line="20"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../lib/link/reply.cpp" line="22" />
+        <location filename="../lib/link/reply.cpp" line="22"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
@@ -6200,52 +6198,52 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="72" />
+        <location filename="../lib/link/requestqueue.cpp" line="72"/>
         <source>the connection was closed</source>
         <translation>se cerró la conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="118" />
+        <location filename="../lib/link/requestqueue.cpp" line="118"/>
         <source>the connection is closing</source>
         <translation>la conexión se está cerrando</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="122" />
+        <location filename="../lib/link/requestqueue.cpp" line="122"/>
         <source>not sent: the line is not connected</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="211" />
+        <location filename="../lib/link/requestqueue.cpp" line="211"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="240" />
-        <source>unreadable data field '%1' in the answer</source>
-        <translation>campo de datos ilegible '%1' en la respuesta</translation>
+        <location filename="../lib/link/requestqueue.cpp" line="240"/>
+        <source>unreadable data field &apos;%1&apos; in the answer</source>
+        <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="249" />
+        <location filename="../lib/link/requestqueue.cpp" line="249"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="253" />
+        <location filename="../lib/link/requestqueue.cpp" line="253"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="271" />
+        <location filename="../lib/link/requestqueue.cpp" line="271"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="292" />
+        <location filename="../lib/link/requestqueue.cpp" line="292"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="310" />
+        <location filename="../lib/link/requestqueue.cpp" line="310"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -6253,7 +6251,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="313" />
+        <location filename="../lib/link/requestqueue.cpp" line="313"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>en su lugar llegó %n byte de basura</numerusform>
@@ -6261,17 +6259,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="316" />
+        <location filename="../lib/link/requestqueue.cpp" line="316"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="378" />
+        <location filename="../lib/link/requestqueue.cpp" line="378"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="380" />
+        <location filename="../lib/link/requestqueue.cpp" line="380"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
@@ -6279,12 +6277,12 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::SerialTransport</name>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="82" />
+        <location filename="../lib/link/serialtransport.cpp" line="82"/>
         <source>the port %1 disappeared (unplugged?)</source>
         <translation>el puerto %1 ha desaparecido (¿desconectado?)</translation>
     </message>
     <message>
-        <location filename="../lib/link/serialtransport.cpp" line="84" />
+        <location filename="../lib/link/serialtransport.cpp" line="84"/>
         <source>the port stopped responding (%1)</source>
         <translation>el puerto dejó de responder (%1)</translation>
     </message>
@@ -6292,17 +6290,17 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::SimTransport</name>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="24" />
+        <location filename="../lib/link/simtransport.cpp" line="24"/>
         <source>the simulated line is unplugged</source>
         <translation>la línea simulada está desenchufada</translation>
     </message>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="51" />
+        <location filename="../lib/link/simtransport.cpp" line="51"/>
         <source>demo (simulated %1)</source>
         <translation>demo (%1 simulado)</translation>
     </message>
     <message>
-        <location filename="../lib/link/simtransport.cpp" line="62" />
+        <location filename="../lib/link/simtransport.cpp" line="62"/>
         <source>the simulated cable was pulled</source>
         <translation>se desenchufó el cable simulado</translation>
     </message>
@@ -6310,17 +6308,17 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::TcpTransport</name>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="27" />
+        <location filename="../lib/link/tcptransport.cpp" line="27"/>
         <source>the connection to %1 dropped (%2)</source>
         <translation>se cortó la conexión con %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="34" />
+        <location filename="../lib/link/tcptransport.cpp" line="34"/>
         <source>cannot connect to %1: %2</source>
         <translation>no se puede conectar con %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="63" />
+        <location filename="../lib/link/tcptransport.cpp" line="63"/>
         <source>cannot connect to %1: no connection within %2 s</source>
         <translation>no se puede conectar con %1: sin conexión en %2 s</translation>
     </message>
@@ -6328,37 +6326,37 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::model::ConsoleSender</name>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="15" />
+        <location filename="../lib/model/consolesender.cpp" line="15"/>
         <source>%1: answered %2 after %L3 ms</source>
         <translation>%1: respondió %2 tras %L3 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="19" />
+        <location filename="../lib/model/consolesender.cpp" line="19"/>
         <source>%1: refused, %2</source>
         <translation>%1: rechazado, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="21" />
+        <location filename="../lib/model/consolesender.cpp" line="21"/>
         <source>%1: no answer (timeout)</source>
         <translation>%1: sin respuesta (tiempo agotado)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="23" />
+        <location filename="../lib/model/consolesender.cpp" line="23"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="52" />
+        <location filename="../lib/model/consolesender.cpp" line="52"/>
         <source>Monitor-only mode is on: W frames are not sent. Reads still are.</source>
         <translation>El modo solo supervisión está activado: las tramas W no se envían. Las lecturas sí.</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="58" />
+        <location filename="../lib/model/consolesender.cpp" line="58"/>
         <source>Monitor-only mode is on: bytes that are not one valid R frame may be a write, so they are not sent.</source>
         <translation>El modo solo supervisión está activado: los bytes que no forman una trama R válida podrían ser una escritura, así que no se envían.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/consolesender.cpp" line="69" />
+        <location filename="../lib/model/consolesender.cpp" line="69"/>
         <source>%n raw byte(s)</source>
         <translation>
             <numerusform>%n byte en bruto</numerusform>
@@ -6366,29 +6364,19 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="75" />
+        <location filename="../lib/model/consolesender.cpp" line="75"/>
         <source>%1: not sent, not connected</source>
         <translation>%1: no enviado, sin conexión</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="79" />
+        <location filename="../lib/model/consolesender.cpp" line="79"/>
         <source>%1: not sent, monitor-only mode is on</source>
         <translation>%1: no enviado, el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/consolesender.cpp" line="91" />
+        <location filename="../lib/model/consolesender.cpp" line="91"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: enviado, esperando la respuesta…</translation>
     </message>
 </context>
-<context><name>CliUnits</name><message>
-        <location filename="../app/cli/cliunits.cpp" line="44" />
-        <source>'%1' is not a number; %2 takes %3</source>
-        <translation>«%1» no es un número; %2 admite %3</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/cliunits.cpp" line="51" />
-        <source>%1 takes steps of %2 %3</source>
-        <translation>%1 admite pasos de %2 %3</translation>
-    </message>
-</context></TS>
+</TS>
