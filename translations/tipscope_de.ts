@@ -2441,6 +2441,24 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>JointWatcher</name>
+    <message>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
+        <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
+        <translation>Lötstelle zu tief: die Lötspitze fiel %1 K unter den Sollwert (Grenze %2 K)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="121"/>
+        <source>joint recovered slowly: %1 s (limit %2 s)</source>
+        <translation>Lötstelle langsam erholt: %1 s (Grenze %2 s)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="123"/>
+        <source>joint did not recover within %1 s</source>
+        <translation>Lötstelle hat sich in %1 s nicht erholt</translation>
+    </message>
+</context>
+<context>
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="28"/>
@@ -3323,41 +3341,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="26"/>
-        <location filename="../lib/model/session.cpp" line="94"/>
-        <location filename="../lib/model/session.cpp" line="97"/>
+        <location filename="../lib/model/session.cpp" line="28"/>
+        <location filename="../lib/model/session.cpp" line="106"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="93"/>
-        <location filename="../lib/model/session.cpp" line="106"/>
-        <location filename="../lib/model/session.cpp" line="114"/>
+        <location filename="../lib/model/session.cpp" line="105"/>
+        <location filename="../lib/model/session.cpp" line="118"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="130"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="175"/>
+        <location filename="../lib/model/session.cpp" line="191"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="176"/>
+        <location filename="../lib/model/session.cpp" line="192"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="182"/>
+        <location filename="../lib/model/session.cpp" line="198"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="190"/>
+        <location filename="../lib/model/session.cpp" line="206"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -4102,7 +4120,7 @@ Dauerhaft mit dieser udev-Regel:
     <message>
         <location filename="../app/gui/connectionbar.cpp" line="200"/>
         <source>Disconnected, retrying</source>
-        <translation>Getrennt, neuer Versuch läuft</translation>
+        <translation>Getrennt, neuer Versuch</translation>
     </message>
     <message>
         <location filename="../app/gui/connectionbar.cpp" line="204"/>
@@ -6127,7 +6145,7 @@ Möchten Sie fortfahren?</translation>
     <message>
         <location filename="../lib/link/line.cpp" line="64"/>
         <source>connecting to %1</source>
-        <translation>Verbindung mit %1 wird aufgebaut</translation>
+        <translation>Verbindung wird aufgebaut: %1</translation>
     </message>
     <message>
         <location filename="../lib/link/line.cpp" line="66"/>

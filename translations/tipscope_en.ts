@@ -105,7 +105,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="190"/>
+        <location filename="../lib/model/session.cpp" line="206"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>

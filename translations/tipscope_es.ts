@@ -2443,6 +2443,24 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>JointWatcher</name>
+    <message>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
+        <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
+        <translation>soldadura demasiado profunda: la punta bajó %1 K por debajo de la consigna (límite %2 K)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="121"/>
+        <source>joint recovered slowly: %1 s (limit %2 s)</source>
+        <translation>soldadura con recuperación lenta: %1 s (límite %2 s)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="123"/>
+        <source>joint did not recover within %1 s</source>
+        <translation>la soldadura no se recuperó en %1 s</translation>
+    </message>
+</context>
+<context>
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="28"/>
@@ -3325,41 +3343,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="26"/>
-        <location filename="../lib/model/session.cpp" line="94"/>
-        <location filename="../lib/model/session.cpp" line="97"/>
+        <location filename="../lib/model/session.cpp" line="28"/>
+        <location filename="../lib/model/session.cpp" line="106"/>
+        <location filename="../lib/model/session.cpp" line="109"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="93"/>
-        <location filename="../lib/model/session.cpp" line="106"/>
-        <location filename="../lib/model/session.cpp" line="114"/>
+        <location filename="../lib/model/session.cpp" line="105"/>
+        <location filename="../lib/model/session.cpp" line="118"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="130"/>
+        <location filename="../lib/model/session.cpp" line="142"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="175"/>
+        <location filename="../lib/model/session.cpp" line="191"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="176"/>
+        <location filename="../lib/model/session.cpp" line="192"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="182"/>
+        <location filename="../lib/model/session.cpp" line="198"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="190"/>
+        <location filename="../lib/model/session.cpp" line="206"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
