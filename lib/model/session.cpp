@@ -21,8 +21,10 @@ Session::Session(QObject *parent)
 Session::Session(const protocol::Catalog &catalog, QObject *parent)
     : QObject(parent)
     , m_catalog(catalog)
-    , m_recorder(m_telemetry, [this] { return sampleTimeMs(); }) {
+    , m_recorder(m_telemetry, [this] { return sampleTimeMs(); })
+    , m_joints(m_telemetry) {
     m_log.setClock([this] { return sampleTimeMs(); });
+    connect(&m_joints, &JointWatcher::jointEnded, this, &Session::warnOfJoint);
     m_stateText = Tr::tr("disconnected");
 }
 
@@ -51,9 +53,20 @@ void Session::setState(State s, const QString &text) {
     Q_EMIT stateChanged(s, text);
 }
 
+void Session::warnOfJoint(const JointRecord &joint) {
+    const QString text =
+        JointWatcher::warningText(joint, m_joints.limits(joint.device, joint.port));
+    if (text.isEmpty())
+        return;
+    for (DeviceModel *d : std::as_const(m_devices))
+        if (d->identity() == joint.device)
+            d->logEvent(Event::Kind::Alarm, Event::Severity::Warning, joint.port, text);
+}
+
 void Session::clearDevices() {
     for (DeviceModel *d : std::as_const(m_devices)) {
         m_recorder.unwatch(d, TelemetryGap::Cause::Disconnected);
+        m_joints.unwatch(d);
         m_scheduler.removeDevice(d);
         delete d;
     }
@@ -166,6 +179,9 @@ void Session::adoptDevices(const QList<DeviceInfo> &found) {
             d = new StationModel(m_line->queue(), info, m_catalog, this);
         d->setLineName(lineIdentityName(m_settings.line));
         m_recorder.watch(d);
+        if (auto *station = qobject_cast<StationModel *>(d))
+            m_joints.watch(
+                station, [station](int port) { return TelemetryRecorder::keyOf(*station, port); });
         d->setEventLog(&m_log);
         d->setTemperatureUnit(m_unit);
         d->setWritesBlocked(m_monitorOnly);

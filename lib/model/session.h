@@ -12,6 +12,7 @@
 
 #include "eventlog.h"
 #include "feedermodel.h"
+#include "joints/jointwatcher.h"
 #include "pollscheduler.h"
 #include "sessionclock.h"
 #include "stationmodel.h"
@@ -67,6 +68,9 @@ public:
     [[nodiscard]] PollScheduler &scheduler() { return m_scheduler; }
     [[nodiscard]] EventLog &eventLog() { return m_log; }
     [[nodiscard]] Telemetry &telemetry() { return m_telemetry; }
+    // The joints of every station's ports, found live; one outside its limits is also a warning
+    // in the event log.
+    [[nodiscard]] JointWatcher &joints() { return m_joints; }
 
     [[nodiscard]] TemperatureUnit temperatureUnit() const { return m_unit; }
     void setTemperatureUnit(TemperatureUnit unit);
@@ -86,6 +90,7 @@ private:
     void adoptDevices(const QList<link::DeviceInfo> &found);
     void identify(std::optional<int> address);
     void clearDevices();
+    void warnOfJoint(const JointRecord &joint);
     [[nodiscard]] QString connectedText() const;
     [[nodiscard]] qint64 sampleTimeMs() const;
 
@@ -99,6 +104,7 @@ private:
     EventLog m_log;
     Telemetry m_telemetry;
     TelemetryRecorder m_recorder;
+    JointWatcher m_joints;
     State m_state = State::Disconnected;
     QString m_stateText;
     TemperatureUnit m_unit = TemperatureUnit::Celsius;

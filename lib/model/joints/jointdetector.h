@@ -31,7 +31,7 @@ namespace tipscope::model {
 
 struct JointLimits {
     int bandK = 5;               // within this of the setpoint the tip counts as recovered
-    qint64 maxRecoveryMs = 3000; // slower is SlowRecovery
+    qint64 maxRecoveryMs = 5000; // slower is SlowRecovery
     int maxDipK = 80;            // deeper is TooDeep
 };
 

@@ -10,6 +10,7 @@
 
 #include "model/deviceidentity.h"
 
+#include <QMetaType>
 #include <QString>
 #include <optional>
 
@@ -48,3 +49,5 @@ struct JointRecord {
 };
 
 } // namespace tipscope::model
+
+Q_DECLARE_METATYPE(tipscope::model::JointRecord)

@@ -1,0 +1,131 @@
+#include "model/joints/jointwatcher.h"
+
+#include "model/displayunits.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+
+namespace tipscope::model {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(JointWatcher)
+};
+
+constexpr int kWorking = 0; // the R-PSx status of a port at work
+
+QString seconds(qint64 ms) {
+    return QLocale().toString(double(ms) / 1000, 'f', 1);
+}
+} // namespace
+
+JointWatcher::JointWatcher(Telemetry &telemetry, QObject *parent)
+    : QObject(parent)
+    , m_telemetry(telemetry) {
+    connect(&m_telemetry, &Telemetry::samplesAdded, this, &JointWatcher::onSamplesAdded);
+}
+
+void JointWatcher::watch(StationModel *station,
+                         const std::function<TelemetryKey(int port)> &keyOf) {
+    for (PortModel *port : station->ports()) {
+        const TelemetryKey key = keyOf(port->number());
+        const TelemetryBuffer *buffer = m_telemetry.buffer(key);
+        const qint64 from = buffer && !buffer->isEmpty() ? buffer->lastTime() + 1 : 0;
+        m_watched.insert_or_assign(
+            key, Watched{station, port, JointDetector(station->identity(), port->number()), from});
+    }
+}
+
+void JointWatcher::unwatch(DeviceModel *device) {
+    for (auto it = m_watched.begin(); it != m_watched.end();) {
+        if (it->second.station != device && it->second.station) {
+            ++it;
+            continue;
+        }
+        emitIfEnded(it->second.detector.gap(it->second.fedUntilMs));
+        it = m_watched.erase(it);
+    }
+}
+
+void JointWatcher::setLimits(const DeviceIdentity &device, int port, const JointLimits &limits) {
+    for (auto &[key, w] : m_watched)
+        if (w.station && w.station->identity() == device && w.port->number() == port)
+            w.detector.setLimits(limits);
+}
+
+JointLimits JointWatcher::limits(const DeviceIdentity &device, int port) const {
+    for (const auto &[key, w] : m_watched)
+        if (w.station && w.station->identity() == device && w.port->number() == port)
+            return w.detector.limits();
+    return {};
+}
+
+void JointWatcher::onSamplesAdded(const QList<TelemetryKey> &keys) {
+    for (const TelemetryKey &key : keys) {
+        const auto it = m_watched.find(key);
+        if (it == m_watched.end() || !it->second.station)
+            continue;
+        if (const TelemetryBuffer *buffer = m_telemetry.buffer(key))
+            feed(it->second, *buffer);
+    }
+}
+
+// The new samples in time order, with each recorded gap before them as a gap.
+void JointWatcher::feed(Watched &w, const TelemetryBuffer &buffer) {
+    if (buffer.isEmpty() || buffer.lastTime() < w.fedUntilMs)
+        return;
+    const qint64 from = w.fedUntilMs;
+    const qint64 to = buffer.lastTime() + 1;
+    const auto series = [&](const char *name) {
+        return buffer.samples(buffer.seriesIndex(QLatin1String(name)), from, to);
+    };
+    const auto tips = series("tip");
+    const auto setpoints = series("setpoint");
+    const auto powers = series("power");
+    const auto statuses = series("status");
+    const Parameter *power = w.port->parameter(protocol::Role::Power);
+    const double powerScale =
+        power ? displayFormat(power->spec(), TemperatureUnit::Celsius).scale : 0.1;
+    QList<TelemetryGap> gaps = buffer.gaps().within(from, to);
+    qsizetype nextGap = 0;
+    const QString tool = w.port->toolName();
+    for (qsizetype i = 0; i < tips.size(); ++i) {
+        const qint64 t = tips.at(i).timeMs;
+        while (nextGap < gaps.size() && gaps.at(nextGap).startMs <= t)
+            emitIfEnded(w.detector.gap(gaps.at(nextGap++).startMs));
+        PortReading r;
+        r.timeMs = t;
+        r.tip = tips.at(i).value;
+        r.setpoint = setpoints.value(i).value;
+        r.powerPct = powers.value(i).value * powerScale;
+        r.working = statuses.value(i).value == kWorking;
+        r.tool = tool;
+        emitIfEnded(w.detector.add(r));
+    }
+    w.fedUntilMs = to;
+}
+
+void JointWatcher::emitIfEnded(const std::optional<JointRecord> &joint) {
+    if (joint)
+        Q_EMIT jointEnded(*joint);
+}
+
+QString JointWatcher::warningText(const JointRecord &joint, const JointLimits &limits) {
+    switch (joint.verdict) {
+    case JointVerdict::TooDeep:
+        return Tr::tr("joint too deep: the tip fell %1 K below the setpoint (limit %2 K)")
+            .arg(joint.dipDepth)
+            .arg(limits.maxDipK);
+    case JointVerdict::SlowRecovery:
+        return joint.recoveryMs
+                   ? Tr::tr("joint recovered slowly: %1 s (limit %2 s)")
+                         .arg(seconds(*joint.recoveryMs), seconds(limits.maxRecoveryMs))
+                   : Tr::tr("joint did not recover within %1 s").arg(seconds(joint.durationMs));
+    case JointVerdict::Ok:
+    case JointVerdict::Incomplete:
+        break;
+    }
+    return {};
+}
+
+} // namespace tipscope::model

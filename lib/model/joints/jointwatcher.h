@@ -1,0 +1,57 @@
+// JointWatcher: finds the joints of every port of the watched stations, live, from the session's
+// telemetry.
+//
+// Each port's history gets a JointDetector. When samples arrive (Telemetry::samplesAdded), the
+// new ones are fed to it in time order with the port's tool of the moment; a recorded gap in the
+// history (line down, no answer, disconnected) reaches it as a gap, so no joint is measured
+// across one. unwatch() ends a joint in progress as incomplete. Every joint that ends is
+// jointEnded(); the limits are per port (setLimits()), the defaults JointLimits{}.
+//
+// It reads the same samples the charts draw, so what it measures is what a person sees.
+#pragma once
+
+#include "model/joints/jointdetector.h"
+#include "model/stationmodel.h"
+#include "model/telemetry/telemetry.h"
+
+#include <QObject>
+#include <QPointer>
+#include <map>
+
+namespace tipscope::model {
+
+class JointWatcher : public QObject {
+    Q_OBJECT
+public:
+    explicit JointWatcher(Telemetry &telemetry, QObject *parent = nullptr);
+
+    // Watches every port of `station`, whose histories are under `keyOf(station, port)`.
+    void watch(StationModel *station, const std::function<TelemetryKey(int port)> &keyOf);
+    void unwatch(DeviceModel *device);
+    void setLimits(const DeviceIdentity &device, int port, const JointLimits &limits);
+    [[nodiscard]] JointLimits limits(const DeviceIdentity &device, int port) const;
+
+    // A joint's limits broken, in words for the event log ("port 1 joint: recovery 4.2 s,
+    // limit 3.0 s"); empty for a joint within them or not judged.
+    [[nodiscard]] static QString warningText(const JointRecord &joint, const JointLimits &limits);
+
+Q_SIGNALS:
+    void jointEnded(const tipscope::model::JointRecord &joint);
+
+private:
+    struct Watched {
+        QPointer<StationModel> station;
+        PortModel *port = nullptr;
+        JointDetector detector;
+        qint64 fedUntilMs = 0; // samples up to here are fed
+    };
+
+    void onSamplesAdded(const QList<TelemetryKey> &keys);
+    void feed(Watched &w, const TelemetryBuffer &buffer);
+    void emitIfEnded(const std::optional<JointRecord> &joint);
+
+    Telemetry &m_telemetry;
+    std::map<TelemetryKey, Watched> m_watched;
+};
+
+} // namespace tipscope::model

@@ -1,0 +1,75 @@
+// Joints found live: the demo station at work (a joint on port 1 every 15 s) through the real
+// session, its telemetry and the watcher. Each joint names the device and port, is measured and
+// judged; one outside its limits is also a warning in the event log, naming its port.
+#include "model/joints/jointwatcher.h"
+#include "model/session.h"
+#include "sim/demoactivity.h"
+
+#include "demosession.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace tipscope;
+using namespace tipscope::model;
+
+namespace {
+// The first joint comes kJointOffsetMs into the session, the next kJointEveryMs later.
+constexpr int kTwoJointsMs =
+    sim::DemoActivity::kJointOffsetMs + 2 * sim::DemoActivity::kJointEveryMs + 10'000;
+} // namespace
+
+class TestJointWatcher : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void theDemoStationsJointsAreFoundMeasuredAndJudged();
+};
+
+void TestJointWatcher::theDemoStationsJointsAreFoundMeasuredAndJudged() {
+    Session session;
+    QSignalSpy joints(&session.joints(), &JointWatcher::jointEnded);
+    QVERIFY(joints.isValid());
+    Session::Settings settings = testing::unpacedDemoSettings();
+    settings.demoActivity = true;
+    session.connectTo(settings);
+    QTRY_VERIFY_WITH_TIMEOUT(session.state() == Session::State::Connected, 30000);
+    StationModel *station = session.station();
+    QVERIFY(station);
+
+    QTRY_VERIFY_WITH_TIMEOUT(!joints.isEmpty(), kTwoJointsMs);
+    const auto first = joints.first().first().value<JointRecord>();
+    QCOMPARE(first.device, station->identity());
+    QCOMPARE(first.port, 1);
+    QCOMPARE(first.tool, station->port(1)->toolName());
+    QVERIFY2(first.verdict == JointVerdict::Ok,
+             qPrintable(QStringLiteral("%1, recovery %2 ms, dip %3 K, %4 ms long")
+                            .arg(jointVerdictName(first.verdict))
+                            .arg(first.recoveryMs.value_or(-1))
+                            .arg(first.dipDepth)
+                            .arg(first.durationMs)));
+    QVERIFY(first.recoveryMs.has_value());
+    QVERIFY2(*first.recoveryMs > 0 && *first.recoveryMs < 5000,
+             qPrintable(QString::number(*first.recoveryMs)));
+    QVERIFY2(first.dipDepth > 5, qPrintable(QString::number(first.dipDepth)));
+    QVERIFY(first.powerPeak > 0 && first.powerIntegral > 0);
+
+    // A limit the demo's joints break: the next one is judged slow and logged as a warning.
+    JointLimits strict;
+    strict.maxRecoveryMs = 1;
+    session.joints().setLimits(station->identity(), 1, strict);
+    QCOMPARE(session.joints().limits(station->identity(), 1).maxRecoveryMs, 1);
+    const qsizetype before = joints.size();
+    QTRY_VERIFY_WITH_TIMEOUT(joints.size() > before, kTwoJointsMs);
+    const auto slow = joints.last().first().value<JointRecord>();
+    QCOMPARE(slow.verdict, JointVerdict::SlowRecovery);
+    const QList<Event> events = session.eventLog().events();
+    const auto warning = std::find_if(events.cbegin(), events.cend(), [](const Event &e) {
+        return e.text.startsWith(QStringLiteral("joint recovered slowly"));
+    });
+    QVERIFY(warning != events.cend());
+    QCOMPARE(warning->port, 1);
+    QCOMPARE(warning->severity, Event::Severity::Warning);
+}
+
+QTEST_GUILESS_MAIN(TestJointWatcher)
+#include "tst_jointwatcher.moc"
