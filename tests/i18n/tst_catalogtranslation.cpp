@@ -74,11 +74,10 @@ void TestCatalogTranslation::specialLabelsAreAcceptedAndRefusalsExplainedInGerma
     const ResolvedCommand &status = st->parameter("PS1")->spec();
     const TemperatureUnit c = TemperatureUnit::Celsius;
     const ResolvedCommand &delay = st->parameter("D12")->spec();
-    QCOMPARE(parseDisplayText(delay, QStringLiteral("Deaktiviert"), c),
-             std::optional<qint64>(99999));
-    QString error;
-    QVERIFY(!parseUserValue(status, QStringLiteral("Ruhemodus"), &error));
-    QCOMPARE(error,
+    QCOMPARE(parseDisplayText(delay, QStringLiteral("Deaktiviert"), c).value(), 99999);
+    const auto sleep = parseUserValue(status, QStringLiteral("Ruhemodus"));
+    QVERIFY(!sleep);
+    QCOMPARE(sleep.error(),
              QStringLiteral("'Ruhemodus' ist keine ganze Zahl; für PS1 zulässig: einer der Werte "
                             "0 (In Betrieb), 1 (Ablage), 10 (Abkühlen)"));
 }

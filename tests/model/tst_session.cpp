@@ -79,9 +79,8 @@ void TestSession::samplesCarryTheValuesTheirRolesName() {
 }
 
 void TestSession::modelsAreBuiltFromTheSessionsCatalog() {
-    QString error;
-    const auto catalog = testing::catalogWith(testing::newCommandEntries(), &error);
-    QVERIFY2(catalog, qPrintable(error));
+    const auto catalog = testing::catalogWith(testing::newCommandEntries());
+    QVERIFY2(catalog, qPrintable(catalog.error()));
     Session session(*catalog);
     session.connectTo(demoSettings());
     QTRY_VERIFY_WITH_TIMEOUT(session.station() && session.feeder(), kConnectMs);
