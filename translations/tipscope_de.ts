@@ -1951,7 +1951,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     <message>
         <location filename="../lib/model/deviceidentity.cpp" line="73"/>
         <source>%1 at %2</source>
-        <translation>%1 an %2</translation>
+        <translation>%1 an Adresse %2</translation>
     </message>
     <message>
         <location filename="../lib/model/deviceidentity.cpp" line="74"/>

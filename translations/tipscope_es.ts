@@ -1953,7 +1953,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     <message>
         <location filename="../lib/model/deviceidentity.cpp" line="73"/>
         <source>%1 at %2</source>
-        <translation>%1 en %2</translation>
+        <translation>%1 en la dirección %2</translation>
     </message>
     <message>
         <location filename="../lib/model/deviceidentity.cpp" line="74"/>
