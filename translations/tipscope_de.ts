@@ -19,7 +19,7 @@
         <translation>%1 läuft bereits</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="44"/>
+        <location filename="../lib/model/action.cpp" line="43"/>
         <source>%1 done</source>
         <translation>%1 erledigt</translation>
     </message>
@@ -32,7 +32,7 @@
         <translation>wählen Sie eine serielle Schnittstelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="115"/>
+        <location filename="../lib/model/appsettings.cpp" line="113"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; hat nicht die Form HOST:PORT (zum Beispiel 192.168.1.20:4001)</translation>
     </message>
@@ -48,17 +48,17 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="219"/>
+        <location filename="../lib/protocol/catalog.cpp" line="218"/>
         <source>Unknown NAK code %1</source>
         <translation>Unbekannter NAK-Code %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="224"/>
+        <location filename="../lib/protocol/catalog.cpp" line="223"/>
         <source>Unknown station error %1</source>
         <translation>Unbekannter Stationsfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="233"/>
+        <location filename="../lib/protocol/catalog.cpp" line="232"/>
         <source>Unknown port error %1</source>
         <translation>Unbekannter Portfehler %1</translation>
     </message>
@@ -1063,12 +1063,12 @@
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="226"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="224"/>
         <source>unknown (%1)</source>
         <translation>unbekannt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="233"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="231"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
@@ -1093,7 +1093,7 @@
         <translation>Teilzähler vorgeschobene Länge zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="238"/>
+        <location filename="../lib/protocol/catalog.cpp" line="237"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt)</translation>
     </message>
@@ -1321,22 +1321,22 @@
         <translation>die Datei ist leer oder enthält nur Kommentare</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="30"/>
         <source>the file is larger than %1 MB; replay reads files up to %1 MB</source>
         <translation>die Datei ist größer als %1 MB; die Wiedergabe liest Dateien bis %1 MB</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="107"/>
         <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
         <translation>ihre Messwerte belegen nach %2 MB Gelesenem %1 MB Speicher, mehr als die Wiedergabe erlaubt (das Doppelte der Dateigröße); eine von TipScope geschriebene Aufzeichnung braucht weit weniger</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="144"/>
         <source>reading was cancelled</source>
         <translation>das Lesen wurde abgebrochen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="168"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>die Datei ist %1 MB groß; die Wiedergabe liest Dateien bis %2 MB</translation>
     </message>
@@ -1490,90 +1490,90 @@
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="62"/>
+        <location filename="../app/cli/clicommands.cpp" line="63"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="91"/>
+        <location filename="../app/cli/clicommands.cpp" line="92"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="102"/>
+        <location filename="../app/cli/clicommands.cpp" line="103"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="125"/>
+        <location filename="../app/cli/clicommands.cpp" line="126"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="130"/>
+        <location filename="../app/cli/clicommands.cpp" line="131"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="138"/>
+        <location filename="../app/cli/clicommands.cpp" line="139"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="143"/>
+        <location filename="../app/cli/clicommands.cpp" line="144"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="181"/>
+        <location filename="../app/cli/clicommands.cpp" line="182"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="190"/>
+        <location filename="../app/cli/clicommands.cpp" line="191"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="203"/>
-        <location filename="../app/cli/clicommands.cpp" line="205"/>
+        <location filename="../app/cli/clicommands.cpp" line="204"/>
+        <location filename="../app/cli/clicommands.cpp" line="206"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="208"/>
+        <location filename="../app/cli/clicommands.cpp" line="209"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="171"/>
-        <location filename="../app/cli/clicommands.cpp" line="218"/>
-        <location filename="../app/cli/clicommands.cpp" line="241"/>
+        <location filename="../app/cli/clicommands.cpp" line="172"/>
+        <location filename="../app/cli/clicommands.cpp" line="223"/>
+        <location filename="../app/cli/clicommands.cpp" line="246"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="234"/>
+        <location filename="../app/cli/clicommands.cpp" line="239"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="307"/>
+        <location filename="../app/cli/clicommands.cpp" line="312"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="330"/>
+        <location filename="../app/cli/clicommands.cpp" line="335"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="333"/>
+        <location filename="../app/cli/clicommands.cpp" line="338"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="334"/>
+        <location filename="../app/cli/clicommands.cpp" line="339"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
     </message>
@@ -1586,7 +1586,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="163"/>
+        <location filename="../app/cli/clicommands.cpp" line="164"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 wurde nicht gesendet: seine Grenze %2 ließ sich nicht lesen: %3</translation>
     </message>
@@ -1705,62 +1705,62 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="98"/>
+        <location filename="../app/cli/clioptions.cpp" line="94"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="131"/>
+        <location filename="../app/cli/clioptions.cpp" line="127"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="137"/>
+        <location filename="../app/cli/clioptions.cpp" line="134"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="144"/>
+        <location filename="../app/cli/clioptions.cpp" line="142"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="149"/>
+        <location filename="../app/cli/clioptions.cpp" line="147"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud erwartet eine Baudrate wie 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="156"/>
+        <location filename="../app/cli/clioptions.cpp" line="154"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity erwartet none, even oder odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="160"/>
+        <location filename="../app/cli/clioptions.cpp" line="158"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits erwartet 1 oder 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="168"/>
+        <location filename="../app/cli/clioptions.cpp" line="167"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="176"/>
+        <location filename="../app/cli/clioptions.cpp" line="175"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="179"/>
+        <location filename="../app/cli/clioptions.cpp" line="178"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="183"/>
+        <location filename="../app/cli/clioptions.cpp" line="182"/>
         <source>--%1 needs a value</source>
         <translation>--%1 braucht einen Wert</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="187"/>
+        <location filename="../app/cli/clioptions.cpp" line="186"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
@@ -1780,7 +1780,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="201"/>
+        <location filename="../app/cli/clioptions.cpp" line="202"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -1911,7 +1911,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>„%1“ ist keine Zahl; %2 nimmt %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliunits.cpp" line="54"/>
+        <location filename="../app/cli/cliunits.cpp" line="53"/>
         <source>%1 takes steps of %2 %3</source>
         <translation>%1 nimmt Schritte von %2 %3</translation>
     </message>
@@ -2039,7 +2039,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     <message>
         <location filename="../lib/model/deviceidentity.cpp" line="73"/>
         <source>%1 at %2</source>
-        <translation>%1 an %2</translation>
+        <translation>%1 an Adresse %2</translation>
     </message>
     <message>
         <location filename="../lib/model/deviceidentity.cpp" line="74"/>
@@ -2114,12 +2114,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>DisplayUnits</name>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="82"/>
+        <location filename="../lib/model/displayunits.cpp" line="81"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>&apos;%1&apos; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="89"/>
+        <location filename="../lib/model/displayunits.cpp" line="85"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 hat mehr Nachkommastellen, als %2 zulässt</translation>
     </message>
@@ -2245,77 +2245,77 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Ein Schreibbefehl braucht ein Datenfeld: %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="54"/>
+        <location filename="../lib/model/framecomposer.cpp" line="53"/>
         <source>On the wire this value is written %1.</source>
         <translation>Auf der Leitung wird dieser Wert als %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="69"/>
+        <location filename="../lib/model/framecomposer.cpp" line="68"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Unbekannte Gerätefamilie: der Katalog kann dieses Telegramm nicht prüfen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="77"/>
+        <location filename="../lib/model/framecomposer.cpp" line="76"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 ist im Katalog kein Schreibbefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="78"/>
+        <location filename="../lib/model/framecomposer.cpp" line="77"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 ist im Katalog kein Lesebefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="81"/>
+        <location filename="../lib/model/framecomposer.cpp" line="80"/>
         <source>Did you mean %1?</source>
         <translation>Meinten Sie %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="82"/>
+        <location filename="../lib/model/framecomposer.cpp" line="81"/>
         <source>It is sent as typed.</source>
         <translation>Es wird unverändert gesendet.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="87"/>
+        <location filename="../lib/model/framecomposer.cpp" line="86"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Lesebefehle haben kein Datenfeld; das Gerät kann dieses Telegramm ablehnen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="93"/>
+        <location filename="../lib/model/framecomposer.cpp" line="92"/>
         <source>Dangerous: %1</source>
         <translation>Gefährlich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="97"/>
+        <location filename="../lib/model/framecomposer.cpp" line="96"/>
         <source>Catalog check: %1</source>
         <translation>Katalogprüfung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="111"/>
+        <location filename="../lib/model/framecomposer.cpp" line="110"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="153"/>
+        <location filename="../lib/model/framecomposer.cpp" line="152"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="171"/>
+        <location filename="../lib/model/framecomposer.cpp" line="170"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>Nicht sendbar: der Befehl muss aus 3 druckbaren Zeichen bestehen, z. B. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="175"/>
+        <location filename="../lib/model/framecomposer.cpp" line="174"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>Nicht sendbar: das Datenfeld darf nur druckbare ASCII-Zeichen enthalten.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="180"/>
+        <location filename="../lib/model/framecomposer.cpp" line="179"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>Nicht sendbar: Adressen gehen von 00 bis 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="209"/>
+        <location filename="../lib/model/framecomposer.cpp" line="208"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
@@ -2323,7 +2323,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="211"/>
+        <location filename="../lib/model/framecomposer.cpp" line="210"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
@@ -2359,52 +2359,52 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Datenmüll</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="55"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="49"/>
         <source>not STX…ETX BCC or too short</source>
         <translation>kein STX…ETX BCC oder zu kurz</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="59"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="52"/>
         <source>BCC is %1, expected %2</source>
         <translation>BCC ist %1, erwartet %2</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="69"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="61"/>
         <source>malformed addresses</source>
         <translation>fehlerhafte Adressen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="67"/>
         <source>too short for header and command</source>
         <translation>zu kurz für Kopf und Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="78"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="70"/>
         <source>unknown header</source>
         <translation>unbekannter Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="83"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
         <source>command is not 3 letters or digits</source>
         <translation>Befehl besteht nicht aus 3 Buchstaben oder Ziffern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="88"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="79"/>
         <source>data field is not printable ASCII</source>
         <translation>Datenfeld ist kein druckbares ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="121"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="111"/>
         <source>frame interrupted by a new STX</source>
         <translation>Telegramm durch ein neues STX unterbrochen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="130"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="120"/>
         <source>no ETX within %1 bytes</source>
         <translation>kein ETX innerhalb von %1 Bytes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="155"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="145"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n Byte außerhalb eines Telegramms</numerusform>
@@ -2461,12 +2461,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Journal</name>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="28"/>
+        <location filename="../lib/journal/journalreader.cpp" line="31"/>
         <source>No journal is open.</source>
         <translation>Kein Journal ist geöffnet.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="86"/>
+        <location filename="../lib/journal/journalreader.cpp" line="83"/>
         <source>There is no journal at %1.</source>
         <translation>Unter %1 gibt es kein Journal.</translation>
     </message>
@@ -2476,12 +2476,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Das Journal %1 wurde von einem neueren TipScope geschrieben (Schema %2; dieses kennt bis %3). Es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="96"/>
+        <location filename="../lib/journal/journalschema.cpp" line="95"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>Die Datei %1 ist kein TipScope-Journal. Sie wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="162"/>
+        <location filename="../lib/journal/journalschema.cpp" line="172"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
     </message>
@@ -2769,32 +2769,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Der Hostname %1 des Brokers lässt sich nicht auflösen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="38"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="46"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Ein Passwort ist gesetzt, aber kein Benutzername: MQTT sendet ein Passwort nur mit einem Benutzernamen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="54"/>
         <source>The user name %1 is not accepted: %2</source>
         <translation>Der Benutzername %1 wird nicht angenommen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
         <source>The last will on %1 is not accepted: %2</source>
         <translation>Der letzte Wille auf %1 wird nicht angenommen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="72"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>Die CA-Zertifikatsdatei %1 kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="70"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Ein Client-Zertifikat braucht sowohl seine Zertifikatsdatei als auch seine Schlüsseldatei.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="78"/>
         <source>The file %1 cannot be read.</source>
         <translation>Die Datei %1 kann nicht gelesen werden.</translation>
     </message>
@@ -2809,12 +2809,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Die MQTT-Version kann nicht eingestellt werden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="127"/>
         <source>The client id %1 is not accepted.</source>
         <translation>Die Client-ID %1 wird nicht angenommen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="129"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Kein Speicher mehr für einen MQTT-Client.</translation>
     </message>
@@ -2822,27 +2822,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MqttSecret</name>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="30"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="31"/>
         <source>The password file %1 does not exist.</source>
         <translation>Die Passwortdatei %1 existiert nicht.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="33"/>
         <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
         <translation>Die Passwortdatei %1 ist größer als %2 Bytes; ist es die richtige Datei?</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="41"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="39"/>
         <source>The password file %1 cannot be read: %2</source>
         <translation>Die Passwortdatei %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="46"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="42"/>
         <source>The password file %1 is empty.</source>
         <translation>Die Passwortdatei %1 ist leer.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="55"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="50"/>
         <source>The environment variable %1 that should hold the password is not set or empty.</source>
         <translation>Die Umgebungsvariable %1, die das Passwort enthalten soll, ist nicht gesetzt oder leer.</translation>
     </message>
@@ -2892,52 +2892,52 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="138"/>
+        <location filename="../lib/model/parameter.cpp" line="137"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="189"/>
+        <location filename="../lib/model/parameter.cpp" line="188"/>
         <source>reading %1 (%2)</source>
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="201"/>
+        <location filename="../lib/model/parameter.cpp" line="200"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="202"/>
+        <location filename="../lib/model/parameter.cpp" line="201"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="252"/>
+        <location filename="../lib/model/parameter.cpp" line="254"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="255"/>
+        <location filename="../lib/model/parameter.cpp" line="257"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="277"/>
+        <location filename="../lib/model/parameter.cpp" line="279"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="292"/>
+        <location filename="../lib/model/parameter.cpp" line="294"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="305"/>
+        <location filename="../lib/model/parameter.cpp" line="307"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="319"/>
+        <location filename="../lib/model/parameter.cpp" line="321"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -3341,46 +3341,71 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="28"/>
-        <location filename="../lib/model/session.cpp" line="106"/>
-        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="47"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="129"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="105"/>
-        <location filename="../lib/model/session.cpp" line="118"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="125"/>
+        <location filename="../lib/model/session.cpp" line="138"/>
+        <location filename="../lib/model/session.cpp" line="146"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="142"/>
+        <location filename="../lib/model/session.cpp" line="162"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="191"/>
+        <location filename="../lib/model/session.cpp" line="213"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="192"/>
+        <location filename="../lib/model/session.cpp" line="214"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="198"/>
+        <location filename="../lib/model/session.cpp" line="224"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="206"/>
+        <location filename="../lib/model/session.cpp" line="232"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
             <numerusform>%1, %n Geräte</numerusform>
         </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="22"/>
+        <source>the catalog names no command that identifies a device</source>
+        <translation>der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="24"/>
+        <source>the device reports the model &apos;%1&apos;, which TipScope does not know</source>
+        <translation>das Gerät meldet das Modell &apos;%1&apos;, das TipScope nicht kennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="30"/>
+        <source>the device without addresses did not identify itself: %1</source>
+        <translation>das Gerät ohne Adressen hat sich nicht identifiziert: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="31"/>
+        <source>the device at address %1 did not identify itself: %2</source>
+        <translation>das Gerät an Adresse %1 hat sich nicht identifiziert: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="222"/>
+        <source>connected to %1, but %2</source>
+        <translation>mit %1 verbunden, aber %2</translation>
     </message>
 </context>
 <context>
@@ -3510,23 +3535,23 @@ Dauerhaft mit dieser udev-Regel:
         <translation>nichts: schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="72"/>
         <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="84"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="92"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="69"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 für %2 (%3) abgelehnt: zulässig ist %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="183"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="181"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; ist keine Verzögerung in Sekunden wie 1.6 oder 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="188"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="186"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; ist keine ganze Zahl; für %2 zulässig: %3</translation>
     </message>
@@ -5370,28 +5395,28 @@ Zurücksetzen?</translation>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="177"/>
+        <location filename="../app/gui/mainwindow.cpp" line="176"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="182"/>
+        <location filename="../app/gui/mainwindow.cpp" line="181"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="187"/>
+        <location filename="../app/gui/mainwindow.cpp" line="186"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="194"/>
-        <location filename="../app/gui/mainwindow.cpp" line="197"/>
+        <location filename="../app/gui/mainwindow.cpp" line="192"/>
+        <location filename="../app/gui/mainwindow.cpp" line="195"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="198"/>
+        <location filename="../app/gui/mainwindow.cpp" line="196"/>
         <source>Written:
 %1
 
@@ -6027,7 +6052,7 @@ Möchten Sie fortfahren?</translation>
         <location filename="../app/gui/pages/settingspage.cpp" line="311"/>
         <location filename="../app/gui/pages/settingspage.cpp" line="317"/>
         <location filename="../app/gui/pages/settingspage.cpp" line="323"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="329"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
@@ -6038,18 +6063,18 @@ Möchten Sie fortfahren?</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="350"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="354"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="360"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="349"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.h" line="32"/>
+        <location filename="../app/gui/pages/settingspage.h" line="34"/>
         <source>Settings</source>
         <translation>Einstellungen</translation>
     </message>
@@ -6069,12 +6094,12 @@ Möchten Sie fortfahren?</translation>
         <translation>Ein Kommentar zum Profil (optional), z. B. wofür es ist oder wer es eingestellt hat:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="335"/>
         <source>no device is selected</source>
         <translation>kein Gerät ausgewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="345"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profil gespeichert: %n Einstellung von %1 in %2</numerusform>

@@ -37,7 +37,7 @@
 <context>
     <name>FrameComposer</name>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="209"/>
+        <location filename="../lib/model/framecomposer.cpp" line="208"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, a valid frame: %1</numerusform>
@@ -45,7 +45,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="211"/>
+        <location filename="../lib/model/framecomposer.cpp" line="210"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
@@ -56,7 +56,7 @@
 <context>
     <name>FrameDecoder</name>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="155"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="145"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n byte outside any frame</numerusform>
@@ -105,7 +105,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="206"/>
+        <location filename="../lib/model/session.cpp" line="232"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -187,7 +187,7 @@
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="345"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profile saved: %n setting of %1 in %2</numerusform>

@@ -19,7 +19,7 @@
         <translation>%1 ya está en curso</translation>
     </message>
     <message>
-        <location filename="../lib/model/action.cpp" line="44"/>
+        <location filename="../lib/model/action.cpp" line="43"/>
         <source>%1 done</source>
         <translation>%1 completado</translation>
     </message>
@@ -32,7 +32,7 @@
         <translation>elija un puerto serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="115"/>
+        <location filename="../lib/model/appsettings.cpp" line="113"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; no tiene la forma HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
     </message>
@@ -48,17 +48,17 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="219"/>
+        <location filename="../lib/protocol/catalog.cpp" line="218"/>
         <source>Unknown NAK code %1</source>
         <translation>Código NAK desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="224"/>
+        <location filename="../lib/protocol/catalog.cpp" line="223"/>
         <source>Unknown station error %1</source>
         <translation>Error de estación desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="233"/>
+        <location filename="../lib/protocol/catalog.cpp" line="232"/>
         <source>Unknown port error %1</source>
         <translation>Error de puerto desconocido %1</translation>
     </message>
@@ -1063,12 +1063,12 @@
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="226"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="224"/>
         <source>unknown (%1)</source>
         <translation>desconocido (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="233"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="231"/>
         <source>none</source>
         <translation>ninguno</translation>
     </message>
@@ -1093,7 +1093,7 @@
         <translation>Poner a cero la longitud alimentada parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="238"/>
+        <location filename="../lib/protocol/catalog.cpp" line="237"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Error del alimentador %1 (no figura en la guía del SFR)</translation>
     </message>
@@ -1321,22 +1321,22 @@
         <translation>el archivo está vacío o solo contiene comentarios</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="27"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="30"/>
         <source>the file is larger than %1 MB; replay reads files up to %1 MB</source>
         <translation>el archivo ocupa más de %1 MB; la reproducción lee archivos de hasta %1 MB</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="114"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="107"/>
         <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
         <translation>sus muestras ocupan %1 MB de memoria tras leer %2 MB, más de lo que permite la reproducción (el doble del tamaño del archivo); una grabación escrita por TipScope ocupa mucho menos</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="151"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="144"/>
         <source>reading was cancelled</source>
         <translation>se canceló la lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="168"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>el archivo ocupa %1 MB; la reproducción lee archivos de hasta %2 MB</translation>
     </message>
@@ -1490,90 +1490,90 @@
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="62"/>
+        <location filename="../app/cli/clicommands.cpp" line="63"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="91"/>
+        <location filename="../app/cli/clicommands.cpp" line="92"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="102"/>
+        <location filename="../app/cli/clicommands.cpp" line="103"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="125"/>
+        <location filename="../app/cli/clicommands.cpp" line="126"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="130"/>
+        <location filename="../app/cli/clicommands.cpp" line="131"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="138"/>
+        <location filename="../app/cli/clicommands.cpp" line="139"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="143"/>
+        <location filename="../app/cli/clicommands.cpp" line="144"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="181"/>
+        <location filename="../app/cli/clicommands.cpp" line="182"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="190"/>
+        <location filename="../app/cli/clicommands.cpp" line="191"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="203"/>
-        <location filename="../app/cli/clicommands.cpp" line="205"/>
+        <location filename="../app/cli/clicommands.cpp" line="204"/>
+        <location filename="../app/cli/clicommands.cpp" line="206"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="208"/>
+        <location filename="../app/cli/clicommands.cpp" line="209"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="171"/>
-        <location filename="../app/cli/clicommands.cpp" line="218"/>
-        <location filename="../app/cli/clicommands.cpp" line="241"/>
+        <location filename="../app/cli/clicommands.cpp" line="172"/>
+        <location filename="../app/cli/clicommands.cpp" line="223"/>
+        <location filename="../app/cli/clicommands.cpp" line="246"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="234"/>
+        <location filename="../app/cli/clicommands.cpp" line="239"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="307"/>
+        <location filename="../app/cli/clicommands.cpp" line="312"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="330"/>
+        <location filename="../app/cli/clicommands.cpp" line="335"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="333"/>
+        <location filename="../app/cli/clicommands.cpp" line="338"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="334"/>
+        <location filename="../app/cli/clicommands.cpp" line="339"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
     </message>
@@ -1586,7 +1586,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="163"/>
+        <location filename="../app/cli/clicommands.cpp" line="164"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 no se envió: no se pudo leer su límite %2: %3</translation>
     </message>
@@ -1707,62 +1707,62 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="98"/>
+        <location filename="../app/cli/clioptions.cpp" line="94"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>comando desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="131"/>
+        <location filename="../app/cli/clioptions.cpp" line="127"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>indique solo una de --port, --tcp y --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="137"/>
+        <location filename="../app/cli/clioptions.cpp" line="134"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="144"/>
+        <location filename="../app/cli/clioptions.cpp" line="142"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="149"/>
+        <location filename="../app/cli/clioptions.cpp" line="147"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud requiere una velocidad como 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="156"/>
+        <location filename="../app/cli/clioptions.cpp" line="154"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity admite none, even u odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="160"/>
+        <location filename="../app/cli/clioptions.cpp" line="158"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits admite 1 o 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="168"/>
+        <location filename="../app/cli/clioptions.cpp" line="167"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="176"/>
+        <location filename="../app/cli/clioptions.cpp" line="175"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout requiere milisegundos de 1 a 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="179"/>
+        <location filename="../app/cli/clioptions.cpp" line="178"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries requiere un número de 0 a 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="183"/>
+        <location filename="../app/cli/clioptions.cpp" line="182"/>
         <source>--%1 needs a value</source>
         <translation>--%1 necesita un valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="187"/>
+        <location filename="../app/cli/clioptions.cpp" line="186"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
@@ -1782,7 +1782,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="201"/>
+        <location filename="../app/cli/clioptions.cpp" line="202"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -1913,7 +1913,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>«%1» no es un número; %2 admite %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliunits.cpp" line="54"/>
+        <location filename="../app/cli/cliunits.cpp" line="53"/>
         <source>%1 takes steps of %2 %3</source>
         <translation>%1 admite pasos de %2 %3</translation>
     </message>
@@ -2041,7 +2041,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     <message>
         <location filename="../lib/model/deviceidentity.cpp" line="73"/>
         <source>%1 at %2</source>
-        <translation>%1 en %2</translation>
+        <translation>%1 en la dirección %2</translation>
     </message>
     <message>
         <location filename="../lib/model/deviceidentity.cpp" line="74"/>
@@ -2116,12 +2116,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>DisplayUnits</name>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="82"/>
+        <location filename="../lib/model/displayunits.cpp" line="81"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>&apos;%1&apos; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="89"/>
+        <location filename="../lib/model/displayunits.cpp" line="85"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 tiene más decimales de los que admite %2</translation>
     </message>
@@ -2247,77 +2247,77 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>Una escritura necesita un campo de datos: %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="54"/>
+        <location filename="../lib/model/framecomposer.cpp" line="53"/>
         <source>On the wire this value is written %1.</source>
         <translation>En la línea este valor se escribe %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="69"/>
+        <location filename="../lib/model/framecomposer.cpp" line="68"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Familia de equipo desconocida: el catálogo no puede comprobar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="77"/>
+        <location filename="../lib/model/framecomposer.cpp" line="76"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 no es un comando de escritura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="78"/>
+        <location filename="../lib/model/framecomposer.cpp" line="77"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 no es un comando de lectura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="81"/>
+        <location filename="../lib/model/framecomposer.cpp" line="80"/>
         <source>Did you mean %1?</source>
         <translation>¿Quería decir %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="82"/>
+        <location filename="../lib/model/framecomposer.cpp" line="81"/>
         <source>It is sent as typed.</source>
         <translation>Se envía tal cual.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="87"/>
+        <location filename="../lib/model/framecomposer.cpp" line="86"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Las lecturas no llevan campo de datos; el equipo puede rechazar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="93"/>
+        <location filename="../lib/model/framecomposer.cpp" line="92"/>
         <source>Dangerous: %1</source>
         <translation>Peligroso: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="97"/>
+        <location filename="../lib/model/framecomposer.cpp" line="96"/>
         <source>Catalog check: %1</source>
         <translation>Comprobación del catálogo: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="111"/>
+        <location filename="../lib/model/framecomposer.cpp" line="110"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="153"/>
+        <location filename="../lib/model/framecomposer.cpp" line="152"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="171"/>
+        <location filename="../lib/model/framecomposer.cpp" line="170"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="175"/>
+        <location filename="../lib/model/framecomposer.cpp" line="174"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="180"/>
+        <location filename="../lib/model/framecomposer.cpp" line="179"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="209"/>
+        <location filename="../lib/model/framecomposer.cpp" line="208"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, una trama válida: %1</numerusform>
@@ -2325,7 +2325,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="211"/>
+        <location filename="../lib/model/framecomposer.cpp" line="210"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
@@ -2361,52 +2361,52 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>basura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="55"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="49"/>
         <source>not STX…ETX BCC or too short</source>
         <translation>no es STX…ETX BCC o es demasiado corta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="59"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="52"/>
         <source>BCC is %1, expected %2</source>
         <translation>el BCC es %1, se esperaba %2</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="69"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="61"/>
         <source>malformed addresses</source>
         <translation>direcciones mal formadas</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="67"/>
         <source>too short for header and command</source>
         <translation>demasiado corta para cabecera y comando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="78"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="70"/>
         <source>unknown header</source>
         <translation>cabecera desconocida</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="83"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
         <source>command is not 3 letters or digits</source>
         <translation>el comando no son 3 letras o dígitos</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="88"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="79"/>
         <source>data field is not printable ASCII</source>
         <translation>el campo de datos no es ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="121"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="111"/>
         <source>frame interrupted by a new STX</source>
         <translation>trama interrumpida por un nuevo STX</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="130"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="120"/>
         <source>no ETX within %1 bytes</source>
         <translation>ningún ETX en %1 bytes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="155"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="145"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n byte fuera de toda trama</numerusform>
@@ -2463,12 +2463,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Journal</name>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="28"/>
+        <location filename="../lib/journal/journalreader.cpp" line="31"/>
         <source>No journal is open.</source>
         <translation>No hay ningún diario abierto.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="86"/>
+        <location filename="../lib/journal/journalreader.cpp" line="83"/>
         <source>There is no journal at %1.</source>
         <translation>No hay ningún diario en %1.</translation>
     </message>
@@ -2478,12 +2478,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="96"/>
+        <location filename="../lib/journal/journalschema.cpp" line="95"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="162"/>
+        <location filename="../lib/journal/journalschema.cpp" line="172"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>No se puede crear la carpeta %1 para el diario.</translation>
     </message>
@@ -2771,32 +2771,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>No se puede resolver el nombre de host %1 del broker: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="38"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="46"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Hay una contraseña pero ningún nombre de usuario: MQTT solo envía una contraseña con un nombre de usuario.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="54"/>
         <source>The user name %1 is not accepted: %2</source>
         <translation>No se acepta el nombre de usuario %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
         <source>The last will on %1 is not accepted: %2</source>
         <translation>No se acepta la última voluntad en %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="72"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>No se puede leer el archivo de certificado de la CA %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="70"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Un certificado de cliente necesita tanto su archivo de certificado como su archivo de clave.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="78"/>
         <source>The file %1 cannot be read.</source>
         <translation>No se puede leer el archivo %1.</translation>
     </message>
@@ -2811,12 +2811,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>No se puede fijar la versión de MQTT: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="127"/>
         <source>The client id %1 is not accepted.</source>
         <translation>No se acepta el identificador de cliente %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="129"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Sin memoria para un cliente MQTT.</translation>
     </message>
@@ -2824,27 +2824,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>MqttSecret</name>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="30"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="31"/>
         <source>The password file %1 does not exist.</source>
         <translation>El archivo de contraseña %1 no existe.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="33"/>
         <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
         <translation>El archivo de contraseña %1 tiene más de %2 bytes; ¿es el archivo correcto?</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="41"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="39"/>
         <source>The password file %1 cannot be read: %2</source>
         <translation>No se puede leer el archivo de contraseña %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="46"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="42"/>
         <source>The password file %1 is empty.</source>
         <translation>El archivo de contraseña %1 está vacío.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="55"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="50"/>
         <source>The environment variable %1 that should hold the password is not set or empty.</source>
         <translation>La variable de entorno %1, que debería contener la contraseña, no está definida o está vacía.</translation>
     </message>
@@ -2894,52 +2894,52 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="138"/>
+        <location filename="../lib/model/parameter.cpp" line="137"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="189"/>
+        <location filename="../lib/model/parameter.cpp" line="188"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="201"/>
+        <location filename="../lib/model/parameter.cpp" line="200"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="202"/>
+        <location filename="../lib/model/parameter.cpp" line="201"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="252"/>
+        <location filename="../lib/model/parameter.cpp" line="254"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="255"/>
+        <location filename="../lib/model/parameter.cpp" line="257"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="277"/>
+        <location filename="../lib/model/parameter.cpp" line="279"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="292"/>
+        <location filename="../lib/model/parameter.cpp" line="294"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="305"/>
+        <location filename="../lib/model/parameter.cpp" line="307"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="319"/>
+        <location filename="../lib/model/parameter.cpp" line="321"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -3343,46 +3343,71 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="28"/>
-        <location filename="../lib/model/session.cpp" line="106"/>
-        <location filename="../lib/model/session.cpp" line="109"/>
+        <location filename="../lib/model/session.cpp" line="47"/>
+        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="129"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="105"/>
-        <location filename="../lib/model/session.cpp" line="118"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
+        <location filename="../lib/model/session.cpp" line="125"/>
+        <location filename="../lib/model/session.cpp" line="138"/>
+        <location filename="../lib/model/session.cpp" line="146"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="142"/>
+        <location filename="../lib/model/session.cpp" line="162"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="191"/>
+        <location filename="../lib/model/session.cpp" line="213"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="192"/>
+        <location filename="../lib/model/session.cpp" line="214"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="198"/>
+        <location filename="../lib/model/session.cpp" line="224"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="206"/>
+        <location filename="../lib/model/session.cpp" line="232"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
             <numerusform>%1, %n equipos</numerusform>
         </translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="22"/>
+        <source>the catalog names no command that identifies a device</source>
+        <translation>el catálogo no indica ningún comando que identifique un equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="24"/>
+        <source>the device reports the model &apos;%1&apos;, which TipScope does not know</source>
+        <translation>el equipo informa del modelo &apos;%1&apos;, que TipScope no conoce</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="30"/>
+        <source>the device without addresses did not identify itself: %1</source>
+        <translation>el equipo sin direcciones no se identificó: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="31"/>
+        <source>the device at address %1 did not identify itself: %2</source>
+        <translation>el equipo en la dirección %1 no se identificó: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="222"/>
+        <source>connected to %1, but %2</source>
+        <translation>conectado a %1, pero %2</translation>
     </message>
 </context>
 <context>
@@ -3512,23 +3537,23 @@ Hágalo permanente con esta regla de udev:
         <translation>nada: es de solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="72"/>
         <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="84"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="92"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="69"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 rechazado para %2 (%3): se permite %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="183"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="181"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; no es un retardo en segundos como 1.6 o 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="188"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="186"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; no es un número entero; %2 admite %3</translation>
     </message>
@@ -5372,28 +5397,28 @@ Reset it?</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="177"/>
+        <location filename="../app/gui/mainwindow.cpp" line="176"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="182"/>
+        <location filename="../app/gui/mainwindow.cpp" line="181"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="187"/>
+        <location filename="../app/gui/mainwindow.cpp" line="186"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="194"/>
-        <location filename="../app/gui/mainwindow.cpp" line="197"/>
+        <location filename="../app/gui/mainwindow.cpp" line="192"/>
+        <location filename="../app/gui/mainwindow.cpp" line="195"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="198"/>
+        <location filename="../app/gui/mainwindow.cpp" line="196"/>
         <source>Written:
 %1
 
@@ -6029,7 +6054,7 @@ Do you want to continue?</source>
         <location filename="../app/gui/pages/settingspage.cpp" line="311"/>
         <location filename="../app/gui/pages/settingspage.cpp" line="317"/>
         <location filename="../app/gui/pages/settingspage.cpp" line="323"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="329"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
@@ -6040,18 +6065,18 @@ Do you want to continue?</source>
     </message>
     <message>
         <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="350"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="354"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="360"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="349"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.h" line="32"/>
+        <location filename="../app/gui/pages/settingspage.h" line="34"/>
         <source>Settings</source>
         <translation>Ajustes</translation>
     </message>
@@ -6071,12 +6096,12 @@ Do you want to continue?</source>
         <translation>Un comentario para el perfil (opcional), p. ej. para qué es o quién lo configuró:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="336"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="335"/>
         <source>no device is selected</source>
         <translation>no hay ningún equipo seleccionado</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="345"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Perfil guardado: %n ajuste de %1 en %2</numerusform>

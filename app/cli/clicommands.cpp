@@ -45,10 +45,11 @@ void reportFailure(CliSession &s, const Reply &reply) {
 
 // Raw bytes as people read them: decoded when they are a frame, else why they are not one.
 QString describeRaw(const QByteArray &bytes) {
-    QString why;
-    if (const auto frame = parseFrame(bytes, nullptr, &why))
+    const auto frame = parseFrame(bytes);
+    if (frame)
         return frame->toString();
-    return Tr::tr("%n raw byte(s), not a frame (%1)", nullptr, int(bytes.size())).arg(why);
+    return Tr::tr("%n raw byte(s), not a frame (%1)", nullptr, int(bytes.size()))
+        .arg(frame.error().why);
 }
 
 } // namespace
@@ -208,11 +209,15 @@ int runWrite(CliSession &s) {
             error = Tr::tr("the data field is longer than 32 characters");
     } else if (cmd.spec->kind == ValueKind::Action && args.size() == 1) {
         data = cmd.spec->fixedData;
+    } else if (const auto typed = shownConverted(cmd) ? parseShown(cmd, args.value(1))
+                                                      : parseUserValue(cmd, args.value(1));
+               !typed) {
+        error = typed.error();
+    } else if (const auto field = encodeWrite(cmd, *typed); !field) {
+        error = field.error();
     } else {
-        wire = shownConverted(cmd) ? parseShown(cmd, args.value(1), &error)
-                                   : parseUserValue(cmd, args.value(1), &error);
-        if (wire)
-            data = encodeWrite(cmd, *wire, &error).value_or(QByteArray());
+        wire = *typed;
+        data = *field;
     }
     if (!error.isEmpty()) {
         s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(error) << Qt::endl;

@@ -68,12 +68,12 @@ int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err) {
             << Qt::endl;
         return kUsage;
     }
-    QString error;
-    const auto recording = ChartCsvReader::readFile(o.args.first(), &error);
-    if (!recording) {
-        err << "tipscope-cli: " << error << Qt::endl;
+    const auto read = ChartCsvReader::readFile(o.args.first());
+    if (!read) {
+        err << "tipscope-cli: " << read.error() << Qt::endl;
         return kRefused;
     }
+    const ChartRecording *recording = read->get();
     const SeriesFormat temp = seriesFormat(QStringLiteral("tip"), recording->temperatureUnit);
     const QList<PortEvent> events =
         portEvents(*recording->telemetry, recording->channels, recording->firstMs,

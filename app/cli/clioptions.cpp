@@ -81,13 +81,9 @@ QString CliParser::usage() {
         "4 no valid answer; 5 transport error.\n");
 }
 
-std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString *error) {
+protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
     CliOptions o;
     o.line.serial.portName.clear();
-    auto fail = [error](const QString &why) -> std::optional<CliOptions> {
-        *error = why;
-        return std::nullopt;
-    };
     bool haveTransport = false;
     for (qsizetype i = 1; i < arguments.size(); ++i) {
         const QString a = arguments.at(i);
@@ -95,7 +91,7 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
         if (!isOption) {
             if (o.command.isEmpty()) {
                 if (!kCommands.contains(a))
-                    return fail(tr("unknown command '%1'").arg(protocol::elided(a)));
+                    return protocol::failure(tr("unknown command '%1'").arg(protocol::elided(a)));
                 o.command = a;
             } else {
                 o.args.append(a);
@@ -128,36 +124,38 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
             o.verbose = true;
         } else if (name == QLatin1String("demo") || name == QLatin1String("demo-activity")) {
             if (haveTransport)
-                return fail(tr("give only one of --port, --tcp and --demo"));
+                return protocol::failure(tr("give only one of --port, --tcp and --demo"));
             haveTransport = o.demo = true;
             o.demoActivity = name == QLatin1String("demo-activity");
             o.line.kind = link::LineSettings::Kind::Demo;
         } else if (name == QLatin1String("port")) {
             if (haveTransport || !takeValue(&v) || v.isEmpty())
-                return fail(tr("--port takes a device, and only one of --port, --tcp, --demo"));
+                return protocol::failure(
+                    tr("--port takes a device, and only one of --port, --tcp, --demo"));
             haveTransport = true;
             o.line.kind = link::LineSettings::Kind::Serial;
             o.line.serial.portName = link::typedPortName(v);
         } else if (name == QLatin1String("tcp")) {
             if (haveTransport || !takeValue(&v) ||
                 !link::TcpTransport::parseHostPort(v, &o.line.tcpHost, &o.line.tcpPort))
-                return fail(tr("--tcp takes HOST:PORT, and only one of --port, --tcp, --demo"));
+                return protocol::failure(
+                    tr("--tcp takes HOST:PORT, and only one of --port, --tcp, --demo"));
             haveTransport = true;
             o.line.kind = link::LineSettings::Kind::Tcp;
         } else if (name == QLatin1String("baud")) {
             if (!takeValue(&v) || !parseInt(v, 50, 4'000'000, &o.line.serial.baudRate))
-                return fail(tr("--baud takes a rate such as 19200"));
+                return protocol::failure(tr("--baud takes a rate such as 19200"));
         } else if (name == QLatin1String("parity")) {
             static const QMap<QString, QSerialPort::Parity> parities = {
                 {QStringLiteral("none"), QSerialPort::NoParity},
                 {QStringLiteral("even"), QSerialPort::EvenParity},
                 {QStringLiteral("odd"), QSerialPort::OddParity}};
             if (!takeValue(&v) || !parities.contains(v))
-                return fail(tr("--parity takes none, even or odd"));
+                return protocol::failure(tr("--parity takes none, even or odd"));
             o.line.serial.parity = parities.value(v);
         } else if (name == QLatin1String("stop-bits")) {
             if (!takeValue(&v) || (v != QLatin1String("1") && v != QLatin1String("2")))
-                return fail(tr("--stop-bits takes 1 or 2"));
+                return protocol::failure(tr("--stop-bits takes 1 or 2"));
             o.line.serial.stopBits =
                 v == QLatin1String("2") ? QSerialPort::TwoStop : QSerialPort::OneStop;
         } else if (name == QLatin1String("addr")) {
@@ -165,7 +163,8 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
             if (!takeValue(&v) || !parseInt(v.section(QLatin1Char(':'), 0, 0), 0, 99, &src) ||
                 !parseInt(v.section(QLatin1Char(':'), 1), 0, 99, &tgt) ||
                 v.count(QLatin1Char(':')) != 1)
-                return fail(tr("--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)"));
+                return protocol::failure(
+                    tr("--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)"));
             o.addressing = CliOptions::Addressing::With;
             o.line.queue.robotAddress = src;
             o.targetAddress = tgt;
@@ -173,32 +172,34 @@ std::optional<CliOptions> CliParser::parse(const QStringList &arguments, QString
             o.addressing = CliOptions::Addressing::Without;
         } else if (name == QLatin1String("timeout")) {
             if (!takeValue(&v) || !parseInt(v, 1, 60'000, &o.line.queue.turnaroundMs))
-                return fail(tr("--timeout takes milliseconds from 1 to 60000"));
+                return protocol::failure(tr("--timeout takes milliseconds from 1 to 60000"));
         } else if (name == QLatin1String("retries")) {
             if (!takeValue(&v) || !parseInt(v, 0, 10, &o.line.queue.retries))
-                return fail(tr("--retries takes a number from 0 to 10"));
+                return protocol::failure(tr("--retries takes a number from 0 to 10"));
         } else if (!o.command.isEmpty() && kCommandOptions.value(o.command).contains(name)) {
             if (kValueOptions.contains(name)) {
                 if (!takeValue(&v))
-                    return fail(tr("--%1 needs a value").arg(name));
+                    return protocol::failure(tr("--%1 needs a value").arg(name));
                 o.values.insert(name, v);
             } else {
                 if (hasInline)
-                    return fail(tr("--%1 takes no value").arg(name));
+                    return protocol::failure(tr("--%1 takes no value").arg(name));
                 o.flags.append(name);
             }
         } else {
             const QString shown = protocol::elided(name);
-            return fail(o.command.isEmpty() ? tr("unknown option --%1").arg(shown)
-                                            : tr("'%1' has no option --%2").arg(o.command, shown));
+            return protocol::failure(o.command.isEmpty()
+                                         ? tr("unknown option --%1").arg(shown)
+                                         : tr("'%1' has no option --%2").arg(o.command, shown));
         }
     }
     if (o.showHelp || o.showVersion)
         return o;
     if (o.command.isEmpty())
-        return fail(tr("no command given"));
+        return protocol::failure(tr("no command given"));
     if (!haveTransport && !kOffline.contains(o.command))
-        return fail(tr("say where the device is: --port DEVICE, --tcp HOST:PORT or --demo"));
+        return protocol::failure(
+            tr("say where the device is: --port DEVICE, --tcp HOST:PORT or --demo"));
     return o;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "link/line.h"
+#include "protocol/outcome.h"
 
 #include <QCoreApplication>
 #include <QStringList>
@@ -41,9 +42,8 @@ struct CliOptions {
 class CliParser {
     Q_DECLARE_TR_FUNCTIONS(CliParser)
 public:
-    // nullopt with `error` set for a usage error.
-    [[nodiscard]] static std::optional<CliOptions> parse(const QStringList &arguments,
-                                                         QString *error);
+    // The options, or the usage error.
+    [[nodiscard]] static protocol::Outcome<CliOptions> parse(const QStringList &arguments);
     [[nodiscard]] static QString usage();
 };
 

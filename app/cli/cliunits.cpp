@@ -34,27 +34,25 @@ QString shownNumber(const ResolvedCommand &cmd, qint64 wire) {
            QLatin1Char(' ') + f.unit;
 }
 
-std::optional<qint64> parseShown(const ResolvedCommand &cmd, const QString &typed, QString *error) {
+protocol::Outcome<qint64> parseShown(const ResolvedCommand &cmd, const QString &typed) {
     QString t = typed.trimmed();
     if (const auto special = labelled(cmd.spec->special, t))
-        return special;
+        return *special;
     const model::DisplayFormat f = model::displayFormat(cmd, kCelsius);
     if (t.endsWith(f.unit))
         t.chop(f.unit.size());
     bool ok = false;
     const double shown = t.trimmed().toDouble(&ok);
     if (!ok || !std::isfinite(shown)) {
-        *error = Tr::tr("'%1' is not a number; %2 takes %3")
-                     .arg(elided(typed), QString::fromLatin1(cmd.code), f.unit);
-        return std::nullopt;
+        return protocol::failure(Tr::tr("'%1' is not a number; %2 takes %3")
+                                     .arg(elided(typed), QString::fromLatin1(cmd.code), f.unit));
     }
     const qint64 wire = model::fromDisplay(cmd, shown, kCelsius);
     if (std::fabs(model::toDisplay(cmd, wire, kCelsius) - shown) >
         1e-9 * qMax(1.0, std::fabs(shown))) {
-        *error = Tr::tr("%1 takes steps of %2 %3")
-                     .arg(QString::fromLatin1(cmd.code), QString::number(f.scale, 'f', f.decimals),
-                          f.unit);
-        return std::nullopt;
+        return protocol::failure(Tr::tr("%1 takes steps of %2 %3")
+                                     .arg(QString::fromLatin1(cmd.code),
+                                          QString::number(f.scale, 'f', f.decimals), f.unit));
     }
     return wire;
 }

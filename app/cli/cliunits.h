@@ -5,6 +5,7 @@
 #pragma once
 
 #include "protocol/catalog.h"
+#include "protocol/outcome.h"
 
 #include <QString>
 #include <optional>
@@ -16,9 +17,9 @@ namespace tipscope::cli {
 // "25.0 mm" for a wire value of 250 dmm.
 [[nodiscard]] QString shownNumber(const protocol::ResolvedCommand &cmd, qint64 wire);
 // The wire value of what a person typed in the shown unit ("25", "25.0", "25.0 mm") or of a
-// special value's name; nullopt with the reason in `error`. A value finer than the unit's step
-// is refused, not rounded: nothing is written that was not typed.
-[[nodiscard]] std::optional<qint64> parseShown(const protocol::ResolvedCommand &cmd,
-                                               const QString &typed, QString *error);
+// special value's name, or why it is refused. A value finer than the unit's step is refused,
+// not rounded: nothing is written that was not typed.
+[[nodiscard]] protocol::Outcome<qint64> parseShown(const protocol::ResolvedCommand &cmd,
+                                                   const QString &typed);
 
 } // namespace tipscope::cli

@@ -16,10 +16,9 @@ int main(int argc, char *argv[]) {
     tipscope::i18n::installTranslators(app, QStringLiteral("system"));
     QTextStream out(stdout);
     QTextStream err(stderr);
-    QString error;
-    const auto options = CliParser::parse(app.arguments(), &error);
+    const auto options = CliParser::parse(app.arguments());
     if (!options) {
-        err << "tipscope-cli: " << error << "\n\n" << CliParser::usage();
+        err << "tipscope-cli: " << options.error() << "\n\n" << CliParser::usage();
         return kUsage;
     }
     if (options->showHelp) {

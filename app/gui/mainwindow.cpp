@@ -131,11 +131,10 @@ void MainWindow::applyPreferences(const AppSettings &settings) {
 
 QString MainWindow::connectLine() {
     const AppSettings wanted = m_connection->settings(m_settings);
-    QString error;
-    const auto session = wanted.sessionSettings(&error);
+    const auto session = wanted.sessionSettings();
     if (!session) {
-        m_connection->setState(Session::State::Failed, error);
-        return error;
+        m_connection->setState(Session::State::Failed, session.error());
+        return session.error();
     }
     m_settings = wanted;
     QSettings store;
@@ -188,15 +187,14 @@ void MainWindow::writeSupportReport() {
         QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
     if (folder.isEmpty())
         return;
-    QString error;
-    const QStringList files = model::writeSupportReport(m_session, folder, &error);
-    if (files.isEmpty()) {
-        QMessageBox::critical(this, tr("Support report"), error);
+    const auto files = model::writeSupportReport(m_session, folder);
+    if (!files) {
+        QMessageBox::critical(this, tr("Support report"), files.error());
         return;
     }
     QMessageBox::information(this, tr("Support report"),
                              tr("Written:\n%1\n\nAttach both files to the support ticket.")
-                                 .arg(files.join(QLatin1Char('\n'))));
+                                 .arg(files->join(QLatin1Char('\n'))));
 }
 
 void MainWindow::closeEvent(QCloseEvent *event) {

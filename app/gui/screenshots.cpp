@@ -174,7 +174,9 @@ void changeTwoSettings(model::Profile &profile, const model::StationModel &stati
     for (const auto &[role, value] : changes) {
         const auto write =
             station.catalog().resolve(station.family(), role, 1, protocol::Direction::Write);
-        const auto data = write ? protocol::encodeWrite(*write, value) : std::nullopt;
+        if (!write)
+            continue;
+        const auto data = protocol::encodeWrite(*write, value);
         for (auto &[code, field] : profile.values)
             if (data && code == write->code)
                 field = *data;

@@ -198,26 +198,25 @@ int main(int argc, char *argv[]) {
                          [&log](const QByteArray &b) { log.write("TX " + b.toHex() + '\n'); });
     }
 
-    QString error;
     std::unique_ptr<PtyEndpoint> pty;
     std::unique_ptr<SerialDeviceEndpoint> serial;
     std::unique_ptr<TcpEndpoint> tcp;
     QString where;
     if (p.isSet(QStringLiteral("tcp"))) {
         tcp = std::make_unique<TcpEndpoint>(*line);
-        if (!tcp->listen(p.value(QStringLiteral("tcp")), &error))
-            die(error);
+        if (const auto listening = tcp->listen(p.value(QStringLiteral("tcp"))); !listening)
+            die(listening.error());
         const QString hp = p.value(QStringLiteral("tcp"));
         where = hp.left(hp.lastIndexOf(QLatin1Char(':')) + 1) + QString::number(tcp->port());
     } else if (p.isSet(QStringLiteral("device"))) {
         serial = std::make_unique<SerialDeviceEndpoint>(*line, p.value(QStringLiteral("device")));
-        if (!serial->open(&error))
-            die(error);
+        if (const auto opened = serial->open(); !opened)
+            die(opened.error());
         where = p.value(QStringLiteral("device"));
     } else {
         pty = std::make_unique<PtyEndpoint>(*line, p.value(QStringLiteral("link")));
-        if (!pty->plug(&error))
-            die(error);
+        if (const auto plugged = pty->plug(); !plugged)
+            die(plugged.error());
         where = pty->slavePath();
     }
     // Log what arrives after the endpoint exists, so the log sees exactly the wire.
@@ -243,8 +242,9 @@ int main(int argc, char *argv[]) {
                                      return QStringLiteral("ok");
                                  }});
         endpointCommands.append({QStringLiteral("plug"), [&] {
-                                     return pty->plug(&error) ? pty->slavePath()
-                                                              : QStringLiteral("error: ") + error;
+                                     const auto plugged = pty->plug();
+                                     return plugged ? pty->slavePath()
+                                                    : QStringLiteral("error: ") + plugged.error();
                                  }});
     }
     const auto reply = [&](const QString &c) {

@@ -17,6 +17,9 @@
 
 namespace tipscope::sim {
 
+using protocol::failure;
+using protocol::Outcome;
+
 namespace {
 
 // Writes `bytes` unless the client already has kMaxUnsentBytes waiting; counts what is dropped.
@@ -48,13 +51,11 @@ PtyEndpoint::~PtyEndpoint() {
     unplug();
 }
 
-bool PtyEndpoint::plug(QString *error) {
+Outcome<void> PtyEndpoint::plug() {
     m_master = ::posix_openpt(O_RDWR | O_NOCTTY);
-    if (m_master < 0 || ::grantpt(m_master) != 0 || ::unlockpt(m_master) != 0) {
-        *error =
-            QStringLiteral("cannot create a PTY: %1").arg(QString::fromLocal8Bit(strerror(errno)));
-        return false;
-    }
+    if (m_master < 0 || ::grantpt(m_master) != 0 || ::unlockpt(m_master) != 0)
+        return failure(
+            QStringLiteral("cannot create a PTY: %1").arg(QString::fromLocal8Bit(strerror(errno))));
     m_slavePath = QString::fromLocal8Bit(::ptsname(m_master));
     m_line.clearWire(); // a new cable: nothing of the old one is still on its way
     // Holding the slave open keeps the master readable while no client is attached, and raw
@@ -70,12 +71,10 @@ bool PtyEndpoint::plug(QString *error) {
     connect(m_notifier, &QSocketNotifier::activated, this, &PtyEndpoint::onReadable);
     if (!m_linkPath.isEmpty()) {
         QFile::remove(m_linkPath);
-        if (!QFile::link(m_slavePath, m_linkPath)) {
-            *error = QStringLiteral("cannot create the link %1").arg(m_linkPath);
-            return false;
-        }
+        if (!QFile::link(m_slavePath, m_linkPath))
+            return failure(QStringLiteral("cannot create the link %1").arg(m_linkPath));
     }
-    return true;
+    return {};
 }
 
 void PtyEndpoint::unplug() {
@@ -116,15 +115,13 @@ SerialDeviceEndpoint::SerialDeviceEndpoint(SimLine &line, const QString &device,
     });
 }
 
-bool SerialDeviceEndpoint::open(QString *error) {
+Outcome<void> SerialDeviceEndpoint::open() {
     m_port->setBaudRate(QSerialPort::Baud19200);
-    if (!m_port->open(QIODevice::ReadWrite)) {
-        *error =
-            QStringLiteral("cannot open %1: %2").arg(m_port->portName(), m_port->errorString());
-        return false;
-    }
+    if (!m_port->open(QIODevice::ReadWrite))
+        return failure(
+            QStringLiteral("cannot open %1: %2").arg(m_port->portName(), m_port->errorString()));
     m_port->clear();
-    return true;
+    return {};
 }
 
 TcpEndpoint::TcpEndpoint(SimLine &line, QObject *parent)
@@ -138,20 +135,16 @@ TcpEndpoint::TcpEndpoint(SimLine &line, QObject *parent)
     });
 }
 
-bool TcpEndpoint::listen(const QString &hostPort, QString *error) {
+Outcome<void> TcpEndpoint::listen(const QString &hostPort) {
     const int colon = hostPort.lastIndexOf(QLatin1Char(':'));
     bool ok = false;
     const int port = hostPort.mid(colon + 1).toInt(&ok);
     const QHostAddress host(hostPort.left(colon));
-    if (colon < 0 || !ok || port < 0 || port > 65535 || host.isNull()) {
-        *error = QStringLiteral("'%1' is not HOST:PORT").arg(hostPort);
-        return false;
-    }
-    if (!m_server->listen(host, quint16(port))) {
-        *error = m_server->errorString();
-        return false;
-    }
-    return true;
+    if (colon < 0 || !ok || port < 0 || port > 65535 || host.isNull())
+        return failure(QStringLiteral("'%1' is not HOST:PORT").arg(hostPort));
+    if (!m_server->listen(host, quint16(port)))
+        return failure(m_server->errorString());
+    return {};
 }
 
 quint16 TcpEndpoint::port() const {

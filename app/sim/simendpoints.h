@@ -7,6 +7,8 @@
 // requests costs no more memory than that either.
 #pragma once
 
+#include "protocol/outcome.h"
+
 #include <QObject>
 #include <QString>
 
@@ -29,7 +31,7 @@ class PtyEndpoint : public QObject {
 public:
     PtyEndpoint(SimLine &line, const QString &linkPath, QObject *parent = nullptr);
     ~PtyEndpoint() override;
-    bool plug(QString *error);
+    [[nodiscard]] protocol::Outcome<void> plug();
     void unplug();
     [[nodiscard]] QString slavePath() const { return m_slavePath; }
 
@@ -47,7 +49,7 @@ class SerialDeviceEndpoint : public QObject {
     Q_OBJECT
 public:
     SerialDeviceEndpoint(SimLine &line, const QString &device, QObject *parent = nullptr);
-    bool open(QString *error);
+    [[nodiscard]] protocol::Outcome<void> open();
 
 private:
     SimLine &m_line;
@@ -58,7 +60,7 @@ class TcpEndpoint : public QObject {
     Q_OBJECT
 public:
     TcpEndpoint(SimLine &line, QObject *parent = nullptr);
-    bool listen(const QString &hostPort, QString *error);
+    [[nodiscard]] protocol::Outcome<void> listen(const QString &hostPort);
     [[nodiscard]] quint16 port() const;
 
 private:

@@ -14,6 +14,9 @@
 
 namespace tipscope::journal {
 
+using protocol::failure;
+using protocol::Outcome;
+
 namespace {
 
 struct Tr {
@@ -22,35 +25,29 @@ struct Tr {
 
 // Runs `select` forward-only; each row goes to `row`.
 template <typename Row>
-bool run(const QString &connection, const Select &select, QString *error, Row row) {
+Outcome<void> run(const QString &connection, const Select &select, Row row) {
     QSqlDatabase db = QSqlDatabase::database(connection, false);
-    if (!db.isOpen()) {
-        *error = Tr::tr("No journal is open.");
-        return false;
-    }
+    if (!db.isOpen())
+        return failure(Tr::tr("No journal is open."));
     QSqlQuery query(db);
     query.setForwardOnly(true);
-    if (!query.prepare(select.sql)) {
-        *error = describeSqlError(query.lastError(), db.databaseName());
-        return false;
-    }
+    if (!query.prepare(select.sql))
+        return failure(describeSqlError(query.lastError(), db.databaseName()));
     for (int i = 0; i < select.values.size(); ++i)
         query.bindValue(i, select.values.at(i));
-    if (!query.exec()) {
-        *error = describeSqlError(query.lastError(), db.databaseName());
-        return false;
-    }
+    if (!query.exec())
+        return failure(describeSqlError(query.lastError(), db.databaseName()));
     while (query.next())
         row(query);
-    return true;
+    return {};
 }
 
 template <typename T, typename Read>
-std::optional<QList<T>> collect(const QString &connection, const Select &select, QString *error,
-                                Read read) {
+Outcome<QList<T>> collect(const QString &connection, const Select &select, Read read) {
     QList<T> out;
-    if (!run(connection, select, error, [&](const QSqlQuery &q) { out.append(read(q)); }))
-        return std::nullopt;
+    if (const auto ran = run(connection, select, [&](const QSqlQuery &q) { out.append(read(q)); });
+        !ran)
+        return failure(ran.error());
     return out;
 }
 
@@ -79,77 +76,76 @@ void JournalReader::close() {
     m_open = false;
 }
 
-bool JournalReader::open(const QString &path, QString *error) {
+Outcome<void> JournalReader::open(const QString &path) {
     close();
     m_path = path;
-    if (!QFileInfo(path).isFile()) {
-        *error = Tr::tr("There is no journal at %1.").arg(path);
-        return false;
-    }
-    if (!openJournalDatabase(path, m_connection, 0, error))
-        return false;
+    if (!QFileInfo(path).isFile())
+        return failure(Tr::tr("There is no journal at %1.").arg(path));
+    if (const auto opened = openJournalDatabase(path, m_connection, 0); !opened)
+        return opened;
     m_open = true;
     // The reader never writes, whatever a caller's SQL might try.
-    return run(m_connection, {QStringLiteral("PRAGMA query_only = 1"), {}}, error,
+    return run(m_connection, {QStringLiteral("PRAGMA query_only = 1"), {}},
                [](const QSqlQuery &) {});
 }
 
-std::optional<QList<StoredJoint>> JournalReader::joints(const JointFilter &filter,
-                                                        QString *error) const {
-    return collect<StoredJoint>(m_connection, selectJoints(filter), error, readJoint);
+Outcome<QList<StoredJoint>> JournalReader::joints(const JointFilter &filter) const {
+    return collect<StoredJoint>(m_connection, selectJoints(filter), readJoint);
 }
 
-std::optional<QList<StoredEvent>> JournalReader::events(const EventFilter &filter,
-                                                        QString *error) const {
-    return collect<StoredEvent>(m_connection, selectEvents(filter), error, readEvent);
+Outcome<QList<StoredEvent>> JournalReader::events(const EventFilter &filter) const {
+    return collect<StoredEvent>(m_connection, selectEvents(filter), readEvent);
 }
 
-std::optional<qint64> JournalReader::countJoints(const JointFilter &filter, QString *error) const {
+Outcome<qint64> JournalReader::countJoints(const JointFilter &filter) const {
     Select select = jointsWhere(filter);
     select.sql.prepend(QStringLiteral("SELECT count(*)"));
     qint64 count = 0;
-    if (!run(m_connection, select, error,
-             [&](const QSqlQuery &q) { count = q.value(0).toLongLong(); }))
-        return std::nullopt;
+    if (const auto ran =
+            run(m_connection, select, [&](const QSqlQuery &q) { count = q.value(0).toLongLong(); });
+        !ran)
+        return failure(ran.error());
     return count;
 }
 
-std::optional<QMap<model::JointVerdict, qint64>>
-JournalReader::verdictCounts(const JointFilter &filter, QString *error) const {
+Outcome<QMap<model::JointVerdict, qint64>>
+JournalReader::verdictCounts(const JointFilter &filter) const {
     Select select = jointsWhere(filter);
     select.sql.prepend(QStringLiteral("SELECT j.verdict, count(*)"));
     select.sql.append(QStringLiteral(" GROUP BY j.verdict"));
     QMap<model::JointVerdict, qint64> counts;
     for (const model::JointVerdict verdict : model::kJointVerdicts)
         counts.insert(verdict, 0);
-    const bool ok = run(m_connection, select, error, [&](const QSqlQuery &q) {
+    const auto ran = run(m_connection, select, [&](const QSqlQuery &q) {
         if (const auto verdict = model::jointVerdictFromName(q.value(0).toString()))
             counts[*verdict] += q.value(1).toLongLong();
     });
-    return ok ? std::optional(counts) : std::nullopt;
+    if (!ran)
+        return failure(ran.error());
+    return counts;
 }
 
-std::optional<QList<PortRecovery>> JournalReader::recoveryByPort(const JointFilter &filter,
-                                                                 QString *error) const {
+Outcome<QList<PortRecovery>> JournalReader::recoveryByPort(const JointFilter &filter) const {
     QHash<qint64, model::DeviceIdentity> devices;
     const Select allDevices{
         QStringLiteral("SELECT line, address, model, software, id FROM devices"), {}};
-    if (!run(m_connection, allDevices, error, [&](const QSqlQuery &q) {
-            devices.insert(q.value(4).toLongLong(), readDevice(q, 0));
-        }))
-        return std::nullopt;
+    if (const auto ran = run(
+            m_connection, allDevices,
+            [&](const QSqlQuery &q) { devices.insert(q.value(4).toLongLong(), readDevice(q, 0)); });
+        !ran)
+        return failure(ran.error());
     Select select = jointsWhere(filter);
     select.sql.prepend(QStringLiteral("SELECT j.device_id, j.port, j.recovery_ms"));
     // By device key and port, each with its joints' recovery times.
     QMap<QPair<QString, int>, QPair<qint64, QList<qint64>>> ports;
-    const bool ok = run(m_connection, select, error, [&](const QSqlQuery &q) {
+    const auto ran = run(m_connection, select, [&](const QSqlQuery &q) {
         auto &port = ports[{devices.value(q.value(0).toLongLong()).key(), q.value(1).toInt()}];
         ++port.first;
         if (!q.value(2).isNull())
             port.second.append(q.value(2).toLongLong());
     });
-    if (!ok)
-        return std::nullopt;
+    if (!ran)
+        return failure(ran.error());
     QList<PortRecovery> out;
     for (auto it = ports.begin(); it != ports.end(); ++it) {
         QList<qint64> &times = it.value().second;
@@ -162,20 +158,18 @@ std::optional<QList<PortRecovery>> JournalReader::recoveryByPort(const JointFilt
     return out;
 }
 
-std::optional<QList<StoredJoint>> JournalReader::unsentJoints(qint64 afterId, int limit,
-                                                              QString *error) const {
-    return collect<StoredJoint>(m_connection, selectUnsentJoints(afterId, limit), error, readJoint);
+Outcome<QList<StoredJoint>> JournalReader::unsentJoints(qint64 afterId, int limit) const {
+    return collect<StoredJoint>(m_connection, selectUnsentJoints(afterId, limit), readJoint);
 }
 
-std::optional<QList<StoredEvent>> JournalReader::unsentEvents(qint64 afterId, int limit,
-                                                              QString *error) const {
-    return collect<StoredEvent>(m_connection, selectUnsentEvents(afterId, limit), error, readEvent);
+Outcome<QList<StoredEvent>> JournalReader::unsentEvents(qint64 afterId, int limit) const {
+    return collect<StoredEvent>(m_connection, selectUnsentEvents(afterId, limit), readEvent);
 }
 
-std::optional<QList<model::DeviceIdentity>> JournalReader::devices(QString *error) const {
+Outcome<QList<model::DeviceIdentity>> JournalReader::devices() const {
     const Select select{
         QStringLiteral("SELECT line, address, model, software FROM devices ORDER BY key"), {}};
-    return collect<model::DeviceIdentity>(m_connection, select, error,
+    return collect<model::DeviceIdentity>(m_connection, select,
                                           [](const QSqlQuery &q) { return readDevice(q, 0); });
 }
 

@@ -4,15 +4,16 @@
 // the writer). Use one reader on one thread: Qt SQL connections belong to their thread.
 //
 // open() refuses a missing file (it never creates one), a damaged or foreign file and a newer
-// schema; an older schema is migrated as the writer would. Every query returns nullopt on
-// failure and says why in `error`, in the user's language.
+// schema; an older schema is migrated as the writer would. Every query that fails says why, in
+// the user's language.
 #pragma once
 
 #include "journaltypes.h"
 
+#include "protocol/outcome.h"
+
 #include <QMap>
 #include <QString>
-#include <optional>
 
 namespace tipscope::journal {
 
@@ -23,30 +24,27 @@ public:
     JournalReader(const JournalReader &) = delete;
     JournalReader &operator=(const JournalReader &) = delete;
 
-    [[nodiscard]] bool open(const QString &path, QString *error);
+    [[nodiscard]] protocol::Outcome<void> open(const QString &path);
     [[nodiscard]] bool isOpen() const { return m_open; }
     [[nodiscard]] QString path() const { return m_path; }
 
-    [[nodiscard]] std::optional<QList<StoredJoint>> joints(const JointFilter &filter,
-                                                           QString *error) const;
-    [[nodiscard]] std::optional<QList<StoredEvent>> events(const EventFilter &filter,
-                                                           QString *error) const;
+    [[nodiscard]] protocol::Outcome<QList<StoredJoint>> joints(const JointFilter &filter) const;
+    [[nodiscard]] protocol::Outcome<QList<StoredEvent>> events(const EventFilter &filter) const;
     // Ignores the filter's limit and order.
-    [[nodiscard]] std::optional<qint64> countJoints(const JointFilter &filter,
-                                                    QString *error) const;
-    [[nodiscard]] std::optional<QMap<model::JointVerdict, qint64>>
-    verdictCounts(const JointFilter &filter, QString *error) const;
+    [[nodiscard]] protocol::Outcome<qint64> countJoints(const JointFilter &filter) const;
+    [[nodiscard]] protocol::Outcome<QMap<model::JointVerdict, qint64>>
+    verdictCounts(const JointFilter &filter) const;
     // Per device and port, in key and port order.
-    [[nodiscard]] std::optional<QList<PortRecovery>> recoveryByPort(const JointFilter &filter,
-                                                                    QString *error) const;
+    [[nodiscard]] protocol::Outcome<QList<PortRecovery>>
+    recoveryByPort(const JointFilter &filter) const;
 
     // Store-and-forward: the oldest unsent records with a row id above `afterId`, in order.
-    [[nodiscard]] std::optional<QList<StoredJoint>> unsentJoints(qint64 afterId, int limit,
-                                                                 QString *error) const;
-    [[nodiscard]] std::optional<QList<StoredEvent>> unsentEvents(qint64 afterId, int limit,
-                                                                 QString *error) const;
+    [[nodiscard]] protocol::Outcome<QList<StoredJoint>> unsentJoints(qint64 afterId,
+                                                                     int limit) const;
+    [[nodiscard]] protocol::Outcome<QList<StoredEvent>> unsentEvents(qint64 afterId,
+                                                                     int limit) const;
     // Every device the journal has a record of, in key order.
-    [[nodiscard]] std::optional<QList<model::DeviceIdentity>> devices(QString *error) const;
+    [[nodiscard]] protocol::Outcome<QList<model::DeviceIdentity>> devices() const;
 
 private:
     void close();

@@ -12,6 +12,9 @@
 
 namespace tipscope::journal {
 
+using protocol::failure;
+using protocol::Outcome;
+
 namespace {
 
 struct Tr {
@@ -52,132 +55,134 @@ const Migration kMigrations[] = {
       "CREATE INDEX events_unsent ON events (id) WHERE sent = 0"}},
 };
 
-bool run(QSqlDatabase &db, const QString &sql, QString *error) {
+Outcome<void> run(QSqlDatabase &db, const QString &sql) {
     QSqlQuery query(db);
     if (query.exec(sql))
-        return true;
-    *error = describeSqlError(query.lastError(), db.databaseName());
-    return false;
+        return {};
+    return failure(describeSqlError(query.lastError(), db.databaseName()));
 }
 
-// The integer a pragma or a one-value query answers; nullopt (and `error`) when it fails.
-std::optional<qint64> readInteger(QSqlDatabase &db, const QString &sql, QString *error) {
+// The integer a pragma or a one-value query answers, or why the query failed.
+Outcome<qint64> readInteger(QSqlDatabase &db, const QString &sql) {
     QSqlQuery query(db);
     if (query.exec(sql) && query.next())
         return query.value(0).toLongLong();
-    *error = describeSqlError(query.lastError(), db.databaseName());
-    return std::nullopt;
+    return failure(describeSqlError(query.lastError(), db.databaseName()));
 }
 
 // The file's schema version, if the file is ours to migrate: not another program's database,
 // not a newer journal. Reads only, so a refused file is left as it was.
-std::optional<qint64> ownedVersion(QSqlDatabase &db, QString *error) {
+Outcome<qint64> ownedVersion(QSqlDatabase &db) {
     const QString path = db.databaseName();
-    const std::optional<qint64> version =
-        readInteger(db, QStringLiteral("PRAGMA user_version"), error);
+    const auto version = readInteger(db, QStringLiteral("PRAGMA user_version"));
     if (!version)
-        return std::nullopt;
-    if (*version > kJournalSchemaVersion) {
-        *error = Tr::tr("The journal %1 was written by a newer TipScope (schema %2; this one knows "
-                        "up to %3). It was left untouched.")
-                     .arg(path)
-                     .arg(*version)
-                     .arg(kJournalSchemaVersion);
-        return std::nullopt;
-    }
-    const std::optional<qint64> applicationId =
-        readInteger(db, QStringLiteral("PRAGMA application_id"), error);
-    const std::optional<qint64> tables =
-        readInteger(db, QStringLiteral("SELECT count(*) FROM sqlite_master"), error);
-    if (!applicationId || !tables)
-        return std::nullopt;
+        return version;
+    if (*version > kJournalSchemaVersion)
+        return failure(Tr::tr("The journal %1 was written by a newer TipScope (schema %2; this one "
+                              "knows up to %3). It was left untouched.")
+                           .arg(path)
+                           .arg(*version)
+                           .arg(kJournalSchemaVersion));
+    const auto applicationId = readInteger(db, QStringLiteral("PRAGMA application_id"));
+    if (!applicationId)
+        return applicationId;
+    const auto tables = readInteger(db, QStringLiteral("SELECT count(*) FROM sqlite_master"));
+    if (!tables)
+        return tables;
     const bool foreignId = *applicationId != 0 && *applicationId != kJournalApplicationId;
-    if (foreignId || (*version == 0 && *tables > 0)) {
-        *error = Tr::tr("The file %1 is not a TipScope journal. It was left untouched.").arg(path);
-        return std::nullopt;
-    }
+    if (foreignId || (*version == 0 && *tables > 0))
+        return failure(
+            Tr::tr("The file %1 is not a TipScope journal. It was left untouched.").arg(path));
     return version;
 }
 
-bool runMigrations(QSqlDatabase &db, qint64 from, QString *error) {
+Outcome<void> runMigrations(QSqlDatabase &db, qint64 from) {
     for (const Migration &migration : kMigrations) {
         if (migration.version <= from)
             continue;
-        for (const char *statement : migration.statements) {
-            if (!run(db, QString::fromLatin1(statement), error))
-                return false;
-        }
+        for (const char *statement : migration.statements)
+            if (const auto ran = run(db, QString::fromLatin1(statement)); !ran)
+                return ran;
     }
-    return run(db, QStringLiteral("PRAGMA application_id = %1").arg(kJournalApplicationId),
-               error) &&
-           run(db, QStringLiteral("PRAGMA user_version = %1").arg(kJournalSchemaVersion), error);
+    if (const auto ran =
+            run(db, QStringLiteral("PRAGMA application_id = %1").arg(kJournalApplicationId));
+        !ran)
+        return ran;
+    return run(db, QStringLiteral("PRAGMA user_version = %1").arg(kJournalSchemaVersion));
 }
 
-bool configure(QSqlDatabase &db, qint64 maxSizeBytes, QString *error) {
+Outcome<void> configure(QSqlDatabase &db, qint64 maxSizeBytes) {
     QSqlQuery mode(db);
-    if (!mode.exec(QStringLiteral("PRAGMA journal_mode = WAL")) || !mode.next()) {
-        *error = describeSqlError(mode.lastError(), db.databaseName());
-        return false;
-    }
-    if (mode.value(0).toString().compare(QLatin1String("wal"), Qt::CaseInsensitive) != 0) {
-        *error = readOnlyJournalText(db.databaseName());
-        return false;
-    }
+    if (!mode.exec(QStringLiteral("PRAGMA journal_mode = WAL")) || !mode.next())
+        return failure(describeSqlError(mode.lastError(), db.databaseName()));
+    if (mode.value(0).toString().compare(QLatin1String("wal"), Qt::CaseInsensitive) != 0)
+        return failure(readOnlyJournalText(db.databaseName()));
     // FULL: a commit is on the disk, not only in the system's cache, when durable() is said.
-    if (!run(db, QStringLiteral("PRAGMA synchronous = FULL"), error))
-        return false;
+    if (const auto ran = run(db, QStringLiteral("PRAGMA synchronous = FULL")); !ran)
+        return ran;
     if (maxSizeBytes <= 0)
-        return true;
-    const std::optional<qint64> pageSize =
-        readInteger(db, QStringLiteral("PRAGMA page_size"), error);
-    return pageSize && readInteger(db,
-                                   QStringLiteral("PRAGMA max_page_count = %1")
-                                       .arg(qMax<qint64>(1, maxSizeBytes / *pageSize)),
-                                   error);
+        return {};
+    const auto pageSize = readInteger(db, QStringLiteral("PRAGMA page_size"));
+    if (!pageSize)
+        return failure(pageSize.error());
+    const auto capped = readInteger(db, QStringLiteral("PRAGMA max_page_count = %1")
+                                            .arg(qMax<qint64>(1, maxSizeBytes / *pageSize)));
+    if (!capped)
+        return failure(capped.error());
+    return {};
 }
 
 } // namespace
 
-bool migrateJournal(QSqlDatabase &db, QString *error) {
-    const std::optional<qint64> version = ownedVersion(db, error);
+Outcome<void> migrateJournal(QSqlDatabase &db) {
+    const auto version = ownedVersion(db);
     if (!version)
-        return false;
+        return failure(version.error());
     if (*version == kJournalSchemaVersion)
-        return true;
-    if (!run(db, QStringLiteral("BEGIN IMMEDIATE"), error))
-        return false;
+        return {};
+    if (const auto ran = run(db, QStringLiteral("BEGIN IMMEDIATE")); !ran)
+        return ran;
     // Another program may have migrated the file while this one waited for the lock.
-    const std::optional<qint64> locked = ownedVersion(db, error);
-    const bool done =
-        locked && runMigrations(db, *locked, error) && run(db, QStringLiteral("COMMIT"), error);
+    const auto done = [&db]() -> Outcome<void> {
+        const auto locked = ownedVersion(db);
+        if (!locked)
+            return failure(locked.error());
+        if (const auto migrated = runMigrations(db, *locked); !migrated)
+            return migrated;
+        return run(db, QStringLiteral("COMMIT"));
+    }();
     if (!done)
         QSqlQuery(db).exec(QStringLiteral("ROLLBACK"));
     return done;
 }
 
-bool openJournalDatabase(const QString &path, const QString &connectionName, qint64 maxSizeBytes,
-                         QString *error) {
+// Checks the file is ours, sets the connection up and migrates it.
+static Outcome<void> prepare(QSqlDatabase &db, qint64 maxSizeBytes) {
+    if (const auto owned = ownedVersion(db); !owned)
+        return failure(owned.error());
+    if (const auto configured = configure(db, maxSizeBytes); !configured)
+        return configured;
+    return migrateJournal(db);
+}
+
+Outcome<void> openJournalDatabase(const QString &path, const QString &connectionName,
+                                  qint64 maxSizeBytes) {
     const QString folder = QFileInfo(path).absolutePath();
-    if (!QDir().mkpath(folder)) {
-        *error = Tr::tr("Cannot create the folder %1 for the journal.").arg(folder);
-        return false;
-    }
-    bool ok = false;
+    if (!QDir().mkpath(folder))
+        return failure(Tr::tr("Cannot create the folder %1 for the journal.").arg(folder));
+    Outcome<void> opened;
     {
         QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), connectionName);
         db.setDatabaseName(path);
         db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=5000"));
-        if (!db.open())
-            *error = describeSqlError(db.lastError(), path);
-        else
-            ok = ownedVersion(db, error) && configure(db, maxSizeBytes, error) &&
-                 migrateJournal(db, error);
-        if (!ok)
+        opened = db.open() ? prepare(db, maxSizeBytes)
+                           : Outcome<void>(failure(describeSqlError(db.lastError(), path)));
+        if (!opened)
             db.close();
     }
-    if (!ok)
+    if (!opened)
         QSqlDatabase::removeDatabase(connectionName);
-    return ok;
+    return opened;
 }
 
 } // namespace tipscope::journal

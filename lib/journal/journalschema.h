@@ -10,6 +10,8 @@
 // refused and left untouched.
 #pragma once
 
+#include "protocol/outcome.h"
+
 #include <QSqlDatabase>
 #include <QString>
 
@@ -20,10 +22,10 @@ inline constexpr int kJournalApplicationId = 0x54695053; // "TiPS"
 
 // A fresh connection to the file at `path` named `connectionName`, open, in WAL mode with full
 // synchronous commits, and migrated. `maxSizeBytes` > 0 caps the file. On failure the
-// connection is removed again and `error` says why in the user's language.
-[[nodiscard]] bool openJournalDatabase(const QString &path, const QString &connectionName,
-                                       qint64 maxSizeBytes, QString *error);
+// connection is removed again and the reason is in the user's language.
+[[nodiscard]] protocol::Outcome<void>
+openJournalDatabase(const QString &path, const QString &connectionName, qint64 maxSizeBytes);
 // Brings an open database to kJournalSchemaVersion.
-[[nodiscard]] bool migrateJournal(QSqlDatabase &db, QString *error);
+[[nodiscard]] protocol::Outcome<void> migrateJournal(QSqlDatabase &db);
 
 } // namespace tipscope::journal

@@ -59,9 +59,9 @@ void JournalWriter::start() {
 }
 
 bool JournalWriter::openDatabase() {
-    QString error;
-    if (!openJournalDatabase(m_path, m_connection, m_options.maxSizeBytes, &error)) {
-        fail(error);
+    if (const auto opened = openJournalDatabase(m_path, m_connection, m_options.maxSizeBytes);
+        !opened) {
+        fail(opened.error());
         return false;
     }
     m_statements = std::make_unique<JournalStatements>(QSqlDatabase::database(m_connection));

@@ -104,15 +104,15 @@ void Discovery::take(const Reply &reply, std::optional<int> address, int slot) {
         d.family = Catalog::builtin().familyForModel(d.model);
     }
     m_found[slot] = d;
-    if (!d.family.isEmpty() &&
-        Catalog::builtin().resolve(d.family, Role::SoftwareVersion, 0, Direction::Read))
-        askVersion(slot);
+    if (d.family.isEmpty())
+        return;
+    if (const auto version =
+            Catalog::builtin().resolve(d.family, Role::SoftwareVersion, 0, Direction::Read))
+        askVersion(slot, *version);
 }
 
-void Discovery::askVersion(int slot) {
-    const auto version = Catalog::builtin().resolve(m_found[slot]->family, Role::SoftwareVersion, 0,
-                                                    Direction::Read);
-    Reply *reply = m_queue.enqueue(Request::read(m_found[slot]->address, *version), this);
+void Discovery::askVersion(int slot, const protocol::ResolvedCommand &version) {
+    Reply *reply = m_queue.enqueue(Request::read(m_found[slot]->address, version), this);
     ++m_outstanding;
     connect(reply, &Reply::finished, this, [this, reply, slot] {
         reply->deleteLater();

@@ -20,6 +20,10 @@
 #include <QObject>
 #include <optional>
 
+namespace tipscope::protocol {
+struct ResolvedCommand;
+} // namespace tipscope::protocol
+
 namespace tipscope::link {
 
 class RequestQueue;
@@ -79,7 +83,7 @@ private:
     void begin(int probes);
     void probe(std::optional<int> address, int slot);
     void take(const Reply &reply, std::optional<int> address, int slot);
-    void askVersion(int slot);
+    void askVersion(int slot, const protocol::ResolvedCommand &version);
     void settle();
     [[nodiscard]] Identification identificationOf(const std::optional<DeviceInfo> &found) const;
 

@@ -30,10 +30,9 @@ QString Action::trigger(Confirmation confirmation, qint64 argument) {
         return Tr::tr("%1 needs an explicit confirmation: %2").arg(name(), danger());
     if (m_running)
         return Tr::tr("%1 is already running").arg(name());
-    QString error;
-    const auto data = encodeWrite(m_command, argument, &error);
+    const auto data = encodeWrite(m_command, argument);
     if (!data)
-        return error;
+        return data.error();
     m_running = true;
     Reply *reply = m_device.queue().enqueue(
         Request::write(m_device.address(), m_command.code, *data, !isDangerous()), this);

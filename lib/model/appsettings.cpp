@@ -83,7 +83,7 @@ void AppSettings::save(QSettings &s) const {
     s.setValue(QStringLiteral("ui/language"), language);
 }
 
-std::optional<Session::Settings> AppSettings::sessionSettings(QString *error) const {
+protocol::Outcome<Session::Settings> AppSettings::sessionSettings() const {
     Session::Settings s;
     s.addressing = addressing;
     s.targetAddress = targetAddress;
@@ -101,20 +101,16 @@ std::optional<Session::Settings> AppSettings::sessionSettings(QString *error) co
         s.demoActivity = true; // people try the demo to see what the charts show
         break;
     case Kind::Serial:
-        if (serialPort.trimmed().isEmpty()) {
-            *error = Tr::tr("choose a serial port");
-            return std::nullopt;
-        }
+        if (serialPort.trimmed().isEmpty())
+            return protocol::failure(Tr::tr("choose a serial port"));
         s.line.kind = link::LineSettings::Kind::Serial;
         s.line.serial.portName = serialPort.trimmed();
         break;
     case Kind::Tcp:
         if (!link::TcpTransport::parseHostPort(tcpAddress.trimmed(), &s.line.tcpHost,
-                                               &s.line.tcpPort)) {
-            *error =
-                Tr::tr("'%1' is not HOST:PORT (for example 192.168.1.20:4001)").arg(tcpAddress);
-            return std::nullopt;
-        }
+                                               &s.line.tcpPort))
+            return protocol::failure(
+                Tr::tr("'%1' is not HOST:PORT (for example 192.168.1.20:4001)").arg(tcpAddress));
         s.line.kind = link::LineSettings::Kind::Tcp;
         break;
     }

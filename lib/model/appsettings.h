@@ -5,6 +5,8 @@
 
 #include "session.h"
 
+#include "protocol/outcome.h"
+
 #include <QByteArray>
 #include <QString>
 
@@ -33,8 +35,8 @@ struct AppSettings {
 
     [[nodiscard]] static AppSettings load(QSettings &s);
     void save(QSettings &s) const;
-    // The session settings these describe; `error` says why when they cannot be used.
-    [[nodiscard]] std::optional<Session::Settings> sessionSettings(QString *error) const;
+    // The session settings these describe, or why they cannot be used.
+    [[nodiscard]] protocol::Outcome<Session::Settings> sessionSettings() const;
 };
 
 } // namespace tipscope::model

@@ -97,7 +97,7 @@ ConsoleEntry ConsoleModel::fromTap(const link::TapEvent &e) {
         c.direction = ConsoleEntry::Direction::Tx;
         c.bytes = e.bytes;
         if (auto f = parseFrame(e.bytes))
-            c.frame = f;
+            c.frame = std::move(f).value();
         else
             c.remark = Tr::tr("sent as typed (not a valid frame)");
         break;

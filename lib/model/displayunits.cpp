@@ -61,14 +61,14 @@ QString formatValue(const ResolvedCommand &cmd, const Value &v, TemperatureUnit 
     }
 }
 
-std::optional<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text,
-                                       TemperatureUnit t, QString *error) {
+Outcome<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text,
+                                 TemperatureUnit t) {
     const QString s = text.trimmed();
     if (auto special = labelled(cmd.spec->special, s))
-        return special;
+        return *special;
     if (cmd.spec->kind == ValueKind::Enum || cmd.spec->kind == ValueKind::Flags ||
         cmd.spec->kind == ValueKind::Action)
-        return parseUserValue(cmd, s, error);
+        return parseUserValue(cmd, s);
     const DisplayFormat f = displayFormat(cmd, t);
     QString number = s;
     if (!f.unit.isEmpty() && number.endsWith(f.unit))
@@ -77,18 +77,12 @@ std::optional<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString
     double d = QLocale().toDouble(number.trimmed(), &ok);
     if (!ok)
         d = number.trimmed().toDouble(&ok); // a script may use the C locale's decimal point
-    if (!ok || !std::isfinite(d)) {
-        if (error)
-            *error = Tr::tr("'%1' is not a number").arg(s);
-        return std::nullopt;
-    }
+    if (!ok || !std::isfinite(d))
+        return failure(Tr::tr("'%1' is not a number").arg(s));
     const qint64 wire = fromDisplay(cmd, d, t);
-    if (std::fabs(toDisplay(cmd, wire, t) - d) > std::pow(10.0, -f.decimals) / 2 + 1e-9) {
-        if (error)
-            *error =
-                Tr::tr("%1 has more decimals than %2 can take").arg(s, catalogText(cmd.spec->name));
-        return std::nullopt;
-    }
+    if (std::fabs(toDisplay(cmd, wire, t) - d) > std::pow(10.0, -f.decimals) / 2 + 1e-9)
+        return failure(
+            Tr::tr("%1 has more decimals than %2 can take").arg(s, catalogText(cmd.spec->name)));
     return wire;
 }
 

@@ -37,8 +37,7 @@ struct DisplayFormat {
 [[nodiscard]] QString formatNumber(const protocol::ResolvedCommand &cmd, qint64 wire,
                                    TemperatureUnit t);
 // Parses what a person typed, in display units or by a special value's or an enum's name.
-[[nodiscard]] std::optional<qint64> parseDisplayText(const protocol::ResolvedCommand &cmd,
-                                                     const QString &text, TemperatureUnit t,
-                                                     QString *error = nullptr);
+[[nodiscard]] protocol::Outcome<qint64> parseDisplayText(const protocol::ResolvedCommand &cmd,
+                                                         const QString &text, TemperatureUnit t);
 
 } // namespace tipscope::model

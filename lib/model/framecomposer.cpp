@@ -41,10 +41,9 @@ QString writeProblem(const ResolvedCommand &cmd, const QString &data) {
                          .arg(QString::fromLatin1(cmd.code), QString::fromLatin1(spec.fixedData));
     if (data.isEmpty())
         return Tr::tr("A write needs a data field: %1.").arg(allowedText(cmd));
-    QString error;
-    const std::optional<qint64> value = parseUserValue(cmd, data, &error);
+    const auto value = parseUserValue(cmd, data);
     if (!value)
-        return error;
+        return value.error();
     if (const QString why = validate(cmd, *value); !why.isEmpty())
         return why;
     // The device parses fixed-width fields, so "375" is not the same frame as "00375".
@@ -202,13 +201,14 @@ RawHex FrameComposer::readHex(const QString &text) {
         return raw;
     }
     raw.bytes = std::move(bytes).value();
-    QString why;
-    raw.frame = parseFrame(*raw.bytes, nullptr, &why);
+    auto frame = parseFrame(*raw.bytes);
     const int n = int(raw.bytes->size());
-    if (raw.frame) {
+    if (frame) {
+        raw.frame = std::move(frame).value();
         raw.text = Tr::tr("%n byte(s), a valid frame: %1", "", n).arg(raw.frame->toString());
     } else {
-        raw.text = Tr::tr("%n byte(s), not a valid frame (%1): sent as typed", "", n).arg(why);
+        raw.text = Tr::tr("%n byte(s), not a valid frame (%1): sent as typed", "", n)
+                       .arg(frame.error().why);
         raw.warning = true;
     }
     return raw;

@@ -132,10 +132,9 @@ QString Parameter::setEdit(qint64 wire) {
 QString Parameter::setEditText(const QString &text) {
     if (!m_write)
         return Tr::tr("%1 cannot be written").arg(label());
-    QString error;
-    const auto wire = parseDisplayText(*m_write, text, m_device.temperatureUnit(), &error);
+    const auto wire = parseDisplayText(*m_write, text, m_device.temperatureUnit());
     if (!wire)
-        return Tr::tr("%1: %2; allowed is %3").arg(label(), error, allowedText());
+        return Tr::tr("%1: %2; allowed is %3").arg(label(), wire.error(), allowedText());
     return setEdit(*wire);
 }
 
@@ -229,10 +228,13 @@ quint64 Parameter::apply() {
     static quint64 lastWriteId = 0;
     const quint64 id = ++lastWriteId;
     m_runningWrite = id;
-    QString why = m_device.writesBlocked() ? Tr::tr("monitor-only mode is on: nothing is written")
-                                           : validate(*m_edit);
-    const auto data = why.isEmpty() ? encodeWrite(*m_write, *m_edit, &why) : std::nullopt;
+    const QString blocked = m_device.writesBlocked()
+                                ? Tr::tr("monitor-only mode is on: nothing is written")
+                                : validate(*m_edit);
+    const auto data = blocked.isEmpty() ? encodeWrite(*m_write, *m_edit)
+                                        : Outcome<QByteArray>(protocol::failure(blocked));
     if (!data) {
+        const QString why = data.error();
         // The caller learns the id from this call: tell the outcome once it can listen.
         QTimer::singleShot(0, this, [this, why, id] { fail(why, id); });
         return id;

@@ -13,6 +13,25 @@ namespace {
 struct Tr {
     Q_DECLARE_TR_FUNCTIONS(Session)
 };
+
+// Why the device at `address` (none: the device without addresses) is not identified, after
+// "connected to LINE, but".
+QString unidentifiedText(const IdentifyFailure &why, std::optional<int> address) {
+    switch (why.kind) {
+    case IdentifyFailure::Kind::NoModelNameCommand:
+        return Tr::tr("the catalog names no command that identifies a device");
+    case IdentifyFailure::Kind::UnknownModel:
+        return Tr::tr("the device reports the model '%1', which TipScope does not know")
+            .arg(why.model);
+    case IdentifyFailure::Kind::Unanswered:
+        break;
+    }
+    if (!address)
+        return Tr::tr("the device without addresses did not identify itself: %1").arg(why.reason);
+    return Tr::tr("the device at address %1 did not identify itself: %2")
+        .arg(address.value(), 2, 10, QLatin1Char('0'))
+        .arg(why.reason);
+}
 } // namespace
 
 Session::Session(QObject *parent)
@@ -159,12 +178,15 @@ void Session::detect() {
 void Session::identify(std::optional<int> address) {
     // The one device the settings name, at any address: Discovery asks it as the CLI does.
     m_discovery = std::make_unique<Discovery>(m_line->queue());
-    connect(m_discovery.get(), &Discovery::finished, this,
-            [this] { adoptDevices(m_discovery->devices()); });
+    connect(m_discovery.get(), &Discovery::finished, this, [this, address] {
+        const auto &found = m_discovery->identification();
+        adoptDevices(m_discovery->devices(),
+                     found && !found->ok() ? unidentifiedText(found->error(), address) : QString());
+    });
     m_discovery->identify(address);
 }
 
-void Session::adoptDevices(const QList<DeviceInfo> &found) {
+void Session::adoptDevices(const QList<DeviceInfo> &found, const QString &unidentified) {
     clearDevices();
     for (const DeviceInfo &info : found) {
         if (info.family.isEmpty())
@@ -194,7 +216,11 @@ void Session::adoptDevices(const QList<DeviceInfo> &found) {
     }
     m_scheduler.start();
     Q_EMIT devicesChanged();
-    if (m_devices.isEmpty())
+    if (m_devices.isEmpty() && !unidentified.isEmpty())
+        setState(
+            State::Connected,
+            Tr::tr("connected to %1, but %2").arg(m_line->transport().description(), unidentified));
+    else if (m_devices.isEmpty())
         setState(State::Connected, Tr::tr("connected to %1, but no device answered (robot mode "
                                           "off? wrong addressing or baud rate?)")
                                        .arg(m_line->transport().description()));

@@ -87,7 +87,8 @@ private:
     void setState(State s, const QString &text);
     void onLineState(link::Line::State s, const QString &detail);
     void detect();
-    void adoptDevices(const QList<link::DeviceInfo> &found);
+    // `unidentified`: why the device the settings name was not identified, when it was not.
+    void adoptDevices(const QList<link::DeviceInfo> &found, const QString &unidentified = {});
     void identify(std::optional<int> address);
     void clearDevices();
     void warnOfJoint(const JointRecord &joint);

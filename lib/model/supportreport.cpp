@@ -189,7 +189,7 @@ QString supportReportText(const QJsonObject &r) {
     return out.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }
 
-QStringList writeSupportReport(Session &session, const QString &folder, QString *error) {
+protocol::Outcome<QStringList> writeSupportReport(Session &session, const QString &folder) {
     const QJsonObject report = supportReportJson(session);
     const QString stem = QDir(folder).filePath(
         QStringLiteral("tipscope-report-%1")
@@ -199,10 +199,8 @@ QStringList writeSupportReport(Session &session, const QString &folder, QString 
         {stem + QStringLiteral(".txt"), supportReportText(report).toUtf8()}};
     QStringList written;
     for (const auto &[path, bytes] : files) {
-        if (const auto saved = io::saveAtomically(path, bytes); !saved.ok()) {
-            *error = saved.error();
-            return {};
-        }
+        if (const auto saved = io::saveAtomically(path, bytes); !saved.ok())
+            return protocol::failure(saved.error());
         written.append(path);
     }
     return written;

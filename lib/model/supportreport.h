@@ -4,6 +4,8 @@
 // recent event log. Nothing is read from the devices for it: it shows what TipScope knew.
 #pragma once
 
+#include "protocol/outcome.h"
+
 #include <QJsonObject>
 #include <QString>
 #include <QStringList>
@@ -14,9 +16,8 @@ class Session;
 
 [[nodiscard]] QJsonObject supportReportJson(Session &session, int recentEvents = 500);
 [[nodiscard]] QString supportReportText(const QJsonObject &report);
-// Writes tipscope-report-<date>.json and .txt into `folder`; returns their paths, or empty
-// with `error` set.
-[[nodiscard]] QStringList writeSupportReport(Session &session, const QString &folder,
-                                             QString *error);
+// Writes tipscope-report-<date>.json and .txt into `folder`; returns their paths, or why not.
+[[nodiscard]] protocol::Outcome<QStringList> writeSupportReport(Session &session,
+                                                                const QString &folder);
 
 } // namespace tipscope::model

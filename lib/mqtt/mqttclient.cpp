@@ -75,12 +75,12 @@ void MqttClient::start() {
         return;
     MqttSettings settings = m_settings;
     settings.clientId = m_clientId = effectiveClientId(m_settings);
-    QString error;
-    m_mosquitto = createMosquitto(settings, this, &error);
-    if (!m_mosquitto) {
-        setProblem({MqttProblem::InvalidSettings, error});
+    auto created = createMosquitto(settings, this);
+    if (!created) {
+        setProblem({MqttProblem::InvalidSettings, created.error()});
         return;
     }
+    m_mosquitto = std::move(created).value();
     MqttCallbacks::install(m_mosquitto.get());
     m_pending.clear();
     m_nextDelayMs = qMax(1, m_settings.retryMinMs);

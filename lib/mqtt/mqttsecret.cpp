@@ -24,39 +24,32 @@ QByteArray withoutLineEnd(QByteArray value) {
 
 } // namespace
 
-std::optional<QByteArray> readSecretFile(const QString &path, QString *error) {
+protocol::Outcome<QByteArray> readSecretFile(const QString &path) {
+    using protocol::failure;
     const QFileInfo info(path);
-    if (!info.exists()) {
-        *error = Tr::tr("The password file %1 does not exist.").arg(path);
-        return std::nullopt;
-    }
-    if (info.size() > kMaxSecretBytes) {
-        *error = Tr::tr("The password file %1 is larger than %2 bytes; is it the right file?")
-                     .arg(path)
-                     .arg(kMaxSecretBytes);
-        return std::nullopt;
-    }
+    if (!info.exists())
+        return failure(Tr::tr("The password file %1 does not exist.").arg(path));
+    if (info.size() > kMaxSecretBytes)
+        return failure(Tr::tr("The password file %1 is larger than %2 bytes; is it the right file?")
+                           .arg(path)
+                           .arg(kMaxSecretBytes));
     QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = Tr::tr("The password file %1 cannot be read: %2").arg(path, file.errorString());
-        return std::nullopt;
-    }
+    if (!file.open(QIODevice::ReadOnly))
+        return failure(
+            Tr::tr("The password file %1 cannot be read: %2").arg(path, file.errorString()));
     const QByteArray line = withoutLineEnd(file.readLine(kMaxSecretBytes + 1));
-    if (line.isEmpty()) {
-        *error = Tr::tr("The password file %1 is empty.").arg(path);
-        return std::nullopt;
-    }
+    if (line.isEmpty())
+        return failure(Tr::tr("The password file %1 is empty.").arg(path));
     return line;
 }
 
-std::optional<QByteArray> readSecretEnvironment(const QString &name, QString *error) {
+protocol::Outcome<QByteArray> readSecretEnvironment(const QString &name) {
     const QByteArray value = withoutLineEnd(qgetenv(name.toLocal8Bit().constData()));
-    if (value.isEmpty()) {
-        *error = Tr::tr("The environment variable %1 that should hold the password is not set "
-                        "or empty.")
-                     .arg(name);
-        return std::nullopt;
-    }
+    if (value.isEmpty())
+        return protocol::failure(
+            Tr::tr("The environment variable %1 that should hold the password is not set "
+                   "or empty.")
+                .arg(name));
     return value;
 }
 

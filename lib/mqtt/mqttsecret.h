@@ -4,17 +4,18 @@
 // the file or the variable, never the value, in the user's language.
 #pragma once
 
+#include "protocol/outcome.h"
+
 #include <QByteArray>
 #include <QString>
-#include <optional>
 
 namespace tipscope::mqtt {
 
 // The first line of the file at `path`. Refuses a missing, unreadable, empty or oversized
 // (over 4 KiB) file.
-[[nodiscard]] std::optional<QByteArray> readSecretFile(const QString &path, QString *error);
+[[nodiscard]] protocol::Outcome<QByteArray> readSecretFile(const QString &path);
 
 // The value of the environment variable `name`. Refuses an unset or empty variable.
-[[nodiscard]] std::optional<QByteArray> readSecretEnvironment(const QString &name, QString *error);
+[[nodiscard]] protocol::Outcome<QByteArray> readSecretEnvironment(const QString &name);
 
 } // namespace tipscope::mqtt

@@ -4,10 +4,14 @@
 #include <QFileInfo>
 #include <QRandomGenerator>
 #include <cerrno>
+#include <functional>
 #include <mosquitto.h>
 #include <mutex>
 
 namespace tipscope::mqtt {
+
+using protocol::failure;
+using protocol::Outcome;
 
 namespace {
 
@@ -31,59 +35,55 @@ bool readable(const QString &path) {
     return info.isFile() && info.isReadable();
 }
 
-bool applyCredentials(mosquitto *client, const MqttSettings &settings, QString *error) {
+QString libraryText(int rc) {
+    return QString::fromUtf8(mosquitto_strerror(rc));
+}
+
+Outcome<void> applyCredentials(mosquitto *client, const MqttSettings &settings) {
     if (settings.username.isEmpty() && settings.password.isEmpty())
-        return true;
-    if (settings.username.isEmpty()) {
-        *error = Tr::tr("A password is set but no user name: MQTT sends a password only with a "
-                        "user name.");
-        return false;
-    }
+        return {};
+    if (settings.username.isEmpty())
+        return failure(Tr::tr("A password is set but no user name: MQTT sends a password only "
+                              "with a user name."));
     const QByteArray user = settings.username.toUtf8();
     const int rc = mosquitto_username_pw_set(
         client, user.constData(),
         settings.password.isEmpty() ? nullptr : settings.password.constData());
     if (rc != MOSQ_ERR_SUCCESS)
-        *error = Tr::tr("The user name %1 is not accepted: %2")
-                     .arg(settings.username, QString::fromUtf8(mosquitto_strerror(rc)));
-    return rc == MOSQ_ERR_SUCCESS;
+        return failure(
+            Tr::tr("The user name %1 is not accepted: %2").arg(settings.username, libraryText(rc)));
+    return {};
 }
 
-bool applyWill(mosquitto *client, const MqttWill &will, QString *error) {
+Outcome<void> applyWill(mosquitto *client, const MqttWill &will) {
     if (will.topic.isEmpty())
-        return true;
+        return {};
     const QByteArray topic = will.topic.toUtf8();
     const int rc = mosquitto_will_set(client, topic.constData(), int(will.payload.size()),
                                       will.payload.constData(), will.qos, will.retain);
     if (rc != MOSQ_ERR_SUCCESS)
-        *error = Tr::tr("The last will on %1 is not accepted: %2")
-                     .arg(will.topic, QString::fromUtf8(mosquitto_strerror(rc)));
-    return rc == MOSQ_ERR_SUCCESS;
+        return failure(
+            Tr::tr("The last will on %1 is not accepted: %2").arg(will.topic, libraryText(rc)));
+    return {};
 }
 
-bool checkTlsFiles(const MqttTls &tls, QString *error) {
-    if (!readable(tls.caFile)) {
-        *error = Tr::tr("The CA certificate file %1 cannot be read.").arg(tls.caFile);
-        return false;
-    }
-    if (tls.certFile.isEmpty() != tls.keyFile.isEmpty()) {
-        *error = Tr::tr("A client certificate needs both its certificate file and its key file.");
-        return false;
-    }
-    for (const QString &path : {tls.certFile, tls.keyFile}) {
-        if (!path.isEmpty() && !readable(path)) {
-            *error = Tr::tr("The file %1 cannot be read.").arg(path);
-            return false;
-        }
-    }
-    return true;
+Outcome<void> checkTlsFiles(const MqttTls &tls) {
+    if (!readable(tls.caFile))
+        return failure(Tr::tr("The CA certificate file %1 cannot be read.").arg(tls.caFile));
+    if (tls.certFile.isEmpty() != tls.keyFile.isEmpty())
+        return failure(
+            Tr::tr("A client certificate needs both its certificate file and its key file."));
+    for (const QString &path : {tls.certFile, tls.keyFile})
+        if (!path.isEmpty() && !readable(path))
+            return failure(Tr::tr("The file %1 cannot be read.").arg(path));
+    return {};
 }
 
-bool applyTls(mosquitto *client, const MqttTls &tls, QString *error) {
+Outcome<void> applyTls(mosquitto *client, const MqttTls &tls) {
     if (tls.caFile.isEmpty())
-        return true;
-    if (!checkTlsFiles(tls, error))
-        return false;
+        return {};
+    if (const auto files = checkTlsFiles(tls); !files)
+        return files;
     const QByteArray ca = QFile::encodeName(tls.caFile);
     const QByteArray cert = QFile::encodeName(tls.certFile);
     const QByteArray key = QFile::encodeName(tls.keyFile);
@@ -93,17 +93,16 @@ bool applyTls(mosquitto *client, const MqttTls &tls, QString *error) {
     if (rc == MOSQ_ERR_SUCCESS)
         rc = mosquitto_tls_insecure_set(client, tls.insecure);
     if (rc != MOSQ_ERR_SUCCESS)
-        *error = Tr::tr("TLS cannot be set up: %1").arg(QString::fromUtf8(mosquitto_strerror(rc)));
-    return rc == MOSQ_ERR_SUCCESS;
+        return failure(Tr::tr("TLS cannot be set up: %1").arg(libraryText(rc)));
+    return {};
 }
 
-bool applyProtocol(mosquitto *client, MqttProtocol protocol, QString *error) {
+Outcome<void> applyProtocol(mosquitto *client, MqttProtocol protocol) {
     const int version = protocol == MqttProtocol::V5 ? MQTT_PROTOCOL_V5 : MQTT_PROTOCOL_V311;
     const int rc = mosquitto_int_option(client, MOSQ_OPT_PROTOCOL_VERSION, version);
     if (rc != MOSQ_ERR_SUCCESS)
-        *error = Tr::tr("The MQTT version cannot be set: %1")
-                     .arg(QString::fromUtf8(mosquitto_strerror(rc)));
-    return rc == MOSQ_ERR_SUCCESS;
+        return failure(Tr::tr("The MQTT version cannot be set: %1").arg(libraryText(rc)));
+    return {};
 }
 
 } // namespace
@@ -119,21 +118,23 @@ QString effectiveClientId(const MqttSettings &settings) {
         .arg(QRandomGenerator::global()->generate64() & 0xffffffffffffULL, 12, 16, QChar(u'0'));
 }
 
-MosquittoHandle createMosquitto(const MqttSettings &settings, void *userData, QString *error) {
+Outcome<MosquittoHandle> createMosquitto(const MqttSettings &settings, void *userData) {
     initialiseLibraryOnce();
     const QByteArray id = effectiveClientId(settings).toUtf8();
     MosquittoHandle client(mosquitto_new(id.constData(), settings.cleanSession, userData));
-    if (!client) {
-        *error = errno == EINVAL
-                     ? Tr::tr("The client id %1 is not accepted.").arg(QString::fromUtf8(id))
-                     : Tr::tr("Out of memory for an MQTT client.");
-        return nullptr;
-    }
-    if (!applyProtocol(client.get(), settings.protocol, error) ||
-        !applyCredentials(client.get(), settings, error) ||
-        !applyWill(client.get(), settings.will, error) ||
-        !applyTls(client.get(), settings.tls, error))
-        return nullptr;
+    if (!client)
+        return failure(errno == EINVAL
+                           ? Tr::tr("The client id %1 is not accepted.").arg(QString::fromUtf8(id))
+                           : Tr::tr("Out of memory for an MQTT client."));
+    // In this order, and no further than the first refusal.
+    const std::function<Outcome<void>()> steps[] = {
+        [&] { return applyProtocol(client.get(), settings.protocol); },
+        [&] { return applyCredentials(client.get(), settings); },
+        [&] { return applyWill(client.get(), settings.will); },
+        [&] { return applyTls(client.get(), settings.tls); }};
+    for (const auto &step : steps)
+        if (const auto applied = step(); !applied)
+            return failure(applied.error());
     return client;
 }
 

@@ -5,6 +5,8 @@
 
 #include "mqttsettings.h"
 
+#include "protocol/outcome.h"
+
 #include <QString>
 #include <memory>
 
@@ -17,9 +19,9 @@ struct MosquittoDeleter {
 };
 using MosquittoHandle = std::unique_ptr<mosquitto, MosquittoDeleter>;
 
-// Null with *error set when a setting is refused. `userData` is what callbacks receive.
-[[nodiscard]] MosquittoHandle createMosquitto(const MqttSettings &settings, void *userData,
-                                              QString *error);
+// The client, or why a setting is refused. `userData` is what callbacks receive.
+[[nodiscard]] protocol::Outcome<MosquittoHandle> createMosquitto(const MqttSettings &settings,
+                                                                 void *userData);
 
 // The client id to use: `settings.clientId`, or a new random one when it is empty.
 [[nodiscard]] QString effectiveClientId(const MqttSettings &settings);

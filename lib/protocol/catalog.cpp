@@ -39,12 +39,11 @@ static QByteArray readResource(const QString &path) {
 const Catalog &Catalog::builtin() {
     static const Catalog catalog = [] {
         initCatalogResources();
-        QString error;
         auto c = load(readResource(QStringLiteral(":/tipscope/catalog/families.json")),
-                      readResource(QStringLiteral(":/tipscope/catalog/commands.json")), &error);
+                      readResource(QStringLiteral(":/tipscope/catalog/commands.json")));
         if (!c)
-            qFatal("embedded command catalog is broken: %s", qPrintable(error));
-        return *c;
+            qFatal("embedded command catalog is broken: %s", qPrintable(c.error()));
+        return std::move(c).value();
     }();
     return catalog;
 }

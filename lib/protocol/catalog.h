@@ -12,6 +12,7 @@
 
 #include "catalogroles.h"
 #include "catalogtext.h"
+#include "outcome.h"
 
 #include <QByteArray>
 #include <QList>
@@ -118,9 +119,9 @@ struct ResolvedCommand {
 
 class Catalog {
 public:
-    // Parses the two JSON documents; on error returns nullopt and says why.
-    [[nodiscard]] static std::optional<Catalog>
-    load(const QByteArray &familiesJson, const QByteArray &commandsJson, QString *error = nullptr);
+    // Parses the two JSON documents; on error says why.
+    [[nodiscard]] static Outcome<Catalog> load(const QByteArray &familiesJson,
+                                               const QByteArray &commandsJson);
     // The catalog embedded in the library. Aborts if the embedded data is broken, which a unit
     // test rules out.
     [[nodiscard]] static const Catalog &builtin();

@@ -277,33 +277,27 @@ bool CatalogLoader::loadCommands(const QJsonObject &root) {
     return true;
 }
 
-static std::optional<QJsonObject> parseObject(const QByteArray &json, const char *what,
-                                              QString *error) {
+static Outcome<QJsonObject> parseObject(const QByteArray &json, const char *what) {
     QJsonParseError pe;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
-    if (pe.error != QJsonParseError::NoError || !doc.isObject()) {
-        if (error)
-            *error = QStringLiteral("%1: %2 at offset %3")
-                         .arg(QLatin1String(what), pe.errorString())
-                         .arg(pe.offset);
-        return std::nullopt;
-    }
+    if (pe.error != QJsonParseError::NoError || !doc.isObject())
+        return failure(QStringLiteral("%1: %2 at offset %3")
+                           .arg(QLatin1String(what), pe.errorString())
+                           .arg(pe.offset));
     return doc.object();
 }
 
-std::optional<Catalog> Catalog::load(const QByteArray &familiesJson, const QByteArray &commandsJson,
-                                     QString *error) {
-    const auto fams = parseObject(familiesJson, "families.json", error);
-    const auto cmds = fams ? parseObject(commandsJson, "commands.json", error) : std::nullopt;
-    if (!fams || !cmds)
-        return std::nullopt;
+Outcome<Catalog> Catalog::load(const QByteArray &familiesJson, const QByteArray &commandsJson) {
+    const auto fams = parseObject(familiesJson, "families.json");
+    if (!fams)
+        return failure(fams.error());
+    const auto cmds = parseObject(commandsJson, "commands.json");
+    if (!cmds)
+        return failure(cmds.error());
     Catalog c;
     CatalogLoader loader(c);
-    if (!loader.loadFamilies(*fams) || !loader.loadCommands(*cmds)) {
-        if (error)
-            *error = loader.error;
-        return std::nullopt;
-    }
+    if (!loader.loadFamilies(*fams) || !loader.loadCommands(*cmds))
+        return failure(loader.error);
     return c;
 }
 

@@ -38,55 +38,45 @@ static bool isPrintable(char c) {
     return c >= 0x20 && c <= 0x7e;
 }
 
-static std::optional<Frame> fail(DecodeEvent::Kind kind, const QString &reason,
-                                 DecodeEvent::Kind *failureKind, QString *why) {
-    if (failureKind)
-        *failureKind = kind;
-    if (why)
-        *why = reason;
-    return std::nullopt;
+static Failure<DecodeFailure> fail(DecodeEvent::Kind kind, const QString &why) {
+    return failure(DecodeFailure{kind, why});
 }
 
-std::optional<Frame> parseFrame(const QByteArray &raw, DecodeEvent::Kind *failureKind,
-                                QString *why) {
+Outcome<Frame, DecodeFailure> parseFrame(const QByteArray &raw) {
     using K = DecodeEvent::Kind;
     const qsizetype n = raw.size();
     if (n < 7 || raw.at(0) != kStx || raw.at(n - 2) != kEtx)
-        return fail(K::FormatError, Tr::tr("not STX…ETX BCC or too short"), failureKind, why);
+        return fail(K::FormatError, Tr::tr("not STX…ETX BCC or too short"));
     const char expected = blockCheck(raw.left(n - 1));
     if (expected != raw.at(n - 1))
-        return fail(K::BccError,
-                    Tr::tr("BCC is %1, expected %2")
-                        .arg(quint8(raw.at(n - 1)), 2, 16, QLatin1Char('0'))
-                        .arg(quint8(expected), 2, 16, QLatin1Char('0')),
-                    failureKind, why);
+        return fail(K::BccError, Tr::tr("BCC is %1, expected %2")
+                                     .arg(quint8(raw.at(n - 1)), 2, 16, QLatin1Char('0'))
+                                     .arg(quint8(expected), 2, 16, QLatin1Char('0')));
 
     const QByteArray body = raw.mid(1, n - 3);
     Frame f;
     qsizetype pos = 0;
     if (isDigit(body.at(0))) {
         if (body.size() < 8 || !isDigit(body.at(1)) || !isDigit(body.at(2)) || !isDigit(body.at(3)))
-            return fail(K::FormatError, Tr::tr("malformed addresses"), failureKind, why);
+            return fail(K::FormatError, Tr::tr("malformed addresses"));
         f.source = body.mid(0, 2).toInt();
         f.target = body.mid(2, 2).toInt();
         pos = 4;
     }
     if (body.size() < pos + 4)
-        return fail(K::FormatError, Tr::tr("too short for header and command"), failureKind, why);
+        return fail(K::FormatError, Tr::tr("too short for header and command"));
     const auto header = headerFromChar(body.at(pos));
     if (!header)
-        return fail(K::FormatError, Tr::tr("unknown header"), failureKind, why);
+        return fail(K::FormatError, Tr::tr("unknown header"));
     f.header = *header;
     f.command = body.mid(pos + 1, 3);
     for (char c : f.command)
         if (!isCommandChar(c))
-            return fail(K::FormatError, Tr::tr("command is not 3 letters or digits"), failureKind,
-                        why);
+            return fail(K::FormatError, Tr::tr("command is not 3 letters or digits"));
     f.data = body.mid(pos + 4);
     for (char c : f.data)
         if (!isPrintable(c))
-            return fail(K::FormatError, Tr::tr("data field is not printable ASCII"), failureKind,
-                        why);
+            return fail(K::FormatError, Tr::tr("data field is not printable ASCII"));
     return f;
 }
 
@@ -159,19 +149,19 @@ void FrameDecoder::flushGarbage(std::vector<DecodeEvent> &out) {
 }
 
 void FrameDecoder::finishCandidate(std::vector<DecodeEvent> &out) {
-    DecodeEvent e;
-    QString why;
-    DecodeEvent::Kind failure = DecodeEvent::Kind::FormatError;
-    if (auto frame = parseFrame(m_candidate, &failure, &why)) {
-        e.kind = DecodeEvent::Kind::Frame;
-        e.frame = std::move(*frame);
-        e.raw = m_candidate;
-        out.push_back(std::move(e));
-        m_candidate.clear();
-        m_state = State::Idle;
+    auto frame = parseFrame(m_candidate);
+    if (!frame) {
+        const DecodeFailure f = frame.error();
+        emitRejected(out, f.kind, f.why);
         return;
     }
-    emitRejected(out, failure, why);
+    DecodeEvent e;
+    e.kind = DecodeEvent::Kind::Frame;
+    e.frame = std::move(frame).value();
+    e.raw = m_candidate;
+    out.push_back(std::move(e));
+    m_candidate.clear();
+    m_state = State::Idle;
 }
 
 void FrameDecoder::emitRejected(std::vector<DecodeEvent> &out, DecodeEvent::Kind kind,

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "frame.h"
+#include "outcome.h"
 
 #include <QByteArrayView>
 #include <vector>
@@ -25,10 +26,14 @@ struct DecodeEvent {
 
 [[nodiscard]] QString decodeEventKindName(DecodeEvent::Kind kind);
 
-// Parses the bytes of one complete candidate (STX ... ETX BCC). On failure returns nullopt and,
-// if `why` is given, fills it with the reason and the kind of failure.
-[[nodiscard]] std::optional<Frame>
-parseFrame(const QByteArray &raw, DecodeEvent::Kind *failureKind = nullptr, QString *why = nullptr);
+// Why a candidate is not a frame: the kind of event the decoder reports it as, and the reason.
+struct DecodeFailure {
+    DecodeEvent::Kind kind = DecodeEvent::Kind::FormatError;
+    QString why;
+};
+
+// Parses the bytes of one complete candidate (STX ... ETX BCC), or says why it is not a frame.
+[[nodiscard]] Outcome<Frame, DecodeFailure> parseFrame(const QByteArray &raw);
 
 class FrameDecoder {
 public:

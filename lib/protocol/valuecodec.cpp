@@ -65,6 +65,12 @@ QString allowedText(const ResolvedCommand &cmd) {
     return {};
 }
 
+static QString refused(const ResolvedCommand &cmd, qint64 value) {
+    return Tr::tr("%1 refused for %2 (%3): allowed is %4")
+        .arg(formatNumber(cmd, value), QString::fromLatin1(cmd.code), catalogText(cmd.spec->name),
+             allowedText(cmd));
+}
+
 QString validate(const ResolvedCommand &cmd, qint64 value) {
     const CommandSpec &s = *cmd.spec;
     const QString code = QString::fromLatin1(cmd.code);
@@ -89,23 +95,20 @@ QString validate(const ResolvedCommand &cmd, qint64 value) {
             return {};
         break;
     }
-    return Tr::tr("%1 refused for %2 (%3): allowed is %4")
-        .arg(formatNumber(cmd, value), code, catalogText(s.name), allowedText(cmd));
+    return refused(cmd, value);
 }
 
-std::optional<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value, QString *error) {
-    const QString why = validate(cmd, value);
-    if (!why.isEmpty()) {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    }
+Outcome<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value) {
+    if (const QString why = validate(cmd, value); !why.isEmpty())
+        return failure(why);
     const CommandSpec &s = *cmd.spec;
     if (s.kind == ValueKind::Action)
         return s.fixedData;
-    if (s.kind == ValueKind::Delay && !s.special.contains(int(value)))
-        return encodeDelay(int(value));
-    return encodeNumber(value);
+    const bool delay = s.kind == ValueKind::Delay && !s.special.contains(int(value));
+    // Only a catalog range wider than the data field lets a valid value fail here.
+    if (const auto field = delay ? encodeDelay(int(value)) : encodeNumber(value))
+        return *field;
+    return failure(refused(cmd, value));
 }
 
 std::optional<Value> decodeAnswer(const ResolvedCommand &cmd, const QByteArray &data) {
@@ -160,33 +163,28 @@ std::optional<qint64> labelled(const QMap<int, QString> &labels, const QString &
     return std::nullopt;
 }
 
-std::optional<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text,
-                                     QString *error) {
+Outcome<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text) {
     const CommandSpec &s = *cmd.spec;
     const QString t = text.trimmed();
-    auto fail = [&](const QString &why) -> std::optional<qint64> {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
     if (s.kind == ValueKind::Action)
         return 0;
     if (auto special = labelled(s.special, t))
-        return special;
+        return *special;
     if (auto choice = labelled(cmd.values, t))
-        return choice;
+        return *choice;
     if (s.kind == ValueKind::Delay) {
         if (auto n = parseNumber(t.toLatin1()); n && s.special.contains(*n))
             return *n;
         if (auto d = parseDelayText(t))
             return *d;
-        return fail(Tr::tr("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(elided(t)));
+        return failure(
+            Tr::tr("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(elided(t)));
     }
     bool ok = false;
     const qint64 v = t.toLongLong(&ok);
     if (!ok)
-        return fail(Tr::tr("'%1' is not a whole number; %2 takes %3")
-                        .arg(elided(t), QString::fromLatin1(cmd.code), allowedText(cmd)));
+        return failure(Tr::tr("'%1' is not a whole number; %2 takes %3")
+                           .arg(elided(t), QString::fromLatin1(cmd.code), allowedText(cmd)));
     return v;
 }
 

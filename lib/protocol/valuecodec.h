@@ -9,6 +9,7 @@
 #pragma once
 
 #include "catalog.h"
+#include "outcome.h"
 
 #include <QString>
 #include <optional>
@@ -29,15 +30,13 @@ struct Value {
 
 // Empty when `value` may be written with `cmd`; otherwise a sentence saying what is allowed.
 [[nodiscard]] QString validate(const ResolvedCommand &cmd, qint64 value);
-// The data field for a write of `value` (validated first); nullopt with `error` set if refused.
-[[nodiscard]] std::optional<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value,
-                                                    QString *error = nullptr);
+// The data field for a write of `value` (validated first), or validate()'s reason if refused.
+[[nodiscard]] Outcome<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value);
 // Decodes the data field of an answer to a read.
 [[nodiscard]] std::optional<Value> decodeAnswer(const ResolvedCommand &cmd, const QByteArray &data);
 // Parses a value typed by a person: "-50", "350", "1.6" or "01.60" for delays, "disabled",
 // an enum label ("Stand", or as the user interface language says it). Numbers are in wire units.
-[[nodiscard]] std::optional<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text,
-                                                   QString *error = nullptr);
+[[nodiscard]] Outcome<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text);
 // The value whose label in `labels` is `text`, in the catalog's English (what scripts type) or
 // in the user interface language (what messages offer), whatever the case.
 [[nodiscard]] std::optional<qint64> labelled(const QMap<int, QString> &labels, const QString &text);

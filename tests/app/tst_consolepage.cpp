@@ -176,9 +176,8 @@ void TestConsolePage::everyExampleFrameThePageShowsDecodes() {
             ++examples;
             const auto bytes = protocol::parseHexBytes(m.captured());
             QVERIFY2(bytes, qPrintable(m.captured()));
-            QString why;
-            QVERIFY2(protocol::parseFrame(*bytes, nullptr, &why),
-                     qPrintable(m.captured() + QStringLiteral(": ") + why));
+            const auto frame = protocol::parseFrame(*bytes);
+            QVERIFY2(frame, qPrintable(m.captured() + QStringLiteral(": ") + frame.error().why));
         }
     }
     QVERIFY2(examples >= 2, qPrintable(QString::number(examples))); // raw hex and the preview

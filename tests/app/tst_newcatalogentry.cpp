@@ -57,9 +57,9 @@ private:
 };
 
 void TestNewCatalogEntry::initTestCase() {
-    QString error;
-    m_catalog = testing::catalogWith(testing::newCommandEntries(), &error);
-    QVERIFY2(m_catalog, qPrintable(error));
+    auto catalog = testing::catalogWith(testing::newCommandEntries());
+    QVERIFY2(catalog, qPrintable(catalog.error()));
+    m_catalog = std::move(catalog).value();
     m_session = std::make_unique<Session>(*m_catalog);
     Session::Settings settings = tipscope::testing::unpacedDemoSettings();
     m_session->connectTo(settings);

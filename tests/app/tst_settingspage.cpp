@@ -163,10 +163,9 @@ void TestSettingsPage::aSavedProfileSaysWhereItWentAndCarriesTheComment() {
     QTRY_VERIFY_WITH_TIMEOUT(m_session->line()->queue().pendingCount() == 0, kConnectMs);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("line 3.json"));
-    QString error;
-    const QString said =
-        m_page->saveProfileTo(path, QStringLiteral("  line 3, lead-free  "), &error);
-    QVERIFY2(!said.isEmpty(), qPrintable(error));
+    const auto saved = m_page->saveProfileTo(path, QStringLiteral("  line 3, lead-free  "));
+    QVERIFY2(saved, qPrintable(saved.error()));
+    const QString said = saved.value();
     QVERIFY2(said.contains(path) && said.contains(st->displayName()), qPrintable(said));
     QVERIFY(m_page->noticeText().contains(path));
     const auto profile = Profile::load(path);
@@ -174,10 +173,9 @@ void TestSettingsPage::aSavedProfileSaysWhereItWentAndCarriesTheComment() {
     QCOMPARE(profile->comment, QStringLiteral("line 3, lead-free"));
     QVERIFY2(said.contains(QString::number(profile->values.size())), qPrintable(said));
 
-    QString failed;
-    QVERIFY(m_page->saveProfileTo(dir.filePath(QStringLiteral("no/such/dir.json")), {}, &failed)
-                .isEmpty());
-    QVERIFY(failed.contains(QStringLiteral("cannot write")));
+    const auto failed = m_page->saveProfileTo(dir.filePath(QStringLiteral("no/such/dir.json")), {});
+    QVERIFY(!failed);
+    QVERIFY(failed.error().contains(QStringLiteral("cannot write")));
 }
 
 void TestSettingsPage::thePortBoxShowsItsWholeText() {

@@ -21,11 +21,11 @@ const QByteArray kHead = "# TipScope chart data, format 1\n"
 const QByteArray kRows = "2026-01-01T00:00:00.000Z,350,350,\n"
                          "2026-01-01T00:00:00.100Z,351,350,\n";
 
-std::unique_ptr<ChartRecording> readBytes(const QByteArray &bytes, QString *error) {
+tipscope::protocol::Outcome<std::unique_ptr<ChartRecording>> readBytes(const QByteArray &bytes) {
     QByteArray copy = bytes;
     QBuffer buffer(&copy);
     buffer.open(QIODevice::ReadOnly);
-    return ChartCsvReader::read(buffer, error);
+    return ChartCsvReader::read(buffer);
 }
 
 } // namespace
@@ -40,13 +40,12 @@ private Q_SLOTS:
 };
 
 void TestBadCsv::initTestCase() {
-    QString error;
-    const auto r = readBytes(kHead + kRows, &error);
+    const auto r = readBytes(kHead + kRows);
     if (!r)
         QSKIP(qPrintable(QStringLiteral("the minimal chart CSV no longer replays (%1); update "
                                         "tests/badinput/tst_badcsv.cpp")
-                             .arg(error)));
-    QCOMPARE(r->rows, 2);
+                             .arg(r.error())));
+    QCOMPARE((*r)->rows, 2);
 }
 
 void TestBadCsv::refusedWholeWithTheLine_data() {
@@ -119,9 +118,9 @@ void TestBadCsv::refusedWholeWithTheLine_data() {
 void TestBadCsv::refusedWholeWithTheLine() {
     QFETCH(QByteArray, csv);
     QFETCH(QString, reason);
-    QString error;
-    const auto r = readBytes(csv, &error);
+    const auto r = readBytes(csv);
     QVERIFY2(!r, "a bad recording was replayed");
+    const QString error = r.error();
     QVERIFY2(error.contains(reason, Qt::CaseInsensitive), qPrintable(error.left(300)));
     QVERIFY(error.size() < 2000);
 }
@@ -134,8 +133,9 @@ void TestBadCsv::aFileOverTheLimitIsRefusedBeforeReading() {
     QVERIFY(f.write(kHead + kRows) > 0);
     QVERIFY(f.resize(ChartCsvReader::kMaxFileBytes + 1));
     f.close();
-    QString error;
-    QVERIFY(!ChartCsvReader::readFile(f.fileName(), &error));
+    const auto r = ChartCsvReader::readFile(f.fileName());
+    QVERIFY(!r);
+    const QString error = r.error();
     QVERIFY2(error.contains(QStringLiteral("MB")), qPrintable(error));
 }
 

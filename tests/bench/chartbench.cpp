@@ -238,7 +238,7 @@ double sessionCpuPercent(int seconds) {
             if (qobject_cast<model::StationModel *>(d))
                 session.scheduler().setVisiblePorts(d, {1, 2, 3, 4});
     });
-    session.connectTo(*demo.sessionSettings(nullptr));
+    session.connectTo(*demo.sessionSettings());
     for (int i = 0; i < 300 && session.state() != model::Session::State::Connected; ++i)
         waitMs(100);
     waitMs(6000); // discovery, the first reading of every setting, the ports heating up

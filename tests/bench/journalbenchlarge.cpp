@@ -97,23 +97,26 @@ QString stationKey(int q) {
     return benchJoint(q % kStations, 0).device.key();
 }
 
-template <typename T> qsizetype sizeOf(const std::optional<QList<T>> &list) {
+// The size of a query's answer; -1, with the reason in `error`, when it failed.
+template <typename T> qsizetype sizeOf(const protocol::Outcome<QList<T>> &list, QString &error) {
+    if (!list)
+        error = list.error();
     return list ? list->size() : -1;
 }
 
 bool jointQueries(const JournalBenchOptions &o, const QString &path) {
     journal::JournalReader reader;
-    QString error;
-    if (!reader.open(path, &error)) {
-        printError(error);
+    if (const auto opened = reader.open(path); !opened) {
+        printError(opened.error());
         return false;
     }
+    QString error;
     timeQueries(QStringLiteral("day_port"), o.queries, [&](int q) {
         journal::JointFilter f;
         f.sinceMs = dayStart(q);
         f.untilMs = *f.sinceMs + kDayMs;
         f.port = q % 4 + 1;
-        return sizeOf(reader.joints(f, &error));
+        return sizeOf(reader.joints(f), error);
     });
     timeQueries(QStringLiteral("week_device_port_newest_1000"), o.queries, [&](int q) {
         journal::JointFilter f;
@@ -122,23 +125,25 @@ bool jointQueries(const JournalBenchOptions &o, const QString &path) {
         f.deviceKey = stationKey(q);
         f.port = q % 4 + 1;
         f.limit = 1000;
-        return sizeOf(reader.joints(f, &error));
+        return sizeOf(reader.joints(f), error);
     });
     timeQueries(QStringLiteral("month_verdict_counts"), qMax(1, o.queries / 5), [&](int q) {
         journal::JointFilter f;
         f.sinceMs = dayStart(q);
         f.untilMs = *f.sinceMs + 30 * kDayMs;
-        const auto counts = reader.verdictCounts(f, &error);
+        const auto counts = reader.verdictCounts(f);
+        if (!counts)
+            error = counts.error();
         return counts ? qsizetype(counts->value(model::JointVerdict::Ok)) : -1;
     });
     timeQueries(QStringLiteral("month_recovery_by_port"), qMax(1, o.queries / 5), [&](int q) {
         journal::JointFilter f;
         f.sinceMs = dayStart(q);
         f.untilMs = *f.sinceMs + 30 * kDayMs;
-        return sizeOf(reader.recoveryByPort(f, &error));
+        return sizeOf(reader.recoveryByPort(f), error);
     });
     timeQueries(QStringLiteral("unsent_first_1000"), o.queries,
-                [&](int) { return sizeOf(reader.unsentJoints(0, 1000, &error)); });
+                [&](int) { return sizeOf(reader.unsentJoints(0, 1000), error); });
     if (!error.isEmpty()) {
         printError(error);
         return false;
@@ -148,17 +153,17 @@ bool jointQueries(const JournalBenchOptions &o, const QString &path) {
 
 bool eventQueries(const JournalBenchOptions &o, const QString &path) {
     journal::JournalReader reader;
-    QString error;
-    if (!reader.open(path, &error)) {
-        printError(error);
+    if (const auto opened = reader.open(path); !opened) {
+        printError(opened.error());
         return false;
     }
+    QString error;
     timeQueries(QStringLiteral("events_day_device"), o.queries, [&](int q) {
         journal::EventFilter f;
         f.sinceMs = dayStart(q);
         f.untilMs = *f.sinceMs + kDayMs;
         f.deviceKey = stationKey(q);
-        return sizeOf(reader.events(f, &error));
+        return sizeOf(reader.events(f), error);
     });
     if (!error.isEmpty()) {
         printError(error);

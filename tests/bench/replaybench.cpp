@@ -140,17 +140,17 @@ Result readAndMeasure(const QString &path, qint64 fileBytes) {
     };
     QElapsedTimer clock;
     clock.start();
-    QString error;
-    auto recording = ChartCsvReader::readFile(path, &error, options);
+    const auto read = ChartCsvReader::readFile(path, options);
     r.seconds = double(clock.nsecsElapsed()) / 1e9;
     r.peakAbove = statusBytes("VmHWM:") - before;
-    if (recording) {
+    if (read) {
+        const model::ChartRecording *recording = read->get();
         r.held = recording->memoryBytes();
         r.text = QStringLiteral("replayed %1 rows, %2 events")
                      .arg(recording->rows)
                      .arg(recording->events.size());
     } else {
-        r.text = QStringLiteral("refused: ") + error;
+        r.text = QStringLiteral("refused: ") + read.error();
     }
     if (r.fileBytes == 0)
         r.fileBytes = r.readBytes;

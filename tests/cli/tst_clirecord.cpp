@@ -14,6 +14,7 @@
 
 using namespace tipscope::testing;
 using tipscope::model::ChartCsvReader;
+using tipscope::model::ChartRecording;
 
 namespace {
 
@@ -51,9 +52,9 @@ void TestCliRecord::theDemoAtWorkIsRecordedAndItsJointsRecoveriesMeasured() {
     const Run r = cli({"--demo-activity", "record", path, "--duration", "25"});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QVERIFY2(r.out.startsWith(QStringLiteral("recorded ")), qPrintable(r.out));
-    QString error;
-    const auto replay = ChartCsvReader::readFile(path, &error);
-    QVERIFY2(replay, qPrintable(error));
+    const auto read = ChartCsvReader::readFile(path);
+    QVERIFY2(read, qPrintable(read.error()));
+    const ChartRecording *replay = read->get();
     QCOMPARE(replay->channels.size(), 5); // four ports and the feeder
     QCOMPARE(replay->channels.first().tool, QStringLiteral("T210"));
     QCOMPARE(replay->channels.first().highAlarm, 500);
@@ -109,8 +110,9 @@ void TestCliRecord::aStationOnASerialLineIsRecorded() {
     const QString path = m_dir.filePath(QStringLiteral("serial.csv"));
     const Run r = cli({"--port", pair.hostEnd(), "record", path, "--duration", "3"});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-    const auto replay = ChartCsvReader::readFile(path, &error);
-    QVERIFY2(replay, qPrintable(error));
+    const auto read = ChartCsvReader::readFile(path);
+    QVERIFY2(read, qPrintable(read.error()));
+    const ChartRecording *replay = read->get();
     QCOMPARE(replay->channels.size(), 2); // the DDE's two ports
     QCOMPARE(replay->channels.first().deviceModel, QStringLiteral("DDE-2C"));
     QVERIFY(replay->telemetry->buffer(QStringLiteral("port1"))->size() >= 3);
@@ -129,8 +131,8 @@ void TestCliRecord::anInterruptedRecordingIsComplete() {
     QCOMPARE(p.exitStatus(), QProcess::NormalExit);
     QCOMPARE(p.exitCode(), 0);
     QVERIFY(QString::fromUtf8(p.readAllStandardOutput()).startsWith(QStringLiteral("recorded ")));
-    QString error;
-    QVERIFY2(ChartCsvReader::readFile(path, &error), qPrintable(error));
+    const auto read = ChartCsvReader::readFile(path);
+    QVERIFY2(read, qPrintable(read.error()));
 }
 
 void TestCliRecord::aHeaderThatCannotBeWrittenWholeLeavesNoFile() {

@@ -55,11 +55,10 @@ bool printable(const QByteArray &field) {
 
 // What a write of `value` puts on the wire, and that it reads back as the same value.
 void checkWrite(const ResolvedCommand &cmd, qint64 value) {
-    QString error;
-    const auto field = encodeWrite(cmd, value, &error);
-    FUZZ_CHECK(field.has_value() == validate(cmd, value).isEmpty());
+    const auto field = encodeWrite(cmd, value);
+    FUZZ_CHECK(field.ok() == validate(cmd, value).isEmpty());
     if (!field) {
-        FUZZ_CHECK(!error.isEmpty());
+        FUZZ_CHECK(!field.error().isEmpty());
         return;
     }
     FUZZ_CHECK(printable(*field) && field->size() <= 32);
@@ -73,10 +72,9 @@ void checkWrite(const ResolvedCommand &cmd, qint64 value) {
 }
 
 void checkUserValue(const ResolvedCommand &cmd, const QString &text) {
-    QString error;
-    const auto value = parseUserValue(cmd, text, &error);
+    const auto value = parseUserValue(cmd, text);
     if (!value) {
-        FUZZ_CHECK(!error.isEmpty());
+        FUZZ_CHECK(!value.error().isEmpty());
         return;
     }
     if (cmd.spec->kind == ValueKind::Delay && !cmd.spec->special.contains(int(*value)))

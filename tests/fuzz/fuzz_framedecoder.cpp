@@ -44,11 +44,11 @@ void collect(Decoded &out, std::vector<DecodeEvent> &&events, int maxFrameSize) 
             (void)e.frame.toString();
         } else {
             FUZZ_CHECK(!e.detail.isEmpty());
-            DecodeEvent::Kind kind = DecodeEvent::Kind::Frame;
-            QString why;
             // A candidate rejected at its BCC byte must be rejected by parseFrame too.
-            if (e.kind == DecodeEvent::Kind::BccError)
-                FUZZ_CHECK(!parseFrame(e.raw, &kind, &why) && kind == e.kind && !why.isEmpty());
+            if (e.kind == DecodeEvent::Kind::BccError) {
+                const auto again = parseFrame(e.raw);
+                FUZZ_CHECK(!again && again.error().kind == e.kind && !again.error().why.isEmpty());
+            }
         }
         (void)toAsciiText(e.raw);
         out.candidates.push_back(std::move(e));

@@ -5,6 +5,7 @@
 // run) or a label shown without catalogText() stays English here and fails.
 #include "../model/simfixture.h"
 #include "i18n/translations.h"
+#include "model/deviceidentity.h"
 #include "model/eventhistorymodel.h"
 #include "model/eventtext.h"
 #include "model/supportreport.h"
@@ -32,6 +33,7 @@ private Q_SLOTS:
     void supportReportTextNamesParametersInGerman();
     void eventKindsAreGermanForPeopleAndEnglishAsData();
     void aRepeatedEventSaysHowOftenInGermanInTheTableAndTheReport();
+    void aDeviceIsDescribedWithTheWordAddressInGerman();
 };
 
 void TestCatalogTranslation::initTestCase() {
@@ -74,11 +76,10 @@ void TestCatalogTranslation::specialLabelsAreAcceptedAndRefusalsExplainedInGerma
     const ResolvedCommand &status = st->parameter("PS1")->spec();
     const TemperatureUnit c = TemperatureUnit::Celsius;
     const ResolvedCommand &delay = st->parameter("D12")->spec();
-    QCOMPARE(parseDisplayText(delay, QStringLiteral("Deaktiviert"), c),
-             std::optional<qint64>(99999));
-    QString error;
-    QVERIFY(!parseUserValue(status, QStringLiteral("Ruhemodus"), &error));
-    QCOMPARE(error,
+    QCOMPARE(parseDisplayText(delay, QStringLiteral("Deaktiviert"), c).value(), 99999);
+    const auto sleep = parseUserValue(status, QStringLiteral("Ruhemodus"));
+    QVERIFY(!sleep);
+    QCOMPARE(sleep.error(),
              QStringLiteral("'Ruhemodus' ist keine ganze Zahl; für PS1 zulässig: einer der Werte "
                             "0 (In Betrieb), 1 (Ablage), 10 (Abkühlen)"));
 }
@@ -165,6 +166,14 @@ void TestCatalogTranslation::aRepeatedEventSaysHowOftenInGermanInTheTableAndTheR
     const QString report =
         supportReportText(QJsonObject{{QStringLiteral("events"), QJsonArray{event}}});
     QVERIFY2(report.contains(repeated), qPrintable(report));
+}
+
+// The other German texts say "Adresse 01"; a bare "an 01" reads as a time or a port.
+void TestCatalogTranslation::aDeviceIsDescribedWithTheWordAddressInGerman() {
+    const DeviceIdentity identity{QStringLiteral("demo"), 1, QStringLiteral("DME-2C"),
+                                  QStringLiteral("9996780")};
+    QCOMPARE(identity.description(),
+             QStringLiteral("DME-2C an Adresse 01 über demo, Software 9996780"));
 }
 
 QTEST_GUILESS_MAIN(TestCatalogTranslation)

@@ -28,22 +28,22 @@ namespace {
 
 QList<StoredJoint> allJoints(const QString &path) {
     JournalReader reader;
-    QString error;
-    if (!reader.open(path, &error))
-        qFatal("%s", qPrintable(error));
+    if (const auto opened = reader.open(path); !opened)
+        qFatal("%s", qPrintable(opened.error()));
     journal::JointFilter filter;
     filter.order = journal::Order::OldestFirst;
-    return reader.joints(filter, &error).value_or(QList<StoredJoint>());
+    const auto joints = reader.joints(filter);
+    return joints ? joints.value() : QList<StoredJoint>();
 }
 
 QList<StoredEvent> allEvents(const QString &path) {
     JournalReader reader;
-    QString error;
-    if (!reader.open(path, &error))
-        qFatal("%s", qPrintable(error));
+    if (const auto opened = reader.open(path); !opened)
+        qFatal("%s", qPrintable(opened.error()));
     journal::EventFilter filter;
     filter.order = journal::Order::OldestFirst;
-    return reader.events(filter, &error).value_or(QList<StoredEvent>());
+    const auto events = reader.events(filter);
+    return events ? events.value() : QList<StoredEvent>();
 }
 
 } // namespace
@@ -271,35 +271,36 @@ void TestJournal::sentMarksTakeRecordsOutOfTheUnsentListInOrder() {
     }
     QVERIFY(journal.flush());
     JournalReader reader;
-    QString error;
-    QVERIFY2(reader.open(m_path, &error), qPrintable(error));
-    const auto unsent = reader.unsentJoints(0, 100, &error);
-    QVERIFY2(unsent, qPrintable(error));
+    const auto opened = reader.open(m_path);
+    QVERIFY2(opened, qPrintable(opened.error()));
+    const auto unsent = reader.unsentJoints(0, 100);
+    QVERIFY2(unsent, qPrintable(unsent.error()));
     QCOMPARE(unsent->size(), 6);
     for (int i = 1; i < 6; ++i)
         QVERIFY(unsent->at(i).id > unsent->at(i - 1).id);
 
     journal.markJointsSent({unsent->at(0).id, unsent->at(3).id});
-    const auto events = reader.unsentEvents(0, 100, &error);
-    QVERIFY2(events, qPrintable(error));
+    const auto events = reader.unsentEvents(0, 100);
+    QVERIFY2(events, qPrintable(events.error()));
     journal.markEventsSent({events->at(5).id});
     QVERIFY(journal.flush());
 
-    const auto after = reader.unsentJoints(0, 100, &error);
-    QVERIFY2(after, qPrintable(error));
+    const auto after = reader.unsentJoints(0, 100);
+    QVERIFY2(after, qPrintable(after.error()));
     QList<qint64> ids;
     for (const StoredJoint &j : *after)
         ids.append(j.id);
     QCOMPARE(ids, (QList<qint64>{unsent->at(1).id, unsent->at(2).id, unsent->at(4).id,
                                  unsent->at(5).id}));
     // Paging: after a row id, at most `limit`.
-    const auto page = reader.unsentJoints(unsent->at(2).id, 1, &error);
-    QVERIFY2(page, qPrintable(error));
+    const auto page = reader.unsentJoints(unsent->at(2).id, 1);
+    QVERIFY2(page, qPrintable(page.error()));
     QCOMPARE(page->size(), 1);
     QCOMPARE(page->first().id, unsent->at(4).id);
-    QCOMPARE(reader.unsentEvents(0, 100, &error)->size(), 5);
+    QCOMPARE(reader.unsentEvents(0, 100)->size(), 5);
     journal::JointFilter all;
-    const auto joints = reader.joints(all, &error);
+    const auto joints = reader.joints(all);
+    QVERIFY2(joints, qPrintable(joints.error()));
     QCOMPARE(
         std::count_if(joints->begin(), joints->end(), [](const StoredJoint &j) { return j.sent; }),
         2);

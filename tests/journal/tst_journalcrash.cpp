@@ -61,10 +61,10 @@ void TestJournalCrash::everyJointReportedDurableSurvivesAKill() {
                  QStringLiteral("ok"));
     }
     journal::JournalReader reader;
-    QString error;
-    QVERIFY2(reader.open(path, &error), qPrintable(error));
-    const auto joints = reader.joints({}, &error);
-    QVERIFY2(joints, qPrintable(error));
+    const auto opened = reader.open(path);
+    QVERIFY2(opened, qPrintable(opened.error()));
+    const auto joints = reader.joints({});
+    QVERIFY2(joints, qPrintable(joints.error()));
     QSet<QUuid> stored;
     for (const journal::StoredJoint &j : *joints)
         stored.insert(j.uid);

@@ -26,12 +26,11 @@ constexpr qint64 kDayMs = 24 * 3600 * 1000;
 
 QSet<QUuid> storedUids(const QString &path) {
     JournalReader reader;
-    QString error;
-    if (!reader.open(path, &error))
-        qFatal("%s", qPrintable(error));
+    if (const auto opened = reader.open(path); !opened)
+        qFatal("%s", qPrintable(opened.error()));
     QSet<QUuid> uids;
-    for (const journal::StoredJoint &j :
-         reader.joints({}, &error).value_or(QList<journal::StoredJoint>()))
+    const auto joints = reader.joints({});
+    for (const journal::StoredJoint &j : joints ? joints.value() : QList<journal::StoredJoint>())
         uids.insert(j.uid);
     return uids;
 }
@@ -114,9 +113,9 @@ void TestJournalErrors::aDamagedFileIsReportedAndLeftUntouched() {
         QTest::qWait(150); // a few retries
     }
     JournalReader reader;
-    QString error;
-    QVERIFY(!reader.open(path, &error));
-    QCOMPARE(error, expected);
+    const auto opened = reader.open(path);
+    QVERIFY(!opened);
+    QCOMPARE(opened.error(), expected);
     QFile f(path);
     QVERIFY(f.open(QIODevice::ReadOnly));
     QCOMPARE(f.readAll(), garbage);
@@ -180,12 +179,12 @@ void TestJournalErrors::aFullJournalHoldsRecordsAndCatchesUpWhenPruningFreesSpac
     for (const QUuid &uid : kept)
         QVERIFY2(stored.contains(uid), qPrintable(uid.toString()));
     JournalReader reader;
-    QString error;
-    QVERIFY2(reader.open(path, &error), qPrintable(error));
+    const auto opened = reader.open(path);
+    QVERIFY2(opened, qPrintable(opened.error()));
     journal::EventFilter filter;
     filter.kinds = {JournalEvent::Kind::Journal};
-    const auto reports = reader.events(filter, &error);
-    QVERIFY2(reports, qPrintable(error));
+    const auto reports = reader.events(filter);
+    QVERIFY2(reports, qPrintable(reports.error()));
     QCOMPARE(reports->size(), 1);
     QCOMPARE(reports->first().record.details.value(QStringLiteral("lost")).toInteger(), lost);
     QVERIFY(reports->first().record.text.contains(QStringLiteral("cannot grow")));

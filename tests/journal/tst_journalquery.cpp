@@ -80,8 +80,8 @@ void TestJournalQuery::initTestCase() {
         journal.append(e);
     }
     QVERIFY(journal.flush());
-    QString error;
-    QVERIFY2(m_reader.open(m_path, &error), qPrintable(error));
+    const auto opened = m_reader.open(m_path);
+    QVERIFY2(opened, qPrintable(opened.error()));
 }
 
 void TestJournalQuery::jointsMatchTheFilterInTheAskedOrder_data() {
@@ -144,17 +144,16 @@ void TestJournalQuery::jointsMatchTheFilterInTheAskedOrder() {
     if (filter.limit > 0)
         wanted = wanted.mid(0, filter.limit);
 
-    QString error;
-    const auto joints = m_reader.joints(filter, &error);
-    QVERIFY2(joints, qPrintable(error));
+    const auto joints = m_reader.joints(filter);
+    QVERIFY2(joints, qPrintable(joints.error()));
     QCOMPARE(joints->size(), wanted.size());
     for (int i = 0; i < wanted.size(); ++i) {
         QVERIFY2(joints->at(i).record == wanted.at(i).joint, qPrintable(QString::number(i)));
         QCOMPARE(joints->at(i).context.workOrder, wanted.at(i).workOrder);
     }
     filter.limit = 0;
-    const std::optional<qint64> count = m_reader.countJoints(filter, &error);
-    QVERIFY2(count, qPrintable(error));
+    const auto count = m_reader.countJoints(filter);
+    QVERIFY2(count, qPrintable(count.error()));
     QCOMPARE(*count, std::count_if(m_joints.begin(), m_joints.end(), expected));
 }
 
@@ -188,9 +187,8 @@ void TestJournalQuery::eventsMatchTheFilter_data() {
 void TestJournalQuery::eventsMatchTheFilter() {
     QFETCH(EventFilter, filter);
     QFETCH(QList<int>, expected);
-    QString error;
-    const auto events = m_reader.events(filter, &error);
-    QVERIFY2(events, qPrintable(error));
+    const auto events = m_reader.events(filter);
+    QVERIFY2(events, qPrintable(events.error()));
     QList<int> numbers;
     for (const journal::StoredEvent &e : *events)
         numbers.append(int((e.record.timeMs - kT0) / kStepMs));
@@ -201,9 +199,8 @@ void TestJournalQuery::verdictsAreCountedOverTheFilteredJoints() {
     JointFilter filter;
     filter.port = 1;
     filter.limit = 1; // ignored by aggregates
-    QString error;
-    const auto counts = m_reader.verdictCounts(filter, &error);
-    QVERIFY2(counts, qPrintable(error));
+    const auto counts = m_reader.verdictCounts(filter);
+    QVERIFY2(counts, qPrintable(counts.error()));
     QMap<JointVerdict, qint64> expected;
     for (const JointVerdict v : model::kJointVerdicts)
         expected.insert(v, 0);
@@ -235,13 +232,13 @@ void TestJournalQuery::recoveryQuantilesArePerDeviceAndPort() {
         QVERIFY(journal.flush());
     }
     JournalReader reader;
-    QString error;
-    QVERIFY2(reader.open(path, &error), qPrintable(error));
+    const auto opened = reader.open(path);
+    QVERIFY2(opened, qPrintable(opened.error()));
     JointFilter range;
     range.sinceMs = kT0;
     range.untilMs = kT0 + 1000;
-    const auto ports = reader.recoveryByPort(range, &error);
-    QVERIFY2(ports, qPrintable(error));
+    const auto ports = reader.recoveryByPort(range);
+    QVERIFY2(ports, qPrintable(ports.error()));
     QCOMPARE(ports->size(), 2);
     const journal::PortRecovery &first = ports->at(0);
     QVERIFY(first.device == sampleDevice(0));
@@ -259,9 +256,8 @@ void TestJournalQuery::recoveryQuantilesArePerDeviceAndPort() {
 }
 
 void TestJournalQuery::everyDeviceWithARecordIsListed() {
-    QString error;
-    const auto devices = m_reader.devices(&error);
-    QVERIFY2(devices, qPrintable(error));
+    const auto devices = m_reader.devices();
+    QVERIFY2(devices, qPrintable(devices.error()));
     QCOMPARE(devices->size(), 2);
     QVERIFY(devices->at(0) == sampleDevice(0));
     QVERIFY(devices->at(1) == sampleDevice(1));
@@ -270,12 +266,13 @@ void TestJournalQuery::everyDeviceWithARecordIsListed() {
 void TestJournalQuery::aMissingFileIsNotCreatedByAReader() {
     const QString path = m_dir.filePath(QStringLiteral("missing.sqlite"));
     JournalReader reader;
-    QString error;
-    QVERIFY(!reader.open(path, &error));
-    QCOMPARE(error, QStringLiteral("There is no journal at %1.").arg(path));
+    const auto opened = reader.open(path);
+    QVERIFY(!opened);
+    QCOMPARE(opened.error(), QStringLiteral("There is no journal at %1.").arg(path));
     QVERIFY(!QFile::exists(path));
-    QVERIFY(!reader.joints({}, &error));
-    QCOMPARE(error, QStringLiteral("No journal is open."));
+    const auto joints = reader.joints({});
+    QVERIFY(!joints);
+    QCOMPARE(joints.error(), QStringLiteral("No journal is open."));
 }
 
 QTEST_GUILESS_MAIN(TestJournalQuery)

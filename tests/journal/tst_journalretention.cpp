@@ -24,11 +24,11 @@ struct Counts {
 
 Counts countRecords(const QString &path) {
     JournalReader reader;
-    QString error;
-    if (!reader.open(path, &error))
+    if (!reader.open(path))
         return {};
-    const auto events = reader.events({}, &error);
-    return {reader.countJoints({}, &error).value_or(-1), events ? events->size() : -1};
+    const auto events = reader.events({});
+    const auto joints = reader.countJoints({});
+    return {joints ? joints.value() : -1, events ? events->size() : -1};
 }
 
 // 40 joints and 30 events 400 days old, 10 joints and 5 events of today.

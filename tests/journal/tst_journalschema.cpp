@@ -122,12 +122,12 @@ void TestJournalSchema::aVersionOneFileIsMigratedKeepingItsRecordsUnsent() {
     QCOMPARE(raw.scalar(QStringLiteral("PRAGMA user_version")).toInt(), 2);
 
     JournalReader reader;
-    QString error;
-    QVERIFY2(reader.open(path, &error), qPrintable(error));
+    const auto opened = reader.open(path);
+    QVERIFY2(opened, qPrintable(opened.error()));
     journal::JointFilter oldestFirst;
     oldestFirst.order = journal::Order::OldestFirst;
-    const auto joints = reader.joints(oldestFirst, &error);
-    QVERIFY2(joints, qPrintable(error));
+    const auto joints = reader.joints(oldestFirst);
+    QVERIFY2(joints, qPrintable(joints.error()));
     QCOMPARE(joints->size(), 3);
     const journal::StoredJoint &first = joints->at(0);
     QCOMPARE(first.id, 1);
@@ -142,11 +142,11 @@ void TestJournalSchema::aVersionOneFileIsMigratedKeepingItsRecordsUnsent() {
     QCOMPARE(joints->at(1).record.verdict, model::JointVerdict::Incomplete);
     QCOMPARE(joints->at(2).id, 3); // AUTOINCREMENT goes on after the old rows
 
-    const auto unsent = reader.unsentJoints(0, 10, &error);
-    QVERIFY2(unsent, qPrintable(error));
+    const auto unsent = reader.unsentJoints(0, 10);
+    QVERIFY2(unsent, qPrintable(unsent.error()));
     QCOMPARE(unsent->size(), 3);
-    const auto events = reader.events({}, &error);
-    QVERIFY2(events, qPrintable(error));
+    const auto events = reader.events({});
+    QVERIFY2(events, qPrintable(events.error()));
     QCOMPARE(events->size(), 1);
     QCOMPARE(events->first().record.details.value(QStringLiteral("read_back")).toString(),
              QStringLiteral("match"));
@@ -191,9 +191,9 @@ void TestJournalSchema::aFileNotOursToChangeIsRefusedAndLeftUntouched() {
         QTest::qWait(200);
     }
     JournalReader reader;
-    QString error;
-    QVERIFY(!reader.open(path, &error));
-    QVERIFY2(error.contains(expected), qPrintable(error));
+    const auto opened = reader.open(path);
+    QVERIFY(!opened);
+    QVERIFY2(opened.error().contains(expected), qPrintable(opened.error()));
     QCOMPARE(fileHash(path), before);
     QVERIFY(!QFile::exists(path + QStringLiteral("-wal")));
 }

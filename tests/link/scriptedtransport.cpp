@@ -38,7 +38,7 @@ void ScriptedTransport::confirm(const QByteArray &bytes) {
     Q_EMIT bytesWritten(bytes.size());
     if (!m_responder)
         return;
-    const std::optional<Frame> request = parseFrame(bytes);
+    const auto request = parseFrame(bytes);
     if (!request)
         return;
     const QByteArray reply = m_responder(*request, writeCount(bytes));
@@ -57,7 +57,7 @@ int ScriptedTransport::writeCount(const QByteArray &bytes) const {
 QList<QByteArray> ScriptedTransport::writtenCommands() const {
     QList<QByteArray> out;
     for (const QByteArray &w : m_writes) {
-        const std::optional<Frame> f = parseFrame(w);
+        const auto f = parseFrame(w);
         out.append(f ? f->command : QByteArray("???"));
     }
     return out;

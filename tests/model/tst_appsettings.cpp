@@ -80,18 +80,19 @@ void TestAppSettings::malformedValuesFallBackToDefaults() {
 
 void TestAppSettings::unusableConnectionsAreRefusedWithAReason() {
     AppSettings a;
-    QString error;
     a.kind = AppSettings::Kind::Serial;
     a.serialPort = QStringLiteral("  ");
-    QVERIFY(!a.sessionSettings(&error));
-    QVERIFY(error.contains(QStringLiteral("serial port")));
+    const auto serial = a.sessionSettings();
+    QVERIFY(!serial);
+    QVERIFY(serial.error().contains(QStringLiteral("serial port")));
     a.kind = AppSettings::Kind::Tcp;
     a.tcpAddress = QStringLiteral("host:99999");
-    QVERIFY(!a.sessionSettings(&error));
-    QVERIFY(error.contains(QStringLiteral("HOST:PORT")));
+    const auto tcp = a.sessionSettings();
+    QVERIFY(!tcp);
+    QVERIFY(tcp.error().contains(QStringLiteral("HOST:PORT")));
     a.kind = AppSettings::Kind::Demo;
-    const auto demo = a.sessionSettings(&error);
-    QVERIFY(demo);
+    const auto demo = a.sessionSettings();
+    QVERIFY2(demo, qPrintable(demo.error()));
     QVERIFY(demo->demoActivity); // the GUI's demo is at work, so its charts show something
 }
 

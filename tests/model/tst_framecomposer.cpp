@@ -109,7 +109,7 @@ void TestFrameComposer::composeEncodesWhatCanBeEncoded() {
     QVERIFY2(!draft.warning, qPrintable(draft.hint));
     QVERIFY(!draft.hint.isEmpty()); // the command's name and description
     QCOMPARE(draft.frame.encode().toHex().toUpper(), hex);
-    QVERIFY(protocol::parseFrame(draft.frame.encode()).has_value());
+    QVERIFY(protocol::parseFrame(draft.frame.encode()).ok());
 }
 
 void TestFrameComposer::refusalsSayWhyNothingCanBeSent_data() {
@@ -353,9 +353,8 @@ void TestFrameComposer::rawHexSaysWhatTheBytesAre() {
 void TestFrameComposer::theRawHexExampleIsAValidReadOfTheModelName() {
     const auto bytes = protocol::parseHexBytes(FrameComposer::exampleHex());
     QVERIFY(bytes);
-    QString why;
-    const auto frame = protocol::parseFrame(*bytes, nullptr, &why);
-    QVERIFY2(frame, qPrintable(why));
+    const auto frame = protocol::parseFrame(*bytes);
+    QVERIFY2(frame, qPrintable(frame.error().why));
     QCOMPARE(*frame, protocol::Frame::read("SMN").addressed(0, 1));
 }
 

@@ -1,6 +1,7 @@
 // Session end to end: it identifies a device at an address the probe does not try by asking
-// the catalog's model-name command, records port and feeder samples from the values their roles
-// name, and builds its models from the catalog it was given. Its devices know whether the line
+// the catalog's model-name command (and says why when the device refuses to name itself), records
+// port and feeder samples from the values their roles name, and builds its models from the catalog
+// it was given. Its devices know whether the line
 // is up, and a write the lost line refused is no longer an error once the line is back.
 #include "model/session.h"
 
@@ -24,6 +25,17 @@ Session::Settings demoSettings() {
     return settings;
 }
 
+// Settings for the device at `address` of the tipscope-sim serving at `where` ("HOST:PORT").
+Session::Settings simSettings(const QString &where, int address) {
+    Session::Settings settings;
+    settings.line.kind = link::LineSettings::Kind::Tcp;
+    settings.line.tcpHost = where.section(QLatin1Char(':'), 0, 0);
+    settings.line.tcpPort = quint16(where.section(QLatin1Char(':'), 1).toUInt());
+    settings.addressing = Session::Addressing::With;
+    settings.targetAddress = address;
+    return settings;
+}
+
 qint32 lastValue(const TelemetryBuffer &buffer, const QString &series) {
     return buffer.valueAt(buffer.seriesIndex(series), buffer.lastTime()).value().value;
 }
@@ -33,6 +45,7 @@ class TestSession : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void aDeviceAtAnAddressNoProbeTriesIsIdentifiedByItsModelName();
+    void aDeviceThatRefusesToNameItselfIsReportedWithItsNak();
     void samplesCarryTheValuesTheirRolesName();
     void modelsAreBuiltFromTheSessionsCatalog();
     void aLostLineMakesEveryValueStaleUntilItIsBack();
@@ -48,18 +61,31 @@ void TestSession::aDeviceAtAnAddressNoProbeTriesIsIdentifiedByItsModelName() {
                   &error);
     QVERIFY2(!where.isEmpty(), qPrintable(error));
     Session session;
-    Session::Settings settings;
-    settings.line.kind = link::LineSettings::Kind::Tcp;
-    settings.line.tcpHost = where.section(QLatin1Char(':'), 0, 0);
-    settings.line.tcpPort = quint16(where.section(QLatin1Char(':'), 1).toUInt());
-    settings.addressing = Session::Addressing::With;
-    settings.targetAddress = 42;
-    session.connectTo(settings);
+    session.connectTo(simSettings(where, 42));
     QTRY_VERIFY_WITH_TIMEOUT(session.state() == Session::State::Connected, kConnectMs);
     QVERIFY(session.station());
     QCOMPARE(session.station()->family(), QStringLiteral("DDE"));
     QCOMPARE(session.station()->address(), std::optional<int>(42));
     QCOMPARE(session.station()->info().model, QStringLiteral("DDE-2C"));
+}
+
+void TestSession::aDeviceThatRefusesToNameItselfIsReportedWithItsNak() {
+    testing::SimProcess sim;
+    QString error;
+    const QString where =
+        sim.start({QStringLiteral("--model"), QStringLiteral("DME"), QStringLiteral("--nak"),
+                   QStringLiteral("4"), QStringLiteral("--nak-for"), QStringLiteral("SMN"),
+                   QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:0")},
+                  &error);
+    QVERIFY2(!where.isEmpty(), qPrintable(error));
+    Session session;
+    session.connectTo(simSettings(where, 1));
+    QTRY_VERIFY_WITH_TIMEOUT(session.state() == Session::State::Connected, kConnectMs);
+    QVERIFY(session.devices().isEmpty());
+    const QString text = session.stateText();
+    QVERIFY2(text.contains(QStringLiteral("the device at address 01 did not identify itself")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("NAK 00004")), qPrintable(text));
 }
 
 void TestSession::samplesCarryTheValuesTheirRolesName() {
@@ -79,9 +105,8 @@ void TestSession::samplesCarryTheValuesTheirRolesName() {
 }
 
 void TestSession::modelsAreBuiltFromTheSessionsCatalog() {
-    QString error;
-    const auto catalog = testing::catalogWith(testing::newCommandEntries(), &error);
-    QVERIFY2(catalog, qPrintable(error));
+    const auto catalog = testing::catalogWith(testing::newCommandEntries());
+    QVERIFY2(catalog, qPrintable(catalog.error()));
     Session session(*catalog);
     session.connectTo(demoSettings());
     QTRY_VERIFY_WITH_TIMEOUT(session.station() && session.feeder(), kConnectMs);

@@ -155,9 +155,8 @@ void TestStationModel::errorAlarmAndStatusChangesReachTheEventLog() {
 }
 
 void TestStationModel::anotherCatalogsEntriesBecomeParameters() {
-    QString error;
-    const auto catalog = catalogWith(newCommandEntries(), &error);
-    QVERIFY2(catalog, qPrintable(error));
+    const auto catalog = catalogWith(newCommandEntries());
+    QVERIFY2(catalog, qPrintable(catalog.error()));
     SimFixture f(singleDevice(QStringLiteral("DME")));
     StationModel st(f.line->queue(), SimFixture::infoOf(*f.simLine->devices().first()), *catalog);
     QCOMPARE(&st.catalog(), &*catalog);

@@ -42,9 +42,8 @@ void TstMqttSecret::passwordIsTheFilesFirstLine() {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("password"));
     QVERIFY(writeFile(path, "pa ss:word\r\nsecond line\n"));
-    QString error;
-    const auto secret = readSecretFile(path, &error);
-    QVERIFY2(secret, qPrintable(error));
+    const auto secret = readSecretFile(path);
+    QVERIFY2(secret, qPrintable(secret.error()));
     QCOMPARE(*secret, QByteArray("pa ss:word"));
 }
 
@@ -63,25 +62,25 @@ void TstMqttSecret::unusablePasswordFilesAreRefusedByName() {
     const QString path = dir.filePath(QStringLiteral("password"));
     if (!content.isNull())
         QVERIFY(writeFile(path, content));
-    QString error;
-    QVERIFY(!readSecretFile(path, &error));
-    QVERIFY2(error.contains(path) && error.contains(reason), qPrintable(error));
+    const auto secret = readSecretFile(path);
+    QVERIFY(!secret);
+    QVERIFY2(secret.error().contains(path) && secret.error().contains(reason),
+             qPrintable(secret.error()));
 }
 
 void TstMqttSecret::passwordComesFromTheEnvironment() {
     qputenv("TIPSCOPE_TEST_MQTT_PASSWORD", "from-env\n");
-    QString error;
-    const auto secret =
-        readSecretEnvironment(QStringLiteral("TIPSCOPE_TEST_MQTT_PASSWORD"), &error);
+    const auto secret = readSecretEnvironment(QStringLiteral("TIPSCOPE_TEST_MQTT_PASSWORD"));
     qunsetenv("TIPSCOPE_TEST_MQTT_PASSWORD");
-    QVERIFY2(secret, qPrintable(error));
+    QVERIFY2(secret, qPrintable(secret.error()));
     QCOMPARE(*secret, QByteArray("from-env"));
 }
 
 void TstMqttSecret::unsetEnvironmentVariableIsRefusedByName() {
-    QString error;
-    QVERIFY(!readSecretEnvironment(QStringLiteral("TIPSCOPE_TEST_NO_SUCH_VARIABLE"), &error));
-    QVERIFY2(error.contains(QLatin1String("TIPSCOPE_TEST_NO_SUCH_VARIABLE")), qPrintable(error));
+    const auto secret = readSecretEnvironment(QStringLiteral("TIPSCOPE_TEST_NO_SUCH_VARIABLE"));
+    QVERIFY(!secret);
+    QVERIFY2(secret.error().contains(QLatin1String("TIPSCOPE_TEST_NO_SUCH_VARIABLE")),
+             qPrintable(secret.error()));
 }
 
 void TstMqttSecret::passwordNeverAppearsInLogsOrErrors() {

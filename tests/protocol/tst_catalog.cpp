@@ -112,16 +112,14 @@ std::optional<QString> adviceFor(const Catalog &cat, const QString &family, int 
 
 // A catalog with one family X, whose station errors (read with SER) are the table "errors" and
 // whose advice tables are `advice`.
-std::optional<Catalog> catalogWithAdvice(const QByteArray &advice, QString *error) {
+Outcome<Catalog> catalogWithAdvice(const QByteArray &advice) {
     const QByteArray fams =
         R"({"families":{"X":{"kind":"station","stationErrors":"errors"}},"units":{"none":{}},)"
         R"("tables":{"errors":{"0":"OK","1":"one","2":"two","3":"three"},"advice":)" +
         advice + "}}";
     return Catalog::load(
-        fams,
-        R"({"commands":[{"code":"SER","access":"r","kind":"enum","families":["X"],)"
-        R"("table":"$stationErrors","group":"errors","role":"error"}]})",
-        error);
+        fams, R"({"commands":[{"code":"SER","access":"r","kind":"enum","families":["X"],)"
+              R"("table":"$stationErrors","group":"errors","role":"error"}]})");
 }
 } // namespace
 
@@ -360,13 +358,11 @@ void TestCatalog::everyAdviceTextIsWrittenOnceInTheCatalog() {
 }
 
 void TestCatalog::adviceTakenFromAnotherTableFollowsTheChainAndKeepsItsOwnTexts() {
-    QString error;
     const auto cat = catalogWithAdvice(
         R"({"errors":{"adviceFrom":"middle","2":"own two"},)"
         R"("middle":{"adviceFrom":"base","1":"middle one"},)"
-        R"("base":{"1":"base one","2":"base two","3":"base three","other":"unlisted"}})",
-        &error);
-    QVERIFY2(cat, qPrintable(error));
+        R"("base":{"1":"base one","2":"base two","3":"base three","other":"unlisted"}})");
+    QVERIFY2(cat, qPrintable(cat.error()));
     QCOMPARE(adviceFor(*cat, "X", 0, 1).value_or("none"), QStringLiteral("middle one"));
     QCOMPARE(adviceFor(*cat, "X", 0, 2).value_or("none"), QStringLiteral("own two"));
     QCOMPARE(adviceFor(*cat, "X", 0, 3).value_or("none"), QStringLiteral("base three"));
@@ -396,9 +392,9 @@ void TestCatalog::adviceFromNoTableOrFromItselfIsRefusedWithAReason_data() {
 void TestCatalog::adviceFromNoTableOrFromItselfIsRefusedWithAReason() {
     QFETCH(QByteArray, advice);
     QFETCH(QString, reason);
-    QString error;
-    QVERIFY(!catalogWithAdvice(advice, &error));
-    QCOMPARE(error, reason);
+    const auto cat = catalogWithAdvice(advice);
+    QVERIFY(!cat);
+    QCOMPARE(cat.error(), reason);
 }
 
 void TestCatalog::validationSaysWhatIsAllowed() {
@@ -425,17 +421,16 @@ void TestCatalog::validationSaysWhatIsAllowed() {
 }
 
 void TestCatalog::malformedCatalogDataIsRefusedWithAReason() {
-    QString error;
-    QVERIFY(!Catalog::load("{", "{}", &error));
-    QVERIFY(error.contains("families.json"));
-    error.clear();
+    const auto broken = Catalog::load("{", "{}");
+    QVERIFY(!broken);
+    QVERIFY(broken.error().contains("families.json"));
     const QByteArray fams = R"({"families":{"X":{"kind":"station"}},"units":{"none":{}}})";
+    const auto tooLong =
+        Catalog::load(fams, R"({"commands":[{"code":"TOOLONG","access":"r","kind":"number"}]})");
+    QVERIFY(!tooLong);
+    QVERIFY(tooLong.error().contains("3 characters"));
     QVERIFY(!Catalog::load(
-        fams, R"({"commands":[{"code":"TOOLONG","access":"r","kind":"number"}]})", &error));
-    QVERIFY(error.contains("3 characters"));
-    QVERIFY(!Catalog::load(
-        fams, R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["Y"]}]})",
-        &error));
+        fams, R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["Y"]}]})"));
 }
 
 void TestCatalog::aRoleFindsOneValueAndOneActionPerPort() {
@@ -552,25 +547,20 @@ void TestCatalog::partialCountersPairWithATotalAndAResetButton() {
 
 void TestCatalog::unknownRolesAndGroupsAreRefusedWithAReason() {
     const QByteArray fams = R"({"families":{"X":{"kind":"station"}},"units":{"none":{}}})";
-    QString error;
-    QVERIFY(
-        Catalog::load(fams,
-                      R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["X"],)"
-                      R"("group":"counter","role":"power"}]})",
-                      &error));
-    QVERIFY(!Catalog::load(
-        fams,
-        R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["X"],)"
-        R"("group":"counter","role":"tipTemp"}]})",
-        &error));
-    QVERIFY2(error.contains("unknown role 'tipTemp'"), qPrintable(error));
-    error.clear();
-    QVERIFY(!Catalog::load(
-        fams,
-        R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["X"],)"
-        R"("group":"counters"}]})",
-        &error));
-    QVERIFY2(error.contains("unknown group 'counters'"), qPrintable(error));
+    const auto known = Catalog::load(
+        fams, R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["X"],)"
+              R"("group":"counter","role":"power"}]})");
+    QVERIFY2(known, qPrintable(known.error()));
+    const auto role = Catalog::load(
+        fams, R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["X"],)"
+              R"("group":"counter","role":"tipTemp"}]})");
+    QVERIFY(!role);
+    QVERIFY2(role.error().contains("unknown role 'tipTemp'"), qPrintable(role.error()));
+    const auto group = Catalog::load(
+        fams, R"({"commands":[{"code":"AAA","access":"r","kind":"number","families":["X"],)"
+              R"("group":"counters"}]})");
+    QVERIFY(!group);
+    QVERIFY2(group.error().contains("unknown group 'counters'"), qPrintable(group.error()));
 }
 
 void TestCatalog::rolesAndGroupsReadBackTheirNames() {

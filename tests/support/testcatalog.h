@@ -21,17 +21,15 @@ inline QByteArray builtinCatalogFile(const char *name) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
-// The built-in catalog plus `entries` (objects as in commands.json); nullopt and a test failure
-// message in `error` when the result does not load.
-inline std::optional<protocol::Catalog> catalogWith(const QList<QJsonObject> &entries,
-                                                    QString *error) {
+// The built-in catalog plus `entries` (objects as in commands.json), or why it does not load.
+inline protocol::Outcome<protocol::Catalog> catalogWith(const QList<QJsonObject> &entries) {
     QJsonObject commands = QJsonDocument::fromJson(builtinCatalogFile("commands.json")).object();
     QJsonArray list = commands.value(QLatin1String("commands")).toArray();
     for (const QJsonObject &e : entries)
         list.append(e);
     commands.insert(QLatin1String("commands"), list);
     return protocol::Catalog::load(builtinCatalogFile("families.json"),
-                                   QJsonDocument(commands).toJson(), error);
+                                   QJsonDocument(commands).toJson());
 }
 
 // Entries the built-in catalog does not have: a station setting, a port counter, and a feeder

@@ -325,23 +325,18 @@ void SettingsPage::saveProfile() {
         QLineEdit::Normal, QString(), &ok);
     if (!ok)
         return;
-    QString error;
-    const QString done = saveProfileTo(path, comment, &error);
-    if (done.isEmpty())
-        QMessageBox::critical(this, tr("Save profile"), error);
+    if (const auto done = saveProfileTo(path, comment); !done)
+        QMessageBox::critical(this, tr("Save profile"), done.error());
 }
 
-QString SettingsPage::saveProfileTo(const QString &path, const QString &comment, QString *error) {
-    if (!m_device) {
-        *error = tr("no device is selected");
-        return {};
-    }
+protocol::Outcome<QString> SettingsPage::saveProfileTo(const QString &path,
+                                                       const QString &comment) {
+    if (!m_device)
+        return protocol::failure(tr("no device is selected"));
     Profile p = Profile::capture(*m_device);
     p.comment = comment.trimmed();
-    if (const auto saved = p.save(path); !saved.ok()) {
-        *error = saved.error();
-        return {};
-    }
+    if (const auto saved = p.save(path); !saved.ok())
+        return protocol::failure(saved.error());
     m_saved = tr("✓ Profile saved: %n setting(s) of %1 in %2", nullptr, int(p.values.size()))
                   .arg(m_device->displayName(), QDir::toNativeSeparators(path));
     updateButtons();

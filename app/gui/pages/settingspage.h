@@ -12,6 +12,8 @@
 
 #include "page.h"
 
+#include "protocol/outcome.h"
+
 class QComboBox;
 class QLabel;
 class QPushButton;
@@ -41,8 +43,8 @@ public:
     [[nodiscard]] ParameterEditor *editorFor(const QByteArray &code) const;
     [[nodiscard]] int editedCount() const;
     // Saves the device's settings as a profile with `comment`; the confirmation shown (where it
-    // went, how many settings), or empty with `error` set.
-    QString saveProfileTo(const QString &path, const QString &comment, QString *error);
+    // went, how many settings), or why it was not saved.
+    protocol::Outcome<QString> saveProfileTo(const QString &path, const QString &comment);
     // What the page says under its buttons (why some are off, the last profile saved).
     [[nodiscard]] QString noticeText() const;
     // The buttons, for tests: "apply", "revert", "refresh", "save", "actions", "profiles".

@@ -16,6 +16,9 @@
 
 namespace tipscope::model {
 
+using protocol::failure;
+using protocol::Outcome;
+
 namespace {
 struct Tr {
     Q_DECLARE_TR_FUNCTIONS(ChartCsvReader)
@@ -58,71 +61,61 @@ private:
 };
 
 // Opens `path` for streaming; a special file without blocking in open() (a FIFO without a
-// writer would block there, out of reach of a cancel). The waiter for its reads, or nullopt with
-// `why` set.
-std::optional<Waiter> openForStreaming(QFile &file, const QFileInfo &info, QString *why) {
+// writer would block there, out of reach of a cancel). The waiter for its reads, or why not.
+Outcome<Waiter> openForStreaming(QFile &file, const QFileInfo &info) {
     file.setFileName(info.filePath());
 #ifdef Q_OS_UNIX
     if (info.exists() && !info.isFile() && !info.isDir()) {
         const int fd = ::open(QFile::encodeName(info.filePath()).constData(),
                               O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-        if (fd < 0) {
-            *why = QString::fromLocal8Bit(std::strerror(errno));
-            return std::nullopt;
-        }
+        if (fd < 0)
+            return failure(QString::fromLocal8Bit(std::strerror(errno)));
         if (!file.open(fd, QIODevice::ReadOnly | QIODevice::Unbuffered, QFile::AutoCloseHandle)) {
             ::close(fd);
-            *why = file.errorString();
-            return std::nullopt;
+            return failure(file.errorString());
         }
         return Waiter(fd);
     }
 #endif
-    if (!file.open(QIODevice::ReadOnly)) {
-        *why = file.errorString();
-        return std::nullopt;
-    }
+    if (!file.open(QIODevice::ReadOnly))
+        return failure(file.errorString());
     return Waiter();
 }
 
-std::optional<ChartRecordingData> parse(QIODevice &device, const Waiter &waiter, QString *error,
-                                        const ChartCsvReader::Options &options) {
+Outcome<ChartRecordingData> parse(QIODevice &device, const Waiter &waiter,
+                                  const ChartCsvReader::Options &options) {
     ChartCsvParser parser;
     qint64 total = 0;
     const auto keepGoing = [&] { return !options.progress || options.progress(total); };
-    const auto failed = [&](const QString &why) {
-        *error = why;
-        return std::nullopt;
-    };
     QByteArray chunk(ChartCsvReader::kChunkBytes, Qt::Uninitialized);
     for (;;) {
         if (!waiter.waitForData(keepGoing))
-            return failed(ChartCsvReader::cancelledText());
+            return failure(ChartCsvReader::cancelledText());
         // One byte past the limit at most: enough to know the file is over it.
         const qint64 want = qMin<qint64>(chunk.size(), options.maxBytes + 1 - total);
         const qint64 n = device.read(chunk.data(), want);
         if (n < 0)
-            return failed(device.errorString());
+            return failure(device.errorString());
         if (n == 0)
             break;
         total += n;
         if (total > options.maxBytes)
-            return failed(tooLarge(options.maxBytes));
+            return failure(tooLarge(options.maxBytes));
         if (!parser.feed(chunk.constData(), n))
-            return failed(parser.error());
+            return failure(parser.error());
         if (parser.heldBytes() > 2 * total + ChartCsvReader::kMemorySlackBytes) {
             parser.fail(Tr::tr("its samples take %1 MB of memory after %2 MB read, more than "
                                "replay allows (twice the file's size); a recording TipScope "
                                "writes takes far less")
                             .arg(parser.heldBytes() >> 20)
                             .arg(total >> 20));
-            return failed(parser.error());
+            return failure(parser.error());
         }
         if (!keepGoing())
-            return failed(ChartCsvReader::cancelledText());
+            return failure(ChartCsvReader::cancelledText());
     }
     if (!parser.finish())
-        return failed(parser.error());
+        return failure(parser.error());
     ChartRecordingData data = parser.take();
     data.recording->bytes = total;
     return data;
@@ -151,37 +144,43 @@ QString ChartCsvReader::cancelledText() {
     return Tr::tr("reading was cancelled");
 }
 
-std::unique_ptr<ChartRecording> ChartCsvReader::read(QIODevice &device, QString *error,
-                                                     const Options &options) {
-    QString ignored;
-    auto data = parse(device, Waiter(), error ? error : &ignored, options);
-    return data ? data->assemble() : nullptr;
+// The recording assembled in the calling thread, or the reason `data` has.
+static Outcome<std::unique_ptr<ChartRecording>> assembled(Outcome<ChartRecordingData> data) {
+    if (!data)
+        return failure(data.error());
+    return std::move(data).value().assemble();
 }
 
-std::optional<ChartRecordingData> ChartCsvReader::readFileData(const QString &path, QString *error,
-                                                               const Options &options) {
-    QString why;
+Outcome<std::unique_ptr<ChartRecording>> ChartCsvReader::read(QIODevice &device,
+                                                              const Options &options) {
+    return assembled(parse(device, Waiter(), options));
+}
+
+Outcome<ChartRecordingData> ChartCsvReader::readFileData(const QString &path,
+                                                         const Options &options) {
     const QFileInfo info(path);
-    QFile file;
-    std::optional<ChartRecordingData> result;
+    const auto named = [&info](const QString &why) {
+        return failure(info.fileName() + QStringLiteral(", ") + why);
+    };
     // A regular file over the limit is refused at once; the limit also applies to the bytes
     // read, for files whose size says nothing (FIFOs, /proc) or that grow while read.
-    if (info.isFile() && info.size() > options.maxBytes) {
-        why = Tr::tr("the file is %1 MB; replay reads files up to %2 MB")
-                  .arg(info.size() >> 20)
-                  .arg(options.maxBytes >> 20);
-    } else if (const auto waiter = openForStreaming(file, info, &why)) {
-        result = parse(file, *waiter, &why, options);
-    }
-    if (!result && error)
-        *error = info.fileName() + QStringLiteral(", ") + why;
+    if (info.isFile() && info.size() > options.maxBytes)
+        return named(Tr::tr("the file is %1 MB; replay reads files up to %2 MB")
+                         .arg(info.size() >> 20)
+                         .arg(options.maxBytes >> 20));
+    QFile file;
+    const auto waiter = openForStreaming(file, info);
+    if (!waiter)
+        return named(waiter.error());
+    auto result = parse(file, *waiter, options);
+    if (!result)
+        return named(result.error());
     return result;
 }
 
-std::unique_ptr<ChartRecording> ChartCsvReader::readFile(const QString &path, QString *error,
-                                                         const Options &options) {
-    auto data = readFileData(path, error, options);
-    return data ? data->assemble() : nullptr;
+Outcome<std::unique_ptr<ChartRecording>> ChartCsvReader::readFile(const QString &path,
+                                                                  const Options &options) {
+    return assembled(readFileData(path, options));
 }
 
 } // namespace tipscope::model

@@ -24,6 +24,7 @@
 #include "model/chart/chartseries.h"
 
 #include "model/telemetry/telemetry.h"
+#include "protocol/outcome.h"
 
 #include <functional>
 #include <memory>
@@ -82,15 +83,15 @@ public:
     static constexpr qint64 kMemorySlackBytes = 8 << 20;
     static constexpr int kChunkBytes = 64 * 1024;
 
-    // nullptr with `error` set ("recording.csv, line 12: ...") when the file cannot be replayed.
-    [[nodiscard]] static std::unique_ptr<ChartRecording>
-    readFile(const QString &path, QString *error, const Options &options = {});
-    // The same from an open device; `error` has no file name.
-    [[nodiscard]] static std::unique_ptr<ChartRecording> read(QIODevice &device, QString *error,
-                                                              const Options &options = {});
+    // The recording, or why the file cannot be replayed ("recording.csv, line 12: ...").
+    [[nodiscard]] static protocol::Outcome<std::unique_ptr<ChartRecording>>
+    readFile(const QString &path, const Options &options = {});
+    // The same from an open device; the reason has no file name.
+    [[nodiscard]] static protocol::Outcome<std::unique_ptr<ChartRecording>>
+    read(QIODevice &device, const Options &options = {});
     // readFile() but for assemble(), for a thread other than the one that shows the recording.
-    [[nodiscard]] static std::optional<ChartRecordingData>
-    readFileData(const QString &path, QString *error, const Options &options = {});
+    [[nodiscard]] static protocol::Outcome<ChartRecordingData>
+    readFileData(const QString &path, const Options &options = {});
     // The error of a read that Options::progress cancelled.
     [[nodiscard]] static QString cancelledText();
 };

@@ -60,7 +60,11 @@ void RecordingLoader::start(const QString &path, qint64 maxBytes) {
             j->bytes = bytes;
             return !j->cancel;
         };
-        job->data = ChartCsvReader::readFileData(job->path, &job->error, options);
+        auto read = ChartCsvReader::readFileData(job->path, options);
+        if (read)
+            job->data = std::move(read).value();
+        else
+            job->error = read.error();
     });
     // Emitted in the new thread: queued to this one.
     connect(m_thread, &QThread::finished, this, &RecordingLoader::onThreadFinished);

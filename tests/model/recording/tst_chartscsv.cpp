@@ -120,9 +120,9 @@ void TestChartsCsv::exportReadsBackExactlyForReplay() {
     QVERIFY(text.contains(QStringLiteral("\n2023-11-14T22:13:20.000Z,")));
 
     file.seek(0);
-    QString error;
-    const auto replay = ChartCsvReader::read(file, &error);
-    QVERIFY2(replay, qPrintable(error));
+    const auto read = ChartCsvReader::read(file);
+    QVERIFY2(read, qPrintable(read.error()));
+    const ChartRecording *replay = read->get();
     QCOMPARE(replay->software, QStringLiteral("TipScope 9.9"));
     QCOMPARE(replay->channels.size(), 3);
     for (int i = 0; i < 3; ++i) {
@@ -199,9 +199,9 @@ void TestChartsCsv::malformedFilesAreRefusedWithAClearError() {
     QFETCH(QString, expected);
     QBuffer file(&content);
     QVERIFY(file.open(QIODevice::ReadOnly));
-    QString error;
-    QVERIFY(!ChartCsvReader::read(file, &error));
-    QVERIFY2(error.contains(expected), qPrintable(error));
+    const auto read = ChartCsvReader::read(file);
+    QVERIFY(!read);
+    QVERIFY2(read.error().contains(expected), qPrintable(read.error()));
 }
 
 void TestChartsCsv::aHugeFileIsRefusedBeforeItIsRead() {
@@ -211,12 +211,15 @@ void TestChartsCsv::aHugeFileIsRefusedBeforeItIsRead() {
     QVERIFY(file.open(QIODevice::WriteOnly));
     QVERIFY(file.resize(ChartCsvReader::kMaxFileBytes + 1)); // sparse: no disk used
     file.close();
-    QString error;
-    QVERIFY(!ChartCsvReader::readFile(path, &error));
-    QVERIFY2(error.startsWith(QStringLiteral("huge.csv, ")), qPrintable(error));
-    QVERIFY2(error.contains(QStringLiteral("replay reads files up to 1024 MB")), qPrintable(error));
-    QVERIFY(!ChartCsvReader::readFile(dir.filePath(QStringLiteral("missing.csv")), &error));
-    QVERIFY2(error.startsWith(QStringLiteral("missing.csv, ")), qPrintable(error));
+    const auto huge = ChartCsvReader::readFile(path);
+    QVERIFY(!huge);
+    QVERIFY2(huge.error().startsWith(QStringLiteral("huge.csv, ")), qPrintable(huge.error()));
+    QVERIFY2(huge.error().contains(QStringLiteral("replay reads files up to 1024 MB")),
+             qPrintable(huge.error()));
+    const auto missing = ChartCsvReader::readFile(dir.filePath(QStringLiteral("missing.csv")));
+    QVERIFY(!missing);
+    QVERIFY2(missing.error().startsWith(QStringLiteral("missing.csv, ")),
+             qPrintable(missing.error()));
 }
 
 void TestChartsCsv::recorderWritesEachNewSampleOnceInTimeOrder() {
@@ -239,9 +242,9 @@ void TestChartsCsv::recorderWritesEachNewSampleOnceInTimeOrder() {
     recorder.flush();
     recorder.stop();
     QCOMPARE(recorder.rowsWritten(), 4); // the late event shares the row of the sample at +100
-    QString error;
-    const auto replay = ChartCsvReader::readFile(path, &error);
-    QVERIFY2(replay, qPrintable(error));
+    const auto read = ChartCsvReader::readFile(path);
+    QVERIFY2(read, qPrintable(read.error()));
+    const ChartRecording *replay = read->get();
     const auto tips = replay->telemetry->buffer(QStringLiteral("port1"))->samples(0, 0, kT0 + 1000);
     QCOMPARE(tips.size(), 4);
     for (int i = 0; i < 4; ++i)

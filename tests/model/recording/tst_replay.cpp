@@ -26,11 +26,11 @@ QByteArray timeText(qint64 ms) {
     return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs).toUtf8();
 }
 
-std::unique_ptr<ChartRecording> readBytes(QByteArray bytes, QString *error,
-                                          const ChartCsvReader::Options &options = {}) {
+tipscope::protocol::Outcome<std::unique_ptr<ChartRecording>>
+readBytes(QByteArray bytes, const ChartCsvReader::Options &options = {}) {
     QBuffer buffer(&bytes);
     buffer.open(QIODevice::ReadOnly);
-    return ChartCsvReader::read(buffer, error, options);
+    return ChartCsvReader::read(buffer, options);
 }
 
 QByteArray rows(int count, qint64 from = kT0) {
@@ -88,9 +88,9 @@ void TestReplay::everyEventOfTheFileIsReplayed() {
     for (int i = 0; i < events; ++i) // a sample and an event every 100 ms
         csv += timeText(kT0 + i * 100) + ",350,350,port1 status: change " + QByteArray::number(i) +
                '\n';
-    QString error;
-    const auto replay = readBytes(csv, &error);
-    QVERIFY2(replay, qPrintable(error));
+    const auto read = readBytes(csv);
+    QVERIFY2(read, qPrintable(read.error()));
+    const ChartRecording *replay = read->get();
     QCOMPARE(replay->events.size(), events);
     const QList<ChartEvent> all = replay->events.between(kT0, kT0 + qint64(events) * 100);
     QCOMPARE(all.size(), events);
@@ -108,8 +108,9 @@ void TestReplay::aFifoFedPastTheLimitIsRefusedAtTheLimit() {
     QVERIFY(writer.ok());
     ChartCsvReader::Options options;
     options.maxBytes = kLimit;
-    QString error;
-    QVERIFY2(!ChartCsvReader::readFile(writer.path(), &error, options), "the limit was ignored");
+    const auto read = ChartCsvReader::readFile(writer.path(), options);
+    QVERIFY2(!read, "the limit was ignored");
+    const QString error = read.error();
     QVERIFY2(error.contains(QStringLiteral("larger than 1 MB")), qPrintable(error));
     QVERIFY2(error.startsWith(QStringLiteral("fifo.csv, ")), qPrintable(error));
 #else
@@ -130,8 +131,9 @@ void TestReplay::aCancelIsHeardWhileAFifoSendsNothing() {
         seen = bytes;
         return bytes == 0 || clock.elapsed() < 300; // the person gives up after a moment
     };
-    QString error;
-    QVERIFY(!ChartCsvReader::readFile(writer.path(), &error, options));
+    const auto read = ChartCsvReader::readFile(writer.path(), options);
+    QVERIFY(!read);
+    const QString error = read.error();
     QVERIFY2(error.endsWith(ChartCsvReader::cancelledText()), qPrintable(error));
     QCOMPARE(seen, writer.written());
 #else
@@ -150,8 +152,9 @@ void TestReplay::aFileOfCommentsIsRefusedAtTheBoundNotAtItsEnd() {
         read = bytes;
         return true;
     };
-    QString error;
-    QVERIFY2(!readBytes(csv, &error, options), "a file of comments replayed");
+    const auto replay = readBytes(csv, options);
+    QVERIFY2(!replay, "a file of comments replayed");
+    const QString error = replay.error();
     QVERIFY2(error.contains(QStringLiteral("line 1025: more than 1024 comment lines")),
              qPrintable(error));
     QVERIFY2(read <= 2 * ChartCsvReader::kChunkBytes, qPrintable(QString::number(read)));
@@ -165,10 +168,9 @@ void TestReplay::progressFollowsTheBytesReadAndCanCancel() {
         seen.append(bytes);
         return true;
     };
-    QString error;
-    const auto whole = readBytes(csv, &error, options);
-    QVERIFY2(whole, qPrintable(error));
-    QCOMPARE(whole->bytes, csv.size());
+    const auto whole = readBytes(csv, options);
+    QVERIFY2(whole, qPrintable(whole.error()));
+    QCOMPARE((*whole)->bytes, csv.size());
     QVERIFY(seen.size() > 10);
     QVERIFY(std::is_sorted(seen.cbegin(), seen.cend()));
     QCOMPARE(seen.last(), csv.size());
@@ -178,16 +180,17 @@ void TestReplay::progressFollowsTheBytesReadAndCanCancel() {
         seen.append(bytes);
         return bytes < (1 << 20);
     };
-    QVERIFY(!readBytes(csv, &error, options));
-    QCOMPARE(error, ChartCsvReader::cancelledText());
+    const auto cancelled = readBytes(csv, options);
+    QVERIFY(!cancelled);
+    QCOMPARE(cancelled.error(), ChartCsvReader::cancelledText());
     QVERIFY(seen.last() < (1 << 20) + ChartCsvReader::kChunkBytes + 1);
 }
 
 void TestReplay::aRecordingTakesLessThanTwiceItsSizeInMemory() {
     const QByteArray csv = stationRecording(200'000);
-    QString error;
-    const auto replay = readBytes(csv, &error);
-    QVERIFY2(replay, qPrintable(error));
+    const auto read = readBytes(csv);
+    QVERIFY2(read, qPrintable(read.error()));
+    const ChartRecording *replay = read->get();
     QCOMPARE(replay->rows, 200'000);
     QVERIFY(replay->events.size() > 600);
     const qint64 held = replay->memoryBytes();
@@ -208,8 +211,9 @@ void TestReplay::aFileDenserThanTipScopeWritesIsRefusedBeforeTwiceItsSize() {
     QByteArray csv = head + '\n';
     for (int i = 0; i < 40'000; ++i)
         csv += timeText(kT0 + i * 100) + cells + '\n';
-    QString error;
-    QVERIFY2(!readBytes(csv, &error), "a file needing five times its size in memory replayed");
+    const auto replay = readBytes(csv);
+    QVERIFY2(!replay, "a file needing five times its size in memory replayed");
+    const QString error = replay.error();
     QVERIFY2(error.contains(QStringLiteral("more than replay allows (twice the file's size)")),
              qPrintable(error));
 }
