@@ -5596,103 +5596,103 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Leistung, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="73"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="79"/>
         <source>Work</source>
         <translation>Arbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="74"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="80"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="75"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="81"/>
         <source>Cool</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="76"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="82"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="77"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="83"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="79"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="83"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
         <source>New selected temperature, port %1</source>
         <translation>Neue eingestellte Temperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="84"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="90"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="186"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="198"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="187"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="199"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="188"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="200"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="190"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="202"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="215"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="193"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="206"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="195"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="208"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="227"/>
-        <location filename="../app/gui/pages/portcard.cpp" line="230"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="240"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="243"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Fehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="235"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="248"/>
         <source>status: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="237"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="250"/>
         <source>alarm: %1</source>
         <translation>Alarm: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="205"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="218"/>
         <source>Not connected: last read %1</source>
         <translation>Nicht verbunden: zuletzt gelesen %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="207"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="220"/>
         <source>Not connected: not read yet</source>
         <translation>Nicht verbunden: noch nicht gelesen</translation>
     </message>

@@ -14,6 +14,8 @@
 #include "support/typing.h"
 
 #include <QDoubleSpinBox>
+#include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -39,6 +41,7 @@ private Q_SLOTS:
     void aControlTheLostLineRefusedIsNoErrorAfterTheReconnect();
     void theCardsShareTheHeightAndTheirSparklinesDrawTheLastMinute();
     void fourPortsFitWithoutScrollingAt1280x720();
+    void thePowerIsWrittenBesideItsBarNotOnTheFill();
     void aSetpointOutOfRangeIsRefusedNotClamped();
     void theTransformerTemperatureFollowsTheTemperatureUnit();
 
@@ -208,6 +211,21 @@ void TestOverviewPage::aSetpointOutOfRangeIsRefusedNotClamped() {
              qPrintable(card->feedbackText()));
     QTest::qWait(200);
     QCOMPARE(m_session->demoLine()->stats().writeRequests, writes);
+}
+
+// On the bar the words ran into the fill and were hard to read on its colour.
+void TestOverviewPage::thePowerIsWrittenBesideItsBarNotOnTheFill() {
+    connectDemo();
+    PortCard *card = m_page->card(1);
+    QTRY_VERIFY_WITH_TIMEOUT(card->powerText().contains(QStringLiteral("%")), kConnectMs);
+    QVERIFY2(card->powerText().startsWith(QStringLiteral("power ")), qPrintable(card->powerText()));
+    auto *bar = card->findChild<QProgressBar *>();
+    auto *text = card->findChild<QLabel *>(QStringLiteral("powerText"));
+    QVERIFY(bar && text);
+    QVERIFY(!bar->isTextVisible());
+    QTRY_VERIFY(text->isVisible());
+    QVERIFY(!bar->geometry().intersects(text->geometry()));
+    QVERIFY(text->width() >= text->fontMetrics().horizontalAdvance(text->text()));
 }
 
 QTEST_MAIN(TestOverviewPage)

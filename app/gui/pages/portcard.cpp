@@ -55,6 +55,12 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
     m_power = new QProgressBar(m_values);
     m_power->setRange(0, 1000);
     m_power->setAccessibleName(tr("Power, port %1").arg(port.number()));
+    // The words beside the bar, not on it: centred on the bar they ran into the fill and were
+    // hard to read on its colour ("potencia 40,7 %").
+    m_power->setTextVisible(false);
+    m_power->setMaximumHeight(fontMetrics().height());
+    m_powerText = new QLabel(m_values);
+    m_powerText->setObjectName(QStringLiteral("powerText"));
     m_status = new QLabel(m_values);
     m_status->setFont(mid);
     m_status->setWordWrap(true);
@@ -101,7 +107,10 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
     values->setSpacing(kLineSpacing);
     values->addWidget(m_title);
     values->addLayout(temps);
-    values->addWidget(m_power);
+    auto *power = new QHBoxLayout;
+    power->addWidget(m_power, 1);
+    power->addWidget(m_powerText);
+    values->addLayout(power);
     values->addLayout(state);
     values->addWidget(m_problem);
     values->addWidget(m_sparkline, 1);
@@ -171,6 +180,9 @@ QString PortCard::staleText() {
     m_refresh->flush();
     return m_stale->isHidden() ? QString() : m_stale->text();
 }
+QString PortCard::powerText() const {
+    return m_powerText->text();
+}
 QString PortCard::feedbackText() const {
     return m_feedback->text();
 }
@@ -187,7 +199,8 @@ void PortCard::refresh() {
     m_tip->setText(port.tipTemperature() ? port.displayText(Role::TipTemperature) : tr("— °"));
     m_setpoint->setText(tr("set %1").arg(port.displayText(Role::Setpoint)));
     m_power->setValue(int(port.power().value_or(0)));
-    m_power->setFormat(tr("power %1").arg(port.displayText(Role::Power)));
+    m_powerText->setText(tr("power %1").arg(port.displayText(Role::Power)));
+    m_power->setAccessibleDescription(m_powerText->text());
     QStringList details;
     if (Parameter *qt = port.parameter(Role::TransistorTemperature); qt && qt->value())
         details.append(tr("transistor %1").arg(qt->displayText()));

@@ -44,6 +44,8 @@ public:
     [[nodiscard]] QString problemText();
     [[nodiscard]] QString staleText(); // "last read 14:02:11" while the line is down
     [[nodiscard]] QString feedbackText() const;
+    // The power as written beside its bar ("power 40.7 %").
+    [[nodiscard]] QString powerText() const;
     // The card's look: Error, Warning or Ok; Unknown while its values are stale.
     [[nodiscard]] model::Level look();
     [[nodiscard]] bool controlsEnabled() const;
@@ -64,6 +66,7 @@ private:
     QLabel *m_title;
     QLabel *m_tip;
     QLabel *m_setpoint;
+    QLabel *m_powerText = nullptr;
     QProgressBar *m_power;
     QLabel *m_status;
     QLabel *m_details;
