@@ -4,7 +4,7 @@
 <context>
     <name>CliCommands</name>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="51"/>
+        <location filename="../app/cli/clicommands.cpp" line="52"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n raw byte, not a frame (%1)</numerusform>

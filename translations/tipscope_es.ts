@@ -1485,100 +1485,100 @@
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="39"/>
+        <location filename="../app/cli/clicommands.cpp" line="40"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="63"/>
+        <location filename="../app/cli/clicommands.cpp" line="64"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="92"/>
+        <location filename="../app/cli/clicommands.cpp" line="93"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="103"/>
+        <location filename="../app/cli/clicommands.cpp" line="104"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="126"/>
+        <location filename="../app/cli/clicommands.cpp" line="127"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="131"/>
+        <location filename="../app/cli/clicommands.cpp" line="132"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="139"/>
+        <location filename="../app/cli/clicommands.cpp" line="140"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="144"/>
+        <location filename="../app/cli/clicommands.cpp" line="145"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="182"/>
+        <location filename="../app/cli/clicommands.cpp" line="183"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="191"/>
+        <location filename="../app/cli/clicommands.cpp" line="192"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="204"/>
-        <location filename="../app/cli/clicommands.cpp" line="206"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
+        <location filename="../app/cli/clicommands.cpp" line="207"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="209"/>
+        <location filename="../app/cli/clicommands.cpp" line="210"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="172"/>
-        <location filename="../app/cli/clicommands.cpp" line="223"/>
-        <location filename="../app/cli/clicommands.cpp" line="246"/>
+        <location filename="../app/cli/clicommands.cpp" line="173"/>
+        <location filename="../app/cli/clicommands.cpp" line="227"/>
+        <location filename="../app/cli/clicommands.cpp" line="250"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="239"/>
+        <location filename="../app/cli/clicommands.cpp" line="243"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="312"/>
+        <location filename="../app/cli/clicommands.cpp" line="316"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="335"/>
+        <location filename="../app/cli/clicommands.cpp" line="339"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="338"/>
+        <location filename="../app/cli/clicommands.cpp" line="342"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="339"/>
+        <location filename="../app/cli/clicommands.cpp" line="343"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="51"/>
+        <location filename="../app/cli/clicommands.cpp" line="52"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n byte en bruto, no es una trama (%1)</numerusform>
@@ -1586,7 +1586,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="164"/>
+        <location filename="../app/cli/clicommands.cpp" line="165"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 no se envió: no se pudo leer su límite %2: %3</translation>
     </message>
@@ -1903,19 +1903,6 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <location filename="../app/cli/clisession.cpp" line="162"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
-    </message>
-</context>
-<context>
-    <name>CliUnits</name>
-    <message>
-        <location filename="../app/cli/cliunits.cpp" line="47"/>
-        <source>&apos;%1&apos; is not a number; %2 takes %3</source>
-        <translation>«%1» no es un número; %2 admite %3</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/cliunits.cpp" line="53"/>
-        <source>%1 takes steps of %2 %3</source>
-        <translation>%1 admite pasos de %2 %3</translation>
     </message>
 </context>
 <context>
@@ -3613,7 +3600,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="31"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="30"/>
         <location filename="../app/gui/charts/chartspage.h" line="69"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
@@ -3659,47 +3646,47 @@ Hágalo permanente con esta regla de udev:
         <translation>Rueda: zoom · arrastrar: desplazar · Mayús+arrastrar: zoom a un intervalo · doble clic: restablecer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="175"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="174"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="178"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="177"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="181"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="180"/>
         <source>%1 — feeder</source>
         <translation>%1 — alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="184"/>
         <source>%1 — all ports</source>
         <translation>%1 — todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="186"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="185"/>
         <source>%1 — %2 %3</source>
         <translation>%1 — %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="188"/>
         <source>Temperature (%1)</source>
         <translation>Temperatura (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>Power (%)</source>
         <translation>Potencia (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="190"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="189"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspage.cpp" line="301"/>
+        <location filename="../app/gui/charts/chartspage.cpp" line="300"/>
         <source>No samples in this window</source>
         <translation>No hay muestras en esta ventana</translation>
     </message>

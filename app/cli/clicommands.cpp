@@ -1,6 +1,7 @@
 #include "clicommands.h"
 
 #include "cliunits.h"
+#include "model/displayunits.h"
 #include "protocol/elide.h"
 #include "protocol/framedecoder.h"
 #include "protocol/hexbytes.h"
@@ -209,8 +210,11 @@ int runWrite(CliSession &s) {
             error = Tr::tr("the data field is longer than 32 characters");
     } else if (cmd.spec->kind == ValueKind::Action && args.size() == 1) {
         data = cmd.spec->fixedData;
-    } else if (const auto typed = shownConverted(cmd) ? parseShown(cmd, args.value(1))
-                                                      : parseUserValue(cmd, args.value(1));
+    } else if (const auto typed =
+                   shownConverted(cmd)
+                       ? model::parseDisplayText(cmd, args.value(1),
+                                                 model::TemperatureUnit::Celsius, QLocale::c())
+                       : parseUserValue(cmd, args.value(1));
                !typed) {
         error = typed.error();
     } else if (const auto field = encodeWrite(cmd, *typed); !field) {

@@ -5,7 +5,6 @@
 #pragma once
 
 #include "protocol/catalog.h"
-#include "protocol/outcome.h"
 
 #include <QString>
 #include <optional>
@@ -14,12 +13,7 @@ namespace tipscope::cli {
 
 // Whether `cmd` is a length or a speed, shown converted from the wire's unit (dmm, cmm, dmm/s).
 [[nodiscard]] bool shownConverted(const protocol::ResolvedCommand &cmd);
-// "25.0 mm" for a wire value of 250 dmm.
+// "25.0 mm" for a wire value of 250 dmm. What is typed in that unit is read by
+// model::parseDisplayText() with the C locale.
 [[nodiscard]] QString shownNumber(const protocol::ResolvedCommand &cmd, qint64 wire);
-// The wire value of what a person typed in the shown unit ("25", "25.0", "25.0 mm") or of a
-// special value's name, or why it is refused. A value finer than the unit's step is refused,
-// not rounded: nothing is written that was not typed.
-[[nodiscard]] protocol::Outcome<qint64> parseShown(const protocol::ResolvedCommand &cmd,
-                                                   const QString &typed);
-
 } // namespace tipscope::cli

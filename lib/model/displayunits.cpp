@@ -61,8 +61,8 @@ QString formatValue(const ResolvedCommand &cmd, const Value &v, TemperatureUnit 
     }
 }
 
-Outcome<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text,
-                                 TemperatureUnit t) {
+Outcome<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text, TemperatureUnit t,
+                                 const QLocale &locale) {
     const QString s = text.trimmed();
     if (auto special = labelled(cmd.spec->special, s))
         return *special;
@@ -74,13 +74,13 @@ Outcome<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text
     if (!f.unit.isEmpty() && number.endsWith(f.unit))
         number.chop(f.unit.size());
     bool ok = false;
-    double d = QLocale().toDouble(number.trimmed(), &ok);
+    double d = locale.toDouble(number.trimmed(), &ok);
     if (!ok)
         d = number.trimmed().toDouble(&ok); // a script may use the C locale's decimal point
     if (!ok || !std::isfinite(d))
         return failure(Tr::tr("'%1' is not a number").arg(s));
     const qint64 wire = fromDisplay(cmd, d, t);
-    if (std::fabs(toDisplay(cmd, wire, t) - d) > std::pow(10.0, -f.decimals) / 2 + 1e-9)
+    if (std::fabs(toDisplay(cmd, wire, t) - d) > 1e-9 * qMax(1.0, std::fabs(d)))
         return failure(
             Tr::tr("%1 has more decimals than %2 can take").arg(s, catalogText(cmd.spec->name)));
     return wire;

@@ -10,6 +10,7 @@
 #include "protocol/catalog.h"
 #include "protocol/valuecodec.h"
 
+#include <QLocale>
 #include <QString>
 #include <optional>
 
@@ -36,8 +37,12 @@ struct DisplayFormat {
 // A number with its unit, without special-value names ("350 °C").
 [[nodiscard]] QString formatNumber(const protocol::ResolvedCommand &cmd, qint64 wire,
                                    TemperatureUnit t);
-// Parses what a person typed, in display units or by a special value's or an enum's name.
+// Parses what a person typed, in display units (the unit may follow the number) or by a special
+// value's or an enum's name. Numbers are read in `locale`, and also with the C locale's point (a
+// script's); a value the wire cannot hold exactly (finer than its step) is refused, not rounded:
+// nothing is written that was not typed. tipscope-cli passes QLocale::c().
 [[nodiscard]] protocol::Outcome<qint64> parseDisplayText(const protocol::ResolvedCommand &cmd,
-                                                         const QString &text, TemperatureUnit t);
+                                                         const QString &text, TemperatureUnit t,
+                                                         const QLocale &locale = QLocale());
 
 } // namespace tipscope::model

@@ -8,7 +8,6 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QLabel>
 #include <QPlainTextEdit>
 #include <QScrollArea>
 #include <QToolButton>
