@@ -2122,44 +2122,54 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="38"/>
+        <location filename="../lib/model/eventlog.cpp" line="42"/>
         <source>Station error</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="40"/>
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
         <source>Port error</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="42"/>
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
         <source>Feeder error</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
         <source>Alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <location filename="../lib/model/eventlog.cpp" line="54"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <location filename="../lib/model/eventlog.cpp" line="56"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="58"/>
+        <source>Tool change</source>
+        <translation>Werkzeugwechsel</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="60"/>
+        <source>Joint</source>
+        <translation>Lötstelle</translation>
     </message>
 </context>
 <context>
@@ -2428,19 +2438,67 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>JointLimitRules</name>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="48"/>
+        <source>the longest recovery must be more than 0 s and at most %1 s</source>
+        <translation>die längste Erholzeit muss mehr als 0 s und höchstens %1 s betragen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="56"/>
+        <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
+        <translation>der tiefste Einbruch muss eine ganze Zahl von Kelvin zwischen 1 und %1 sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="62"/>
+        <source>the tip wear share must be more than 0 and at most 10</source>
+        <translation>der Anteil für Spitzenverschleiß muss größer als 0 und höchstens 10 sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="68"/>
+        <source>a port is a number from 1 to 4</source>
+        <translation>ein Port ist eine Zahl von 1 bis 4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="106"/>
+        <source>%1 must be a number</source>
+        <translation>%1 muss eine Zahl sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="165"/>
+        <source>joint limits: %1</source>
+        <translation>Lötstellen-Grenzwerte: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="171"/>
+        <source>joint limit rule %1: %2</source>
+        <translation>Lötstellen-Grenzwertregel %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="199"/>
+        <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
+        <translation>„%1“ ist kein Grenzwert: schreiben Sie port=N, tool=NAME, recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL, durch Kommas getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="205"/>
+        <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
+        <translation>„%1“ setzt keinen Grenzwert: geben Sie recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL an</translation>
+    </message>
+</context>
+<context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="112"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>Lötstelle zu tief: die Lötspitze fiel %1 K unter den Sollwert (Grenze %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="121"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="117"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>Lötstelle langsam erholt: %1 s (Grenze %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="123"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="119"/>
         <source>joint did not recover within %1 s</source>
         <translation>Lötstelle hat sich in %1 s nicht erholt</translation>
     </message>
@@ -3328,41 +3386,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="47"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
-        <location filename="../lib/model/session.cpp" line="129"/>
+        <location filename="../lib/model/session.cpp" line="48"/>
+        <location filename="../lib/model/session.cpp" line="135"/>
+        <location filename="../lib/model/session.cpp" line="138"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="125"/>
-        <location filename="../lib/model/session.cpp" line="138"/>
-        <location filename="../lib/model/session.cpp" line="146"/>
+        <location filename="../lib/model/session.cpp" line="134"/>
+        <location filename="../lib/model/session.cpp" line="147"/>
+        <location filename="../lib/model/session.cpp" line="155"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="162"/>
+        <location filename="../lib/model/session.cpp" line="171"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="222"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="214"/>
+        <location filename="../lib/model/session.cpp" line="223"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="224"/>
+        <location filename="../lib/model/session.cpp" line="233"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="232"/>
+        <location filename="../lib/model/session.cpp" line="241"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -3390,7 +3448,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>das Gerät an Adresse %1 hat sich nicht identifiziert: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="222"/>
+        <location filename="../lib/model/session.cpp" line="231"/>
         <source>connected to %1, but %2</source>
         <translation>mit %1 verbunden, aber %2</translation>
     </message>
@@ -3426,12 +3484,13 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%1 kann nicht im Speicher sichern</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="116"/>
+        <location filename="../lib/model/stationmodel.cpp" line="117"/>
+        <location filename="../lib/model/stationmodel.cpp" line="121"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="130"/>
+        <location filename="../lib/model/stationmodel.cpp" line="135"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -3490,6 +3549,19 @@ Dauerhaft mit dieser udev-Regel:
     </message>
 </context>
 <context>
+    <name>TipWear</name>
+    <message>
+        <location filename="../lib/model/joints/tipwear.cpp" line="65"/>
+        <source>tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when it was plugged in</source>
+        <translation>Spitze verschleißt: %1 erholt sich in %2 s (Median der letzten %3 Lötstellen), %4 s nach dem Einstecken</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/tipwear.cpp" line="67"/>
+        <source>the tool</source>
+        <translation>das Werkzeug</translation>
+    </message>
+</context>
+<context>
     <name>ValueCodec</name>
     <message>
         <location filename="../lib/protocol/valuecodec.cpp" line="43"/>
@@ -3541,6 +3613,29 @@ Dauerhaft mit dieser udev-Regel:
         <location filename="../lib/protocol/valuecodec.cpp" line="186"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; ist keine ganze Zahl; für %2 zulässig: %3</translation>
+    </message>
+</context>
+<context>
+    <name>WorkContextFile</name>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="37"/>
+        <source>cannot read the work context %1: %2</source>
+        <translation>der Arbeitskontext %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="39"/>
+        <source>the work context %1 is too big to be one</source>
+        <translation>der Arbeitskontext %1 ist zu groß, um einer zu sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
+        <source>the work context %1 is not a JSON object: %2</source>
+        <translation>der Arbeitskontext %1 ist kein JSON-Objekt: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="48"/>
+        <source>the work context %1: %2 must be text</source>
+        <translation>der Arbeitskontext %1: %2 muss Text sein</translation>
     </message>
 </context>
 <context>
@@ -4848,124 +4943,134 @@ Fortfahren?</translation>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <source>Tool changes</source>
+        <translation>Werkzeugwechsel</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
+        <source>Joints</source>
+        <translation>Lötstellen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="105"/>
         <source>Show events of device</source>
         <translation>Ereignisse des Geräts anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
         <source>Every device</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>&amp;Device:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="127"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="157"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="181"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="321"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -4973,17 +5078,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="317"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>

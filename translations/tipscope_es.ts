@@ -2124,44 +2124,54 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="38"/>
+        <location filename="../lib/model/eventlog.cpp" line="42"/>
         <source>Station error</source>
         <translation>Error de estación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="40"/>
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
         <source>Port error</source>
         <translation>Error de puerto</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="42"/>
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
         <source>Feeder error</source>
         <translation>Error del alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
         <source>Alarm</source>
         <translation>Alarma</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
         <source>Write</source>
         <translation>Escritura</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <location filename="../lib/model/eventlog.cpp" line="54"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <location filename="../lib/model/eventlog.cpp" line="56"/>
         <source>Connection</source>
         <translation>Conexión</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="58"/>
+        <source>Tool change</source>
+        <translation>Cambio de herramienta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="60"/>
+        <source>Joint</source>
+        <translation>Soldadura</translation>
     </message>
 </context>
 <context>
@@ -2430,19 +2440,67 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>JointLimitRules</name>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="48"/>
+        <source>the longest recovery must be more than 0 s and at most %1 s</source>
+        <translation>la recuperación más larga debe ser de más de 0 s y como máximo %1 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="56"/>
+        <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
+        <translation>la caída más profunda debe ser un número entero de kelvin entre 1 y %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="62"/>
+        <source>the tip wear share must be more than 0 and at most 10</source>
+        <translation>la proporción de desgaste de la punta debe ser mayor que 0 y como máximo 10</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="68"/>
+        <source>a port is a number from 1 to 4</source>
+        <translation>un puerto es un número del 1 al 4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="106"/>
+        <source>%1 must be a number</source>
+        <translation>%1 debe ser un número</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="165"/>
+        <source>joint limits: %1</source>
+        <translation>límites de soldadura: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="171"/>
+        <source>joint limit rule %1: %2</source>
+        <translation>regla de límites de soldadura %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="199"/>
+        <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
+        <translation>«%1» no es un límite: escriba port=N, tool=NOMBRE, recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN, separados por comas</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="205"/>
+        <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
+        <translation>«%1» no fija ningún límite: indique recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN</translation>
+    </message>
+</context>
+<context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="112"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>soldadura demasiado profunda: la punta bajó %1 K por debajo de la consigna (límite %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="121"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="117"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>soldadura con recuperación lenta: %1 s (límite %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="123"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="119"/>
         <source>joint did not recover within %1 s</source>
         <translation>la soldadura no se recuperó en %1 s</translation>
     </message>
@@ -3330,41 +3388,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="47"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
-        <location filename="../lib/model/session.cpp" line="129"/>
+        <location filename="../lib/model/session.cpp" line="48"/>
+        <location filename="../lib/model/session.cpp" line="135"/>
+        <location filename="../lib/model/session.cpp" line="138"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="125"/>
-        <location filename="../lib/model/session.cpp" line="138"/>
-        <location filename="../lib/model/session.cpp" line="146"/>
+        <location filename="../lib/model/session.cpp" line="134"/>
+        <location filename="../lib/model/session.cpp" line="147"/>
+        <location filename="../lib/model/session.cpp" line="155"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="162"/>
+        <location filename="../lib/model/session.cpp" line="171"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="222"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="214"/>
+        <location filename="../lib/model/session.cpp" line="223"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="224"/>
+        <location filename="../lib/model/session.cpp" line="233"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="232"/>
+        <location filename="../lib/model/session.cpp" line="241"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -3392,7 +3450,7 @@ Hágalo permanente con esta regla de udev:
         <translation>el equipo en la dirección %1 no se identificó: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="222"/>
+        <location filename="../lib/model/session.cpp" line="231"/>
         <source>connected to %1, but %2</source>
         <translation>conectado a %1, pero %2</translation>
     </message>
@@ -3428,12 +3486,13 @@ Hágalo permanente con esta regla de udev:
         <translation>%1 no puede guardar en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="116"/>
+        <location filename="../lib/model/stationmodel.cpp" line="117"/>
+        <location filename="../lib/model/stationmodel.cpp" line="121"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="130"/>
+        <location filename="../lib/model/stationmodel.cpp" line="135"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -3492,6 +3551,19 @@ Hágalo permanente con esta regla de udev:
     </message>
 </context>
 <context>
+    <name>TipWear</name>
+    <message>
+        <location filename="../lib/model/joints/tipwear.cpp" line="65"/>
+        <source>tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when it was plugged in</source>
+        <translation>punta desgastándose: %1 se recupera en %2 s (mediana de las últimas %3 soldaduras), %4 s al conectarla</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/tipwear.cpp" line="67"/>
+        <source>the tool</source>
+        <translation>la herramienta</translation>
+    </message>
+</context>
+<context>
     <name>ValueCodec</name>
     <message>
         <location filename="../lib/protocol/valuecodec.cpp" line="43"/>
@@ -3543,6 +3615,29 @@ Hágalo permanente con esta regla de udev:
         <location filename="../lib/protocol/valuecodec.cpp" line="186"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; no es un número entero; %2 admite %3</translation>
+    </message>
+</context>
+<context>
+    <name>WorkContextFile</name>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="37"/>
+        <source>cannot read the work context %1: %2</source>
+        <translation>no se puede leer el contexto de trabajo %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="39"/>
+        <source>the work context %1 is too big to be one</source>
+        <translation>el contexto de trabajo %1 es demasiado grande para serlo</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
+        <source>the work context %1 is not a JSON object: %2</source>
+        <translation>el contexto de trabajo %1 no es un objeto JSON: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="48"/>
+        <source>the work context %1: %2 must be text</source>
+        <translation>el contexto de trabajo %1: %2 debe ser texto</translation>
     </message>
 </context>
 <context>
@@ -4850,124 +4945,134 @@ Continue?</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <source>Tool changes</source>
+        <translation>Cambios de herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
+        <source>Joints</source>
+        <translation>Soldaduras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="105"/>
         <source>Show events of device</source>
         <translation>Mostrar eventos del equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
         <source>Every device</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>&amp;Device:</source>
         <translation>&amp;Equipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="127"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="157"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="181"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="321"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -4975,17 +5080,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="317"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
