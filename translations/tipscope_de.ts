@@ -1592,6 +1592,64 @@
     </message>
 </context>
 <context>
+    <name>CliContext</name>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="42"/>
+        <source>&apos;%1&apos; is not a context line: write work_order=W, board_serial=S or operator=O</source>
+        <translation>„%1“ ist keine Kontextzeile: schreiben Sie work_order=W, board_serial=S oder operator=O</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="57"/>
+        <source>cannot read standard input</source>
+        <translation>die Standardeingabe kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="92"/>
+        <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
+        <translation>tipscope-cli: context nimmt show, set [--work-order W] [--serial S] [--operator O] [--stdin] oder clear</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="124"/>
+        <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
+        <translation>tipscope-cli: limits nimmt show, set REGEL (etwa port=1,tool=C245,recovery=3.5,dip=60) oder clear</translation>
+    </message>
+</context>
+<context>
+    <name>CliJoints</name>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="41"/>
+        <source>&apos;%1&apos; is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00</source>
+        <translation>„%1“ ist keine Zeitangabe: schreiben Sie 24h, 30m, 7d, 2026-12-01 oder 2026-12-01T08:00</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="64"/>
+        <source>the journal has no device &apos;%1&apos;</source>
+        <translation>das Journal kennt kein Gerät „%1“</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <source>&apos;%1&apos; names %2 devices; give one of:
+  %3</source>
+        <translation>„%1“ bezeichnet %2 Geräte; geben Sie eines davon an:
+  %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="93"/>
+        <source>--port takes a port number from 1 to 4</source>
+        <translation>--port nimmt eine Portnummer von 1 bis 4</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="102"/>
+        <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
+        <translation>--verdict nimmt ok, slow-recovery, too-deep oder incomplete</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="144"/>
+        <source>tipscope-cli: give --json or --csv, not both</source>
+        <translation>tipscope-cli: geben Sie --json oder --csv an, nicht beides</translation>
+    </message>
+</context>
+<context>
     <name>CliMeasure</name>
     <message>
         <location filename="../app/cli/climeasure.cpp" line="66"/>
@@ -1602,40 +1660,100 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="67"/>
+        <location filename="../app/cli/climonitor.cpp" line="114"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74"/>
+        <location filename="../app/cli/climonitor.cpp" line="121"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="81"/>
+        <location filename="../app/cli/climonitor.cpp" line="133"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="90"/>
+        <location filename="../app/cli/climonitor.cpp" line="142"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="123"/>
+        <location filename="../app/cli/climonitor.cpp" line="180"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="107"/>
+        <location filename="../app/cli/climonitor.cpp" line="159"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitorjoints.cpp" line="55"/>
+        <source>%1 records could not be kept in the journal %2: %3</source>
+        <translation>%1 Einträge konnten nicht im Journal %2 gespeichert werden: %3</translation>
     </message>
 </context>
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="47"/>
+        <location filename="../app/cli/clioptions.cpp" line="128"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="172"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud erwartet eine Baudrate wie 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity erwartet none, even oder odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="203"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits erwartet 1 oder 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="212"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="220"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="223"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="157"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 braucht einen Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="70"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -1646,8 +1764,9 @@ Commands:
   read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
   write CODE VALUE [--raw]  validate, send, and read back
   send HEX                  send a raw frame; print the answer in hex and decoded
-  monitor [--interval MS] [--duration S] [--csv FILE]
-                            tip temperature, setpoint, power and status per port
+  monitor [--interval MS] [--duration S] [--csv FILE] [--limit RULE]
+          [--journal FILE]  tip temperature, setpoint, power and status per port, and
+                            a line per joint, each joint kept in the journal
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
   profile save FILE         every writable setting of the device to a JSON profile
@@ -1659,6 +1778,16 @@ Commands:
                             every port&apos;s and the feeder&apos;s curves and events to a chart
                             recording, as the Charts page records them
   measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
+  joints [--since T] [--until T] [--device D] [--port N] [--tool T]
+         [--verdict V] [--work-order W] [--json | --csv] [--journal FILE]
+                            the joints the journal keeps, newest first; T is 24h, 30m,
+                            7d or an ISO date and time; V is ok, slow-recovery,
+                            too-deep or incomplete
+  context [show | clear | set [--work-order W] [--serial S] [--operator O] [--stdin]]
+                            the work context stamped on every joint and event
+  limits [show | clear | set RULE]
+                            the joint limits; RULE is port=N,tool=T,recovery=S,dip=K,
+                            wear=SHARE (any of them; the most specific rule wins)
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
 built-in simulated DME station (address 01) and SFR feeder (address 10);
@@ -1679,8 +1808,9 @@ Befehle:
   read CODE... [--raw]      eine Zeile pro Code: &quot;&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;&quot;
   write CODE WERT [--raw]   prüfen, senden und zurücklesen
   send HEX                  ein Roh-Telegramm senden; die Antwort hexadezimal und dekodiert ausgeben
-  monitor [--interval MS] [--duration S] [--csv DATEI]
-                            Spitzentemperatur, Sollwert, Leistung und Status pro Port
+  monitor [--interval MS] [--duration S] [--csv DATEI] [--limit REGEL]
+          [--journal DATEI] Spitzentemperatur, Sollwert, Leistung und Status pro Port und
+                            eine Zeile je Lötstelle; jede Lötstelle kommt ins Journal
   dump [--json]             alle lesbaren Parameter, Zähler und Fehler
   commands [--family F]     der Befehlskatalog
   profile save DATEI        alle beschreibbaren Einstellungen des Geräts in ein JSON-Profil
@@ -1693,6 +1823,17 @@ Befehle:
                             die Kurven und Ereignisse aller Ports und des Vorschubs als
                             Diagrammaufzeichnung, wie die Diagrammseite sie aufzeichnet
   measure DATEI [--json]    Aufheiz- und Erholzeiten einer Aufzeichnung, eine pro Zeile
+  joints [--since T] [--until T] [--device D] [--port N] [--tool T]
+         [--verdict V] [--work-order W] [--json | --csv] [--journal DATEI]
+                            die Lötstellen im Journal, die neuesten zuerst; T ist 24h, 30m,
+                            7d oder ein ISO-Datum mit Uhrzeit; V ist ok, slow-recovery,
+                            too-deep oder incomplete
+  context [show | clear | set [--work-order W] [--serial S] [--operator O] [--stdin]]
+                            der Arbeitskontext, der jeder Lötstelle und jedem Ereignis
+                            mitgegeben wird
+  limits [show | clear | set REGEL]
+                            die Lötstellen-Grenzwerte; REGEL ist port=N,tool=T,recovery=S,
+                            dip=K,wear=ANTEIL (beliebig davon; die genaueste Regel gilt)
 
 Ohne --addr oder --no-addr wird das Gerät automatisch gesucht. --demo spricht mit der
 eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10);
@@ -1705,82 +1846,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="94"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>unbekannter Befehl &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="127"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="134"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="147"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud erwartet eine Baudrate wie 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity erwartet none, even oder odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="158"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits erwartet 1 oder 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="167"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="175"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="178"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="182"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 braucht einen Wert</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <location filename="../app/cli/clioptions.cpp" line="161"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="192"/>
+        <location filename="../app/cli/clioptions.cpp" line="227"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="193"/>
+        <location filename="../app/cli/clioptions.cpp" line="228"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="199"/>
+        <location filename="../app/cli/clioptions.cpp" line="234"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="202"/>
+        <location filename="../app/cli/clioptions.cpp" line="237"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -2475,14 +2561,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Lötstellen-Grenzwertregel %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="199"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="198"/>
         <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
         <translation>„%1“ ist kein Grenzwert: schreiben Sie port=N, tool=NAME, recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL, durch Kommas getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="205"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
         <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
         <translation>„%1“ setzt keinen Grenzwert: geben Sie recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL an</translation>
+    </message>
+</context>
+<context>
+    <name>JointLimitsFile</name>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="32"/>
+        <source>cannot read the joint limits %1: %2</source>
+        <translation>die Lötstellen-Grenzwerte %1 können nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="34"/>
+        <source>the joint limits %1 are too big</source>
+        <translation>die Lötstellen-Grenzwerte %1 sind zu groß</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="39"/>
+        <source>the joint limits %1 are not a JSON object: %2</source>
+        <translation>die Lötstellen-Grenzwerte %1 sind kein JSON-Objekt: %2</translation>
     </message>
 </context>
 <context>
@@ -3618,22 +3722,22 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>WorkContextFile</name>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="37"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
         <source>cannot read the work context %1: %2</source>
         <translation>der Arbeitskontext %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="39"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="40"/>
         <source>the work context %1 is too big to be one</source>
         <translation>der Arbeitskontext %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>der Arbeitskontext %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="48"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="49"/>
         <source>the work context %1: %2 must be text</source>
         <translation>der Arbeitskontext %1: %2 muss Text sein</translation>
     </message>

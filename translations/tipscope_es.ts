@@ -1592,6 +1592,64 @@
     </message>
 </context>
 <context>
+    <name>CliContext</name>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="42"/>
+        <source>&apos;%1&apos; is not a context line: write work_order=W, board_serial=S or operator=O</source>
+        <translation>«%1» no es una línea de contexto: escriba work_order=W, board_serial=S u operator=O</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="57"/>
+        <source>cannot read standard input</source>
+        <translation>no se puede leer la entrada estándar</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="92"/>
+        <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
+        <translation>tipscope-cli: context admite show, set [--work-order W] [--serial S] [--operator O] [--stdin] o clear</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="124"/>
+        <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
+        <translation>tipscope-cli: limits admite show, set REGLA (por ejemplo port=1,tool=C245,recovery=3.5,dip=60) o clear</translation>
+    </message>
+</context>
+<context>
+    <name>CliJoints</name>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="41"/>
+        <source>&apos;%1&apos; is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00</source>
+        <translation>«%1» no es una hora: escriba 24h, 30m, 7d, 2026-12-01 o 2026-12-01T08:00</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="64"/>
+        <source>the journal has no device &apos;%1&apos;</source>
+        <translation>el diario no tiene ningún dispositivo «%1»</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <source>&apos;%1&apos; names %2 devices; give one of:
+  %3</source>
+        <translation>«%1» designa %2 dispositivos; indique uno de ellos:
+  %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="93"/>
+        <source>--port takes a port number from 1 to 4</source>
+        <translation>--port admite un número de puerto del 1 al 4</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="102"/>
+        <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
+        <translation>--verdict admite ok, slow-recovery, too-deep o incomplete</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="144"/>
+        <source>tipscope-cli: give --json or --csv, not both</source>
+        <translation>tipscope-cli: indique --json o --csv, no ambos</translation>
+    </message>
+</context>
+<context>
     <name>CliMeasure</name>
     <message>
         <location filename="../app/cli/climeasure.cpp" line="66"/>
@@ -1602,40 +1660,100 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="67"/>
+        <location filename="../app/cli/climonitor.cpp" line="114"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74"/>
+        <location filename="../app/cli/climonitor.cpp" line="121"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="81"/>
+        <location filename="../app/cli/climonitor.cpp" line="133"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="90"/>
+        <location filename="../app/cli/climonitor.cpp" line="142"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="123"/>
+        <location filename="../app/cli/climonitor.cpp" line="180"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="107"/>
+        <location filename="../app/cli/climonitor.cpp" line="159"/>
         <source>reconnected to %1</source>
         <translation>reconectado a %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitorjoints.cpp" line="55"/>
+        <source>%1 records could not be kept in the journal %2: %3</source>
+        <translation>%1 registros no se pudieron guardar en el diario %2: %3</translation>
     </message>
 </context>
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="47"/>
+        <location filename="../app/cli/clioptions.cpp" line="128"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="172"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>indique solo una de --port, --tcp y --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud requiere una velocidad como 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity admite none, even u odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="203"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits admite 1 o 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="212"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="220"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="223"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries requiere un número de 0 a 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="157"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 necesita un valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="70"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -1646,8 +1764,9 @@ Commands:
   read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
   write CODE VALUE [--raw]  validate, send, and read back
   send HEX                  send a raw frame; print the answer in hex and decoded
-  monitor [--interval MS] [--duration S] [--csv FILE]
-                            tip temperature, setpoint, power and status per port
+  monitor [--interval MS] [--duration S] [--csv FILE] [--limit RULE]
+          [--journal FILE]  tip temperature, setpoint, power and status per port, and
+                            a line per joint, each joint kept in the journal
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
   profile save FILE         every writable setting of the device to a JSON profile
@@ -1659,6 +1778,16 @@ Commands:
                             every port&apos;s and the feeder&apos;s curves and events to a chart
                             recording, as the Charts page records them
   measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
+  joints [--since T] [--until T] [--device D] [--port N] [--tool T]
+         [--verdict V] [--work-order W] [--json | --csv] [--journal FILE]
+                            the joints the journal keeps, newest first; T is 24h, 30m,
+                            7d or an ISO date and time; V is ok, slow-recovery,
+                            too-deep or incomplete
+  context [show | clear | set [--work-order W] [--serial S] [--operator O] [--stdin]]
+                            the work context stamped on every joint and event
+  limits [show | clear | set RULE]
+                            the joint limits; RULE is port=N,tool=T,recovery=S,dip=K,
+                            wear=SHARE (any of them; the most specific rule wins)
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
 built-in simulated DME station (address 01) and SFR feeder (address 10);
@@ -1680,8 +1809,9 @@ Comandos:
   write CÓDIGO VALOR [--raw]
                             valida, envía y vuelve a leer
   send HEX                  envía una trama en bruto; muestra la respuesta en hex y decodificada
-  monitor [--interval MS] [--duration S] [--csv ARCHIVO]
-                            temperatura de la punta, consigna, potencia y estado por puerto
+  monitor [--interval MS] [--duration S] [--csv ARCHIVO] [--limit REGLA]
+          [--journal ARCHIVO] temperatura de la punta, consigna, potencia y estado por
+                            puerto, y una línea por soldadura, cada una guardada en el diario
   dump [--json]             todos los parámetros legibles, contadores y errores
   commands [--family F]     el catálogo de comandos
   profile save ARCHIVO      todos los ajustes escribibles del equipo en un perfil JSON
@@ -1693,6 +1823,16 @@ Comandos:
                             las curvas y eventos de todos los puertos y del alimentador en una
                             grabación de gráficos, como la graba la página de gráficos
   measure ARCHIVO [--json]  los calentamientos y recuperaciones de una grabación, uno por línea
+  joints [--since T] [--until T] [--device D] [--port N] [--tool T]
+         [--verdict V] [--work-order W] [--json | --csv] [--journal ARCHIVO]
+                            las soldaduras que guarda el diario, las más recientes primero;
+                            T es 24h, 30m, 7d o una fecha y hora ISO; V es ok,
+                            slow-recovery, too-deep o incomplete
+  context [show | clear | set [--work-order W] [--serial S] [--operator O] [--stdin]]
+                            el contexto de trabajo que llevan cada soldadura y cada evento
+  limits [show | clear | set REGLA]
+                            los límites de soldadura; REGLA es port=N,tool=T,recovery=S,
+                            dip=K,wear=PROPORCIÓN (cualquiera; gana la regla más concreta)
 
 Sin --addr ni --no-addr, el equipo se busca automáticamente. --demo habla con la
 estación DME simulada integrada (dirección 01) y el alimentador SFR (dirección 10);
@@ -1707,82 +1847,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="94"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>comando desconocido &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="127"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>indique solo una de --port, --tcp y --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="134"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="147"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud requiere una velocidad como 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity admite none, even u odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="158"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits admite 1 o 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="167"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="175"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="178"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries requiere un número de 0 a 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="182"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 necesita un valor</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <location filename="../app/cli/clioptions.cpp" line="161"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="192"/>
+        <location filename="../app/cli/clioptions.cpp" line="227"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="193"/>
+        <location filename="../app/cli/clioptions.cpp" line="228"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="199"/>
+        <location filename="../app/cli/clioptions.cpp" line="234"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="202"/>
+        <location filename="../app/cli/clioptions.cpp" line="237"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -2477,14 +2562,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>regla de límites de soldadura %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="199"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="198"/>
         <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
         <translation>«%1» no es un límite: escriba port=N, tool=NOMBRE, recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN, separados por comas</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="205"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
         <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
         <translation>«%1» no fija ningún límite: indique recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN</translation>
+    </message>
+</context>
+<context>
+    <name>JointLimitsFile</name>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="32"/>
+        <source>cannot read the joint limits %1: %2</source>
+        <translation>no se pueden leer los límites de soldadura %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="34"/>
+        <source>the joint limits %1 are too big</source>
+        <translation>los límites de soldadura %1 son demasiado grandes</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="39"/>
+        <source>the joint limits %1 are not a JSON object: %2</source>
+        <translation>los límites de soldadura %1 no son un objeto JSON: %2</translation>
     </message>
 </context>
 <context>
@@ -3620,22 +3723,22 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>WorkContextFile</name>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="37"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
         <source>cannot read the work context %1: %2</source>
         <translation>no se puede leer el contexto de trabajo %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="39"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="40"/>
         <source>the work context %1 is too big to be one</source>
         <translation>el contexto de trabajo %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>el contexto de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="48"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="49"/>
         <source>the work context %1: %2 must be text</source>
         <translation>el contexto de trabajo %1: %2 debe ser texto</translation>
     </message>

@@ -25,8 +25,9 @@ const QString kOperator = QStringLiteral("operator");
 constexpr qint64 kMaxBytes = 64 * 1024;
 } // namespace
 
-QString defaultWorkContextPath() {
-    return QFileInfo(Journal::defaultPath()).dir().filePath(QStringLiteral("context.json"));
+QString workContextPathFor(const QString &journalPath) {
+    const QString journal = journalPath.isEmpty() ? Journal::defaultPath() : journalPath;
+    return QFileInfo(journal).dir().filePath(QStringLiteral("context.json"));
 }
 
 Outcome<model::WorkContext> readWorkContext(const QString &path) {

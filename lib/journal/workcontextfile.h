@@ -20,8 +20,8 @@
 
 namespace tipscope::journal {
 
-// context.json beside Journal::defaultPath().
-[[nodiscard]] QString defaultWorkContextPath();
+// context.json beside the journal at `journalPath` (by default, Journal::defaultPath()'s).
+[[nodiscard]] QString workContextPathFor(const QString &journalPath = QString());
 [[nodiscard]] protocol::Outcome<model::WorkContext> readWorkContext(const QString &path);
 [[nodiscard]] protocol::Outcome<void> writeWorkContext(const QString &path,
                                                        const model::WorkContext &context);
