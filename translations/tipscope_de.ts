@@ -5511,6 +5511,147 @@ Zurücksetzen?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JointLimitsDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="42"/>
+        <source>Joint limits</source>
+        <translation>Lötstellen-Grenzwerte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="48"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="53"/>
+        <source> K</source>
+        <translation> K</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="58"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Longest recovery (s)</source>
+        <translation>Längste Erholzeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="64"/>
+        <source>Deepest dip (K)</source>
+        <translation>Tiefster Einbruch (K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="64"/>
+        <source>Tip wear (%)</source>
+        <translation>Spitzenverschleiß (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="69"/>
+        <source>Add rule</source>
+        <translation>Regel hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="70"/>
+        <source>Remove rule</source>
+        <translation>Regel entfernen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="82"/>
+        <source>Longest recovery (back within 5 K of the setpoint):</source>
+        <translation>Längste Erholzeit (zurück auf 5 K am Sollwert):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="83"/>
+        <source>Deepest dip below the setpoint:</source>
+        <translation>Tiefster Einbruch unter den Sollwert:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="84"/>
+        <source>Tip wearing when recoveries are slower than when new by:</source>
+        <translation>Spitze verschleißt, wenn Erholungen langsamer sind als neu um:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="85"/>
+        <source>Rules for a port, a tool or both override these; the most specific rule wins. An empty cell keeps the default.</source>
+        <translation>Regeln für einen Port, ein Werkzeug oder beides haben Vorrang; die genaueste Regel gilt. Eine leere Zelle behält den Standardwert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="116"/>
+        <source>Any port</source>
+        <translation>Jeder Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="118"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="159"/>
+        <source>Rule %1: %2</source>
+        <translation>Regel %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::JournalStatusButton</name>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="11"/>
+        <source>No work order</source>
+        <translation>Kein Auftrag</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="26"/>
+        <source>Work context and journal</source>
+        <translation>Arbeitskontext und Journal</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="47"/>
+        <source>Stamped on every joint and event: %1. Click to change it.</source>
+        <translation>Wird jeder Lötstelle und jedem Ereignis mitgegeben: %1. Zum Ändern klicken.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="48"/>
+        <source>Journal: %1</source>
+        <translation>Journal: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="51"/>
+        <source>Journal not written</source>
+        <translation>Journal wird nicht geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="53"/>
+        <source>%1 records wait to be written; polling goes on.</source>
+        <translation>%1 Einträge warten aufs Schreiben; die Abfrage läuft weiter.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="57"/>
+        <source>%1 records lost</source>
+        <translation>%1 Einträge verloren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="61"/>
+        <source>Work context unreadable</source>
+        <translation>Arbeitskontext unlesbar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="64"/>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::LinkStatusLabel</name>
     <message>
         <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
@@ -5541,78 +5682,88 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="36"/>
+        <location filename="../app/gui/mainwindow.cpp" line="42"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="88"/>
+        <location filename="../app/gui/mainwindow.cpp" line="96"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="89"/>
+        <location filename="../app/gui/mainwindow.cpp" line="97"/>
+        <source>Work &amp;context…</source>
+        <translation>Arbeits&amp;kontext…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="101"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="91"/>
+        <location filename="../app/gui/mainwindow.cpp" line="103"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="92"/>
+        <location filename="../app/gui/mainwindow.cpp" line="104"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="93"/>
+        <location filename="../app/gui/mainwindow.cpp" line="105"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="98"/>
+        <location filename="../app/gui/mainwindow.cpp" line="110"/>
+        <source>&amp;Joint limits…</source>
+        <translation>&amp;Lötstellen-Grenzwerte…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="111"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="99"/>
+        <location filename="../app/gui/mainwindow.cpp" line="112"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="101"/>
+        <location filename="../app/gui/mainwindow.cpp" line="114"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="102"/>
+        <location filename="../app/gui/mainwindow.cpp" line="115"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="176"/>
+        <location filename="../app/gui/mainwindow.cpp" line="189"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="181"/>
+        <location filename="../app/gui/mainwindow.cpp" line="194"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="186"/>
+        <location filename="../app/gui/mainwindow.cpp" line="199"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="192"/>
-        <location filename="../app/gui/mainwindow.cpp" line="195"/>
+        <location filename="../app/gui/mainwindow.cpp" line="205"/>
+        <location filename="../app/gui/mainwindow.cpp" line="208"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="196"/>
+        <location filename="../app/gui/mainwindow.cpp" line="209"/>
         <source>Written:
 %1
 
@@ -5621,6 +5772,16 @@ Attach both files to the support ticket.</source>
 %1
 
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="217"/>
+        <source>joint limits</source>
+        <translation>Lötstellen-Grenzwerte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="218"/>
+        <source>%1; the default limits judge joints</source>
+        <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
 </context>
 <context>
@@ -6330,6 +6491,39 @@ Möchten Sie fortfahren?</translation>
         <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
         <source>1 min</source>
         <translation>1 min</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::WorkContextDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="24"/>
+        <source>Work context</source>
+        <translation>Arbeitskontext</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="34"/>
+        <source>Stamped on every joint and event from now on, by every TipScope program on this computer, until it is changed.</source>
+        <translation>Wird ab jetzt jeder Lötstelle und jedem Ereignis mitgegeben, von jedem TipScope-Programm auf diesem Rechner, bis er geändert wird.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="40"/>
+        <source>Work order:</source>
+        <translation>Auftrag:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="41"/>
+        <source>Board serial:</source>
+        <translation>Seriennummer der Platine:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="42"/>
+        <source>Operator:</source>
+        <translation>Bediener:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
+        <source>Clear</source>
+        <translation>Leeren</translation>
     </message>
 </context>
 <context>

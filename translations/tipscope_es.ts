@@ -5512,6 +5512,147 @@ Reset it?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JointLimitsDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="42"/>
+        <source>Joint limits</source>
+        <translation>Límites de soldadura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="48"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="53"/>
+        <source> K</source>
+        <translation> K</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="58"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Longest recovery (s)</source>
+        <translation>Recuperación más larga (s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="64"/>
+        <source>Deepest dip (K)</source>
+        <translation>Caída más profunda (K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="64"/>
+        <source>Tip wear (%)</source>
+        <translation>Desgaste de la punta (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="69"/>
+        <source>Add rule</source>
+        <translation>Añadir regla</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="70"/>
+        <source>Remove rule</source>
+        <translation>Quitar regla</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="82"/>
+        <source>Longest recovery (back within 5 K of the setpoint):</source>
+        <translation>Recuperación más larga (de vuelta a 5 K de la consigna):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="83"/>
+        <source>Deepest dip below the setpoint:</source>
+        <translation>Caída más profunda bajo la consigna:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="84"/>
+        <source>Tip wearing when recoveries are slower than when new by:</source>
+        <translation>Punta desgastada cuando las recuperaciones son más lentas que en nuevo en:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="85"/>
+        <source>Rules for a port, a tool or both override these; the most specific rule wins. An empty cell keeps the default.</source>
+        <translation>Las reglas para un puerto, una herramienta o ambos prevalecen; gana la regla más concreta. Una celda vacía conserva el valor por defecto.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="116"/>
+        <source>Any port</source>
+        <translation>Cualquier puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="118"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="159"/>
+        <source>Rule %1: %2</source>
+        <translation>Regla %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::JournalStatusButton</name>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="11"/>
+        <source>No work order</source>
+        <translation>Sin orden de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="26"/>
+        <source>Work context and journal</source>
+        <translation>Contexto de trabajo y diario</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="47"/>
+        <source>Stamped on every joint and event: %1. Click to change it.</source>
+        <translation>Se registra con cada soldadura y cada evento: %1. Haga clic para cambiarlo.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="48"/>
+        <source>Journal: %1</source>
+        <translation>Diario: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="51"/>
+        <source>Journal not written</source>
+        <translation>El diario no se escribe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="53"/>
+        <source>%1 records wait to be written; polling goes on.</source>
+        <translation>%1 registros esperan a ser escritos; el sondeo continúa.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="57"/>
+        <source>%1 records lost</source>
+        <translation>%1 registros perdidos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="61"/>
+        <source>Work context unreadable</source>
+        <translation>Contexto de trabajo ilegible</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="64"/>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::LinkStatusLabel</name>
     <message>
         <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
@@ -5542,78 +5683,88 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="36"/>
+        <location filename="../app/gui/mainwindow.cpp" line="42"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="88"/>
+        <location filename="../app/gui/mainwindow.cpp" line="96"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="89"/>
+        <location filename="../app/gui/mainwindow.cpp" line="97"/>
+        <source>Work &amp;context…</source>
+        <translation>&amp;Contexto de trabajo…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="101"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="91"/>
+        <location filename="../app/gui/mainwindow.cpp" line="103"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="92"/>
+        <location filename="../app/gui/mainwindow.cpp" line="104"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="93"/>
+        <location filename="../app/gui/mainwindow.cpp" line="105"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="98"/>
+        <location filename="../app/gui/mainwindow.cpp" line="110"/>
+        <source>&amp;Joint limits…</source>
+        <translation>&amp;Límites de soldadura…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="111"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="99"/>
+        <location filename="../app/gui/mainwindow.cpp" line="112"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="101"/>
+        <location filename="../app/gui/mainwindow.cpp" line="114"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="102"/>
+        <location filename="../app/gui/mainwindow.cpp" line="115"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="176"/>
+        <location filename="../app/gui/mainwindow.cpp" line="189"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="181"/>
+        <location filename="../app/gui/mainwindow.cpp" line="194"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="186"/>
+        <location filename="../app/gui/mainwindow.cpp" line="199"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="192"/>
-        <location filename="../app/gui/mainwindow.cpp" line="195"/>
+        <location filename="../app/gui/mainwindow.cpp" line="205"/>
+        <location filename="../app/gui/mainwindow.cpp" line="208"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="196"/>
+        <location filename="../app/gui/mainwindow.cpp" line="209"/>
         <source>Written:
 %1
 
@@ -5622,6 +5773,16 @@ Attach both files to the support ticket.</source>
 %1
 
 Adjunte ambos archivos a la solicitud de soporte.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="217"/>
+        <source>joint limits</source>
+        <translation>límites de soldadura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="218"/>
+        <source>%1; the default limits judge joints</source>
+        <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
 </context>
 <context>
@@ -6331,6 +6492,39 @@ Do you want to continue?</source>
         <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
         <source>1 min</source>
         <translation>1 min</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::WorkContextDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="24"/>
+        <source>Work context</source>
+        <translation>Contexto de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="34"/>
+        <source>Stamped on every joint and event from now on, by every TipScope program on this computer, until it is changed.</source>
+        <translation>A partir de ahora se registra con cada soldadura y cada evento, en todos los programas TipScope de este equipo, hasta que se cambie.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="40"/>
+        <source>Work order:</source>
+        <translation>Orden de trabajo:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="41"/>
+        <source>Board serial:</source>
+        <translation>Número de serie de la placa:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="42"/>
+        <source>Operator:</source>
+        <translation>Operario:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
+        <source>Clear</source>
+        <translation>Borrar</translation>
     </message>
 </context>
 <context>

@@ -2,10 +2,14 @@
 
 #include "connectionbar.h"
 #include "devicetree.h"
+#include "dialogs/jointlimitsdialog.h"
 #include "dialogs/preferencesdialog.h"
+#include "dialogs/workcontextdialog.h"
+#include "journalstatusbutton.h"
 #include "linkstatuslabel.h"
 #include "pages/pagefactory.h"
 
+#include "model/joints/jointlimitsfile.h"
 #include "model/supportreport.h"
 
 #include <QApplication>
@@ -28,7 +32,9 @@ namespace tipscope::gui {
 using namespace tipscope::model;
 
 MainWindow::MainWindow(QWidget *parent)
-    : QMainWindow(parent) {
+    : QMainWindow(parent)
+    , m_kept(m_session, m_journal)
+    , m_context(m_journal, journal::workContextPathFor(m_journal.path())) {
     QSettings store;
     m_settings = AppSettings::load(store);
     m_connection = new ConnectionBar(this);
@@ -53,8 +59,10 @@ MainWindow::MainWindow(QWidget *parent)
     m_stateLabel = new QLabel(this);
     m_linkStatus = new LinkStatusLabel(m_session, this);
     statusBar()->addWidget(m_stateLabel, 1);
+    statusBar()->addPermanentWidget(new JournalStatusButton(m_journal, m_context, this));
     statusBar()->addPermanentWidget(m_linkStatus);
     buildMenus();
+    loadJointLimits();
 
     connect(m_connection, &ConnectionBar::connectRequested, this, &MainWindow::connectLine);
     connect(m_connection, &ConnectionBar::disconnectRequested, &m_session,
@@ -86,6 +94,10 @@ MainWindow::~MainWindow() = default;
 
 void MainWindow::buildMenus() {
     QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("Work &context…"), this, [this] {
+        WorkContextDialog dialog(m_context, this);
+        dialog.exec();
+    });
     file->addAction(tr("Write &support report…"), this, &MainWindow::writeSupportReport);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -95,6 +107,7 @@ void MainWindow::buildMenus() {
         if (dialog.exec() == QDialog::Accepted)
             applyPreferences(dialog.result());
     });
+    tools->addAction(tr("&Joint limits…"), this, &MainWindow::editJointLimits);
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About TipScope"), this, [this] {
         QMessageBox::about(
@@ -197,6 +210,23 @@ void MainWindow::writeSupportReport() {
                                  .arg(files->join(QLatin1Char('\n'))));
 }
 
+void MainWindow::loadJointLimits() {
+    const auto rules = model::loadJointLimits(model::defaultJointLimitsPath());
+    if (!rules) {
+        // Said where the problems are read, and the defaults judge meanwhile.
+        m_session.eventLog().add(Event::Kind::Joint, Event::Severity::Warning, tr("joint limits"),
+                                 tr("%1; the default limits judge joints").arg(rules.error()));
+        return;
+    }
+    m_session.joints().setRules(rules.value());
+}
+
+void MainWindow::editJointLimits() {
+    JointLimitsDialog dialog(m_session.joints().rules(), model::defaultJointLimitsPath(), this);
+    if (dialog.exec() == QDialog::Accepted)
+        loadJointLimits();
+}
+
 void MainWindow::closeEvent(QCloseEvent *event) {
     QSettings store;
     store.setValue(QStringLiteral("window/geometry"), saveGeometry());
@@ -204,6 +234,8 @@ void MainWindow::closeEvent(QCloseEvent *event) {
     store.setValue(QStringLiteral("window/splitter"), m_splitter->saveState());
     store.setValue(QStringLiteral("window/tab"), m_tabs->currentIndex());
     m_session.disconnectFromLine();
+    // The last joints and the disconnect reach the file before the window goes.
+    (void)m_journal.flush(5000);
     event->accept();
 }
 
