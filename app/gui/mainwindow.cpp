@@ -6,6 +6,8 @@
 #include "dialogs/preferencesdialog.h"
 #include "dialogs/workcontextdialog.h"
 #include "journalstatusbutton.h"
+
+#include "journal/jointstatistics.h"
 #include "linkstatuslabel.h"
 #include "pages/pagefactory.h"
 
@@ -200,7 +202,10 @@ void MainWindow::writeSupportReport() {
         QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
     if (folder.isEmpty())
         return;
-    const auto files = model::writeSupportReport(m_session, folder);
+    QJsonObject report = model::supportReportJson(m_session);
+    (void)m_journal.flush(2000); // the last joints count too
+    report.insert(QStringLiteral("joints"), journal::lastDayOfJoints(m_journal.path()));
+    const auto files = model::writeSupportReport(report, folder);
     if (!files) {
         QMessageBox::critical(this, tr("Support report"), files.error());
         return;
