@@ -2208,54 +2208,59 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="42"/>
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
         <source>Station error</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
         <source>Port error</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
         <source>Feeder error</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
         <source>Alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <location filename="../lib/model/eventlog.cpp" line="54"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="54"/>
+        <location filename="../lib/model/eventlog.cpp" line="56"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="56"/>
+        <location filename="../lib/model/eventlog.cpp" line="58"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="58"/>
+        <location filename="../lib/model/eventlog.cpp" line="60"/>
         <source>Tool change</source>
         <translation>Werkzeugwechsel</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="60"/>
+        <location filename="../lib/model/eventlog.cpp" line="62"/>
         <source>Joint</source>
         <translation>Lötstelle</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="64"/>
+        <source>Profile apply</source>
+        <translation>Profil angewendet</translation>
     </message>
 </context>
 <context>
@@ -3345,37 +3350,37 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="30"/>
+        <location filename="../lib/model/profileapplier.cpp" line="33"/>
         <source>refused, nothing was written: %1</source>
         <translation>abgelehnt, nichts wurde geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="34"/>
+        <location filename="../lib/model/profileapplier.cpp" line="37"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="38"/>
+        <location filename="../lib/model/profileapplier.cpp" line="41"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>geändert %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="40"/>
+        <location filename="../lib/model/profileapplier.cpp" line="43"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FEHLER %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="42"/>
+        <location filename="../lib/model/profileapplier.cpp" line="45"/>
         <source>would send %1</source>
         <translation>würde %1 senden</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profileapplier.cpp" line="50"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>abgebrochen: die übrigen Werte wurden nicht geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="55"/>
+        <location filename="../lib/model/profileapplier.cpp" line="58"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n Unterschied</numerusform>
@@ -3383,49 +3388,59 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="56"/>
+        <location filename="../lib/model/profileapplier.cpp" line="59"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 geändert, %2 bereits richtig, %3 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="101"/>
+        <location filename="../lib/model/profileapplier.cpp" line="104"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>das Profil ist für %1, dieses Gerät ist %2 (erzwingen, um die gemeinsamen Einstellungen anzuwenden)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="106"/>
+        <location filename="../lib/model/profileapplier.cpp" line="109"/>
         <source>monitor-only mode is on</source>
         <translation>der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="165"/>
+        <location filename="../lib/model/profileapplier.cpp" line="168"/>
         <source>reading the device</source>
         <translation>Gerät wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="227"/>
+        <location filename="../lib/model/profileapplier.cpp" line="230"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="229"/>
+        <location filename="../lib/model/profileapplier.cpp" line="232"/>
         <source>unreadable value</source>
         <translation>unlesbarer Wert</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="76"/>
+        <location filename="../lib/model/profileapplier.cpp" line="290"/>
+        <source>profile %1 applied: %2 changed, %3 failed, %4 already right%5</source>
+        <translation>Profil %1 angewendet: %2 geändert, %3 fehlgeschlagen, %4 schon richtig%5</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="295"/>
+        <source> (cancelled)</source>
+        <translation> (abgebrochen)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="79"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>das Profil würde die Grenzen seiner Einstellungen verletzen (MIT ≤ MAT, MIT ≤ ausgewählte Temperatur ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="96"/>
+        <location filename="../lib/model/profileapplier.cpp" line="99"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>keine der Einstellungen des Profils gibt es an diesem %1 (übersprungen: %2)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="49"/>
+        <location filename="../lib/model/profileapplier.cpp" line="52"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n übersprungen</numerusform>
@@ -3433,12 +3448,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="121"/>
+        <location filename="../lib/model/profileapplier.cpp" line="124"/>
         <source>this %1 has no such setting</source>
         <translation>dieses %1 hat keine solche Einstellung</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <location filename="../lib/model/profileapplier.cpp" line="48"/>
         <source>skipped %1 %2: %3</source>
         <translation>übersprungen %1 %2: %3</translation>
     </message>
@@ -5082,124 +5097,129 @@ Fortfahren?</translation>
         <translation>Lötstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="105"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <source>Profile applies</source>
+        <translation>Profilanwendungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
         <source>Show events of device</source>
         <translation>Ereignisse des Geräts anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
         <source>Every device</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="120"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
         <source>&amp;Device:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="126"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="127"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="160"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="181"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="182"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="321"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="196"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="316"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="270"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -5207,17 +5227,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="316"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="323"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>

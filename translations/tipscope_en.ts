@@ -86,7 +86,7 @@
 <context>
     <name>ProfileApplier</name>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="55"/>
+        <location filename="../lib/model/profileapplier.cpp" line="58"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -94,7 +94,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="49"/>
+        <location filename="../lib/model/profileapplier.cpp" line="52"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n skipped</numerusform>
@@ -149,7 +149,7 @@
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="270"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>

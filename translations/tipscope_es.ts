@@ -2209,54 +2209,59 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="42"/>
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
         <source>Station error</source>
         <translation>Error de estación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
         <source>Port error</source>
         <translation>Error de puerto</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
         <source>Feeder error</source>
         <translation>Error del alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
         <source>Alarm</source>
         <translation>Alarma</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <location filename="../lib/model/eventlog.cpp" line="54"/>
         <source>Write</source>
         <translation>Escritura</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="54"/>
+        <location filename="../lib/model/eventlog.cpp" line="56"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="56"/>
+        <location filename="../lib/model/eventlog.cpp" line="58"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="58"/>
+        <location filename="../lib/model/eventlog.cpp" line="60"/>
         <source>Tool change</source>
         <translation>Cambio de herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="60"/>
+        <location filename="../lib/model/eventlog.cpp" line="62"/>
         <source>Joint</source>
         <translation>Soldadura</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="64"/>
+        <source>Profile apply</source>
+        <translation>Aplicación de perfil</translation>
     </message>
 </context>
 <context>
@@ -3346,37 +3351,37 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>ProfileApplier</name>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="30"/>
+        <location filename="../lib/model/profileapplier.cpp" line="33"/>
         <source>refused, nothing was written: %1</source>
         <translation>rechazado, no se escribió nada: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="34"/>
+        <location filename="../lib/model/profileapplier.cpp" line="37"/>
         <source>%1 %2: %3 → %4</source>
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="38"/>
+        <location filename="../lib/model/profileapplier.cpp" line="41"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>cambiado %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="40"/>
+        <location filename="../lib/model/profileapplier.cpp" line="43"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FALLÓ %1 %2: %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="42"/>
+        <location filename="../lib/model/profileapplier.cpp" line="45"/>
         <source>would send %1</source>
         <translation>se enviaría %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="47"/>
+        <location filename="../lib/model/profileapplier.cpp" line="50"/>
         <source>cancelled: the remaining values were not written</source>
         <translation>cancelado: los valores restantes no se escribieron</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="55"/>
+        <location filename="../lib/model/profileapplier.cpp" line="58"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n diferencia</numerusform>
@@ -3384,49 +3389,59 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="56"/>
+        <location filename="../lib/model/profileapplier.cpp" line="59"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 cambiados, %2 ya correctos, %3 fallidos</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="101"/>
+        <location filename="../lib/model/profileapplier.cpp" line="104"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>el perfil es para %1 y este equipo es %2 (fuerce la aplicación para escribir los ajustes que comparten)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="106"/>
+        <location filename="../lib/model/profileapplier.cpp" line="109"/>
         <source>monitor-only mode is on</source>
         <translation>el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="165"/>
+        <location filename="../lib/model/profileapplier.cpp" line="168"/>
         <source>reading the device</source>
         <translation>leyendo el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="227"/>
+        <location filename="../lib/model/profileapplier.cpp" line="230"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="229"/>
+        <location filename="../lib/model/profileapplier.cpp" line="232"/>
         <source>unreadable value</source>
         <translation>valor ilegible</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="76"/>
+        <location filename="../lib/model/profileapplier.cpp" line="290"/>
+        <source>profile %1 applied: %2 changed, %3 failed, %4 already right%5</source>
+        <translation>perfil %1 aplicado: %2 cambiados, %3 fallidos, %4 ya correctos%5</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="295"/>
+        <source> (cancelled)</source>
+        <translation> (cancelado)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="79"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>el perfil rompería los límites de sus ajustes (MIT ≤ MAT, MIT ≤ temperatura seleccionada ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="96"/>
+        <location filename="../lib/model/profileapplier.cpp" line="99"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>ninguno de los ajustes del perfil existe en este %1 (omitidos: %2)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="49"/>
+        <location filename="../lib/model/profileapplier.cpp" line="52"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n omitido</numerusform>
@@ -3434,12 +3449,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="121"/>
+        <location filename="../lib/model/profileapplier.cpp" line="124"/>
         <source>this %1 has no such setting</source>
         <translation>este %1 no tiene ese ajuste</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="45"/>
+        <location filename="../lib/model/profileapplier.cpp" line="48"/>
         <source>skipped %1 %2: %3</source>
         <translation>omitido %1 %2: %3</translation>
     </message>
@@ -5083,124 +5098,129 @@ Continue?</source>
         <translation>Soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="105"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <source>Profile applies</source>
+        <translation>Aplicaciones de perfil</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
         <source>Show events of device</source>
         <translation>Mostrar eventos del equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
         <source>Every device</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="120"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
         <source>&amp;Device:</source>
         <translation>&amp;Equipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="126"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="127"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="160"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="181"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="182"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="321"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="196"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="316"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="270"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -5208,17 +5228,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="316"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="323"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>

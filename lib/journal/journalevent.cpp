@@ -31,6 +31,8 @@ Kind kindOf(model::Event::Kind kind) {
         return Kind::ToolChange;
     case model::Event::Kind::Joint:
         return Kind::JointWarning;
+    case model::Event::Kind::ProfileApply:
+        return Kind::ProfileApply;
     }
     return Kind::Status;
 }
@@ -58,7 +60,7 @@ QString JournalEvent::kindName(Kind kind) {
     case Kind::ToolChange:
         return model::Event::kindName(model::Event::Kind::ToolChange);
     case Kind::ProfileApply:
-        return QStringLiteral("profile apply");
+        return model::Event::kindName(model::Event::Kind::ProfileApply);
     case Kind::ContextChange:
         return QStringLiteral("context change");
     case Kind::JointWarning:
@@ -99,6 +101,7 @@ JournalEvent JournalEvent::fromEventLog(const model::Event &event,
     out.port = port;
     out.timeMs = event.time.isValid() ? event.time.toMSecsSinceEpoch() : 0;
     out.text = event.text;
+    out.details = event.details;
     return out;
 }
 

@@ -210,12 +210,13 @@ void DeviceModel::logWrite(int port, const QString &what) {
 }
 
 void DeviceModel::logEvent(Event::Kind kind, Event::Severity severity, int port,
-                           const QString &text) {
+                           const QString &text, const QJsonObject &details) {
     if (!m_log)
         return;
     Event e({}, kind, severity, sourceName(port), text);
     e.device = identity();
     e.port = port;
+    e.details = details;
     m_log->append(std::move(e));
 }
 

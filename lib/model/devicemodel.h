@@ -112,7 +112,8 @@ public:
     void logCommunication(const QString &what, const QString &reason);
     void logWrite(int port, const QString &what);
     // An event of this device (`port` 0: the device itself), with its identity and source name.
-    void logEvent(Event::Kind kind, Event::Severity severity, int port, const QString &text);
+    void logEvent(Event::Kind kind, Event::Severity severity, int port, const QString &text,
+                  const QJsonObject &details = {});
 
 Q_SIGNALS:
     void temperatureUnitChanged();

@@ -32,6 +32,8 @@ QString Event::kindName(Kind kind) {
         return QStringLiteral("tool change");
     case Kind::Joint:
         return QStringLiteral("joint");
+    case Kind::ProfileApply:
+        return QStringLiteral("profile apply");
     }
     return {};
 }
@@ -58,6 +60,8 @@ QString Event::kindTitle(Kind kind) {
         return Tr::tr("Tool change");
     case Kind::Joint:
         return Tr::tr("Joint");
+    case Kind::ProfileApply:
+        return Tr::tr("Profile apply");
     }
     return {};
 }

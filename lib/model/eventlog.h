@@ -12,6 +12,7 @@
 #include "deviceidentity.h"
 
 #include <QDateTime>
+#include <QJsonObject>
 #include <QObject>
 #include <deque>
 #include <functional>
@@ -30,7 +31,8 @@ struct Event {
         Connection,
         ToolChange,
         // A joint outside its limits, or a tip that recovers more slowly than it did new.
-        Joint
+        Joint,
+        ProfileApply
     };
     enum class Severity { Info, Warning, Error };
 
@@ -52,6 +54,9 @@ struct Event {
     // have different identities even when their sources read the same.
     DeviceIdentity device;
     int port = 0;
+    // What a program needs beyond the text (a profile apply's hash and changes); the journal
+    // keeps it.
+    QJsonObject details;
     // How often it happened (EventLog collapses a flood) and when it last did; lastTime equals
     // time while count is 1.
     int count = 1;

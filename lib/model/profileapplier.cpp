@@ -6,6 +6,9 @@
 #include "protocol/hexbytes.h"
 
 #include <QCoreApplication>
+#include <QCryptographicHash>
+#include <QJsonArray>
+#include <QJsonObject>
 #include <QTimer>
 
 namespace tipscope::model {
@@ -259,7 +262,40 @@ QByteArray ProfileApplier::profileValue(const QByteArray &code) const {
 }
 
 void ProfileApplier::finish() {
+    if (m_mode == Mode::Apply && !m_report.refused)
+        logApply();
     Q_EMIT finished(m_report);
+}
+
+// For audit: which profile (its hash), what it changed and what failed, as one event.
+void ProfileApplier::logApply() {
+    const QByteArray hash =
+        QCryptographicHash::hash(m_profile.toJson(), QCryptographicHash::Sha256).toHex();
+    QJsonArray changes;
+    int failed = 0;
+    for (const ApplyItem &item : std::as_const(m_report.written)) {
+        changes.append(QJsonObject{{QStringLiteral("code"), QString::fromLatin1(item.code)},
+                                   {QStringLiteral("name"), item.name},
+                                   {QStringLiteral("before"), item.before},
+                                   {QStringLiteral("after"), item.after},
+                                   {QStringLiteral("ok"), item.ok},
+                                   {QStringLiteral("reason"), item.reason}});
+        failed += item.ok ? 0 : 1;
+    }
+    const QJsonObject details{{QStringLiteral("profileSha256"), QString::fromLatin1(hash)},
+                              {QStringLiteral("comment"), m_profile.comment},
+                              {QStringLiteral("changes"), changes},
+                              {QStringLiteral("unchanged"), m_report.unchanged},
+                              {QStringLiteral("cancelled"), m_report.cancelled}};
+    const QString text = Tr::tr("profile %1 applied: %2 changed, %3 failed, %4 already right%5")
+                             .arg(QString::fromLatin1(hash.left(12)))
+                             .arg(m_report.written.size() - failed)
+                             .arg(failed)
+                             .arg(m_report.unchanged)
+                             .arg(m_report.cancelled ? Tr::tr(" (cancelled)") : QString());
+    m_device.logEvent(Event::Kind::ProfileApply,
+                      m_report.ok() ? Event::Severity::Info : Event::Severity::Warning, 0, text,
+                      details);
 }
 
 } // namespace tipscope::model

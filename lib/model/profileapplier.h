@@ -12,7 +12,9 @@
 // and then only the settings the device has are applied; the others are skipped, each with its
 // name and why. A refused profile is still compared (the settings both have), so people see
 // what it would have changed; if the device has none of its settings, it is refused at once.
-// Cancel stops before the next write.
+// Cancel stops before the next write. An apply that ran is one event in the device's event log
+// (kind ProfileApply), with the profile's SHA-256 and every change in its details, for the
+// journal.
 #pragma once
 
 #include "profile.h"
@@ -87,6 +89,7 @@ private:
     void listFrames();
     void writeNext();
     void finish();
+    void logApply();
     [[nodiscard]] QByteArray profileValue(const QByteArray &code) const;
 
     DeviceModel &m_device;

@@ -7,6 +7,7 @@
 #include "mainwindow.h"
 
 #include "journal/journalreader.h"
+#include "journal/workcontextfile.h"
 #include "model/joints/jointlimitsfile.h"
 
 #include <QComboBox>
@@ -36,6 +37,8 @@ void TestJournalGui::initTestCase() {
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName(QStringLiteral("TipScopeTests"));
     QLocale::setDefault(QLocale(QLocale::English));
+    // What an earlier run of this test left in its home.
+    QFileInfo(journal::Journal::defaultPath()).dir().removeRecursively();
 }
 
 void TestJournalGui::theSessionAndTheWorkContextReachTheJournal() {

@@ -4,6 +4,8 @@
 #include "model/pollscheduler.h"
 #include "model/profileapplier.h"
 
+#include <QCryptographicHash>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -111,11 +113,33 @@ void TestProfile::profileRoundTripsThroughAChangedDevice() {
     QVERIFY2(
         diff.text().contains(QStringLiteral("ST1 Selected temperature, port 1: 300 °C → 350 °C")),
         qPrintable(diff.text()));
+    EventLog log;
+    st->setEventLog(&log);
     const ApplyReport applied = run(*st, *loaded, ProfileApplier::Mode::Apply);
     QVERIFY2(applied.ok(), qPrintable(applied.text()));
     QCOMPARE(applied.written.size(), 4);
     QCOMPARE(dev->setting("H31").value(), 10);
     QCOMPARE(run(*st, *loaded, ProfileApplier::Mode::Diff).differences.size(), 0);
+
+    // The apply is one event for the journal: the profile's hash and every change.
+    const QList<Event> events = log.events();
+    const auto apply = std::find_if(events.cbegin(), events.cend(), [](const Event &e) {
+        return e.kind == Event::Kind::ProfileApply;
+    });
+    QVERIFY(apply != events.cend());
+    QCOMPARE(std::count_if(events.cbegin(), events.cend(),
+                           [](const Event &e) { return e.kind == Event::Kind::ProfileApply; }),
+             1); // the diffs are not applies
+    const QString hash = QString::fromLatin1(
+        QCryptographicHash::hash(loaded->toJson(), QCryptographicHash::Sha256).toHex());
+    QCOMPARE(apply->details.value(QStringLiteral("profileSha256")).toString(), hash);
+    const QJsonArray changes = apply->details.value(QStringLiteral("changes")).toArray();
+    QCOMPARE(changes.size(), 4);
+    QCOMPARE(changes.first().toObject().value(QStringLiteral("ok")).toBool(), true);
+    QVERIFY2(apply->text.startsWith(
+                 QStringLiteral("profile %1 applied: 4 changed, 0 failed").arg(hash.left(12))),
+             qPrintable(apply->text));
+    QCOMPARE(apply->device, st->identity());
 }
 
 void TestProfile::aSavedProfileNamesEachValueBesideItsRawDataField_data() {
