@@ -205,8 +205,8 @@ void DeviceModel::logCommunication(const QString &what, const QString &reason) {
              m_queue.isOpen() ? Tr::tr("%1: %2").arg(what, reason) : reason);
 }
 
-void DeviceModel::logWrite(int port, const QString &what) {
-    logEvent(Event::Kind::Write, Event::Severity::Info, port, what);
+void DeviceModel::logWrite(int port, const QString &what, const QJsonObject &details) {
+    logEvent(Event::Kind::Write, Event::Severity::Info, port, what, details);
 }
 
 void DeviceModel::logEvent(Event::Kind kind, Event::Severity severity, int port,

@@ -110,7 +110,7 @@ public:
     // a flood of them collapses into one (EventLog). A write names the port it was on (0: the
     // device's own), so that the history's Source column does.
     void logCommunication(const QString &what, const QString &reason);
-    void logWrite(int port, const QString &what);
+    void logWrite(int port, const QString &what, const QJsonObject &details = {});
     // An event of this device (`port` 0: the device itself), with its identity and source name.
     void logEvent(Event::Kind kind, Event::Severity severity, int port, const QString &text,
                   const QJsonObject &details = {});

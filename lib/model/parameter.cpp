@@ -302,9 +302,13 @@ void Parameter::readBack(const QByteArray &written, quint64 id, bool again) {
         Q_EMIT editChanged();
         setState(State::InSync);
         Q_EMIT stateChanged(); // isSavedToMemory() changed even if the state did not
+        // For audit: what was written and that the read-back proved it.
         m_device.logWrite(
             spec().port,
-            Tr::tr("%1 set to %2").arg(settingName(*this, NameParts::ToolOnly), displayText()));
+            Tr::tr("%1 set to %2").arg(settingName(*this, NameParts::ToolOnly), displayText()),
+            {{QStringLiteral("code"), QString::fromLatin1(code())},
+             {QStringLiteral("value"), displayText()},
+             {QStringLiteral("readBack"), QStringLiteral("confirmed")}});
         succeed(id);
     });
 }

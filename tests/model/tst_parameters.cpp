@@ -48,6 +48,7 @@ bool writeAndWait(Parameter &p, qint64 value, QString *why) {
 class TestParameters : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void aProvedWriteAndAToolChangeAreEventsForTheJournal();
     void everyParameterReadsWritesAndVerifies_data();
     void everyParameterReadsWritesAndVerifies();
     void refusedValuesNeverReachTheWire();
@@ -332,6 +333,39 @@ void TestParameters::portStatusDecodesFlagsAndRobotControlsWork() {
     QCOMPARE(port->toolOrder().first(), f.simLine->station()->port(2).tool);
     QCOMPARE(port->toolSettings(port->toolOrder().first()).size(), 4);
     QCOMPARE(port->counters().size(), 7);
+}
+
+void TestParameters::aProvedWriteAndAToolChangeAreEventsForTheJournal() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    auto st = f.station();
+    EventLog log;
+    st->setEventLog(&log);
+    st->refreshAll();
+    f.settle();
+    QString why;
+    QVERIFY2(writeAndWait(*st->parameter("ST1"), 360, &why), qPrintable(why));
+    const QList<Event> written = log.events();
+    const auto write = std::find_if(written.cbegin(), written.cend(),
+                                    [](const Event &e) { return e.kind == Event::Kind::Write; });
+    QVERIFY(write != written.cend());
+    QCOMPARE(write->port, 1);
+    QCOMPARE(write->details.value(QStringLiteral("code")).toString(), QStringLiteral("ST1"));
+    QCOMPARE(write->details.value(QStringLiteral("value")).toString(), QStringLiteral("360 °C"));
+    QCOMPARE(write->details.value(QStringLiteral("readBack")).toString(),
+             QStringLiteral("confirmed"));
+
+    // The tool pulled from port 2: a tool change, not a status change.
+    const QString before = st->port(2)->toolName();
+    f.simLine->station()->setTool(2, 0);
+    st->port(2)->parameter(Role::ConnectedTool)->refresh();
+    f.settle();
+    const QList<Event> events = log.events();
+    const auto change = std::find_if(events.cbegin(), events.cend(), [](const Event &e) {
+        return e.kind == Event::Kind::ToolChange;
+    });
+    QVERIFY(change != events.cend());
+    QCOMPARE(change->port, 2);
+    QVERIFY2(change->text.startsWith(before + QStringLiteral(" → ")), qPrintable(change->text));
 }
 
 void TestParameters::injectedErrorsAndAlarmsReachTheEventLog() {
