@@ -110,6 +110,8 @@ int PollScheduler::adaptedInterval(const Item &i, int iv) const {
         return qMax(kFastestMs, iv / kBusyFactor);
     if (i.role == Role::Power) // a resting port's: not needed to see a joint begin
         return iv * kRestFactor;
+    if (i.role == Role::TipTemperature) // a resting port's: a joint's start is timed by it
+        return qMax(kFastestMs, iv / kWatchFactor);
     return iv;
 }
 

@@ -17,13 +17,14 @@
 // while its last tip reading is more than kBusyBelowK below its setpoint or its power is above
 // kBusyPowerShare of full scale. A busy port's tip temperature and power are due kBusyFactor
 // times as often as the live interval says (never more often than kFastestMs), and a port
-// turning busy has them polled at once. Values that rarely change are due kRestFactor times less
-// often: a port's status among the live values and the whole status class (setpoint, connected
-// tool, errors, alarms); so is a resting port's power, which is not needed to see a joint begin.
-// When the wire is full, the due live value longest overdue for its own interval goes first, so
-// each gets the wire in proportion to its rate: a recovery is sampled finely while the resting
-// ports keep their turns. Off, every value keeps its class's interval and the earliest due goes
-// first.
+// turning busy has them polled at once. A resting port's tip is due kWatchFactor times as often,
+// because a joint's start can be timed no finer than the last reading before it. Values that
+// rarely change are due kRestFactor times less often: a port's status among the live values and
+// the whole status class (setpoint, connected tool, errors, alarms); so is a resting port's
+// power, which is not needed to see a joint begin. When the wire is full, the due live value
+// longest overdue for its own interval goes first, so each gets the wire in proportion to its
+// rate: a recovery is sampled finely while the resting ports keep their turns. Off, every value
+// keeps its class's interval and the earliest due goes first.
 #pragma once
 
 #include "parameter.h"
@@ -65,7 +66,8 @@ public:
     static constexpr int kBusyBelowK = 5;
     static constexpr double kBusyPowerShare = 0.6;
     static constexpr int kBusyFactor = 4;
-    static constexpr int kRestFactor = 2;
+    static constexpr int kWatchFactor = 2;
+    static constexpr int kRestFactor = 4;
     static constexpr int kFastestMs = 25;
 
     void start();

@@ -103,8 +103,9 @@ void TestScheduler::aPortInAJointHasItsLiveValuesPolledMoreOften_data() {
 }
 
 // Port 2 makes a long joint while port 4 rests, all four ports on screen, on a paced wire that
-// cannot carry every live value at the live interval: adaptive, the busy port's tip and power
-// are read several times as often as the resting port's; not adaptive, about as often.
+// cannot carry every live value at the live interval: adaptive, the busy port's tip is read more
+// often than the resting port's (twice as often by the rule) and its power several times as
+// often; not adaptive, both about as often.
 void TestScheduler::aPortInAJointHasItsLiveValuesPolledMoreOften() {
     QFETCH(bool, adaptive);
     SimFixture f(singleDevice(QStringLiteral("DME")));
@@ -135,11 +136,12 @@ void TestScheduler::aPortInAJointHasItsLiveValuesPolledMoreOften() {
                                .arg(restingPower.size());
     QVERIFY2(restingTip.size() > 0 && restingPower.size() > 0, qPrintable(counts));
     if (adaptive) {
-        QVERIFY2(busyTip.size() > 2 * restingTip.size(), qPrintable(counts));
+        // Twice as often by the rule; a margin for the wire's rounding of turns.
+        QVERIFY2(4 * busyTip.size() > 5 * restingTip.size(), qPrintable(counts));
         QVERIFY2(busyPower.size() > 2 * restingPower.size(), qPrintable(counts));
     } else {
-        QVERIFY2(busyTip.size() < 2 * restingTip.size(), qPrintable(counts));
-        QVERIFY2(busyPower.size() < 2 * restingPower.size(), qPrintable(counts));
+        QVERIFY2(2 * busyTip.size() < 3 * restingTip.size(), qPrintable(counts));
+        QVERIFY2(2 * busyPower.size() < 3 * restingPower.size(), qPrintable(counts));
     }
 }
 
