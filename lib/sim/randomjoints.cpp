@@ -9,8 +9,10 @@ RandomJoints::RandomJoints(SimStation *station, double perMinute, quint32 seed)
     , m_meanGapMs(60'000.0 / qMax(0.01, perMinute))
     , m_random(seed) {
     // The ports start at random points of their first gap, not all at once.
-    for (int port = 1; port <= m_station->portCount(); ++port)
+    for (int port = 1; port <= m_station->portCount(); ++port) {
         m_nextMs.append(kRestMs + qint64(m_random.bounded(m_meanGapMs)));
+        m_readySinceMs.append(-1);
+    }
 }
 
 void RandomJoints::advance(int ms) {
@@ -18,12 +20,15 @@ void RandomJoints::advance(int ms) {
         return;
     m_ms += ms;
     for (int port = 1; port <= m_nextMs.size(); ++port) {
-        if (m_ms < m_nextMs.at(port - 1))
-            continue;
-        if (m_station->canMakeJoint(port))
+        // A port is ready once it could make a joint for kRestMs on end: settled at its
+        // temperature after a heat-up, a wake or its last joint.
+        qint64 &ready = m_readySinceMs[port - 1];
+        if (!m_station->canMakeJoint(port))
+            ready = -1;
+        else if (ready < 0)
+            ready = m_ms;
+        if (m_ms >= m_nextMs.at(port - 1) && ready >= 0 && m_ms - ready >= kRestMs)
             makeJoint(port);
-        else
-            m_nextMs[port - 1] = m_ms + kRestMs;
     }
 }
 
@@ -36,6 +41,7 @@ void RandomJoints::makeJoint(int port) {
     const JointShape made(depth, qRound64(recovery * (1 + m_station->port(port).wear)));
     const double gap = m_meanGapMs * (0.5 + m_random.generateDouble());
     m_nextMs[port - 1] = m_ms + qint64(qMax(gap, made.durationMs() + kRestMs));
+    m_readySinceMs[port - 1] = -1;
 }
 
 } // namespace tipscope::sim

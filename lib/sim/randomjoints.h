@@ -1,9 +1,10 @@
 // RandomJoints: joints of varied depth and recovery on every port of a station, about
 // `perMinute` a minute on each, from a seeded generator (tipscope-sim --joints-per-minute), so a
 // run can be repeated joint for joint. Depths are 15 to 100 K, recoveries 0.4 to 3 s before the
-// port's wear lengthens them. A port gets its next joint no sooner than kRestMs after the last
-// one is over (a detector must see the tip settle first), so a high rate is a ceiling; a port
-// that cannot make a joint (not at work, not at its temperature) is asked again kRestMs later.
+// port's wear lengthens them. A port gets a joint only once it could make one (at work, at its
+// temperature, no joint in progress: SimStation::canMakeJoint()) for kRestMs on end, after a
+// heat-up, a wake or its last joint, as a detector must see the tip settle first; so a high rate
+// is a ceiling.
 // Like DemoActivity it runs on the devices' simulated time.
 #pragma once
 
@@ -34,7 +35,8 @@ private:
     double m_meanGapMs;
     QRandomGenerator m_random;
     qint64 m_ms = 0;
-    QList<qint64> m_nextMs; // per port, index port - 1
+    QList<qint64> m_nextMs;       // per port, index port - 1
+    QList<qint64> m_readySinceMs; // since when it could make a joint; -1: it cannot now
 };
 
 } // namespace tipscope::sim
