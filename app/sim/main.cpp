@@ -31,6 +31,7 @@ struct Options {
     int pace = 0;
     bool robotModeOff = false;
     bool activity = false;
+    int jointsPerMinute = 0;
 };
 
 QTextStream &out() {
@@ -88,9 +89,12 @@ std::unique_ptr<SimLine> buildLine(const Options &o) {
                                "--no-addr or --feeder"));
         line->addDevice(std::move(feeder));
     }
+    if (o.jointsPerMinute > 0 && family->isFeeder())
+        die(QStringLiteral("--joints-per-minute needs a station; the model is SFR"));
     line->setFaults(o.faults);
     line->setBaud(o.pace);
     line->setDemoActivity(o.activity);
+    line->setRandomJoints(o.jointsPerMinute, o.faults.seed);
     line->setClockRunning(true);
     return line;
 }
@@ -152,7 +156,13 @@ int main(int argc, char *argv[]) {
          QStringLiteral("What --nak applies to: all (the default), writes, or one command such as "
                         "ST1."),
          QStringLiteral("WHAT")},
-        {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator."),
+        {QStringLiteral("seed"),
+         QStringLiteral("Seed of the fault generator and of the random joints."),
+         QStringLiteral("N")},
+        {QStringLiteral("joints-per-minute"),
+         QStringLiteral("Make about N joints a minute on every port of the station, of random "
+                        "depth (15-100 K) and recovery (0.4-3 s); each is logged on standard "
+                        "error with its true values."),
          QStringLiteral("N")},
         {QStringLiteral("robot-mode-off"),
          QStringLiteral("Start with robot mode off (stations answer NAK 00005).")},
@@ -187,7 +197,14 @@ int main(int argc, char *argv[]) {
         die(QStringLiteral("--nak-for takes all, writes or a command such as ST1"));
     o.faults.seed = quint32(intOption(p, QStringLiteral("seed"), 1, 0, 1 << 30));
     o.robotModeOff = p.isSet(QStringLiteral("robot-mode-off"));
+    o.jointsPerMinute = intOption(p, QStringLiteral("joints-per-minute"), 0, 0, 60);
     auto line = buildLine(o);
+    // The ground truth of every joint, one line each, for whoever measures them.
+    QObject::connect(line.get(), &SimLine::jointMade, &app, [](const SimJoint &j) {
+        QTextStream(stderr) << "tipscope-sim: joint port=" << j.port << " start_ms=" << j.startMs
+                            << " depth_k=" << j.depthK << " recovery_ms=" << j.recoveryMs
+                            << Qt::endl;
+    });
 
     QFile log;
     if (p.isSet(QStringLiteral("log"))) {

@@ -35,8 +35,8 @@ void PollScheduler::addDevice(DeviceModel *device) {
         const PollClass c = p->isReadable() ? pollClassOf(p->meta()) : PollClass::None;
         if (c == PollClass::None)
             continue;
-        m_items.push_back(
-            {p, device, c, p->meta().usesPort() ? p->spec().port : 0, nowMs(), false});
+        m_items.push_back({p, device, c, p->meta().usesPort() ? p->spec().port : 0, p->meta().role,
+                           nowMs(), false, 0});
     }
     connect(device, &QObject::destroyed, this, [this, device] { removeDevice(device); });
     if (m_running)
@@ -53,6 +53,8 @@ void PollScheduler::removeDevice(DeviceModel *device) {
                                  [device](const Item &i) { return i.device == device; }),
                   m_items.end());
     m_visible.remove(device);
+    for (auto it = m_busy.begin(); it != m_busy.end();)
+        it = it->first == device ? m_busy.erase(it) : std::next(it);
 }
 
 void PollScheduler::setInterval(PollClass c, int ms) {
@@ -89,9 +91,93 @@ void PollScheduler::requestRefresh(DeviceModel *device, PollClass c) {
 }
 
 int PollScheduler::effectiveInterval(const Item &i) const {
-    if (i.pollClass == PollClass::Live && i.port > 0 && !m_visible.value(i.device).contains(i.port))
-        return m_intervals[int(PollClass::Status)];
-    return m_intervals[int(i.pollClass)];
+    const int iv =
+        i.pollClass == PollClass::Live && i.port > 0 && !m_visible.value(i.device).contains(i.port)
+            ? m_intervals[int(PollClass::Status)]
+            : m_intervals[int(i.pollClass)];
+    return m_adaptive && iv > 0 ? adaptedInterval(i, iv) : iv;
+}
+
+int PollScheduler::adaptedInterval(const Item &i, int iv) const {
+    using protocol::Role;
+    if (i.pollClass == PollClass::Status)
+        return iv * kRestFactor;
+    if (i.pollClass != PollClass::Live || i.port == 0)
+        return iv;
+    if (i.role == Role::Status)
+        return iv * kRestFactor;
+    if (inJoint(i))
+        return qMax(kFastestMs, iv / kBusyFactor);
+    if (i.role == Role::Power) // a resting port's: not needed to see a joint begin
+        return iv * kRestFactor;
+    if (i.role == Role::TipTemperature) // a resting port's: a joint's start is timed by it
+        return qMax(kFastestMs, iv / kWatchFactor);
+    return iv;
+}
+
+bool PollScheduler::inJoint(const Item &i) const {
+    return m_adaptive && i.port > 0 &&
+           (i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power) &&
+           m_busy.contains({i.device, i.port});
+}
+
+// When the wire is full every live value is overdue. By due time, the most overdue would go
+// first, which evens the rates out whatever the intervals; adaptive, the value longest overdue
+// for its own interval goes first, so each value gets the wire in proportion to its rate and a
+// port in a joint keeps its finer readings while the resting ports still get their turn.
+double PollScheduler::urgency(const Item &i, qint64 now) const {
+    const int iv = m_adaptive ? effectiveInterval(i) : 0;
+    return iv > 0 ? -double(now - i.polledMs) / iv : double(i.dueMs);
+}
+
+void PollScheduler::setAdaptive(bool on) {
+    m_adaptive = on;
+    m_busy.clear();
+    const qint64 now = nowMs();
+    for (Item &i : m_items)
+        if (!i.inFlight)
+            i.dueMs = qMin(i.dueMs, now + effectiveInterval(i));
+    if (m_running)
+        pump();
+}
+
+const Parameter *PollScheduler::portParameter(DeviceModel *device, int port,
+                                              protocol::Role role) const {
+    for (const Item &i : m_items)
+        if (i.device == device && i.port == port && i.role == role)
+            return i.parameter;
+    return nullptr;
+}
+
+bool PollScheduler::isBusy(DeviceModel *device, int port) const {
+    using protocol::Role;
+    const Parameter *tip = portParameter(device, port, Role::TipTemperature);
+    const Parameter *setpoint = portParameter(device, port, Role::Setpoint);
+    const Parameter *power = portParameter(device, port, Role::Power);
+    const auto tipNow = tip ? tip->number() : std::nullopt;
+    const auto setNow = setpoint ? setpoint->number() : std::nullopt;
+    if (tipNow && setNow && *tipNow < *setNow - kBusyBelowK)
+        return true;
+    const auto powerNow = power ? power->number() : std::nullopt;
+    const int full = power && power->spec().max > 0 ? power->spec().max : 1000;
+    return powerNow && double(*powerNow) > kBusyPowerShare * full;
+}
+
+void PollScheduler::followBusy(DeviceModel *device, int port, qint64 now) {
+    const QPair<DeviceModel *, int> key{device, port};
+    const bool was = m_busy.contains(key);
+    const bool busy = isBusy(device, port);
+    if (busy == was)
+        return;
+    if (!busy) {
+        m_busy.remove(key);
+        return;
+    }
+    m_busy.insert(key);
+    for (Item &i : m_items)
+        if (i.device == device && i.port == port && !i.inFlight &&
+            (i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power))
+            i.dueMs = qMin(i.dueMs, now + effectiveInterval(i));
 }
 
 void PollScheduler::start() {
@@ -132,7 +218,7 @@ void PollScheduler::pump() {
             }
             // Among the rest, errors and status come before settings, counters and identity.
             const bool earlier =
-                iLive ? i.dueMs < best->dueMs
+                iLive ? urgency(i, now) < urgency(*best, now)
                       : i.pollClass < best->pollClass ||
                             (i.pollClass == best->pollClass && i.dueMs < best->dueMs);
             if (earlier)
@@ -163,7 +249,10 @@ void PollScheduler::pump() {
             for (Item &i : m_items) {
                 if (i.parameter != param)
                     continue;
+                if (m_adaptive && i.port > 0 && !lineDown)
+                    followBusy(i.device, i.port, t);
                 i.inFlight = false;
+                i.polledMs = t;
                 const int iv = effectiveInterval(i);
                 i.dueMs = lineDown ? t + qMax(iv, kLineDownHoldMs) : iv > 0 ? t + iv : kNever;
             }

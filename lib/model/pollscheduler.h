@@ -8,10 +8,23 @@
 // never offers more load than the wire carries. Due live values go first, but every fourth poll
 // goes to another value (errors and status before settings, counters and identity), so a burst
 // of settings (a page opening) cannot freeze the live curves and live values cannot starve the
-// rest. When the wire cannot
-// keep up, values simply update less often; Parameter::achievedRateHz() says how often. Polls use
-// the queue's polling and background priorities, so user writes and reads always go first. A line
-// that is not open pauses polling for a second at a time.
+// rest. When the wire cannot keep up, values simply update less often;
+// Parameter::achievedRateHz() says how often. Polls use the queue's polling and background
+// priorities, so user writes and reads always go first. A line that is not open pauses polling
+// for a second at a time.
+//
+// Adaptive sampling (setAdaptive(), on by default) spends the wire on joints. A port is busy
+// while its last tip reading is more than kBusyBelowK below its setpoint or its power is above
+// kBusyPowerShare of full scale. A busy port's tip temperature and power are due kBusyFactor
+// times as often as the live interval says (never more often than kFastestMs), and a port
+// turning busy has them polled at once. A resting port's tip is due kWatchFactor times as often,
+// because a joint's start can be timed no finer than the last reading before it. Values that
+// rarely change are due kRestFactor times less often: a port's status among the live values and
+// the whole status class (setpoint, connected tool, errors, alarms); so is a resting port's
+// power, which is not needed to see a joint begin. When the wire is full, the due live value
+// longest overdue for its own interval goes first, so each gets the wire in proportion to its
+// rate: a recovery is sampled finely while the resting ports keep their turns. Off, every value
+// keeps its class's interval and the earliest due goes first.
 #pragma once
 
 #include "parameter.h"
@@ -45,6 +58,17 @@ public:
     // Polls a class of a device once now (a page opened, a write finished).
     void requestRefresh(DeviceModel *device, PollClass pollClass);
     void setMaxInFlight(int n) { m_maxInFlight = qMax(1, n); }
+    void setAdaptive(bool on);
+    [[nodiscard]] bool isAdaptive() const { return m_adaptive; }
+    // Whether the port's last readings say it is in a joint (the adaptive rule above).
+    [[nodiscard]] bool isBusy(DeviceModel *device, int port) const;
+
+    static constexpr int kBusyBelowK = 5;
+    static constexpr double kBusyPowerShare = 0.6;
+    static constexpr int kBusyFactor = 4;
+    static constexpr int kWatchFactor = 2;
+    static constexpr int kRestFactor = 4;
+    static constexpr int kFastestMs = 25;
 
     void start();
     void stop();
@@ -57,12 +81,24 @@ private:
         DeviceModel *device = nullptr;
         PollClass pollClass = PollClass::None;
         int port = 0;
+        protocol::Role role = protocol::Role::None;
         qint64 dueMs = 0;
         bool inFlight = false;
+        qint64 polledMs = 0; // when its last poll finished
     };
 
     void pump();
     [[nodiscard]] int effectiveInterval(const Item &item) const;
+    [[nodiscard]] int adaptedInterval(const Item &item, int interval) const;
+    // A busy port's tip temperature or power, while adaptive.
+    [[nodiscard]] bool inJoint(const Item &item) const;
+    // The order among due live values, lowest first: their due time; adaptive, how long they
+    // are overdue for their interval.
+    [[nodiscard]] double urgency(const Item &item, qint64 now) const;
+    [[nodiscard]] const Parameter *portParameter(DeviceModel *device, int port,
+                                                 protocol::Role role) const;
+    // After a reading: a port that has just turned busy gets its tip and power due now.
+    void followBusy(DeviceModel *device, int port, qint64 now);
     [[nodiscard]] qint64 nowMs() const { return m_clock.elapsed(); }
     void armWake();
 
@@ -73,6 +109,8 @@ private:
     int m_inFlight = 0;
     int m_slot = 0;
     bool m_running = false;
+    bool m_adaptive = true;
+    QSet<QPair<DeviceModel *, int>> m_busy;
     qint64 m_holdUntilMs = 0;
     qint64 m_done = 0;
     QElapsedTimer m_clock;

@@ -34,7 +34,7 @@ void DemoActivity::advance(int ms) {
     m_ms += ms;
     if (portInUse(kJointPort) && m_station->port(kJointPort).status == kWorking &&
         passed(ms, kJointOffsetMs, kJointEveryMs))
-        m_station->solderJoint(kJointPort, kJointSeconds);
+        m_station->startJoint(kJointPort, kJointDepthK, kJointRecoveryMs);
     // Ends before starts: a tick long enough to hold both must not leave a start running.
     if (m_resting && passed(ms, kRestCycleMs, kRestCycleMs)) {
         m_resting = false;

@@ -9,7 +9,7 @@ namespace tipscope::sim {
 
 namespace {
 
-enum class Handler { Station, Line, Feeder, Get, Stats, Help };
+enum class Handler { Station, Line, Feeder, Joint, Get, Stats, Help };
 
 struct CommandEntry {
     const char *verb;
@@ -28,6 +28,8 @@ constexpr CommandEntry kCommands[] = {
     {"robot-mode", "on|off", Handler::Station},
     {"fuse", "on|off", Handler::Station},
     {"feeder-error", "CODE", Handler::Feeder},
+    {"joint", "PORT DEPTH RECOVERY_MS", Handler::Joint},
+    {"wear", "PORT SHARE", Handler::Joint},
     {"drop", "SHARE", Handler::Line},
     {"corrupt", "SHARE", Handler::Line},
     {"garbage", "SHARE", Handler::Line},
@@ -205,6 +207,35 @@ QString applyFeederCommand(SimLine &line, Args &a) {
     return QStringLiteral("ok");
 }
 
+// "joint PORT DEPTH RECOVERY_MS" and "wear PORT SHARE": the station's joints (JointShape).
+QString applyJointCommand(SimLine &line, const QString &verb, Args &a) {
+    SimStation *st = line.station();
+    if (!st)
+        return QStringLiteral("error: there is no station on this line");
+    const int port = a.integer(1);
+    if (!a.ok || port < 1 || port > st->portCount())
+        return QStringLiteral("error: port must be 1 to %1").arg(st->portCount());
+    if (verb == QLatin1String("wear")) {
+        const double share = a.share(2);
+        if (!a.ok || a.words.size() != 3)
+            return QStringLiteral("error: wear takes PORT SHARE, a share from 0 to 1 (0.3: "
+                                  "recoveries 30 % slower)");
+        st->setWear(port, share);
+        return QStringLiteral("ok");
+    }
+    const int depth = a.integer(2);
+    const int recovery = a.integer(3);
+    if (!a.ok || a.words.size() != 4)
+        return QStringLiteral("error: joint takes PORT DEPTH RECOVERY_MS, whole numbers (K, ms)");
+    if (const QString wrong = JointShape::checkRequest(depth, recovery); !wrong.isEmpty())
+        return QStringLiteral("error: ") + wrong;
+    if (!line.startJoint(port, depth, recovery))
+        return QStringLiteral("error: port %1 cannot make a joint now: it is not at work at its "
+                              "temperature, or a joint is in progress")
+            .arg(port);
+    return QStringLiteral("ok");
+}
+
 } // namespace
 
 bool parseNakScope(const QString &text, SimFaults *faults) {
@@ -253,6 +284,8 @@ QString executeSimCommand(SimLine &line, const QString &command) {
         return applyLineCommand(line, verb, a);
     case Handler::Feeder:
         return applyFeederCommand(line, a);
+    case Handler::Joint:
+        return applyJointCommand(line, verb, a);
     }
     return usage();
 }

@@ -5,6 +5,7 @@
 //   status PORT STATUS      robot-mode on|off      fuse on|off          feeder-error CODE
 //   drop SHARE   corrupt SHARE   garbage SHARE   bad-data SHARE   drop-requests SHARE
 //   corrupt-requests SHARE   nak CODE [all|writes|COMMAND]   latency MS   pace BAUD
+//   joint PORT DEPTH RECOVERY_MS   wear PORT SHARE
 //   get [CODE...]           stats                  help
 // One table holds them: what help lists is what is accepted (simCommandUsage() adds a front
 // end's own commands, such as tipscope-sim's unplug and plug).

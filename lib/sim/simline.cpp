@@ -1,5 +1,7 @@
 #include "simline.h"
 
+#include <QDateTime>
+
 namespace tipscope::sim {
 
 using namespace tipscope::protocol;
@@ -21,6 +23,7 @@ SimLine::SimLine(QObject *parent)
     : QObject(parent)
     , m_rng(1) {
     m_clock.start();
+    m_epochAtZeroMs = QDateTime::currentMSecsSinceEpoch();
     m_pumpTimer.setSingleShot(true);
     m_pumpTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_pumpTimer, &QTimer::timeout, this, &SimLine::pump);
@@ -84,6 +87,9 @@ void SimLine::setFaults(const SimFaults &faults) {
 
 void SimLine::setClockRunning(bool running) {
     m_lastTickNs = m_clock.nsecsElapsed();
+    // From here the simulated time keeps pace with the wall clock.
+    if (running && station())
+        m_epochAtZeroMs = QDateTime::currentMSecsSinceEpoch() - station()->nowMs();
     if (running)
         m_tickTimer.start();
     else
@@ -104,6 +110,40 @@ void SimLine::advance(int ms) {
         d->advance(ms);
     if (m_activity)
         m_activity->advance(ms);
+    if (m_randomJoints)
+        m_randomJoints->advance(ms);
+    reportJoints();
+}
+
+void SimLine::setRandomJoints(double perMinute, quint32 seed) {
+    SimStation *st = station();
+    m_randomJoints =
+        st && perMinute > 0 ? std::make_unique<RandomJoints>(st, perMinute, seed) : nullptr;
+}
+
+std::optional<SimJoint> SimLine::startJoint(int port, int depthK, qint64 recoveryMs) {
+    SimStation *st = station();
+    if (!st || port < 1 || port > st->portCount())
+        return std::nullopt;
+    if (m_tickTimer.isActive())
+        tick(); // the joint starts now, not at the last tick
+    const auto made = st->startJoint(port, depthK, recoveryMs);
+    reportJoints();
+    if (!made)
+        return std::nullopt;
+    SimJoint j = *made;
+    j.startMs += m_epochAtZeroMs;
+    return j;
+}
+
+void SimLine::reportJoints() {
+    SimStation *st = station();
+    if (!st)
+        return;
+    for (SimJoint j : st->takeMadeJoints()) {
+        j.startMs += m_epochAtZeroMs;
+        Q_EMIT jointMade(j);
+    }
 }
 
 void SimLine::setDemoActivity(bool on) {

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "demoactivity.h"
+#include "randomjoints.h"
 #include "simfeeder.h"
 #include "simstation.h"
 
@@ -97,6 +98,12 @@ public:
     // devices that change only when told to.
     void setDemoActivity(bool on);
     [[nodiscard]] bool hasDemoActivity() const { return m_activity != nullptr; }
+    // Joints of varied depth and recovery on every port of the station, about `perMinute` a
+    // minute on each (RandomJoints), seeded; 0 stops them.
+    void setRandomJoints(double perMinute, quint32 seed);
+    // A joint on the station's port now (the clock caught up first): nullopt when there is no
+    // such port or it cannot make one (SimStation::canMakeJoint()).
+    std::optional<SimJoint> startJoint(int port, int depthK, qint64 recoveryMs);
     [[nodiscard]] const SimLineStats &stats() const { return m_stats; }
     // A new client on the line: what the old one left half sent, the answers not yet on the
     // wire and the wire's backlog are forgotten.
@@ -110,6 +117,10 @@ public Q_SLOTS:
 Q_SIGNALS:
     void transmit(const QByteArray &bytes);
     void requestReceived(const tipscope::protocol::Frame &request);
+    // Every joint the station made (a command, the demo, the random joints), with its true
+    // values; startMs is in milliseconds since the epoch: the wall clock while the line's clock
+    // runs, and the time the line was made plus the simulated time when advance() drives it.
+    void jointMade(const tipscope::sim::SimJoint &joint);
 
 private:
     struct Outgoing {
@@ -134,6 +145,7 @@ private:
     [[nodiscard]] qint64 byteNs() const { return m_baud > 0 ? 10'000'000'000LL / m_baud : 0; }
     [[nodiscard]] bool chance(double share);
     void tick();
+    void reportJoints();
 
     std::vector<std::unique_ptr<SimDevice>> m_devices;
     protocol::FrameDecoder m_decoder;
@@ -150,6 +162,8 @@ private:
     qint64 m_lastTickNs = 0;
     SimLineStats m_stats;
     std::unique_ptr<DemoActivity> m_activity;
+    std::unique_ptr<RandomJoints> m_randomJoints;
+    qint64 m_epochAtZeroMs = 0; // the epoch time of the station's simulated time 0
 };
 
 } // namespace tipscope::sim

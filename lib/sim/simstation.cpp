@@ -1,16 +1,16 @@
 #include "simstation.h"
 
 #include <QtMath>
+#include <utility>
 
 namespace tipscope::sim {
 
 using namespace tipscope::protocol;
 
 namespace {
-constexpr double kHeatRatePerS = 120.0;  // °C/s at full power
-constexpr double kLossPerS = 0.15;       // fraction of (tip - room) lost per second
-constexpr double kGain = 40.0;           // per mille per °C of error
-constexpr double kJointDrawPerS = 120.0; // °C/s a joint draws: a dip of about 50 °C a second
+constexpr double kHeatRatePerS = 120.0; // °C/s at full power
+constexpr double kLossPerS = 0.15;      // fraction of (tip - room) lost per second
+constexpr double kGain = 40.0;          // per mille per °C of error
 constexpr int kMaxStepMs = 50;
 constexpr int kNoToolError = 4;
 constexpr qint64 kDisabledDelay = 99999;
@@ -71,8 +71,27 @@ void SimStation::setStatus(int port, int status) {
     p.secondsInStatus = 0;
 }
 
-void SimStation::solderJoint(int port, double seconds) {
-    m_ports[port - 1].jointLeftS = qMax(0.0, seconds);
+bool SimStation::canMakeJoint(int port) const {
+    const SimPort &p = m_ports.at(port - 1);
+    // At work and at its temperature: a joint is measured from a settled tip.
+    return p.tool != 0 && p.status == 0 && !p.cooling && !heaterBlocked(p.error) && !p.joint &&
+           qAbs(p.tip - targetFor(p, port)) <= JointShape::kBandK;
+}
+
+std::optional<SimJoint> SimStation::startJoint(int port, int depthK, qint64 recoveryMs) {
+    if (!canMakeJoint(port))
+        return std::nullopt;
+    SimPort &p = m_ports[port - 1];
+    const JointShape shape(depthK, qRound64(double(recoveryMs) * (1 + p.wear)));
+    p.joint = ActiveJoint{shape, 0};
+    const SimJoint made{port, m_nowMs + qRound64(shape.leaveMs()), shape.depthK(),
+                        shape.recoveryMs()};
+    m_madeJoints.append(made);
+    return made;
+}
+
+QList<SimJoint> SimStation::takeMadeJoints() {
+    return std::exchange(m_madeJoints, {});
 }
 
 QByteArray SimStation::toolCode(char letter, int port, int tool) const {
@@ -94,6 +113,7 @@ void SimStation::advance(int ms) {
         for (int i = 0; i < m_ports.size(); ++i)
             step(m_ports[i], i + 1, chunk / 1000.0);
         m_noisePhase += chunk / 1000.0;
+        m_nowMs += chunk;
         ms -= chunk;
     }
 }
@@ -111,10 +131,7 @@ void SimStation::step(SimPort &p, int n, double dt) {
     }
     p.power = int(qBound(0.0, demand, double(limit)));
     p.tip += dt * (p.power / 1000.0 * kHeatRatePerS - (p.tip - kAmbient) * kLossPerS);
-    if (p.jointLeftS > 0) {
-        p.tip = qMax(kAmbient, p.tip - qMin(dt, p.jointLeftS) * kJointDrawPerS);
-        p.jointLeftS -= dt;
-    }
+    stepJoint(p, target, dt);
     p.secondsInStatus += dt;
     if (p.tool == 0) {
         p.noToolS += dt;
@@ -136,6 +153,20 @@ void SimStation::step(SimPort &p, int n, double dt) {
     }
     updateSleep(p, n, dt);
     updateAlarms(p, n, dt);
+}
+
+// The joint holds the tip on its shape below the target; the controller, seeing the tip low,
+// answers with power on the next step. A port that leaves work ends its joint.
+void SimStation::stepJoint(SimPort &p, double target, double dt) {
+    if (!p.joint)
+        return;
+    p.joint->elapsedMs += dt * 1000;
+    if (p.tool == 0 || p.status != 0 || p.cooling || heaterBlocked(p.error) ||
+        p.joint->shape.isOver(p.joint->elapsedMs)) {
+        p.joint.reset();
+        return;
+    }
+    p.tip = qMax(kAmbient, target - p.joint->shape.belowTargetK(p.joint->elapsedMs));
 }
 
 void SimStation::updateSleep(SimPort &p, int n, double) {
@@ -220,8 +251,10 @@ std::optional<Value> SimStation::readLive(const ResolvedCommand &cmd) {
     if (cmd.port == 0)
         return std::nullopt;
     SimPort &p = m_ports[cmd.port - 1];
-    // A small deterministic wobble keeps the curves alive without making tests flaky.
-    const double noise = p.tip > kAmbient + 5 ? 0.6 * qSin(m_noisePhase * 3.1 + cmd.port) : 0;
+    // A small deterministic wobble keeps the curves alive without making tests flaky; a joint's
+    // fall and rise are left as the shape made them, the ground truth a client is measured by.
+    const double noise =
+        p.tip > kAmbient + 5 && !p.joint ? 0.6 * qSin(m_noisePhase * 3.1 + cmd.port) : 0;
     if (pattern == "TTx")
         return Value::ofNumber(qRound(p.tip + noise));
     if (pattern == "PPx")

@@ -9,11 +9,19 @@
 // tests and the demo through the public setters.
 #pragma once
 
+#include "jointshape.h"
 #include "simdevice.h"
 
 #include <QList>
+#include <optional>
 
 namespace tipscope::sim {
+
+// A joint in progress on a port: its shape and how far along it is.
+struct ActiveJoint {
+    JointShape shape;
+    double elapsedMs = 0;
+};
 
 struct SimPort {
     int tool = 0;
@@ -29,8 +37,9 @@ struct SimPort {
     double highFor = 0, lowFor = 0;
     double pluggedS = 0, workS = 0, sleepS = 0, hibernationS = 0, noToolS = 0;
     int sleepCycles = 0, desolderCycles = 0;
-    double jointLeftS = 0;   // a joint drawing heat from the tip (solderJoint())
-    double dispensedDmm = 0; // ALE
+    std::optional<ActiveJoint> joint; // startJoint()
+    double wear = 0;                  // share by which the tip's recoveries are slower
+    double dispensedDmm = 0;          // ALE
     int dispensedCycles = 0;
     double dispenseLeftDmm = 0;
 };
@@ -47,9 +56,18 @@ public:
     void latchAlarm(int port, int flags) { m_ports[port - 1].alarmFlags |= flags; }
     void setFuse(bool present) { m_fusePresent = present; }
     void setStatus(int port, int status);
-    // A joint on the tip for `seconds`: it draws heat faster than the heater can give at first,
-    // so the tip dips and the controller brings it back, as at the bench.
-    void solderJoint(int port, double seconds);
+    // A joint on the port now (JointShape): the tip falls `depthK` below its target and is back
+    // within the band after `recoveryMs`, lengthened by the port's wear. A port that cannot make
+    // one (canMakeJoint()) makes none: nullopt. What was made is also kept for takeMadeJoints().
+    std::optional<SimJoint> startJoint(int port, int depthK, qint64 recoveryMs);
+    // At work with a tool, its tip settled at the target, no joint in progress.
+    [[nodiscard]] bool canMakeJoint(int port) const;
+    // The joints made since the last call, with their start in this station's time (nowMs()).
+    [[nodiscard]] QList<SimJoint> takeMadeJoints();
+    // A worn tip: its recoveries take `share` longer (0.3: 30 % slower).
+    void setWear(int port, double share) { m_ports[port - 1].wear = qMax(0.0, share); }
+    // Simulated milliseconds since the station was made.
+    [[nodiscard]] qint64 nowMs() const { return m_nowMs; }
 
     void advance(int ms) override;
     void restoreFactorySettings() override;
@@ -63,6 +81,7 @@ protected:
 
 private:
     void step(SimPort &p, int portNumber, double dt);
+    void stepJoint(SimPort &p, double target, double dt);
     void updateSleep(SimPort &p, int portNumber, double dt);
     void updateAlarms(SimPort &p, int portNumber, double dt);
     [[nodiscard]] double targetFor(const SimPort &p, int portNumber) const;
@@ -76,6 +95,8 @@ private:
     bool m_fusePresent = true;
     bool m_fuseIgnored = false;
     double m_noisePhase = 0;
+    qint64 m_nowMs = 0;
+    QList<SimJoint> m_madeJoints;
     QMap<QByteArray, qint64> m_savedSelected; // W-NVS snapshot of STx
 };
 

@@ -1,6 +1,7 @@
 #include "jointbench.h"
 
 #include "benchsupport.h"
+#include "jointwirebench.h"
 #include "model/joints/jointdetector.h"
 
 #include <QRandomGenerator>
@@ -143,6 +144,8 @@ Result measure(int joints, quint32 seed, qint64 periodMs, double noiseK) {
 } // namespace
 
 int runJointBench(const QStringList &args) {
+    if (args.contains(QStringLiteral("--wire")))
+        return runJointWireBench(args);
     int joints = 500;
     quint32 seed = 1;
     double noiseK = 0.5;
@@ -154,7 +157,6 @@ int runJointBench(const QStringList &args) {
         else if (args.at(i) == QLatin1String("--noise"))
             noiseK = qMax(0.0, args.at(i + 1).toDouble());
     }
-    printMachineContext();
     printFigure(QStringLiteral("joints.count"), joints, QStringLiteral("joints"), 0);
     printFigure(QStringLiteral("joints.noise"), noiseK, QStringLiteral("K"), 1);
     for (const qint64 period : {100, 300}) {

@@ -10,7 +10,8 @@
 //   joints.<period>ms.recovery_error_p50_ms, ..._p95_ms
 //                                      |measured − true recovery time| over the matched joints
 // Periods: 100 ms (a port polled alone at full rate) and 300 ms (four busy ports at 19200 baud),
-// side by side. A benchmark: it asserts nothing.
+// side by side. With --wire it measures through the wire instead (jointwirebench.h). A benchmark:
+// it asserts nothing.
 #pragma once
 
 #include <QStringList>

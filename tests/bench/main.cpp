@@ -39,7 +39,8 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runJournalBench},
     {"joints",
      "joint detection: precision, recall, recovery error at two poll periods (--joints N, --noise "
-     "K)",
+     "K), or through the wire from the simulator, adaptive sampling on and off (--wire --minutes "
+     "M)",
      tipscope::bench::runJointBench},
     {"mqtt", "MQTT client: idle CPU and wake-ups, QoS 1 messages a second (--seconds N)",
      tipscope::bench::runMqttBench},

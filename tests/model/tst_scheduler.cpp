@@ -7,6 +7,21 @@ using namespace tipscope;
 using namespace tipscope::model;
 using namespace tipscope::testing;
 
+namespace {
+// A DME on a running line paced at 19200 baud, its model polled by `s` with `visible` on screen
+// and live values due every 100 ms, which the wire cannot carry for four ports.
+std::unique_ptr<StationModel> pacedStation(SimFixture &f, PollScheduler &s,
+                                           const QSet<int> &visible) {
+    f.simLine->setClockRunning(true);
+    f.simLine->setBaud(19200);
+    auto st = f.station();
+    s.addDevice(st.get());
+    s.setVisiblePorts(st.get(), visible);
+    s.setInterval(PollClass::Live, 100);
+    return st;
+}
+} // namespace
+
 class TestScheduler : public QObject {
     Q_OBJECT
 private Q_SLOTS:
@@ -14,17 +29,14 @@ private Q_SLOTS:
     void neverMoreThanMaxInFlightPollsAreQueued();
     void settingsAreReadOnceAndAgainOnRequest();
     void aClosedLinePausesPollingInsteadOfSpinning();
+    void aPortInAJointHasItsLiveValuesPolledMoreOften_data();
+    void aPortInAJointHasItsLiveValuesPolledMoreOften();
 };
 
 void TestScheduler::visiblePortsUpdateFasterThanHiddenOnes() {
     SimFixture f(singleDevice(QStringLiteral("DME")));
-    f.simLine->setClockRunning(true);
-    f.simLine->setBaud(19200);
-    auto st = f.station();
     PollScheduler s;
-    s.addDevice(st.get());
-    s.setVisiblePorts(st.get(), {1});
-    s.setInterval(PollClass::Live, 100);
+    auto st = pacedStation(f, s, {1});
     s.setInterval(PollClass::Status, 1000);
     s.start();
     QTest::qWait(4000);
@@ -82,6 +94,55 @@ void TestScheduler::aClosedLinePausesPollingInsteadOfSpinning() {
     QTest::qWait(1500);
     // Each pause lasts a second: a couple of rounds of failures, not thousands.
     QVERIFY2(s.pollsDone() < 20, qPrintable(QString::number(s.pollsDone())));
+}
+
+void TestScheduler::aPortInAJointHasItsLiveValuesPolledMoreOften_data() {
+    QTest::addColumn<bool>("adaptive");
+    QTest::newRow("adaptive") << true;
+    QTest::newRow("not adaptive") << false;
+}
+
+// Port 2 makes a long joint while port 4 rests, all four ports on screen, on a paced wire that
+// cannot carry every live value at the live interval: adaptive, the busy port's tip is read more
+// often than the resting port's (twice as often by the rule) and its power several times as
+// often; not adaptive, both about as often.
+void TestScheduler::aPortInAJointHasItsLiveValuesPolledMoreOften() {
+    QFETCH(bool, adaptive);
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    PollScheduler s;
+    auto st = pacedStation(f, s, {1, 2, 3, 4});
+    s.setAdaptive(adaptive);
+    QCOMPARE(s.isAdaptive(), adaptive);
+    s.start();
+    // The ports heat up from cold first (busy: far below the setpoint, full power).
+    QTRY_VERIFY_WITH_TIMEOUT(
+        f.simLine->station()->canMakeJoint(2) && f.simLine->station()->canMakeJoint(4), 15000);
+    QTRY_VERIFY_WITH_TIMEOUT(!s.isBusy(st.get(), 2) && !s.isBusy(st.get(), 4), 5000);
+    QVERIFY(f.simLine->startJoint(2, 80, 8000));
+    QTRY_VERIFY_WITH_TIMEOUT(s.isBusy(st.get(), 2), 2000);
+    QVERIFY(!s.isBusy(st.get(), 4));
+    QSignalSpy busyTip(st->parameter("TT2"), &Parameter::updated);
+    QSignalSpy busyPower(st->parameter("PP2"), &Parameter::updated);
+    QSignalSpy restingTip(st->parameter("TT4"), &Parameter::updated);
+    QSignalSpy restingPower(st->parameter("PP4"), &Parameter::updated);
+    QVERIFY(busyTip.isValid() && busyPower.isValid() && restingTip.isValid() &&
+            restingPower.isValid());
+    QTest::qWait(3000); // well inside the joint's recovery
+    QVERIFY(s.isBusy(st.get(), 2));
+    const QString counts = QStringLiteral("tip %1 vs %2, power %3 vs %4")
+                               .arg(busyTip.size())
+                               .arg(restingTip.size())
+                               .arg(busyPower.size())
+                               .arg(restingPower.size());
+    QVERIFY2(restingTip.size() > 0 && restingPower.size() > 0, qPrintable(counts));
+    if (adaptive) {
+        // Twice as often by the rule; a margin for the wire's rounding of turns.
+        QVERIFY2(4 * busyTip.size() > 5 * restingTip.size(), qPrintable(counts));
+        QVERIFY2(busyPower.size() > 2 * restingPower.size(), qPrintable(counts));
+    } else {
+        QVERIFY2(2 * busyTip.size() < 3 * restingTip.size(), qPrintable(counts));
+        QVERIFY2(2 * busyPower.size() < 3 * restingPower.size(), qPrintable(counts));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestScheduler)
