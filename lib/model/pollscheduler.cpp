@@ -101,7 +101,7 @@ int PollScheduler::effectiveInterval(const Item &i) const {
 int PollScheduler::adaptedInterval(const Item &i, int iv) const {
     using protocol::Role;
     if (i.pollClass == PollClass::Status)
-        return iv * kRestFactor;
+        return i.role == Role::Setpoint || i.role == Role::ConnectedTool ? iv * kRestFactor : iv;
     if (i.pollClass != PollClass::Live || i.port == 0)
         return iv;
     if (i.role == Role::Status)
