@@ -2428,6 +2428,114 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>JointTableModel</name>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="40"/>
+        <source>%1 at %2</source>
+        <translation>%1 an Adresse %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="153"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="159"/>
+        <source>ok</source>
+        <translation>in Ordnung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
+        <source>slow recovery</source>
+        <translation>langsame Erholung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
+        <source>too deep</source>
+        <translation>zu tief</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
+        <source>incomplete</source>
+        <translation>unvollständig</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="191"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="197"/>
+        <source>%1 %·s</source>
+        <translation>%1 %·s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="210"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
+        <source>Setpoint</source>
+        <translation>Sollwert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
+        <source>Lowest</source>
+        <translation>Tiefstwert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
+        <source>Dip</source>
+        <translation>Einbruch</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
+        <source>Recovery</source>
+        <translation>Erholung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
+        <source>Power peak</source>
+        <translation>Leistungsspitze</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
+        <source>Power·time</source>
+        <translation>Leistung·Zeit</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <source>Verdict</source>
+        <translation>Urteil</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
+        <source>Work order</source>
+        <translation>Auftrag</translation>
+    </message>
+</context>
+<context>
     <name>JointWatcher</name>
     <message>
         <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
@@ -3949,37 +4057,42 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="53"/>
         <source>Open recording</source>
         <translation>Aufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="63"/>
         <source>Reading %1: %2 MB</source>
         <translation>Lese %1: %2 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="70"/>
         <source>Reading %1…</source>
         <translation>Lese %1 …</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="117"/>
+        <source>The charts hold no readings of %1 at %2: only this session&apos;s readings are kept.</source>
+        <translation>Die Diagramme enthalten keine Messwerte von %1 um %2: nur die Messwerte dieser Sitzung werden behalten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="127"/>
         <source>Open a chart recording</source>
         <translation>Diagrammaufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="129"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>CSV-Datei (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
         <source>Replay</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
         <source>Cannot replay %1</source>
         <translation>%1 kann nicht wiedergegeben werden</translation>
     </message>
@@ -5302,6 +5415,166 @@ Zurücksetzen?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JointsPage</name>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="88"/>
+        <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
+        <translation>Doppelklick auf eine Lötstelle oder Eingabetaste zeigt sie auf der Seite Diagramme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="127"/>
+        <source>All devices</source>
+        <translation>Alle Geräte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="129"/>
+        <source>All ports</source>
+        <translation>Alle Ports</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="131"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="133"/>
+        <source>all tools</source>
+        <translation>alle Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <source>All verdicts</source>
+        <translation>Alle Urteile</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <source>Last hour</source>
+        <translation>Letzte Stunde</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <source>Last 24 hours</source>
+        <translation>Letzte 24 Stunden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <source>Last 7 days</source>
+        <translation>Letzte 7 Tage</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <source>Last 30 days</source>
+        <translation>Letzte 30 Tage</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <source>All times</source>
+        <translation>Gesamte Zeit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
+        <source>all work orders</source>
+        <translation>alle Aufträge</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="147"/>
+        <source>Reload</source>
+        <translation>Neu laden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <source>Read the journal again</source>
+        <translation>Das Journal neu lesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <source>Export CSV…</source>
+        <translation>CSV exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <source>Save the listed joints as a CSV file</source>
+        <translation>Die aufgeführten Lötstellen als CSV-Datei speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <source>Verdict</source>
+        <translation>Urteil</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <source>Work order</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="243"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
+        <source>%n joint(s) listed.</source>
+        <translation>
+            <numerusform>%n Lötstelle aufgeführt.</numerusform>
+            <numerusform>%n Lötstellen aufgeführt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="245"/>
+        <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
+        <translation>Nur die neuesten %1 aus dem Journal: schränken Sie den Filter ein, um ältere zu sehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="249"/>
+        <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
+        <translation>Das Journal konnte nicht gelesen werden (%1): nur die Lötstellen dieser Sitzung sind aufgeführt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="253"/>
+        <source>No journal yet: this session&apos;s joints only.</source>
+        <translation>Noch kein Journal: nur die Lötstellen dieser Sitzung.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="329"/>
+        <source>%n joint(s) written to %1.</source>
+        <translation>
+            <numerusform>%n Lötstelle in %1 geschrieben.</numerusform>
+            <numerusform>%n Lötstellen in %1 geschrieben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="341"/>
+        <source>Export joints</source>
+        <translation>Lötstellen exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="341"/>
+        <source>CSV file (*.csv)</source>
+        <translation>CSV-Datei (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.h" line="48"/>
+        <source>Joints</source>
+        <translation>Lötstellen</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::LinkStatusLabel</name>
     <message>
         <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
@@ -5332,78 +5605,78 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="36"/>
+        <location filename="../app/gui/mainwindow.cpp" line="37"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="88"/>
+        <location filename="../app/gui/mainwindow.cpp" line="92"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="89"/>
+        <location filename="../app/gui/mainwindow.cpp" line="93"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="91"/>
+        <location filename="../app/gui/mainwindow.cpp" line="95"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="92"/>
+        <location filename="../app/gui/mainwindow.cpp" line="96"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="93"/>
+        <location filename="../app/gui/mainwindow.cpp" line="97"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="98"/>
+        <location filename="../app/gui/mainwindow.cpp" line="102"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="99"/>
+        <location filename="../app/gui/mainwindow.cpp" line="103"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="101"/>
+        <location filename="../app/gui/mainwindow.cpp" line="105"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="102"/>
+        <location filename="../app/gui/mainwindow.cpp" line="106"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="176"/>
+        <location filename="../app/gui/mainwindow.cpp" line="180"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="181"/>
+        <location filename="../app/gui/mainwindow.cpp" line="185"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="186"/>
+        <location filename="../app/gui/mainwindow.cpp" line="190"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="192"/>
-        <location filename="../app/gui/mainwindow.cpp" line="195"/>
+        <location filename="../app/gui/mainwindow.cpp" line="196"/>
+        <location filename="../app/gui/mainwindow.cpp" line="199"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="196"/>
+        <location filename="../app/gui/mainwindow.cpp" line="200"/>
         <source>Written:
 %1
 
@@ -5902,6 +6175,59 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="174"/>
         <source>The table shows what the profile would change.</source>
         <translation>Die Tabelle zeigt, was das Profil ändern würde.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RecoveryHistogramView</name>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="57"/>
+        <source>Histogram of recovery times</source>
+        <translation>Histogramm der Erholzeiten</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="70"/>
+        <source>Recovery time of %n joint(s)</source>
+        <translation>
+            <numerusform>Erholzeit von %n Lötstelle</numerusform>
+            <numerusform>Erholzeit von %n Lötstellen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="73"/>
+        <source>%1 (%n did not recover)</source>
+        <translation>
+            <numerusform>%1 (%n nicht erholt)</numerusform>
+            <numerusform>%1 (%n nicht erholt)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="86"/>
+        <source>No recovered joints listed</source>
+        <translation>Keine erholten Lötstellen aufgeführt</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RecoveryTrendView</name>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="117"/>
+        <source>Daily median recovery time per tool</source>
+        <translation>Täglicher Median der Erholzeit je Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="130"/>
+        <source>Median recovery time per day</source>
+        <translation>Median der Erholzeit je Tag</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="131"/>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="169"/>
+        <source>Median recovery time per day:</source>
+        <translation>Median der Erholzeit je Tag:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="145"/>
+        <source>No recovered joints listed</source>
+        <translation>Keine erholten Lötstellen aufgeführt</translation>
     </message>
 </context>
 <context>

@@ -2430,6 +2430,114 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>JointTableModel</name>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="40"/>
+        <source>%1 at %2</source>
+        <translation>%1 en la dirección %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="153"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="159"/>
+        <source>ok</source>
+        <translation>correcta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
+        <source>slow recovery</source>
+        <translation>recuperación lenta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
+        <source>too deep</source>
+        <translation>demasiado profunda</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
+        <source>incomplete</source>
+        <translation>incompleta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="191"/>
+        <source>none</source>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="197"/>
+        <source>%1 %·s</source>
+        <translation>%1 %·s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="210"/>
+        <source>Time</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
+        <source>Device</source>
+        <translation>Equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
+        <source>Setpoint</source>
+        <translation>Consigna</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
+        <source>Lowest</source>
+        <translation>Mínima</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
+        <source>Dip</source>
+        <translation>Caída</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
+        <source>Recovery</source>
+        <translation>Recuperación</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
+        <source>Duration</source>
+        <translation>Duración</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
+        <source>Power peak</source>
+        <translation>Potencia máx.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
+        <source>Power·time</source>
+        <translation>Potencia·tiempo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <source>Verdict</source>
+        <translation>Veredicto</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
+        <source>Work order</source>
+        <translation>Orden de trabajo</translation>
+    </message>
+</context>
+<context>
     <name>JointWatcher</name>
     <message>
         <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
@@ -3951,37 +4059,42 @@ Hágalo permanente con esta regla de udev:
         <translation>No se puede grabar: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="53"/>
         <source>Open recording</source>
         <translation>Abrir grabación</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="63"/>
         <source>Reading %1: %2 MB</source>
         <translation>Leyendo %1: %2 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="70"/>
         <source>Reading %1…</source>
         <translation>Leyendo %1…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="117"/>
+        <source>The charts hold no readings of %1 at %2: only this session&apos;s readings are kept.</source>
+        <translation>Los gráficos no tienen lecturas de %1 a las %2: solo se guardan las lecturas de esta sesión.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="127"/>
         <source>Open a chart recording</source>
         <translation>Abrir una grabación de gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="129"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>Archivo CSV (*.csv);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
         <source>Replay</source>
         <translation>Reproducción</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
         <source>Cannot replay %1</source>
         <translation>No se puede reproducir %1</translation>
     </message>
@@ -5304,6 +5417,166 @@ Reset it?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JointsPage</name>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="88"/>
+        <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
+        <translation>Doble clic en una soldadura, o Intro, para verla en la página Gráficos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="127"/>
+        <source>All devices</source>
+        <translation>Todos los equipos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="129"/>
+        <source>All ports</source>
+        <translation>Todos los puertos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="131"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="133"/>
+        <source>all tools</source>
+        <translation>todas las herramientas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <source>All verdicts</source>
+        <translation>Todos los veredictos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <source>Last hour</source>
+        <translation>Última hora</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <source>Last 24 hours</source>
+        <translation>Últimas 24 horas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <source>Last 7 days</source>
+        <translation>Últimos 7 días</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <source>Last 30 days</source>
+        <translation>Últimos 30 días</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <source>All times</source>
+        <translation>Todo el tiempo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
+        <source>all work orders</source>
+        <translation>todas las órdenes</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="147"/>
+        <source>Reload</source>
+        <translation>Recargar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <source>Read the journal again</source>
+        <translation>Volver a leer el registro</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <source>Export CSV…</source>
+        <translation>Exportar CSV…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <source>Save the listed joints as a CSV file</source>
+        <translation>Guardar las soldaduras de la lista como archivo CSV</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <source>Device</source>
+        <translation>Equipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <source>Verdict</source>
+        <translation>Veredicto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <source>Time</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <source>Work order</source>
+        <translation>Orden de trabajo</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="243"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
+        <source>%n joint(s) listed.</source>
+        <translation>
+            <numerusform>%n soldadura en la lista.</numerusform>
+            <numerusform>%n soldaduras en la lista.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="245"/>
+        <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
+        <translation>Solo las %1 más recientes del registro: acote el filtro para ver las anteriores.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="249"/>
+        <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
+        <translation>No se pudo leer el registro (%1): solo se listan las soldaduras de esta sesión.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="253"/>
+        <source>No journal yet: this session&apos;s joints only.</source>
+        <translation>Aún no hay registro: solo las soldaduras de esta sesión.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="329"/>
+        <source>%n joint(s) written to %1.</source>
+        <translation>
+            <numerusform>%n soldadura escrita en %1.</numerusform>
+            <numerusform>%n soldaduras escritas en %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="341"/>
+        <source>Export joints</source>
+        <translation>Exportar soldaduras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="341"/>
+        <source>CSV file (*.csv)</source>
+        <translation>Archivo CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.h" line="48"/>
+        <source>Joints</source>
+        <translation>Soldaduras</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::LinkStatusLabel</name>
     <message>
         <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
@@ -5334,78 +5607,78 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="36"/>
+        <location filename="../app/gui/mainwindow.cpp" line="37"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="88"/>
+        <location filename="../app/gui/mainwindow.cpp" line="92"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="89"/>
+        <location filename="../app/gui/mainwindow.cpp" line="93"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="91"/>
+        <location filename="../app/gui/mainwindow.cpp" line="95"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="92"/>
+        <location filename="../app/gui/mainwindow.cpp" line="96"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="93"/>
+        <location filename="../app/gui/mainwindow.cpp" line="97"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="98"/>
+        <location filename="../app/gui/mainwindow.cpp" line="102"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="99"/>
+        <location filename="../app/gui/mainwindow.cpp" line="103"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="101"/>
+        <location filename="../app/gui/mainwindow.cpp" line="105"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="102"/>
+        <location filename="../app/gui/mainwindow.cpp" line="106"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="176"/>
+        <location filename="../app/gui/mainwindow.cpp" line="180"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="181"/>
+        <location filename="../app/gui/mainwindow.cpp" line="185"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="186"/>
+        <location filename="../app/gui/mainwindow.cpp" line="190"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="192"/>
-        <location filename="../app/gui/mainwindow.cpp" line="195"/>
+        <location filename="../app/gui/mainwindow.cpp" line="196"/>
+        <location filename="../app/gui/mainwindow.cpp" line="199"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="196"/>
+        <location filename="../app/gui/mainwindow.cpp" line="200"/>
         <source>Written:
 %1
 
@@ -5904,6 +6177,59 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="174"/>
         <source>The table shows what the profile would change.</source>
         <translation>La tabla muestra lo que el perfil cambiaría.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RecoveryHistogramView</name>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="57"/>
+        <source>Histogram of recovery times</source>
+        <translation>Histograma de tiempos de recuperación</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="70"/>
+        <source>Recovery time of %n joint(s)</source>
+        <translation>
+            <numerusform>Recuperación de %n soldadura</numerusform>
+            <numerusform>Recuperación de %n soldaduras</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="73"/>
+        <source>%1 (%n did not recover)</source>
+        <translation>
+            <numerusform>%1 (%n sin recuperar)</numerusform>
+            <numerusform>%1 (%n sin recuperar)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="86"/>
+        <source>No recovered joints listed</source>
+        <translation>Ninguna soldadura recuperada en la lista</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RecoveryTrendView</name>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="117"/>
+        <source>Daily median recovery time per tool</source>
+        <translation>Mediana diaria de recuperación por herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="130"/>
+        <source>Median recovery time per day</source>
+        <translation>Mediana de recuperación por día</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="131"/>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="169"/>
+        <source>Median recovery time per day:</source>
+        <translation>Mediana de recuperación por día:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="145"/>
+        <source>No recovered joints listed</source>
+        <translation>Ninguna soldadura recuperada en la lista</translation>
     </message>
 </context>
 <context>

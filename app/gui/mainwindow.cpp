@@ -4,6 +4,7 @@
 #include "devicetree.h"
 #include "dialogs/preferencesdialog.h"
 #include "linkstatuslabel.h"
+#include "pages/jointspage.h"
 #include "pages/pagefactory.h"
 
 #include "model/supportreport.h"
@@ -41,8 +42,11 @@ MainWindow::MainWindow(QWidget *parent)
     m_tabs = new QTabWidget(this);
     m_tabs->setDocumentMode(true);
     m_pages = createPages(m_session, m_tabs);
-    for (Page *p : std::as_const(m_pages))
+    for (Page *p : std::as_const(m_pages)) {
         m_tabs->addTab(p, p->title());
+        if (auto *joints = qobject_cast<JointsPage *>(p))
+            connect(joints, &JointsPage::chartsShown, m_tabs, &QTabWidget::setCurrentWidget);
+    }
     m_splitter = new QSplitter(this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
     m_splitter->addWidget(m_tree);
