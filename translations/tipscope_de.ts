@@ -5690,87 +5690,87 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="119"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
         <source>family %1</source>
         <translation>Familie %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="127"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
         <source>transformer %1</source>
         <translation>Transformator %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="138"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="139"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="144"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Stationsfehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
         <source>feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
         <source>fed %1</source>
         <translation>vorgeschoben %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="154"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
         <source>speed %1</source>
         <translation>Geschwindigkeit %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.h" line="24"/>
+        <location filename="../app/gui/pages/overviewpage.h" line="28"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
         <source>not connected, as last read</source>
         <translation>nicht verbunden, wie zuletzt gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="185"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: noch nichts gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="187"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt um %1 gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="179"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="191"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>Nur-Beobachten ist an: die Robotersteuerung ist aus.</translation>
     </message>
@@ -5841,118 +5841,128 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
         <source>Tip temperature, port %1</source>
         <translation>Spitzentemperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="63"/>
         <source>Power, port %1</source>
         <translation>Leistung, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="79"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
         <source>Work</source>
         <translation>Arbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="80"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="86"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="81"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="87"/>
         <source>Cool</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="82"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="88"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="83"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="91"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="95"/>
         <source>New selected temperature, port %1</source>
         <translation>Neue eingestellte Temperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="90"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="198"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="195"/>
+        <source>no recovery</source>
+        <translation>keine Erholung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="197"/>
+        <source>last joint %1, %2</source>
+        <translation>letzte Lötstelle %1, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="224"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="199"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="225"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="200"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="226"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="202"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="254"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="206"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="232"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="208"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="234"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="240"/>
-        <location filename="../app/gui/pages/portcard.cpp" line="243"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="269"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Fehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="248"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="274"/>
         <source>status: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="250"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="276"/>
         <source>alarm: %1</source>
         <translation>Alarm: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="218"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
         <source>Not connected: last read %1</source>
         <translation>Nicht verbunden: zuletzt gelesen %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="220"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
         <source>Not connected: not read yet</source>
         <translation>Nicht verbunden: noch nicht gelesen</translation>
     </message>

@@ -5692,87 +5692,87 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="119"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
         <source>family %1</source>
         <translation>familia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="127"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
         <source>transformer %1</source>
         <translation>transformador %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="138"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="139"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="144"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Error de estación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
         <source>idle</source>
         <translation>en espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
         <source>fed %1</source>
         <translation>alimentado %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="154"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
         <source>speed %1</source>
         <translation>velocidad %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.h" line="24"/>
+        <location filename="../app/gui/pages/overviewpage.h" line="28"/>
         <source>Overview</source>
         <translation>Vista general</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
         <source>not connected, as last read</source>
         <translation>no conectado, según la última lectura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="185"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: aún no se ha leído nada. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="187"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: los valores en gris son los de la última lectura a las %1. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="179"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="191"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>El modo solo monitorización está activo: los mandos del robot están desactivados.</translation>
     </message>
@@ -5843,118 +5843,128 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
         <source>Tip temperature, port %1</source>
         <translation>Temperatura de la punta, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="63"/>
         <source>Power, port %1</source>
         <translation>Potencia, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="79"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
         <source>Work</source>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="80"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="86"/>
         <source>Stand</source>
         <translation>Soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="81"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="87"/>
         <source>Cool</source>
         <translation>Enfriar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="82"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="88"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: calentar a la temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="83"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: soporte; el reposo y la hibernación siguen tras sus retardos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="91"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: enfriamiento (extractor en espera)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="95"/>
         <source>New selected temperature, port %1</source>
         <translation>Nueva temperatura seleccionada, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="90"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
         <source>Set</source>
         <translation>Fijar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="198"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="195"/>
+        <source>no recovery</source>
+        <translation>sin recuperación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="197"/>
+        <source>last joint %1, %2</source>
+        <translation>última soldadura %1, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="224"/>
         <source>Port %1 — %2</source>
         <translation>Puerto %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="199"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="225"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="200"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="226"/>
         <source>set %1</source>
         <translation>consigna %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="202"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
         <source>power %1</source>
         <translation>potencia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="254"/>
         <source>status unknown</source>
         <translation>estado desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="206"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="232"/>
         <source>transistor %1</source>
         <translation>transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="208"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="234"/>
         <source>%1 until the next mode</source>
         <translation>%1 hasta el siguiente modo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="240"/>
-        <location filename="../app/gui/pages/portcard.cpp" line="243"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="269"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="248"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="274"/>
         <source>status: %1</source>
         <translation>estado: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="250"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="276"/>
         <source>alarm: %1</source>
         <translation>alarma: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="218"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
         <source>Not connected: last read %1</source>
         <translation>No conectado: última lectura %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="220"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
         <source>Not connected: not read yet</source>
         <translation>No conectado: aún sin leer</translation>
     </message>
