@@ -2430,107 +2430,102 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointTableModel</name>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="40"/>
-        <source>%1 at %2</source>
-        <translation>%1 an Adresse %2</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="153"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="155"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="159"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
         <source>ok</source>
         <translation>in Ordnung</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
         <source>slow recovery</source>
         <translation>langsame Erholung</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
         <source>too deep</source>
         <translation>zu tief</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="167"/>
         <source>incomplete</source>
         <translation>unvollständig</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="191"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="193"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="197"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="199"/>
         <source>%1 %·s</source>
         <translation>%1 %·s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="210"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
         <source>Lowest</source>
         <translation>Tiefstwert</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
         <source>Dip</source>
         <translation>Einbruch</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
         <source>Recovery</source>
         <translation>Erholung</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
         <source>Duration</source>
         <translation>Dauer</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
         <source>Power peak</source>
         <translation>Leistungsspitze</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
         <source>Power·time</source>
         <translation>Leistung·Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
         <source>Verdict</source>
         <translation>Urteil</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="236"/>
         <source>Work order</source>
         <translation>Auftrag</translation>
     </message>
@@ -5417,118 +5412,118 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
         <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
         <translation>Doppelklick auf eine Lötstelle oder Eingabetaste zeigt sie auf der Seite Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="127"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="130"/>
         <source>All devices</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="129"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="132"/>
         <source>All ports</source>
         <translation>Alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="131"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="134"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
         <source>all tools</source>
         <translation>alle Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
         <source>All verdicts</source>
         <translation>Alle Urteile</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
         <source>Last hour</source>
         <translation>Letzte Stunde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
         <source>Last 24 hours</source>
         <translation>Letzte 24 Stunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
         <source>Last 7 days</source>
         <translation>Letzte 7 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
         <source>Last 30 days</source>
         <translation>Letzte 30 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
         <source>All times</source>
         <translation>Gesamte Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
         <source>all work orders</source>
         <translation>alle Aufträge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="147"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Reload</source>
         <translation>Neu laden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Read the journal again</source>
         <translation>Das Journal neu lesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
         <source>Export CSV…</source>
         <translation>CSV exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Die aufgeführten Lötstellen als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Verdict</source>
         <translation>Urteil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Work order</source>
         <translation>Auftrag</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="243"/>
-        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="250"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="279"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n Lötstelle aufgeführt.</numerusform>
@@ -5536,22 +5531,22 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="245"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="252"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Nur die neuesten %1 aus dem Journal: schränken Sie den Filter ein, um ältere zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="249"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="256"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>Das Journal konnte nicht gelesen werden (%1): nur die Lötstellen dieser Sitzung sind aufgeführt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="253"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="260"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Noch kein Journal: nur die Lötstellen dieser Sitzung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="329"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="338"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n Lötstelle in %1 geschrieben.</numerusform>
@@ -5559,12 +5554,12 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="350"/>
         <source>Export joints</source>
         <translation>Lötstellen exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="350"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
@@ -6230,7 +6225,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/jointcharts.cpp" line="131"/>
-        <location filename="../app/gui/pages/jointcharts.cpp" line="169"/>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="171"/>
         <source>Median recovery time per day:</source>
         <translation>Median der Erholzeit je Tag:</translation>
     </message>

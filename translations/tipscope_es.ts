@@ -2432,107 +2432,102 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>JointTableModel</name>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="40"/>
-        <source>%1 at %2</source>
-        <translation>%1 en la dirección %2</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="153"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="155"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="159"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
         <source>ok</source>
         <translation>correcta</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
         <source>slow recovery</source>
         <translation>recuperación lenta</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
         <source>too deep</source>
         <translation>demasiado profunda</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="167"/>
         <source>incomplete</source>
         <translation>incompleta</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="191"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="193"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="197"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="199"/>
         <source>%1 %·s</source>
         <translation>%1 %·s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="210"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
         <source>Setpoint</source>
         <translation>Consigna</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
         <source>Lowest</source>
         <translation>Mínima</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
         <source>Dip</source>
         <translation>Caída</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
         <source>Recovery</source>
         <translation>Recuperación</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
         <source>Duration</source>
         <translation>Duración</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
         <source>Power peak</source>
         <translation>Potencia máx.</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
         <source>Power·time</source>
         <translation>Potencia·tiempo</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
         <source>Verdict</source>
         <translation>Veredicto</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="236"/>
         <source>Work order</source>
         <translation>Orden de trabajo</translation>
     </message>
@@ -5419,118 +5414,118 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="88"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
         <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
         <translation>Doble clic en una soldadura, o Intro, para verla en la página Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="127"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="130"/>
         <source>All devices</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="129"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="132"/>
         <source>All ports</source>
         <translation>Todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="131"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="134"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="133"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
         <source>all tools</source>
         <translation>todas las herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
         <source>All verdicts</source>
         <translation>Todos los veredictos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
         <source>Last hour</source>
         <translation>Última hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
         <source>Last 24 hours</source>
         <translation>Últimas 24 horas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
         <source>Last 7 days</source>
         <translation>Últimos 7 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
         <source>Last 30 days</source>
         <translation>Últimos 30 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
         <source>All times</source>
         <translation>Todo el tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
         <source>all work orders</source>
         <translation>todas las órdenes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="147"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Reload</source>
         <translation>Recargar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Read the journal again</source>
         <translation>Volver a leer el registro</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
         <source>Export CSV…</source>
         <translation>Exportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Guardar las soldaduras de la lista como archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Verdict</source>
         <translation>Veredicto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Work order</source>
         <translation>Orden de trabajo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="243"/>
-        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="250"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="279"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n soldadura en la lista.</numerusform>
@@ -5538,22 +5533,22 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="245"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="252"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Solo las %1 más recientes del registro: acote el filtro para ver las anteriores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="249"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="256"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>No se pudo leer el registro (%1): solo se listan las soldaduras de esta sesión.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="253"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="260"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Aún no hay registro: solo las soldaduras de esta sesión.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="329"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="338"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n soldadura escrita en %1.</numerusform>
@@ -5561,12 +5556,12 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="350"/>
         <source>Export joints</source>
         <translation>Exportar soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="350"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
@@ -6232,7 +6227,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/jointcharts.cpp" line="131"/>
-        <location filename="../app/gui/pages/jointcharts.cpp" line="169"/>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="171"/>
         <source>Median recovery time per day:</source>
         <translation>Mediana de recuperación por día:</translation>
     </message>

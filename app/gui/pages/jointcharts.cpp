@@ -154,6 +154,8 @@ void RecoveryTrendView::paintEvent(QPaintEvent *event) {
             last = qMax(last, d.day);
             top = qMax(top, d.medianMs);
         }
+    // Some room above the highest point, so it does not sit on the edge.
+    top += top / 10;
     const QString topText = JointTableModel::secondsText(top);
     const QRect plot = plotRect(*this, fontMetrics().horizontalAdvance(topText));
     drawValueAxis(p, *this, plot, topText);

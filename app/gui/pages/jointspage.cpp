@@ -34,6 +34,7 @@ constexpr qint64 kHourMs = 3600'000;
 constexpr int kMaxPorts = 4;
 // Columns are sized from this many rows: enough to be right, few enough to stay quick.
 constexpr int kSizeColumnsFromRows = 200;
+constexpr int kEditPadding = 8;
 
 bool matches(const journal::JointFilter &f, const JointRow &row) {
     const JointRecord &j = row.joint;
@@ -83,6 +84,8 @@ JointsPage::JointsPage(Session &session, QWidget *parent)
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_view->setAlternatingRowColors(true);
     m_view->verticalHeader()->hide();
+    m_view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_view->setWordWrap(false);
     m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->horizontalHeader()->setResizeContentsPrecision(kSizeColumnsFromRows);
     m_view->setToolTip(tr("Double-click a joint, or press Enter, to see it on the Charts page"));
@@ -167,8 +170,12 @@ QWidget *JointsPage::buildFilters() {
 
     for (QComboBox *box : {m_deviceBox, m_portBox, m_verdictBox, m_rangeBox})
         connect(box, &QComboBox::currentIndexChanged, this, &JointsPage::reload);
-    for (QLineEdit *edit : {m_toolEdit, m_workOrderEdit})
+    for (QLineEdit *edit : {m_toolEdit, m_workOrderEdit}) {
+        // Wide enough for the placeholder in every language and its clear button.
+        edit->setMinimumWidth(edit->fontMetrics().horizontalAdvance(edit->placeholderText()) +
+                              2 * edit->fontMetrics().height() + kEditPadding);
         connect(edit, &QLineEdit::editingFinished, this, &JointsPage::reload);
+    }
     connect(reloadButton, &QPushButton::clicked, this, &JointsPage::reload);
     connect(m_export, &QPushButton::clicked, this, &JointsPage::chooseAndExport);
     return host;
@@ -263,6 +270,8 @@ void JointsPage::onJointEnded(const JointRecord &joint) {
         return;
     if (m_deviceBox->findData(joint.device.key()) < 0)
         fillDevices({joint.device});
+    // The first rows decide the widths; a joint a few times a minute costs little to measure.
+    m_view->resizeColumnsToContents();
     m_chartsRefresh->request();
     // The count at the start of the line follows; a problem reported stays.
     if (m_status->property("problem").toBool())

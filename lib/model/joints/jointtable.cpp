@@ -35,10 +35,12 @@ QString unitText(TemperatureUnit unit) {
 QString differenceUnitText(TemperatureUnit unit) {
     return fahrenheit(unit) ? QStringLiteral("°F") : QStringLiteral("K");
 }
+// Short, as a table column has room for ("DME-2C (01)"); the tooltip has the whole description.
 QString deviceText(const DeviceIdentity &device) {
-    return device.address
-               ? Tr::tr("%1 at %2").arg(device.model).arg(*device.address, 2, 10, QLatin1Char('0'))
-               : device.model;
+    return device.address ? QStringLiteral("%1 (%2)")
+                                .arg(device.model)
+                                .arg(*device.address, 2, 10, QLatin1Char('0'))
+                          : device.model;
 }
 QString csvNumber(double value, int decimals) {
     return QString::number(value, 'f', decimals);

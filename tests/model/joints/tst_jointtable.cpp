@@ -46,6 +46,7 @@ class TestJointTable : public QObject {
 private Q_SLOTS:
     void aJointReadTwiceIsOneRow();
     void rowsAreNewestFirstWhateverOrderTheyCameIn();
+    void theDeviceIsShortWithItsDescriptionAsTooltip();
     void temperaturesFollowTheUnit_data();
     void temperaturesFollowTheUnit();
     void theVerdictIsInWordsAndCarriesALevel_data();
@@ -76,6 +77,14 @@ void TestJointTable::rowsAreNewestFirstWhateverOrderTheyCameIn() {
     m.add(joint(kT0 + 30'000));
     m.add(joint(kT0 + 60'000));
     QCOMPARE(startsOf(m), (QStringList{"60", "40", "30", "20", "0"}));
+}
+
+void TestJointTable::theDeviceIsShortWithItsDescriptionAsTooltip() {
+    JointTableModel m;
+    m.add(joint(kT0));
+    const QModelIndex device = m.index(0, JointTableModel::Device);
+    QCOMPARE(device.data().toString(), QStringLiteral("DME-2C (00)"));
+    QCOMPARE(device.data(Qt::ToolTipRole).toString(), joint(kT0).joint.device.description());
 }
 
 void TestJointTable::temperaturesFollowTheUnit_data() {
