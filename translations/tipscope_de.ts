@@ -2522,7 +2522,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     <message>
         <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
         <source>Verdict</source>
-        <translation>Urteil</translation>
+        <translation>Bewertung</translation>
     </message>
     <message>
         <location filename="../lib/model/joints/jointtable.cpp" line="236"/>
@@ -5439,7 +5439,7 @@ Zurücksetzen?</translation>
     <message>
         <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
         <source>All verdicts</source>
-        <translation>Alle Urteile</translation>
+        <translation>Alle Bewertungen</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
@@ -5509,7 +5509,7 @@ Zurücksetzen?</translation>
     <message>
         <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Verdict</source>
-        <translation>Urteil</translation>
+        <translation>Bewertung</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
