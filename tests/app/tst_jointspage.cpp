@@ -106,6 +106,7 @@ private Q_SLOTS:
     void historyIsReadFromTheJournalNewestFirstWithItsWorkOrder();
     void aMissingJournalIsNoHistoryAndNoError();
     void anUnreadableJournalSaysWhyOnThePage();
+    void aJournalBeyondTheLimitListsTheNewestAndSaysSo();
     void filtersNarrowTheTableAndItsCharts_data();
     void filtersNarrowTheTableAndItsCharts();
     void theVerdictShowsInWordsIconAndTint();
@@ -173,6 +174,30 @@ void TestJointsPage::anUnreadableJournalSaysWhyOnThePage() {
              qPrintable(page.statusText()));
     for (const QWidget *w : QApplication::topLevelWidgets()) // no popup: the page says it
         QVERIFY(!qobject_cast<const QDialog *>(w) || !w->isVisible());
+}
+
+void TestJointsPage::aJournalBeyondTheLimitListsTheNewestAndSaysSo() {
+    const QString path = m_dir.filePath(QStringLiteral("full.sqlite"));
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    QList<QPair<JointRecord, QString>> joints;
+    for (int i = 0; i <= JointsPage::kHistoryLimit; ++i) {
+        Planned p = kPlanned.first();
+        p.agoMs = kHourMs + i * 1000LL;
+        joints.append({jointOf(p, now), p.workOrder});
+    }
+    QVERIFY(writeJournal(path, joints));
+    Session session;
+    JointsPage page(session);
+    page.setJournalPath(path);
+    QCOMPARE(page.table().rowCount(), JointsPage::kHistoryLimit);
+    QCOMPARE(page.table().row(0).joint.startMs, now - kHourMs);
+    QVERIFY2(page.statusText().contains(QStringLiteral("Only the newest 5000 from the journal")),
+             qPrintable(page.statusText()));
+    // Narrowed below the limit, the page no longer says it.
+    page.setRangeFilter(0);
+    QVERIFY(page.table().rowCount() < JointsPage::kHistoryLimit);
+    QVERIFY2(!page.statusText().contains(QStringLiteral("Only the newest")),
+             qPrintable(page.statusText()));
 }
 
 void TestJointsPage::filtersNarrowTheTableAndItsCharts_data() {
