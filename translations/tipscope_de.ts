@@ -5522,8 +5522,7 @@ Zurücksetzen?</translation>
         <translation>Auftrag</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="250"/>
-        <location filename="../app/gui/pages/jointspage.cpp" line="279"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n Lötstelle aufgeführt.</numerusform>
@@ -5531,22 +5530,22 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="252"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="259"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Nur die neuesten %1 aus dem Journal: schränken Sie den Filter ein, um ältere zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="263"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>Das Journal konnte nicht gelesen werden (%1): nur die Lötstellen dieser Sitzung sind aufgeführt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="260"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="267"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Noch kein Journal: nur die Lötstellen dieser Sitzung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="338"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n Lötstelle in %1 geschrieben.</numerusform>
@@ -5554,12 +5553,12 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="350"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
         <source>Export joints</source>
         <translation>Lötstellen exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="350"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>

@@ -5524,8 +5524,7 @@ Reset it?</source>
         <translation>Orden de trabajo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="250"/>
-        <location filename="../app/gui/pages/jointspage.cpp" line="279"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n soldadura en la lista.</numerusform>
@@ -5533,22 +5532,22 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="252"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="259"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Solo las %1 más recientes del registro: acote el filtro para ver las anteriores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="256"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="263"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>No se pudo leer el registro (%1): solo se listan las soldaduras de esta sesión.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="260"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="267"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Aún no hay registro: solo las soldaduras de esta sesión.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="338"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n soldadura escrita en %1.</numerusform>
@@ -5556,12 +5555,12 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="350"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
         <source>Export joints</source>
         <translation>Exportar soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="350"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>

@@ -341,6 +341,11 @@ void TestJointsPage::liveJointsAreListedOnceAndOpenTheChartsAtTheirMoment() {
     const JointRecord live = page.table().row(0).joint;
     QCOMPARE(live.device, session.station()->identity());
     QCOMPARE(page.table().row(0).workOrder, QStringLiteral("WO-9"));
+    // The count follows the live joints; the line still says where the history is (none yet).
+    QVERIFY2(page.statusText().contains(QStringLiteral("joint")) &&
+                 page.statusText().endsWith(
+                     QStringLiteral("No journal yet: this session's joints only.")),
+             qPrintable(page.statusText()));
 
     // The journal gets the same joint; read back, it is still one row.
     QVERIFY(writeJournal(path, {{live, QStringLiteral("WO-9")}}));

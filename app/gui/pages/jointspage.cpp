@@ -247,18 +247,25 @@ void JointsPage::reload() {
     m_view->resizeColumnsToContents();
     fillDevices(devices);
     m_chartsRefresh->request();
+    m_journalProblem = problem;
+    m_hasJournal = hasJournal;
+    m_otherProblem = false;
+    showCount();
+}
+
+void JointsPage::showCount() {
     QString text = tr("%n joint(s) listed.", nullptr, int(m_table.rowCount()));
     if (m_historyCut)
         text += QLatin1Char(' ') + tr("Only the newest %1 from the journal: narrow the filter "
                                       "to see older ones.")
                                        .arg(kHistoryLimit);
-    if (!problem.isEmpty())
+    if (!m_journalProblem.isEmpty())
         text = tr("The journal could not be read (%1): only this session's joints are listed.")
-                   .arg(problem) +
+                   .arg(m_journalProblem) +
                QLatin1Char(' ') + text;
-    else if (!hasJournal)
+    else if (!m_hasJournal)
         text += QLatin1Char(' ') + tr("No journal yet: this session's joints only.");
-    showStatus(text, !problem.isEmpty());
+    showStatus(text, !m_journalProblem.isEmpty());
 }
 
 void JointsPage::onJointEnded(const JointRecord &joint) {
@@ -273,10 +280,9 @@ void JointsPage::onJointEnded(const JointRecord &joint) {
     // The first rows decide the widths; a joint a few times a minute costs little to measure.
     m_view->resizeColumnsToContents();
     m_chartsRefresh->request();
-    // The count at the start of the line follows; a problem reported stays.
-    if (m_status->property("problem").toBool())
-        return;
-    showStatus(tr("%n joint(s) listed.", nullptr, int(m_table.rowCount())), false);
+    // A failed export or chart stays in sight until the next reload; else the count follows.
+    if (!m_otherProblem)
+        showCount();
 }
 
 void JointsPage::fillDevices(const QList<DeviceIdentity> &fromJournal) {
@@ -302,11 +308,13 @@ QString JointsPage::openJoint(int row) {
         return {};
     const JointRecord &joint = m_table.row(row).joint;
     const QString why = m_charts->showMoment(joint.device, joint.startMs, joint.endMs);
-    if (why.isEmpty())
-        Q_EMIT chartsShown(m_charts);
-    else
+    if (!why.isEmpty()) {
+        m_otherProblem = true;
         showStatus(why, true);
-    return why;
+        return why;
+    }
+    Q_EMIT chartsShown(m_charts);
+    return {};
 }
 
 void JointsPage::refreshCharts() {
@@ -324,7 +332,6 @@ QString JointsPage::statusText() const {
 
 void JointsPage::showStatus(const QString &text, bool problem) {
     m_status->setText(text);
-    m_status->setProperty("problem", problem);
     m_status->setStyleSheet(problem ? QStringLiteral("color: #c01c28; font-weight: bold;")
                                     : QString());
 }
@@ -332,6 +339,7 @@ void JointsPage::showStatus(const QString &text, bool problem) {
 QString JointsPage::exportCsv(const QString &path) {
     const auto saved = io::saveAtomically(path, m_table.csv());
     if (!saved) {
+        m_otherProblem = true;
         showStatus(saved.error(), true);
         return saved.error();
     }

@@ -88,6 +88,8 @@ private:
     void onJointEnded(const model::JointRecord &joint);
     void fillDevices(const QList<model::DeviceIdentity> &fromJournal);
     void refreshCharts();
+    // The count and what the journal said, on the status line.
+    void showCount();
     void showStatus(const QString &text, bool problem);
     void chooseAndExport();
 
@@ -95,8 +97,10 @@ private:
     QList<model::JointRow> m_live; // this session's joints, newest last, at most kCapacity
     QString m_journalPath;
     QString m_workOrder;
-    QString m_statusText;
+    QString m_journalProblem; // why the journal could not be read at the last reload
+    bool m_hasJournal = false;
     bool m_historyCut = false;
+    bool m_otherProblem = false; // a failed export or chart on the status line
 
     QComboBox *m_deviceBox = nullptr;
     QComboBox *m_portBox = nullptr;
