@@ -1592,6 +1592,64 @@
     </message>
 </context>
 <context>
+    <name>CliContext</name>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="42"/>
+        <source>&apos;%1&apos; is not a context line: write work_order=W, board_serial=S or operator=O</source>
+        <translation>„%1“ ist keine Kontextzeile: schreiben Sie work_order=W, board_serial=S oder operator=O</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="57"/>
+        <source>cannot read standard input</source>
+        <translation>die Standardeingabe kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="92"/>
+        <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
+        <translation>tipscope-cli: context nimmt show, set [--work-order W] [--serial S] [--operator O] [--stdin] oder clear</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="124"/>
+        <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
+        <translation>tipscope-cli: limits nimmt show, set REGEL (etwa port=1,tool=C245,recovery=3.5,dip=60) oder clear</translation>
+    </message>
+</context>
+<context>
+    <name>CliJoints</name>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="41"/>
+        <source>&apos;%1&apos; is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00</source>
+        <translation>„%1“ ist keine Zeitangabe: schreiben Sie 24h, 30m, 7d, 2026-12-01 oder 2026-12-01T08:00</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="64"/>
+        <source>the journal has no device &apos;%1&apos;</source>
+        <translation>das Journal kennt kein Gerät „%1“</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <source>&apos;%1&apos; names %2 devices; give one of:
+  %3</source>
+        <translation>„%1“ bezeichnet %2 Geräte; geben Sie eines davon an:
+  %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="93"/>
+        <source>--port takes a port number from 1 to 4</source>
+        <translation>--port nimmt eine Portnummer von 1 bis 4</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="102"/>
+        <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
+        <translation>--verdict nimmt ok, slow-recovery, too-deep oder incomplete</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="144"/>
+        <source>tipscope-cli: give --json or --csv, not both</source>
+        <translation>tipscope-cli: geben Sie --json oder --csv an, nicht beides</translation>
+    </message>
+</context>
+<context>
     <name>CliMeasure</name>
     <message>
         <location filename="../app/cli/climeasure.cpp" line="66"/>
@@ -1602,40 +1660,100 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="67"/>
+        <location filename="../app/cli/climonitor.cpp" line="114"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74"/>
+        <location filename="../app/cli/climonitor.cpp" line="121"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="81"/>
+        <location filename="../app/cli/climonitor.cpp" line="133"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="90"/>
+        <location filename="../app/cli/climonitor.cpp" line="142"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="123"/>
+        <location filename="../app/cli/climonitor.cpp" line="180"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="107"/>
+        <location filename="../app/cli/climonitor.cpp" line="159"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitorjoints.cpp" line="55"/>
+        <source>%1 records could not be kept in the journal %2: %3</source>
+        <translation>%1 Einträge konnten nicht im Journal %2 gespeichert werden: %3</translation>
     </message>
 </context>
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="47"/>
+        <location filename="../app/cli/clioptions.cpp" line="128"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="172"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud erwartet eine Baudrate wie 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity erwartet none, even oder odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="203"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits erwartet 1 oder 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="212"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="220"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="223"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="157"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 braucht einen Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="70"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -1646,8 +1764,9 @@ Commands:
   read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
   write CODE VALUE [--raw]  validate, send, and read back
   send HEX                  send a raw frame; print the answer in hex and decoded
-  monitor [--interval MS] [--duration S] [--csv FILE]
-                            tip temperature, setpoint, power and status per port
+  monitor [--interval MS] [--duration S] [--csv FILE] [--limit RULE]
+          [--journal FILE]  tip temperature, setpoint, power and status per port, and
+                            a line per joint, each joint kept in the journal
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
   profile save FILE         every writable setting of the device to a JSON profile
@@ -1659,6 +1778,16 @@ Commands:
                             every port&apos;s and the feeder&apos;s curves and events to a chart
                             recording, as the Charts page records them
   measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
+  joints [--since T] [--until T] [--device D] [--port N] [--tool T]
+         [--verdict V] [--work-order W] [--json | --csv] [--journal FILE]
+                            the joints the journal keeps, newest first; T is 24h, 30m,
+                            7d or an ISO date and time; V is ok, slow-recovery,
+                            too-deep or incomplete
+  context [show | clear | set [--work-order W] [--serial S] [--operator O] [--stdin]]
+                            the work context stamped on every joint and event
+  limits [show | clear | set RULE]
+                            the joint limits; RULE is port=N,tool=T,recovery=S,dip=K,
+                            wear=SHARE (any of them; the most specific rule wins)
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
 built-in simulated DME station (address 01) and SFR feeder (address 10);
@@ -1679,8 +1808,9 @@ Befehle:
   read CODE... [--raw]      eine Zeile pro Code: &quot;&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;&quot;
   write CODE WERT [--raw]   prüfen, senden und zurücklesen
   send HEX                  ein Roh-Telegramm senden; die Antwort hexadezimal und dekodiert ausgeben
-  monitor [--interval MS] [--duration S] [--csv DATEI]
-                            Spitzentemperatur, Sollwert, Leistung und Status pro Port
+  monitor [--interval MS] [--duration S] [--csv DATEI] [--limit REGEL]
+          [--journal DATEI] Spitzentemperatur, Sollwert, Leistung und Status pro Port und
+                            eine Zeile je Lötstelle; jede Lötstelle kommt ins Journal
   dump [--json]             alle lesbaren Parameter, Zähler und Fehler
   commands [--family F]     der Befehlskatalog
   profile save DATEI        alle beschreibbaren Einstellungen des Geräts in ein JSON-Profil
@@ -1693,6 +1823,17 @@ Befehle:
                             die Kurven und Ereignisse aller Ports und des Vorschubs als
                             Diagrammaufzeichnung, wie die Diagrammseite sie aufzeichnet
   measure DATEI [--json]    Aufheiz- und Erholzeiten einer Aufzeichnung, eine pro Zeile
+  joints [--since T] [--until T] [--device D] [--port N] [--tool T]
+         [--verdict V] [--work-order W] [--json | --csv] [--journal DATEI]
+                            die Lötstellen im Journal, die neuesten zuerst; T ist 24h, 30m,
+                            7d oder ein ISO-Datum mit Uhrzeit; V ist ok, slow-recovery,
+                            too-deep oder incomplete
+  context [show | clear | set [--work-order W] [--serial S] [--operator O] [--stdin]]
+                            der Arbeitskontext, der jeder Lötstelle und jedem Ereignis
+                            mitgegeben wird
+  limits [show | clear | set REGEL]
+                            die Lötstellen-Grenzwerte; REGEL ist port=N,tool=T,recovery=S,
+                            dip=K,wear=ANTEIL (beliebig davon; die genaueste Regel gilt)
 
 Ohne --addr oder --no-addr wird das Gerät automatisch gesucht. --demo spricht mit der
 eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10);
@@ -1705,82 +1846,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="94"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>unbekannter Befehl &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="127"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="134"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="147"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud erwartet eine Baudrate wie 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity erwartet none, even oder odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="158"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits erwartet 1 oder 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="167"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="175"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="178"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="182"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 braucht einen Wert</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <location filename="../app/cli/clioptions.cpp" line="161"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="192"/>
+        <location filename="../app/cli/clioptions.cpp" line="227"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="193"/>
+        <location filename="../app/cli/clioptions.cpp" line="228"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="199"/>
+        <location filename="../app/cli/clioptions.cpp" line="234"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="202"/>
+        <location filename="../app/cli/clioptions.cpp" line="237"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -2122,44 +2208,54 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="38"/>
+        <location filename="../lib/model/eventlog.cpp" line="42"/>
         <source>Station error</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="40"/>
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
         <source>Port error</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="42"/>
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
         <source>Feeder error</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
         <source>Alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <location filename="../lib/model/eventlog.cpp" line="54"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <location filename="../lib/model/eventlog.cpp" line="56"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="58"/>
+        <source>Tool change</source>
+        <translation>Werkzeugwechsel</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="60"/>
+        <source>Joint</source>
+        <translation>Lötstelle</translation>
     </message>
 </context>
 <context>
@@ -2428,6 +2524,72 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>JointLimitRules</name>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="48"/>
+        <source>the longest recovery must be more than 0 s and at most %1 s</source>
+        <translation>die längste Erholzeit muss mehr als 0 s und höchstens %1 s betragen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="56"/>
+        <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
+        <translation>der tiefste Einbruch muss eine ganze Zahl von Kelvin zwischen 1 und %1 sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="62"/>
+        <source>the tip wear share must be more than 0 and at most 10</source>
+        <translation>der Anteil für Spitzenverschleiß muss größer als 0 und höchstens 10 sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="68"/>
+        <source>a port is a number from 1 to 4</source>
+        <translation>ein Port ist eine Zahl von 1 bis 4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="106"/>
+        <source>%1 must be a number</source>
+        <translation>%1 muss eine Zahl sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="165"/>
+        <source>joint limits: %1</source>
+        <translation>Lötstellen-Grenzwerte: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="171"/>
+        <source>joint limit rule %1: %2</source>
+        <translation>Lötstellen-Grenzwertregel %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="198"/>
+        <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
+        <translation>„%1“ ist kein Grenzwert: schreiben Sie port=N, tool=NAME, recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL, durch Kommas getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
+        <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
+        <translation>„%1“ setzt keinen Grenzwert: geben Sie recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL an</translation>
+    </message>
+</context>
+<context>
+    <name>JointLimitsFile</name>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="32"/>
+        <source>cannot read the joint limits %1: %2</source>
+        <translation>die Lötstellen-Grenzwerte %1 können nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="34"/>
+        <source>the joint limits %1 are too big</source>
+        <translation>die Lötstellen-Grenzwerte %1 sind zu groß</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="39"/>
+        <source>the joint limits %1 are not a JSON object: %2</source>
+        <translation>die Lötstellen-Grenzwerte %1 sind kein JSON-Objekt: %2</translation>
+    </message>
+</context>
+<context>
     <name>JointTableModel</name>
     <message>
         <location filename="../lib/model/joints/jointtable.cpp" line="155"/>
@@ -2533,17 +2695,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="112"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>Lötstelle zu tief: die Lötspitze fiel %1 K unter den Sollwert (Grenze %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="121"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="117"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>Lötstelle langsam erholt: %1 s (Grenze %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="123"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="119"/>
         <source>joint did not recover within %1 s</source>
         <translation>Lötstelle hat sich in %1 s nicht erholt</translation>
     </message>
@@ -3431,41 +3593,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="47"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
-        <location filename="../lib/model/session.cpp" line="129"/>
+        <location filename="../lib/model/session.cpp" line="48"/>
+        <location filename="../lib/model/session.cpp" line="135"/>
+        <location filename="../lib/model/session.cpp" line="138"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="125"/>
-        <location filename="../lib/model/session.cpp" line="138"/>
-        <location filename="../lib/model/session.cpp" line="146"/>
+        <location filename="../lib/model/session.cpp" line="134"/>
+        <location filename="../lib/model/session.cpp" line="147"/>
+        <location filename="../lib/model/session.cpp" line="155"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="162"/>
+        <location filename="../lib/model/session.cpp" line="171"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="222"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="214"/>
+        <location filename="../lib/model/session.cpp" line="223"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="224"/>
+        <location filename="../lib/model/session.cpp" line="233"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="232"/>
+        <location filename="../lib/model/session.cpp" line="241"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -3493,7 +3655,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>das Gerät an Adresse %1 hat sich nicht identifiziert: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="222"/>
+        <location filename="../lib/model/session.cpp" line="231"/>
         <source>connected to %1, but %2</source>
         <translation>mit %1 verbunden, aber %2</translation>
     </message>
@@ -3529,12 +3691,13 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%1 kann nicht im Speicher sichern</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="116"/>
+        <location filename="../lib/model/stationmodel.cpp" line="117"/>
+        <location filename="../lib/model/stationmodel.cpp" line="121"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="130"/>
+        <location filename="../lib/model/stationmodel.cpp" line="135"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -3542,32 +3705,32 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="143"/>
+        <location filename="../lib/model/supportreport.cpp" line="176"/>
         <source>TipScope support report, %1</source>
         <translation>TipScope-Supportbericht, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="144"/>
+        <location filename="../lib/model/supportreport.cpp" line="177"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="150"/>
+        <location filename="../lib/model/supportreport.cpp" line="183"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="151"/>
+        <location filename="../lib/model/supportreport.cpp" line="184"/>
         <source>State: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="152"/>
+        <location filename="../lib/model/supportreport.cpp" line="185"/>
         <source>Statistics: %1</source>
         <translation>Statistik: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="177"/>
+        <location filename="../lib/model/supportreport.cpp" line="212"/>
         <source>Recent events:</source>
         <translation>Letzte Ereignisse:</translation>
     </message>
@@ -3587,9 +3750,47 @@ Dauerhaft mit dieser udev-Regel:
         <translation>, Software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="167"/>
+        <location filename="../lib/model/supportreport.cpp" line="94"/>
+        <source>Joints of the last 24 hours: not read: %1</source>
+        <translation>Lötstellen der letzten 24 Stunden: nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="96"/>
+        <source>Joints from %1 to %2:</source>
+        <translation>Lötstellen von %1 bis %2:</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="101"/>
+        <source>  none</source>
+        <translation>  keine</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="108"/>
+        <source>  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, %7 incomplete</source>
+        <translation>  %1, Port %2: %3 Lötstellen: %4 in Ordnung, %5 langsame Erholung, %6 zu tief, %7 unvollständig</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="116"/>
+        <source>; recovery median %1 ms, 95th percentile %2 ms</source>
+        <translation>; Erholzeit Median %1 ms, 95. Perzentil %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="200"/>
         <source>  What to check:</source>
         <translation>  Was zu prüfen ist:</translation>
+    </message>
+</context>
+<context>
+    <name>TipWear</name>
+    <message>
+        <location filename="../lib/model/joints/tipwear.cpp" line="65"/>
+        <source>tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when it was plugged in</source>
+        <translation>Spitze verschleißt: %1 erholt sich in %2 s (Median der letzten %3 Lötstellen), %4 s nach dem Einstecken</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/tipwear.cpp" line="67"/>
+        <source>the tool</source>
+        <translation>das Werkzeug</translation>
     </message>
 </context>
 <context>
@@ -3644,6 +3845,29 @@ Dauerhaft mit dieser udev-Regel:
         <location filename="../lib/protocol/valuecodec.cpp" line="186"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; ist keine ganze Zahl; für %2 zulässig: %3</translation>
+    </message>
+</context>
+<context>
+    <name>WorkContextFile</name>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
+        <source>cannot read the work context %1: %2</source>
+        <translation>der Arbeitskontext %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="40"/>
+        <source>the work context %1 is too big to be one</source>
+        <translation>der Arbeitskontext %1 ist zu groß, um einer zu sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
+        <source>the work context %1 is not a JSON object: %2</source>
+        <translation>der Arbeitskontext %1 ist kein JSON-Objekt: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="49"/>
+        <source>the work context %1: %2 must be text</source>
+        <translation>der Arbeitskontext %1: %2 muss Text sein</translation>
     </message>
 </context>
 <context>
@@ -4956,124 +5180,134 @@ Fortfahren?</translation>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <source>Tool changes</source>
+        <translation>Werkzeugwechsel</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
+        <source>Joints</source>
+        <translation>Lötstellen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="105"/>
         <source>Show events of device</source>
         <translation>Ereignisse des Geräts anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
         <source>Every device</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>&amp;Device:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="127"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="157"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="181"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="321"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -5081,17 +5315,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="317"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>
@@ -5410,6 +5644,99 @@ Zurücksetzen?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JointLimitsDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="42"/>
+        <source>Joint limits</source>
+        <translation>Lötstellen-Grenzwerte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="48"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="53"/>
+        <source> K</source>
+        <translation> K</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="58"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Longest recovery (s)</source>
+        <translation>Längste Erholzeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="64"/>
+        <source>Deepest dip (K)</source>
+        <translation>Tiefster Einbruch (K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="64"/>
+        <source>Tip wear (%)</source>
+        <translation>Spitzenverschleiß (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="69"/>
+        <source>Add rule</source>
+        <translation>Regel hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="70"/>
+        <source>Remove rule</source>
+        <translation>Regel entfernen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="82"/>
+        <source>Longest recovery (back within 5 K of the setpoint):</source>
+        <translation>Längste Erholzeit (zurück auf 5 K am Sollwert):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="83"/>
+        <source>Deepest dip below the setpoint:</source>
+        <translation>Tiefster Einbruch unter den Sollwert:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="84"/>
+        <source>Tip wearing when recoveries are slower than when new by:</source>
+        <translation>Spitze verschleißt, wenn Erholungen langsamer sind als neu um:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="85"/>
+        <source>Rules for a port, a tool or both override these; the most specific rule wins. An empty cell keeps the default.</source>
+        <translation>Regeln für einen Port, ein Werkzeug oder beides haben Vorrang; die genaueste Regel gilt. Eine leere Zelle behält den Standardwert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="116"/>
+        <source>Any port</source>
+        <translation>Jeder Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="118"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="159"/>
+        <source>Rule %1: %2</source>
+        <translation>Regel %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::JointsPage</name>
     <message>
         <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
@@ -5569,6 +5896,54 @@ Zurücksetzen?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JournalStatusButton</name>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="11"/>
+        <source>No work order</source>
+        <translation>Kein Auftrag</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="26"/>
+        <source>Work context and journal</source>
+        <translation>Arbeitskontext und Journal</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="47"/>
+        <source>Stamped on every joint and event: %1. Click to change it.</source>
+        <translation>Wird jeder Lötstelle und jedem Ereignis mitgegeben: %1. Zum Ändern klicken.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="48"/>
+        <source>Journal: %1</source>
+        <translation>Journal: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="51"/>
+        <source>Journal not written</source>
+        <translation>Journal wird nicht geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="54"/>
+        <source>%1 records wait to be written; polling goes on.</source>
+        <translation>%1 Einträge warten aufs Schreiben; die Abfrage läuft weiter.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="57"/>
+        <source>%1 records lost</source>
+        <translation>%1 Einträge verloren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="61"/>
+        <source>Work context unreadable</source>
+        <translation>Arbeitskontext unlesbar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="64"/>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::LinkStatusLabel</name>
     <message>
         <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
@@ -5599,78 +5974,88 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="37"/>
+        <location filename="../app/gui/mainwindow.cpp" line="45"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="92"/>
+        <location filename="../app/gui/mainwindow.cpp" line="112"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="93"/>
+        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <source>Work &amp;context…</source>
+        <translation>Arbeits&amp;kontext…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="117"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="95"/>
+        <location filename="../app/gui/mainwindow.cpp" line="119"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="96"/>
+        <location filename="../app/gui/mainwindow.cpp" line="120"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="97"/>
+        <location filename="../app/gui/mainwindow.cpp" line="121"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="102"/>
+        <location filename="../app/gui/mainwindow.cpp" line="126"/>
+        <source>&amp;Joint limits…</source>
+        <translation>&amp;Lötstellen-Grenzwerte…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="127"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="103"/>
+        <location filename="../app/gui/mainwindow.cpp" line="128"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="105"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="106"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="180"/>
+        <location filename="../app/gui/mainwindow.cpp" line="205"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="185"/>
+        <location filename="../app/gui/mainwindow.cpp" line="210"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="190"/>
+        <location filename="../app/gui/mainwindow.cpp" line="215"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="196"/>
-        <location filename="../app/gui/mainwindow.cpp" line="199"/>
+        <location filename="../app/gui/mainwindow.cpp" line="224"/>
+        <location filename="../app/gui/mainwindow.cpp" line="227"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="200"/>
+        <location filename="../app/gui/mainwindow.cpp" line="228"/>
         <source>Written:
 %1
 
@@ -5679,6 +6064,16 @@ Attach both files to the support ticket.</source>
 %1
 
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="236"/>
+        <source>joint limits</source>
+        <translation>Lötstellen-Grenzwerte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="237"/>
+        <source>%1; the default limits judge joints</source>
+        <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
 </context>
 <context>
@@ -6451,6 +6846,39 @@ Möchten Sie fortfahren?</translation>
         <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
         <source>1 min</source>
         <translation>1 min</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::WorkContextDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="24"/>
+        <source>Work context</source>
+        <translation>Arbeitskontext</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="34"/>
+        <source>Stamped on every joint and event from now on, by every TipScope program on this computer, until it is changed.</source>
+        <translation>Wird ab jetzt jeder Lötstelle und jedem Ereignis mitgegeben, von jedem TipScope-Programm auf diesem Rechner, bis er geändert wird.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="40"/>
+        <source>Work order:</source>
+        <translation>Auftrag:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="41"/>
+        <source>Board serial:</source>
+        <translation>Seriennummer der Platine:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="42"/>
+        <source>Operator:</source>
+        <translation>Bediener:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
+        <source>Clear</source>
+        <translation>Leeren</translation>
     </message>
 </context>
 <context>

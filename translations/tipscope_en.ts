@@ -105,7 +105,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="232"/>
+        <location filename="../lib/model/session.cpp" line="241"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -149,7 +149,7 @@
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>

@@ -1592,6 +1592,64 @@
     </message>
 </context>
 <context>
+    <name>CliContext</name>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="42"/>
+        <source>&apos;%1&apos; is not a context line: write work_order=W, board_serial=S or operator=O</source>
+        <translation>«%1» no es una línea de contexto: escriba work_order=W, board_serial=S u operator=O</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="57"/>
+        <source>cannot read standard input</source>
+        <translation>no se puede leer la entrada estándar</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="92"/>
+        <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
+        <translation>tipscope-cli: context admite show, set [--work-order W] [--serial S] [--operator O] [--stdin] o clear</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="124"/>
+        <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
+        <translation>tipscope-cli: limits admite show, set REGLA (por ejemplo port=1,tool=C245,recovery=3.5,dip=60) o clear</translation>
+    </message>
+</context>
+<context>
+    <name>CliJoints</name>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="41"/>
+        <source>&apos;%1&apos; is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00</source>
+        <translation>«%1» no es una hora: escriba 24h, 30m, 7d, 2026-12-01 o 2026-12-01T08:00</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="64"/>
+        <source>the journal has no device &apos;%1&apos;</source>
+        <translation>el diario no tiene ningún dispositivo «%1»</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <source>&apos;%1&apos; names %2 devices; give one of:
+  %3</source>
+        <translation>«%1» designa %2 dispositivos; indique uno de ellos:
+  %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="93"/>
+        <source>--port takes a port number from 1 to 4</source>
+        <translation>--port admite un número de puerto del 1 al 4</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="102"/>
+        <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
+        <translation>--verdict admite ok, slow-recovery, too-deep o incomplete</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijoints.cpp" line="144"/>
+        <source>tipscope-cli: give --json or --csv, not both</source>
+        <translation>tipscope-cli: indique --json o --csv, no ambos</translation>
+    </message>
+</context>
+<context>
     <name>CliMeasure</name>
     <message>
         <location filename="../app/cli/climeasure.cpp" line="66"/>
@@ -1602,40 +1660,100 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="67"/>
+        <location filename="../app/cli/climonitor.cpp" line="114"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74"/>
+        <location filename="../app/cli/climonitor.cpp" line="121"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="81"/>
+        <location filename="../app/cli/climonitor.cpp" line="133"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="90"/>
+        <location filename="../app/cli/climonitor.cpp" line="142"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="123"/>
+        <location filename="../app/cli/climonitor.cpp" line="180"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="107"/>
+        <location filename="../app/cli/climonitor.cpp" line="159"/>
         <source>reconnected to %1</source>
         <translation>reconectado a %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitorjoints.cpp" line="55"/>
+        <source>%1 records could not be kept in the journal %2: %3</source>
+        <translation>%1 registros no se pudieron guardar en el diario %2: %3</translation>
     </message>
 </context>
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="47"/>
+        <location filename="../app/cli/clioptions.cpp" line="128"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="172"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>indique solo una de --port, --tcp y --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="179"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="187"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="192"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud requiere una velocidad como 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="199"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity admite none, even u odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="203"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits admite 1 o 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="212"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="220"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="223"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries requiere un número de 0 a 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="157"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 necesita un valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="70"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -1646,8 +1764,9 @@ Commands:
   read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
   write CODE VALUE [--raw]  validate, send, and read back
   send HEX                  send a raw frame; print the answer in hex and decoded
-  monitor [--interval MS] [--duration S] [--csv FILE]
-                            tip temperature, setpoint, power and status per port
+  monitor [--interval MS] [--duration S] [--csv FILE] [--limit RULE]
+          [--journal FILE]  tip temperature, setpoint, power and status per port, and
+                            a line per joint, each joint kept in the journal
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
   profile save FILE         every writable setting of the device to a JSON profile
@@ -1659,6 +1778,16 @@ Commands:
                             every port&apos;s and the feeder&apos;s curves and events to a chart
                             recording, as the Charts page records them
   measure FILE [--json]     the heat-ups and recoveries of a recording, one line each
+  joints [--since T] [--until T] [--device D] [--port N] [--tool T]
+         [--verdict V] [--work-order W] [--json | --csv] [--journal FILE]
+                            the joints the journal keeps, newest first; T is 24h, 30m,
+                            7d or an ISO date and time; V is ok, slow-recovery,
+                            too-deep or incomplete
+  context [show | clear | set [--work-order W] [--serial S] [--operator O] [--stdin]]
+                            the work context stamped on every joint and event
+  limits [show | clear | set RULE]
+                            the joint limits; RULE is port=N,tool=T,recovery=S,dip=K,
+                            wear=SHARE (any of them; the most specific rule wins)
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
 built-in simulated DME station (address 01) and SFR feeder (address 10);
@@ -1680,8 +1809,9 @@ Comandos:
   write CÓDIGO VALOR [--raw]
                             valida, envía y vuelve a leer
   send HEX                  envía una trama en bruto; muestra la respuesta en hex y decodificada
-  monitor [--interval MS] [--duration S] [--csv ARCHIVO]
-                            temperatura de la punta, consigna, potencia y estado por puerto
+  monitor [--interval MS] [--duration S] [--csv ARCHIVO] [--limit REGLA]
+          [--journal ARCHIVO] temperatura de la punta, consigna, potencia y estado por
+                            puerto, y una línea por soldadura, cada una guardada en el diario
   dump [--json]             todos los parámetros legibles, contadores y errores
   commands [--family F]     el catálogo de comandos
   profile save ARCHIVO      todos los ajustes escribibles del equipo en un perfil JSON
@@ -1693,6 +1823,16 @@ Comandos:
                             las curvas y eventos de todos los puertos y del alimentador en una
                             grabación de gráficos, como la graba la página de gráficos
   measure ARCHIVO [--json]  los calentamientos y recuperaciones de una grabación, uno por línea
+  joints [--since T] [--until T] [--device D] [--port N] [--tool T]
+         [--verdict V] [--work-order W] [--json | --csv] [--journal ARCHIVO]
+                            las soldaduras que guarda el diario, las más recientes primero;
+                            T es 24h, 30m, 7d o una fecha y hora ISO; V es ok,
+                            slow-recovery, too-deep o incomplete
+  context [show | clear | set [--work-order W] [--serial S] [--operator O] [--stdin]]
+                            el contexto de trabajo que llevan cada soldadura y cada evento
+  limits [show | clear | set REGLA]
+                            los límites de soldadura; REGLA es port=N,tool=T,recovery=S,
+                            dip=K,wear=PROPORCIÓN (cualquiera; gana la regla más concreta)
 
 Sin --addr ni --no-addr, el equipo se busca automáticamente. --demo habla con la
 estación DME simulada integrada (dirección 01) y el alimentador SFR (dirección 10);
@@ -1707,82 +1847,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="94"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>comando desconocido &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="127"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>indique solo una de --port, --tcp y --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="134"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="142"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="147"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud requiere una velocidad como 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="154"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity admite none, even u odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="158"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits admite 1 o 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="167"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="175"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="178"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries requiere un número de 0 a 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="182"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 necesita un valor</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="186"/>
+        <location filename="../app/cli/clioptions.cpp" line="161"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="192"/>
+        <location filename="../app/cli/clioptions.cpp" line="227"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="193"/>
+        <location filename="../app/cli/clioptions.cpp" line="228"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="199"/>
+        <location filename="../app/cli/clioptions.cpp" line="234"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="202"/>
+        <location filename="../app/cli/clioptions.cpp" line="237"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -2124,44 +2209,54 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Event</name>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="38"/>
+        <location filename="../lib/model/eventlog.cpp" line="42"/>
         <source>Station error</source>
         <translation>Error de estación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="40"/>
+        <location filename="../lib/model/eventlog.cpp" line="44"/>
         <source>Port error</source>
         <translation>Error de puerto</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="42"/>
+        <location filename="../lib/model/eventlog.cpp" line="46"/>
         <source>Feeder error</source>
         <translation>Error del alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="44"/>
+        <location filename="../lib/model/eventlog.cpp" line="48"/>
         <source>Alarm</source>
         <translation>Alarma</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="46"/>
+        <location filename="../lib/model/eventlog.cpp" line="50"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="48"/>
+        <location filename="../lib/model/eventlog.cpp" line="52"/>
         <source>Write</source>
         <translation>Escritura</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="50"/>
+        <location filename="../lib/model/eventlog.cpp" line="54"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../lib/model/eventlog.cpp" line="52"/>
+        <location filename="../lib/model/eventlog.cpp" line="56"/>
         <source>Connection</source>
         <translation>Conexión</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="58"/>
+        <source>Tool change</source>
+        <translation>Cambio de herramienta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/eventlog.cpp" line="60"/>
+        <source>Joint</source>
+        <translation>Soldadura</translation>
     </message>
 </context>
 <context>
@@ -2430,6 +2525,72 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>JointLimitRules</name>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="48"/>
+        <source>the longest recovery must be more than 0 s and at most %1 s</source>
+        <translation>la recuperación más larga debe ser de más de 0 s y como máximo %1 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="56"/>
+        <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
+        <translation>la caída más profunda debe ser un número entero de kelvin entre 1 y %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="62"/>
+        <source>the tip wear share must be more than 0 and at most 10</source>
+        <translation>la proporción de desgaste de la punta debe ser mayor que 0 y como máximo 10</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="68"/>
+        <source>a port is a number from 1 to 4</source>
+        <translation>un puerto es un número del 1 al 4</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="106"/>
+        <source>%1 must be a number</source>
+        <translation>%1 debe ser un número</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="165"/>
+        <source>joint limits: %1</source>
+        <translation>límites de soldadura: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="171"/>
+        <source>joint limit rule %1: %2</source>
+        <translation>regla de límites de soldadura %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="198"/>
+        <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
+        <translation>«%1» no es un límite: escriba port=N, tool=NOMBRE, recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN, separados por comas</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
+        <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
+        <translation>«%1» no fija ningún límite: indique recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN</translation>
+    </message>
+</context>
+<context>
+    <name>JointLimitsFile</name>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="32"/>
+        <source>cannot read the joint limits %1: %2</source>
+        <translation>no se pueden leer los límites de soldadura %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="34"/>
+        <source>the joint limits %1 are too big</source>
+        <translation>los límites de soldadura %1 son demasiado grandes</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="39"/>
+        <source>the joint limits %1 are not a JSON object: %2</source>
+        <translation>los límites de soldadura %1 no son un objeto JSON: %2</translation>
+    </message>
+</context>
+<context>
     <name>JointTableModel</name>
     <message>
         <location filename="../lib/model/joints/jointtable.cpp" line="155"/>
@@ -2535,17 +2696,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="112"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>soldadura demasiado profunda: la punta bajó %1 K por debajo de la consigna (límite %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="121"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="117"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>soldadura con recuperación lenta: %1 s (límite %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="123"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="119"/>
         <source>joint did not recover within %1 s</source>
         <translation>la soldadura no se recuperó en %1 s</translation>
     </message>
@@ -3433,41 +3594,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="47"/>
-        <location filename="../lib/model/session.cpp" line="126"/>
-        <location filename="../lib/model/session.cpp" line="129"/>
+        <location filename="../lib/model/session.cpp" line="48"/>
+        <location filename="../lib/model/session.cpp" line="135"/>
+        <location filename="../lib/model/session.cpp" line="138"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="125"/>
-        <location filename="../lib/model/session.cpp" line="138"/>
-        <location filename="../lib/model/session.cpp" line="146"/>
+        <location filename="../lib/model/session.cpp" line="134"/>
+        <location filename="../lib/model/session.cpp" line="147"/>
+        <location filename="../lib/model/session.cpp" line="155"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="162"/>
+        <location filename="../lib/model/session.cpp" line="171"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="213"/>
+        <location filename="../lib/model/session.cpp" line="222"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="214"/>
+        <location filename="../lib/model/session.cpp" line="223"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="224"/>
+        <location filename="../lib/model/session.cpp" line="233"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="232"/>
+        <location filename="../lib/model/session.cpp" line="241"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -3495,7 +3656,7 @@ Hágalo permanente con esta regla de udev:
         <translation>el equipo en la dirección %1 no se identificó: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="222"/>
+        <location filename="../lib/model/session.cpp" line="231"/>
         <source>connected to %1, but %2</source>
         <translation>conectado a %1, pero %2</translation>
     </message>
@@ -3531,12 +3692,13 @@ Hágalo permanente con esta regla de udev:
         <translation>%1 no puede guardar en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="116"/>
+        <location filename="../lib/model/stationmodel.cpp" line="117"/>
+        <location filename="../lib/model/stationmodel.cpp" line="121"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="130"/>
+        <location filename="../lib/model/stationmodel.cpp" line="135"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -3544,32 +3706,32 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="143"/>
+        <location filename="../lib/model/supportreport.cpp" line="176"/>
         <source>TipScope support report, %1</source>
         <translation>Informe de soporte de TipScope, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="144"/>
+        <location filename="../lib/model/supportreport.cpp" line="177"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="150"/>
+        <location filename="../lib/model/supportreport.cpp" line="183"/>
         <source>Line: %1</source>
         <translation>Línea: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="151"/>
+        <location filename="../lib/model/supportreport.cpp" line="184"/>
         <source>State: %1</source>
         <translation>Estado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="152"/>
+        <location filename="../lib/model/supportreport.cpp" line="185"/>
         <source>Statistics: %1</source>
         <translation>Estadísticas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="177"/>
+        <location filename="../lib/model/supportreport.cpp" line="212"/>
         <source>Recent events:</source>
         <translation>Eventos recientes:</translation>
     </message>
@@ -3589,9 +3751,47 @@ Hágalo permanente con esta regla de udev:
         <translation>, software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="167"/>
+        <location filename="../lib/model/supportreport.cpp" line="94"/>
+        <source>Joints of the last 24 hours: not read: %1</source>
+        <translation>Soldaduras de las últimas 24 horas: no leídas: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="96"/>
+        <source>Joints from %1 to %2:</source>
+        <translation>Soldaduras de %1 a %2:</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="101"/>
+        <source>  none</source>
+        <translation>  ninguna</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="108"/>
+        <source>  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, %7 incomplete</source>
+        <translation>  %1, puerto %2: %3 soldaduras: %4 correctas, %5 recuperación lenta, %6 demasiado profundas, %7 incompletas</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="116"/>
+        <source>; recovery median %1 ms, 95th percentile %2 ms</source>
+        <translation>; recuperación mediana %1 ms, percentil 95 %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="200"/>
         <source>  What to check:</source>
         <translation>  Qué comprobar:</translation>
+    </message>
+</context>
+<context>
+    <name>TipWear</name>
+    <message>
+        <location filename="../lib/model/joints/tipwear.cpp" line="65"/>
+        <source>tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when it was plugged in</source>
+        <translation>punta desgastándose: %1 se recupera en %2 s (mediana de las últimas %3 soldaduras), %4 s al conectarla</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/tipwear.cpp" line="67"/>
+        <source>the tool</source>
+        <translation>la herramienta</translation>
     </message>
 </context>
 <context>
@@ -3646,6 +3846,29 @@ Hágalo permanente con esta regla de udev:
         <location filename="../lib/protocol/valuecodec.cpp" line="186"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; no es un número entero; %2 admite %3</translation>
+    </message>
+</context>
+<context>
+    <name>WorkContextFile</name>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
+        <source>cannot read the work context %1: %2</source>
+        <translation>no se puede leer el contexto de trabajo %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="40"/>
+        <source>the work context %1 is too big to be one</source>
+        <translation>el contexto de trabajo %1 es demasiado grande para serlo</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
+        <source>the work context %1 is not a JSON object: %2</source>
+        <translation>el contexto de trabajo %1 no es un objeto JSON: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/workcontextfile.cpp" line="49"/>
+        <source>the work context %1: %2 must be text</source>
+        <translation>el contexto de trabajo %1: %2 debe ser texto</translation>
     </message>
 </context>
 <context>
@@ -4958,124 +5181,134 @@ Continue?</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <source>Tool changes</source>
+        <translation>Cambios de herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
+        <source>Joints</source>
+        <translation>Soldaduras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="105"/>
         <source>Show events of device</source>
         <translation>Mostrar eventos del equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="104"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
         <source>Every device</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="110"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="111"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="112"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>&amp;Device:</source>
         <translation>&amp;Equipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="127"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="157"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="159"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="179"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="181"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="186"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="190"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="321"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="265"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="267"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="269"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -5083,17 +5316,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="313"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="315"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="317"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="319"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
@@ -5412,6 +5645,99 @@ Reset it?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JointLimitsDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="42"/>
+        <source>Joint limits</source>
+        <translation>Límites de soldadura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="48"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="53"/>
+        <source> K</source>
+        <translation> K</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="58"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="63"/>
+        <source>Longest recovery (s)</source>
+        <translation>Recuperación más larga (s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="64"/>
+        <source>Deepest dip (K)</source>
+        <translation>Caída más profunda (K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="64"/>
+        <source>Tip wear (%)</source>
+        <translation>Desgaste de la punta (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="69"/>
+        <source>Add rule</source>
+        <translation>Añadir regla</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="70"/>
+        <source>Remove rule</source>
+        <translation>Quitar regla</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="82"/>
+        <source>Longest recovery (back within 5 K of the setpoint):</source>
+        <translation>Recuperación más larga (de vuelta a 5 K de la consigna):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="83"/>
+        <source>Deepest dip below the setpoint:</source>
+        <translation>Caída más profunda bajo la consigna:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="84"/>
+        <source>Tip wearing when recoveries are slower than when new by:</source>
+        <translation>Punta desgastada cuando las recuperaciones son más lentas que en nuevo en:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="85"/>
+        <source>Rules for a port, a tool or both override these; the most specific rule wins. An empty cell keeps the default.</source>
+        <translation>Las reglas para un puerto, una herramienta o ambos prevalecen; gana la regla más concreta. Una celda vacía conserva el valor por defecto.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="116"/>
+        <source>Any port</source>
+        <translation>Cualquier puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="118"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/jointlimitsdialog.cpp" line="159"/>
+        <source>Rule %1: %2</source>
+        <translation>Regla %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::JointsPage</name>
     <message>
         <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
@@ -5571,6 +5897,54 @@ Reset it?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JournalStatusButton</name>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="11"/>
+        <source>No work order</source>
+        <translation>Sin orden de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="26"/>
+        <source>Work context and journal</source>
+        <translation>Contexto de trabajo y diario</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="47"/>
+        <source>Stamped on every joint and event: %1. Click to change it.</source>
+        <translation>Se registra con cada soldadura y cada evento: %1. Haga clic para cambiarlo.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="48"/>
+        <source>Journal: %1</source>
+        <translation>Diario: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="51"/>
+        <source>Journal not written</source>
+        <translation>El diario no se escribe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="54"/>
+        <source>%1 records wait to be written; polling goes on.</source>
+        <translation>%1 registros esperan a ser escritos; el sondeo continúa.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="57"/>
+        <source>%1 records lost</source>
+        <translation>%1 registros perdidos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="61"/>
+        <source>Work context unreadable</source>
+        <translation>Contexto de trabajo ilegible</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/journalstatusbutton.cpp" line="64"/>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::LinkStatusLabel</name>
     <message>
         <location filename="../app/gui/linkstatuslabel.cpp" line="10"/>
@@ -5601,78 +5975,88 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="37"/>
+        <location filename="../app/gui/mainwindow.cpp" line="45"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="92"/>
+        <location filename="../app/gui/mainwindow.cpp" line="112"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="93"/>
+        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <source>Work &amp;context…</source>
+        <translation>&amp;Contexto de trabajo…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="117"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="95"/>
+        <location filename="../app/gui/mainwindow.cpp" line="119"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="96"/>
+        <location filename="../app/gui/mainwindow.cpp" line="120"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="97"/>
+        <location filename="../app/gui/mainwindow.cpp" line="121"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="102"/>
+        <location filename="../app/gui/mainwindow.cpp" line="126"/>
+        <source>&amp;Joint limits…</source>
+        <translation>&amp;Límites de soldadura…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="127"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="103"/>
+        <location filename="../app/gui/mainwindow.cpp" line="128"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="105"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="106"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="180"/>
+        <location filename="../app/gui/mainwindow.cpp" line="205"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="185"/>
+        <location filename="../app/gui/mainwindow.cpp" line="210"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="190"/>
+        <location filename="../app/gui/mainwindow.cpp" line="215"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="196"/>
-        <location filename="../app/gui/mainwindow.cpp" line="199"/>
+        <location filename="../app/gui/mainwindow.cpp" line="224"/>
+        <location filename="../app/gui/mainwindow.cpp" line="227"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="200"/>
+        <location filename="../app/gui/mainwindow.cpp" line="228"/>
         <source>Written:
 %1
 
@@ -5681,6 +6065,16 @@ Attach both files to the support ticket.</source>
 %1
 
 Adjunte ambos archivos a la solicitud de soporte.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="236"/>
+        <source>joint limits</source>
+        <translation>límites de soldadura</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="237"/>
+        <source>%1; the default limits judge joints</source>
+        <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
 </context>
 <context>
@@ -6453,6 +6847,39 @@ Do you want to continue?</source>
         <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
         <source>1 min</source>
         <translation>1 min</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::WorkContextDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="24"/>
+        <source>Work context</source>
+        <translation>Contexto de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="34"/>
+        <source>Stamped on every joint and event from now on, by every TipScope program on this computer, until it is changed.</source>
+        <translation>A partir de ahora se registra con cada soldadura y cada evento, en todos los programas TipScope de este equipo, hasta que se cambie.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="40"/>
+        <source>Work order:</source>
+        <translation>Orden de trabajo:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="41"/>
+        <source>Board serial:</source>
+        <translation>Número de serie de la placa:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="42"/>
+        <source>Operator:</source>
+        <translation>Operario:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
+        <source>Clear</source>
+        <translation>Borrar</translation>
     </message>
 </context>
 <context>

@@ -17,6 +17,12 @@ int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err);
 // Their own session (record) or none (measure): recordings, as the Charts page writes them.
 int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err);
+// The journal and the files beside it: no device.
+int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err);
+int runContext(const CliOptions &o, QTextStream &out, QTextStream &err);
+int runLimits(const CliOptions &o, QTextStream &out, QTextStream &err);
+// --journal FILE, or the journal every TipScope program keeps by default.
+[[nodiscard]] QString journalPathOf(const CliOptions &o);
 
 // "ST1 350 °C", "HD1 1.60 s", "D12 disabled", "CT1 2 T245", "SMN DME-2C".
 [[nodiscard]] QString formatReading(const protocol::ResolvedCommand &cmd, const QByteArray &data,

@@ -1,7 +1,14 @@
 // tipscope-cli monitor: tip temperature, setpoint, power and status of every port, polled in
 // cycles through the live-poll priority. A lost line is reported and the line reconnects by
-// itself; the monitor resumes when it is back.
+// itself; the monitor resumes when it is back. Each port's readings also go through the joint
+// detector the GUI uses, judged by the shared joint limits (and --limit); every joint is a line
+// of its own and is kept in the journal with the work context in force.
 #include "clicommands.h"
+
+#include "climonitorjoints.h"
+
+#include "model/devicemodel.h"
+#include "model/joints/jointlimitsfile.h"
 
 #include "protocol/elide.h"
 #include "protocol/valuecodec.h"
@@ -27,13 +34,18 @@ struct Tr {
 struct PortReading {
     QString tip, setpoint, power, status;
     bool ok = false;
+    model::PortReading joint; // the same, for the joint detector
 };
 
 const QList<Role> kLiveRoles = {Role::TipTemperature, Role::Setpoint, Role::Power, Role::Status};
+constexpr int kWorking = 0;          // the port's status at work
+constexpr int kToolEveryCycles = 10; // the tool rarely changes: read it now and then
 
 PortReading readPort(CliSession &s, const DeviceInfo &d, int port, int *worst) {
     PortReading r;
     QStringList fields;
+    QList<qint64> numbers;
+    r.joint.timeMs = QDateTime::currentMSecsSinceEpoch();
     for (const Role role : kLiveRoles) {
         const auto cmd = Catalog::builtin().resolve(d.family, role, port, Direction::Read);
         if (!cmd)
@@ -47,13 +59,48 @@ PortReading readPort(CliSession &s, const DeviceInfo &d, int port, int *worst) {
         const auto value = decodeAnswer(*cmd, reply->answer().data);
         if (!value)
             return r;
+        numbers.append(value->number);
         if (role == Role::Power)
             fields.append(QString::number(value->number / 10.0, 'f', 1));
         else
             fields.append(describeValue(*cmd, *value, Wording::Catalog)); // data: English
     }
-    r = {fields[0], fields[1], fields[2], fields[3], true};
+    r.tip = fields[0];
+    r.setpoint = fields[1];
+    r.power = fields[2];
+    r.status = fields[3];
+    r.ok = true;
+    r.joint.tip = int(numbers[0]);
+    r.joint.setpoint = int(numbers[1]);
+    r.joint.powerPct = double(numbers[2]) / 10;
+    r.joint.working = numbers[3] == kWorking;
     return r;
+}
+
+QString readTool(CliSession &s, const DeviceInfo &d, int port) {
+    const auto cmd =
+        Catalog::builtin().resolve(d.family, Role::ConnectedTool, port, Direction::Read);
+    if (!cmd)
+        return {};
+    Reply *reply = s.ask(Request::read(d.address, *cmd, Priority::LivePoll));
+    reply->deleteLater();
+    const auto value = reply->ok() ? decodeAnswer(*cmd, reply->answer().data) : std::nullopt;
+    return value
+               ? model::toolName(Catalog::builtin(), d.family, int(value->number), Wording::Catalog)
+               : QString();
+}
+
+// The shared joint limits, with --limit's rule on top.
+protocol::Outcome<model::JointLimitRules> limitsOf(const CliOptions &o) {
+    auto rules = model::loadJointLimits(model::defaultJointLimitsPath());
+    if (!rules || !o.values.contains(QStringLiteral("limit")))
+        return rules;
+    const auto rule = model::JointLimitRules::parseRule(o.values.value(QStringLiteral("limit")));
+    if (!rule)
+        return protocol::failure(QStringLiteral("--limit: %1").arg(rule.error()));
+    model::JointLimitRules out = rules.value();
+    out.add(rule.value());
+    return out;
 }
 
 } // namespace
@@ -73,6 +120,11 @@ int runMonitor(CliSession &s) {
     if (!ok || !std::isfinite(durationS) || durationS < 0 || durationS > 1e9) {
         s.err() << Tr::tr("tipscope-cli: --duration takes seconds") << Qt::endl;
         return kUsage;
+    }
+    const auto limits = limitsOf(s.options());
+    if (!limits) {
+        s.err() << "tipscope-cli: " << limits.error() << Qt::endl;
+        return kRefused;
     }
     if (const int rc = s.resolveDevices(); rc != kOk)
         return rc;
@@ -109,20 +161,27 @@ int runMonitor(CliSession &s) {
         if (state == Line::State::Retrying || state == Line::State::Open)
             lost = state == Line::State::Retrying;
     });
+    MonitorJoints joints(s, d, ports, limits.value());
+    QStringList tools(ports);
     QElapsedTimer clock;
     clock.start();
     int lastCycle = kOk;
-    while (durationS == 0 || clock.elapsed() < qint64(durationS * 1000)) {
+    for (int cycle = 0; durationS == 0 || clock.elapsed() < qint64(durationS * 1000); ++cycle) {
         const qint64 cycleStart = clock.elapsed();
         int worst = kOk;
         QStringList parts;
         const QString stamp = QDateTime::currentDateTime().toString(Qt::ISODateWithMs);
         for (int p = 1; p <= ports; ++p) {
-            const PortReading r = readPort(s, d, p, &worst);
+            if (cycle % kToolEveryCycles == 0)
+                tools[p - 1] = readTool(s, d, p);
+            PortReading r = readPort(s, d, p, &worst);
             if (!r.ok) {
+                joints.gap(p, r.joint.timeMs);
                 parts.append(Tr::tr("P%1 --").arg(p));
                 continue;
             }
+            r.joint.tool = tools.at(p - 1);
+            joints.add(p, r.joint);
             parts.append(QStringLiteral("P%1 %2/%3 °C %4% %5")
                              .arg(p)
                              .arg(r.tip, r.setpoint, r.power, r.status));
@@ -146,6 +205,8 @@ int runMonitor(CliSession &s) {
             loop.exec();
         }
     }
+    if (!joints.finish() && lastCycle == kOk)
+        lastCycle = kTransport;
     return lastCycle;
 }
 

@@ -8,28 +8,51 @@ namespace tipscope::cli {
 
 namespace {
 
-const QStringList kCommands = {QStringLiteral("detect"),   QStringLiteral("read"),
-                               QStringLiteral("write"),    QStringLiteral("send"),
-                               QStringLiteral("monitor"),  QStringLiteral("dump"),
-                               QStringLiteral("commands"), QStringLiteral("profile"),
-                               QStringLiteral("record"),   QStringLiteral("measure")};
+const QStringList kCommands = {
+    QStringLiteral("detect"),   QStringLiteral("read"),    QStringLiteral("write"),
+    QStringLiteral("send"),     QStringLiteral("monitor"), QStringLiteral("dump"),
+    QStringLiteral("commands"), QStringLiteral("profile"), QStringLiteral("record"),
+    QStringLiteral("measure"),  QStringLiteral("joints"),  QStringLiteral("context"),
+    QStringLiteral("limits")};
 // Commands that read or write files only, and need no device.
-const QStringList kOffline = {QStringLiteral("commands"), QStringLiteral("measure")};
+const QStringList kOffline = {QStringLiteral("commands"), QStringLiteral("measure"),
+                              QStringLiteral("joints"), QStringLiteral("context"),
+                              QStringLiteral("limits")};
 // Command options that take a value; all others are flags.
-const QStringList kValueOptions = {QStringLiteral("interval"), QStringLiteral("duration"),
-                                   QStringLiteral("csv"), QStringLiteral("family")};
+const QStringList kValueOptions = {
+    QStringLiteral("interval"), QStringLiteral("duration"),   QStringLiteral("csv"),
+    QStringLiteral("family"),   QStringLiteral("since"),      QStringLiteral("until"),
+    QStringLiteral("device"),   QStringLiteral("port"),       QStringLiteral("verdict"),
+    QStringLiteral("tool"),     QStringLiteral("work-order"), QStringLiteral("serial"),
+    QStringLiteral("operator"), QStringLiteral("journal"),    QStringLiteral("limit")};
+
+// `monitor --csv FILE` names a file; `joints --csv` a format.
+bool takesValue(const QString &command, const QString &option) {
+    return kValueOptions.contains(option) &&
+           !(command == QLatin1String("joints") && option == QLatin1String("csv"));
+}
 const QMap<QString, QStringList> kCommandOptions = {
     {QStringLiteral("detect"), {QStringLiteral("json"), QStringLiteral("scan")}},
     {QStringLiteral("read"), {QStringLiteral("raw")}},
     {QStringLiteral("write"), {QStringLiteral("raw")}},
     {QStringLiteral("send"), {}},
     {QStringLiteral("monitor"),
-     {QStringLiteral("interval"), QStringLiteral("duration"), QStringLiteral("csv")}},
+     {QStringLiteral("interval"), QStringLiteral("duration"), QStringLiteral("csv"),
+      QStringLiteral("journal"), QStringLiteral("limit")}},
     {QStringLiteral("dump"), {QStringLiteral("json")}},
     {QStringLiteral("commands"), {QStringLiteral("family")}},
     {QStringLiteral("profile"), {QStringLiteral("force"), QStringLiteral("dry-run")}},
     {QStringLiteral("record"), {QStringLiteral("duration")}},
     {QStringLiteral("measure"), {QStringLiteral("json")}},
+    {QStringLiteral("joints"),
+     {QStringLiteral("since"), QStringLiteral("until"), QStringLiteral("device"),
+      QStringLiteral("port"), QStringLiteral("verdict"), QStringLiteral("tool"),
+      QStringLiteral("work-order"), QStringLiteral("json"), QStringLiteral("csv"),
+      QStringLiteral("journal")}},
+    {QStringLiteral("context"),
+     {QStringLiteral("work-order"), QStringLiteral("serial"), QStringLiteral("operator"),
+      QStringLiteral("stdin"), QStringLiteral("journal")}},
+    {QStringLiteral("limits"), {}},
 };
 
 bool parseInt(const QString &text, int lo, int hi, int *out) {
@@ -57,8 +80,9 @@ QString CliParser::usage() {
         "  read CODE... [--raw]      one line per code: \"<CODE> <value> <unit>\"\n"
         "  write CODE VALUE [--raw]  validate, send, and read back\n"
         "  send HEX                  send a raw frame; print the answer in hex and decoded\n"
-        "  monitor [--interval MS] [--duration S] [--csv FILE]\n"
-        "                            tip temperature, setpoint, power and status per port\n"
+        "  monitor [--interval MS] [--duration S] [--csv FILE] [--limit RULE]\n"
+        "          [--journal FILE]  tip temperature, setpoint, power and status per port, and\n"
+        "                            a line per joint, each joint kept in the journal\n"
         "  dump [--json]             every readable parameter, counter and error\n"
         "  commands [--family F]     the command catalog\n"
         "  profile save FILE         every writable setting of the device to a JSON profile\n"
@@ -70,6 +94,16 @@ QString CliParser::usage() {
         "                            every port's and the feeder's curves and events to a chart\n"
         "                            recording, as the Charts page records them\n"
         "  measure FILE [--json]     the heat-ups and recoveries of a recording, one line each\n"
+        "  joints [--since T] [--until T] [--device D] [--port N] [--tool T]\n"
+        "         [--verdict V] [--work-order W] [--json | --csv] [--journal FILE]\n"
+        "                            the joints the journal keeps, newest first; T is 24h, 30m,\n"
+        "                            7d or an ISO date and time; V is ok, slow-recovery,\n"
+        "                            too-deep or incomplete\n"
+        "  context [show | clear | set [--work-order W] [--serial S] [--operator O] [--stdin]]\n"
+        "                            the work context stamped on every joint and event\n"
+        "  limits [show | clear | set RULE]\n"
+        "                            the joint limits; RULE is port=N,tool=T,recovery=S,dip=K,\n"
+        "                            wear=SHARE (any of them; the most specific rule wins)\n"
         "\n"
         "Without --addr or --no-addr the device is found automatically. --demo talks to the\n"
         "built-in simulated DME station (address 01) and SFR feeder (address 10);\n"
@@ -116,7 +150,18 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
             return true;
         };
         QString v;
-        if (name == QLatin1String("help")) {
+        // A command's own options first: `joints --port 1` names a port, not the line.
+        if (!o.command.isEmpty() && kCommandOptions.value(o.command).contains(name)) {
+            if (takesValue(o.command, name)) {
+                if (!takeValue(&v))
+                    return protocol::failure(tr("--%1 needs a value").arg(name));
+                o.values.insert(name, v);
+            } else {
+                if (hasInline)
+                    return protocol::failure(tr("--%1 takes no value").arg(name));
+                o.flags.append(name);
+            }
+        } else if (name == QLatin1String("help")) {
             o.showHelp = true;
         } else if (name == QLatin1String("version")) {
             o.showVersion = true;
@@ -176,16 +221,6 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
         } else if (name == QLatin1String("retries")) {
             if (!takeValue(&v) || !parseInt(v, 0, 10, &o.line.queue.retries))
                 return protocol::failure(tr("--retries takes a number from 0 to 10"));
-        } else if (!o.command.isEmpty() && kCommandOptions.value(o.command).contains(name)) {
-            if (kValueOptions.contains(name)) {
-                if (!takeValue(&v))
-                    return protocol::failure(tr("--%1 needs a value").arg(name));
-                o.values.insert(name, v);
-            } else {
-                if (hasInline)
-                    return protocol::failure(tr("--%1 takes no value").arg(name));
-                o.flags.append(name);
-            }
         } else {
             const QString shown = protocol::elided(name);
             return protocol::failure(o.command.isEmpty()

@@ -35,6 +35,12 @@ int main(int argc, char *argv[]) {
         return runMeasure(*options, out, err);
     if (options->command == QLatin1String("record"))
         return runRecord(*options, out, err);
+    if (options->command == QLatin1String("joints"))
+        return runJoints(*options, out, err);
+    if (options->command == QLatin1String("context"))
+        return runContext(*options, out, err);
+    if (options->command == QLatin1String("limits"))
+        return runLimits(*options, out, err);
 
     CliSession session(*options);
     if (const int rc = session.open(); rc != kOk)

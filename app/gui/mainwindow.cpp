@@ -2,11 +2,17 @@
 
 #include "connectionbar.h"
 #include "devicetree.h"
+#include "dialogs/jointlimitsdialog.h"
 #include "dialogs/preferencesdialog.h"
+#include "dialogs/workcontextdialog.h"
+#include "journalstatusbutton.h"
+
+#include "journal/jointstatistics.h"
 #include "linkstatuslabel.h"
 #include "pages/jointspage.h"
 #include "pages/pagefactory.h"
 
+#include "model/joints/jointlimitsfile.h"
 #include "model/supportreport.h"
 
 #include <QApplication>
@@ -29,7 +35,9 @@ namespace tipscope::gui {
 using namespace tipscope::model;
 
 MainWindow::MainWindow(QWidget *parent)
-    : QMainWindow(parent) {
+    : QMainWindow(parent)
+    , m_kept(m_session, m_journal)
+    , m_context(m_journal, journal::workContextPathFor(m_journal.path())) {
     QSettings store;
     m_settings = AppSettings::load(store);
     m_connection = new ConnectionBar(this);
@@ -45,7 +53,7 @@ MainWindow::MainWindow(QWidget *parent)
     for (Page *p : std::as_const(m_pages)) {
         m_tabs->addTab(p, p->title());
         if (auto *joints = qobject_cast<JointsPage *>(p))
-            connect(joints, &JointsPage::chartsShown, m_tabs, &QTabWidget::setCurrentWidget);
+            connectJointsPage(*joints);
     }
     m_splitter = new QSplitter(this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -57,8 +65,10 @@ MainWindow::MainWindow(QWidget *parent)
     m_stateLabel = new QLabel(this);
     m_linkStatus = new LinkStatusLabel(m_session, this);
     statusBar()->addWidget(m_stateLabel, 1);
+    statusBar()->addPermanentWidget(new JournalStatusButton(m_journal, m_context, this));
     statusBar()->addPermanentWidget(m_linkStatus);
     buildMenus();
+    loadJointLimits();
 
     connect(m_connection, &ConnectionBar::connectRequested, this, &MainWindow::connectLine);
     connect(m_connection, &ConnectionBar::disconnectRequested, &m_session,
@@ -88,8 +98,22 @@ MainWindow::MainWindow(QWidget *parent)
 
 MainWindow::~MainWindow() = default;
 
+// The Joints page reads this window's journal, stamps live joints with its work order until the
+// journal has them, and brings the Charts page forward for a joint.
+void MainWindow::connectJointsPage(JointsPage &joints) {
+    joints.setJournalPath(m_journal.path());
+    joints.setWorkOrder(m_journal.context().workOrder);
+    connect(&m_context, &journal::WorkContextFollower::contextChanged, &joints,
+            [&joints](const WorkContext &context) { joints.setWorkOrder(context.workOrder); });
+    connect(&joints, &JointsPage::chartsShown, m_tabs, &QTabWidget::setCurrentWidget);
+}
+
 void MainWindow::buildMenus() {
     QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("Work &context…"), this, [this] {
+        WorkContextDialog dialog(m_context, this);
+        dialog.exec();
+    });
     file->addAction(tr("Write &support report…"), this, &MainWindow::writeSupportReport);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -99,6 +123,7 @@ void MainWindow::buildMenus() {
         if (dialog.exec() == QDialog::Accepted)
             applyPreferences(dialog.result());
     });
+    tools->addAction(tr("&Joint limits…"), this, &MainWindow::editJointLimits);
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About TipScope"), this, [this] {
         QMessageBox::about(
@@ -191,7 +216,10 @@ void MainWindow::writeSupportReport() {
         QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
     if (folder.isEmpty())
         return;
-    const auto files = model::writeSupportReport(m_session, folder);
+    QJsonObject report = model::supportReportJson(m_session);
+    (void)m_journal.flush(2000); // the last joints count too
+    report.insert(QStringLiteral("joints"), journal::lastDayOfJoints(m_journal.path()));
+    const auto files = model::writeSupportReport(report, folder);
     if (!files) {
         QMessageBox::critical(this, tr("Support report"), files.error());
         return;
@@ -201,6 +229,23 @@ void MainWindow::writeSupportReport() {
                                  .arg(files->join(QLatin1Char('\n'))));
 }
 
+void MainWindow::loadJointLimits() {
+    const auto rules = model::loadJointLimits(model::defaultJointLimitsPath());
+    if (!rules) {
+        // Said where the problems are read, and the defaults judge meanwhile.
+        m_session.eventLog().add(Event::Kind::Joint, Event::Severity::Warning, tr("joint limits"),
+                                 tr("%1; the default limits judge joints").arg(rules.error()));
+        return;
+    }
+    m_session.joints().setRules(rules.value());
+}
+
+void MainWindow::editJointLimits() {
+    JointLimitsDialog dialog(m_session.joints().rules(), model::defaultJointLimitsPath(), this);
+    if (dialog.exec() == QDialog::Accepted)
+        loadJointLimits();
+}
+
 void MainWindow::closeEvent(QCloseEvent *event) {
     QSettings store;
     store.setValue(QStringLiteral("window/geometry"), saveGeometry());
@@ -208,6 +253,8 @@ void MainWindow::closeEvent(QCloseEvent *event) {
     store.setValue(QStringLiteral("window/splitter"), m_splitter->saveState());
     store.setValue(QStringLiteral("window/tab"), m_tabs->currentIndex());
     m_session.disconnectFromLine();
+    // The last joints and the disconnect reach the file before the window goes.
+    (void)m_journal.flush(5000);
     event->accept();
 }
 

@@ -27,6 +27,10 @@ Kind kindOf(model::Event::Kind kind) {
         return Kind::Communication;
     case model::Event::Kind::Connection:
         return Kind::Connection;
+    case model::Event::Kind::ToolChange:
+        return Kind::ToolChange;
+    case model::Event::Kind::Joint:
+        return Kind::JointWarning;
     }
     return Kind::Status;
 }
@@ -52,7 +56,7 @@ QString JournalEvent::kindName(Kind kind) {
     case Kind::Connection:
         return model::Event::kindName(model::Event::Kind::Connection);
     case Kind::ToolChange:
-        return QStringLiteral("tool change");
+        return model::Event::kindName(model::Event::Kind::ToolChange);
     case Kind::ProfileApply:
         return QStringLiteral("profile apply");
     case Kind::ContextChange:

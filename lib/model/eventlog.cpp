@@ -28,6 +28,10 @@ QString Event::kindName(Kind kind) {
         return QStringLiteral("communication");
     case Kind::Connection:
         return QStringLiteral("connection");
+    case Kind::ToolChange:
+        return QStringLiteral("tool change");
+    case Kind::Joint:
+        return QStringLiteral("joint");
     }
     return {};
 }
@@ -50,6 +54,10 @@ QString Event::kindTitle(Kind kind) {
         return Tr::tr("Communication");
     case Kind::Connection:
         return Tr::tr("Connection");
+    case Kind::ToolChange:
+        return Tr::tr("Tool change");
+    case Kind::Joint:
+        return Tr::tr("Joint");
     }
     return {};
 }

@@ -27,7 +27,10 @@ struct Event {
         Status,
         Write,
         Communication,
-        Connection
+        Connection,
+        ToolChange,
+        // A joint outside its limits, or a tip that recovers more slowly than it did new.
+        Joint
     };
     enum class Severity { Info, Warning, Error };
 

@@ -44,6 +44,7 @@ Session::Session(const protocol::Catalog &catalog, QObject *parent)
     , m_joints(m_telemetry) {
     m_log.setClock([this] { return sampleTimeMs(); });
     connect(&m_joints, &JointWatcher::jointEnded, this, &Session::warnOfJoint);
+    connect(&m_joints, &JointWatcher::tipWearing, this, &Session::noticeWear);
     m_stateText = Tr::tr("disconnected");
 }
 
@@ -73,13 +74,21 @@ void Session::setState(State s, const QString &text) {
 }
 
 void Session::warnOfJoint(const JointRecord &joint) {
-    const QString text =
-        JointWatcher::warningText(joint, m_joints.limits(joint.device, joint.port));
+    logJointWarning(
+        joint.device, joint.port,
+        JointWatcher::warningText(joint, m_joints.rules().limitsFor(joint.port, joint.tool)));
+}
+
+void Session::noticeWear(const TipWear::Notice &notice) {
+    logJointWarning(notice.device, notice.port, TipWear::noticeText(notice));
+}
+
+void Session::logJointWarning(const DeviceIdentity &device, int port, const QString &text) {
     if (text.isEmpty())
         return;
     for (DeviceModel *d : std::as_const(m_devices))
-        if (d->identity() == joint.device)
-            d->logEvent(Event::Kind::Alarm, Event::Severity::Warning, joint.port, text);
+        if (d->identity() == device)
+            d->logEvent(Event::Kind::Joint, Event::Severity::Warning, port, text);
 }
 
 void Session::clearDevices() {

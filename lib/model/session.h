@@ -68,8 +68,8 @@ public:
     [[nodiscard]] PollScheduler &scheduler() { return m_scheduler; }
     [[nodiscard]] EventLog &eventLog() { return m_log; }
     [[nodiscard]] Telemetry &telemetry() { return m_telemetry; }
-    // The joints of every station's ports, found live; one outside its limits is also a warning
-    // in the event log.
+    // The joints of every station's ports, found live; one outside its limits, and a tip that
+    // wears, is also a warning in the event log (kind Joint).
     [[nodiscard]] JointWatcher &joints() { return m_joints; }
 
     [[nodiscard]] TemperatureUnit temperatureUnit() const { return m_unit; }
@@ -92,6 +92,8 @@ private:
     void identify(std::optional<int> address);
     void clearDevices();
     void warnOfJoint(const JointRecord &joint);
+    void noticeWear(const TipWear::Notice &notice);
+    void logJointWarning(const DeviceIdentity &device, int port, const QString &text);
     [[nodiscard]] QString connectedText() const;
     [[nodiscard]] qint64 sampleTimeMs() const;
 

@@ -94,7 +94,8 @@ QString StationModel::saveToMemory() {
 
 void StationModel::onParameterChanged(Parameter *p) {
     const Role role = p->meta().role;
-    if (role == Role::Error || role == Role::Alarm || role == Role::Status)
+    if (role == Role::Error || role == Role::Alarm || role == Role::Status ||
+        role == Role::ConnectedTool)
         logChange(p, p->spec().port);
 }
 
@@ -110,7 +111,11 @@ void StationModel::logChange(Parameter *p, int port) {
     if (before == *v && !first)
         return;
     const Role role = p->meta().role;
-    if (role == Role::Status) {
+    if (role == Role::ConnectedTool) {
+        if (!first)
+            logEvent(Event::Kind::ToolChange, Event::Severity::Info, port,
+                     Tr::tr("%1 → %2").arg(toolName(int(before)), toolName(int(*v))));
+    } else if (role == Role::Status) {
         if (!first)
             logEvent(Event::Kind::Status, Event::Severity::Info, port,
                      Tr::tr("%1 → %2").arg(PortStatus::fromNumber(before).text(),

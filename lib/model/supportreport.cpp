@@ -87,6 +87,39 @@ QString deviceHeading(const QJsonObject &d) {
         heading += Tr::tr(", software %1").arg(software);
     return heading;
 }
+
+// "Joints from … to …:", then one line per port with its counts by verdict and its recovery times.
+QString jointStatisticsText(const QJsonObject &joints) {
+    if (joints.contains(QStringLiteral("error")))
+        return Tr::tr("Joints of the last 24 hours: not read: %1")
+            .arg(joints.value(QStringLiteral("error")).toString());
+    QStringList out{Tr::tr("Joints from %1 to %2:")
+                        .arg(joints.value(QStringLiteral("since")).toString(),
+                             joints.value(QStringLiteral("until")).toString())};
+    const QJsonArray ports = joints.value(QStringLiteral("ports")).toArray();
+    if (ports.isEmpty())
+        out << Tr::tr("  none");
+    for (const QJsonValue &pv : ports) {
+        const QJsonObject p = pv.toObject();
+        const auto count = [&p](const QString &name) {
+            return QString::number(p.value(name).toInteger());
+        };
+        QString line =
+            Tr::tr("  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, "
+                   "%7 incomplete")
+                .arg(p.value(QStringLiteral("device")).toString())
+                .arg(p.value(QStringLiteral("port")).toInt())
+                .arg(count(QStringLiteral("joints")), count(QStringLiteral("ok")),
+                     count(QStringLiteral("slow recovery")), count(QStringLiteral("too deep")),
+                     count(QStringLiteral("incomplete")));
+        if (p.contains(QStringLiteral("recoveryMedianMs")))
+            line += Tr::tr("; recovery median %1 ms, 95th percentile %2 ms")
+                        .arg(count(QStringLiteral("recoveryMedianMs")),
+                             count(QStringLiteral("recoveryP95Ms")));
+        out << line;
+    }
+    return out.join(QLatin1Char('\n'));
+}
 } // namespace
 
 QJsonObject supportReportJson(Session &session, int recentEvents) {
@@ -174,6 +207,8 @@ QString supportReportText(const QJsonObject &r) {
         }
         out << QString();
     }
+    if (r.contains(QStringLiteral("joints")))
+        out << jointStatisticsText(r.value(QStringLiteral("joints")).toObject()) << QString();
     out << Tr::tr("Recent events:");
     for (const QJsonValue &ev : r.value(QStringLiteral("events")).toArray()) {
         const QJsonObject e = ev.toObject();
@@ -189,8 +224,8 @@ QString supportReportText(const QJsonObject &r) {
     return out.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }
 
-protocol::Outcome<QStringList> writeSupportReport(Session &session, const QString &folder) {
-    const QJsonObject report = supportReportJson(session);
+protocol::Outcome<QStringList> writeSupportReport(const QJsonObject &report,
+                                                  const QString &folder) {
     const QString stem = QDir(folder).filePath(
         QStringLiteral("tipscope-report-%1")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));

@@ -1,7 +1,8 @@
 // The support report: one action writes what support staff need into two files, JSON for
 // machines and text for people: TipScope's version, the line and its statistics, each device's
 // identity and software version, every value it reported (settings, counters, errors), and the
-// recent event log. Nothing is read from the devices for it: it shows what TipScope knew.
+// recent event log, and (when the caller adds them under "joints") the joint statistics of the
+// last 24 hours. Nothing is read from the devices for it: it shows what TipScope knew.
 #pragma once
 
 #include "protocol/outcome.h"
@@ -16,8 +17,9 @@ class Session;
 
 [[nodiscard]] QJsonObject supportReportJson(Session &session, int recentEvents = 500);
 [[nodiscard]] QString supportReportText(const QJsonObject &report);
-// Writes tipscope-report-<date>.json and .txt into `folder`; returns their paths, or why not.
-[[nodiscard]] protocol::Outcome<QStringList> writeSupportReport(Session &session,
+// Writes tipscope-report-<date>.json and .txt of `report` into `folder`; returns their paths,
+// or why not.
+[[nodiscard]] protocol::Outcome<QStringList> writeSupportReport(const QJsonObject &report,
                                                                 const QString &folder);
 
 } // namespace tipscope::model

@@ -95,7 +95,9 @@ QLayout *EventHistoryPanel::buildFilters() {
         {Event::Kind::Status, tr("Status changes")},
         {Event::Kind::Write, tr("Writes")},
         {Event::Kind::Communication, tr("Communication")},
-        {Event::Kind::Connection, tr("Connection")}};
+        {Event::Kind::Connection, tr("Connection")},
+        {Event::Kind::ToolChange, tr("Tool changes")},
+        {Event::Kind::Joint, tr("Joints")}};
     for (const auto &[kind, name] : kinds)
         m_kindFilter->addItem(name, eventKindBit(kind));
     m_deviceFilter = new QComboBox(this);

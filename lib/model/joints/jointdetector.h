@@ -33,6 +33,13 @@ struct JointLimits {
     int bandK = 5;               // within this of the setpoint the tip counts as recovered
     qint64 maxRecoveryMs = 5000; // slower is SlowRecovery
     int maxDipK = 80;            // deeper is TooDeep
+    // A tool's recent recoveries slower than its first ones by more than this share: tip wear.
+    double wearShare = 0.3;
+
+    friend bool operator==(const JointLimits &a, const JointLimits &b) {
+        return a.bandK == b.bandK && a.maxRecoveryMs == b.maxRecoveryMs && a.maxDipK == b.maxDipK &&
+               a.wearShare == b.wearShare;
+    }
 };
 
 // One reading of a port, in wire units (°C, %); tip empty when the read got no answer.

@@ -31,8 +31,9 @@ void JointWatcher::watch(StationModel *station,
         const TelemetryKey key = keyOf(port->number());
         const TelemetryBuffer *buffer = m_telemetry.buffer(key);
         const qint64 from = buffer && !buffer->isEmpty() ? buffer->lastTime() + 1 : 0;
-        m_watched.insert_or_assign(
-            key, Watched{station, port, JointDetector(station->identity(), port->number()), from});
+        m_watched.insert_or_assign(key, Watched{station, port,
+                                                JointDetector(station->identity(), port->number()),
+                                                from, port->toolName()});
     }
 }
 
@@ -45,19 +46,6 @@ void JointWatcher::unwatch(DeviceModel *device) {
         emitIfEnded(it->second.detector.gap(it->second.fedUntilMs));
         it = m_watched.erase(it);
     }
-}
-
-void JointWatcher::setLimits(const DeviceIdentity &device, int port, const JointLimits &limits) {
-    for (auto &[key, w] : m_watched)
-        if (w.station && w.station->identity() == device && w.port->number() == port)
-            w.detector.setLimits(limits);
-}
-
-JointLimits JointWatcher::limits(const DeviceIdentity &device, int port) const {
-    for (const auto &[key, w] : m_watched)
-        if (w.station && w.station->identity() == device && w.port->number() == port)
-            return w.detector.limits();
-    return {};
 }
 
 void JointWatcher::onSamplesAdded(const QList<TelemetryKey> &keys) {
@@ -89,6 +77,10 @@ void JointWatcher::feed(Watched &w, const TelemetryBuffer &buffer) {
     QList<TelemetryGap> gaps = buffer.gaps().within(from, to);
     qsizetype nextGap = 0;
     const QString tool = w.port->toolName();
+    if (tool != w.tool)
+        m_wear.toolChanged(w.port->station().identity(), w.port->number());
+    w.tool = tool;
+    w.detector.setLimits(m_rules.limitsFor(w.port->number(), tool));
     for (qsizetype i = 0; i < tips.size(); ++i) {
         const qint64 t = tips.at(i).timeMs;
         while (nextGap < gaps.size() && gaps.at(nextGap).startMs <= t)
@@ -106,8 +98,12 @@ void JointWatcher::feed(Watched &w, const TelemetryBuffer &buffer) {
 }
 
 void JointWatcher::emitIfEnded(const std::optional<JointRecord> &joint) {
-    if (joint)
-        Q_EMIT jointEnded(*joint);
+    if (!joint)
+        return;
+    Q_EMIT jointEnded(*joint);
+    const double share = m_rules.limitsFor(joint->port, joint->tool).wearShare;
+    if (const auto notice = m_wear.add(*joint, share))
+        Q_EMIT tipWearing(*notice);
 }
 
 QString JointWatcher::warningText(const JointRecord &joint, const JointLimits &limits) {

@@ -5,12 +5,16 @@
 // new ones are fed to it in time order with the port's tool of the moment; a recorded gap in the
 // history (line down, no answer, disconnected) reaches it as a gap, so no joint is measured
 // across one. unwatch() ends a joint in progress as incomplete. Every joint that ends is
-// jointEnded(); the limits are per port (setLimits()), the defaults JointLimits{}.
+// jointEnded(), judged by the limits the rules give for its port and tool (setRules()). Each
+// recovered joint also counts towards its tip's wear (TipWear); a tip that has become slower is
+// tipWearing(), once per tool plugged in (a change of the port's tool starts it afresh).
 //
 // It reads the same samples the charts draw, so what it measures is what a person sees.
 #pragma once
 
 #include "model/joints/jointdetector.h"
+#include "model/joints/jointlimitrules.h"
+#include "model/joints/tipwear.h"
 #include "model/stationmodel.h"
 #include "model/telemetry/telemetry.h"
 
@@ -28,8 +32,8 @@ public:
     // Watches every port of `station`, whose histories are under `keyOf(station, port)`.
     void watch(StationModel *station, const std::function<TelemetryKey(int port)> &keyOf);
     void unwatch(DeviceModel *device);
-    void setLimits(const DeviceIdentity &device, int port, const JointLimits &limits);
-    [[nodiscard]] JointLimits limits(const DeviceIdentity &device, int port) const;
+    void setRules(const JointLimitRules &rules) { m_rules = rules; }
+    [[nodiscard]] const JointLimitRules &rules() const { return m_rules; }
 
     // A joint's limits broken, in words for the event log ("port 1 joint: recovery 4.2 s,
     // limit 3.0 s"); empty for a joint within them or not judged.
@@ -37,6 +41,7 @@ public:
 
 Q_SIGNALS:
     void jointEnded(const tipscope::model::JointRecord &joint);
+    void tipWearing(const tipscope::model::TipWear::Notice &notice);
 
 private:
     struct Watched {
@@ -44,6 +49,7 @@ private:
         PortModel *port = nullptr;
         JointDetector detector;
         qint64 fedUntilMs = 0; // samples up to here are fed
+        QString tool;          // the port's tool when it was last fed
     };
 
     void onSamplesAdded(const QList<TelemetryKey> &keys);
@@ -52,6 +58,8 @@ private:
 
     Telemetry &m_telemetry;
     std::map<TelemetryKey, Watched> m_watched;
+    JointLimitRules m_rules;
+    TipWear m_wear;
 };
 
 } // namespace tipscope::model

@@ -53,11 +53,13 @@ void TestJointWatcher::theDemoStationsJointsAreFoundMeasuredAndJudged() {
     QVERIFY2(first.dipDepth > 5, qPrintable(QString::number(first.dipDepth)));
     QVERIFY(first.powerPeak > 0 && first.powerIntegral > 0);
 
-    // A limit the demo's joints break: the next one is judged slow and logged as a warning.
-    JointLimits strict;
-    strict.maxRecoveryMs = 1;
-    session.joints().setLimits(station->identity(), 1, strict);
-    QCOMPARE(session.joints().limits(station->identity(), 1).maxRecoveryMs, 1);
+    // A limit for port 1's tool that the demo's joints break, beside a looser one for the port:
+    // the tool's rule is the more specific, so the next joint is judged slow and logged.
+    JointLimitRules rules;
+    rules.add({1, {}, 60'000, std::nullopt, std::nullopt});
+    rules.add({1, first.tool.toLower(), 1, std::nullopt, std::nullopt});
+    session.joints().setRules(rules);
+    QCOMPARE(session.joints().rules().limitsFor(1, first.tool).maxRecoveryMs, 1);
     const qsizetype before = joints.size();
     QTRY_VERIFY_WITH_TIMEOUT(joints.size() > before, kTwoJointsMs);
     const auto slow = joints.last().first().value<JointRecord>();
@@ -69,6 +71,7 @@ void TestJointWatcher::theDemoStationsJointsAreFoundMeasuredAndJudged() {
     QVERIFY(warning != events.cend());
     QCOMPARE(warning->port, 1);
     QCOMPARE(warning->severity, Event::Severity::Warning);
+    QCOMPARE(warning->kind, Event::Kind::Joint);
 }
 
 QTEST_GUILESS_MAIN(TestJointWatcher)

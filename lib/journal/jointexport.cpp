@@ -1,0 +1,90 @@
+#include "jointexport.h"
+
+#include <QDateTime>
+#include <QJsonArray>
+#include <QStringList>
+
+namespace tipscope::journal {
+
+namespace {
+const QStringList kFields = {QStringLiteral("ts"),
+                             QStringLiteral("end"),
+                             QStringLiteral("id"),
+                             QStringLiteral("device"),
+                             QStringLiteral("line"),
+                             QStringLiteral("address"),
+                             QStringLiteral("model"),
+                             QStringLiteral("software"),
+                             QStringLiteral("port"),
+                             QStringLiteral("tool"),
+                             QStringLiteral("setpoint_c"),
+                             QStringLiteral("lowest_c"),
+                             QStringLiteral("dip_k"),
+                             QStringLiteral("recovery_ms"),
+                             QStringLiteral("duration_ms"),
+                             QStringLiteral("power_peak_pct"),
+                             QStringLiteral("power_integral_pct_s"),
+                             QStringLiteral("verdict"),
+                             QStringLiteral("work_order"),
+                             QStringLiteral("board_serial"),
+                             QStringLiteral("operator")};
+
+QString csvField(const QJsonValue &value) {
+    QString text;
+    if (value.isDouble())
+        text = QString::number(value.toDouble(), 'g', 12);
+    else if (value.isString())
+        text = value.toString();
+    if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"')) ||
+        text.contains(QLatin1Char('\n')))
+        text = QLatin1Char('"') + QString(text).replace(QLatin1Char('"'), QStringLiteral("\"\"")) +
+               QLatin1Char('"');
+    return text;
+}
+} // namespace
+
+QString utcText(qint64 msSinceEpoch) {
+    return QDateTime::fromMSecsSinceEpoch(msSinceEpoch, Qt::UTC).toString(Qt::ISODateWithMs);
+}
+
+QJsonObject jointJson(const StoredJoint &stored) {
+    const model::JointRecord &j = stored.record;
+    const auto optional = [](const auto &v) { return v ? QJsonValue(double(*v)) : QJsonValue(); };
+    return {{kFields[0], utcText(j.startMs)},
+            {kFields[1], utcText(j.endMs)},
+            {kFields[2], stored.uid.toString(QUuid::WithoutBraces)},
+            {kFields[3], j.device.key()},
+            {kFields[4], j.device.line},
+            {kFields[5], j.device.address ? QJsonValue(QStringLiteral("%1").arg(
+                                                *j.device.address, 2, 10, QLatin1Char('0')))
+                                          : QJsonValue()},
+            {kFields[6], j.device.model},
+            {kFields[7], j.device.softwareVersion},
+            {kFields[8], j.port},
+            {kFields[9], j.tool},
+            {kFields[10], j.setpoint},
+            {kFields[11], j.lowestTip},
+            {kFields[12], j.dipDepth},
+            {kFields[13], optional(j.recoveryMs)},
+            {kFields[14], double(j.durationMs)},
+            {kFields[15], j.powerPeak},
+            {kFields[16], j.powerIntegral},
+            {kFields[17], model::jointVerdictName(j.verdict)},
+            {kFields[18], stored.context.workOrder},
+            {kFields[19], stored.context.boardSerial},
+            {kFields[20], stored.context.operatorName}};
+}
+
+QString jointCsvHeader() {
+    return kFields.join(QLatin1Char(','));
+}
+
+QString jointCsvRow(const StoredJoint &joint) {
+    const QJsonObject o = jointJson(joint);
+    QStringList cells;
+    for (const QString &field : kFields)
+        cells.append(csvField(o.value(field)));
+    return cells.join(QLatin1Char(','));
+}
+
+} // namespace tipscope::journal

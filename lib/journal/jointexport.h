@@ -1,0 +1,22 @@
+// A stored joint as other programs read it: one JSON object (the CLI's --json, and the payload
+// MQTT subscribers get) and one CSV row. Field names carry their units; times are UTC in ISO 8601
+// with milliseconds. The same names in both forms:
+//     ts, end, id, device, line, address, model, software, port, tool, setpoint_c, lowest_c,
+//     dip_k, recovery_ms, duration_ms, power_peak_pct, power_integral_pct_s, verdict,
+//     work_order, board_serial, operator
+// A joint that never recovered has an empty recovery_ms (null in JSON).
+#pragma once
+
+#include "journaltypes.h"
+
+#include <QJsonObject>
+
+namespace tipscope::journal {
+
+[[nodiscard]] QJsonObject jointJson(const StoredJoint &joint);
+[[nodiscard]] QString jointCsvHeader();
+[[nodiscard]] QString jointCsvRow(const StoredJoint &joint);
+// "2026-12-02T09:41:03.120Z"
+[[nodiscard]] QString utcText(qint64 msSinceEpoch);
+
+} // namespace tipscope::journal

@@ -1,0 +1,102 @@
+#include "workcontextfile.h"
+
+#include "model/io/atomicsave.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace tipscope::journal {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(WorkContextFile)
+};
+
+using protocol::failure;
+using protocol::Outcome;
+
+const QString kWorkOrder = QStringLiteral("work_order");
+const QString kSerial = QStringLiteral("board_serial");
+const QString kOperator = QStringLiteral("operator");
+constexpr qint64 kMaxBytes = 64 * 1024;
+} // namespace
+
+QString workContextPathFor(const QString &journalPath) {
+    const QString journal = journalPath.isEmpty() ? Journal::defaultPath() : journalPath;
+    return QFileInfo(journal).dir().filePath(QStringLiteral("context.json"));
+}
+
+Outcome<model::WorkContext> readWorkContext(const QString &path) {
+    QFile file(path);
+    if (!file.exists())
+        return model::WorkContext{};
+    if (!file.open(QIODevice::ReadOnly))
+        return failure(Tr::tr("cannot read the work context %1: %2").arg(path, file.errorString()));
+    if (file.size() > kMaxBytes)
+        return failure(Tr::tr("the work context %1 is too big to be one").arg(path));
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
+    if (!doc.isObject())
+        return failure(
+            Tr::tr("the work context %1 is not a JSON object: %2").arg(path, error.errorString()));
+    const QJsonObject o = doc.object();
+    for (const QString &key : {kWorkOrder, kSerial, kOperator})
+        if (o.contains(key) && !o.value(key).isString())
+            return failure(Tr::tr("the work context %1: %2 must be text").arg(path, key));
+    return model::WorkContext{o.value(kWorkOrder).toString().trimmed(),
+                              o.value(kSerial).toString().trimmed(),
+                              o.value(kOperator).toString().trimmed()};
+}
+
+Outcome<void> writeWorkContext(const QString &path, const model::WorkContext &context) {
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    const QJsonObject o{{kWorkOrder, context.workOrder},
+                        {kSerial, context.boardSerial},
+                        {kOperator, context.operatorName}};
+    return model::io::saveAtomically(path, QJsonDocument(o).toJson(QJsonDocument::Indented));
+}
+
+WorkContextFollower::WorkContextFollower(Journal &journal, const QString &path, QObject *parent)
+    : QObject(parent)
+    , m_journal(journal)
+    , m_path(QFileInfo(path).absoluteFilePath()) {
+    QDir().mkpath(QFileInfo(m_path).absolutePath());
+    connect(&m_watcher, &QFileSystemWatcher::fileChanged, this, &WorkContextFollower::reread);
+    connect(&m_watcher, &QFileSystemWatcher::directoryChanged, this, &WorkContextFollower::reread);
+    watch();
+    reread();
+}
+
+Outcome<void> WorkContextFollower::set(const model::WorkContext &context) {
+    const auto saved = writeWorkContext(m_path, context);
+    if (saved)
+        reread();
+    return saved;
+}
+
+void WorkContextFollower::watch() {
+    const QString dir = QFileInfo(m_path).absolutePath();
+    if (!m_watcher.directories().contains(dir))
+        m_watcher.addPath(dir);
+    if (QFile::exists(m_path) && !m_watcher.files().contains(m_path))
+        m_watcher.addPath(m_path);
+}
+
+void WorkContextFollower::reread() {
+    watch(); // an atomic save replaced the file the watcher followed
+    const auto context = readWorkContext(m_path);
+    if (!context) {
+        Q_EMIT unreadable(context.error());
+        return;
+    }
+    if (context.value() == m_journal.context())
+        return;
+    m_journal.setContext(context.value());
+    Q_EMIT contextChanged(context.value());
+}
+
+} // namespace tipscope::journal

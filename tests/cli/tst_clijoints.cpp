@@ -1,0 +1,143 @@
+// The joints from the command line, end to end with the real binary: monitor finds the demo
+// station's joints, judges them by the shared limits and --limit, keeps them in the journal with
+// the work context; `joints` lists them afterwards, filtered, as text, CSV and JSON.
+#include "programrun.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace tipscope::testing;
+
+namespace {
+ProgramRun runCli(const QStringList &args, const QByteArray &input = {}) {
+    QProcess p;
+    p.start(binaryPath(QStringLiteral("tipscope-cli")), args);
+    if (!input.isEmpty())
+        p.write(input);
+    p.closeWriteChannel();
+    return finishProcess(p, 60000);
+}
+
+QStringList dataLines(const QString &out) {
+    return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+}
+} // namespace
+
+class TestCliJoints : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void monitorKeepsJudgedJointsThatJointsListsAfterwards();
+    void theContextIsReadFromStandardInputAndABadLineChangesNothing();
+    void limitsAreSetAndShownAndABadRuleIsRefused();
+    void aMissingJournalIsAClearError();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_journal;
+};
+
+void TestCliJoints::initTestCase() {
+    QVERIFY(m_dir.isValid());
+    m_journal = m_dir.filePath(QStringLiteral("journal.sqlite"));
+}
+
+void TestCliJoints::monitorKeepsJudgedJointsThatJointsListsAfterwards() {
+    const ProgramRun context = runCli({"context", "set", "--work-order", "WO-7", "--serial",
+                                       "SN-42", "--operator", "ana", "--journal", m_journal});
+    QCOMPARE(context.exitCode, 0);
+    // The demo's joints recover in about 1.6 s: a 0.5 s limit for port 1 judges them slow.
+    const ProgramRun monitor =
+        runCli({"--demo-activity", "monitor", "--interval", "100", "--duration", "16", "--limit",
+                "port=1,recovery=0.5", "--journal", m_journal});
+    QVERIFY2(monitor.exitCode == 0, qPrintable(monitor.err));
+    const QStringList jointLines = dataLines(monitor.out).filter(QStringLiteral("  joint P1 "));
+    QVERIFY2(!jointLines.isEmpty(), qPrintable(monitor.out.right(2000)));
+    QVERIFY2(jointLines.first().endsWith(QStringLiteral(" slow recovery")),
+             qPrintable(jointLines.first()));
+
+    const ProgramRun csv = runCli({"joints", "--csv", "--journal", m_journal});
+    QCOMPARE(csv.exitCode, 0);
+    const QStringList rows = dataLines(csv.out);
+    QCOMPARE(rows.size(), jointLines.size() + 1);
+    QVERIFY(rows.first().startsWith(QStringLiteral("ts,end,id,device,")));
+    QVERIFY2(rows.at(1).contains(QStringLiteral(",1,T210,350,")), qPrintable(rows.at(1)));
+    QVERIFY2(rows.at(1).endsWith(QStringLiteral(",slow recovery,WO-7,SN-42,ana")),
+             qPrintable(rows.at(1)));
+
+    const ProgramRun json = runCli({"joints", "--json", "--journal", m_journal});
+    const QJsonArray joints = QJsonDocument::fromJson(json.out.toUtf8()).array();
+    QCOMPARE(joints.size(), jointLines.size());
+    const QJsonObject first = joints.first().toObject();
+    QCOMPARE(first.value(QStringLiteral("model")).toString(), QStringLiteral("DME-2C"));
+    QCOMPARE(first.value(QStringLiteral("port")).toInt(), 1);
+    QVERIFY(first.value(QStringLiteral("recovery_ms")).toDouble() > 500);
+    QVERIFY(first.value(QStringLiteral("ts")).toString().endsWith(QLatin1Char('Z')));
+
+    const auto count = [this](const QStringList &filter) {
+        const ProgramRun r = runCli(QStringList{"joints", "--journal", m_journal} + filter);
+        return r.exitCode == 0 ? dataLines(r.out).size() : -1;
+    };
+    QCOMPARE(count({"--verdict", "slow-recovery", "--port", "1", "--device", "DME-2C"}),
+             jointLines.size());
+    QCOMPARE(count({"--since", "1h", "--work-order", "WO-7"}), jointLines.size());
+    QCOMPARE(count({"--verdict", "ok"}), 0);
+    QCOMPARE(count({"--port", "2"}), 0);
+    QCOMPARE(count({"--since", "2099-01-01"}), 0);
+    QCOMPARE(count({"--work-order", "WO-8"}), 0);
+
+    const ProgramRun badTime = runCli({"joints", "--since", "yesterday", "--journal", m_journal});
+    QCOMPARE(badTime.exitCode, 1);
+    QVERIFY2(badTime.err.contains(QStringLiteral("'yesterday' is not a time")),
+             qPrintable(badTime.err));
+    const ProgramRun badDevice = runCli({"joints", "--device", "HDE", "--journal", m_journal});
+    QCOMPARE(badDevice.exitCode, 1);
+    QVERIFY2(badDevice.err.contains(QStringLiteral("no device 'HDE'")), qPrintable(badDevice.err));
+}
+
+void TestCliJoints::theContextIsReadFromStandardInputAndABadLineChangesNothing() {
+    const QString journal = m_dir.filePath(QStringLiteral("stdin/journal.sqlite"));
+    const ProgramRun set = runCli({"context", "set", "--stdin", "--journal", journal},
+                                  "# from the MES\nwork_order=WO-9\nboard_serial=SN-1\n");
+    QCOMPARE(set.exitCode, 0);
+    QCOMPARE(dataLines(set.out),
+             QStringList({"work_order=WO-9", "board_serial=SN-1", "operator="}));
+    const ProgramRun bad =
+        runCli({"context", "set", "--stdin", "--journal", journal}, "work_order=WO-10\nshift=2\n");
+    QCOMPARE(bad.exitCode, 1);
+    QVERIFY2(bad.err.contains(QStringLiteral("'shift=2' is not a context line")),
+             qPrintable(bad.err));
+    const ProgramRun shown = runCli({"context", "--journal", journal});
+    QCOMPARE(dataLines(shown.out).first(), QStringLiteral("work_order=WO-9"));
+    QCOMPARE(runCli({"context", "clear", "--journal", journal}).exitCode, 0);
+    QCOMPARE(dataLines(runCli({"context", "--journal", journal}).out).first(),
+             QStringLiteral("work_order="));
+}
+
+void TestCliJoints::limitsAreSetAndShownAndABadRuleIsRefused() {
+    QCOMPARE(runCli({"limits", "set", "tool=C245,recovery=3.5,dip=60"}).exitCode, 0);
+    const ProgramRun shown = runCli({"limits"});
+    QCOMPARE(shown.exitCode, 0);
+    QVERIFY2(shown.out.contains(QStringLiteral("rule tool=C245,recovery=3.5,dip=60")),
+             qPrintable(shown.out));
+    const ProgramRun bad = runCli({"limits", "set", "port=7,recovery=2"});
+    QCOMPARE(bad.exitCode, 2);
+    QVERIFY2(bad.err.contains(QStringLiteral("a port is a number from 1 to 4")),
+             qPrintable(bad.err));
+    QCOMPARE(runCli({"limits"}).out, shown.out);
+    QCOMPARE(runCli({"limits", "clear"}).exitCode, 0);
+    QVERIFY(!runCli({"limits"}).out.contains(QStringLiteral("rule ")));
+}
+
+void TestCliJoints::aMissingJournalIsAClearError() {
+    const QString missing = m_dir.filePath(QStringLiteral("none/journal.sqlite"));
+    const ProgramRun r = runCli({"joints", "--journal", missing});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(missing), qPrintable(r.err));
+}
+
+QTEST_GUILESS_MAIN(TestCliJoints)
+#include "tst_clijoints.moc"

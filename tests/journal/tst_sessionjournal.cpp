@@ -1,0 +1,115 @@
+// A session kept in a journal: the demo station at work through the real session and a real
+// SQLite file. Its joints and events are there after the session is gone, stamped with the work
+// context another program wrote to the context file.
+#include "journal/journalreader.h"
+#include "journal/sessionjournal.h"
+#include "journal/workcontextfile.h"
+
+#include "sim/demoactivity.h"
+
+#include "demosession.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace tipscope;
+using namespace tipscope::journal;
+
+namespace {
+constexpr int kJointMs =
+    sim::DemoActivity::kJointOffsetMs + sim::DemoActivity::kJointEveryMs + 10'000;
+} // namespace
+
+class TestSessionJournal : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void jointsAndEventsOfASessionAreKeptWithTheWorkContext();
+    void aWorkContextFileThatCannotBeReadIsReportedAndChangesNothing();
+};
+
+void TestSessionJournal::jointsAndEventsOfASessionAreKeptWithTheWorkContext() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+    const QString contextPath = dir.filePath(QStringLiteral("context.json"));
+    model::DeviceIdentity station;
+    model::JointRecord seen;
+    const model::WorkContext context{QStringLiteral("WO-7"), QStringLiteral("SN-42"),
+                                     QStringLiteral("ana")};
+    {
+        Journal journal(path);
+        WorkContextFollower follower(journal, contextPath);
+        QSignalSpy contextChanged(&follower, &WorkContextFollower::contextChanged);
+        QVERIFY(contextChanged.isValid());
+        // Another program (tipscope-cli context set, a script) writes the file.
+        QVERIFY(writeWorkContext(contextPath, context));
+        QTRY_COMPARE_WITH_TIMEOUT(journal.context(), context, 10000);
+
+        model::Session session;
+        SessionJournal kept(session, journal);
+        QSignalSpy joints(&session.joints(), &model::JointWatcher::jointEnded);
+        QVERIFY(joints.isValid());
+        model::Session::Settings settings = testing::unpacedDemoSettings();
+        settings.demoActivity = true;
+        session.connectTo(settings);
+        QTRY_VERIFY_WITH_TIMEOUT(session.station(), 30000);
+        station = session.station()->identity();
+        QTRY_VERIFY_WITH_TIMEOUT(!joints.isEmpty(), kJointMs);
+        seen = joints.first().first().value<model::JointRecord>();
+        session.disconnectFromLine();
+        QVERIFY(journal.flush());
+    }
+
+    JournalReader reader;
+    QVERIFY(reader.open(path));
+    const auto stored = reader.joints({});
+    QVERIFY2(stored, qPrintable(stored.error()));
+    QVERIFY(!stored.value().isEmpty());
+    const StoredJoint &last = stored.value().last(); // newest first: the oldest is the first seen
+    QCOMPARE(last.record, seen);
+    QCOMPARE(last.context, context);
+    QVERIFY(!last.uid.isNull());
+
+    EventFilter connections;
+    connections.kinds = {JournalEvent::Kind::Connection};
+    const auto events = reader.events(connections);
+    QVERIFY2(events, qPrintable(events.error()));
+    const bool stationConnected =
+        std::any_of(events.value().cbegin(), events.value().cend(),
+                    [&](const StoredEvent &e) { return e.record.device == station; });
+    QVERIFY(stationConnected);
+    QCOMPARE(events.value().first().context, context);
+
+    EventFilter changes;
+    changes.kinds = {JournalEvent::Kind::ContextChange};
+    const auto contextEvents = reader.events(changes);
+    QVERIFY2(contextEvents, qPrintable(contextEvents.error()));
+    QCOMPARE(contextEvents.value().size(), 1);
+}
+
+void TestSessionJournal::aWorkContextFileThatCannotBeReadIsReportedAndChangesNothing() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString contextPath = dir.filePath(QStringLiteral("context.json"));
+    Journal journal(dir.filePath(QStringLiteral("journal.sqlite")));
+    WorkContextFollower follower(journal, contextPath);
+    QSignalSpy unreadable(&follower, &WorkContextFollower::unreadable);
+    QVERIFY(unreadable.isValid());
+    const model::WorkContext context{QStringLiteral("WO-1"), {}, {}};
+    QVERIFY(follower.set(context));
+    QCOMPARE(journal.context(), context);
+
+    QFile file(contextPath);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write("{\"work_order\": 7");
+    file.close();
+    QTRY_VERIFY_WITH_TIMEOUT(!unreadable.isEmpty(), 10000);
+    QVERIFY2(unreadable.last().first().toString().contains(QStringLiteral("not a JSON object")),
+             qPrintable(unreadable.last().first().toString()));
+    QCOMPARE(journal.context(), context);
+    QVERIFY(journal.flush());
+}
+
+QTEST_GUILESS_MAIN(TestSessionJournal)
+#include "tst_sessionjournal.moc"
