@@ -52,6 +52,7 @@ public:
     // The work order the journal stamps live joints with, so the table shows it before the
     // journal has them.
     void setWorkOrder(const QString &workOrder) { m_workOrder = workOrder; }
+    [[nodiscard]] QString workOrder() const { return m_workOrder; }
 
     // The filter the widgets say (with the time range from now), as the journal takes it.
     [[nodiscard]] journal::JointFilter filter() const;
