@@ -2595,6 +2595,109 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>JointTableModel</name>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="155"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
+        <source>ok</source>
+        <translation>in Ordnung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
+        <source>slow recovery</source>
+        <translation>langsame Erholung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
+        <source>too deep</source>
+        <translation>zu tief</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="167"/>
+        <source>incomplete</source>
+        <translation>unvollständig</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="193"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="199"/>
+        <source>%1 %·s</source>
+        <translation>%1 %·s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
+        <source>Setpoint</source>
+        <translation>Sollwert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
+        <source>Lowest</source>
+        <translation>Tiefstwert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
+        <source>Dip</source>
+        <translation>Einbruch</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
+        <source>Recovery</source>
+        <translation>Erholung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
+        <source>Power peak</source>
+        <translation>Leistungsspitze</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <source>Power·time</source>
+        <translation>Leistung·Zeit</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
+        <source>Verdict</source>
+        <translation>Bewertung</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="236"/>
+        <source>Work order</source>
+        <translation>Auftrag</translation>
+    </message>
+</context>
+<context>
     <name>JointWatcher</name>
     <message>
         <location filename="../lib/model/joints/jointwatcher.cpp" line="112"/>
@@ -4188,37 +4291,42 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="53"/>
         <source>Open recording</source>
         <translation>Aufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="63"/>
         <source>Reading %1: %2 MB</source>
         <translation>Lese %1: %2 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="70"/>
         <source>Reading %1…</source>
         <translation>Lese %1 …</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="117"/>
+        <source>The charts hold no readings of %1 at %2: only this session&apos;s readings are kept.</source>
+        <translation>Die Diagramme enthalten keine Messwerte von %1 um %2: nur die Messwerte dieser Sitzung werden behalten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="127"/>
         <source>Open a chart recording</source>
         <translation>Diagrammaufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="129"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>CSV-Datei (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
         <source>Replay</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
         <source>Cannot replay %1</source>
         <translation>%1 kann nicht wiedergegeben werden</translation>
     </message>
@@ -5649,6 +5757,165 @@ Zurücksetzen?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JointsPage</name>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
+        <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
+        <translation>Doppelklick auf eine Lötstelle oder Eingabetaste zeigt sie auf der Seite Diagramme</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="130"/>
+        <source>All devices</source>
+        <translation>Alle Geräte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="132"/>
+        <source>All ports</source>
+        <translation>Alle Ports</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="134"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <source>all tools</source>
+        <translation>alle Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
+        <source>All verdicts</source>
+        <translation>Alle Bewertungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <source>Last hour</source>
+        <translation>Letzte Stunde</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <source>Last 24 hours</source>
+        <translation>Letzte 24 Stunden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <source>Last 7 days</source>
+        <translation>Letzte 7 Tage</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <source>Last 30 days</source>
+        <translation>Letzte 30 Tage</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <source>All times</source>
+        <translation>Gesamte Zeit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <source>all work orders</source>
+        <translation>alle Aufträge</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <source>Reload</source>
+        <translation>Neu laden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <source>Read the journal again</source>
+        <translation>Das Journal neu lesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
+        <source>Export CSV…</source>
+        <translation>CSV exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <source>Save the listed joints as a CSV file</source>
+        <translation>Die aufgeführten Lötstellen als CSV-Datei speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <source>Verdict</source>
+        <translation>Bewertung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <source>Work order</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
+        <source>%n joint(s) listed.</source>
+        <translation>
+            <numerusform>%n Lötstelle aufgeführt.</numerusform>
+            <numerusform>%n Lötstellen aufgeführt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="259"/>
+        <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
+        <translation>Nur die neuesten %1 aus dem Journal: schränken Sie den Filter ein, um ältere zu sehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="263"/>
+        <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
+        <translation>Das Journal konnte nicht gelesen werden (%1): nur die Lötstellen dieser Sitzung sind aufgeführt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="267"/>
+        <source>No journal yet: this session&apos;s joints only.</source>
+        <translation>Noch kein Journal: nur die Lötstellen dieser Sitzung.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
+        <source>%n joint(s) written to %1.</source>
+        <translation>
+            <numerusform>%n Lötstelle in %1 geschrieben.</numerusform>
+            <numerusform>%n Lötstellen in %1 geschrieben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <source>Export joints</source>
+        <translation>Lötstellen exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <source>CSV file (*.csv)</source>
+        <translation>CSV-Datei (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.h" line="48"/>
+        <source>Joints</source>
+        <translation>Lötstellen</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::JournalStatusButton</name>
     <message>
         <location filename="../app/gui/journalstatusbutton.cpp" line="11"/>
@@ -5727,88 +5994,88 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="44"/>
+        <location filename="../app/gui/mainwindow.cpp" line="45"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="98"/>
+        <location filename="../app/gui/mainwindow.cpp" line="112"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="99"/>
+        <location filename="../app/gui/mainwindow.cpp" line="113"/>
         <source>Work &amp;context…</source>
         <translation>Arbeits&amp;kontext…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="103"/>
+        <location filename="../app/gui/mainwindow.cpp" line="117"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="105"/>
+        <location filename="../app/gui/mainwindow.cpp" line="119"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="106"/>
+        <location filename="../app/gui/mainwindow.cpp" line="120"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="107"/>
+        <location filename="../app/gui/mainwindow.cpp" line="121"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="112"/>
+        <location filename="../app/gui/mainwindow.cpp" line="126"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Lötstellen-Grenzwerte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <location filename="../app/gui/mainwindow.cpp" line="127"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="114"/>
+        <location filename="../app/gui/mainwindow.cpp" line="128"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="116"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="117"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="191"/>
+        <location filename="../app/gui/mainwindow.cpp" line="205"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="196"/>
+        <location filename="../app/gui/mainwindow.cpp" line="210"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="201"/>
+        <location filename="../app/gui/mainwindow.cpp" line="215"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="210"/>
-        <location filename="../app/gui/mainwindow.cpp" line="213"/>
+        <location filename="../app/gui/mainwindow.cpp" line="224"/>
+        <location filename="../app/gui/mainwindow.cpp" line="227"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="214"/>
+        <location filename="../app/gui/mainwindow.cpp" line="228"/>
         <source>Written:
 %1
 
@@ -5819,12 +6086,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="222"/>
+        <location filename="../app/gui/mainwindow.cpp" line="236"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="223"/>
+        <location filename="../app/gui/mainwindow.cpp" line="237"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
@@ -5832,87 +6099,87 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="119"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
         <source>family %1</source>
         <translation>Familie %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="127"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
         <source>transformer %1</source>
         <translation>Transformator %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="138"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="139"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="144"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Stationsfehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
         <source>feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
         <source>fed %1</source>
         <translation>vorgeschoben %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="154"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
         <source>speed %1</source>
         <translation>Geschwindigkeit %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.h" line="24"/>
+        <location filename="../app/gui/pages/overviewpage.h" line="28"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
         <source>not connected, as last read</source>
         <translation>nicht verbunden, wie zuletzt gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="185"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: noch nichts gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="187"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt um %1 gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="179"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="191"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>Nur-Beobachten ist an: die Robotersteuerung ist aus.</translation>
     </message>
@@ -5983,118 +6250,128 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
         <source>Tip temperature, port %1</source>
         <translation>Spitzentemperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="63"/>
         <source>Power, port %1</source>
         <translation>Leistung, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="79"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
         <source>Work</source>
         <translation>Arbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="80"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="86"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="81"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="87"/>
         <source>Cool</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="82"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="88"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="83"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="91"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="95"/>
         <source>New selected temperature, port %1</source>
         <translation>Neue eingestellte Temperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="90"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="198"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="195"/>
+        <source>no recovery</source>
+        <translation>keine Erholung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="197"/>
+        <source>last joint %1, %2</source>
+        <translation>letzte Lötstelle %1, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="224"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="199"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="225"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="200"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="226"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="202"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="254"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="206"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="232"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="208"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="234"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="240"/>
-        <location filename="../app/gui/pages/portcard.cpp" line="243"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="269"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Fehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="248"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="274"/>
         <source>status: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="250"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="276"/>
         <source>alarm: %1</source>
         <translation>Alarm: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="218"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
         <source>Not connected: last read %1</source>
         <translation>Nicht verbunden: zuletzt gelesen %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="220"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
         <source>Not connected: not read yet</source>
         <translation>Nicht verbunden: noch nicht gelesen</translation>
     </message>
@@ -6317,6 +6594,59 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="174"/>
         <source>The table shows what the profile would change.</source>
         <translation>Die Tabelle zeigt, was das Profil ändern würde.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RecoveryHistogramView</name>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="57"/>
+        <source>Histogram of recovery times</source>
+        <translation>Histogramm der Erholzeiten</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="70"/>
+        <source>Recovery time of %n joint(s)</source>
+        <translation>
+            <numerusform>Erholzeit von %n Lötstelle</numerusform>
+            <numerusform>Erholzeit von %n Lötstellen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="73"/>
+        <source>%1 (%n did not recover)</source>
+        <translation>
+            <numerusform>%1 (%n nicht erholt)</numerusform>
+            <numerusform>%1 (%n nicht erholt)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="86"/>
+        <source>No recovered joints listed</source>
+        <translation>Keine erholten Lötstellen aufgeführt</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RecoveryTrendView</name>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="117"/>
+        <source>Daily median recovery time per tool</source>
+        <translation>Täglicher Median der Erholzeit je Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="130"/>
+        <source>Median recovery time per day</source>
+        <translation>Median der Erholzeit je Tag</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="131"/>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="171"/>
+        <source>Median recovery time per day:</source>
+        <translation>Median der Erholzeit je Tag:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="145"/>
+        <source>No recovered joints listed</source>
+        <translation>Keine erholten Lötstellen aufgeführt</translation>
     </message>
 </context>
 <context>

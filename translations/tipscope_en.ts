@@ -158,6 +158,25 @@
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JointsPage</name>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
+        <source>%n joint(s) listed.</source>
+        <translation>
+            <numerusform>%n joint listed.</numerusform>
+            <numerusform>%n joints listed.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
+        <source>%n joint(s) written to %1.</source>
+        <translation>
+            <numerusform>%n joint written to %1.</numerusform>
+            <numerusform>%n joints written to %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::ProfileDialog</name>
     <message numerus="yes">
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="185"/>
@@ -181,6 +200,25 @@
         <translation>
             <numerusform>%n setting of the profile skipped: this device does not take it.</numerusform>
             <numerusform>%n settings of the profile skipped: this device does not take them.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RecoveryHistogramView</name>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="70"/>
+        <source>Recovery time of %n joint(s)</source>
+        <translation>
+            <numerusform>Recovery time of %n joint</numerusform>
+            <numerusform>Recovery time of %n joints</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="73"/>
+        <source>%1 (%n did not recover)</source>
+        <translation>
+            <numerusform>%1 (%n did not recover)</numerusform>
+            <numerusform>%1 (%n did not recover)</numerusform>
         </translation>
     </message>
 </context>

@@ -2596,6 +2596,109 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>JointTableModel</name>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="155"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
+        <source>ok</source>
+        <translation>correcta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
+        <source>slow recovery</source>
+        <translation>recuperación lenta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
+        <source>too deep</source>
+        <translation>demasiado profunda</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="167"/>
+        <source>incomplete</source>
+        <translation>incompleta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="193"/>
+        <source>none</source>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="199"/>
+        <source>%1 %·s</source>
+        <translation>%1 %·s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
+        <source>Time</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
+        <source>Device</source>
+        <translation>Equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
+        <source>Setpoint</source>
+        <translation>Consigna</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
+        <source>Lowest</source>
+        <translation>Mínima</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
+        <source>Dip</source>
+        <translation>Caída</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
+        <source>Recovery</source>
+        <translation>Recuperación</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
+        <source>Duration</source>
+        <translation>Duración</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
+        <source>Power peak</source>
+        <translation>Potencia máx.</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <source>Power·time</source>
+        <translation>Potencia·tiempo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
+        <source>Verdict</source>
+        <translation>Veredicto</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="236"/>
+        <source>Work order</source>
+        <translation>Orden de trabajo</translation>
+    </message>
+</context>
+<context>
     <name>JointWatcher</name>
     <message>
         <location filename="../lib/model/joints/jointwatcher.cpp" line="112"/>
@@ -4189,37 +4292,42 @@ Hágalo permanente con esta regla de udev:
         <translation>No se puede grabar: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="50"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="53"/>
         <source>Open recording</source>
         <translation>Abrir grabación</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="60"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="63"/>
         <source>Reading %1: %2 MB</source>
         <translation>Leyendo %1: %2 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="67"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="70"/>
         <source>Reading %1…</source>
         <translation>Leyendo %1…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="105"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="117"/>
+        <source>The charts hold no readings of %1 at %2: only this session&apos;s readings are kept.</source>
+        <translation>Los gráficos no tienen lecturas de %1 a las %2: solo se guardan las lecturas de esta sesión.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="127"/>
         <source>Open a chart recording</source>
         <translation>Abrir una grabación de gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="107"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="129"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>Archivo CSV (*.csv);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
         <source>Replay</source>
         <translation>Reproducción</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
         <source>Cannot replay %1</source>
         <translation>No se puede reproducir %1</translation>
     </message>
@@ -5650,6 +5758,165 @@ Reset it?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::JointsPage</name>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
+        <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
+        <translation>Doble clic en una soldadura, o Intro, para verla en la página Gráficos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="130"/>
+        <source>All devices</source>
+        <translation>Todos los equipos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="132"/>
+        <source>All ports</source>
+        <translation>Todos los puertos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="134"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <source>all tools</source>
+        <translation>todas las herramientas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
+        <source>All verdicts</source>
+        <translation>Todos los veredictos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <source>Last hour</source>
+        <translation>Última hora</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <source>Last 24 hours</source>
+        <translation>Últimas 24 horas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <source>Last 7 days</source>
+        <translation>Últimos 7 días</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <source>Last 30 days</source>
+        <translation>Últimos 30 días</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <source>All times</source>
+        <translation>Todo el tiempo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <source>all work orders</source>
+        <translation>todas las órdenes</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <source>Reload</source>
+        <translation>Recargar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <source>Read the journal again</source>
+        <translation>Volver a leer el registro</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
+        <source>Export CSV…</source>
+        <translation>Exportar CSV…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <source>Save the listed joints as a CSV file</source>
+        <translation>Guardar las soldaduras de la lista como archivo CSV</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <source>Device</source>
+        <translation>Equipo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <source>Verdict</source>
+        <translation>Veredicto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <source>Time</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <source>Work order</source>
+        <translation>Orden de trabajo</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
+        <source>%n joint(s) listed.</source>
+        <translation>
+            <numerusform>%n soldadura en la lista.</numerusform>
+            <numerusform>%n soldaduras en la lista.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="259"/>
+        <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
+        <translation>Solo las %1 más recientes del registro: acote el filtro para ver las anteriores.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="263"/>
+        <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
+        <translation>No se pudo leer el registro (%1): solo se listan las soldaduras de esta sesión.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="267"/>
+        <source>No journal yet: this session&apos;s joints only.</source>
+        <translation>Aún no hay registro: solo las soldaduras de esta sesión.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
+        <source>%n joint(s) written to %1.</source>
+        <translation>
+            <numerusform>%n soldadura escrita en %1.</numerusform>
+            <numerusform>%n soldaduras escritas en %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <source>Export joints</source>
+        <translation>Exportar soldaduras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <source>CSV file (*.csv)</source>
+        <translation>Archivo CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointspage.h" line="48"/>
+        <source>Joints</source>
+        <translation>Soldaduras</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::JournalStatusButton</name>
     <message>
         <location filename="../app/gui/journalstatusbutton.cpp" line="11"/>
@@ -5728,88 +5995,88 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="44"/>
+        <location filename="../app/gui/mainwindow.cpp" line="45"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="98"/>
+        <location filename="../app/gui/mainwindow.cpp" line="112"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="99"/>
+        <location filename="../app/gui/mainwindow.cpp" line="113"/>
         <source>Work &amp;context…</source>
         <translation>&amp;Contexto de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="103"/>
+        <location filename="../app/gui/mainwindow.cpp" line="117"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="105"/>
+        <location filename="../app/gui/mainwindow.cpp" line="119"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="106"/>
+        <location filename="../app/gui/mainwindow.cpp" line="120"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="107"/>
+        <location filename="../app/gui/mainwindow.cpp" line="121"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="112"/>
+        <location filename="../app/gui/mainwindow.cpp" line="126"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Límites de soldadura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <location filename="../app/gui/mainwindow.cpp" line="127"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="114"/>
+        <location filename="../app/gui/mainwindow.cpp" line="128"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="116"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="117"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="191"/>
+        <location filename="../app/gui/mainwindow.cpp" line="205"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="196"/>
+        <location filename="../app/gui/mainwindow.cpp" line="210"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="201"/>
+        <location filename="../app/gui/mainwindow.cpp" line="215"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="210"/>
-        <location filename="../app/gui/mainwindow.cpp" line="213"/>
+        <location filename="../app/gui/mainwindow.cpp" line="224"/>
+        <location filename="../app/gui/mainwindow.cpp" line="227"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="214"/>
+        <location filename="../app/gui/mainwindow.cpp" line="228"/>
         <source>Written:
 %1
 
@@ -5820,12 +6087,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="222"/>
+        <location filename="../app/gui/mainwindow.cpp" line="236"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="223"/>
+        <location filename="../app/gui/mainwindow.cpp" line="237"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
@@ -5833,87 +6100,87 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="119"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="126"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
         <source>family %1</source>
         <translation>familia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="127"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="128"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="130"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
         <source>transformer %1</source>
         <translation>transformador %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="138"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="139"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="144"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Error de estación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="150"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
         <source>idle</source>
         <translation>en espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="152"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
         <source>fed %1</source>
         <translation>alimentado %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="154"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
         <source>speed %1</source>
         <translation>velocidad %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.h" line="24"/>
+        <location filename="../app/gui/pages/overviewpage.h" line="28"/>
         <source>Overview</source>
         <translation>Vista general</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
         <source>not connected, as last read</source>
         <translation>no conectado, según la última lectura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="185"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: aún no se ha leído nada. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="175"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="187"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: los valores en gris son los de la última lectura a las %1. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="179"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="191"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>El modo solo monitorización está activo: los mandos del robot están desactivados.</translation>
     </message>
@@ -5984,118 +6251,128 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="45"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="51"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
         <source>Tip temperature, port %1</source>
         <translation>Temperatura de la punta, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="63"/>
         <source>Power, port %1</source>
         <translation>Potencia, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="79"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
         <source>Work</source>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="80"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="86"/>
         <source>Stand</source>
         <translation>Soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="81"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="87"/>
         <source>Cool</source>
         <translation>Enfriar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="82"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="88"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: calentar a la temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="83"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: soporte; el reposo y la hibernación siguen tras sus retardos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="91"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: enfriamiento (extractor en espera)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="95"/>
         <source>New selected temperature, port %1</source>
         <translation>Nueva temperatura seleccionada, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="90"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
         <source>Set</source>
         <translation>Fijar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="198"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="195"/>
+        <source>no recovery</source>
+        <translation>sin recuperación</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="197"/>
+        <source>last joint %1, %2</source>
+        <translation>última soldadura %1, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/portcard.cpp" line="224"/>
         <source>Port %1 — %2</source>
         <translation>Puerto %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="199"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="225"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="200"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="226"/>
         <source>set %1</source>
         <translation>consigna %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="202"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
         <source>power %1</source>
         <translation>potencia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="254"/>
         <source>status unknown</source>
         <translation>estado desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="206"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="232"/>
         <source>transistor %1</source>
         <translation>transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="208"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="234"/>
         <source>%1 until the next mode</source>
         <translation>%1 hasta el siguiente modo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="240"/>
-        <location filename="../app/gui/pages/portcard.cpp" line="243"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="269"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="248"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="274"/>
         <source>status: %1</source>
         <translation>estado: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="250"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="276"/>
         <source>alarm: %1</source>
         <translation>alarma: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="218"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
         <source>Not connected: last read %1</source>
         <translation>No conectado: última lectura %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="220"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
         <source>Not connected: not read yet</source>
         <translation>No conectado: aún sin leer</translation>
     </message>
@@ -6318,6 +6595,59 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="174"/>
         <source>The table shows what the profile would change.</source>
         <translation>La tabla muestra lo que el perfil cambiaría.</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RecoveryHistogramView</name>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="57"/>
+        <source>Histogram of recovery times</source>
+        <translation>Histograma de tiempos de recuperación</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="70"/>
+        <source>Recovery time of %n joint(s)</source>
+        <translation>
+            <numerusform>Recuperación de %n soldadura</numerusform>
+            <numerusform>Recuperación de %n soldaduras</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pages/jointcharts.cpp" line="73"/>
+        <source>%1 (%n did not recover)</source>
+        <translation>
+            <numerusform>%1 (%n sin recuperar)</numerusform>
+            <numerusform>%1 (%n sin recuperar)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="86"/>
+        <source>No recovered joints listed</source>
+        <translation>Ninguna soldadura recuperada en la lista</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RecoveryTrendView</name>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="117"/>
+        <source>Daily median recovery time per tool</source>
+        <translation>Mediana diaria de recuperación por herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="130"/>
+        <source>Median recovery time per day</source>
+        <translation>Mediana de recuperación por día</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="131"/>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="171"/>
+        <source>Median recovery time per day:</source>
+        <translation>Mediana de recuperación por día:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/jointcharts.cpp" line="145"/>
+        <source>No recovered joints listed</source>
+        <translation>Ninguna soldadura recuperada en la lista</translation>
     </message>
 </context>
 <context>

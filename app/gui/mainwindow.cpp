@@ -9,6 +9,7 @@
 
 #include "journal/jointstatistics.h"
 #include "linkstatuslabel.h"
+#include "pages/jointspage.h"
 #include "pages/pagefactory.h"
 
 #include "model/joints/jointlimitsfile.h"
@@ -49,8 +50,11 @@ MainWindow::MainWindow(QWidget *parent)
     m_tabs = new QTabWidget(this);
     m_tabs->setDocumentMode(true);
     m_pages = createPages(m_session, m_tabs);
-    for (Page *p : std::as_const(m_pages))
+    for (Page *p : std::as_const(m_pages)) {
         m_tabs->addTab(p, p->title());
+        if (auto *joints = qobject_cast<JointsPage *>(p))
+            connectJointsPage(*joints);
+    }
     m_splitter = new QSplitter(this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
     m_splitter->addWidget(m_tree);
@@ -93,6 +97,16 @@ MainWindow::MainWindow(QWidget *parent)
 }
 
 MainWindow::~MainWindow() = default;
+
+// The Joints page reads this window's journal, stamps live joints with its work order until the
+// journal has them, and brings the Charts page forward for a joint.
+void MainWindow::connectJointsPage(JointsPage &joints) {
+    joints.setJournalPath(m_journal.path());
+    joints.setWorkOrder(m_journal.context().workOrder);
+    connect(&m_context, &journal::WorkContextFollower::contextChanged, &joints,
+            [&joints](const WorkContext &context) { joints.setWorkOrder(context.workOrder); });
+    connect(&joints, &JointsPage::chartsShown, m_tabs, &QTabWidget::setCurrentWidget);
+}
 
 void MainWindow::buildMenus() {
     QMenu *file = menuBar()->addMenu(tr("&File"));

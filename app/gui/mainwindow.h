@@ -24,6 +24,7 @@ namespace tipscope::gui {
 class ConnectionBar;
 class DeviceTree;
 class LinkStatusLabel;
+class JointsPage;
 class Page;
 
 class MainWindow : public QMainWindow {
@@ -51,6 +52,7 @@ protected:
 
 private:
     void buildMenus();
+    void connectJointsPage(JointsPage &joints);
     void applyPreferences(const model::AppSettings &settings);
     void onSelection(model::DeviceModel *device, int port);
     void onTabChanged(int index);

@@ -2,6 +2,7 @@
 #include "connectionbar.h"
 #include "devicetree.h"
 #include "mainwindow.h"
+#include "pages/jointspage.h"
 #include "pages/overviewpage.h"
 #include "pages/portcard.h"
 #include "pages/settingspage.h"
@@ -34,6 +35,7 @@ private Q_SLOTS:
     void unplugShowsRetryingAndRecovers();
     void badConnectionSettingsAreRefusedWithAReason();
     void germanDeviceTreeLabelsAreShownWholeAt1280();
+    void theJointsPageReadsTheWindowsJournalAndFollowsItsWorkOrder();
 
 private:
     void connectDemo(MainWindow &w);
@@ -162,6 +164,19 @@ void TestMainWindow::badConnectionSettingsAreRefusedWithAReason() {
 
 // German device labels are long ("SFR-A, Adresse 10 (Lotdrahtvorschub)") and so are some tools'
 // names: at 1280 px each label is shown whole, on as many lines as it takes, and is its tooltip.
+void TestMainWindow::theJointsPageReadsTheWindowsJournalAndFollowsItsWorkOrder() {
+    MainWindow w;
+    auto *joints = qobject_cast<JointsPage *>(w.page(QStringLiteral("Joints")));
+    QVERIFY(joints);
+    QCOMPARE(joints->journalPath(), w.journal().path());
+    const QString before = w.journal().context().workOrder;
+    QCOMPARE(joints->workOrder(), before);
+    const QString next = before + QStringLiteral("-next");
+    QVERIFY(w.workContext().set(WorkContext{next, {}, {}}).ok());
+    QTRY_COMPARE(joints->workOrder(), next);
+    QVERIFY(w.workContext().set(WorkContext{before, {}, {}}).ok());
+}
+
 void TestMainWindow::germanDeviceTreeLabelsAreShownWholeAt1280() {
     QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), QStringLiteral("de")),
              QStringLiteral("de"));

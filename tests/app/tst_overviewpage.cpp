@@ -8,6 +8,7 @@
 #include "widgets/sparkline.h"
 
 #include "link/simtransport.h"
+#include "sim/demoactivity.h"
 #include "sim/simline.h"
 
 #include "demosession.h"
@@ -44,6 +45,7 @@ private Q_SLOTS:
     void thePowerIsWrittenBesideItsBarNotOnTheFill();
     void aSetpointOutOfRangeIsRefusedNotClamped();
     void theTransformerTemperatureFollowsTheTemperatureUnit();
+    void eachCardShowsItsPortsLastJointAndStillFits();
 
 private:
     void connectDemo();
@@ -67,6 +69,27 @@ void TestOverviewPage::theTransformerTemperatureFollowsTheTemperatureUnit() {
                  !m_page->stationText().contains(QStringLiteral("°C")),
              qPrintable(m_page->stationText()));
     QVERIFY(m_page->card(1)->tipText().contains(QStringLiteral("°F")));
+}
+
+// The demo station makes a joint on port 1: its card says the recovery time and the verdict in
+// words, the other cards say nothing, and the four cards still fit without scrolling.
+void TestOverviewPage::eachCardShowsItsPortsLastJointAndStillFits() {
+    Session::Settings settings = tipscope::testing::unpacedDemoSettings();
+    settings.demoActivity = true;
+    m_session->connectTo(settings);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Connected, kConnectMs);
+    QVERIFY(m_page->card(4));
+    QTRY_VERIFY_WITH_TIMEOUT(!m_page->card(1)->jointText().isEmpty(),
+                             sim::DemoActivity::kJointOffsetMs + sim::DemoActivity::kJointEveryMs +
+                                 15'000);
+    const QString text = m_page->card(1)->jointText();
+    QVERIFY2(text.startsWith(QStringLiteral("last joint ")) &&
+                 text.endsWith(QStringLiteral(", ok")) && text.contains(QStringLiteral(" s")),
+             qPrintable(text));
+    QVERIFY(m_page->card(2)->jointText().isEmpty());
+    auto *scroll = m_page->findChild<QScrollArea *>();
+    QVERIFY(scroll);
+    QTRY_COMPARE(scroll->verticalScrollBar()->maximum(), 0);
 }
 
 void TestOverviewPage::init() {

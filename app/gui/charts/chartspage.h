@@ -99,6 +99,10 @@ public:
     [[nodiscard]] bool isLoadingReplay() const;
     void cancelReplayLoad();
     void showLive();
+    // The live charts around [fromMs, toMs] (a joint), with some time either side, paused there.
+    // The charts show every device; `device` is whose readings must cover the moment. Empty
+    // when shown, else why not (the session holds no readings of that device then).
+    QString showMoment(const model::DeviceIdentity &device, qint64 fromMs, qint64 toMs);
     [[nodiscard]] bool isReplay() const { return m_replay != nullptr; }
     // What the charts show: the session's telemetry live, the recording's in replay.
     [[nodiscard]] const model::Telemetry &shownTelemetry() const;

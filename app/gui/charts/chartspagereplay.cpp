@@ -1,10 +1,12 @@
 // ChartsPage's replay: a recording is read by a RecordingLoader on a thread of its own while the
 // page stays live; a progress dialog with Cancel shows after a moment if the reading takes
-// longer, and the recording replaces the live view only once it is read whole.
+// longer, and the recording replaces the live view only once it is read whole. showMoment()
+// leaves a replay for the live charts at a given moment (a joint picked on the Joints page).
 #include "chartspage.h"
 
 #include "model/recording/chartcsvreader.h"
 #include "model/recording/recordingloader.h"
+#include "model/timetext.h"
 
 #include <QFileDialog>
 #include <QFileInfo>
@@ -12,6 +14,7 @@
 #include <QProgressDialog>
 #include <QStandardPaths>
 #include <QTimer>
+#include <algorithm>
 
 namespace tipscope::gui {
 
@@ -98,6 +101,25 @@ void ChartsPage::showLive() {
     onSamplesAdded();
     m_viewport.reset();
     updateSourceLabel();
+}
+
+QString ChartsPage::showMoment(const DeviceIdentity &device, qint64 fromMs, qint64 toMs) {
+    if (isReplay())
+        showLive();
+    onSamplesAdded();
+    const bool covered =
+        std::any_of(m_liveChannels.cbegin(), m_liveChannels.cend(), [&](const ChartChannel &c) {
+            const TelemetryBuffer *b = m_session.telemetry().buffer(c.key);
+            return c.device == device && b && !b->isEmpty() && b->firstTime() <= toMs &&
+                   b->lastTime() >= fromMs;
+        });
+    if (!covered)
+        return tr("The charts hold no readings of %1 at %2: only this session's readings are kept.")
+            .arg(device.description(), clockText(QDateTime::fromMSecsSinceEpoch(fromMs)));
+    // Enough either side to see the tip before the joint and its recovery after it.
+    constexpr qint64 kAroundMs = 10'000;
+    m_viewport.showRange(fromMs - kAroundMs, toMs + kAroundMs);
+    return {};
 }
 
 void ChartsPage::chooseReplay() {

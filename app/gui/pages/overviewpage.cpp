@@ -56,6 +56,7 @@ OverviewPage::OverviewPage(Session &session, QWidget *parent)
     layout->addWidget(scroll, 1);
     layout->addWidget(m_feeder);
     connect(&session, &Session::devicesChanged, this, &OverviewPage::rebuild);
+    connect(&session.joints(), &JointWatcher::jointEnded, this, &OverviewPage::showJoint);
     connect(&session, &Session::monitorOnlyChanged, this, &OverviewPage::updateWritesAllowed);
     rebuild();
 }
@@ -81,6 +82,10 @@ void OverviewPage::rebuild() {
             m_grid->addWidget(card, i / columns, i % columns);
             m_grid->setRowStretch(i / columns, 1);
             m_cards.append(card);
+            const auto last = m_lastJoints.constFind(
+                QStringLiteral("%1|%2").arg(st->identity().key()).arg(port->number()));
+            if (last != m_lastJoints.cend())
+                card->showJoint(*last);
         }
         for (Role role : {Role::Error, Role::TransformerTemperature, Role::Fuse})
             if (Parameter *p = st->parameter(role))
@@ -159,6 +164,13 @@ void OverviewPage::refreshFeeder() {
         facts.append(tr("not connected, as last read"));
     m_feeder->setText(facts.join(QStringLiteral(" · ")));
     m_feeder->setEnabled(f->isLineUp());
+}
+
+void OverviewPage::showJoint(const JointRecord &joint) {
+    m_lastJoints.insert(QStringLiteral("%1|%2").arg(joint.device.key()).arg(joint.port), joint);
+    StationModel *st = m_session.station();
+    if (st && st->identity() == joint.device && joint.port >= 1 && joint.port <= m_cards.size())
+        m_cards.at(joint.port - 1)->showJoint(joint);
 }
 
 void OverviewPage::updateWritesAllowed() {

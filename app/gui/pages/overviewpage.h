@@ -4,10 +4,14 @@
 // port, so every port's live values are polled fast while it is open. The cards share the page's
 // height, so a larger window gives the sparklines the room. While the line is down everything is
 // greyed and a notice at the top says since when the values are old and why the controls are
-// off; in monitor-only mode it says that instead.
+// off; in monitor-only mode it says that instead. Each card shows its port's last joint.
 #pragma once
 
 #include "page.h"
+
+#include "model/joints/jointrecord.h"
+
+#include <QHash>
 
 class QGridLayout;
 class QLabel;
@@ -33,6 +37,7 @@ private:
     void refreshStation();
     void refreshFeeder();
     void updateWritesAllowed();
+    void showJoint(const model::JointRecord &joint);
 
     QLabel *m_notice;
     QLabel *m_station;
@@ -41,6 +46,7 @@ private:
     QGridLayout *m_grid;
     QWidget *m_cardsHost;
     QList<PortCard *> m_cards;
+    QHash<QString, model::JointRecord> m_lastJoints; // by device key and port, across rebuilds
 };
 
 } // namespace tipscope::gui

@@ -4,6 +4,7 @@
 #include "widgets/sparkline.h"
 #include "widgets/valuespinbox.h"
 
+#include "model/joints/jointtable.h"
 #include "model/stationmodel.h"
 
 #include <QHBoxLayout>
@@ -21,6 +22,8 @@ using protocol::Role;
 namespace {
 const QString kRed = QStringLiteral("#c01c28");
 const QString kAmber = QStringLiteral("#8a5a00");
+const QString kGreen = QStringLiteral("#26734d");
+const QString kBlue = QStringLiteral("#1c5ea8");
 constexpr int kLineSpacing = 2;
 constexpr int kMargin = 8;
 
@@ -46,6 +49,9 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
     m_values = new QWidget(this);
     m_title = new QLabel(m_values);
     m_title->setFont(scaled(m_title->font(), 1.2, true));
+    m_joint = new QLabel(m_values);
+    m_joint->setObjectName(QStringLiteral("lastJoint"));
+    m_joint->hide();
     m_tip = new QLabel(m_values);
     m_tip->setFont(scaled(m_tip->font(), 3.2, true));
     m_tip->setAccessibleName(tr("Tip temperature, port %1").arg(port.number()));
@@ -105,7 +111,11 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
     auto *values = new QVBoxLayout(m_values);
     values->setContentsMargins(0, 0, 0, 0);
     values->setSpacing(kLineSpacing);
-    values->addWidget(m_title);
+    // The last joint shares the title's line: the cards grow no taller for it.
+    auto *title = new QHBoxLayout;
+    title->addWidget(m_title, 1);
+    title->addWidget(m_joint, 0, Qt::AlignRight | Qt::AlignBottom);
+    values->addLayout(title);
     values->addLayout(temps);
     auto *power = new QHBoxLayout;
     power->addWidget(m_power, 1);
@@ -180,6 +190,22 @@ QString PortCard::staleText() {
     m_refresh->flush();
     return m_stale->isHidden() ? QString() : m_stale->text();
 }
+void PortCard::showJoint(const JointRecord &joint) {
+    const QString recovery =
+        joint.recoveryMs ? JointTableModel::secondsText(*joint.recoveryMs) : tr("no recovery");
+    const QString text =
+        tr("last joint %1, %2").arg(recovery, JointTableModel::verdictText(joint.verdict));
+    const Level level = jointLevel(joint.verdict);
+    const QString colour = level == Level::Ok ? kGreen : level == Level::Warning ? kAmber : kBlue;
+    m_joint->setText(coloured(colour, text));
+    m_joint->setAccessibleName(text);
+    m_joint->show();
+}
+
+QString PortCard::jointText() const {
+    return m_joint->isHidden() ? QString() : m_joint->accessibleName();
+}
+
 QString PortCard::powerText() const {
     return m_powerText->text();
 }

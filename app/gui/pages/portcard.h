@@ -3,7 +3,8 @@
 // cooling and suction), the tool, the transistor temperature, and any error or alarm in words,
 // and a sparkline of the last minute that takes the room the page has. Under it the robot's own
 // controls: work / stand / cool, and the selected temperature (a value out of range is refused
-// with the reason, never clamped).
+// with the reason, never clamped). Beside the title, the port's last joint: its recovery time
+// and verdict, in words and in the verdict's colour.
 //
 // A port in error says so in its status line, in red, and the whole card turns red (an alarm:
 // amber), so it cannot be read as working. While the line is down the card is greyed and says
@@ -20,6 +21,7 @@ class QProgressBar;
 class QPushButton;
 
 namespace tipscope::model {
+struct JointRecord;
 class PortModel;
 class Telemetry;
 } // namespace tipscope::model
@@ -46,6 +48,10 @@ public:
     [[nodiscard]] QString feedbackText() const;
     // The power as written beside its bar ("power 40.7 %").
     [[nodiscard]] QString powerText() const;
+    [[nodiscard]] model::PortModel *port() const { return m_port; }
+    // The port's last joint beside the title ("last joint 1.4 s, ok").
+    void showJoint(const model::JointRecord &joint);
+    [[nodiscard]] QString jointText() const;
     // The card's look: Error, Warning or Ok; Unknown while its values are stale.
     [[nodiscard]] model::Level look();
     [[nodiscard]] bool controlsEnabled() const;
@@ -64,6 +70,7 @@ private:
     QPointer<model::PortModel> m_port;
     DeferredRefresh *m_refresh = nullptr;
     QLabel *m_title;
+    QLabel *m_joint;
     QLabel *m_tip;
     QLabel *m_setpoint;
     QLabel *m_powerText = nullptr;

@@ -1,0 +1,278 @@
+#include "jointtable.h"
+
+#include "model/io/csv.h"
+#include "model/timetext.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QLocale>
+#include <algorithm>
+
+namespace tipscope::model {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(JointTableModel)
+};
+
+bool newerFirst(const JointRow &a, const JointRow &b) {
+    return a.joint.startMs > b.joint.startMs;
+}
+
+bool fahrenheit(TemperatureUnit unit) {
+    return unit == TemperatureUnit::Fahrenheit;
+}
+// A temperature, and a difference of temperatures (no 32), in the chosen unit.
+int shown(int celsius, TemperatureUnit unit) {
+    return fahrenheit(unit) ? qRound(celsius * 1.8 + 32) : celsius;
+}
+int shownDifference(int kelvin, TemperatureUnit unit) {
+    return fahrenheit(unit) ? qRound(kelvin * 1.8) : kelvin;
+}
+QString unitText(TemperatureUnit unit) {
+    return fahrenheit(unit) ? QStringLiteral("°F") : QStringLiteral("°C");
+}
+QString differenceUnitText(TemperatureUnit unit) {
+    return fahrenheit(unit) ? QStringLiteral("°F") : QStringLiteral("K");
+}
+// Short, as a table column has room for ("DME-2C (01)"); the tooltip has the whole description.
+QString deviceText(const DeviceIdentity &device) {
+    return device.address ? QStringLiteral("%1 (%2)")
+                                .arg(device.model)
+                                .arg(*device.address, 2, 10, QLatin1Char('0'))
+                          : device.model;
+}
+QString csvNumber(double value, int decimals) {
+    return QString::number(value, 'f', decimals);
+}
+} // namespace
+
+QString jointKey(const JointRecord &joint) {
+    return QStringLiteral("%1|%2|%3").arg(joint.device.key()).arg(joint.port).arg(joint.startMs);
+}
+
+Level jointLevel(JointVerdict verdict) {
+    switch (verdict) {
+    case JointVerdict::Ok:
+        return Level::Ok;
+    case JointVerdict::SlowRecovery:
+    case JointVerdict::TooDeep:
+        return Level::Warning;
+    case JointVerdict::Incomplete:
+        return Level::Info;
+    }
+    return Level::Unknown;
+}
+
+void JointTableModel::setTemperatureUnit(TemperatureUnit unit) {
+    if (unit == m_unit)
+        return;
+    m_unit = unit;
+    if (!m_rows.isEmpty())
+        Q_EMIT dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+    Q_EMIT headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
+}
+
+void JointTableModel::reset(QList<JointRow> rows) {
+    beginResetModel();
+    std::stable_sort(rows.begin(), rows.end(), newerFirst);
+    m_rows.clear();
+    m_keys.clear();
+    for (JointRow &r : rows) {
+        if (m_rows.size() >= kCapacity)
+            break;
+        const QString key = jointKey(r.joint);
+        if (m_keys.contains(key))
+            continue;
+        m_keys.insert(key);
+        m_rows.append(std::move(r));
+    }
+    endResetModel();
+}
+
+bool JointTableModel::add(const JointRow &row) {
+    const QString key = jointKey(row.joint);
+    if (m_keys.contains(key))
+        return false;
+    const auto at = std::upper_bound(m_rows.begin(), m_rows.end(), row, newerFirst);
+    const int position = int(at - m_rows.begin());
+    if (position >= kCapacity)
+        return false; // older than everything a full table keeps
+    beginInsertRows({}, position, position);
+    m_rows.insert(position, row);
+    m_keys.insert(key);
+    endInsertRows();
+    if (m_rows.size() > kCapacity) {
+        const int last = int(m_rows.size()) - 1;
+        beginRemoveRows({}, last, last);
+        m_keys.remove(jointKey(m_rows.takeLast().joint));
+        endRemoveRows();
+    }
+    return true;
+}
+
+bool JointTableModel::contains(const JointRecord &joint) const {
+    return m_keys.contains(jointKey(joint));
+}
+
+int JointTableModel::rowCount(const QModelIndex &parent) const {
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int JointTableModel::columnCount(const QModelIndex &parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant JointTableModel::data(const QModelIndex &index, int role) const {
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const JointRow &r = m_rows.at(index.row());
+    switch (role) {
+    case Qt::DisplayRole:
+        return text(r, index.column(), m_unit);
+    case Qt::ToolTipRole:
+        return index.column() == Device ? r.joint.device.description() : QVariant();
+    case Qt::TextAlignmentRole:
+        return index.column() >= Port && index.column() < Verdict && index.column() != Tool
+                   ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
+                   : QVariant();
+    case VerdictRole:
+        return int(r.joint.verdict);
+    case LevelRole:
+        return int(jointLevel(r.joint.verdict));
+    default:
+        return {};
+    }
+}
+
+QVariant JointTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    return columnName(section);
+}
+
+QString JointTableModel::secondsText(qint64 ms) {
+    return Tr::tr("%1 s").arg(QLocale().toString(ms / 1000.0, 'f', 1));
+}
+
+QString JointTableModel::verdictText(JointVerdict verdict) {
+    switch (verdict) {
+    case JointVerdict::Ok:
+        return Tr::tr("ok");
+    case JointVerdict::SlowRecovery:
+        return Tr::tr("slow recovery");
+    case JointVerdict::TooDeep:
+        return Tr::tr("too deep");
+    case JointVerdict::Incomplete:
+        return Tr::tr("incomplete");
+    }
+    return {};
+}
+
+QString JointTableModel::text(const JointRow &row, int column, TemperatureUnit unit) {
+    const JointRecord &j = row.joint;
+    const QLocale locale;
+    switch (column) {
+    case Time:
+        return clockText(QDateTime::fromMSecsSinceEpoch(j.startMs));
+    case Device:
+        return deviceText(j.device);
+    case Port:
+        return QString::number(j.port);
+    case Tool:
+        return j.tool;
+    case Setpoint:
+        return QStringLiteral("%1 %2").arg(shown(j.setpoint, unit)).arg(unitText(unit));
+    case Lowest:
+        return QStringLiteral("%1 %2").arg(shown(j.lowestTip, unit)).arg(unitText(unit));
+    case Dip:
+        return QStringLiteral("%1 %2")
+            .arg(shownDifference(j.dipDepth, unit))
+            .arg(differenceUnitText(unit));
+    case Recovery:
+        return j.recoveryMs ? secondsText(*j.recoveryMs) : Tr::tr("none");
+    case Duration:
+        return secondsText(j.durationMs);
+    case PowerPeak:
+        return QStringLiteral("%1 %").arg(j.powerPeak);
+    case PowerIntegral:
+        return Tr::tr("%1 %·s").arg(locale.toString(j.powerIntegral, 'f', 1));
+    case Verdict:
+        return verdictText(j.verdict);
+    case WorkOrder:
+        return row.workOrder;
+    default:
+        return {};
+    }
+}
+
+QString JointTableModel::columnName(int column) {
+    switch (column) {
+    case Time:
+        return Tr::tr("Time");
+    case Device:
+        return Tr::tr("Device");
+    case Port:
+        return Tr::tr("Port");
+    case Tool:
+        return Tr::tr("Tool");
+    case Setpoint:
+        return Tr::tr("Setpoint");
+    case Lowest:
+        return Tr::tr("Lowest");
+    case Dip:
+        return Tr::tr("Dip");
+    case Recovery:
+        return Tr::tr("Recovery");
+    case Duration:
+        return Tr::tr("Duration");
+    case PowerPeak:
+        return Tr::tr("Power peak");
+    case PowerIntegral:
+        return Tr::tr("Power·time");
+    case Verdict:
+        return Tr::tr("Verdict");
+    case WorkOrder:
+        return Tr::tr("Work order");
+    default:
+        return {};
+    }
+}
+
+QByteArray JointTableModel::csv() const {
+    const QString t = unitText(m_unit);
+    const QStringList header = {QStringLiteral("time"),
+                                QStringLiteral("device"),
+                                QStringLiteral("port"),
+                                QStringLiteral("tool"),
+                                QStringLiteral("setpoint [%1]").arg(t),
+                                QStringLiteral("lowest tip [%1]").arg(t),
+                                QStringLiteral("dip [%1]").arg(differenceUnitText(m_unit)),
+                                QStringLiteral("recovery [s]"),
+                                QStringLiteral("duration [s]"),
+                                QStringLiteral("power peak [%]"),
+                                QStringLiteral("power time [%·s]"),
+                                QStringLiteral("verdict"),
+                                QStringLiteral("work order")};
+    QByteArray out = header.join(QLatin1Char(',')).toUtf8() + '\n';
+    for (const JointRow &r : m_rows) {
+        const JointRecord &j = r.joint;
+        const QStringList cells = {isoTimeWithOffset(QDateTime::fromMSecsSinceEpoch(j.startMs)),
+                                   csv::quoted(j.device.key()),
+                                   QString::number(j.port),
+                                   csv::quoted(j.tool),
+                                   QString::number(shown(j.setpoint, m_unit)),
+                                   QString::number(shown(j.lowestTip, m_unit)),
+                                   QString::number(shownDifference(j.dipDepth, m_unit)),
+                                   j.recoveryMs ? csvNumber(*j.recoveryMs / 1000.0, 3) : QString(),
+                                   csvNumber(j.durationMs / 1000.0, 3),
+                                   QString::number(j.powerPeak),
+                                   csvNumber(j.powerIntegral, 2),
+                                   jointVerdictName(j.verdict),
+                                   csv::quoted(r.workOrder)};
+        out += cells.join(QLatin1Char(',')).toUtf8() + '\n';
+    }
+    return out;
+}
+
+} // namespace tipscope::model
