@@ -3189,12 +3189,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="307"/>
+        <location filename="../lib/model/parameter.cpp" line="308"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="321"/>
+        <location filename="../lib/model/parameter.cpp" line="325"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>

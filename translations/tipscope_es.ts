@@ -3190,12 +3190,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="307"/>
+        <location filename="../lib/model/parameter.cpp" line="308"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="321"/>
+        <location filename="../lib/model/parameter.cpp" line="325"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
