@@ -1660,32 +1660,32 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="114"/>
+        <location filename="../app/cli/climonitor.cpp" line="115"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="121"/>
+        <location filename="../app/cli/climonitor.cpp" line="122"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="133"/>
+        <location filename="../app/cli/climonitor.cpp" line="134"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="142"/>
+        <location filename="../app/cli/climonitor.cpp" line="143"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="180"/>
+        <location filename="../app/cli/climonitor.cpp" line="181"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="159"/>
+        <location filename="../app/cli/climonitor.cpp" line="160"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
     </message>
@@ -2700,17 +2700,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="112"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="111"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>Lötstelle zu tief: die Lötspitze fiel %1 K unter den Sollwert (Grenze %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="117"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>Lötstelle langsam erholt: %1 s (Grenze %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="119"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="118"/>
         <source>joint did not recover within %1 s</source>
         <translation>Lötstelle hat sich in %1 s nicht erholt</translation>
     </message>

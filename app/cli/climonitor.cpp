@@ -9,6 +9,7 @@
 
 #include "model/devicemodel.h"
 #include "model/joints/jointlimitsfile.h"
+#include "model/portmodel.h"
 
 #include "protocol/elide.h"
 #include "protocol/valuecodec.h"
@@ -38,7 +39,6 @@ struct PortReading {
 };
 
 const QList<Role> kLiveRoles = {Role::TipTemperature, Role::Setpoint, Role::Power, Role::Status};
-constexpr int kWorking = 0;          // the port's status at work
 constexpr int kToolEveryCycles = 10; // the tool rarely changes: read it now and then
 
 PortReading readPort(CliSession &s, const DeviceInfo &d, int port, int *worst) {
@@ -73,7 +73,8 @@ PortReading readPort(CliSession &s, const DeviceInfo &d, int port, int *worst) {
     r.joint.tip = int(numbers[0]);
     r.joint.setpoint = int(numbers[1]);
     r.joint.powerPct = double(numbers[2]) / 10;
-    r.joint.working = numbers[3] == kWorking;
+    r.joint.working =
+        model::PortStatus::fromNumber(numbers[3]).mode == model::PortStatus::Mode::Working;
     return r;
 }
 

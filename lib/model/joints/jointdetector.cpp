@@ -5,6 +5,11 @@
 namespace tipscope::model {
 
 namespace {
+// The station reports whole degrees: a reading of setpoint − band is a tip anywhere above
+// setpoint − band − 0.5, so that is where the continuous tip crosses the band's edge, and where
+// both crossings are interpolated (see docs/protocol-notes.md).
+constexpr double kWholeDegreeHalfStep = 0.5;
+
 // When the straight line from (t0, v0) to (t1, v1) crosses `level`.
 qint64 crossing(qint64 t0, double v0, qint64 t1, double v1, double level) {
     if (v1 == v0)
@@ -19,8 +24,8 @@ JointDetector::JointDetector(DeviceIdentity device, int port, JointLimits limits
     , m_port(port)
     , m_limits(limits) {}
 
-double JointDetector::bandEdge() const {
-    return double(m_last ? m_last->setpoint : 0) - m_limits.bandK;
+double JointDetector::bandEdge(int setpoint) const {
+    return double(setpoint) - m_limits.bandK - kWholeDegreeHalfStep;
 }
 
 bool JointDetector::sameConditions(const PortReading &reading) const {
@@ -59,8 +64,8 @@ std::optional<JointRecord> JointDetector::add(const PortReading &reading) {
     case State::InJoint:
         accumulate(reading);
         if (*reading.tip >= reading.setpoint - m_limits.bandK) {
-            const qint64 back =
-                crossing(m_last->timeMs, *m_last->tip, reading.timeMs, *reading.tip, bandEdge());
+            const qint64 back = crossing(m_last->timeMs, *m_last->tip, reading.timeMs, *reading.tip,
+                                         bandEdge(reading.setpoint));
             ended = finish(back, back, true);
             m_state = State::Settled;
             m_settledSinceMs = back;
@@ -91,7 +96,7 @@ void JointDetector::startJoint(const PortReading &previous, const PortReading &r
     m_joint.tool = reading.tool;
     m_joint.setpoint = reading.setpoint;
     m_joint.startMs = crossing(previous.timeMs, *previous.tip, reading.timeMs, *reading.tip,
-                               double(reading.setpoint - m_limits.bandK));
+                               bandEdge(reading.setpoint));
     m_joint.lowestTip = *previous.tip;
     m_joint.powerPeak = int(std::lround(previous.powerPct));
     accumulate(reading);

@@ -78,7 +78,7 @@ private:
     void accumulate(const PortReading &reading);
     [[nodiscard]] JointRecord finish(qint64 endMs, std::optional<qint64> recoveredAtMs,
                                      bool complete);
-    [[nodiscard]] double bandEdge() const;
+    [[nodiscard]] double bandEdge(int setpoint) const;
     [[nodiscard]] bool sameConditions(const PortReading &reading) const;
 
     DeviceIdentity m_device;

@@ -12,8 +12,6 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(JointWatcher)
 };
 
-constexpr int kWorking = 0; // the R-PSx status of a port at work
-
 QString seconds(qint64 ms) {
     return QLocale().toString(double(ms) / 1000, 'f', 1);
 }
@@ -90,7 +88,8 @@ void JointWatcher::feed(Watched &w, const TelemetryBuffer &buffer) {
         r.tip = tips.at(i).value;
         r.setpoint = setpoints.value(i).value;
         r.powerPct = powers.value(i).value * powerScale;
-        r.working = statuses.value(i).value == kWorking;
+        r.working =
+            PortStatus::fromNumber(statuses.value(i).value).mode == PortStatus::Mode::Working;
         r.tool = tool;
         emitIfEnded(w.detector.add(r));
     }
