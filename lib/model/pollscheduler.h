@@ -21,10 +21,10 @@
 // because a joint's start can be timed no finer than the last reading before it. Values that
 // rarely change are due kRestFactor times less often: a port's status among the live values, its
 // setpoint and its connected tool; so is a resting port's power, which is not needed to see a
-// joint begin. Errors and alarms keep their interval: a fault is never reported later for it. When the wire is full, the due live value
-// longest overdue for its own interval goes first, so each gets the wire in proportion to its
-// rate: a recovery is sampled finely while the resting ports keep their turns. Off, every value
-// keeps its class's interval and the earliest due goes first.
+// joint begin. Errors and alarms keep their interval: a fault is never reported later for it. When
+// the wire is full, the due live value longest overdue for its own interval goes first, so each
+// gets the wire in proportion to its rate: a recovery is sampled finely while the resting ports
+// keep their turns. Off, every value keeps its class's interval and the earliest due goes first.
 #pragma once
 
 #include "parameter.h"
