@@ -49,20 +49,26 @@ std::optional<QString> textFilter(const QLineEdit *edit) {
     return text.isEmpty() ? std::nullopt : std::optional<QString>(text);
 }
 
-// The joints and devices the journal holds; empty, else why it could not be read.
-QString readJournal(const QString &path, const journal::JointFilter &filter, QList<JointRow> &rows,
-                    QList<DeviceIdentity> &devices) {
+struct JournalJoints {
+    QList<JointRow> rows;
+    QList<DeviceIdentity> devices;
+};
+
+// The joints and devices the journal holds, or why it could not be read.
+protocol::Outcome<JournalJoints> readJournal(const QString &path,
+                                             const journal::JointFilter &filter) {
     journal::JournalReader reader;
     if (const auto opened = reader.open(path); !opened)
-        return opened.error();
+        return protocol::failure(opened.error());
     const auto stored = reader.joints(filter);
     if (!stored)
-        return stored.error();
+        return protocol::failure(stored.error());
+    JournalJoints out;
     for (const journal::StoredJoint &s : *stored)
-        rows.append({s.record, s.context.workOrder});
+        out.rows.append({s.record, s.context.workOrder});
     if (const auto known = reader.devices())
-        devices = *known;
-    return {};
+        out.devices = *known;
+    return out;
 }
 
 QLabel *labelFor(const QString &text, QWidget *buddy, QWidget *parent) {
@@ -236,8 +242,15 @@ void JointsPage::reload() {
     QList<DeviceIdentity> devices;
     QString problem;
     const bool hasJournal = !m_journalPath.isEmpty() && QFileInfo::exists(m_journalPath);
-    if (hasJournal)
-        problem = readJournal(m_journalPath, f, rows, devices);
+    if (hasJournal) {
+        const auto read = readJournal(m_journalPath, f);
+        if (read) {
+            rows = read->rows;
+            devices = read->devices;
+        } else {
+            problem = read.error();
+        }
+    }
     m_historyCut = rows.size() >= kHistoryLimit;
     // The journal's rows first: a joint in both keeps the journal's work order.
     for (const JointRow &live : std::as_const(m_live))
