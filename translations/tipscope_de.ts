@@ -1650,6 +1650,24 @@
     </message>
 </context>
 <context>
+    <name>CliJournal</name>
+    <message>
+        <location filename="../app/cli/clijournal.cpp" line="77"/>
+        <source>tipscope-cli: journal retention takes a number of days (0 keeps everything), for example: journal retention 90</source>
+        <translation>tipscope-cli: journal retention erwartet eine Anzahl Tage (0 behält alles), zum Beispiel: journal retention 90</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijournal.cpp" line="95"/>
+        <source>tipscope-cli: the retention could not be stored: %1</source>
+        <translation>tipscope-cli: die Aufbewahrungsdauer konnte nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijournal.cpp" line="111"/>
+        <source>tipscope-cli: journal takes show or retention DAYS</source>
+        <translation>tipscope-cli: journal erwartet show oder retention TAGE</translation>
+    </message>
+</context>
+<context>
     <name>CliMeasure</name>
     <message>
         <location filename="../app/cli/climeasure.cpp" line="66"/>
@@ -1698,62 +1716,7 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="128"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>unbekannter Befehl &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="172"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="179"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="187"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="192"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud erwartet eine Baudrate wie 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="199"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity erwartet none, even oder odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="203"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits erwartet 1 oder 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="212"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="220"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="223"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="157"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 braucht einen Wert</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="70"/>
+        <location filename="../app/cli/clioptions.cpp" line="71"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -1788,6 +1751,9 @@ Commands:
   limits [show | clear | set RULE]
                             the joint limits; RULE is port=N,tool=T,recovery=S,dip=K,
                             wear=SHARE (any of them; the most specific rule wins)
+  journal [show [--json] | retention DAYS] [--journal FILE]
+                            what the journal holds, and how many days it keeps
+                            records (0: all); every TipScope program shares it
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
 built-in simulated DME station (address 01) and SFR feeder (address 10);
@@ -1834,6 +1800,9 @@ Befehle:
   limits [show | clear | set REGEL]
                             die Lötstellen-Grenzwerte; REGEL ist port=N,tool=T,recovery=S,
                             dip=K,wear=ANTEIL (beliebig davon; die genaueste Regel gilt)
+  journal [show [--json] | retention TAGE] [--journal DATEI]
+                            was das Journal enthält und wie viele Tage es
+                            Einträge behält (0: alle); alle TipScope-Programme teilen es
 
 Ohne --addr oder --no-addr wird das Gerät automatisch gesucht. --demo spricht mit der
 eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10);
@@ -1846,27 +1815,82 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
+        <location filename="../app/cli/clioptions.cpp" line="132"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="191"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="196"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud erwartet eine Baudrate wie 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="203"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity erwartet none, even oder odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="207"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits erwartet 1 oder 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="216"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="224"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="227"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
+    </message>
+    <message>
         <location filename="../app/cli/clioptions.cpp" line="161"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 braucht einen Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="165"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="227"/>
+        <location filename="../app/cli/clioptions.cpp" line="231"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="228"/>
+        <location filename="../app/cli/clioptions.cpp" line="232"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="234"/>
+        <location filename="../app/cli/clioptions.cpp" line="238"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="237"/>
+        <location filename="../app/cli/clioptions.cpp" line="241"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -2718,37 +2742,37 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>Journal</name>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="31"/>
+        <location filename="../lib/journal/journalreader.cpp" line="32"/>
         <source>No journal is open.</source>
         <translation>Kein Journal ist geöffnet.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="83"/>
+        <location filename="../lib/journal/journalreader.cpp" line="84"/>
         <source>There is no journal at %1.</source>
         <translation>Unter %1 gibt es kein Journal.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="81"/>
+        <location filename="../lib/journal/journalschema.cpp" line="82"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>Das Journal %1 wurde von einem neueren TipScope geschrieben (Schema %2; dieses kennt bis %3). Es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="95"/>
+        <location filename="../lib/journal/journalschema.cpp" line="96"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>Die Datei %1 ist kein TipScope-Journal. Sie wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="172"/>
+        <location filename="../lib/journal/journalschema.cpp" line="173"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="221"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="246"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Verlorene Einträge: %1. Grund: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="305"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="337"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
     </message>
@@ -2781,6 +2805,11 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <location filename="../lib/journal/sqlerror.cpp" line="64"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>Das Journal %1 kann nicht geschrieben werden: Sein Ordner oder die Datei ist schreibgeschützt oder nicht zugänglich.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalsettings.cpp" line="56"/>
+        <source>A retention of %1 days is not possible: give 0 (keep everything) up to %2 days.</source>
+        <translation>Eine Aufbewahrung von %1 Tagen ist nicht möglich: erlaubt sind 0 (alles behalten) bis %2 Tage.</translation>
     </message>
 </context>
 <context>
@@ -5759,117 +5788,117 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="97"/>
         <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
         <translation>Doppelklick auf eine Lötstelle oder Eingabetaste zeigt sie auf der Seite Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
         <source>All devices</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="132"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="138"/>
         <source>All ports</source>
         <translation>Alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="134"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="142"/>
         <source>all tools</source>
         <translation>alle Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
         <source>All verdicts</source>
         <translation>Alle Bewertungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last hour</source>
         <translation>Letzte Stunde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last 24 hours</source>
         <translation>Letzte 24 Stunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last 7 days</source>
         <translation>Letzte 7 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last 30 days</source>
         <translation>Letzte 30 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>All times</source>
         <translation>Gesamte Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
         <source>all work orders</source>
         <translation>alle Aufträge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>Reload</source>
         <translation>Neu laden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Read the journal again</source>
         <translation>Das Journal neu lesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Export CSV…</source>
         <translation>CSV exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Die aufgeführten Lötstellen als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Verdict</source>
         <translation>Bewertung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Work order</source>
         <translation>Auftrag</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n Lötstelle aufgeführt.</numerusform>
@@ -5877,22 +5906,22 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="259"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="272"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Nur die neuesten %1 aus dem Journal: schränken Sie den Filter ein, um ältere zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="263"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="276"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>Das Journal konnte nicht gelesen werden (%1): nur die Lötstellen dieser Sitzung sind aufgeführt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="267"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="280"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Noch kein Journal: nur die Lötstellen dieser Sitzung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="359"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n Lötstelle in %1 geschrieben.</numerusform>
@@ -5900,12 +5929,12 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
         <source>Export joints</source>
         <translation>Lötstellen exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
@@ -6029,53 +6058,53 @@ Zurücksetzen?</translation>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="126"/>
+        <location filename="../app/gui/mainwindow.cpp" line="129"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Lötstellen-Grenzwerte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="127"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="128"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="130"/>
+        <location filename="../app/gui/mainwindow.cpp" line="133"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="131"/>
+        <location filename="../app/gui/mainwindow.cpp" line="134"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="205"/>
+        <location filename="../app/gui/mainwindow.cpp" line="208"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="210"/>
+        <location filename="../app/gui/mainwindow.cpp" line="213"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="215"/>
+        <location filename="../app/gui/mainwindow.cpp" line="218"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="224"/>
         <location filename="../app/gui/mainwindow.cpp" line="227"/>
+        <location filename="../app/gui/mainwindow.cpp" line="230"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="228"/>
+        <location filename="../app/gui/mainwindow.cpp" line="231"/>
         <source>Written:
 %1
 
@@ -6086,12 +6115,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="236"/>
+        <location filename="../app/gui/mainwindow.cpp" line="239"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="237"/>
+        <location filename="../app/gui/mainwindow.cpp" line="240"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
@@ -6379,74 +6408,94 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PreferencesDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="33"/>
         <source>Preferences</source>
         <translation>Optionen</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
         <source>Celsius (°C)</source>
         <translation>Celsius (°C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="33"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="36"/>
         <source>Fahrenheit (°F)</source>
         <translation>Fahrenheit (°F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="36"/>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="38"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="39"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44"/>
         <source>Follow the system</source>
         <translation>Systemsprache</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <source> days</source>
+        <translation> Tage</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
+        <source>Keep everything</source>
+        <translation>Alles behalten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
+        <source>Joints and events older than this are deleted from the journal, a little at a time so polling never waits. Every TipScope program that keeps this journal uses the same retention.</source>
+        <translation>Lötstellen und Ereignisse, die älter sind, werden nach und nach aus dem Journal gelöscht, sodass die Abfrage nie wartet. Jedes TipScope-Programm, das dieses Journal führt, verwendet dieselbe Aufbewahrungsdauer.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="56"/>
         <source>Temperature unit:</source>
         <translation>Temperatureinheit:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="48"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="57"/>
         <source>Live values (visible ports) every:</source>
         <translation>Live-Werte (sichtbare Ports) alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="58"/>
         <source>Errors, alarms and status every:</source>
         <translation>Fehler, Alarme und Status alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="59"/>
         <source>Counters every:</source>
         <translation>Zähler alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="60"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Antwortzeit des Geräts (zur Übertragungszeit addiert):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="61"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Wiederholungen nach verlorener oder beschädigter Antwort:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="62"/>
         <source>Language (on the next start):</source>
         <translation>Sprache (beim nächsten Start):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="63"/>
+        <source>Keep journal records for:</source>
+        <translation>Journaleinträge behalten für:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="65"/>
         <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
         <translation>Auf der Leitung wird immer °C übertragen; die Einheit ändert nur, was Sie sehen und eingeben. Die Farben folgen dem Desktop-Design.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="40"/>
         <source> s</source>
         <translation> s</translation>
     </message>
@@ -6904,18 +6953,19 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="85"/>
-        <location filename="../lib/journal/journal.cpp" line="99"/>
+        <location filename="../lib/journal/journal.cpp" line="86"/>
+        <location filename="../lib/journal/journal.cpp" line="100"/>
+        <location filename="../lib/journal/journal.cpp" line="159"/>
         <source>The journal is closed.</source>
         <translation>Das Journal ist geschlossen.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="89"/>
+        <location filename="../lib/journal/journal.cpp" line="90"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>Das Journal kommt nicht nach: %1 Einträge warten darauf, geschrieben zu werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="137"/>
+        <location filename="../lib/journal/journal.cpp" line="138"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Auftrag: %1, Platine: %2, Bediener: %3</translation>
     </message>

@@ -1650,6 +1650,24 @@
     </message>
 </context>
 <context>
+    <name>CliJournal</name>
+    <message>
+        <location filename="../app/cli/clijournal.cpp" line="77"/>
+        <source>tipscope-cli: journal retention takes a number of days (0 keeps everything), for example: journal retention 90</source>
+        <translation>tipscope-cli: journal retention espera un número de días (0 lo conserva todo), por ejemplo: journal retention 90</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijournal.cpp" line="95"/>
+        <source>tipscope-cli: the retention could not be stored: %1</source>
+        <translation>tipscope-cli: no se pudo guardar el tiempo de conservación: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clijournal.cpp" line="111"/>
+        <source>tipscope-cli: journal takes show or retention DAYS</source>
+        <translation>tipscope-cli: journal espera show o retention DÍAS</translation>
+    </message>
+</context>
+<context>
     <name>CliMeasure</name>
     <message>
         <location filename="../app/cli/climeasure.cpp" line="66"/>
@@ -1698,62 +1716,7 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="128"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>comando desconocido &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="172"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>indique solo una de --port, --tcp y --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="179"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="187"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="192"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud requiere una velocidad como 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="199"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity admite none, even u odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="203"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits admite 1 o 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="212"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="220"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="223"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries requiere un número de 0 a 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="157"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 necesita un valor</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="70"/>
+        <location filename="../app/cli/clioptions.cpp" line="71"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
                     [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -1788,6 +1751,9 @@ Commands:
   limits [show | clear | set RULE]
                             the joint limits; RULE is port=N,tool=T,recovery=S,dip=K,
                             wear=SHARE (any of them; the most specific rule wins)
+  journal [show [--json] | retention DAYS] [--journal FILE]
+                            what the journal holds, and how many days it keeps
+                            records (0: all); every TipScope program shares it
 
 Without --addr or --no-addr the device is found automatically. --demo talks to the
 built-in simulated DME station (address 01) and SFR feeder (address 10);
@@ -1833,6 +1799,9 @@ Comandos:
   limits [show | clear | set REGLA]
                             los límites de soldadura; REGLA es port=N,tool=T,recovery=S,
                             dip=K,wear=PROPORCIÓN (cualquiera; gana la regla más concreta)
+  journal [show [--json] | retention DÍAS] [--journal ARCHIVO]
+                            lo que guarda el diario y cuántos días conserva
+                            los registros (0: todos); lo comparten todos los programas
 
 Sin --addr ni --no-addr, el equipo se busca automáticamente. --demo habla con la
 estación DME simulada integrada (dirección 01) y el alimentador SFR (dirección 10);
@@ -1847,27 +1816,82 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
+        <location filename="../app/cli/clioptions.cpp" line="132"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>indique solo una de --port, --tcp y --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="191"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="196"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud requiere una velocidad como 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="203"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity admite none, even u odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="207"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits admite 1 o 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="216"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="224"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="227"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries requiere un número de 0 a 10</translation>
+    </message>
+    <message>
         <location filename="../app/cli/clioptions.cpp" line="161"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 necesita un valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="165"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="227"/>
+        <location filename="../app/cli/clioptions.cpp" line="231"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="228"/>
+        <location filename="../app/cli/clioptions.cpp" line="232"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="234"/>
+        <location filename="../app/cli/clioptions.cpp" line="238"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="237"/>
+        <location filename="../app/cli/clioptions.cpp" line="241"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -2719,37 +2743,37 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>Journal</name>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="31"/>
+        <location filename="../lib/journal/journalreader.cpp" line="32"/>
         <source>No journal is open.</source>
         <translation>No hay ningún diario abierto.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="83"/>
+        <location filename="../lib/journal/journalreader.cpp" line="84"/>
         <source>There is no journal at %1.</source>
         <translation>No hay ningún diario en %1.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="81"/>
+        <location filename="../lib/journal/journalschema.cpp" line="82"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="95"/>
+        <location filename="../lib/journal/journalschema.cpp" line="96"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="172"/>
+        <location filename="../lib/journal/journalschema.cpp" line="173"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>No se puede crear la carpeta %1 para el diario.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="221"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="246"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Registros perdidos: %1. Motivo: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="305"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="337"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>El diario se cerró antes de poder escribirlos: %1</translation>
     </message>
@@ -2782,6 +2806,11 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <location filename="../lib/journal/sqlerror.cpp" line="64"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>No se puede escribir el diario %1: su carpeta o el archivo es de solo lectura o no es accesible.</translation>
+    </message>
+    <message>
+        <location filename="../lib/journal/journalsettings.cpp" line="56"/>
+        <source>A retention of %1 days is not possible: give 0 (keep everything) up to %2 days.</source>
+        <translation>No se puede conservar %1 días: indique de 0 (conservarlo todo) a %2 días.</translation>
     </message>
 </context>
 <context>
@@ -5760,117 +5789,117 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="97"/>
         <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
         <translation>Doble clic en una soldadura, o Intro, para verla en la página Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
         <source>All devices</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="132"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="138"/>
         <source>All ports</source>
         <translation>Todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="134"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="142"/>
         <source>all tools</source>
         <translation>todas las herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
         <source>All verdicts</source>
         <translation>Todos los veredictos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last hour</source>
         <translation>Última hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last 24 hours</source>
         <translation>Últimas 24 horas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last 7 days</source>
         <translation>Últimos 7 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last 30 days</source>
         <translation>Últimos 30 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>All times</source>
         <translation>Todo el tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
         <source>all work orders</source>
         <translation>todas las órdenes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>Reload</source>
         <translation>Recargar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Read the journal again</source>
         <translation>Volver a leer el registro</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Export CSV…</source>
         <translation>Exportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Guardar las soldaduras de la lista como archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Verdict</source>
         <translation>Veredicto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Work order</source>
         <translation>Orden de trabajo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n soldadura en la lista.</numerusform>
@@ -5878,22 +5907,22 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="259"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="272"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Solo las %1 más recientes del registro: acote el filtro para ver las anteriores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="263"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="276"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>No se pudo leer el registro (%1): solo se listan las soldaduras de esta sesión.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="267"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="280"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Aún no hay registro: solo las soldaduras de esta sesión.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="359"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n soldadura escrita en %1.</numerusform>
@@ -5901,12 +5930,12 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
         <source>Export joints</source>
         <translation>Exportar soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
@@ -6030,53 +6059,53 @@ Reset it?</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="126"/>
+        <location filename="../app/gui/mainwindow.cpp" line="129"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Límites de soldadura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="127"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="128"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="130"/>
+        <location filename="../app/gui/mainwindow.cpp" line="133"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="131"/>
+        <location filename="../app/gui/mainwindow.cpp" line="134"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="205"/>
+        <location filename="../app/gui/mainwindow.cpp" line="208"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="210"/>
+        <location filename="../app/gui/mainwindow.cpp" line="213"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="215"/>
+        <location filename="../app/gui/mainwindow.cpp" line="218"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="224"/>
         <location filename="../app/gui/mainwindow.cpp" line="227"/>
+        <location filename="../app/gui/mainwindow.cpp" line="230"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="228"/>
+        <location filename="../app/gui/mainwindow.cpp" line="231"/>
         <source>Written:
 %1
 
@@ -6087,12 +6116,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="236"/>
+        <location filename="../app/gui/mainwindow.cpp" line="239"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="237"/>
+        <location filename="../app/gui/mainwindow.cpp" line="240"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
@@ -6380,74 +6409,94 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PreferencesDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="30"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="33"/>
         <source>Preferences</source>
         <translation>Preferencias</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="32"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
         <source>Celsius (°C)</source>
         <translation>Celsius (°C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="33"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="36"/>
         <source>Fahrenheit (°F)</source>
         <translation>Fahrenheit (°F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="35"/>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="36"/>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="38"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="39"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44"/>
         <source>Follow the system</source>
         <translation>Idioma del sistema</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <source> days</source>
+        <translation> días</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
+        <source>Keep everything</source>
+        <translation>Conservarlo todo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
+        <source>Joints and events older than this are deleted from the journal, a little at a time so polling never waits. Every TipScope program that keeps this journal uses the same retention.</source>
+        <translation>Las soldaduras y los eventos más antiguos se borran del diario poco a poco, sin hacer esperar nunca a la consulta. Todos los programas de TipScope que llevan este diario usan el mismo tiempo de conservación.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="56"/>
         <source>Temperature unit:</source>
         <translation>Unidad de temperatura:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="48"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="57"/>
         <source>Live values (visible ports) every:</source>
         <translation>Valores en tiempo real (puertos visibles) cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="58"/>
         <source>Errors, alarms and status every:</source>
         <translation>Errores, alarmas y estado cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="59"/>
         <source>Counters every:</source>
         <translation>Contadores cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="60"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Tiempo de respuesta del equipo (se suma al tiempo de transmisión):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="61"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Reintentos tras una respuesta perdida o dañada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="62"/>
         <source>Language (on the next start):</source>
         <translation>Idioma (en el próximo inicio):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="63"/>
+        <source>Keep journal records for:</source>
+        <translation>Conservar los registros del diario durante:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="65"/>
         <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
         <translation>En la línea siempre viaja °C; la unidad solo cambia lo que ve y escribe. Los colores siguen el tema del escritorio.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="40"/>
         <source> s</source>
         <translation> s</translation>
     </message>
@@ -6905,18 +6954,19 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="85"/>
-        <location filename="../lib/journal/journal.cpp" line="99"/>
+        <location filename="../lib/journal/journal.cpp" line="86"/>
+        <location filename="../lib/journal/journal.cpp" line="100"/>
+        <location filename="../lib/journal/journal.cpp" line="159"/>
         <source>The journal is closed.</source>
         <translation>El diario está cerrado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="89"/>
+        <location filename="../lib/journal/journal.cpp" line="90"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>El diario no da abasto: %1 registros esperan a ser escritos.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="137"/>
+        <location filename="../lib/journal/journal.cpp" line="138"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
     </message>

@@ -21,6 +21,7 @@ int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runContext(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runLimits(const CliOptions &o, QTextStream &out, QTextStream &err);
+int runJournal(const CliOptions &o, QTextStream &out, QTextStream &err);
 // --journal FILE, or the journal every TipScope program keeps by default.
 [[nodiscard]] QString journalPathOf(const CliOptions &o);
 

@@ -13,11 +13,11 @@ const QStringList kCommands = {
     QStringLiteral("send"),     QStringLiteral("monitor"), QStringLiteral("dump"),
     QStringLiteral("commands"), QStringLiteral("profile"), QStringLiteral("record"),
     QStringLiteral("measure"),  QStringLiteral("joints"),  QStringLiteral("context"),
-    QStringLiteral("limits")};
+    QStringLiteral("limits"),   QStringLiteral("journal")};
 // Commands that read or write files only, and need no device.
 const QStringList kOffline = {QStringLiteral("commands"), QStringLiteral("measure"),
-                              QStringLiteral("joints"), QStringLiteral("context"),
-                              QStringLiteral("limits")};
+                              QStringLiteral("joints"),   QStringLiteral("context"),
+                              QStringLiteral("limits"),   QStringLiteral("journal")};
 // Command options that take a value; all others are flags.
 const QStringList kValueOptions = {
     QStringLiteral("interval"), QStringLiteral("duration"),   QStringLiteral("csv"),
@@ -53,6 +53,7 @@ const QMap<QString, QStringList> kCommandOptions = {
      {QStringLiteral("work-order"), QStringLiteral("serial"), QStringLiteral("operator"),
       QStringLiteral("stdin"), QStringLiteral("journal")}},
     {QStringLiteral("limits"), {}},
+    {QStringLiteral("journal"), {QStringLiteral("json"), QStringLiteral("journal")}},
 };
 
 bool parseInt(const QString &text, int lo, int hi, int *out) {
@@ -104,6 +105,9 @@ QString CliParser::usage() {
         "  limits [show | clear | set RULE]\n"
         "                            the joint limits; RULE is port=N,tool=T,recovery=S,dip=K,\n"
         "                            wear=SHARE (any of them; the most specific rule wins)\n"
+        "  journal [show [--json] | retention DAYS] [--journal FILE]\n"
+        "                            what the journal holds, and how many days it keeps\n"
+        "                            records (0: all); every TipScope program shares it\n"
         "\n"
         "Without --addr or --no-addr the device is found automatically. --demo talks to the\n"
         "built-in simulated DME station (address 01) and SFR feeder (address 10);\n"

@@ -41,6 +41,8 @@ int main(int argc, char *argv[]) {
         return runContext(*options, out, err);
     if (options->command == QLatin1String("limits"))
         return runLimits(*options, out, err);
+    if (options->command == QLatin1String("journal"))
+        return runJournal(*options, out, err);
 
     CliSession session(*options);
     if (const int rc = session.open(); rc != kOk)

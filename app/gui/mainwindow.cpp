@@ -119,9 +119,12 @@ void MainWindow::buildMenus() {
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     QMenu *tools = menuBar()->addMenu(tr("&Tools"));
     tools->addAction(tr("&Preferences…"), QKeySequence::Preferences, this, [this] {
-        PreferencesDialog dialog(m_settings, this);
-        if (dialog.exec() == QDialog::Accepted)
-            applyPreferences(dialog.result());
+        PreferencesDialog dialog(m_settings, m_journal.retentionDays(), this);
+        if (dialog.exec() != QDialog::Accepted)
+            return;
+        applyPreferences(dialog.result());
+        if (dialog.journalRetentionDays() != m_journal.retentionDays())
+            (void)m_journal.setRetentionDays(dialog.journalRetentionDays()); // in range by its box
     });
     tools->addAction(tr("&Joint limits…"), this, &MainWindow::editJointLimits);
     QMenu *help = menuBar()->addMenu(tr("&Help"));

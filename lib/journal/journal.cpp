@@ -45,7 +45,8 @@ Journal::Journal(const QString &path, const JournalOptions &options, QObject *pa
     , m_backlogLimit(qMax(1, options.backlogLimit)) {
     qRegisterMetaType<Committed>();
     qRegisterMetaType<JournalState>();
-    m_shared->retentionDays = options.retentionDays;
+    if (options.retentionDays)
+        m_shared->retentionDays = *options.retentionDays;
     m_writer = new JournalWriter(m_shared, m_path, options);
     m_writer->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_writer, &QObject::deleteLater);
@@ -146,12 +147,24 @@ model::WorkContext Journal::context() const {
     return m_shared->context;
 }
 
-void Journal::setRetentionDays(int days) {
+int Journal::retentionDays() const {
+    QMutexLocker lock(&m_shared->mutex);
+    return m_shared->retentionDays;
+}
+
+protocol::Outcome<void> Journal::setRetentionDays(int days) {
+    if (const auto valid = checkRetentionDays(days); !valid)
+        return valid;
     if (!m_thread.isRunning())
-        return; // closed: the writer is gone
+        return protocol::failure(tr("The journal is closed.")); // the writer is gone
+    {
+        QMutexLocker lock(&m_shared->mutex); // in force at once; the writer stores it
+        m_shared->retentionDays = days;
+    }
     QMetaObject::invokeMethod(
         m_writer, [writer = m_writer, days] { writer->setRetentionDays(days); },
         Qt::QueuedConnection);
+    return {};
 }
 
 JournalState Journal::state() const {

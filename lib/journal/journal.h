@@ -16,13 +16,16 @@
 // - Store-and-forward marks records sent by row id (markJointsSent(), markEventsSent());
 //   JournalReader lists the unsent ones in order.
 // - Records older than the retention (default 365 days; 0 keeps all) are pruned on the writer
-//   thread in small transactions: at opening, hourly, and when the retention changes.
+//   thread in small transactions: at opening, hourly, and when the retention changes. The
+//   retention is kept in the file (journalsettings.h): setRetentionDays() stores it for every
+//   program that opens the journal, and each reads it again before it prunes.
 // - Appending, context and marks are thread-safe; the signals arrive on this object's thread.
 //   Queries go through JournalReader, which has its own connection.
 #pragma once
 
 #include "journalstate.h"
 #include "journaltypes.h"
+#include "protocol/outcome.h"
 
 #include <QObject>
 #include <QThread>
@@ -55,7 +58,11 @@ public:
 
     void setContext(const model::WorkContext &context);
     [[nodiscard]] model::WorkContext context() const;
-    void setRetentionDays(int days);
+    // The retention in force; the file's own once the journal has opened.
+    [[nodiscard]] int retentionDays() const;
+    // Refuses an impossible value at once; stores a possible one (when the file cannot be
+    // written, as soon as it can) and prunes to it.
+    protocol::Outcome<void> setRetentionDays(int days);
 
     [[nodiscard]] JournalState state() const;
     [[nodiscard]] QString errorText() const;

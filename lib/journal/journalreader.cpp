@@ -2,6 +2,7 @@
 
 #include "journalschema.h"
 #include "journalselect.h"
+#include "journalsettings.h"
 #include "sqlerror.h"
 
 #include <QCoreApplication>
@@ -171,6 +172,40 @@ Outcome<QList<model::DeviceIdentity>> JournalReader::devices() const {
         QStringLiteral("SELECT line, address, model, software FROM devices ORDER BY key"), {}};
     return collect<model::DeviceIdentity>(m_connection, select,
                                           [](const QSqlQuery &q) { return readDevice(q, 0); });
+}
+
+Outcome<JournalSummary> JournalReader::summary() const {
+    const Select select{
+        QStringLiteral("SELECT (SELECT count(*) FROM joints), (SELECT count(*) FROM events), "
+                       "(SELECT count(*) FROM joints WHERE sent = 0), "
+                       "(SELECT count(*) FROM events WHERE sent = 0), "
+                       "(SELECT min(t) FROM (SELECT min(start_ms) AS t FROM joints "
+                       "UNION ALL SELECT min(time_ms) FROM events)), "
+                       "(SELECT max(t) FROM (SELECT max(end_ms) AS t FROM joints "
+                       "UNION ALL SELECT max(time_ms) FROM events))"),
+        {}};
+    JournalSummary out;
+    const auto optionalTime = [](const QVariant &v) {
+        return v.isNull() ? std::nullopt : std::optional<qint64>(v.toLongLong());
+    };
+    if (const auto ran = run(m_connection, select,
+                             [&](const QSqlQuery &q) {
+                                 out.joints = q.value(0).toLongLong();
+                                 out.events = q.value(1).toLongLong();
+                                 out.unsentJoints = q.value(2).toLongLong();
+                                 out.unsentEvents = q.value(3).toLongLong();
+                                 out.oldestMs = optionalTime(q.value(4));
+                                 out.newestMs = optionalTime(q.value(5));
+                             });
+        !ran)
+        return failure(ran.error());
+    QSqlDatabase db = QSqlDatabase::database(m_connection, false);
+    const auto days = readRetentionDays(db);
+    if (!days)
+        return failure(days.error());
+    out.retentionDays = *days;
+    out.fileBytes = QFileInfo(m_path).size() + QFileInfo(m_path + QStringLiteral("-wal")).size();
+    return out;
 }
 
 } // namespace tipscope::journal

@@ -43,6 +43,8 @@ public:
                                                                      int limit) const;
     [[nodiscard]] protocol::Outcome<QList<StoredEvent>> unsentEvents(qint64 afterId,
                                                                      int limit) const;
+    [[nodiscard]] protocol::Outcome<JournalSummary> summary() const;
+
     // Every device the journal has a record of, in key order.
     [[nodiscard]] protocol::Outcome<QList<model::DeviceIdentity>> devices() const;
 

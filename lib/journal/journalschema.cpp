@@ -53,6 +53,7 @@ const Migration kMigrations[] = {
       "CREATE INDEX joints_unsent ON joints (id) WHERE sent = 0",
       "ALTER TABLE events ADD COLUMN sent INTEGER NOT NULL DEFAULT 0",
       "CREATE INDEX events_unsent ON events (id) WHERE sent = 0"}},
+    {3, {"CREATE TABLE settings (key TEXT PRIMARY KEY, value TEXT NOT NULL)"}},
 };
 
 Outcome<void> run(QSqlDatabase &db, const QString &sql) {

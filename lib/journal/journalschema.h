@@ -3,11 +3,11 @@
 //
 // Version 1: devices, work contexts, joints and events, with the indexes the time-range queries
 // use. Version 2: store-and-forward, a `sent` mark per joint and event and an index of the unsent
-// ones. A new file runs every migration in order, so a new file and a migrated one are alike.
-// Migrations run in one IMMEDIATE transaction that re-reads the version first, so two programs
-// opening an old file together migrate it once. A file written by a newer TipScope (a higher
-// version) or by another program (tables but no version, or another application id) is
-// refused and left untouched.
+// ones. Version 3: settings every program that opens the file shares (the retention). A new file
+// runs every migration in order, so a new file and a migrated one are alike. Migrations run in one
+// IMMEDIATE transaction that re-reads the version first, so two programs opening an old file
+// together migrate it once. A file written by a newer TipScope (a higher version) or by another
+// program (tables but no version, or another application id) is refused and left untouched.
 #pragma once
 
 #include "protocol/outcome.h"
@@ -17,7 +17,7 @@
 
 namespace tipscope::journal {
 
-inline constexpr int kJournalSchemaVersion = 2;
+inline constexpr int kJournalSchemaVersion = 3;
 inline constexpr int kJournalApplicationId = 0x54695053; // "TiPS"
 
 // A fresh connection to the file at `path` named `connectionName`, open, in WAL mode with full

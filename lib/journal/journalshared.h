@@ -2,6 +2,7 @@
 // the writer signals `settled` whenever it has dealt with more requests, which flush() waits on.
 #pragma once
 
+#include "journalsettings.h"
 #include "journalstate.h"
 #include "journaltypes.h"
 
@@ -46,7 +47,7 @@ struct JournalShared {
     JournalState state = JournalState::Opening;
     QString errorText;
     model::WorkContext context;
-    int retentionDays = 365;
+    int retentionDays = kDefaultRetentionDays; // in force
 };
 
 } // namespace tipscope::journal

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QtGlobal>
+#include <optional>
 
 namespace tipscope::journal {
 
@@ -13,7 +14,9 @@ enum class JournalState {
 };
 
 struct JournalOptions {
-    int retentionDays = 365;
+    // Unset: the retention stored in the file (journalsettings.h), a year when none is. Set: this
+    // program's own until setRetentionDays() stores one (tests and benchmarks keep everything).
+    std::optional<int> retentionDays;
     // A hard cap on the file (0: none). Reaching it behaves like a full disk.
     qint64 maxSizeBytes = 0;
     // Records waiting in memory (queued or held while the journal cannot write) above which an

@@ -77,6 +77,18 @@ struct PortRecovery {
     qint64 p95Ms = 0;
 };
 
+// What a journal holds, for `tipscope-cli journal` and the support report.
+struct JournalSummary {
+    qint64 joints = 0;
+    qint64 events = 0;
+    qint64 unsentJoints = 0;
+    qint64 unsentEvents = 0;
+    std::optional<qint64> oldestMs; // none when the journal is empty
+    std::optional<qint64> newestMs;
+    int retentionDays = 0;
+    qint64 fileBytes = 0; // the database and its write-ahead log
+};
+
 } // namespace tipscope::journal
 
 Q_DECLARE_METATYPE(tipscope::journal::Committed)

@@ -1,6 +1,7 @@
 #include "journalwriter.h"
 
 #include "journalschema.h"
+#include "journalsettings.h"
 #include "journalstatements.h"
 #include "sqlerror.h"
 
@@ -72,7 +73,31 @@ bool JournalWriter::openDatabase() {
         fail(text);
         return false;
     }
+    syncRetention();
     return true;
+}
+
+// Stores a retention set while the file could not take it, or reads the one the file holds
+// (another program may have changed it), unless this program was given its own.
+void JournalWriter::syncRetention() {
+    QSqlDatabase db = QSqlDatabase::database(m_connection, false);
+    if (m_retentionToStore) {
+        if (const auto stored = storeRetentionDays(db, *m_retentionToStore); !stored) {
+            qCWarning(lcJournal).noquote() << stored.error();
+            return;
+        }
+        m_retentionToStore.reset();
+        return;
+    }
+    if (m_options.retentionDays)
+        return;
+    const auto days = readRetentionDays(db);
+    if (!days) {
+        qCWarning(lcJournal).noquote() << days.error();
+        return;
+    }
+    QMutexLocker lock(&m_shared->mutex);
+    m_shared->retentionDays = *days;
 }
 
 void JournalWriter::closeDatabase() {
@@ -233,12 +258,19 @@ void JournalWriter::setRetentionDays(int days) {
         QMutexLocker lock(&m_shared->mutex);
         m_shared->retentionDays = days;
     }
+    m_options.retentionDays.reset(); // the file holds the chosen one from now on
+    m_retentionToStore = days;
+    if (m_statements)
+        syncRetention();
     pruneStep();
 }
 
 void JournalWriter::pruneStep() {
-    if (!m_pruneQueued)
-        pruneBatch();
+    if (m_pruneQueued)
+        return;
+    if (m_statements)
+        syncRetention();
+    pruneBatch();
 }
 
 void JournalWriter::pruneBatch() {

@@ -14,6 +14,7 @@
 
 #include <QObject>
 #include <memory>
+#include <optional>
 
 class QSqlError;
 class QTimer;
@@ -50,6 +51,7 @@ private:
     bool writeBatch(std::size_t count);
     bool writeRequest(const Request &request, Committed &ids, QSqlError *error);
     void rollBack();
+    void syncRetention();
     void fail(const QString &text);
     void retry();
     // False when nothing changed.
@@ -70,6 +72,8 @@ private:
     quint64 m_taken = 0; // requests taken from the queue so far
     qint64 m_lostReported = 0;
     bool m_pruneQueued = false;
+    std::optional<int> m_retentionToStore; // set but not yet in the file
+
     qint64 m_prunedJoints = 0;
     qint64 m_prunedEvents = 0;
 };

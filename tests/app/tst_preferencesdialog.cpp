@@ -1,6 +1,6 @@
 // PreferencesDialog shows the counters' poll interval in seconds ("60 s", not "60000 ms") and
 // stores it in milliseconds as before; a stored interval that is not whole seconds is kept
-// unless the field is changed.
+// unless the field is changed. The journal's retention reads in days, 0 as "Keep everything".
 #include "dialogs/preferencesdialog.h"
 
 #include <QLabel>
@@ -25,6 +25,7 @@ private Q_SLOTS:
     void theCountersIntervalReadsInSeconds();
     void aChangedCountersIntervalIsStoredInMilliseconds();
     void anUntouchedIntervalOfNoWholeSecondsIsKept();
+    void theJournalRetentionReadsInDaysAndZeroKeepsEverything();
 };
 
 void TestPreferencesDialog::theCountersIntervalReadsInSeconds_data() {
@@ -40,7 +41,7 @@ void TestPreferencesDialog::theCountersIntervalReadsInSeconds() {
     QFETCH(QString, shown);
     model::AppSettings settings;
     settings.counterMs = storedMs;
-    gui::PreferencesDialog dialog(settings);
+    gui::PreferencesDialog dialog(settings, 365);
     QSpinBox *counters = fieldOf(dialog, QStringLiteral("Counters every:"));
     QVERIFY(counters);
     QCOMPARE(counters->text(), shown);
@@ -48,7 +49,7 @@ void TestPreferencesDialog::theCountersIntervalReadsInSeconds() {
 }
 
 void TestPreferencesDialog::aChangedCountersIntervalIsStoredInMilliseconds() {
-    gui::PreferencesDialog dialog(model::AppSettings{});
+    gui::PreferencesDialog dialog(model::AppSettings{}, 365);
     QSpinBox *counters = fieldOf(dialog, QStringLiteral("Counters every:"));
     QVERIFY(counters);
     counters->setValue(90);
@@ -59,8 +60,21 @@ void TestPreferencesDialog::aChangedCountersIntervalIsStoredInMilliseconds() {
 void TestPreferencesDialog::anUntouchedIntervalOfNoWholeSecondsIsKept() {
     model::AppSettings settings;
     settings.counterMs = 1500;
-    gui::PreferencesDialog dialog(settings);
+    gui::PreferencesDialog dialog(settings, 365);
     QCOMPARE(dialog.result().counterMs, 1500);
+}
+
+void TestPreferencesDialog::theJournalRetentionReadsInDaysAndZeroKeepsEverything() {
+    gui::PreferencesDialog dialog(model::AppSettings{}, 365);
+    QSpinBox *retention = fieldOf(dialog, QStringLiteral("Keep journal records for:"));
+    QVERIFY(retention);
+    QCOMPARE(retention->text(), QStringLiteral("365 days"));
+    QCOMPARE(dialog.journalRetentionDays(), 365);
+    retention->setValue(0);
+    QCOMPARE(retention->text(), QStringLiteral("Keep everything"));
+    QCOMPARE(dialog.journalRetentionDays(), 0);
+    retention->setValue(90);
+    QCOMPARE(dialog.journalRetentionDays(), 90);
 }
 
 QTEST_MAIN(TestPreferencesDialog)

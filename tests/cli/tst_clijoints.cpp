@@ -1,6 +1,7 @@
 // The joints from the command line, end to end with the real binary: monitor finds the demo
 // station's joints, judges them by the shared limits and --limit, keeps them in the journal with
-// the work context; `joints` lists them afterwards, filtered, as text, CSV and JSON.
+// the work context; `joints` lists them afterwards, filtered, as text, CSV and JSON; `journal`
+// shows what the journal holds and keeps its retention in the file.
 #include "programrun.h"
 
 #include <QJsonArray>
@@ -31,6 +32,7 @@ class TestCliJoints : public QObject {
 private Q_SLOTS:
     void initTestCase();
     void monitorKeepsJudgedJointsThatJointsListsAfterwards();
+    void theJournalCommandShowsWhatItHoldsAndStoresTheRetention();
     void theContextIsReadFromStandardInputAndABadLineChangesNothing();
     void limitsAreSetAndShownAndABadRuleIsRefused();
     void aMissingJournalIsAClearError();
@@ -96,6 +98,39 @@ void TestCliJoints::monitorKeepsJudgedJointsThatJointsListsAfterwards() {
     const ProgramRun badDevice = runCli({"joints", "--device", "HDE", "--journal", m_journal});
     QCOMPARE(badDevice.exitCode, 1);
     QVERIFY2(badDevice.err.contains(QStringLiteral("no device 'HDE'")), qPrintable(badDevice.err));
+}
+
+void TestCliJoints::theJournalCommandShowsWhatItHoldsAndStoresTheRetention() {
+    const ProgramRun listed = runCli({"joints", "--csv", "--journal", m_journal});
+    const qsizetype joints = dataLines(listed.out).size() - 1;
+    QVERIFY(joints > 0);
+
+    const ProgramRun shown = runCli({"journal", "--journal", m_journal});
+    QVERIFY2(shown.exitCode == 0, qPrintable(shown.err));
+    const QStringList lines = dataLines(shown.out);
+    QCOMPARE(lines.first(), QStringLiteral("journal: ") + m_journal);
+    QVERIFY2(lines.contains(QStringLiteral("joints: %1 (%1 unsent)").arg(joints)),
+             qPrintable(shown.out));
+    QVERIFY2(lines.contains(QStringLiteral("retention: 365 days")), qPrintable(shown.out));
+
+    const ProgramRun set = runCli({"journal", "retention", "90", "--journal", m_journal});
+    QVERIFY2(set.exitCode == 0, qPrintable(set.err));
+    QCOMPARE(set.out.trimmed(), QStringLiteral("retention: 90 days"));
+
+    const ProgramRun refused = runCli({"journal", "retention", "-5", "--journal", m_journal});
+    QCOMPARE(refused.exitCode, 2);
+    QVERIFY2(refused.err.contains(QStringLiteral("-5")), qPrintable(refused.err));
+    const ProgramRun notANumber =
+        runCli({"journal", "retention", "a-year", "--journal", m_journal});
+    QCOMPARE(notANumber.exitCode, 1);
+
+    const ProgramRun json = runCli({"journal", "--json", "--journal", m_journal});
+    QCOMPARE(json.exitCode, 0);
+    const QJsonObject summary = QJsonDocument::fromJson(json.out.toUtf8()).object();
+    QCOMPARE(summary.value(QStringLiteral("retention_days")).toInt(), 90);
+    QCOMPARE(summary.value(QStringLiteral("joints")).toInteger(), joints);
+    QVERIFY(summary.value(QStringLiteral("oldest")).toString().endsWith(QLatin1Char('Z')));
+    QVERIFY(summary.value(QStringLiteral("bytes")).toInteger() > 0);
 }
 
 void TestCliJoints::theContextIsReadFromStandardInputAndABadLineChangesNothing() {

@@ -164,7 +164,7 @@ void TestJournalErrors::aFullJournalHoldsRecordsAndCatchesUpWhenPruningFreesSpac
     // between two pruning steps, so wait for the pruning to end.)
     QSignalSpy pruned(&journal, &Journal::pruned);
     QVERIFY(pruned.isValid());
-    journal.setRetentionDays(365);
+    QVERIFY(journal.setRetentionDays(365));
     QVERIFY(pruned.wait(20000));
     QVERIFY(QTest::qWaitFor(
         [&] { return journal.state() == JournalState::Ready && journal.pendingCount() == 0; },

@@ -1,8 +1,11 @@
 // Retention: records older than the retention are pruned (in small batches, the appends made
 // meanwhile all kept), at opening and when the retention changes; a retention of 0 keeps all.
+// The retention is kept in the journal file: every program that opens it prunes alike, and a
+// running one takes a retention another program set at its next pruning.
 #include "journalfixture.h"
 
 #include "journal/journalreader.h"
+#include "journal/journalsettings.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -45,6 +48,14 @@ void appendOldAndNew(Journal &journal) {
         journal.append(sampleEvent(i, now - i));
 }
 
+// A journal at `path` holding appendOldAndNew()'s records and `retentionDays` in its file.
+bool writeOldAndNew(const QString &path, int retentionDays) {
+    Journal journal(path, quickOptions());
+    appendOldAndNew(journal);
+    return journal.setRetentionDays(retentionDays) && journal.retentionDays() == retentionDays &&
+           journal.flush();
+}
+
 } // namespace
 
 class TestJournalRetention : public QObject {
@@ -52,6 +63,9 @@ class TestJournalRetention : public QObject {
 private Q_SLOTS:
     void aShorterRetentionPrunesOldRecordsInBatchesWhileAppendsGoOn();
     void aJournalOpenedWithARetentionPrunesAtOnce();
+    void theRetentionIsKeptInTheFileForEveryProgramThatOpensIt();
+    void aRunningJournalTakesARetentionAnotherProgramSet();
+    void anImpossibleRetentionIsRefusedAndChangesNothing();
 };
 
 void TestJournalRetention::aShorterRetentionPrunesOldRecordsInBatchesWhileAppendsGoOn() {
@@ -66,7 +80,7 @@ void TestJournalRetention::aShorterRetentionPrunesOldRecordsInBatchesWhileAppend
     QVERIFY(journal.flush());
     QCOMPARE(countRecords(path).joints, 50); // retention 0 keeps everything
 
-    journal.setRetentionDays(365);
+    QVERIFY(journal.setRetentionDays(365));
     for (int i = 0; i < 20; ++i)
         journal.append(sampleJoint(i, QDateTime::currentMSecsSinceEpoch()));
     QVERIFY(pruned.wait(10000));
@@ -98,6 +112,75 @@ void TestJournalRetention::aJournalOpenedWithARetentionPrunesAtOnce() {
     const Counts left = countRecords(path);
     QCOMPARE(left.joints, 10);
     QCOMPARE(left.events, 5);
+}
+
+void TestJournalRetention::theRetentionIsKeptInTheFileForEveryProgramThatOpensIt() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+    QVERIFY(writeOldAndNew(path, 500));
+    // Opened without a retention of its own: the file's 500 days, not the default year, so the
+    // 400-day-old records stay.
+    {
+        Journal journal(path);
+        QVERIFY(waitOpened(journal));
+        QCOMPARE(journal.retentionDays(), 500);
+        QVERIFY(journal.flush());
+    }
+    QCOMPARE(countRecords(path).joints, 50);
+    JournalReader reader;
+    QVERIFY(reader.open(path));
+    const auto summary = reader.summary();
+    QVERIFY2(summary, qPrintable(summary ? QString() : summary.error()));
+    QCOMPARE(summary->retentionDays, 500);
+    QCOMPARE(summary->joints, 50);
+    QCOMPARE(summary->events, 35);
+    QCOMPARE(summary->unsentJoints, 50);
+    QVERIFY(summary->oldestMs && summary->newestMs);
+    QVERIFY(*summary->oldestMs < *summary->newestMs - 399 * kDayMs);
+    QVERIFY(summary->fileBytes > 0);
+}
+
+void TestJournalRetention::aRunningJournalTakesARetentionAnotherProgramSet() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+    QVERIFY(writeOldAndNew(path, 0));
+    journal::JournalOptions options;
+    options.pruneIntervalMs = 100;
+    Journal running(path, options);
+    QSignalSpy pruned(&running, &Journal::pruned);
+    QVERIFY(pruned.isValid());
+    QVERIFY(waitOpened(running));
+    QCOMPARE(running.retentionDays(), 0);
+    {
+        Journal other(path, quickOptions()); // as `tipscope-cli journal retention 365` does
+        QVERIFY(other.setRetentionDays(365));
+        other.close(); // it prunes the old records itself
+    }
+    QCOMPARE(countRecords(path).joints, 10);
+    QTRY_COMPARE_WITH_TIMEOUT(running.retentionDays(), 365, 10000);
+    // The running journal now prunes by the year too.
+    const qint64 old = QDateTime::currentMSecsSinceEpoch() - 400 * kDayMs;
+    for (int i = 0; i < 5; ++i)
+        running.append(sampleJoint(i, old + i));
+    QVERIFY(running.flush());
+    QVERIFY(pruned.wait(10000));
+    QCOMPARE(pruned.last().at(0).toLongLong(), 5);
+    QCOMPARE(countRecords(path).joints, 10);
+}
+
+void TestJournalRetention::anImpossibleRetentionIsRefusedAndChangesNothing() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+    Journal journal(path);
+    QVERIFY(waitOpened(journal));
+    QCOMPARE(journal.retentionDays(), journal::kDefaultRetentionDays);
+    for (const int days : {-1, journal::kMaxRetentionDays + 1}) {
+        const auto set = journal.setRetentionDays(days);
+        QVERIFY(!set);
+        QVERIFY2(set.error().contains(QString::number(days)), qPrintable(set.error()));
+    }
+    QVERIFY(journal.flush());
+    QCOMPARE(journal.retentionDays(), journal::kDefaultRetentionDays);
 }
 
 QTEST_GUILESS_MAIN(TestJournalRetention)

@@ -119,7 +119,10 @@ void TestJournalSchema::aVersionOneFileIsMigratedKeepingItsRecordsUnsent() {
         QVERIFY(journal.flush());
     }
     RawDatabase raw(path);
-    QCOMPARE(raw.scalar(QStringLiteral("PRAGMA user_version")).toInt(), 2);
+    QCOMPARE(raw.scalar(QStringLiteral("PRAGMA user_version")).toInt(),
+             journal::kJournalSchemaVersion);
+    // Schema 3's settings table is there, empty: the retention is the default until one is set.
+    QCOMPARE(raw.scalar(QStringLiteral("SELECT count(*) FROM settings")).toInt(), 0);
 
     JournalReader reader;
     const auto opened = reader.open(path);
@@ -158,8 +161,8 @@ void TestJournalSchema::aFileNotOursToChangeIsRefusedAndLeftUntouched_data() {
     QTest::addColumn<QString>("expected");
     QTest::newRow("newer schema")
         << QStringLiteral("CREATE TABLE joints (id INTEGER PRIMARY KEY, later TEXT);"
-                          "PRAGMA application_id = 1416187987; PRAGMA user_version = 3")
-        << QStringLiteral("newer TipScope (schema 3");
+                          "PRAGMA application_id = 1416187987; PRAGMA user_version = 4")
+        << QStringLiteral("newer TipScope (schema 4");
     QTest::newRow("another program's database")
         << QStringLiteral("CREATE TABLE accounts (id INTEGER PRIMARY KEY, name TEXT);"
                           "INSERT INTO accounts VALUES (1, 'x')")

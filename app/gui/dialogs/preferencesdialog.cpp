@@ -1,5 +1,7 @@
 #include "preferencesdialog.h"
 
+#include "journal/journalsettings.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
@@ -24,7 +26,8 @@ static QSpinBox *spin(QWidget *parent, int lo, int hi, int value, const QString 
     return s;
 }
 
-PreferencesDialog::PreferencesDialog(const AppSettings &settings, QWidget *parent)
+PreferencesDialog::PreferencesDialog(const AppSettings &settings, int journalRetentionDays,
+                                     QWidget *parent)
     : QDialog(parent)
     , m_base(settings) {
     setWindowTitle(tr("Preferences"));
@@ -43,6 +46,12 @@ PreferencesDialog::PreferencesDialog(const AppSettings &settings, QWidget *paren
     m_language->addItem(QStringLiteral("Español"), QStringLiteral("es"));
     m_language->addItem(QStringLiteral("Deutsch"), QStringLiteral("de"));
     m_language->setCurrentIndex(qMax(0, m_language->findData(settings.language)));
+    m_retention = spin(this, 0, journal::kMaxRetentionDays, journalRetentionDays, tr(" days"));
+    m_retention->setSpecialValueText(tr("Keep everything"));
+    m_retention->setToolTip(
+        tr("Joints and events older than this are deleted from the journal, a little at a time "
+           "so polling never waits. Every TipScope program that keeps this journal uses the "
+           "same retention."));
     auto *form = new QFormLayout(this);
     form->addRow(tr("Temperature unit:"), m_unit);
     form->addRow(tr("Live values (visible ports) every:"), m_live);
@@ -51,6 +60,7 @@ PreferencesDialog::PreferencesDialog(const AppSettings &settings, QWidget *paren
     form->addRow(tr("Device turnaround (added to the wire time):"), m_turnaround);
     form->addRow(tr("Retries after a lost or corrupted answer:"), m_retries);
     form->addRow(tr("Language (on the next start):"), m_language);
+    form->addRow(tr("Keep journal records for:"), m_retention);
     auto *note =
         new QLabel(tr("The wire always carries °C; the unit only changes what you see and type. "
                       "The colours follow the desktop theme."),
@@ -75,6 +85,10 @@ AppSettings PreferencesDialog::result() const {
     a.retries = m_retries->value();
     a.language = m_language->currentData().toString();
     return a;
+}
+
+int PreferencesDialog::journalRetentionDays() const {
+    return m_retention->value();
 }
 
 } // namespace tipscope::gui

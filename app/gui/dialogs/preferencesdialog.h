@@ -1,5 +1,7 @@
 // PreferencesDialog: temperature unit, poll rates, answer timeout and retries, language (on the
-// next start). The theme follows the desktop's; nothing to choose.
+// next start), and how long the journal keeps records. The theme follows the desktop's; nothing
+// to choose. The retention is not one of this program's settings: it lives in the journal file,
+// shared by every program that keeps it, so it comes and goes beside AppSettings.
 #pragma once
 
 #include "model/appsettings.h"
@@ -14,8 +16,10 @@ namespace tipscope::gui {
 class PreferencesDialog : public QDialog {
     Q_OBJECT
 public:
-    PreferencesDialog(const model::AppSettings &settings, QWidget *parent = nullptr);
+    PreferencesDialog(const model::AppSettings &settings, int journalRetentionDays,
+                      QWidget *parent = nullptr);
     [[nodiscard]] model::AppSettings result() const;
+    [[nodiscard]] int journalRetentionDays() const;
 
 private:
     model::AppSettings m_base;
@@ -26,6 +30,7 @@ private:
     QSpinBox *m_turnaround;
     QSpinBox *m_retries;
     QComboBox *m_language;
+    QSpinBox *m_retention;
 };
 
 } // namespace tipscope::gui
