@@ -1662,7 +1662,7 @@
         <translation>tipscope-cli: die Aufbewahrungsdauer konnte nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="111"/>
+        <location filename="../app/cli/clijournal.cpp" line="110"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal erwartet show oder retention TAGE</translation>
     </message>
@@ -2807,7 +2807,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Das Journal %1 kann nicht geschrieben werden: Sein Ordner oder die Datei ist schreibgeschützt oder nicht zugänglich.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalsettings.cpp" line="56"/>
+        <location filename="../lib/journal/journalsettings.cpp" line="55"/>
         <source>A retention of %1 days is not possible: give 0 (keep everything) up to %2 days.</source>
         <translation>Eine Aufbewahrung von %1 Tagen ist nicht möglich: erlaubt sind 0 (alles behalten) bis %2 Tage.</translation>
     </message>
@@ -3749,32 +3749,32 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="176"/>
+        <location filename="../lib/model/supportreport.cpp" line="213"/>
         <source>TipScope support report, %1</source>
         <translation>TipScope-Supportbericht, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="177"/>
+        <location filename="../lib/model/supportreport.cpp" line="214"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="183"/>
+        <location filename="../lib/model/supportreport.cpp" line="220"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="184"/>
+        <location filename="../lib/model/supportreport.cpp" line="221"/>
         <source>State: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="185"/>
+        <location filename="../lib/model/supportreport.cpp" line="222"/>
         <source>Statistics: %1</source>
         <translation>Statistik: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="212"/>
+        <location filename="../lib/model/supportreport.cpp" line="251"/>
         <source>Recent events:</source>
         <translation>Letzte Ereignisse:</translation>
     </message>
@@ -3819,7 +3819,72 @@ Dauerhaft mit dieser udev-Regel:
         <translation>; Erholzeit Median %1 ms, 95. Perzentil %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="200"/>
+        <location filename="../lib/model/supportreport.cpp" line="129"/>
+        <source>Journal: %1</source>
+        <translation>Journal: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="131"/>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="132"/>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="133"/>
+        <source>not yet, opening</source>
+        <translation>noch nicht, wird geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="134"/>
+        <source>no, closed</source>
+        <translation>nein, geschlossen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="136"/>
+        <source>  writing: %1</source>
+        <translation>  schreibt: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="137"/>
+        <source>  writing: %1: %2</source>
+        <translation>  schreibt: %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="139"/>
+        <source>  lost: %1 records (%2)</source>
+        <translation>  verloren: %1 Einträge (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="142"/>
+        <source>  not read: %1</source>
+        <translation>  nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="145"/>
+        <source>  %1 joints and %2 events, %3 and %4 of them not yet published; %5 waiting in memory</source>
+        <translation>  %1 Lötstellen und %2 Ereignisse, davon %3 und %4 noch nicht veröffentlicht; %5 warten im Speicher</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="151"/>
+        <source>  from %1 to %2</source>
+        <translation>  von %1 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="154"/>
+        <source>  kept without a time limit; %1 bytes on disk</source>
+        <translation>  ohne Zeitgrenze aufbewahrt; %1 Byte auf der Festplatte</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="156"/>
+        <source>  kept for %1 days; %2 bytes on disk</source>
+        <translation>  %1 Tage aufbewahrt; %2 Byte auf der Festplatte</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="237"/>
         <source>  What to check:</source>
         <translation>  Was zu prüfen ist:</translation>
     </message>
@@ -6023,88 +6088,88 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="45"/>
+        <location filename="../app/gui/mainwindow.cpp" line="46"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="112"/>
+        <location filename="../app/gui/mainwindow.cpp" line="113"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <location filename="../app/gui/mainwindow.cpp" line="114"/>
         <source>Work &amp;context…</source>
         <translation>Arbeits&amp;kontext…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="117"/>
+        <location filename="../app/gui/mainwindow.cpp" line="118"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="119"/>
+        <location filename="../app/gui/mainwindow.cpp" line="120"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="120"/>
+        <location filename="../app/gui/mainwindow.cpp" line="121"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="121"/>
+        <location filename="../app/gui/mainwindow.cpp" line="122"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="129"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Lötstellen-Grenzwerte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="130"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="131"/>
+        <location filename="../app/gui/mainwindow.cpp" line="132"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="133"/>
+        <location filename="../app/gui/mainwindow.cpp" line="134"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="134"/>
+        <location filename="../app/gui/mainwindow.cpp" line="135"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="208"/>
+        <location filename="../app/gui/mainwindow.cpp" line="209"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="213"/>
+        <location filename="../app/gui/mainwindow.cpp" line="214"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="218"/>
+        <location filename="../app/gui/mainwindow.cpp" line="219"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="227"/>
-        <location filename="../app/gui/mainwindow.cpp" line="230"/>
+        <location filename="../app/gui/mainwindow.cpp" line="229"/>
+        <location filename="../app/gui/mainwindow.cpp" line="232"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="231"/>
+        <location filename="../app/gui/mainwindow.cpp" line="233"/>
         <source>Written:
 %1
 
@@ -6115,12 +6180,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="239"/>
+        <location filename="../app/gui/mainwindow.cpp" line="241"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="240"/>
+        <location filename="../app/gui/mainwindow.cpp" line="242"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>

@@ -1662,7 +1662,7 @@
         <translation>tipscope-cli: no se pudo guardar el tiempo de conservación: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="111"/>
+        <location filename="../app/cli/clijournal.cpp" line="110"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal espera show o retention DÍAS</translation>
     </message>
@@ -2808,7 +2808,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>No se puede escribir el diario %1: su carpeta o el archivo es de solo lectura o no es accesible.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalsettings.cpp" line="56"/>
+        <location filename="../lib/journal/journalsettings.cpp" line="55"/>
         <source>A retention of %1 days is not possible: give 0 (keep everything) up to %2 days.</source>
         <translation>No se puede conservar %1 días: indique de 0 (conservarlo todo) a %2 días.</translation>
     </message>
@@ -3750,32 +3750,32 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="176"/>
+        <location filename="../lib/model/supportreport.cpp" line="213"/>
         <source>TipScope support report, %1</source>
         <translation>Informe de soporte de TipScope, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="177"/>
+        <location filename="../lib/model/supportreport.cpp" line="214"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="183"/>
+        <location filename="../lib/model/supportreport.cpp" line="220"/>
         <source>Line: %1</source>
         <translation>Línea: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="184"/>
+        <location filename="../lib/model/supportreport.cpp" line="221"/>
         <source>State: %1</source>
         <translation>Estado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="185"/>
+        <location filename="../lib/model/supportreport.cpp" line="222"/>
         <source>Statistics: %1</source>
         <translation>Estadísticas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="212"/>
+        <location filename="../lib/model/supportreport.cpp" line="251"/>
         <source>Recent events:</source>
         <translation>Eventos recientes:</translation>
     </message>
@@ -3820,7 +3820,72 @@ Hágalo permanente con esta regla de udev:
         <translation>; recuperación mediana %1 ms, percentil 95 %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="200"/>
+        <location filename="../lib/model/supportreport.cpp" line="129"/>
+        <source>Journal: %1</source>
+        <translation>Diario: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="131"/>
+        <source>yes</source>
+        <translation>sí</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="132"/>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="133"/>
+        <source>not yet, opening</source>
+        <translation>todavía no, abriéndose</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="134"/>
+        <source>no, closed</source>
+        <translation>no, cerrado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="136"/>
+        <source>  writing: %1</source>
+        <translation>  escribe: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="137"/>
+        <source>  writing: %1: %2</source>
+        <translation>  escribe: %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="139"/>
+        <source>  lost: %1 records (%2)</source>
+        <translation>  perdidos: %1 registros (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="142"/>
+        <source>  not read: %1</source>
+        <translation>  no leído: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="145"/>
+        <source>  %1 joints and %2 events, %3 and %4 of them not yet published; %5 waiting in memory</source>
+        <translation>  %1 soldaduras y %2 eventos, de ellos %3 y %4 aún sin publicar; %5 esperando en memoria</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="151"/>
+        <source>  from %1 to %2</source>
+        <translation>  de %1 a %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="154"/>
+        <source>  kept without a time limit; %1 bytes on disk</source>
+        <translation>  conservado sin límite de tiempo; %1 bytes en disco</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="156"/>
+        <source>  kept for %1 days; %2 bytes on disk</source>
+        <translation>  conservado %1 días; %2 bytes en disco</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreport.cpp" line="237"/>
         <source>  What to check:</source>
         <translation>  Qué comprobar:</translation>
     </message>
@@ -6024,88 +6089,88 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="45"/>
+        <location filename="../app/gui/mainwindow.cpp" line="46"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="112"/>
+        <location filename="../app/gui/mainwindow.cpp" line="113"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <location filename="../app/gui/mainwindow.cpp" line="114"/>
         <source>Work &amp;context…</source>
         <translation>&amp;Contexto de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="117"/>
+        <location filename="../app/gui/mainwindow.cpp" line="118"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="119"/>
+        <location filename="../app/gui/mainwindow.cpp" line="120"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="120"/>
+        <location filename="../app/gui/mainwindow.cpp" line="121"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="121"/>
+        <location filename="../app/gui/mainwindow.cpp" line="122"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="129"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Límites de soldadura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="130"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="131"/>
+        <location filename="../app/gui/mainwindow.cpp" line="132"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="133"/>
+        <location filename="../app/gui/mainwindow.cpp" line="134"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="134"/>
+        <location filename="../app/gui/mainwindow.cpp" line="135"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="208"/>
+        <location filename="../app/gui/mainwindow.cpp" line="209"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="213"/>
+        <location filename="../app/gui/mainwindow.cpp" line="214"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="218"/>
+        <location filename="../app/gui/mainwindow.cpp" line="219"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="227"/>
-        <location filename="../app/gui/mainwindow.cpp" line="230"/>
+        <location filename="../app/gui/mainwindow.cpp" line="229"/>
+        <location filename="../app/gui/mainwindow.cpp" line="232"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="231"/>
+        <location filename="../app/gui/mainwindow.cpp" line="233"/>
         <source>Written:
 %1
 
@@ -6116,12 +6181,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="239"/>
+        <location filename="../app/gui/mainwindow.cpp" line="241"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="240"/>
+        <location filename="../app/gui/mainwindow.cpp" line="242"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>

@@ -8,6 +8,7 @@
 #include "journalstatusbutton.h"
 
 #include "journal/jointstatistics.h"
+#include "journal/journalhealth.h"
 #include "linkstatuslabel.h"
 #include "pages/jointspage.h"
 #include "pages/pagefactory.h"
@@ -221,6 +222,7 @@ void MainWindow::writeSupportReport() {
         return;
     QJsonObject report = model::supportReportJson(m_session);
     (void)m_journal.flush(2000); // the last joints count too
+    report.insert(QStringLiteral("journal"), journal::journalHealth(m_journal));
     report.insert(QStringLiteral("joints"), journal::lastDayOfJoints(m_journal.path()));
     const auto files = model::writeSupportReport(report, folder);
     if (!files) {

@@ -120,6 +120,43 @@ QString jointStatisticsText(const QJsonObject &joints) {
     }
     return out.join(QLatin1Char('\n'));
 }
+// "Journal: PATH", whether it writes, what it holds, what it lost (journal/journalhealth.h).
+QString journalHealthText(const QJsonObject &j) {
+    const auto number = [&j](const QString &name) {
+        return QString::number(j.value(name).toInteger());
+    };
+    const auto text = [&j](const QString &name) { return j.value(name).toString(); };
+    QStringList out{Tr::tr("Journal: %1").arg(text(QStringLiteral("path")))};
+    const QString state = text(QStringLiteral("state"));
+    const QString writing = state == QLatin1String("ready")     ? Tr::tr("yes")
+                            : state == QLatin1String("failed")  ? Tr::tr("no")
+                            : state == QLatin1String("opening") ? Tr::tr("not yet, opening")
+                                                                : Tr::tr("no, closed");
+    const QString error = text(QStringLiteral("error"));
+    out << (error.isEmpty() ? Tr::tr("  writing: %1").arg(writing)
+                            : Tr::tr("  writing: %1: %2").arg(writing, error));
+    if (j.value(QStringLiteral("lost")).toInteger() > 0)
+        out << Tr::tr("  lost: %1 records (%2)")
+                   .arg(number(QStringLiteral("lost")), text(QStringLiteral("lossReason")));
+    if (j.contains(QStringLiteral("readError"))) {
+        out << Tr::tr("  not read: %1").arg(text(QStringLiteral("readError")));
+        return out.join(QLatin1Char('\n'));
+    }
+    out << Tr::tr("  %1 joints and %2 events, %3 and %4 of them not yet published; "
+                  "%5 waiting in memory")
+               .arg(number(QStringLiteral("joints")), number(QStringLiteral("events")),
+                    number(QStringLiteral("unsentJoints")), number(QStringLiteral("unsentEvents")),
+                    number(QStringLiteral("pending")));
+    if (j.contains(QStringLiteral("oldest")))
+        out << Tr::tr("  from %1 to %2")
+                   .arg(text(QStringLiteral("oldest")), text(QStringLiteral("newest")));
+    const qint64 days = j.value(QStringLiteral("retentionDays")).toInteger();
+    out << (days == 0 ? Tr::tr("  kept without a time limit; %1 bytes on disk")
+                            .arg(number(QStringLiteral("bytes")))
+                      : Tr::tr("  kept for %1 days; %2 bytes on disk")
+                            .arg(QString::number(days), number(QStringLiteral("bytes"))));
+    return out.join(QLatin1Char('\n'));
+}
 } // namespace
 
 QJsonObject supportReportJson(Session &session, int recentEvents) {
@@ -207,6 +244,8 @@ QString supportReportText(const QJsonObject &r) {
         }
         out << QString();
     }
+    if (r.contains(QStringLiteral("journal")))
+        out << journalHealthText(r.value(QStringLiteral("journal")).toObject()) << QString();
     if (r.contains(QStringLiteral("joints")))
         out << jointStatisticsText(r.value(QStringLiteral("joints")).toObject()) << QString();
     out << Tr::tr("Recent events:");

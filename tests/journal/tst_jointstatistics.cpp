@@ -1,9 +1,11 @@
 // The support report's joint statistics: per device and port, the last 24 hours of the journal
 // counted by verdict with the median and 95th percentile recovery; older joints left out; a
-// journal that cannot be read is said in the report instead of stopping it.
+// journal that cannot be read is said in the report instead of stopping it. The report also
+// says where the journal is, whether it writes and what it holds.
 #include "journalfixture.h"
 
 #include "journal/jointstatistics.h"
+#include "journal/journalhealth.h"
 #include "model/supportreport.h"
 
 #include <QDateTime>
@@ -20,6 +22,7 @@ class TestJointStatistics : public QObject {
 private Q_SLOTS:
     void theLastDayIsCountedPerPortByVerdictWithRecoveryPercentiles();
     void anUnreadableJournalIsSaidInTheReport();
+    void theReportSaysWhereTheJournalIsWhetherItWritesAndWhatItHolds();
 };
 
 void TestJointStatistics::theLastDayIsCountedPerPortByVerdictWithRecoveryPercentiles() {
@@ -82,6 +85,34 @@ void TestJointStatistics::anUnreadableJournalIsSaidInTheReport() {
     QVERIFY2(text.contains(QStringLiteral("Joints of the last 24 hours: not read: ")),
              qPrintable(text));
     QVERIFY2(text.contains(missing), qPrintable(text));
+}
+
+void TestJointStatistics::theReportSaysWhereTheJournalIsWhetherItWritesAndWhatItHolds() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+    Journal journal(path, quickOptions());
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    for (int i = 0; i < 3; ++i)
+        journal.append(sampleJoint(i, now - 60'000 + i * 1000, 1));
+    for (int i = 0; i < 2; ++i)
+        journal.append(sampleEvent(i, now - 30'000 + i));
+    QVERIFY(journal.flush());
+    const QJsonObject health = journalHealth(journal);
+    QCOMPARE(health.value(QStringLiteral("state")).toString(), QStringLiteral("ready"));
+    QCOMPARE(health.value(QStringLiteral("joints")).toInteger(), 3);
+    QCOMPARE(health.value(QStringLiteral("events")).toInteger(), 2);
+    QCOMPARE(health.value(QStringLiteral("retentionDays")).toInteger(), 0);
+    QVERIFY(health.value(QStringLiteral("bytes")).toInteger() > 0);
+
+    const QString text = model::supportReportText({{QStringLiteral("journal"), health}});
+    QVERIFY2(text.contains(QStringLiteral("Journal: ") + path), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("  writing: yes\n")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("3 joints and 2 events, 3 and 2 of them not yet "
+                                          "published; 0 waiting in memory")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("kept without a time limit")), qPrintable(text));
+    QVERIFY2(!text.contains(QStringLiteral("lost:")), qPrintable(text));
 }
 
 QTEST_GUILESS_MAIN(TestJointStatistics)
