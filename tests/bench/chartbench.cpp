@@ -66,7 +66,9 @@ void fill(Telemetry &telemetry, QList<ChartChannel> &channels) {
         c.id = QStringLiteral("port%1").arg(p);
         c.port = p;
         c.series = series;
-        telemetry.ensureBuffer(c.key, series);
+        // One tier: the day at full rate, so the figures stay comparable with earlier runs
+        // (tipscope-bench fleet-memory measures the tiered buffers).
+        telemetry.ensureBuffer(c.key, series, kSamples);
         channels.append(c);
     }
     quint32 random = 1;
@@ -202,12 +204,6 @@ double naiveUpdateMs(const Telemetry &telemetry, const QList<ChartChannel> &cs,
     }
     const double gathered = double(timer.nsecsElapsed()) / 1e6;
     return gathered + chart.showMs(points, kStartMs, kStartMs + kDayMs);
-}
-
-void waitMs(int ms) {
-    QEventLoop loop;
-    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
-    loop.exec();
 }
 
 // CPU share of this process, in percent of one core, over `seconds` with `page` shown.
