@@ -95,6 +95,11 @@ std::optional<qint64> processCpuUs(qint64 pid) {
     return ticks * 1'000'000 / qMax(1L, ticksPerSecond);
 }
 
+QString optionValue(const QStringList &args, const char *name, const QString &fallback) {
+    const qsizetype i = args.indexOf(QLatin1String(name));
+    return i >= 0 ? args.value(i + 1, fallback) : fallback;
+}
+
 qint64 selfStatusBytes(const char *field) {
     QFile f(QStringLiteral("/proc/self/status"));
     if (!f.open(QIODevice::ReadOnly | QIODevice::Text))

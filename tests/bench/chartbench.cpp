@@ -304,8 +304,7 @@ int runChartBench(const QStringList &args) {
         return 0;
     }
     const auto option = [&args](const char *name, const QString &fallback) {
-        const qsizetype i = args.indexOf(QLatin1String(name));
-        return i >= 0 ? args.value(i + 1, fallback) : fallback;
+        return optionValue(args, name, fallback);
     };
     const int seconds = qMax(1, option("--seconds", QStringLiteral("60")).toInt());
     const bool baseline = !args.contains(QStringLiteral("--no-baseline"));

@@ -181,8 +181,7 @@ int runFleetBench(const QStringList &args) {
         return 0;
     }
     const auto option = [&args](const char *name, const QString &fallback) {
-        const qsizetype i = args.indexOf(QLatin1String(name));
-        return i >= 0 ? args.value(i + 1, fallback) : fallback;
+        return optionValue(args, name, fallback);
     };
     const int seconds = qMax(1, option("--seconds", QStringLiteral("30")).toInt());
     const double hz = option("--hz", QStringLiteral("0")).toDouble();
