@@ -27,12 +27,12 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="105"/>
+        <location filename="../lib/model/appsettings.cpp" line="116"/>
         <source>choose a serial port</source>
         <translation>wählen Sie eine serielle Schnittstelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="113"/>
+        <location filename="../lib/model/appsettings.cpp" line="124"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; hat nicht die Form HOST:PORT (zum Beispiel 192.168.1.20:4001)</translation>
     </message>
@@ -5759,117 +5759,117 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="97"/>
         <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
         <translation>Doppelklick auf eine Lötstelle oder Eingabetaste zeigt sie auf der Seite Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
         <source>All devices</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="132"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="138"/>
         <source>All ports</source>
         <translation>Alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="134"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="142"/>
         <source>all tools</source>
         <translation>alle Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
         <source>All verdicts</source>
         <translation>Alle Bewertungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last hour</source>
         <translation>Letzte Stunde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last 24 hours</source>
         <translation>Letzte 24 Stunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last 7 days</source>
         <translation>Letzte 7 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last 30 days</source>
         <translation>Letzte 30 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>All times</source>
         <translation>Gesamte Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
         <source>all work orders</source>
         <translation>alle Aufträge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>Reload</source>
         <translation>Neu laden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Read the journal again</source>
         <translation>Das Journal neu lesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Export CSV…</source>
         <translation>CSV exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Die aufgeführten Lötstellen als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Verdict</source>
         <translation>Bewertung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Work order</source>
         <translation>Auftrag</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n Lötstelle aufgeführt.</numerusform>
@@ -5877,22 +5877,22 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="259"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="272"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Nur die neuesten %1 aus dem Journal: schränken Sie den Filter ein, um ältere zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="263"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="276"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>Das Journal konnte nicht gelesen werden (%1): nur die Lötstellen dieser Sitzung sind aufgeführt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="267"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="280"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Noch kein Journal: nur die Lötstellen dieser Sitzung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="359"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n Lötstelle in %1 geschrieben.</numerusform>
@@ -5900,12 +5900,12 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
         <source>Export joints</source>
         <translation>Lötstellen exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
@@ -6054,28 +6054,28 @@ Zurücksetzen?</translation>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="205"/>
+        <location filename="../app/gui/mainwindow.cpp" line="207"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="210"/>
+        <location filename="../app/gui/mainwindow.cpp" line="212"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="215"/>
+        <location filename="../app/gui/mainwindow.cpp" line="217"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="224"/>
-        <location filename="../app/gui/mainwindow.cpp" line="227"/>
+        <location filename="../app/gui/mainwindow.cpp" line="226"/>
+        <location filename="../app/gui/mainwindow.cpp" line="229"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="228"/>
+        <location filename="../app/gui/mainwindow.cpp" line="230"/>
         <source>Written:
 %1
 
@@ -6086,12 +6086,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="236"/>
+        <location filename="../app/gui/mainwindow.cpp" line="238"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="237"/>
+        <location filename="../app/gui/mainwindow.cpp" line="239"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
@@ -6401,49 +6401,69 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation> ms</translation>
     </message>
     <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="40"/>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
+        <source> h</source>
+        <translation> h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43"/>
         <source>Follow the system</source>
         <translation>Systemsprache</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
         <source>Temperature unit:</source>
         <translation>Temperatureinheit:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="48"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
         <source>Live values (visible ports) every:</source>
         <translation>Live-Werte (sichtbare Ports) alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
         <source>Errors, alarms and status every:</source>
         <translation>Fehler, Alarme und Status alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
         <source>Counters every:</source>
         <translation>Zähler alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Antwortzeit des Geräts (zur Übertragungszeit addiert):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="54"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Wiederholungen nach verlorener oder beschädigter Antwort:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
+        <source>Chart history at full rate:</source>
+        <translation>Diagrammverlauf in voller Rate:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="56"/>
+        <source>Chart history in all:</source>
+        <translation>Diagrammverlauf insgesamt:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="57"/>
         <source>Language (on the next start):</source>
         <translation>Sprache (beim nächsten Start):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
-        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
-        <translation>Auf der Leitung wird immer °C übertragen; die Einheit ändert nur, was Sie sehen und eingeben. Die Farben folgen dem Desktop-Design.</translation>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="59"/>
+        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme. Chart history older than the full-rate part keeps min, max and mean per 5 s (about 1.4 MB a port for a day); it applies to devices found from then on.</source>
+        <translation>Auf der Leitung wird immer °C übertragen; die Einheit ändert nur, was Sie sehen und eingeben. Die Farben folgen dem Desktop-Design. Vom Diagrammverlauf, der älter ist als der Teil in voller Rate, bleiben Minimum, Maximum und Mittelwert je 5 s (etwa 1,4 MB je Port für einen Tag); das gilt für Geräte, die danach gefunden werden.</translation>
     </message>
     <message>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37"/>

@@ -27,12 +27,12 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="105"/>
+        <location filename="../lib/model/appsettings.cpp" line="116"/>
         <source>choose a serial port</source>
         <translation>elija un puerto serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="113"/>
+        <location filename="../lib/model/appsettings.cpp" line="124"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; no tiene la forma HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
     </message>
@@ -5760,117 +5760,117 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="91"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="97"/>
         <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
         <translation>Doble clic en una soldadura, o Intro, para verla en la página Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="130"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
         <source>All devices</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="132"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="138"/>
         <source>All ports</source>
         <translation>Todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="134"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="142"/>
         <source>all tools</source>
         <translation>todas las herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
         <source>All verdicts</source>
         <translation>Todos los veredictos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last hour</source>
         <translation>Última hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last 24 hours</source>
         <translation>Últimas 24 horas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
         <source>Last 7 days</source>
         <translation>Últimos 7 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last 30 days</source>
         <translation>Últimos 30 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>All times</source>
         <translation>Todo el tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
         <source>all work orders</source>
         <translation>todas las órdenes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>Reload</source>
         <translation>Recargar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Read the journal again</source>
         <translation>Volver a leer el registro</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Export CSV…</source>
         <translation>Exportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="153"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Guardar las soldaduras de la lista como archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Verdict</source>
         <translation>Veredicto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Work order</source>
         <translation>Orden de trabajo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n soldadura en la lista.</numerusform>
@@ -5878,22 +5878,22 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="259"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="272"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Solo las %1 más recientes del registro: acote el filtro para ver las anteriores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="263"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="276"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>No se pudo leer el registro (%1): solo se listan las soldaduras de esta sesión.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="267"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="280"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Aún no hay registro: solo las soldaduras de esta sesión.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="359"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n soldadura escrita en %1.</numerusform>
@@ -5901,12 +5901,12 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
         <source>Export joints</source>
         <translation>Exportar soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="358"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
@@ -6055,28 +6055,28 @@ Reset it?</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="205"/>
+        <location filename="../app/gui/mainwindow.cpp" line="207"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="210"/>
+        <location filename="../app/gui/mainwindow.cpp" line="212"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="215"/>
+        <location filename="../app/gui/mainwindow.cpp" line="217"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="224"/>
-        <location filename="../app/gui/mainwindow.cpp" line="227"/>
+        <location filename="../app/gui/mainwindow.cpp" line="226"/>
+        <location filename="../app/gui/mainwindow.cpp" line="229"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="228"/>
+        <location filename="../app/gui/mainwindow.cpp" line="230"/>
         <source>Written:
 %1
 
@@ -6087,12 +6087,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="236"/>
+        <location filename="../app/gui/mainwindow.cpp" line="238"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="237"/>
+        <location filename="../app/gui/mainwindow.cpp" line="239"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
@@ -6402,49 +6402,69 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation> ms</translation>
     </message>
     <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="40"/>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="41"/>
+        <source> h</source>
+        <translation> h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43"/>
         <source>Follow the system</source>
         <translation>Idioma del sistema</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="47"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
         <source>Temperature unit:</source>
         <translation>Unidad de temperatura:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="48"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
         <source>Live values (visible ports) every:</source>
         <translation>Valores en tiempo real (puertos visibles) cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
         <source>Errors, alarms and status every:</source>
         <translation>Errores, alarmas y estado cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
         <source>Counters every:</source>
         <translation>Contadores cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Tiempo de respuesta del equipo (se suma al tiempo de transmisión):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="54"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Reintentos tras una respuesta perdida o dañada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="53"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
+        <source>Chart history at full rate:</source>
+        <translation>Historial de gráficos a frecuencia completa:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="56"/>
+        <source>Chart history in all:</source>
+        <translation>Historial de gráficos en total:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="57"/>
         <source>Language (on the next start):</source>
         <translation>Idioma (en el próximo inicio):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="55"/>
-        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
-        <translation>En la línea siempre viaja °C; la unidad solo cambia lo que ve y escribe. Los colores siguen el tema del escritorio.</translation>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="59"/>
+        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme. Chart history older than the full-rate part keeps min, max and mean per 5 s (about 1.4 MB a port for a day); it applies to devices found from then on.</source>
+        <translation>En la línea siempre viaja °C; la unidad solo cambia lo que ve y escribe. Los colores siguen el tema del escritorio. Del historial de gráficos más antiguo que la parte a frecuencia completa se guardan mínimo, máximo y media cada 5 s (unos 1,4 MB por puerto y día); se aplica a los dispositivos encontrados a partir de entonces.</translation>
     </message>
     <message>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="37"/>

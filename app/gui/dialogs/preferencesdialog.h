@@ -1,5 +1,6 @@
-// PreferencesDialog: temperature unit, poll rates, answer timeout and retries, language (on the
-// next start). The theme follows the desktop's; nothing to choose.
+// PreferencesDialog: temperature unit, poll rates, answer timeout and retries, how much chart
+// history is kept (for devices found from then on), language (on the next start). The theme follows
+// the desktop's; nothing to choose.
 #pragma once
 
 #include "model/appsettings.h"
@@ -25,6 +26,8 @@ private:
     QSpinBox *m_counters;
     QSpinBox *m_turnaround;
     QSpinBox *m_retries;
+    QSpinBox *m_fullRate;
+    QSpinBox *m_history;
     QComboBox *m_language;
 };
 
