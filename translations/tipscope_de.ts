@@ -1191,7 +1191,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="195"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="206"/>
         <source>the file could not be written</source>
         <translation>die Datei konnte nicht geschrieben werden</translation>
     </message>
@@ -4214,64 +4214,70 @@ Dauerhaft mit dieser udev-Regel:
         <translation> · Aufzeichnung in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="56"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="57"/>
         <source>there is no chart to export</source>
         <translation>es gibt kein Diagramm zum Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="47"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="48"/>
         <source>%1 – %2 (%3)</source>
         <translation>%1 – %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="110"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="111"/>
         <source>the image could not be encoded</source>
         <translation>das Bild konnte nicht erzeugt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="134"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
         <source>%1 × %2 (twice the charts on screen)</source>
         <translation>%1 × %2 (doppelte Größe der Diagramme am Bildschirm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="136"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="139"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="151"/>
         <source>Export chart as PNG</source>
         <translation>Diagramm als PNG exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="139"/>
         <source>Image size in pixels:</source>
         <translation>Bildgröße in Pixeln:</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="151"/>
         <source>Export chart data as CSV</source>
         <translation>Diagrammdaten als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="166"/>
+        <source>The file holds every sample from %1 on. The chart&apos;s older history is kept only as min and max per few seconds, which a file of samples cannot hold.</source>
+        <translation>Die Datei enthält jeden Messwert ab %1. Der ältere Verlauf des Diagramms wird nur als Minimum und Maximum je einige Sekunden aufbewahrt, und das kann eine Datei von Messwerten nicht enthalten.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="162"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="165"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="162"/>
         <source>Export failed: %1</source>
         <translation>Export fehlgeschlagen: %1</translation>
     </message>

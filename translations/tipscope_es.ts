@@ -1191,7 +1191,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="195"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="206"/>
         <source>the file could not be written</source>
         <translation>no se pudo escribir el archivo</translation>
     </message>
@@ -4215,64 +4215,70 @@ Hágalo permanente con esta regla de udev:
         <translation> · grabando en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="56"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="57"/>
         <source>there is no chart to export</source>
         <translation>no hay ningún gráfico que exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="47"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="48"/>
         <source>%1 – %2 (%3)</source>
         <translation>%1 – %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="110"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="111"/>
         <source>the image could not be encoded</source>
         <translation>no se pudo generar la imagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="134"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
         <source>%1 × %2 (twice the charts on screen)</source>
         <translation>%1 × %2 (el doble de los gráficos en pantalla)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="136"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="139"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="151"/>
         <source>Export chart as PNG</source>
         <translation>Exportar gráfico como PNG</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="139"/>
         <source>Image size in pixels:</source>
         <translation>Tamaño de la imagen en píxeles:</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="151"/>
         <source>Export chart data as CSV</source>
         <translation>Exportar datos del gráfico como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>PNG image (*.png)</source>
         <translation>Imagen PNG (*.png)</translation>
     </message>
     <message>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="166"/>
+        <source>The file holds every sample from %1 on. The chart&apos;s older history is kept only as min and max per few seconds, which a file of samples cannot hold.</source>
+        <translation>El archivo contiene cada muestra a partir de %1. El historial más antiguo del gráfico solo se guarda como mínimo y máximo cada pocos segundos, y eso no cabe en un archivo de muestras.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="162"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="165"/>
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="162"/>
         <source>Export failed: %1</source>
         <translation>Falló la exportación: %1</translation>
     </message>
