@@ -27,12 +27,12 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="105"/>
+        <location filename="../lib/model/appsettings.cpp" line="116"/>
         <source>choose a serial port</source>
         <translation>wählen Sie eine serielle Schnittstelle</translation>
     </message>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="113"/>
+        <location filename="../lib/model/appsettings.cpp" line="124"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; hat nicht die Form HOST:PORT (zum Beispiel 192.168.1.20:4001)</translation>
     </message>
@@ -1191,7 +1191,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="195"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="206"/>
         <source>the file could not be written</source>
         <translation>die Datei konnte nicht geschrieben werden</translation>
     </message>
@@ -4308,64 +4308,70 @@ Dauerhaft mit dieser udev-Regel:
         <translation> · Aufzeichnung in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="56"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="57"/>
         <source>there is no chart to export</source>
         <translation>es gibt kein Diagramm zum Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="47"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="48"/>
         <source>%1 – %2 (%3)</source>
         <translation>%1 – %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="110"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="111"/>
         <source>the image could not be encoded</source>
         <translation>das Bild konnte nicht erzeugt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="134"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
         <source>%1 × %2 (twice the charts on screen)</source>
         <translation>%1 × %2 (doppelte Größe der Diagramme am Bildschirm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="136"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="139"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="151"/>
         <source>Export chart as PNG</source>
         <translation>Diagramm als PNG exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="139"/>
         <source>Image size in pixels:</source>
         <translation>Bildgröße in Pixeln:</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="151"/>
         <source>Export chart data as CSV</source>
         <translation>Diagrammdaten als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="166"/>
+        <source>The file holds every sample from %1 on. The chart&apos;s older history is kept only as min and max per few seconds, which a file of samples cannot hold.</source>
+        <translation>Die Datei enthält jeden Messwert ab %1. Der ältere Verlauf des Diagramms wird nur als Minimum und Maximum je einige Sekunden aufbewahrt, und das kann eine Datei von Messwerten nicht enthalten.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="162"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="165"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="162"/>
         <source>Export failed: %1</source>
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
@@ -6148,28 +6154,28 @@ Zurücksetzen?</translation>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="209"/>
+        <location filename="../app/gui/mainwindow.cpp" line="211"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="214"/>
+        <location filename="../app/gui/mainwindow.cpp" line="216"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="219"/>
+        <location filename="../app/gui/mainwindow.cpp" line="221"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="229"/>
-        <location filename="../app/gui/mainwindow.cpp" line="232"/>
+        <location filename="../app/gui/mainwindow.cpp" line="231"/>
+        <location filename="../app/gui/mainwindow.cpp" line="234"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="233"/>
+        <location filename="../app/gui/mainwindow.cpp" line="235"/>
         <source>Written:
 %1
 
@@ -6180,12 +6186,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="241"/>
+        <location filename="../app/gui/mainwindow.cpp" line="243"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="242"/>
+        <location filename="../app/gui/mainwindow.cpp" line="244"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
@@ -6495,69 +6501,89 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation> ms</translation>
     </message>
     <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43"/>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44"/>
+        <source> h</source>
+        <translation> h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="46"/>
         <source>Follow the system</source>
         <translation>Systemsprache</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
         <source> days</source>
         <translation> Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
         <source>Keep everything</source>
         <translation>Alles behalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="54"/>
         <source>Joints and events older than this are deleted from the journal, a little at a time so polling never waits. Every TipScope program that keeps this journal uses the same retention.</source>
         <translation>Lötstellen und Ereignisse, die älter sind, werden nach und nach aus dem Journal gelöscht, sodass die Abfrage nie wartet. Jedes TipScope-Programm, das dieses Journal führt, verwendet dieselbe Aufbewahrungsdauer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="56"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="58"/>
         <source>Temperature unit:</source>
         <translation>Temperatureinheit:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="57"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="59"/>
         <source>Live values (visible ports) every:</source>
         <translation>Live-Werte (sichtbare Ports) alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="58"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="60"/>
         <source>Errors, alarms and status every:</source>
         <translation>Fehler, Alarme und Status alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="59"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="61"/>
         <source>Counters every:</source>
         <translation>Zähler alle:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="60"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="62"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Antwortzeit des Geräts (zur Übertragungszeit addiert):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="61"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="63"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Wiederholungen nach verlorener oder beschädigter Antwort:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="62"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="64"/>
+        <source>Chart history at full rate:</source>
+        <translation>Diagrammverlauf in voller Rate:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="65"/>
+        <source>Chart history in all:</source>
+        <translation>Diagrammverlauf insgesamt:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="66"/>
         <source>Language (on the next start):</source>
         <translation>Sprache (beim nächsten Start):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="63"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="67"/>
         <source>Keep journal records for:</source>
         <translation>Journaleinträge behalten für:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="65"/>
-        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
-        <translation>Auf der Leitung wird immer °C übertragen; die Einheit ändert nur, was Sie sehen und eingeben. Die Farben folgen dem Desktop-Design.</translation>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="69"/>
+        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme. Chart history older than the full-rate part keeps min, max and mean per 5 s (about 1.4 MB a port for a day); it applies to devices found from then on.</source>
+        <translation>Auf der Leitung wird immer °C übertragen; die Einheit ändert nur, was Sie sehen und eingeben. Die Farben folgen dem Desktop-Design. Vom Diagrammverlauf, der älter ist als der Teil in voller Rate, bleiben Minimum, Maximum und Mittelwert je 5 s (etwa 1,4 MB je Port für einen Tag); das gilt für Geräte, die danach gefunden werden.</translation>
     </message>
     <message>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="40"/>

@@ -27,12 +27,12 @@
 <context>
     <name>AppSettings</name>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="105"/>
+        <location filename="../lib/model/appsettings.cpp" line="116"/>
         <source>choose a serial port</source>
         <translation>elija un puerto serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/appsettings.cpp" line="113"/>
+        <location filename="../lib/model/appsettings.cpp" line="124"/>
         <source>&apos;%1&apos; is not HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>&apos;%1&apos; no tiene la forma HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
     </message>
@@ -1191,7 +1191,7 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="195"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="206"/>
         <source>the file could not be written</source>
         <translation>no se pudo escribir el archivo</translation>
     </message>
@@ -4309,64 +4309,70 @@ Hágalo permanente con esta regla de udev:
         <translation> · grabando en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="56"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="57"/>
         <source>there is no chart to export</source>
         <translation>no hay ningún gráfico que exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="47"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="48"/>
         <source>%1 – %2 (%3)</source>
         <translation>%1 – %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="110"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="111"/>
         <source>the image could not be encoded</source>
         <translation>no se pudo generar la imagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="134"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
         <source>%1 × %2 (twice the charts on screen)</source>
         <translation>%1 × %2 (el doble de los gráficos en pantalla)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="135"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="136"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="139"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="151"/>
         <source>Export chart as PNG</source>
         <translation>Exportar gráfico como PNG</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="138"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="139"/>
         <source>Image size in pixels:</source>
         <translation>Tamaño de la imagen en píxeles:</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="150"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="151"/>
         <source>Export chart data as CSV</source>
         <translation>Exportar datos del gráfico como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>PNG image (*.png)</source>
         <translation>Imagen PNG (*.png)</translation>
     </message>
     <message>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="166"/>
+        <source>The file holds every sample from %1 on. The chart&apos;s older history is kept only as min and max per few seconds, which a file of samples cannot hold.</source>
+        <translation>El archivo contiene cada muestra a partir de %1. El historial más antiguo del gráfico solo se guarda como mínimo y máximo cada pocos segundos, y eso no cabe en un archivo de muestras.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="152"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="162"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="165"/>
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageexport.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageexport.cpp" line="162"/>
         <source>Export failed: %1</source>
         <translation>Falló la exportación: %1</translation>
     </message>
@@ -6149,28 +6155,28 @@ Reset it?</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="209"/>
+        <location filename="../app/gui/mainwindow.cpp" line="211"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="214"/>
+        <location filename="../app/gui/mainwindow.cpp" line="216"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="219"/>
+        <location filename="../app/gui/mainwindow.cpp" line="221"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="229"/>
-        <location filename="../app/gui/mainwindow.cpp" line="232"/>
+        <location filename="../app/gui/mainwindow.cpp" line="231"/>
+        <location filename="../app/gui/mainwindow.cpp" line="234"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="233"/>
+        <location filename="../app/gui/mainwindow.cpp" line="235"/>
         <source>Written:
 %1
 
@@ -6181,12 +6187,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="241"/>
+        <location filename="../app/gui/mainwindow.cpp" line="243"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="242"/>
+        <location filename="../app/gui/mainwindow.cpp" line="244"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
@@ -6496,69 +6502,89 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation> ms</translation>
     </message>
     <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="43"/>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="44"/>
+        <source> h</source>
+        <translation> h</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="46"/>
         <source>Follow the system</source>
         <translation>Idioma del sistema</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="49"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="51"/>
         <source> days</source>
         <translation> días</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="50"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
         <source>Keep everything</source>
         <translation>Conservarlo todo</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="52"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="54"/>
         <source>Joints and events older than this are deleted from the journal, a little at a time so polling never waits. Every TipScope program that keeps this journal uses the same retention.</source>
         <translation>Las soldaduras y los eventos más antiguos se borran del diario poco a poco, sin hacer esperar nunca a la consulta. Todos los programas de TipScope que llevan este diario usan el mismo tiempo de conservación.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="56"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="58"/>
         <source>Temperature unit:</source>
         <translation>Unidad de temperatura:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="57"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="59"/>
         <source>Live values (visible ports) every:</source>
         <translation>Valores en tiempo real (puertos visibles) cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="58"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="60"/>
         <source>Errors, alarms and status every:</source>
         <translation>Errores, alarmas y estado cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="59"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="61"/>
         <source>Counters every:</source>
         <translation>Contadores cada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="60"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="62"/>
         <source>Device turnaround (added to the wire time):</source>
         <translation>Tiempo de respuesta del equipo (se suma al tiempo de transmisión):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="61"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="63"/>
         <source>Retries after a lost or corrupted answer:</source>
         <translation>Reintentos tras una respuesta perdida o dañada:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="62"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="64"/>
+        <source>Chart history at full rate:</source>
+        <translation>Historial de gráficos a frecuencia completa:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="65"/>
+        <source>Chart history in all:</source>
+        <translation>Historial de gráficos en total:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="66"/>
         <source>Language (on the next start):</source>
         <translation>Idioma (en el próximo inicio):</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="63"/>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="67"/>
         <source>Keep journal records for:</source>
         <translation>Conservar los registros del diario durante:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="65"/>
-        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme.</source>
-        <translation>En la línea siempre viaja °C; la unidad solo cambia lo que ve y escribe. Los colores siguen el tema del escritorio.</translation>
+        <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="69"/>
+        <source>The wire always carries °C; the unit only changes what you see and type. The colours follow the desktop theme. Chart history older than the full-rate part keeps min, max and mean per 5 s (about 1.4 MB a port for a day); it applies to devices found from then on.</source>
+        <translation>En la línea siempre viaja °C; la unidad solo cambia lo que ve y escribe. Los colores siguen el tema del escritorio. Del historial de gráficos más antiguo que la parte a frecuencia completa se guardan mínimo, máximo y media cada 5 s (unos 1,4 MB por puerto y día); se aplica a los dispositivos encontrados a partir de entonces.</translation>
     </message>
     <message>
         <location filename="../app/gui/dialogs/preferencesdialog.cpp" line="40"/>

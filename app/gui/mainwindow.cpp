@@ -154,6 +154,8 @@ void MainWindow::applyPreferences(const AppSettings &settings) {
     m_session.scheduler().setInterval(PollClass::Live, settings.liveMs);
     m_session.scheduler().setInterval(PollClass::Status, settings.statusMs);
     m_session.scheduler().setInterval(PollClass::Counter, settings.counterMs);
+    // For the histories of the devices found from now on; those held keep their size.
+    m_session.telemetry().setTiers(settings.telemetryTiers());
     if (link::Line *line = m_session.line()) {
         link::QueueSettings q = line->queue().settings();
         q.turnaroundMs = settings.turnaroundMs;

@@ -60,6 +60,8 @@ AppSettings AppSettings::load(QSettings &s) {
                        {QStringLiteral("system"), QStringLiteral("en"), QStringLiteral("es"),
                         QStringLiteral("de")},
                        QStringLiteral("system"));
+    a.fullRateMinutes = intIn(s, "telemetry/fullRateMinutes", a.fullRateMinutes, 10, 24 * 60);
+    a.historyHours = intIn(s, "telemetry/historyHours", a.historyHours, 1, 7 * 24);
     return a;
 }
 
@@ -81,6 +83,15 @@ void AppSettings::save(QSettings &s) const {
     s.setValue(QStringLiteral("link/turnaroundMs"), turnaroundMs);
     s.setValue(QStringLiteral("link/retries"), retries);
     s.setValue(QStringLiteral("ui/language"), language);
+    s.setValue(QStringLiteral("telemetry/fullRateMinutes"), fullRateMinutes);
+    s.setValue(QStringLiteral("telemetry/historyHours"), historyHours);
+}
+
+TelemetryTiers AppSettings::telemetryTiers() const {
+    TelemetryTiers t;
+    t.fullRateMs = qint64(fullRateMinutes) * TelemetryTiers::kMinuteMs;
+    t.historyMs = qMax(t.fullRateMs, qint64(historyHours) * TelemetryTiers::kHourMs);
+    return t;
 }
 
 protocol::Outcome<Session::Settings> AppSettings::sessionSettings() const {

@@ -1,6 +1,7 @@
 // AppSettings: what TipScope remembers between runs (QSettings), read with validation so that
 // a value written by an older version, or edited by hand, falls back to its default instead of
-// reaching the line: the last connection, line settings, units, poll rates, timeouts, language.
+// reaching the line: the last connection, line settings, units, poll rates, timeouts, language,
+// and how much telemetry history is kept (TelemetryTiers: hours at full rate, hours in all).
 #pragma once
 
 #include "session.h"
@@ -32,9 +33,14 @@ struct AppSettings {
     int turnaroundMs = 100;
     int retries = 2;
     QString language = QStringLiteral("system");
+    int fullRateMinutes = int(TelemetryTiers::kDefaultFullRateMs / TelemetryTiers::kMinuteMs);
+    int historyHours = int(TelemetryTiers::kDefaultHistoryMs / TelemetryTiers::kHourMs);
 
     [[nodiscard]] static AppSettings load(QSettings &s);
     void save(QSettings &s) const;
+    // The tiers of the telemetry buffers made from now on; a history shorter than the full-rate
+    // part is all at full rate.
+    [[nodiscard]] TelemetryTiers telemetryTiers() const;
     // The session settings these describe, or why they cannot be used.
     [[nodiscard]] protocol::Outcome<Session::Settings> sessionSettings() const;
 };

@@ -1,10 +1,12 @@
 #include "benchsupport.h"
 
+#include <QEventLoop>
 #include <QFile>
 #include <QList>
 #include <QSysInfo>
 #include <QTextStream>
 #include <QThread>
+#include <QTimer>
 
 #include <algorithm>
 #include <cmath>
@@ -91,6 +93,27 @@ std::optional<qint64> processCpuUs(qint64 pid) {
     const long ticksPerSecond = ::sysconf(_SC_CLK_TCK);
     const qint64 ticks = fields[kUtime].toLongLong() + fields[kStime].toLongLong();
     return ticks * 1'000'000 / qMax(1L, ticksPerSecond);
+}
+
+QString optionValue(const QStringList &args, const char *name, const QString &fallback) {
+    const qsizetype i = args.indexOf(QLatin1String(name));
+    return i >= 0 ? args.value(i + 1, fallback) : fallback;
+}
+
+qint64 selfStatusBytes(const char *field) {
+    QFile f(QStringLiteral("/proc/self/status"));
+    if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
+        return -1;
+    for (QByteArray line = f.readLine(); !line.isEmpty(); line = f.readLine())
+        if (line.startsWith(field))
+            return line.mid(qstrlen(field)).trimmed().split(' ').first().toLongLong() * 1024;
+    return -1;
+}
+
+void waitMs(int ms) {
+    QEventLoop loop;
+    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+    loop.exec();
 }
 
 double quantile(QList<double> values, double p) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
 #include <optional>
 
 namespace tipscope::bench {
@@ -23,6 +24,15 @@ void printMachineContext();
 [[nodiscard]] qint64 selfCpuUs();
 // User plus system CPU time of another process from /proc/<pid>/stat; nullopt if unreadable.
 [[nodiscard]] std::optional<qint64> processCpuUs(qint64 pid);
+
+// The value after `--name` in a subcommand's arguments, or `fallback`.
+[[nodiscard]] QString optionValue(const QStringList &args, const char *name,
+                                  const QString &fallback);
+
+// A field of /proc/self/status in bytes ("VmRSS:", "VmHWM:"); -1 when unreadable.
+[[nodiscard]] qint64 selfStatusBytes(const char *field);
+// Runs the event loop for `ms`.
+void waitMs(int ms);
 
 // The p-quantile (0..1) of `values` by the nearest rank; 0 for an empty list.
 [[nodiscard]] double quantile(QList<double> values, double p);

@@ -66,7 +66,9 @@ void fill(Telemetry &telemetry, QList<ChartChannel> &channels) {
         c.id = QStringLiteral("port%1").arg(p);
         c.port = p;
         c.series = series;
-        telemetry.ensureBuffer(c.key, series);
+        // One tier: the day at full rate, so the figures stay comparable with earlier runs
+        // (tipscope-bench fleet-memory measures the tiered buffers).
+        telemetry.ensureBuffer(c.key, series, kSamples);
         channels.append(c);
     }
     quint32 random = 1;
@@ -204,12 +206,6 @@ double naiveUpdateMs(const Telemetry &telemetry, const QList<ChartChannel> &cs,
     return gathered + chart.showMs(points, kStartMs, kStartMs + kDayMs);
 }
 
-void waitMs(int ms) {
-    QEventLoop loop;
-    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
-    loop.exec();
-}
-
 // CPU share of this process, in percent of one core, over `seconds` with `page` shown.
 double cpuPercent(gui::MainWindow &window, gui::Page *page, int seconds) {
     window.pages().setCurrentWidget(page);
@@ -308,8 +304,7 @@ int runChartBench(const QStringList &args) {
         return 0;
     }
     const auto option = [&args](const char *name, const QString &fallback) {
-        const qsizetype i = args.indexOf(QLatin1String(name));
-        return i >= 0 ? args.value(i + 1, fallback) : fallback;
+        return optionValue(args, name, fallback);
     };
     const int seconds = qMax(1, option("--seconds", QStringLiteral("60")).toInt());
     const bool baseline = !args.contains(QStringLiteral("--no-baseline"));

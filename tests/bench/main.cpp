@@ -6,6 +6,7 @@
 // subcommand's figures, one "name: value unit" per line.
 #include "benchsupport.h"
 #include "chartbench.h"
+#include "fleetbench.h"
 #include "jointbench.h"
 #include "journalbench.h"
 #include "linkbench.h"
@@ -46,13 +47,17 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runMqttBench},
     {"replay", "reading recordings: speed and memory over file size (--mb N, --no-fifo)",
      tipscope::bench::runReplayBench},
+    {"fleet-memory",
+     "a day of 32 stations' telemetry at the demo's rates: tiered and single-tier memory "
+     "(--seconds N, --hz R, --stations S, --hours H)",
+     tipscope::bench::runFleetBench},
 };
 
 void printUsage(QTextStream &s) {
     s << "usage: tipscope-bench SUBCOMMAND [options]   (SUBCOMMAND --help for its options)\n\n"
          "subcommands:\n";
     for (const Subcommand &c : kSubcommands)
-        s << "  " << QString::fromLatin1(c.name).leftJustified(8) << c.summary << '\n';
+        s << "  " << QString::fromLatin1(c.name).leftJustified(13) << c.summary << '\n';
     s.flush();
 }
 

@@ -28,17 +28,6 @@ namespace {
 constexpr qint64 kT0 = 1'700'000'000'000;
 constexpr qint64 kMB = 1 << 20;
 
-// VmRSS or VmHWM of this process in bytes, from /proc/self/status; -1 when unreadable.
-qint64 statusBytes(const char *field) {
-    QFile f(QStringLiteral("/proc/self/status"));
-    if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
-        return -1;
-    for (QByteArray line = f.readLine(); !line.isEmpty(); line = f.readLine())
-        if (line.startsWith(field))
-            return line.mid(qstrlen(field)).trimmed().split(' ').first().toLongLong() * 1024;
-    return -1;
-}
-
 // Lets the peak resident set (VmHWM) start again from the current one (Linux 4.0 and later).
 void resetPeak() {
 #ifdef __GLIBC__
@@ -132,7 +121,7 @@ Result readAndMeasure(const QString &path, qint64 fileBytes) {
     Result r;
     r.fileBytes = fileBytes;
     resetPeak();
-    const qint64 before = statusBytes("VmRSS:");
+    const qint64 before = selfStatusBytes("VmRSS:");
     ChartCsvReader::Options options;
     options.progress = [&r](qint64 bytes) {
         r.readBytes = bytes;
@@ -142,7 +131,7 @@ Result readAndMeasure(const QString &path, qint64 fileBytes) {
     clock.start();
     const auto read = ChartCsvReader::readFile(path, options);
     r.seconds = double(clock.nsecsElapsed()) / 1e9;
-    r.peakAbove = statusBytes("VmHWM:") - before;
+    r.peakAbove = selfStatusBytes("VmHWM:") - before;
     if (read) {
         const model::ChartRecording *recording = read->get();
         r.held = recording->memoryBytes();

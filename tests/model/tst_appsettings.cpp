@@ -30,6 +30,8 @@ void TestAppSettings::roundTripsEverything() {
     a.unit = TemperatureUnit::Fahrenheit;
     a.liveMs = 500;
     a.language = QStringLiteral("de");
+    a.fullRateMinutes = 45;
+    a.historyHours = 48;
     a.save(s);
     const AppSettings b = AppSettings::load(s);
     QCOMPARE(int(b.kind), int(a.kind));
@@ -41,6 +43,10 @@ void TestAppSettings::roundTripsEverything() {
     QCOMPARE(int(b.unit), int(TemperatureUnit::Fahrenheit));
     QCOMPARE(b.liveMs, 500);
     QCOMPARE(b.language, QStringLiteral("de"));
+    QCOMPARE(b.fullRateMinutes, 45);
+    QCOMPARE(b.historyHours, 48);
+    QCOMPARE(b.telemetryTiers().fullRateMs, qint64(45) * 60 * 1000);
+    QCOMPARE(b.telemetryTiers().historyMs, qint64(48) * 3600 * 1000);
 }
 
 void TestAppSettings::malformedValuesFallBackToDefaults_data() {
@@ -57,6 +63,8 @@ void TestAppSettings::malformedValuesFallBackToDefaults_data() {
     QTest::newRow("language") << "ui/language" << QVariant(QStringLiteral("tlh"));
     QTest::newRow("tcp") << "connection/tcp" << QVariant(QStringLiteral("nohost"));
     QTest::newRow("binary") << "line/baud" << QVariant(QByteArray("\xff\xfe\x00", 3));
+    QTest::newRow("full rate") << "telemetry/fullRateMinutes" << QVariant(0);
+    QTest::newRow("history") << "telemetry/historyHours" << QVariant(100000);
 }
 
 void TestAppSettings::malformedValuesFallBackToDefaults() {
@@ -76,6 +84,9 @@ void TestAppSettings::malformedValuesFallBackToDefaults() {
     QCOMPARE(loaded.retries, defaults.retries);
     QCOMPARE(loaded.language, defaults.language);
     QCOMPARE(loaded.tcpAddress, defaults.tcpAddress);
+    QCOMPARE(loaded.fullRateMinutes, defaults.fullRateMinutes);
+    QCOMPARE(loaded.historyHours, defaults.historyHours);
+    QCOMPARE(loaded.telemetryTiers(), TelemetryTiers());
 }
 
 void TestAppSettings::unusableConnectionsAreRefusedWithAReason() {

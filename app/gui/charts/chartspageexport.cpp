@@ -13,6 +13,7 @@
 #include <QGuiApplication>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QScreen>
 #include <QTimeZone>
@@ -152,9 +153,20 @@ void ChartsPage::chooseAndExport(bool png) {
         png ? tr("PNG image (*.png)") : tr("CSV file (*.csv)"));
     if (path.isEmpty())
         return;
+    // Read before the export: the older tier keeps folding while the file is written.
+    const std::optional<qint64> fullRate =
+        png ? std::nullopt
+            : ChartCsvWriter::fullRateFrom(shownTelemetry(), shownChannels(), m_viewport.start());
     const QString error = png ? exportPng(path, *size) : exportCsv(path);
     if (!error.isEmpty())
         QMessageBox::warning(this, tr("Export"), tr("Export failed: %1").arg(error));
+    else if (fullRate)
+        QMessageBox::information(
+            this, tr("Export"),
+            tr("The file holds every sample from %1 on. The chart's older history is kept only "
+               "as min and max per few seconds, which a file of samples cannot hold.")
+                .arg(QLocale().toString(QDateTime::fromMSecsSinceEpoch(*fullRate),
+                                        QLocale::ShortFormat)));
 }
 
 } // namespace tipscope::gui

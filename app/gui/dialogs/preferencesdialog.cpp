@@ -40,6 +40,8 @@ PreferencesDialog::PreferencesDialog(const AppSettings &settings, int journalRet
     m_counters = spin(this, 1, 3600, wholeSeconds(settings.counterMs), tr(" s"));
     m_turnaround = spin(this, 5, 10000, settings.turnaroundMs, tr(" ms"));
     m_retries = spin(this, 0, 10, settings.retries, QString());
+    m_fullRate = spin(this, 10, 24 * 60, settings.fullRateMinutes, tr(" min"));
+    m_history = spin(this, 1, 7 * 24, settings.historyHours, tr(" h"));
     m_language = new QComboBox(this);
     m_language->addItem(tr("Follow the system"), QStringLiteral("system"));
     m_language->addItem(QStringLiteral("English"), QStringLiteral("en"));
@@ -59,11 +61,15 @@ PreferencesDialog::PreferencesDialog(const AppSettings &settings, int journalRet
     form->addRow(tr("Counters every:"), m_counters);
     form->addRow(tr("Device turnaround (added to the wire time):"), m_turnaround);
     form->addRow(tr("Retries after a lost or corrupted answer:"), m_retries);
+    form->addRow(tr("Chart history at full rate:"), m_fullRate);
+    form->addRow(tr("Chart history in all:"), m_history);
     form->addRow(tr("Language (on the next start):"), m_language);
     form->addRow(tr("Keep journal records for:"), m_retention);
     auto *note =
         new QLabel(tr("The wire always carries °C; the unit only changes what you see and type. "
-                      "The colours follow the desktop theme."),
+                      "The colours follow the desktop theme. Chart history older than the "
+                      "full-rate part keeps min, max and mean per 5 s (about 1.4 MB a port for "
+                      "a day); it applies to devices found from then on."),
                    this);
     note->setWordWrap(true);
     form->addRow(note);
@@ -83,6 +89,8 @@ AppSettings PreferencesDialog::result() const {
         a.counterMs = m_counters->value() * 1000;
     a.turnaroundMs = m_turnaround->value();
     a.retries = m_retries->value();
+    a.fullRateMinutes = m_fullRate->value();
+    a.historyHours = m_history->value();
     a.language = m_language->currentData().toString();
     return a;
 }

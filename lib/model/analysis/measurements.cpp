@@ -122,8 +122,10 @@ PortMeasurements Measurements::measureStretch(const TelemetryBuffer &buffer, qin
     if (tip < 0 || setpoint < 0 || status < 0 || buffer.size() == 0)
         return out;
     // A window reaching back before the first sample (any window early in a session) is measured
-    // from that sample: at t0 itself there would be no setpoint to measure against.
-    t0 = qMax(t0, buffer.firstTime());
+    // from that sample: at t0 itself there would be no setpoint to measure against. Older history
+    // of a tiered buffer is only summaries, where no change or crossing can be timed: measured
+    // from where the full-rate samples start.
+    t0 = qMax(t0, buffer.fullRateFrom());
     if (t1 <= t0)
         return out;
     // A tip cooling with the heater off (no tool, a port error) is no dip to recover from. Under

@@ -13,7 +13,8 @@
 // dip that runs past the end of the window has no end time. The work is bounded by the decimation,
 // not the history: changes and band crossings are located on the buffer's min/max columns and only
 // the columns that can hold one are read sample by sample, so a 24-hour window costs about as much
-// as a minute.
+// as a minute. Only full-rate samples are measured: a window reaching into a tiered buffer's
+// older summaries is measured from TelemetryBuffer::fullRateFrom() on.
 #pragma once
 
 #include "model/telemetry/telemetrybuffer.h"

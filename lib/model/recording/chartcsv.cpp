@@ -94,6 +94,17 @@ bool ChartCsvWriter::writeHeader(const QString &softwareVersion) {
     return m_out.status() == QTextStream::Ok;
 }
 
+std::optional<qint64> ChartCsvWriter::fullRateFrom(const Telemetry &telemetry,
+                                                   const QList<ChartChannel> &channels, qint64 t0) {
+    std::optional<qint64> from;
+    for (const ChartChannel &c : channels) {
+        const TelemetryBuffer *buffer = telemetry.buffer(c.key);
+        if (buffer && buffer->summaryCount() > 0 && t0 < buffer->fullRateFrom())
+            from = qMax(from.value_or(buffer->fullRateFrom()), buffer->fullRateFrom());
+    }
+    return from;
+}
+
 ChannelRows ChartCsvWriter::collect(const Telemetry &telemetry, const ChartChannel &channel,
                                     qint64 t0, qint64 t1) {
     ChannelRows rows;

@@ -18,6 +18,7 @@
 #include "model/telemetry/telemetry.h"
 
 #include <QTextStream>
+#include <optional>
 
 class QIODevice;
 
@@ -57,6 +58,11 @@ public:
     [[nodiscard]] qint64 rowsWritten() const { return m_rows; }
     [[nodiscard]] QString errorString() const;
 
+    // Where an export of a window starting at `t0` begins to hold every sample, when some
+    // channel's history before that is only summaries (TelemetryBuffer::fullRateFrom(): exports
+    // hold samples, never summaries); nullopt when the export holds every sample of the window.
+    [[nodiscard]] static std::optional<qint64>
+    fullRateFrom(const Telemetry &telemetry, const QList<ChartChannel> &channels, qint64 t0);
     // The samples of [t0, t1) of `channel` from the telemetry, for writeRows().
     [[nodiscard]] static ChannelRows collect(const Telemetry &telemetry,
                                              const ChartChannel &channel, qint64 t0, qint64 t1);

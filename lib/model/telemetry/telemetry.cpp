@@ -17,16 +17,25 @@ Telemetry::Telemetry(QObject *parent)
     connect(&m_coalesceTimer, &QTimer::timeout, this, &Telemetry::emitSamplesAdded);
 }
 
+const TelemetryBuffer &Telemetry::ensureBuffer(const TelemetryKey &key, const QStringList &series) {
+    return ensureBuffer(key, series, m_tiers);
+}
+
 const TelemetryBuffer &Telemetry::ensureBuffer(const TelemetryKey &key, const QStringList &series,
                                                int capacity) {
+    return ensureBuffer(key, series, TelemetryTiers::singleTier(capacity));
+}
+
+const TelemetryBuffer &Telemetry::ensureBuffer(const TelemetryKey &key, const QStringList &series,
+                                               const TelemetryTiers &tiers) {
     auto it = m_entries.find(key);
     if (it == m_entries.end())
-        return m_entries.try_emplace(key, TelemetryBuffer(series, capacity)).first->second.buffer;
+        return m_entries.try_emplace(key, TelemetryBuffer(series, tiers)).first->second.buffer;
     const TelemetryBuffer &existing = it->second.buffer;
-    if (existing.seriesNames() != series || existing.capacity() != qMax(1, capacity))
+    if (existing.seriesNames() != series || existing.tiers() != tiers)
         qCWarning(lcTelemetry) << "buffer" << key << "already exists with series"
-                               << existing.seriesNames() << "and capacity" << existing.capacity()
-                               << "; keeping it rather than" << series << capacity;
+                               << existing.seriesNames()
+                               << "and other tiers; keeping it rather than" << series;
     return existing;
 }
 

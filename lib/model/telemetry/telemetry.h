@@ -1,6 +1,9 @@
 // Telemetry: the sample histories of every port and feeder, one TelemetryBuffer per key
 // ("01/port1", "10/feeder"), and a bounded-rate notice that samples arrived.
 //
+// Live buffers are tiered (TelemetryTiers): a day of a fleet fits in memory. setTiers() sets how
+// for the buffers made after it; a buffer keeps the tiers it was made with.
+//
 // Writers (the port and feeder models) call ensureBuffer() once with the series they record,
 // then append() each reading; every write goes through Telemetry so that it can tell views.
 // Views read the buffers through buffer() and redraw on samplesAdded(), which is coalesced by a
@@ -33,10 +36,15 @@ public:
 
     explicit Telemetry(QObject *parent = nullptr);
 
-    // The buffer of `key`, created with `series` and `capacity` if it does not exist yet. An
-    // existing buffer keeps its series and capacity (a different request is logged).
+    // The buffer of `key`, created with `series` and tiers() if it does not exist yet. An
+    // existing buffer keeps its series and tiers (a different request is logged).
+    const TelemetryBuffer &ensureBuffer(const TelemetryKey &key, const QStringList &series);
+    // As above, a single tier of `capacity` samples.
     const TelemetryBuffer &ensureBuffer(const TelemetryKey &key, const QStringList &series,
-                                        int capacity = TelemetryBuffer::kDefaultCapacity);
+                                        int capacity);
+    // For the buffers made from now on.
+    void setTiers(const TelemetryTiers &tiers) { m_tiers = tiers; }
+    [[nodiscard]] const TelemetryTiers &tiers() const { return m_tiers; }
     // Installs a buffer filled elsewhere (a replay reads its file on another thread into plain
     // buffers); false, and the buffer dropped, when `key` already has one.
     bool adoptBuffer(const TelemetryKey &key, TelemetryBuffer &&buffer);
@@ -76,11 +84,14 @@ private:
     };
 
     void emitSamplesAdded();
+    const TelemetryBuffer &ensureBuffer(const TelemetryKey &key, const QStringList &series,
+                                        const TelemetryTiers &tiers);
 
     // std::map: nodes never move, so handed-out buffer references stay valid.
     std::map<TelemetryKey, Entry> m_entries;
     QTimer m_coalesceTimer;
     int m_maxSignalsPerSecond = kDefaultMaxSignalsPerSecond;
+    TelemetryTiers m_tiers;
 };
 
 } // namespace tipscope::model

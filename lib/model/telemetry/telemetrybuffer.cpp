@@ -1,49 +1,49 @@
-// Storage side of TelemetryBuffer: construction, append and the incremental block summaries.
-// The queries are in telemetryquery.cpp.
-#include "telemetrybuffer.h"
+// Storage side of TelemetryBuffer: validation, the full-rate tier's growth and the fold of its
+// oldest bucket into the older tier. The queries are in telemetrybufferquery.cpp.
+#include "model/telemetry/telemetrybuffer.h"
 
+#include <cmath>
 #include <limits>
+#include <vector>
 
 namespace tipscope::model {
 
 namespace {
 
-// Each summary level is 64 times coarser than the one below: few enough levels that append
-// stays cheap, and at most 63 raw samples or blocks are read at each edge of a query range.
-constexpr int kLevelShift = 6;
-static_assert(1 << kLevelShift == TelemetryBuffer::kFinestBlock);
-// The first allocation; storage then doubles up to the capacity.
-constexpr size_t kFirstReserve = 1024;
+// A tiered buffer's full-rate ring starts this small and grows, sized from the rate it sees,
+// only while it holds less than the boundary: a short boundary costs no more than it needs.
+constexpr int kFirstFullRateCapacity = 1024;
+// A ring that must grow takes at least a quarter more, so copying stays amortised.
+constexpr double kMinGrowth = 1.25;
+// Grown to the boundary's share of samples at the rate seen so far, with this much to spare.
+constexpr double kGrowthSlack = 1.2;
 
-// Grows `v` ahead of a push_back the way the sample columns grow: doubling, but never past
-// `limit`, so that a full buffer holds exactly what it needs and memoryBytes() stays honest.
-template <typename T> void reserveForOneMore(std::vector<T> &v, size_t limit, size_t first) {
-    if (v.size() < v.capacity())
-        return;
-    v.reserve(qMin(limit, qMax(first, v.capacity() * 2)));
+qint64 floorDiv(qint64 a, qint64 b) {
+    return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0);
+}
+
+bool fitsInt32(qint64 v) {
+    return v >= std::numeric_limits<qint32>::min() && v <= std::numeric_limits<qint32>::max();
 }
 
 } // namespace
 
 TelemetryBuffer::TelemetryBuffer(const QStringList &series, int capacity)
+    : TelemetryBuffer(series, TelemetryTiers::singleTier(capacity)) {}
+
+TelemetryBuffer::TelemetryBuffer(const QStringList &series, const TelemetryTiers &tiers)
     : m_names(series)
-    , m_capacity(qMax(1, capacity))
-    , m_columns(size_t(series.size())) {
-    // A level whose block is longer than the ring could never hold a whole block.
-    for (int shift = kLevelShift; shift < 31 && (qint64(1) << shift) <= m_capacity;
-         shift += kLevelShift) {
-        const qint64 blockSize = qint64(1) << shift;
-        Level level;
-        level.shift = shift;
-        // As many slots as blocks the ring spans: a block being started takes the slot of one
-        // whose first sample has just left the ring, and such a block is never used whole.
-        level.slots = (m_capacity + blockSize - 1) / blockSize;
-        m_levels.push_back(std::move(level));
-    }
-}
+    , m_tiers(tiers)
+    , m_recent(int(series.size()), tiers.isTiered()
+                                       ? qMin(kFirstFullRateCapacity, tiers.maxFullRateSamples)
+                                       : tiers.maxFullRateSamples)
+    , m_old(tiers.isTiered() ? 4 * int(series.size()) + 1 : 0,
+            tiers.isTiered() ? tiers.summaryCapacity() : 1) {}
 
 qint64 TelemetryBuffer::firstTime() const {
-    return isEmpty() ? 0 : timeAtIndex(oldestIndex());
+    if (isEmpty())
+        return 0;
+    return m_old.isEmpty() ? m_recent.firstTime() : m_old.firstTime();
 }
 
 AppendResult TelemetryBuffer::append(qint64 timeMs, const qint32 *values, qsizetype count) {
@@ -56,127 +56,97 @@ AppendResult TelemetryBuffer::append(qint64 timeMs, const qint32 *values, qsizet
         ++m_outOfOrder;
         return AppendResult::OutOfOrder;
     }
-    if (m_total - m_lapStart == m_capacity)
-        m_lapStart = m_total;
-    const qsizetype pos = position(m_total);
-    if (m_total < m_capacity) {
-        if (m_times.size() == m_times.capacity())
-            growStorage();
-        m_times.push_back(timeMs);
-    } else {
-        m_times[size_t(pos)] = timeMs;
-    }
-    for (size_t s = 0; s < m_columns.size(); ++s)
-        m_columns[s].store(pos, values[s]);
-    updateSummaries(m_total, values);
+    if (isTiered() && m_recent.size() == m_recent.capacity())
+        makeRoom(timeMs);
+    m_recent.append(timeMs, values);
     ++m_total;
     m_lastTime = timeMs;
     m_gaps.close(timeMs);
-    if (m_total > m_capacity)
-        m_gaps.trim(firstTime());
+    m_gaps.trim(firstTime());
     return AppendResult::Accepted;
 }
 
-void TelemetryBuffer::growStorage() {
-    const size_t limit = size_t(m_capacity);
-    reserveForOneMore(m_times, limit, kFirstReserve);
-    for (Column &column : m_columns)
-        column.reserve(qsizetype(m_times.capacity()));
+void TelemetryBuffer::makeRoom(qint64 timeMs) {
+    const bool withinBoundary = m_recent.firstTime() > timeMs - m_tiers.fullRateMs;
+    if (withinBoundary && m_recent.capacity() < m_tiers.maxFullRateSamples)
+        growFullRate(timeMs);
+    else
+        foldOldestBucket();
 }
 
-// Summaries are keyed by absolute sample number, so the ring overwriting a sample needs no
-// repair here: a block that lost samples is simply never used whole by a query.
-void TelemetryBuffer::updateSummaries(qint64 index, const qint32 *values) {
-    const size_t series = m_columns.size();
-    for (Level &level : m_levels) {
-        const qint64 block = index >> level.shift;
-        const auto offset = quint32(index - (block << level.shift));
-        const size_t base = size_t(block % level.slots) * series;
-        if (offset == 0) {
-            const bool fresh = base == level.summaries.size();
-            for (size_t s = 0; s < series; ++s) {
-                const Summary start{values[s], values[s], values[s], 0, 0};
-                if (fresh) {
-                    reserveForOneMore(level.summaries, size_t(level.slots) * series, 16 * series);
-                    level.summaries.push_back(start);
-                } else {
-                    level.summaries[base + s] = start;
-                }
-            }
-            continue;
-        }
-        for (size_t s = 0; s < series; ++s) {
-            Summary &summary = level.summaries[base + s];
-            const qint32 value = values[s];
-            // Strict comparisons keep the earliest extreme, as a raw scan would.
-            if (value < summary.min) {
-                summary.min = value;
-                summary.minOffset = offset;
-            }
-            if (value > summary.max) {
-                summary.max = value;
-                summary.maxOffset = offset;
-            }
-            summary.sum += value;
+// Sized from the rate seen so far, so a port polled at 8 Hz settles near two hours of samples
+// instead of doubling past it; a faster port grows again later.
+void TelemetryBuffer::growFullRate(qint64 timeMs) {
+    const int held = m_recent.size();
+    const double span = double(qMax<qint64>(1, timeMs - m_recent.firstTime()));
+    const double wanted = double(held) * double(m_tiers.fullRateMs) / span * kGrowthSlack;
+    const double atLeast = std::ceil(double(m_recent.capacity()) * kMinGrowth);
+    const int capacity =
+        int(qMin(double(m_tiers.maxFullRateSamples), qMax(atLeast, std::ceil(wanted))));
+    TelemetryRing bigger(seriesCount(), capacity);
+    std::vector<qint32> values(static_cast<size_t>(seriesCount()));
+    for (int i = 0; i < held; ++i) {
+        for (int s = 0; s < seriesCount(); ++s)
+            values[size_t(s)] = m_recent.valueAt(s, i);
+        bigger.append(m_recent.timeAt(i), values.data());
+    }
+    m_recent = std::move(bigger);
+}
+
+// The oldest full-rate sample and those after it in its bucket become one summary. The bucket
+// ends early where a gap starts (samples on both sides of a gap are never summarised together,
+// so the gap stays visible) or where a sum would no longer fit the summary's 32 bits.
+void TelemetryBuffer::foldOldestBucket() {
+    const int n = seriesCount();
+    const qint64 first = m_recent.timeAt(0);
+    const qint64 bucketMs = qMax<qint64>(1, m_tiers.bucketMs);
+    qint64 end = (floorDiv(first, bucketMs) + 1) * bucketMs;
+    const QList<TelemetryGap> gaps = m_gaps.within(first + 1, end);
+    if (!gaps.isEmpty())
+        end = qMin(end, qMax(first + 1, gaps.constFirst().startMs));
+    const int candidates = qMax(1, m_recent.countBefore(end));
+
+    std::vector<qint32> summary(size_t(4 * n + 1));
+    std::vector<qint64> sums(static_cast<size_t>(n));
+    for (int s = 0; s < n; ++s) {
+        const qint32 v = m_recent.valueAt(s, 0);
+        summary[size_t(s)] = v;
+        summary[size_t(minColumn(s))] = v;
+        summary[size_t(maxColumn(s))] = v;
+        sums[size_t(s)] = v;
+    }
+    int count = 1;
+    for (; count < candidates; ++count) {
+        bool fits = true;
+        for (int s = 0; s < n && fits; ++s)
+            fits = fitsInt32(sums[size_t(s)] + m_recent.valueAt(s, count));
+        if (!fits)
+            break;
+        for (int s = 0; s < n; ++s) {
+            const qint32 v = m_recent.valueAt(s, count);
+            summary[size_t(minColumn(s))] = qMin(summary[size_t(minColumn(s))], v);
+            summary[size_t(maxColumn(s))] = qMax(summary[size_t(maxColumn(s))], v);
+            sums[size_t(s)] += v;
         }
     }
+    for (int s = 0; s < n; ++s)
+        summary[size_t(sumColumn(s))] = qint32(sums[size_t(s)]);
+    summary[size_t(countColumn())] = count;
+    m_old.append(first, summary.data());
+    m_recent.dropOldest(count);
 }
 
 qint64 TelemetryBuffer::memoryBytes() const {
-    qint64 bytes = qint64(sizeof(*this));
-    bytes += qint64(m_times.capacity() * sizeof(qint64));
-    bytes += qint64(m_columns.capacity() * sizeof(Column));
-    for (const Column &column : m_columns)
-        bytes += column.bytes();
-    bytes += qint64(m_levels.capacity() * sizeof(Level));
-    for (const Level &level : m_levels)
-        bytes += qint64(level.summaries.capacity() * sizeof(Summary));
-    return bytes;
+    // The rings count their own objects, which sit inside this one.
+    return qint64(sizeof(*this)) - qint64(2 * sizeof(TelemetryRing)) + m_recent.memoryBytes() +
+           (isTiered() ? m_old.memoryBytes() : qint64(sizeof(TelemetryRing)));
 }
 
 double TelemetryBuffer::bytesPerSamplePerSeries() const {
-    const auto slots = qint64(m_times.capacity());
+    const qint64 slots = m_recent.allocatedSlots();
     if (slots == 0)
         return 0;
     return double(memoryBytes()) / double(slots * qMax(1, seriesCount()));
-}
-
-void TelemetryBuffer::Column::store(qsizetype pos, qint32 value) {
-    const bool fitsNarrow =
-        value >= std::numeric_limits<qint16>::min() && value <= std::numeric_limits<qint16>::max();
-    if (!m_isWide && !fitsNarrow)
-        widen();
-    if (m_isWide) {
-        if (size_t(pos) == m_wide.size())
-            m_wide.push_back(value);
-        else
-            m_wide[size_t(pos)] = value;
-    } else {
-        if (size_t(pos) == m_narrow.size())
-            m_narrow.push_back(qint16(value));
-        else
-            m_narrow[size_t(pos)] = qint16(value);
-    }
-}
-
-void TelemetryBuffer::Column::reserve(qsizetype slots) {
-    if (m_isWide)
-        m_wide.reserve(size_t(slots));
-    else
-        m_narrow.reserve(size_t(slots));
-}
-
-qint64 TelemetryBuffer::Column::bytes() const {
-    return qint64(m_narrow.capacity() * sizeof(qint16) + m_wide.capacity() * sizeof(qint32));
-}
-
-// Once per series at most: temperatures, per mille and status codes fit in 16 bits, but a
-// value that does not must be kept exactly rather than clipped.
-void TelemetryBuffer::Column::widen() {
-    m_wide.reserve(m_narrow.capacity());
-    m_wide.assign(m_narrow.begin(), m_narrow.end());
-    std::vector<qint16>().swap(m_narrow);
-    m_isWide = true;
 }
 
 } // namespace tipscope::model

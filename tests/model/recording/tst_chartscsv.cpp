@@ -1,6 +1,7 @@
 // The charts' CSV: what an export or a recording writes reads back exactly for replay, files the
 // reader cannot use fully are refused with a message naming the line and the problem, and the
-// recorder writes each new sample once, in time order.
+// recorder writes each new sample once, in time order. An export of a window reaching into a
+// tiered history's summaries says where its samples start.
 #include "model/recording/chartcsv.h"
 #include "model/recording/chartcsvreader.h"
 #include "model/recording/chartrecorder.h"
@@ -89,6 +90,7 @@ private Q_SLOTS:
     void malformedFilesAreRefusedWithAClearError_data();
     void malformedFilesAreRefusedWithAClearError();
     void aHugeFileIsRefusedBeforeItIsRead();
+    void anExportReachingIntoSummariesSaysWhereItsSamplesStart();
     void recorderWritesEachNewSampleOnceInTimeOrder();
     void aFullDiskStopsTheRecordingWithTheReason();
 };
@@ -267,6 +269,36 @@ void TestChartsCsv::aFullDiskStopsTheRecordingWithTheReason() {
                  .start(QStringLiteral("/no/such/folder/rec.csv"), {c}, TemperatureUnit::Celsius,
                         QString())
                  .isEmpty());
+}
+
+void TestChartsCsv::anExportReachingIntoSummariesSaysWhereItsSamplesStart() {
+    Telemetry t;
+    TelemetryTiers tiers;
+    tiers.fullRateMs = 60'000;
+    tiers.historyMs = 3'600'000;
+    tiers.bucketMs = 1000;
+    t.setTiers(tiers);
+    const QList<ChartChannel> channels = {channel(QStringLiteral("port1"), 1, kPortSeries)};
+    t.ensureBuffer(channels.at(0).key, kPortSeries);
+    for (int i = 0; i < 20 * 600; ++i) // 20 minutes at 10 Hz
+        t.append(channels.at(0).key, kT0 + i * 100, {350, 350, 10, 0});
+    const TelemetryBuffer &b = *t.buffer(channels.at(0).key);
+    QVERIFY(b.summaryCount() > 0);
+    QCOMPARE(ChartCsvWriter::fullRateFrom(t, channels, kT0), b.fullRateFrom());
+    QVERIFY(!ChartCsvWriter::fullRateFrom(t, channels, b.fullRateFrom()));
+    // The file holds exactly the samples from there on.
+    QBuffer file;
+    file.open(QIODevice::WriteOnly);
+    ChartCsvWriter writer(file, channels, TemperatureUnit::Celsius);
+    QVERIFY(writer.writeHeader(QStringLiteral("test")));
+    QVERIFY(writer.writeWindow(t, ChartEvents(), kT0, b.lastTime() + 1));
+    QCOMPARE(writer.rowsWritten(), qint64(b.size()));
+    // A single-tier history holds every sample: nothing to say.
+    Telemetry single;
+    single.ensureBuffer(channels.at(0).key, kPortSeries, 100);
+    for (int i = 0; i < 500; ++i)
+        single.append(channels.at(0).key, kT0 + i * 100, {350, 350, 10, 0});
+    QVERIFY(!ChartCsvWriter::fullRateFrom(single, channels, kT0));
 }
 
 QTEST_GUILESS_MAIN(TestChartsCsv)

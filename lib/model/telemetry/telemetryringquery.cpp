@@ -1,9 +1,9 @@
-// Query side of TelemetryBuffer: time lookups, raw windows, decimation and window statistics.
+// Query side of TelemetryRing: time lookups, raw windows, decimation and window totals.
 //
 // Every query first turns times into sample numbers by binary search (times never decrease),
 // then works on sample numbers; scanRange() is the one place that reads values, taking whole
 // blocks from the summaries and only the ragged ends raw.
-#include "telemetrybuffer.h"
+#include "telemetryring.h"
 
 #include <algorithm>
 
@@ -12,11 +12,11 @@ namespace tipscope::model {
 namespace {
 
 // Raw reads stop at multiples of the finest block, where a summary can take over.
-constexpr qint64 kFinestBlockMask = TelemetryBuffer::kFinestBlock - 1;
+constexpr qint64 kFinestBlockMask = TelemetryRing::kFinestBlock - 1;
 
 } // namespace
 
-qint64 TelemetryBuffer::lowerBound(qint64 timeMs, qint64 from, qint64 to) const {
+qint64 TelemetryRing::lowerBound(qint64 timeMs, qint64 from, qint64 to) const {
     while (from < to) {
         const qint64 mid = from + (to - from) / 2;
         if (timeAtIndex(mid) < timeMs)
@@ -27,7 +27,7 @@ qint64 TelemetryBuffer::lowerBound(qint64 timeMs, qint64 from, qint64 to) const 
     return from;
 }
 
-qint64 TelemetryBuffer::upperBound(qint64 timeMs, qint64 from, qint64 to) const {
+qint64 TelemetryRing::upperBound(qint64 timeMs, qint64 from, qint64 to) const {
     while (from < to) {
         const qint64 mid = from + (to - from) / 2;
         if (timeAtIndex(mid) <= timeMs)
@@ -41,7 +41,7 @@ qint64 TelemetryBuffer::upperBound(qint64 timeMs, qint64 from, qint64 to) const 
 // The next bucket edge is usually a few hundred samples past the previous one: probing doubling
 // steps from there stays within cache lines already fetched, where a bisection of the whole
 // history would miss the cache on most of its first probes.
-qint64 TelemetryBuffer::gallopLowerBound(qint64 timeMs, qint64 from, qint64 to) const {
+qint64 TelemetryRing::gallopLowerBound(qint64 timeMs, qint64 from, qint64 to) const {
     qint64 step = 1;
     while (from + step < to && timeAtIndex(from + step - 1) < timeMs) {
         from += step; // everything before the probe is earlier than timeMs
@@ -50,42 +50,42 @@ qint64 TelemetryBuffer::gallopLowerBound(qint64 timeMs, qint64 from, qint64 to) 
     return lowerBound(timeMs, from, qMin(to, from + step));
 }
 
-std::optional<TelemetryBuffer::Sample> TelemetryBuffer::valueAt(int series, qint64 timeMs) const {
-    if (!isSeries(series) || isEmpty() || m_gaps.at(timeMs))
+std::optional<TelemetrySample> TelemetryRing::latestAt(int series, qint64 timeMs) const {
+    if (series < 0 || series >= seriesCount() || isEmpty())
         return std::nullopt;
     const qint64 after = upperBound(timeMs, oldestIndex(), m_total);
     if (after == oldestIndex())
         return std::nullopt;
     const qint64 index = after - 1;
-    return Sample{timeAtIndex(index), m_columns[size_t(series)].at(position(index))};
+    return TelemetrySample{timeAtIndex(index), m_columns[size_t(series)].at(position(index))};
 }
 
-QList<TelemetryBuffer::Sample> TelemetryBuffer::samples(int series, qint64 t0, qint64 t1) const {
-    QList<Sample> result;
-    if (!isSeries(series) || t1 <= t0)
+QList<TelemetrySample> TelemetryRing::samples(int series, qint64 t0, qint64 t1) const {
+    QList<TelemetrySample> result;
+    if (series < 0 || series >= seriesCount() || t1 <= t0)
         return result;
     const qint64 from = lowerBound(t0, oldestIndex(), m_total);
     const qint64 to = lowerBound(t1, from, m_total);
     result.reserve(qsizetype(to - from));
-    const Column &column = m_columns[size_t(series)];
+    const Values &column = m_columns[size_t(series)];
     for (qint64 index = from; index < to; ++index) {
         const qsizetype pos = position(index);
-        result.append(Sample{m_times[size_t(pos)], column.at(pos)});
+        result.append(TelemetrySample{m_times[size_t(pos)], column.at(pos)});
     }
     return result;
 }
 
 // Unsigned arithmetic: the span of any two qint64 times fits, and edge k is exactly
 // t0 + span * k / buckets without the product overflowing.
-qint64 TelemetryBuffer::columnStart(qint64 t0, qint64 t1, int buckets, int column) {
+qint64 TelemetryRing::columnStart(qint64 t0, qint64 t1, int buckets, int column) {
     const quint64 span = quint64(t1) - quint64(t0);
     const quint64 step = span / quint64(buckets);
     const quint64 rest = span % quint64(buckets);
     return qint64(quint64(t0) + step * quint64(column) + rest * quint64(column) / quint64(buckets));
 }
 
-std::vector<TelemetryBuffer::ColumnRange>
-TelemetryBuffer::columnRanges(qint64 t0, qint64 t1, int buckets, ColumnEdges edges) const {
+std::vector<TelemetryRing::ColumnRange>
+TelemetryRing::columnRanges(qint64 t0, qint64 t1, int buckets, ColumnEdges edges) const {
     std::vector<ColumnRange> ranges;
     if (isEmpty() || t1 <= t0 || buckets <= 0)
         return ranges;
@@ -106,45 +106,48 @@ TelemetryBuffer::columnRanges(qint64 t0, qint64 t1, int buckets, ColumnEdges edg
     return ranges;
 }
 
-QList<MinMaxBucket> TelemetryBuffer::decimate(int series, qint64 t0, qint64 t1, int buckets) const {
-    return decimate(QList<int>{series}, t0, t1, buckets).constFirst();
+TelemetryRing::Extreme TelemetryRing::extremeOf(const Pick &pick, qint64 first, qint64 last) const {
+    const Extremes low = scanRange(pick.minSeries, first, last);
+    const Extremes high =
+        pick.maxSeries == pick.minSeries ? low : scanRange(pick.maxSeries, first, last);
+    return Extreme{timeAtIndex(low.minIndex), low.min, timeAtIndex(high.maxIndex), high.max};
 }
 
-QList<QList<MinMaxBucket>> TelemetryBuffer::decimate(const QList<int> &series, qint64 t0, qint64 t1,
-                                                     int buckets, ColumnEdges edges) const {
-    QList<QList<MinMaxBucket>> result(series.size());
+qint64 TelemetryRing::countOf(int countSeries, qint64 first, qint64 last) const {
+    return countSeries == kCountEntries ? last - first : scanRange(countSeries, first, last).sum;
+}
+
+std::vector<TelemetryRing::Column> TelemetryRing::columns(const std::vector<Pick> &picks,
+                                                          int countSeries, qint64 t0, qint64 t1,
+                                                          int buckets, ColumnEdges edges) const {
     const std::vector<ColumnRange> ranges = columnRanges(t0, t1, buckets, edges);
-    for (qsizetype i = 0; i < series.size(); ++i)
-        if (isSeries(series.at(i)))
-            result[i].reserve(qsizetype(ranges.size()));
+    std::vector<Column> result;
+    result.reserve(ranges.size());
     // Column by column, all series at once: the summaries of one block keep the series side by
     // side, so one cache line serves them all (series by series was twice as slow).
     for (const ColumnRange &r : ranges) {
-        const qint64 start = columnStart(t0, t1, buckets, r.column);
-        for (qsizetype i = 0; i < series.size(); ++i) {
-            if (!isSeries(series.at(i)))
-                continue;
-            const Extremes e = scanRange(series.at(i), r.first, r.last);
-            result[i].append(MinMaxBucket{start, timeAtIndex(e.minIndex), e.min,
-                                          timeAtIndex(e.maxIndex), e.max, int(r.last - r.first)});
-        }
+        Column column{r.column, countOf(countSeries, r.first, r.last), {}};
+        column.extremes.reserve(picks.size());
+        for (const Pick &pick : picks)
+            column.extremes.push_back(extremeOf(pick, r.first, r.last));
+        result.push_back(std::move(column));
     }
     return result;
 }
 
-TelemetryBuffer::Stats TelemetryBuffer::windowStats(int series, qint64 t0, qint64 t1) const {
-    if (!isSeries(series) || t1 <= t0)
+TelemetryRing::Totals TelemetryRing::totals(const Pick &pick, int sumSeries, int countSeries,
+                                            qint64 t0, qint64 t1) const {
+    if (t1 <= t0 || isEmpty())
         return {};
     const qint64 from = lowerBound(t0, oldestIndex(), m_total);
     const qint64 to = lowerBound(t1, from, m_total);
     if (from == to)
         return {};
-    const Extremes e = scanRange(series, from, to);
-    const qint64 count = to - from;
-    return Stats{e.min, e.max, double(e.sum) / double(count), count};
+    const Extreme e = extremeOf(pick, from, to);
+    return Totals{e.min, e.max, scanRange(sumSeries, from, to).sum, countOf(countSeries, from, to)};
 }
 
-TelemetryBuffer::Extremes TelemetryBuffer::scanRange(int series, qint64 first, qint64 last) const {
+TelemetryRing::Extremes TelemetryRing::scanRange(int series, qint64 first, qint64 last) const {
     Extremes result;
     const auto seriesCount = size_t(m_columns.size());
     qint64 index = first;
@@ -174,8 +177,8 @@ TelemetryBuffer::Extremes TelemetryBuffer::scanRange(int series, qint64 first, q
     return result;
 }
 
-void TelemetryBuffer::scanRaw(int series, qint64 first, qint64 last, Extremes &result) const {
-    const Column &column = m_columns[size_t(series)];
+void TelemetryRing::scanRaw(int series, qint64 first, qint64 last, Extremes &result) const {
+    const Values &column = m_columns[size_t(series)];
     // At most two contiguous pieces: up to the end of the ring, then from its start.
     const qsizetype pos = position(first);
     const qsizetype count = qsizetype(last - first);
@@ -215,8 +218,8 @@ void scanValues(const T *values, qsizetype count, qint64 firstIndex, Extremes &r
 
 } // namespace
 
-void TelemetryBuffer::Column::scan(qsizetype pos, qsizetype count, qint64 firstIndex,
-                                   Extremes &result) const {
+void TelemetryRing::Values::scan(qsizetype pos, qsizetype count, qint64 firstIndex,
+                                 Extremes &result) const {
     if (m_isWide)
         scanValues(m_wide.data() + pos, count, firstIndex, result);
     else
@@ -225,7 +228,7 @@ void TelemetryBuffer::Column::scan(qsizetype pos, qsizetype count, qint64 firstI
 
 // The coarsest block that starts at `index` and ends by `last`. Callers only pass ranges of
 // held samples, so such a block is complete and its slot has not been reused.
-const TelemetryBuffer::Level *TelemetryBuffer::wholeBlockAt(qint64 index, qint64 last) const {
+const TelemetryRing::Level *TelemetryRing::wholeBlockAt(qint64 index, qint64 last) const {
     for (auto level = m_levels.rbegin(); level != m_levels.rend(); ++level) {
         const qint64 blockSize = qint64(1) << level->shift;
         if ((index & (blockSize - 1)) == 0 && last - index >= blockSize)
