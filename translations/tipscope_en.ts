@@ -160,7 +160,7 @@
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="257"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n joint listed.</numerusform>
@@ -168,7 +168,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="359"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n joint written to %1.</numerusform>
