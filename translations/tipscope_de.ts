@@ -1495,85 +1495,85 @@
         <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="93"/>
+        <location filename="../app/cli/clicommands.cpp" line="103"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="104"/>
+        <location filename="../app/cli/clicommands.cpp" line="114"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127"/>
+        <location filename="../app/cli/clicommands.cpp" line="137"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="132"/>
+        <location filename="../app/cli/clicommands.cpp" line="142"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="140"/>
+        <location filename="../app/cli/clicommands.cpp" line="150"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="145"/>
+        <location filename="../app/cli/clicommands.cpp" line="155"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="183"/>
+        <location filename="../app/cli/clicommands.cpp" line="193"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="192"/>
+        <location filename="../app/cli/clicommands.cpp" line="202"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="205"/>
-        <location filename="../app/cli/clicommands.cpp" line="207"/>
+        <location filename="../app/cli/clicommands.cpp" line="215"/>
+        <location filename="../app/cli/clicommands.cpp" line="217"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="210"/>
+        <location filename="../app/cli/clicommands.cpp" line="220"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="173"/>
-        <location filename="../app/cli/clicommands.cpp" line="227"/>
-        <location filename="../app/cli/clicommands.cpp" line="250"/>
+        <location filename="../app/cli/clicommands.cpp" line="183"/>
+        <location filename="../app/cli/clicommands.cpp" line="237"/>
+        <location filename="../app/cli/clicommands.cpp" line="260"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="243"/>
+        <location filename="../app/cli/clicommands.cpp" line="253"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="316"/>
+        <location filename="../app/cli/clicommands.cpp" line="326"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="339"/>
+        <location filename="../app/cli/clicommands.cpp" line="349"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="342"/>
+        <location filename="../app/cli/clicommands.cpp" line="352"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="343"/>
+        <location filename="../app/cli/clicommands.cpp" line="353"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
     </message>
@@ -1586,7 +1586,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="165"/>
+        <location filename="../app/cli/clicommands.cpp" line="175"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 wurde nicht gesendet: seine Grenze %2 ließ sich nicht lesen: %3</translation>
     </message>
@@ -1678,37 +1678,37 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="115"/>
+        <location filename="../app/cli/climonitor.cpp" line="116"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="122"/>
+        <location filename="../app/cli/climonitor.cpp" line="123"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="134"/>
+        <location filename="../app/cli/climonitor.cpp" line="135"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="143"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="181"/>
+        <location filename="../app/cli/climonitor.cpp" line="180"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="160"/>
+        <location filename="../app/cli/climonitor.cpp" line="159"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitorjoints.cpp" line="55"/>
+        <location filename="../app/cli/climonitorjoints.cpp" line="60"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 Einträge konnten nicht im Journal %2 gespeichert werden: %3</translation>
     </message>
@@ -1716,9 +1716,69 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="71"/>
-        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
-                    [--baud N]
+        <location filename="../app/cli/clioptions.cpp" line="139"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="189"/>
+        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
+        <translation>--workspace erwartet eine Datei, und nur eines von --port, --tcp, --demo, --workspace</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="196"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="204"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="209"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud erwartet eine Baudrate wie 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="216"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity erwartet none, even oder odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="220"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits erwartet 1 oder 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="229"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="237"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="240"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="168"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 braucht einen Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="75"/>
+        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity |
+                     --workspace FILE] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
 
@@ -1727,8 +1787,9 @@ Commands:
   read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
   write CODE VALUE [--raw]  validate, send, and read back
   send HEX                  send a raw frame; print the answer in hex and decoded
-  monitor [--interval MS] [--duration S] [--csv FILE] [--limit RULE]
-          [--journal FILE]  tip temperature, setpoint, power and status per port, and
+  monitor [--interval MS] [--duration S] [--csv FILE [--csv-one-file]]
+          [--limit RULE] [--journal FILE]
+                            tip temperature, setpoint, power and status per port, and
                             a line per joint, each joint kept in the journal
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
@@ -1759,13 +1820,15 @@ Without --addr or --no-addr the device is found automatically. --demo talks to t
 built-in simulated DME station (address 01) and SFR feeder (address 10);
 --demo-activity the same at work: joints on port 1 every 15 s, rests on port 2, feeds.
 --timeout is the device turnaround added to the wire time of each request.
+--workspace runs the command on every line of a workspace file at once, each output
+line prefixed with the line&apos;s name; monitor --csv writes a file per line.
 
 Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 3 the device answered NAK, or a read-back or profile check failed;
 4 no valid answer; 5 transport error.
 </source>
-        <translation>Aufruf: tipscope-cli [--port GERÄT | --tcp HOST:PORT | --demo | --demo-activity]
-                     [--baud N]
+        <translation>Aufruf: tipscope-cli [--port GERÄT | --tcp HOST:PORT | --demo | --demo-activity |
+                      --workspace DATEI] [--baud N]
                      [--parity none|even|odd] [--stop-bits 1|2] [--addr QUELLE:ZIEL | --no-addr]
                      [--timeout MS] [--retries N] [--verbose] BEFEHL ...
 
@@ -1774,8 +1837,9 @@ Befehle:
   read CODE... [--raw]      eine Zeile pro Code: &quot;&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;&quot;
   write CODE WERT [--raw]   prüfen, senden und zurücklesen
   send HEX                  ein Roh-Telegramm senden; die Antwort hexadezimal und dekodiert ausgeben
-  monitor [--interval MS] [--duration S] [--csv DATEI] [--limit REGEL]
-          [--journal DATEI] Spitzentemperatur, Sollwert, Leistung und Status pro Port und
+  monitor [--interval MS] [--duration S] [--csv DATEI [--csv-one-file]]
+          [--limit REGEL] [--journal DATEI]
+                            Spitzentemperatur, Sollwert, Leistung und Status pro Port und
                             eine Zeile je Lötstelle; jede Lötstelle kommt ins Journal
   dump [--json]             alle lesbaren Parameter, Zähler und Fehler
   commands [--family F]     der Befehlskatalog
@@ -1808,6 +1872,8 @@ Ohne --addr oder --no-addr wird das Gerät automatisch gesucht. --demo spricht m
 eingebauten simulierten DME-Station (Adresse 01) und dem SFR-Lotdrahtvorschub (Adresse 10);
 --demo-activity dasselbe bei der Arbeit: Lötstellen an Port 1 alle 15 s, Pausen an Port 2, Vorschübe.
 --timeout ist die Antwortzeit des Geräts, die zur Übertragungszeit jeder Anfrage addiert wird.
+--workspace führt den Befehl auf jeder Leitung einer Arbeitsbereich-Datei zugleich aus,
+jede Ausgabezeile mit dem Namen der Leitung davor; monitor --csv schreibt eine Datei pro Leitung.
 
 Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschrieben);
 3 das Gerät hat mit NAK geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen;
@@ -1815,82 +1881,37 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="132"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>unbekannter Befehl &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="176"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="183"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="191"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="196"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud erwartet eine Baudrate wie 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="203"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity erwartet none, even oder odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="207"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits erwartet 1 oder 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="216"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="224"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="227"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="161"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 braucht einen Wert</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="165"/>
+        <location filename="../app/cli/clioptions.cpp" line="172"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="231"/>
+        <location filename="../app/cli/clioptions.cpp" line="244"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="232"/>
+        <location filename="../app/cli/clioptions.cpp" line="245"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="238"/>
+        <location filename="../app/cli/clioptions.cpp" line="251"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="241"/>
+        <location filename="../app/cli/clioptions.cpp" line="254"/>
+        <source>--workspace runs detect, monitor, dump or joints, not %1</source>
+        <translation>--workspace führt detect, monitor, dump oder joints aus, nicht %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="257"/>
+        <source>--csv-one-file goes with --workspace and --csv FILE</source>
+        <translation>--csv-one-file gehört zu --workspace und --csv DATEI</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="260"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -1978,39 +1999,52 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="69"/>
+        <location filename="../app/cli/clisession.cpp" line="74"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="125"/>
+        <location filename="../app/cli/clisession.cpp" line="79"/>
+        <source>connected to %1</source>
+        <translation>verbunden mit %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="148"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134"/>
+        <location filename="../app/cli/clisession.cpp" line="157"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="135"/>
+        <location filename="../app/cli/clisession.cpp" line="158"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="129"/>
+        <location filename="../app/cli/clisession.cpp" line="152"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="157"/>
+        <location filename="../app/cli/clisession.cpp" line="180"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="162"/>
+        <location filename="../app/cli/clisession.cpp" line="185"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
+    </message>
+</context>
+<context>
+    <name>CliWorkspace</name>
+    <message>
+        <location filename="../app/cli/cliworkspace.cpp" line="94"/>
+        <source>tipscope-cli: the workspace %1 has no lines</source>
+        <translation>tipscope-cli: der Arbeitsbereich %1 hat keine Leitungen</translation>
     </message>
 </context>
 <context>
@@ -3959,24 +3993,165 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>WorkContextFile</name>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="36"/>
         <source>cannot read the work context %1: %2</source>
         <translation>der Arbeitskontext %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="40"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
         <source>the work context %1 is too big to be one</source>
         <translation>der Arbeitskontext %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>der Arbeitskontext %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="49"/>
-        <source>the work context %1: %2 must be text</source>
-        <translation>der Arbeitskontext %1: %2 muss Text sein</translation>
+        <location filename="../lib/journal/workcontextfile.cpp" line="46"/>
+        <source>the work context %1: %2</source>
+        <translation>der Arbeitskontext %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>WorkContextJson</name>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="26"/>
+        <source>%1 must be text</source>
+        <translation>%1 muss Text sein</translation>
+    </message>
+</context>
+<context>
+    <name>WorkspaceFile</name>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="29"/>
+        <source>not a TipScope workspace (&quot;format&quot; is not &quot;%1&quot;)</source>
+        <translation>kein TipScope-Arbeitsbereich (&quot;format&quot; ist nicht &quot;%1&quot;)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="33"/>
+        <source>&quot;version&quot; must be a whole number from 1</source>
+        <translation>&quot;version&quot; muss eine ganze Zahl ab 1 sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="35"/>
+        <source>written by a later TipScope (workspace version %1); this one reads version %2 and older</source>
+        <translation>von einem neueren TipScope geschrieben (Arbeitsbereich-Version %1); dieses liest Version %2 und ältere</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="63"/>
+        <source>&quot;lines&quot; must be a list of lines</source>
+        <translation>&quot;lines&quot; muss eine Liste von Leitungen sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="69"/>
+        <source>line %1</source>
+        <translation>Leitung %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="70"/>
+        <source>line %1 (%2)</source>
+        <translation>Leitung %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="72"/>
+        <source>%1: must be an object</source>
+        <translation>%1: muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="77"/>
+        <source>%1: the name is already another line&apos;s; each line needs its own</source>
+        <translation>%1: der Name gehört schon einer anderen Leitung; jede Leitung braucht einen eigenen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="88"/>
+        <source>cannot read the workspace %1: %2</source>
+        <translation>der Arbeitsbereich %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="90"/>
+        <source>the workspace %1 is too big to be one</source>
+        <translation>der Arbeitsbereich %1 ist zu groß, um einer zu sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="94"/>
+        <source>the workspace %1 is not a JSON object: %2</source>
+        <translation>der Arbeitsbereich %1 ist kein JSON-Objekt: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="96"/>
+        <source>it is a list</source>
+        <translation>er ist eine Liste</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="47"/>
+        <source>%1 must be text</source>
+        <translation>%1 muss Text sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="56"/>
+        <source>%1 must be a whole number from %2 to %3</source>
+        <translation>%1 muss eine ganze Zahl von %2 bis %3 sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="61"/>
+        <source>%1 must be true or false</source>
+        <translation>%1 muss true oder false sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="71"/>
+        <source>%1 must be one of %2</source>
+        <translation>%1 muss eines von %2 sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="76"/>
+        <source>%1 must be an object</source>
+        <translation>%1 muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="100"/>
+        <source>%1 must name the serial port</source>
+        <translation>%1 muss den seriellen Port nennen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="111"/>
+        <source>%1 must be HOST:PORT (for example 192.168.1.20:4001)</source>
+        <translation>%1 muss HOST:PORT sein (zum Beispiel 192.168.1.20:4001)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="143"/>
+        <source>devices must be a list</source>
+        <translation>devices muss eine Liste sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="149"/>
+        <source>devices[%1] must be an object</source>
+        <translation>devices[%1] muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="153"/>
+        <source>%1 must be an address from 0 to 99, or null for the device without addresses</source>
+        <translation>%1 muss eine Adresse von 0 bis 99 sein, oder null für das Gerät ohne Adressen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="160"/>
+        <source>%1 must not be empty</source>
+        <translation>%1 darf nicht leer sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="163"/>
+        <source>devices[%1] names a device named before</source>
+        <translation>devices[%1] benennt ein schon benanntes Gerät</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="222"/>
+        <source>every line needs a name</source>
+        <translation>jede Leitung braucht einen Namen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="229"/>
+        <source>connection is missing</source>
+        <translation>connection fehlt</translation>
     </message>
 </context>
 <context>

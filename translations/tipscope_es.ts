@@ -1495,85 +1495,85 @@
         <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="93"/>
+        <location filename="../app/cli/clicommands.cpp" line="103"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="104"/>
+        <location filename="../app/cli/clicommands.cpp" line="114"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="127"/>
+        <location filename="../app/cli/clicommands.cpp" line="137"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="132"/>
+        <location filename="../app/cli/clicommands.cpp" line="142"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="140"/>
+        <location filename="../app/cli/clicommands.cpp" line="150"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="145"/>
+        <location filename="../app/cli/clicommands.cpp" line="155"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="183"/>
+        <location filename="../app/cli/clicommands.cpp" line="193"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="192"/>
+        <location filename="../app/cli/clicommands.cpp" line="202"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="205"/>
-        <location filename="../app/cli/clicommands.cpp" line="207"/>
+        <location filename="../app/cli/clicommands.cpp" line="215"/>
+        <location filename="../app/cli/clicommands.cpp" line="217"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="210"/>
+        <location filename="../app/cli/clicommands.cpp" line="220"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="173"/>
-        <location filename="../app/cli/clicommands.cpp" line="227"/>
-        <location filename="../app/cli/clicommands.cpp" line="250"/>
+        <location filename="../app/cli/clicommands.cpp" line="183"/>
+        <location filename="../app/cli/clicommands.cpp" line="237"/>
+        <location filename="../app/cli/clicommands.cpp" line="260"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="243"/>
+        <location filename="../app/cli/clicommands.cpp" line="253"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="316"/>
+        <location filename="../app/cli/clicommands.cpp" line="326"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="339"/>
+        <location filename="../app/cli/clicommands.cpp" line="349"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="342"/>
+        <location filename="../app/cli/clicommands.cpp" line="352"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="343"/>
+        <location filename="../app/cli/clicommands.cpp" line="353"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
     </message>
@@ -1586,7 +1586,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="165"/>
+        <location filename="../app/cli/clicommands.cpp" line="175"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 no se envió: no se pudo leer su límite %2: %3</translation>
     </message>
@@ -1678,37 +1678,37 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="115"/>
+        <location filename="../app/cli/climonitor.cpp" line="116"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="122"/>
+        <location filename="../app/cli/climonitor.cpp" line="123"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="134"/>
+        <location filename="../app/cli/climonitor.cpp" line="135"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="143"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="181"/>
+        <location filename="../app/cli/climonitor.cpp" line="180"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="160"/>
+        <location filename="../app/cli/climonitor.cpp" line="159"/>
         <source>reconnected to %1</source>
         <translation>reconectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitorjoints.cpp" line="55"/>
+        <location filename="../app/cli/climonitorjoints.cpp" line="60"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 registros no se pudieron guardar en el diario %2: %3</translation>
     </message>
@@ -1716,9 +1716,69 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="71"/>
-        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]
-                    [--baud N]
+        <location filename="../app/cli/clioptions.cpp" line="139"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="183"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>indique solo una de --port, --tcp y --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="189"/>
+        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
+        <translation>--workspace requiere un archivo, y solo uno de --port, --tcp, --demo, --workspace</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="196"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="204"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="209"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud requiere una velocidad como 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="216"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity admite none, even u odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="220"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits admite 1 o 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="229"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="237"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="240"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries requiere un número de 0 a 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="168"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 necesita un valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="75"/>
+        <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity |
+                     --workspace FILE] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
                     [--timeout MS] [--retries N] [--verbose] COMMAND ...
 
@@ -1727,8 +1787,9 @@ Commands:
   read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
   write CODE VALUE [--raw]  validate, send, and read back
   send HEX                  send a raw frame; print the answer in hex and decoded
-  monitor [--interval MS] [--duration S] [--csv FILE] [--limit RULE]
-          [--journal FILE]  tip temperature, setpoint, power and status per port, and
+  monitor [--interval MS] [--duration S] [--csv FILE [--csv-one-file]]
+          [--limit RULE] [--journal FILE]
+                            tip temperature, setpoint, power and status per port, and
                             a line per joint, each joint kept in the journal
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
@@ -1759,13 +1820,15 @@ Without --addr or --no-addr the device is found automatically. --demo talks to t
 built-in simulated DME station (address 01) and SFR feeder (address 10);
 --demo-activity the same at work: joints on port 1 every 15 s, rests on port 2, feeds.
 --timeout is the device turnaround added to the wire time of each request.
+--workspace runs the command on every line of a workspace file at once, each output
+line prefixed with the line&apos;s name; monitor --csv writes a file per line.
 
 Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 3 the device answered NAK, or a read-back or profile check failed;
 4 no valid answer; 5 transport error.
 </source>
-        <translation>Uso: tipscope-cli [--port DISPOSITIVO | --tcp HOST:PUERTO | --demo | --demo-activity]
-                  [--baud N]
+        <translation>Uso: tipscope-cli [--port DISPOSITIVO | --tcp HOST:PUERTO | --demo | --demo-activity |
+                   --workspace ARCHIVO] [--baud N]
                   [--parity none|even|odd] [--stop-bits 1|2] [--addr ORIG:DEST | --no-addr]
                   [--timeout MS] [--retries N] [--verbose] COMANDO ...
 
@@ -1775,8 +1838,9 @@ Comandos:
   write CÓDIGO VALOR [--raw]
                             valida, envía y vuelve a leer
   send HEX                  envía una trama en bruto; muestra la respuesta en hex y decodificada
-  monitor [--interval MS] [--duration S] [--csv ARCHIVO] [--limit REGLA]
-          [--journal ARCHIVO] temperatura de la punta, consigna, potencia y estado por
+  monitor [--interval MS] [--duration S] [--csv ARCHIVO [--csv-one-file]]
+          [--limit REGLA] [--journal ARCHIVO]
+                            temperatura de la punta, consigna, potencia y estado por
                             puerto, y una línea por soldadura, cada una guardada en el diario
   dump [--json]             todos los parámetros legibles, contadores y errores
   commands [--family F]     el catálogo de comandos
@@ -1809,6 +1873,8 @@ estación DME simulada integrada (dirección 01) y el alimentador SFR (direcció
 puerto 2, alimentaciones.
 --timeout es el tiempo de respuesta del equipo, que se suma al tiempo de transmisión
 de cada petición.
+--workspace ejecuta el comando en cada línea de un archivo de espacio de trabajo a la vez,
+cada línea de salida precedida del nombre de la línea; monitor --csv escribe un archivo por línea.
 
 Códigos de salida: 0 correcto; 1 error de uso; 2 valor rechazado antes de enviar (no se
 escribió nada); 3 el equipo respondió NAK, o falló una relectura o la comprobación del
@@ -1816,82 +1882,37 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="132"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>comando desconocido &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="176"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>indique solo una de --port, --tcp y --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="183"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="191"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="196"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud requiere una velocidad como 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="203"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity admite none, even u odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="207"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits admite 1 o 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="216"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="224"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="227"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries requiere un número de 0 a 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="161"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 necesita un valor</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="165"/>
+        <location filename="../app/cli/clioptions.cpp" line="172"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="231"/>
+        <location filename="../app/cli/clioptions.cpp" line="244"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="232"/>
+        <location filename="../app/cli/clioptions.cpp" line="245"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="238"/>
+        <location filename="../app/cli/clioptions.cpp" line="251"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="241"/>
+        <location filename="../app/cli/clioptions.cpp" line="254"/>
+        <source>--workspace runs detect, monitor, dump or joints, not %1</source>
+        <translation>--workspace ejecuta detect, monitor, dump o joints, no %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="257"/>
+        <source>--csv-one-file goes with --workspace and --csv FILE</source>
+        <translation>--csv-one-file va con --workspace y --csv ARCHIVO</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="260"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -1979,39 +2000,52 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="69"/>
+        <location filename="../app/cli/clisession.cpp" line="74"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="125"/>
+        <location filename="../app/cli/clisession.cpp" line="79"/>
+        <source>connected to %1</source>
+        <translation>conectado a %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="148"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: el catálogo no indica ningún comando que identifique un equipo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134"/>
+        <location filename="../app/cli/clisession.cpp" line="157"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="135"/>
+        <location filename="../app/cli/clisession.cpp" line="158"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="129"/>
+        <location filename="../app/cli/clisession.cpp" line="152"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="157"/>
+        <location filename="../app/cli/clisession.cpp" line="180"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="162"/>
+        <location filename="../app/cli/clisession.cpp" line="185"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
+    </message>
+</context>
+<context>
+    <name>CliWorkspace</name>
+    <message>
+        <location filename="../app/cli/cliworkspace.cpp" line="94"/>
+        <source>tipscope-cli: the workspace %1 has no lines</source>
+        <translation>tipscope-cli: el espacio de trabajo %1 no tiene líneas</translation>
     </message>
 </context>
 <context>
@@ -3960,24 +3994,165 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>WorkContextFile</name>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="36"/>
         <source>cannot read the work context %1: %2</source>
         <translation>no se puede leer el contexto de trabajo %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="40"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
         <source>the work context %1 is too big to be one</source>
         <translation>el contexto de trabajo %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>el contexto de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="49"/>
-        <source>the work context %1: %2 must be text</source>
-        <translation>el contexto de trabajo %1: %2 debe ser texto</translation>
+        <location filename="../lib/journal/workcontextfile.cpp" line="46"/>
+        <source>the work context %1: %2</source>
+        <translation>el contexto de trabajo %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>WorkContextJson</name>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="26"/>
+        <source>%1 must be text</source>
+        <translation>%1 debe ser texto</translation>
+    </message>
+</context>
+<context>
+    <name>WorkspaceFile</name>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="29"/>
+        <source>not a TipScope workspace (&quot;format&quot; is not &quot;%1&quot;)</source>
+        <translation>no es un espacio de trabajo de TipScope (&quot;format&quot; no es &quot;%1&quot;)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="33"/>
+        <source>&quot;version&quot; must be a whole number from 1</source>
+        <translation>&quot;version&quot; debe ser un número entero desde 1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="35"/>
+        <source>written by a later TipScope (workspace version %1); this one reads version %2 and older</source>
+        <translation>escrito por un TipScope posterior (versión de espacio de trabajo %1); este lee la versión %2 y anteriores</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="63"/>
+        <source>&quot;lines&quot; must be a list of lines</source>
+        <translation>&quot;lines&quot; debe ser una lista de líneas</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="69"/>
+        <source>line %1</source>
+        <translation>línea %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="70"/>
+        <source>line %1 (%2)</source>
+        <translation>línea %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="72"/>
+        <source>%1: must be an object</source>
+        <translation>%1: debe ser un objeto</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="77"/>
+        <source>%1: the name is already another line&apos;s; each line needs its own</source>
+        <translation>%1: el nombre ya es de otra línea; cada línea necesita el suyo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="88"/>
+        <source>cannot read the workspace %1: %2</source>
+        <translation>no se puede leer el espacio de trabajo %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="90"/>
+        <source>the workspace %1 is too big to be one</source>
+        <translation>el espacio de trabajo %1 es demasiado grande para ser uno</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="94"/>
+        <source>the workspace %1 is not a JSON object: %2</source>
+        <translation>el espacio de trabajo %1 no es un objeto JSON: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="96"/>
+        <source>it is a list</source>
+        <translation>es una lista</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="47"/>
+        <source>%1 must be text</source>
+        <translation>%1 debe ser texto</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="56"/>
+        <source>%1 must be a whole number from %2 to %3</source>
+        <translation>%1 debe ser un número entero de %2 a %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="61"/>
+        <source>%1 must be true or false</source>
+        <translation>%1 debe ser true o false</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="71"/>
+        <source>%1 must be one of %2</source>
+        <translation>%1 debe ser uno de %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="76"/>
+        <source>%1 must be an object</source>
+        <translation>%1 debe ser un objeto</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="100"/>
+        <source>%1 must name the serial port</source>
+        <translation>%1 debe nombrar el puerto serie</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="111"/>
+        <source>%1 must be HOST:PORT (for example 192.168.1.20:4001)</source>
+        <translation>%1 debe ser HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="143"/>
+        <source>devices must be a list</source>
+        <translation>devices debe ser una lista</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="149"/>
+        <source>devices[%1] must be an object</source>
+        <translation>devices[%1] debe ser un objeto</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="153"/>
+        <source>%1 must be an address from 0 to 99, or null for the device without addresses</source>
+        <translation>%1 debe ser una dirección de 0 a 99, o null para el dispositivo sin direcciones</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="160"/>
+        <source>%1 must not be empty</source>
+        <translation>%1 no debe estar vacío</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="163"/>
+        <source>devices[%1] names a device named before</source>
+        <translation>devices[%1] nombra un dispositivo ya nombrado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="222"/>
+        <source>every line needs a name</source>
+        <translation>cada línea necesita un nombre</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="229"/>
+        <source>connection is missing</source>
+        <translation>falta connection</translation>
     </message>
 </context>
 <context>

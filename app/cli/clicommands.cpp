@@ -73,6 +73,16 @@ QString formatReading(const ResolvedCommand &cmd, const QByteArray &data, bool r
     return code + QLatin1Char(' ') + described + unitSuffix(cmd, *value);
 }
 
+int runOnLine(CliSession &s) {
+    static const QMap<QString, int (*)(CliSession &)> commands = {
+        {QStringLiteral("detect"), runDetect},   {QStringLiteral("read"), runRead},
+        {QStringLiteral("write"), runWrite},     {QStringLiteral("send"), runSend},
+        {QStringLiteral("monitor"), runMonitor}, {QStringLiteral("dump"), runDump},
+        {QStringLiteral("profile"), runProfile}};
+    const auto run = commands.value(s.options().command);
+    return run ? run(s) : kUsage;
+}
+
 int runDetect(CliSession &s) {
     if (const int rc = s.resolveDevices(); rc != kOk)
         return rc;

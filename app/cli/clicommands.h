@@ -6,6 +6,9 @@
 
 namespace tipscope::cli {
 
+// The command of s.options() that talks to the devices on the open line (detect, read, write,
+// send, monitor, dump, profile).
+int runOnLine(CliSession &s);
 int runDetect(CliSession &s);
 int runRead(CliSession &s);
 int runWrite(CliSession &s);

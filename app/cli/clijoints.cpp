@@ -159,17 +159,22 @@ int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err) {
         err << "tipscope-cli: " << joints.error() << Qt::endl;
         return kTransport;
     }
+    QList<StoredJoint> shown = joints.value();
+    if (!o.lineName.isEmpty()) { // a workspace's line: the joints of its devices
+        const QString line = link::lineIdentityName(o.line);
+        shown.removeIf([&line](const StoredJoint &j) { return j.record.device.line != line; });
+    }
     if (json) {
         QJsonArray array;
-        for (const StoredJoint &j : joints.value())
+        for (const StoredJoint &j : shown)
             array.append(jointJson(j));
         out << QJsonDocument(array).toJson(QJsonDocument::Indented);
     } else if (csv) {
         out << jointCsvHeader() << '\n';
-        for (const StoredJoint &j : joints.value())
+        for (const StoredJoint &j : shown)
             out << jointCsvRow(j) << '\n';
     } else {
-        for (const StoredJoint &j : joints.value())
+        for (const StoredJoint &j : shown)
             out << textLine(j) << '\n';
     }
     out.flush();

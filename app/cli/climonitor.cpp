@@ -5,6 +5,7 @@
 // of its own and is kept in the journal with the work context in force.
 #include "clicommands.h"
 
+#include "climonitorcsv.h"
 #include "climonitorjoints.h"
 
 #include "model/devicemodel.h"
@@ -17,7 +18,6 @@
 #include <QDateTime>
 #include <QElapsedTimer>
 #include <QEventLoop>
-#include <QFile>
 #include <QTimer>
 #include <cmath>
 
@@ -91,9 +91,10 @@ QString readTool(CliSession &s, const DeviceInfo &d, int port) {
                : QString();
 }
 
-// The shared joint limits, with --limit's rule on top.
+// The line's limits (a workspace's) or the shared ones, with --limit's rule on top.
 protocol::Outcome<model::JointLimitRules> limitsOf(const CliOptions &o) {
-    auto rules = model::loadJointLimits(model::defaultJointLimitsPath());
+    auto rules = o.lineLimits ? protocol::Outcome<model::JointLimitRules>(*o.lineLimits)
+                              : model::loadJointLimits(model::defaultJointLimitsPath());
     if (!rules || !o.values.contains(QStringLiteral("limit")))
         return rules;
     const auto rule = model::JointLimitRules::parseRule(o.values.value(QStringLiteral("limit")));
@@ -136,19 +137,17 @@ int runMonitor(CliSession &s) {
     }
     const DeviceInfo d = *station;
     const int ports = Catalog::builtin().family(d.family)->ports;
-    QFile csv;
-    if (s.options().values.contains(QStringLiteral("csv"))) {
-        csv.setFileName(s.options().values.value(QStringLiteral("csv")));
-        if (!csv.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-            s.err() << Tr::tr("tipscope-cli: cannot write %1: %2")
-                           .arg(elidedPath(csv.fileName()), csv.errorString())
-                    << Qt::endl;
+    std::shared_ptr<MonitorCsv> csv = s.options().sharedCsv;
+    if (!csv && s.options().values.contains(QStringLiteral("csv"))) {
+        auto created = MonitorCsv::create(s.options().values.value(QStringLiteral("csv")), false);
+        if (!created) {
+            s.err() << created.error() << Qt::endl;
             return kUsage;
         }
-        csv.write(QStringLiteral("# %1\ntimestamp,port,tip_c,setpoint_c,power_pct,status\n")
-                      .arg(d.summary())
-                      .toUtf8());
+        csv = created.value();
     }
+    if (csv)
+        csv->describe(s.options().lineName, d.summary());
     // The line retries every second while it is down, and each attempt changes its state: the
     // loss is said once, and so is the return.
     QObject watching;
@@ -186,15 +185,11 @@ int runMonitor(CliSession &s) {
             parts.append(QStringLiteral("P%1 %2/%3 °C %4% %5")
                              .arg(p)
                              .arg(r.tip, r.setpoint, r.power, r.status));
-            if (csv.isOpen())
-                csv.write(QStringLiteral("%1,%2,%3,%4,%5,\"%6\"\n")
-                              .arg(stamp)
-                              .arg(p)
-                              .arg(r.tip, r.setpoint, r.power, r.status)
-                              .toUtf8());
+            if (csv)
+                csv->write(
+                    s.options().lineName, stamp, p,
+                    QStringLiteral("%1,%2,%3,\"%4\"").arg(r.tip, r.setpoint, r.power, r.status));
         }
-        if (csv.isOpen())
-            csv.flush();
         s.out() << stamp << "  " << parts.join(QLatin1String(" | ")) << Qt::endl;
         lastCycle = worst;
         const qint64 wait = intervalMs - (clock.elapsed() - cycleStart);

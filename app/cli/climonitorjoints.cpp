@@ -20,8 +20,7 @@ MonitorJoints::MonitorJoints(CliSession &s, const link::DeviceInfo &device, int 
     : m_session(s)
     , m_rules(std::move(rules))
     , m_lastMs(size_t(ports), 0)
-    , m_journal(journalPathOf(s.options()))
-    , m_context(m_journal, journal::workContextPathFor(m_journal.path())) {
+    , m_journal(journalPathOf(s.options())) {
     const model::DeviceIdentity identity{link::lineIdentityName(s.options().line), device.address,
                                          device.model, device.softwareVersion};
     for (int p = 1; p <= ports; ++p)
@@ -31,7 +30,13 @@ MonitorJoints::MonitorJoints(CliSession &s, const link::DeviceInfo &device, int 
                          if (state == journal::JournalState::Failed)
                              m_session.err() << "# " << m_journal.errorText() << Qt::endl;
                      });
-    QObject::connect(&m_context, &journal::WorkContextFollower::unreadable, &m_journal,
+    if (s.options().lineContext) {
+        m_journal.setContext(*s.options().lineContext);
+        return;
+    }
+    m_context = std::make_unique<journal::WorkContextFollower>(
+        m_journal, journal::workContextPathFor(m_journal.path()));
+    QObject::connect(m_context.get(), &journal::WorkContextFollower::unreadable, &m_journal,
                      [this](const QString &why) { m_session.err() << "# " << why << Qt::endl; });
 }
 

@@ -12,6 +12,7 @@
 #include "model/joints/jointdetector.h"
 #include "model/joints/jointlimitrules.h"
 
+#include <memory>
 #include <vector>
 
 namespace tipscope::cli {
@@ -35,7 +36,7 @@ private:
     std::vector<model::JointDetector> m_detectors;
     std::vector<qint64> m_lastMs;
     journal::Journal m_journal;
-    journal::WorkContextFollower m_context;
+    std::unique_ptr<journal::WorkContextFollower> m_context; // none: the workspace's context
 };
 
 // "2026-12-02T10:41:03.120  joint P1 C245 350 °C lowest 318 °C dip 32 K recovery 1.84 s ok"

@@ -38,7 +38,7 @@ const QMap<QString, QStringList> kCommandOptions = {
     {QStringLiteral("send"), {}},
     {QStringLiteral("monitor"),
      {QStringLiteral("interval"), QStringLiteral("duration"), QStringLiteral("csv"),
-      QStringLiteral("journal"), QStringLiteral("limit")}},
+      QStringLiteral("csv-one-file"), QStringLiteral("journal"), QStringLiteral("limit")}},
     {QStringLiteral("dump"), {QStringLiteral("json")}},
     {QStringLiteral("commands"), {QStringLiteral("family")}},
     {QStringLiteral("profile"), {QStringLiteral("force"), QStringLiteral("dry-run")}},
@@ -56,6 +56,10 @@ const QMap<QString, QStringList> kCommandOptions = {
     {QStringLiteral("journal"), {QStringLiteral("json"), QStringLiteral("journal")}},
 };
 
+// What runs on every line of a workspace.
+const QStringList kWorkspaceCommands = {QStringLiteral("detect"), QStringLiteral("monitor"),
+                                        QStringLiteral("dump"), QStringLiteral("joints")};
+
 bool parseInt(const QString &text, int lo, int hi, int *out) {
     bool ok = false;
     const int v = text.toInt(&ok);
@@ -69,8 +73,8 @@ bool parseInt(const QString &text, int lo, int hi, int *out) {
 
 QString CliParser::usage() {
     return tr(
-        "Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity]\n"
-        "                    [--baud N]\n"
+        "Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity |\n"
+        "                     --workspace FILE] [--baud N]\n"
         "                    [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | "
         "--no-addr]\n"
         "                    [--timeout MS] [--retries N] [--verbose] COMMAND ...\n"
@@ -81,8 +85,9 @@ QString CliParser::usage() {
         "  read CODE... [--raw]      one line per code: \"<CODE> <value> <unit>\"\n"
         "  write CODE VALUE [--raw]  validate, send, and read back\n"
         "  send HEX                  send a raw frame; print the answer in hex and decoded\n"
-        "  monitor [--interval MS] [--duration S] [--csv FILE] [--limit RULE]\n"
-        "          [--journal FILE]  tip temperature, setpoint, power and status per port, and\n"
+        "  monitor [--interval MS] [--duration S] [--csv FILE [--csv-one-file]]\n"
+        "          [--limit RULE] [--journal FILE]\n"
+        "                            tip temperature, setpoint, power and status per port, and\n"
         "                            a line per joint, each joint kept in the journal\n"
         "  dump [--json]             every readable parameter, counter and error\n"
         "  commands [--family F]     the command catalog\n"
@@ -113,6 +118,8 @@ QString CliParser::usage() {
         "built-in simulated DME station (address 01) and SFR feeder (address 10);\n"
         "--demo-activity the same at work: joints on port 1 every 15 s, rests on port 2, feeds.\n"
         "--timeout is the device turnaround added to the wire time of each request.\n"
+        "--workspace runs the command on every line of a workspace file at once, each output\n"
+        "line prefixed with the line's name; monitor --csv writes a file per line.\n"
         "\n"
         "Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);\n"
         "3 the device answered NAK, or a read-back or profile check failed;\n"
@@ -177,6 +184,12 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
             haveTransport = o.demo = true;
             o.demoActivity = name == QLatin1String("demo-activity");
             o.line.kind = link::LineSettings::Kind::Demo;
+        } else if (name == QLatin1String("workspace")) {
+            if (haveTransport || !takeValue(&v) || v.isEmpty())
+                return protocol::failure(tr("--workspace takes a file, and only one of --port, "
+                                            "--tcp, --demo, --workspace"));
+            haveTransport = true;
+            o.workspace = v;
         } else if (name == QLatin1String("port")) {
             if (haveTransport || !takeValue(&v) || v.isEmpty())
                 return protocol::failure(
@@ -236,6 +249,12 @@ protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
         return o;
     if (o.command.isEmpty())
         return protocol::failure(tr("no command given"));
+    if (!o.workspace.isEmpty() && !kWorkspaceCommands.contains(o.command))
+        return protocol::failure(
+            tr("--workspace runs detect, monitor, dump or joints, not %1").arg(o.command));
+    if (o.flags.contains(QStringLiteral("csv-one-file")) &&
+        (o.workspace.isEmpty() || !o.values.contains(QStringLiteral("csv"))))
+        return protocol::failure(tr("--csv-one-file goes with --workspace and --csv FILE"));
     if (!haveTransport && !kOffline.contains(o.command))
         return protocol::failure(
             tr("say where the device is: --port DEVICE, --tcp HOST:PORT or --demo"));

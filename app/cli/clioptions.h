@@ -4,13 +4,18 @@
 #pragma once
 
 #include "link/line.h"
+#include "model/joints/jointlimitrules.h"
+#include "model/workcontext.h"
 #include "protocol/outcome.h"
 
 #include <QCoreApplication>
 #include <QStringList>
+#include <memory>
 #include <optional>
 
 namespace tipscope::cli {
+
+class MonitorCsv;
 
 enum ExitCode {
     kOk = 0,
@@ -37,6 +42,13 @@ struct CliOptions {
     QStringList args;              // the command's positional arguments
     QStringList flags;             // the command's options without values: "raw", "json", "scan"
     QMap<QString, QString> values; // the command's options with values: interval, csv, ...
+
+    QString workspace; // --workspace FILE: the command runs on every line of the workspace
+    // What a workspace says of the one line a run is for (see cliworkspace.h).
+    QString lineName;
+    std::optional<model::JointLimitRules> lineLimits;
+    std::optional<model::WorkContext> lineContext;
+    std::shared_ptr<MonitorCsv> sharedCsv; // monitor --csv-one-file: the file every line writes
 };
 
 class CliParser {

@@ -6,6 +6,7 @@
 #include "sim/simline.h"
 
 #include <QEventLoop>
+#include <QTimer>
 #include <cstdio>
 
 namespace tipscope::cli {
@@ -13,10 +14,14 @@ namespace tipscope::cli {
 using namespace tipscope::link;
 using namespace tipscope::protocol;
 
-CliSession::CliSession(const CliOptions &options)
+CliSession::CliSession(const CliOptions &options, QIODevice *out, QIODevice *err)
     : m_options(options)
     , m_out(stdout)
     , m_err(stderr) {
+    if (out)
+        m_out.setDevice(out);
+    if (err)
+        m_err.setDevice(err);
     LineSettings settings = options.line;
     if (options.demo) {
         m_demo = sim::SimLine::demo();
@@ -62,14 +67,32 @@ QString CliSession::withPortElided(QString message) const {
     return message;
 }
 
-int CliSession::open() {
+int CliSession::open(int maxWaitMs) {
     waitForLine();
     if (m_line->state() == Line::State::Open)
         return kOk;
     m_err << withPortElided(tr("tipscope-cli: cannot open %1: %2")
                                 .arg(m_line->transport().description(), m_line->lastError()))
           << Qt::endl;
-    return kTransport;
+    if (m_line->state() != Line::State::Retrying || !waitUntilOpen(maxWaitMs))
+        return kTransport;
+    m_err << "# " << tr("connected to %1").arg(m_line->transport().description()) << Qt::endl;
+    return kOk;
+}
+
+bool CliSession::waitUntilOpen(int maxWaitMs) {
+    QEventLoop loop;
+    QObject::connect(m_line.get(), &Line::stateChanged, &loop, [&loop](Line::State s) {
+        if (s == Line::State::Open)
+            loop.quit();
+    });
+    QTimer deadline;
+    if (maxWaitMs > 0) {
+        QObject::connect(&deadline, &QTimer::timeout, &loop, &QEventLoop::quit);
+        deadline.start(maxWaitMs);
+    }
+    loop.exec();
+    return m_line->state() == Line::State::Open;
 }
 
 Reply *CliSession::ask(const Request &request) {

@@ -20,11 +20,14 @@ namespace tipscope::cli {
 class CliSession {
     Q_DECLARE_TR_FUNCTIONS(CliSession)
 public:
-    explicit CliSession(const CliOptions &options);
+    // Prints on standard output and error, or on `out` and `err` when given (not owned).
+    explicit CliSession(const CliOptions &options, QIODevice *out = nullptr,
+                        QIODevice *err = nullptr);
     ~CliSession();
 
-    // Opens the line; returns kOk or the exit code after printing why.
-    int open();
+    // Opens the line; returns kOk or the exit code after printing why. A line set to retry its
+    // first opening (a workspace's monitor) is waited for until it opens, or for `maxWaitMs`.
+    int open(int maxWaitMs = 0);
     // Finds the devices (or uses --addr / --no-addr); returns kOk or an exit code.
     int resolveDevices();
     [[nodiscard]] const QList<link::DeviceInfo> &devices() const { return m_devices; }
@@ -47,6 +50,7 @@ public:
 
 private:
     void waitForLine();
+    [[nodiscard]] bool waitUntilOpen(int maxWaitMs);
     [[nodiscard]] QString withPortElided(QString message) const;
     int identify(std::optional<int> address);
     static void waitFor(link::Discovery &discovery);

@@ -1,6 +1,7 @@
 // tipscope-cli: the command-line face of TipScope, for technicians' scripts and for testing the
 // whole stack without a window.
 #include "clicommands.h"
+#include "cliworkspace.h"
 #include "i18n/translations.h"
 
 #include <QCoreApplication>
@@ -29,6 +30,8 @@ int main(int argc, char *argv[]) {
         out << "tipscope-cli " << QCoreApplication::applicationVersion() << Qt::endl;
         return kOk;
     }
+    if (!options->workspace.isEmpty())
+        return runWorkspace(*options, out, err);
     if (options->command == QLatin1String("commands"))
         return runCommands(*options, out, err);
     if (options->command == QLatin1String("measure"))
@@ -47,20 +50,5 @@ int main(int argc, char *argv[]) {
     CliSession session(*options);
     if (const int rc = session.open(); rc != kOk)
         return rc;
-    const QString &c = options->command;
-    if (c == QLatin1String("detect"))
-        return runDetect(session);
-    if (c == QLatin1String("read"))
-        return runRead(session);
-    if (c == QLatin1String("write"))
-        return runWrite(session);
-    if (c == QLatin1String("send"))
-        return runSend(session);
-    if (c == QLatin1String("monitor"))
-        return runMonitor(session);
-    if (c == QLatin1String("dump"))
-        return runDump(session);
-    if (c == QLatin1String("profile"))
-        return runProfile(session);
-    return kUsage;
+    return runOnLine(session);
 }

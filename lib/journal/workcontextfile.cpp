@@ -1,6 +1,7 @@
 #include "workcontextfile.h"
 
 #include "model/io/atomicsave.h"
+#include "model/workcontextjson.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -19,9 +20,6 @@ struct Tr {
 using protocol::failure;
 using protocol::Outcome;
 
-const QString kWorkOrder = QStringLiteral("work_order");
-const QString kSerial = QStringLiteral("board_serial");
-const QString kOperator = QStringLiteral("operator");
 constexpr qint64 kMaxBytes = 64 * 1024;
 } // namespace
 
@@ -43,21 +41,16 @@ Outcome<model::WorkContext> readWorkContext(const QString &path) {
     if (!doc.isObject())
         return failure(
             Tr::tr("the work context %1 is not a JSON object: %2").arg(path, error.errorString()));
-    const QJsonObject o = doc.object();
-    for (const QString &key : {kWorkOrder, kSerial, kOperator})
-        if (o.contains(key) && !o.value(key).isString())
-            return failure(Tr::tr("the work context %1: %2 must be text").arg(path, key));
-    return model::WorkContext{o.value(kWorkOrder).toString().trimmed(),
-                              o.value(kSerial).toString().trimmed(),
-                              o.value(kOperator).toString().trimmed()};
+    const auto context = model::workContextFromJson(doc.object());
+    if (!context)
+        return failure(Tr::tr("the work context %1: %2").arg(path, context.error()));
+    return context;
 }
 
 Outcome<void> writeWorkContext(const QString &path, const model::WorkContext &context) {
     QDir().mkpath(QFileInfo(path).absolutePath());
-    const QJsonObject o{{kWorkOrder, context.workOrder},
-                        {kSerial, context.boardSerial},
-                        {kOperator, context.operatorName}};
-    return model::io::saveAtomically(path, QJsonDocument(o).toJson(QJsonDocument::Indented));
+    return model::io::saveAtomically(
+        path, QJsonDocument(model::workContextToJson(context)).toJson(QJsonDocument::Indented));
 }
 
 WorkContextFollower::WorkContextFollower(Journal &journal, const QString &path, QObject *parent)

@@ -1,0 +1,68 @@
+#include "climonitorcsv.h"
+
+#include "model/io/csv.h"
+#include "protocol/elide.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QMutexLocker>
+
+namespace tipscope::cli {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(CliMonitor)
+};
+} // namespace
+
+protocol::Outcome<std::shared_ptr<MonitorCsv>> MonitorCsv::create(const QString &path,
+                                                                  bool lineColumn) {
+    std::shared_ptr<MonitorCsv> csv(new MonitorCsv(lineColumn));
+    csv->m_file.setFileName(path);
+    if (!csv->m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
+        return protocol::failure(Tr::tr("tipscope-cli: cannot write %1: %2")
+                                     .arg(protocol::elidedPath(path), csv->m_file.errorString()));
+    return csv;
+}
+
+void MonitorCsv::describe(const QString &line, const QString &device) {
+    const QString header =
+        m_lineColumn ? QStringLiteral("timestamp,line,port,tip_c,setpoint_c,power_pct,status\n")
+                     : QStringLiteral("timestamp,port,tip_c,setpoint_c,power_pct,status\n");
+    QMutexLocker lock(&m_mutex);
+    if (m_lineColumn) {
+        // The column header once, at the top; each line's device as a comment when it starts.
+        if (m_file.pos() == 0)
+            put(header);
+        put(QStringLiteral("# %1: %2\n").arg(line, device));
+    } else {
+        put(QStringLiteral("# %1\n").arg(device) + header);
+    }
+}
+
+void MonitorCsv::write(const QString &line, const QString &timestamp, int port,
+                       const QString &fields) {
+    const QString row = m_lineColumn
+                            ? QStringLiteral("%1,%2,%3,%4\n")
+                                  .arg(timestamp, model::csv::quoted(line))
+                                  .arg(port)
+                                  .arg(fields)
+                            : QStringLiteral("%1,%2,%3\n").arg(timestamp).arg(port).arg(fields);
+    QMutexLocker lock(&m_mutex);
+    put(row);
+}
+
+void MonitorCsv::put(const QString &text) {
+    m_file.write(text.toUtf8());
+    m_file.flush();
+}
+
+QString MonitorCsv::fileFor(const QString &path, const QString &line) {
+    const QFileInfo info(path);
+    const QString suffix = info.suffix();
+    const QString base = suffix.isEmpty() ? path : path.left(path.size() - suffix.size() - 1);
+    return base + QLatin1Char('-') + line +
+           (suffix.isEmpty() ? QString() : QLatin1Char('.') + suffix);
+}
+
+} // namespace tipscope::cli

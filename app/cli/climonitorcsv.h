@@ -1,0 +1,44 @@
+// MonitorCsv: the file `tipscope-cli monitor --csv FILE` writes as it goes, one row per port and
+// cycle: "timestamp,port,tip_c,setpoint_c,power_pct,status", under a comment naming the station.
+//
+// With a workspace, each line writes a file of its own by default (FILE with the line's name
+// before the extension: plant.csv → plant-cell-3.csv, see fileFor()); with --csv-one-file every
+// line writes into one file that has a `line` column after the timestamp. That shared file is
+// written by every line's thread: each row goes in whole under a lock, so rows never mix.
+#pragma once
+
+#include "protocol/outcome.h"
+
+#include <QFile>
+#include <QMutex>
+#include <QString>
+#include <memory>
+
+namespace tipscope::cli {
+
+class MonitorCsv {
+public:
+    // Creates (truncates) `path`; with `lineColumn`, rows carry the line's name.
+    [[nodiscard]] static protocol::Outcome<std::shared_ptr<MonitorCsv>> create(const QString &path,
+                                                                               bool lineColumn);
+
+    // A comment row naming the device a line monitors ("# cell-3: 01 DME-2C DME 9996780").
+    void describe(const QString &line, const QString &device);
+    // One port's reading; `line` is ignored without the line column.
+    void write(const QString &line, const QString &timestamp, int port, const QString &fields);
+
+    // "plant.csv" for line "cell-3" is "plant-cell-3.csv"; a name without extension gets the
+    // line's name at its end.
+    [[nodiscard]] static QString fileFor(const QString &path, const QString &line);
+
+private:
+    MonitorCsv(bool lineColumn)
+        : m_lineColumn(lineColumn) {}
+    void put(const QString &text);
+
+    QMutex m_mutex;
+    QFile m_file;
+    bool m_lineColumn = false;
+};
+
+} // namespace tipscope::cli

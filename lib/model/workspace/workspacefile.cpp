@@ -1,0 +1,109 @@
+#include "model/workspace/workspacefile.h"
+
+#include "model/io/atomicsave.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSet>
+
+namespace tipscope::model {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(WorkspaceFile)
+};
+
+using protocol::failure;
+using protocol::Outcome;
+
+const QString kFormat = QStringLiteral("tipscope-workspace");
+constexpr qint64 kMaxBytes = 4 * 1024 * 1024;
+
+// The header: this is a workspace, of a version this TipScope reads.
+Outcome<void> checkHeader(const QJsonObject &json) {
+    if (json.value(QStringLiteral("format")).toString() != kFormat)
+        return failure(Tr::tr("not a TipScope workspace (\"format\" is not \"%1\")").arg(kFormat));
+    const QJsonValue version = json.value(QStringLiteral("version"));
+    if (!version.isDouble() || version.toDouble() < 1 ||
+        version.toDouble() != double(version.toInt()))
+        return failure(Tr::tr("\"version\" must be a whole number from 1"));
+    if (version.toInt() > WorkspaceFile::kVersion)
+        return failure(Tr::tr("written by a later TipScope (workspace version %1); this one reads "
+                              "version %2 and older")
+                           .arg(version.toInt())
+                           .arg(WorkspaceFile::kVersion));
+    return {};
+}
+} // namespace
+
+const WorkspaceLine *WorkspaceFile::line(const QString &name) const {
+    for (const WorkspaceLine &l : lines)
+        if (l.name == name)
+            return &l;
+    return nullptr;
+}
+
+QJsonObject WorkspaceFile::toJson() const {
+    QJsonArray list;
+    for (const WorkspaceLine &l : lines)
+        list.append(workspaceLineToJson(l));
+    return {{QStringLiteral("format"), kFormat},
+            {QStringLiteral("version"), kVersion},
+            {QStringLiteral("lines"), list}};
+}
+
+Outcome<WorkspaceFile> WorkspaceFile::fromJson(const QJsonObject &json) {
+    if (const auto header = checkHeader(json); !header)
+        return failure(header.error());
+    if (!json.value(QStringLiteral("lines")).isArray())
+        return failure(Tr::tr("\"lines\" must be a list of lines"));
+    const QJsonArray list = json.value(QStringLiteral("lines")).toArray();
+    WorkspaceFile file;
+    QSet<QString> names;
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        const QString name = list.at(i).toObject().value(QStringLiteral("name")).toString();
+        const QString which = name.isEmpty() ? Tr::tr("line %1").arg(i + 1)
+                                             : Tr::tr("line %1 (%2)").arg(i + 1).arg(name);
+        if (!list.at(i).isObject())
+            return failure(Tr::tr("%1: must be an object").arg(which));
+        const auto line = workspaceLineFromJson(list.at(i).toObject());
+        if (!line)
+            return failure(QStringLiteral("%1: %2").arg(which, line.error()));
+        if (names.contains(line->name))
+            return failure(Tr::tr("%1: the name is already another line's; each line needs its own")
+                               .arg(which));
+        names.insert(line->name);
+        file.lines.append(line.value());
+    }
+    return file;
+}
+
+Outcome<WorkspaceFile> WorkspaceFile::load(const QString &path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return failure(Tr::tr("cannot read the workspace %1: %2").arg(path, f.errorString()));
+    if (f.size() > kMaxBytes)
+        return failure(Tr::tr("the workspace %1 is too big to be one").arg(path));
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &error);
+    if (!doc.isObject())
+        return failure(Tr::tr("the workspace %1 is not a JSON object: %2")
+                           .arg(path, error.error == QJsonParseError::NoError
+                                          ? Tr::tr("it is a list")
+                                          : error.errorString()));
+    const auto file = fromJson(doc.object());
+    if (!file)
+        return failure(QStringLiteral("%1: %2").arg(path, file.error()));
+    return file;
+}
+
+Outcome<void> WorkspaceFile::save(const QString &path) const {
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    return io::saveAtomically(path, QJsonDocument(toJson()).toJson(QJsonDocument::Indented));
+}
+
+} // namespace tipscope::model
