@@ -95,8 +95,14 @@ void JointDetector::startJoint(const PortReading &previous, const PortReading &r
     m_joint.port = m_port;
     m_joint.tool = reading.tool;
     m_joint.setpoint = reading.setpoint;
-    m_joint.startMs = crossing(previous.timeMs, *previous.tip, reading.timeMs, *reading.tip,
-                               bandEdge(reading.setpoint));
+    // A settled tip was flat at `previous`, and a joint draws heat at once: the drop is steep
+    // from wherever between the readings it began. A straight line from the flat reading puts
+    // the crossing too early when the drop is steep, so the crossing is no earlier than the
+    // middle of the interval (where a departure at an unknown moment is expected); a gentle
+    // slide out of the band keeps the straight line's later estimate.
+    const qint64 straight = crossing(previous.timeMs, *previous.tip, reading.timeMs, *reading.tip,
+                                     bandEdge(reading.setpoint));
+    m_joint.startMs = qMax(straight, previous.timeMs + (reading.timeMs - previous.timeMs) / 2);
     m_joint.lowestTip = *previous.tip;
     m_joint.powerPeak = int(std::lround(previous.powerPct));
     accumulate(reading);

@@ -62,6 +62,7 @@ private Q_SLOTS:
     void whatBreaksTheMeasurementEndsTheJointIncomplete_data();
     void whatBreaksTheMeasurementEndsTheJointIncomplete();
     void aJointThatNeverRecoversEndsAfterTheGiveUpTime();
+    void aSteepDropIsTimedAtTheMiddleOfItsIntervalAGentleOneByItsLine();
 };
 
 void TestJointDetector::aJointIsMeasuredToWithinThePollPeriod() {
@@ -188,6 +189,24 @@ void TestJointDetector::aJointThatNeverRecoversEndsAfterTheGiveUpTime() {
     QCOMPARE(j->verdict, JointVerdict::SlowRecovery);
     QVERIFY(!j->recoveryMs.has_value());
     QVERIFY(j->durationMs > JointDetector::kGiveUpMs);
+}
+
+// A settled tip read at 0 and then far below at 100 left the band at an unknown moment between:
+// a straight line from the flat reading would say 13 ms, too early for a drop that is steep
+// from wherever it began, so the middle (50 ms) is taken. A tip 7 K below at 100 slid out
+// gently, and the straight line's 79 ms stands.
+void TestJointDetector::aSteepDropIsTimedAtTheMiddleOfItsIntervalAGentleOneByItsLine() {
+    const auto startOf = [](int below) {
+        JointDetector d(DeviceIdentity{}, 1);
+        for (qint64 t = 0; t <= 2000; t += kPollMs)
+            (void)d.add(reading(kT0 + t, kSetpoint));
+        (void)d.add(reading(kT0 + 2100, kSetpoint - below, 80));
+        (void)d.add(reading(kT0 + 2200, kSetpoint - below, 80));
+        const auto j = d.add(reading(kT0 + 2300, kSetpoint, 10));
+        return j ? j->startMs - (kT0 + 2000) : qint64(-1);
+    };
+    QCOMPARE(startOf(40), 50); // steep: the middle of the interval
+    QCOMPARE(startOf(7), 79);  // gentle: 5.5 / 7 of the way
 }
 
 QTEST_GUILESS_MAIN(TestJointDetector)
