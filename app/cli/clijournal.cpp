@@ -87,11 +87,12 @@ int setRetention(const CliOptions &o, QTextStream &out, QTextStream &err) {
     Journal journal(journalPathOf(o));
     (void)journal.setRetentionDays(days);
     journal.close();
+    // Read back from the file: the proof that it was stored, without counting the records.
     JournalReader reader;
     const auto opened = reader.open(journal.path());
-    const auto summary = opened ? reader.summary() : protocol::failure(opened.error());
-    if (!summary || summary->retentionDays != days) {
-        const QString why = !summary ? summary.error() : journal.errorText();
+    const auto stored = opened ? reader.retentionDays() : protocol::failure(opened.error());
+    if (!stored || *stored != days) {
+        const QString why = !stored ? stored.error() : journal.errorText();
         err << Tr::tr("tipscope-cli: the retention could not be stored: %1").arg(why) << Qt::endl;
         return kTransport;
     }

@@ -199,13 +199,19 @@ Outcome<JournalSummary> JournalReader::summary() const {
                              });
         !ran)
         return failure(ran.error());
-    QSqlDatabase db = QSqlDatabase::database(m_connection, false);
-    const auto days = readRetentionDays(db);
+    const auto days = retentionDays();
     if (!days)
         return failure(days.error());
     out.retentionDays = *days;
     out.fileBytes = QFileInfo(m_path).size() + QFileInfo(m_path + QStringLiteral("-wal")).size();
     return out;
+}
+
+Outcome<int> JournalReader::retentionDays() const {
+    QSqlDatabase db = QSqlDatabase::database(m_connection, false);
+    if (!db.isOpen())
+        return failure(Tr::tr("No journal is open."));
+    return readRetentionDays(db);
 }
 
 } // namespace tipscope::journal

@@ -44,6 +44,8 @@ public:
     [[nodiscard]] protocol::Outcome<QList<StoredEvent>> unsentEvents(qint64 afterId,
                                                                      int limit) const;
     [[nodiscard]] protocol::Outcome<JournalSummary> summary() const;
+    // The retention stored in the file (journalsettings.h), without counting anything.
+    [[nodiscard]] protocol::Outcome<int> retentionDays() const;
 
     // Every device the journal has a record of, in key order.
     [[nodiscard]] protocol::Outcome<QList<model::DeviceIdentity>> devices() const;

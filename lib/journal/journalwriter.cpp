@@ -253,6 +253,8 @@ void JournalWriter::reportLosses() {
     writeBatch(m_backlog.size());
 }
 
+// In force again here, not only in Journal::setRetentionDays(): the read at opening may have
+// come between the two. Then into the file.
 void JournalWriter::setRetentionDays(int days) {
     {
         QMutexLocker lock(&m_shared->mutex);
@@ -260,17 +262,14 @@ void JournalWriter::setRetentionDays(int days) {
     }
     m_options.retentionDays.reset(); // the file holds the chosen one from now on
     m_retentionToStore = days;
-    if (m_statements)
-        syncRetention();
     pruneStep();
 }
 
 void JournalWriter::pruneStep() {
-    if (m_pruneQueued)
-        return;
     if (m_statements)
         syncRetention();
-    pruneBatch();
+    if (!m_pruneQueued)
+        pruneBatch();
 }
 
 void JournalWriter::pruneBatch() {
