@@ -1657,12 +1657,12 @@
         <translation>tipscope-cli: journal retention erwartet eine Anzahl Tage (0 behält alles), zum Beispiel: journal retention 90</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="95"/>
+        <location filename="../app/cli/clijournal.cpp" line="96"/>
         <source>tipscope-cli: the retention could not be stored: %1</source>
         <translation>tipscope-cli: die Aufbewahrungsdauer konnte nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="110"/>
+        <location filename="../app/cli/clijournal.cpp" line="111"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal erwartet show oder retention TAGE</translation>
     </message>
@@ -2777,6 +2777,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="32"/>
+        <location filename="../lib/journal/journalreader.cpp" line="213"/>
         <source>No journal is open.</source>
         <translation>Kein Journal ist geöffnet.</translation>
     </message>
@@ -2806,7 +2807,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Verlorene Einträge: %1. Grund: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="337"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="336"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
     </message>
@@ -5786,6 +5787,72 @@ Zurücksetzen?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::FleetPage</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="28"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="29"/>
+        <source>Line</source>
+        <translation>Leitung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="30"/>
+        <source>State, worst first</source>
+        <translation>Zustand, schlechtester zuerst</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <source>Sort by:</source>
+        <translation>Sortieren nach:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="33"/>
+        <source>Needs attention only</source>
+        <translation>Nur was Aufmerksamkeit braucht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="114"/>
+        <source>Devices: %1 · need attention: %2</source>
+        <translation>Geräte: %1 · brauchen Aufmerksamkeit: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="193"/>
+        <source>No devices: the workspace&apos;s lines have found none yet.</source>
+        <translation>Keine Geräte: die Leitungen des Arbeitsbereichs haben noch keine gefunden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="194"/>
+        <source>No device needs attention.</source>
+        <translation>Kein Gerät braucht Aufmerksamkeit.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="46"/>
+        <source>Fleet</source>
+        <translation>Geräteübersicht</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FleetTileWidget</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="72"/>
+        <source>P%1  %2 / %3  %4  %5</source>
+        <translation>P%1  %2 / %3  %4  %5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="76"/>
+        <source>  · joint %1</source>
+        <translation>  · Lötstelle %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="98"/>
+        <source>Last joint: %1 (port %2)</source>
+        <translation>Letzte Lötstelle: %1 (Port %2)</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
@@ -7499,6 +7566,65 @@ Möchten Sie fortfahren?</translation>
         <location filename="../lib/model/consolesender.cpp" line="91"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: gesendet, warte auf Antwort…</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::FleetTile</name>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="39"/>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="53"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="45"/>
+        <source>Port %1: %2</source>
+        <translation>Port %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="48"/>
+        <source>Port %1 alarm: %2</source>
+        <translation>Port %1 Alarm: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="54"/>
+        <source>Feeding</source>
+        <translation>Vorschub läuft</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="55"/>
+        <source>Not feeding</source>
+        <translation>Kein Vorschub</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="56"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · vorgeschoben %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="195"/>
+        <source>Line down</source>
+        <translation>Leitung getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="200"/>
+        <source>Line down since %1</source>
+        <translation>Leitung getrennt seit %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="201"/>
+        <source>Line down since %1 %2</source>
+        <translation>Leitung getrennt seit %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="219"/>
+        <source>Station: %1</source>
+        <translation>Station: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="231"/>
+        <source>Feeder: %1</source>
+        <translation>Lotdrahtvorschub: %1</translation>
     </message>
 </context>
 </TS>

@@ -1657,12 +1657,12 @@
         <translation>tipscope-cli: journal retention espera un número de días (0 lo conserva todo), por ejemplo: journal retention 90</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="95"/>
+        <location filename="../app/cli/clijournal.cpp" line="96"/>
         <source>tipscope-cli: the retention could not be stored: %1</source>
         <translation>tipscope-cli: no se pudo guardar el tiempo de conservación: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="110"/>
+        <location filename="../app/cli/clijournal.cpp" line="111"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal espera show o retention DÍAS</translation>
     </message>
@@ -2778,6 +2778,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="32"/>
+        <location filename="../lib/journal/journalreader.cpp" line="213"/>
         <source>No journal is open.</source>
         <translation>No hay ningún diario abierto.</translation>
     </message>
@@ -2807,7 +2808,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>Registros perdidos: %1. Motivo: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="337"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="336"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>El diario se cerró antes de poder escribirlos: %1</translation>
     </message>
@@ -5787,6 +5788,72 @@ Reset it?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::FleetPage</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="28"/>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="29"/>
+        <source>Line</source>
+        <translation>Línea</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="30"/>
+        <source>State, worst first</source>
+        <translation>Estado, el peor primero</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <source>Sort by:</source>
+        <translation>Ordenar por:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="33"/>
+        <source>Needs attention only</source>
+        <translation>Solo lo que requiere atención</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="114"/>
+        <source>Devices: %1 · need attention: %2</source>
+        <translation>Equipos: %1 · requieren atención: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="193"/>
+        <source>No devices: the workspace&apos;s lines have found none yet.</source>
+        <translation>Sin equipos: las líneas del espacio de trabajo aún no han encontrado ninguno.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="194"/>
+        <source>No device needs attention.</source>
+        <translation>Ningún equipo requiere atención.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="46"/>
+        <source>Fleet</source>
+        <translation>Flota</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FleetTileWidget</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="72"/>
+        <source>P%1  %2 / %3  %4  %5</source>
+        <translation>P%1  %2 / %3  %4  %5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="76"/>
+        <source>  · joint %1</source>
+        <translation>  · soldadura %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="98"/>
+        <source>Last joint: %1 (port %2)</source>
+        <translation>Última soldadura: %1 (puerto %2)</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
@@ -7500,6 +7567,65 @@ Do you want to continue?</source>
         <location filename="../lib/model/consolesender.cpp" line="91"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: enviado, esperando la respuesta…</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::FleetTile</name>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="39"/>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="53"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="45"/>
+        <source>Port %1: %2</source>
+        <translation>Puerto %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="48"/>
+        <source>Port %1 alarm: %2</source>
+        <translation>Alarma del puerto %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="54"/>
+        <source>Feeding</source>
+        <translation>Alimentando</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="55"/>
+        <source>Not feeding</source>
+        <translation>Sin alimentar</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="56"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · alimentado %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="195"/>
+        <source>Line down</source>
+        <translation>Línea caída</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="200"/>
+        <source>Line down since %1</source>
+        <translation>Línea caída desde las %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="201"/>
+        <source>Line down since %1 %2</source>
+        <translation>Línea caída desde el %1 a las %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="219"/>
+        <source>Station: %1</source>
+        <translation>Estación: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="231"/>
+        <source>Feeder: %1</source>
+        <translation>Alimentador: %1</translation>
     </message>
 </context>
 </TS>
