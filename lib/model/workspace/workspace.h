@@ -6,7 +6,10 @@
 // the shared ones (setSharedLimits()) when the line names none. The workspace owns the sessions;
 // a session() pointer stays valid until close() or the next open(). lineStateChanged() and
 // lineDevicesChanged() repeat a session's signals with the line's index; linesChanged() says the
-// set of lines changed (open, close).
+// set of lines changed (open, addLine, close).
+//
+// A workspace watches a fleet: every port of every station is polled at the live interval, shown
+// or not, so each line's joints are found and its tiles are current.
 #pragma once
 
 #include "model/workspace/workspacefile.h"
@@ -24,6 +27,8 @@ public:
     ~Workspace() override;
 
     void open(const WorkspaceFile &file);
+    // Adds a line to those open and connects it; the others carry on. Refuses a name in use.
+    protocol::Outcome<void> addLine(const WorkspaceLine &line);
     void close();
 
     [[nodiscard]] const WorkspaceFile &file() const { return m_file; }
@@ -45,6 +50,8 @@ Q_SIGNALS:
     void lineDevicesChanged(int index);
 
 private:
+    void startSession(int index);
+
     WorkspaceFile m_file;
     JointLimitRules m_shared;
     std::vector<std::unique_ptr<Session>> m_sessions;
