@@ -58,6 +58,7 @@ private Q_SLOTS:
     void aLineTakenDownGreysItsTilesAndSaysSinceWhen();
     void theColumnsGrowWithTheWidth();
     void aTileRepaintsOnlyWhenWhatItShowsChangedAndSaysHowLate();
+    void aLineJoiningAddsItsTilesAndKeepsTheOthers();
 
 private:
     [[nodiscard]] FleetTileWidget *tileNamed(const QString &name) const;
@@ -206,6 +207,23 @@ void TestFleetPage::aTileRepaintsOnlyWhenWhatItShowsChangedAndSaysHowLate() {
         QVERIFY(ms >= 0);
     m_page->clearTileLatencies();
     QVERIFY(m_page->tileLatenciesMs().empty());
+}
+
+void TestFleetPage::aLineJoiningAddsItsTilesAndKeepsTheOthers() {
+    FleetTileWidget *robot = tileNamed(QStringLiteral("Robot 9"));
+    QVERIFY(m_workspace
+                ->addLine(demoWorkspaceLine(QStringLiteral("line-d"), {}, QStringLiteral("Robot 1"),
+                                            QStringLiteral("Feeder 1")))
+                .ok());
+    QTRY_COMPARE_WITH_TIMEOUT(m_page->tileCount(), 8, kConnectMs);
+    QCOMPARE(tileNamed(QStringLiteral("Robot 9")), robot);
+    m_page->setSortKey(FleetSortKey::Name);
+    QTRY_COMPARE_WITH_TIMEOUT(shownNames(*m_page).first(), QStringLiteral("Feeder 1"), kConnectMs);
+    // Its ports are polled without the page asking: the workspace watches every port.
+    QTRY_VERIFY_WITH_TIMEOUT(stationsRead(*m_page), kConnectMs);
+    m_workspace->close();
+    QCOMPARE(m_page->tileCount(), 0);
+    QVERIFY(m_page->shownTiles().isEmpty());
 }
 
 QTEST_MAIN(TestFleetPage)

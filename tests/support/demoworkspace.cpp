@@ -23,7 +23,7 @@ bool openDemoWorkspace(model::Workspace &workspace, const QList<model::Workspace
     model::WorkspaceFile file;
     file.lines = lines;
     workspace.open(file);
-    const bool connected = QTest::qWaitFor(
+    return QTest::qWaitFor(
         [&] {
             for (int i = 0; i < workspace.count(); ++i) {
                 const model::Session &s = *workspace.session(i);
@@ -33,16 +33,6 @@ bool openDemoWorkspace(model::Workspace &workspace, const QList<model::Workspace
             return true;
         },
         timeoutMs);
-    if (!connected)
-        return false;
-    for (int i = 0; i < workspace.count(); ++i) {
-        model::Session &s = *workspace.session(i);
-        QSet<int> ports;
-        for (const model::PortModel *port : s.station()->ports())
-            ports.insert(port->number());
-        s.scheduler().setVisiblePorts(s.station(), ports);
-    }
-    return true;
 }
 
 link::SimTransport &demoTransport(model::Workspace &workspace, int index) {

@@ -1,8 +1,7 @@
 // Workspaces of in-process demo lines for the fleet tests: each line is the built-in simulated
 // DME (at 01) and SFR (at 10), unpaced as in demosession.h, with the names a workspace gives its
 // lines and devices. openDemoWorkspace() waits until every line is connected with its station
-// and feeder, and (for tests that need live values) has every port of every station polled at
-// the live rate.
+// and feeder (the workspace polls every port live by itself).
 #pragma once
 
 #include "model/workspace/workspace.h"

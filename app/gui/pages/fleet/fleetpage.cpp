@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QScrollArea>
 #include <QVBoxLayout>
+#include <functional>
 
 namespace tipscope::gui {
 
@@ -67,7 +68,7 @@ FleetPage::FleetPage(model::Workspace &workspace, QWidget *parent)
             refreshNow();
     });
     connect(&workspace, &model::Workspace::linesChanged, this, &FleetPage::rebuild);
-    connect(&workspace, &model::Workspace::lineDevicesChanged, this, &FleetPage::rebuildLine);
+    connect(&workspace, &model::Workspace::lineDevicesChanged, this, &FleetPage::syncLine);
     rebuild();
 }
 
@@ -120,18 +121,34 @@ void FleetPage::showEvent(QShowEvent *event) {
 }
 
 void FleetPage::rebuild() {
-    for (FleetTileWidget *tile : std::as_const(m_tiles))
-        m_flow->removeWidget(tile);
-    qDeleteAll(m_tiles);
-    m_tiles.clear();
+    removeTilesIf([this](const FleetTileWidget *tile) {
+        return tile->tile().lineIndex() >= m_workspace.count();
+    });
     for (int line = 0; line < m_workspace.count(); ++line)
-        addTiles(line);
+        syncLine(line);
     arrange();
 }
 
-void FleetPage::rebuildLine(int line) {
+// A tile stays as long as its device does, so a line joining the workspace or a device found
+// again keeps what the other tiles know (since when their line is down, their last joints).
+void FleetPage::syncLine(int line) {
+    const QList<model::DeviceModel *> &devices = m_workspace.session(line)->devices();
+    removeTilesIf([line, &devices](const FleetTileWidget *tile) {
+        return tile->tile().lineIndex() == line && !devices.contains(tile->tile().device());
+    });
+    for (model::DeviceModel *device : devices) {
+        const bool tiled = std::any_of(m_tiles.cbegin(), m_tiles.cend(), [device](const auto *t) {
+            return t->tile().device() == device;
+        });
+        if (!tiled)
+            addTile(line, device);
+    }
+    arrange();
+}
+
+void FleetPage::removeTilesIf(const std::function<bool(const FleetTileWidget *)> &gone) {
     for (auto it = m_tiles.begin(); it != m_tiles.end();) {
-        if ((*it)->tile().lineIndex() != line) {
+        if (!gone(*it)) {
             ++it;
             continue;
         }
@@ -139,23 +156,19 @@ void FleetPage::rebuildLine(int line) {
         delete *it;
         it = m_tiles.erase(it);
     }
-    addTiles(line);
-    arrange();
 }
 
-void FleetPage::addTiles(int line) {
-    for (model::DeviceModel *device : m_workspace.session(line)->devices()) {
-        auto *tile = new FleetTileWidget(new model::FleetTile(m_workspace, line, *device), m_host);
-        connect(tile, &FleetTileWidget::dirtied, this, &FleetPage::scheduleRefresh);
-        connect(tile, &FleetTileWidget::latencyMeasured, this, &FleetPage::recordLatency);
-        connect(tile, &FleetTileWidget::activated, this, [this, tile] {
-            if (model::DeviceModel *device = tile->tile().device())
-                Q_EMIT deviceActivated(tile->tile().lineIndex(), device);
-        });
-        m_flow->addWidget(tile);
-        m_flow->setAlignment(tile, Qt::AlignTop);
-        m_tiles.append(tile);
-    }
+void FleetPage::addTile(int line, model::DeviceModel *device) {
+    auto *tile = new FleetTileWidget(new model::FleetTile(m_workspace, line, *device), m_host);
+    connect(tile, &FleetTileWidget::dirtied, this, &FleetPage::scheduleRefresh);
+    connect(tile, &FleetTileWidget::latencyMeasured, this, &FleetPage::recordLatency);
+    connect(tile, &FleetTileWidget::activated, this, [this, tile] {
+        if (model::DeviceModel *device = tile->tile().device())
+            Q_EMIT deviceActivated(tile->tile().lineIndex(), device);
+    });
+    m_flow->addWidget(tile);
+    m_flow->setAlignment(tile, Qt::AlignTop);
+    m_tiles.append(tile);
 }
 
 void FleetPage::scheduleRefresh() {

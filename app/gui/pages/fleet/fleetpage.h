@@ -7,8 +7,8 @@
 // Readings arrive far faster than anyone reads 128 ports: a tile only notes that it may have
 // changed, and every kRefreshMs the page refreshes the tiles that noted it, so only tiles whose
 // state changed repaint, and then re-sorts or re-filters if a change moved one. The tiles follow
-// the workspace: its lines opened or closed, a line's devices found again. The page polls
-// nothing itself: what the workspace polls is what it shows.
+// the workspace: its lines opened, added or closed, a line's devices found again; a tile lives as
+// long as its device. The page polls nothing itself: the workspace polls every port of a fleet.
 //
 // For the fleet benchmark: how late each tile repaint came after the tip reading that caused it
 // (tileLatenciesMs(), in ms, at most kMaxLatencies kept).
@@ -18,6 +18,7 @@
 
 #include <QTimer>
 #include <QWidget>
+#include <functional>
 #include <vector>
 
 class QCheckBox;
@@ -69,8 +70,9 @@ protected:
 
 private:
     void rebuild();
-    void rebuildLine(int line);
-    void addTiles(int line);
+    void syncLine(int line);
+    void removeTilesIf(const std::function<bool(const FleetTileWidget *)> &gone);
+    void addTile(int line, model::DeviceModel *device);
     void scheduleRefresh();
     // Puts the tiles in order and applies the filter; relays them out only if that moved one.
     void arrange();
