@@ -42,8 +42,8 @@ Outcome<model::WorkContext> readWorkContext(const QString &path) {
         case Kind::TooBig:
             return failure(Tr::tr("the work context %1 is too big to be one").arg(path));
         case Kind::NotAnObject:
-            return failure(Tr::tr("the work context %1 is not a JSON object: %2")
-                               .arg(path, problem->detail));
+            return failure(
+                Tr::tr("the work context %1 is not a JSON object: %2").arg(path, problem->detail));
         }
     }
     const auto context = model::workContextFromJson(std::get<QJsonObject>(read));

@@ -96,9 +96,9 @@ Outcome<WorkspaceFile> WorkspaceFile::load(const QString &path) {
         case Kind::TooBig:
             return failure(Tr::tr("the workspace %1 is too big to be one").arg(path));
         case Kind::NotAnObject:
-            return failure(
-                Tr::tr("the workspace %1 is not a JSON object: %2")
-                    .arg(path, problem->detail.isEmpty() ? Tr::tr("it is a list") : problem->detail));
+            return failure(Tr::tr("the workspace %1 is not a JSON object: %2")
+                               .arg(path, problem->detail.isEmpty() ? Tr::tr("it is a list")
+                                                                    : problem->detail));
         }
     }
     const auto file = fromJson(std::get<QJsonObject>(read));
