@@ -56,7 +56,7 @@ public:
     [[nodiscard]] int columnCount() const;
     // Refreshes every tile that may have changed now, without waiting for the timer.
     void refreshNow();
-    // The summary above the tiles ("8 devices, 2 need attention").
+    // The summary above the tiles ("Devices: 8 · need attention: 2").
     [[nodiscard]] QString summaryText() const;
 
     [[nodiscard]] std::vector<double> tileLatenciesMs() const { return m_latencies; }

@@ -56,12 +56,12 @@ bool FleetTileWidget::refresh() {
     // A tile out of sight is not drawn: its readings would count as late when it reappears.
     m_repaintDueNs = isVisible() ? m_arrivedNs : -1;
     m_arrivedNs = -1;
-    const QList<Line> drawn = layoutLines();
+    // Laid out once per change; paints between changes (exposures, scrolling) reuse it.
+    const qsizetype before = m_lines.size();
+    m_lines = layoutLines();
     setAccessibleName(m_shown.deviceName);
-    if (int(drawn.size()) != m_lineCount) {
-        m_lineCount = int(drawn.size());
+    if (m_lines.size() != before)
         updateGeometry();
-    }
     update();
     return true;
 }
@@ -104,7 +104,7 @@ QList<FleetTileWidget::Line> FleetTileWidget::layoutLines() const {
 
 QStringList FleetTileWidget::lines() const {
     QStringList texts;
-    for (const Line &line : layoutLines())
+    for (const Line &line : m_lines)
         texts.append(line.text);
     return texts;
 }
@@ -115,7 +115,7 @@ int FleetTileWidget::lineHeight() const {
 
 QSize FleetTileWidget::sizeHint() const {
     return {fontMetrics().averageCharWidth() * kWidthInChars + 2 * kMargin,
-            qMax(m_lineCount, 2) * lineHeight() + 2 * kMargin};
+            qMax(int(m_lines.size()), 2) * lineHeight() + 2 * kMargin};
 }
 
 void FleetTileWidget::paintEvent(QPaintEvent *) {
@@ -137,7 +137,7 @@ void FleetTileWidget::paintEvent(QPaintEvent *) {
     const int height = lineHeight();
     const int iconSize = fontMetrics().height();
     int y = kMargin;
-    for (const Line &line : layoutLines()) {
+    for (const Line &line : std::as_const(m_lines)) {
         QFont font = this->font();
         font.setBold(line.bold);
         painter.setFont(font);

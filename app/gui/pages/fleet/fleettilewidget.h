@@ -67,7 +67,7 @@ private:
     QElapsedTimer m_clock;
     qint64 m_arrivedNs = -1;    // the oldest reading not yet shown
     qint64 m_repaintDueNs = -1; // its stamp, once a repaint is scheduled for it
-    int m_lineCount = 0;
+    QList<Line> m_lines;        // what m_shown draws
 };
 
 } // namespace tipscope::gui
