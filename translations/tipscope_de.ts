@@ -4004,7 +4004,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>der Arbeitskontext %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="46"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>der Arbeitskontext %1 ist kein JSON-Objekt: %2</translation>
     </message>
@@ -4081,12 +4081,12 @@ Dauerhaft mit dieser udev-Regel:
         <translation>der Arbeitsbereich %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>der Arbeitsbereich %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
         <source>it is a list</source>
         <translation>er ist eine Liste</translation>
     </message>
@@ -4199,7 +4199,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>tipscope: es gibt keine Anzeige (weder DISPLAY noch WAYLAND_DISPLAY ist gesetzt); starten Sie es auf einem Desktop, oder verwenden Sie tipscope-cli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="98"/>
+        <location filename="../app/gui/main.cpp" line="99"/>
         <source>tipscope: %1</source>
         <translation>tipscope: %1</translation>
     </message>
@@ -4228,7 +4228,7 @@ Dauerhaft mit dieser udev-Regel:
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="30"/>
         <location filename="../app/gui/charts/chartspage.h" line="69"/>
-        <location filename="../app/gui/screenshots.cpp" line="230"/>
+        <location filename="../app/gui/screenshots.cpp" line="231"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
@@ -5195,37 +5195,42 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="155"/>
+        <location filename="../app/gui/devicetree.cpp" line="109"/>
+        <source>Fleet overview</source>
+        <translation>Geräteübersicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="172"/>
         <source>No line</source>
         <translation>Keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="161"/>
+        <location filename="../app/gui/devicetree.cpp" line="178"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="162"/>
+        <location filename="../app/gui/devicetree.cpp" line="179"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="170"/>
+        <location filename="../app/gui/devicetree.cpp" line="187"/>
         <source>feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="170"/>
+        <location filename="../app/gui/devicetree.cpp" line="187"/>
         <source>station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="176"/>
+        <location filename="../app/gui/devicetree.cpp" line="193"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="181"/>
+        <location filename="../app/gui/devicetree.cpp" line="198"/>
         <source>Port %1: %2</source>
         <translation>Port %1: %2</translation>
     </message>
@@ -5819,6 +5824,67 @@ Zurücksetzen?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::FleetPage</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="29"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="30"/>
+        <source>Line</source>
+        <translation>Leitung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <source>State, worst first</source>
+        <translation>Zustand, schlechtester zuerst</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
+        <source>Sort by:</source>
+        <translation>Sortieren nach:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
+        <source>Needs attention only</source>
+        <translation>Nur was Aufmerksamkeit braucht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="115"/>
+        <source>Devices: %1 · need attention: %2</source>
+        <translation>Geräte: %1 · brauchen Aufmerksamkeit: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="206"/>
+        <source>No devices: the workspace&apos;s lines have found none yet.</source>
+        <translation>Keine Geräte: die Leitungen des Arbeitsbereichs haben noch keine gefunden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="207"/>
+        <source>No device needs attention.</source>
+        <translation>Kein Gerät braucht Aufmerksamkeit.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="47"/>
+        <source>Fleet</source>
+        <translation>Geräteübersicht</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FleetTileWidget</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="73"/>
+        <source>P%1  %2 / %3  %4  %5</source>
+        <translation>P%1  %2 / %3  %4  %5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="97"/>
+        <source>Last joint: %1 (port %2)</source>
+        <translation>Letzte Lötstelle: %1 (Port %2)</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
@@ -6302,72 +6368,72 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="47"/>
+        <location filename="../app/gui/mainwindow.cpp" line="48"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="111"/>
+        <location filename="../app/gui/mainwindow.cpp" line="116"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <location filename="../app/gui/mainwindow.cpp" line="118"/>
         <source>Work &amp;context…</source>
         <translation>Arbeits&amp;kontext…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="117"/>
+        <location filename="../app/gui/mainwindow.cpp" line="122"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="119"/>
+        <location filename="../app/gui/mainwindow.cpp" line="124"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="120"/>
+        <location filename="../app/gui/mainwindow.cpp" line="125"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="121"/>
+        <location filename="../app/gui/mainwindow.cpp" line="126"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="129"/>
+        <location filename="../app/gui/mainwindow.cpp" line="134"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Lötstellen-Grenzwerte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="130"/>
+        <location filename="../app/gui/mainwindow.cpp" line="135"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="131"/>
+        <location filename="../app/gui/mainwindow.cpp" line="136"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="133"/>
+        <location filename="../app/gui/mainwindow.cpp" line="138"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="134"/>
+        <location filename="../app/gui/mainwindow.cpp" line="139"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="232"/>
+        <location filename="../app/gui/mainwindow.cpp" line="255"/>
         <source>new workspace</source>
         <translation>neuer Arbeitsbereich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="234"/>
+        <location filename="../app/gui/mainwindow.cpp" line="257"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n Linie)</numerusform>
@@ -6375,28 +6441,28 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="237"/>
+        <location filename="../app/gui/mainwindow.cpp" line="260"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="242"/>
+        <location filename="../app/gui/mainwindow.cpp" line="265"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="247"/>
+        <location filename="../app/gui/mainwindow.cpp" line="270"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="257"/>
-        <location filename="../app/gui/mainwindow.cpp" line="260"/>
+        <location filename="../app/gui/mainwindow.cpp" line="280"/>
+        <location filename="../app/gui/mainwindow.cpp" line="283"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="261"/>
+        <location filename="../app/gui/mainwindow.cpp" line="284"/>
         <source>Written:
 %1
 
@@ -6407,12 +6473,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="269"/>
+        <location filename="../app/gui/mainwindow.cpp" line="292"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="270"/>
+        <location filename="../app/gui/mainwindow.cpp" line="293"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
@@ -6443,18 +6509,18 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="45"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="56"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="107"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="57"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="87"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="88"/>
         <source>The last workspace was not reopened: %1</source>
         <translation>Der letzte Arbeitsbereich wurde nicht wieder geöffnet: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="110"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Arbeitsbereich: %1 von %n Linie verbunden</numerusform>
@@ -6474,29 +6540,29 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="139"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="138"/>
         <source>Save workspace</source>
         <translation>Arbeitsbereich speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="135"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="134"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>TipScope-Arbeitsbereiche (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="148"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="162"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="147"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="161"/>
         <source>Add this line to the workspace</source>
         <translation>Diese Linie zum Arbeitsbereich hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
         <source>Name of the line (cell, station):</source>
         <translation>Name der Linie (Zelle, Station):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
         <source>line-%1</source>
         <translation>linie-%1</translation>
     </message>
@@ -7632,6 +7698,65 @@ Möchten Sie fortfahren?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::model::FleetTile</name>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="39"/>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="53"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="45"/>
+        <source>Port %1: %2</source>
+        <translation>Port %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="48"/>
+        <source>Port %1 alarm: %2</source>
+        <translation>Port %1 Alarm: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="54"/>
+        <source>Feeding</source>
+        <translation>Vorschub läuft</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="55"/>
+        <source>Not feeding</source>
+        <translation>Kein Vorschub</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="56"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · vorgeschoben %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="195"/>
+        <source>Line down</source>
+        <translation>Leitung getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="200"/>
+        <source>Line down since %1</source>
+        <translation>Leitung getrennt seit %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="201"/>
+        <source>Line down since %1 %2</source>
+        <translation>Leitung getrennt seit %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="219"/>
+        <source>Station: %1</source>
+        <translation>Station: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="231"/>
+        <source>Feeder: %1</source>
+        <translation>Lotdrahtvorschub: %1</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::model::Workspace</name>
     <message>
         <location filename="../lib/model/workspace/workspace.cpp" line="26"/>
@@ -7639,7 +7764,7 @@ Möchten Sie fortfahren?</translation>
         <translation>eine Linie braucht einen Namen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspace.cpp" line="28"/>
+        <location filename="../lib/model/workspace/workspace.cpp" line="29"/>
         <source>the workspace already has a line named &quot;%1&quot;</source>
         <translation>der Arbeitsbereich hat schon eine Linie namens „%1“</translation>
     </message>

@@ -179,7 +179,7 @@
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="234"/>
+        <location filename="../app/gui/mainwindow.cpp" line="257"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n line)</numerusform>
@@ -187,7 +187,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="109"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="110"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Workspace: %1 of %n line connected</numerusform>

@@ -4005,7 +4005,7 @@ Hágalo permanente con esta regla de udev:
         <translation>el contexto de trabajo %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="46"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>el contexto de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
@@ -4082,12 +4082,12 @@ Hágalo permanente con esta regla de udev:
         <translation>el espacio de trabajo %1 es demasiado grande para ser uno</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>el espacio de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -4200,7 +4200,7 @@ Hágalo permanente con esta regla de udev:
         <translation>tipscope: no hay pantalla (no están definidas DISPLAY ni WAYLAND_DISPLAY); inícielo en un escritorio, o use tipscope-cli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="98"/>
+        <location filename="../app/gui/main.cpp" line="99"/>
         <source>tipscope: %1</source>
         <translation>tipscope: %1</translation>
     </message>
@@ -4229,7 +4229,7 @@ Hágalo permanente con esta regla de udev:
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="30"/>
         <location filename="../app/gui/charts/chartspage.h" line="69"/>
-        <location filename="../app/gui/screenshots.cpp" line="230"/>
+        <location filename="../app/gui/screenshots.cpp" line="231"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
@@ -5196,37 +5196,42 @@ Hágalo permanente con esta regla de udev:
         <translation>Equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="155"/>
+        <location filename="../app/gui/devicetree.cpp" line="109"/>
+        <source>Fleet overview</source>
+        <translation>Vista de la flota</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="172"/>
         <source>No line</source>
         <translation>Sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="161"/>
+        <location filename="../app/gui/devicetree.cpp" line="178"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="162"/>
+        <location filename="../app/gui/devicetree.cpp" line="179"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="170"/>
+        <location filename="../app/gui/devicetree.cpp" line="187"/>
         <source>feeder</source>
         <translation>alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="170"/>
+        <location filename="../app/gui/devicetree.cpp" line="187"/>
         <source>station</source>
         <translation>estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="176"/>
+        <location filename="../app/gui/devicetree.cpp" line="193"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="181"/>
+        <location filename="../app/gui/devicetree.cpp" line="198"/>
         <source>Port %1: %2</source>
         <translation>Puerto %1: %2</translation>
     </message>
@@ -5820,6 +5825,67 @@ Reset it?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::FleetPage</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="29"/>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="30"/>
+        <source>Line</source>
+        <translation>Línea</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <source>State, worst first</source>
+        <translation>Estado, el peor primero</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
+        <source>Sort by:</source>
+        <translation>Ordenar por:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
+        <source>Needs attention only</source>
+        <translation>Solo lo que requiere atención</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="115"/>
+        <source>Devices: %1 · need attention: %2</source>
+        <translation>Equipos: %1 · requieren atención: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="206"/>
+        <source>No devices: the workspace&apos;s lines have found none yet.</source>
+        <translation>Sin equipos: las líneas del espacio de trabajo aún no han encontrado ninguno.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="207"/>
+        <source>No device needs attention.</source>
+        <translation>Ningún equipo requiere atención.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="47"/>
+        <source>Fleet</source>
+        <translation>Flota</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FleetTileWidget</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="73"/>
+        <source>P%1  %2 / %3  %4  %5</source>
+        <translation>P%1  %2 / %3  %4  %5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="97"/>
+        <source>Last joint: %1 (port %2)</source>
+        <translation>Última soldadura: %1 (puerto %2)</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
@@ -6303,72 +6369,72 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="47"/>
+        <location filename="../app/gui/mainwindow.cpp" line="48"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="111"/>
+        <location filename="../app/gui/mainwindow.cpp" line="116"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <location filename="../app/gui/mainwindow.cpp" line="118"/>
         <source>Work &amp;context…</source>
         <translation>&amp;Contexto de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="117"/>
+        <location filename="../app/gui/mainwindow.cpp" line="122"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="119"/>
+        <location filename="../app/gui/mainwindow.cpp" line="124"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="120"/>
+        <location filename="../app/gui/mainwindow.cpp" line="125"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="121"/>
+        <location filename="../app/gui/mainwindow.cpp" line="126"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="129"/>
+        <location filename="../app/gui/mainwindow.cpp" line="134"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Límites de soldadura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="130"/>
+        <location filename="../app/gui/mainwindow.cpp" line="135"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="131"/>
+        <location filename="../app/gui/mainwindow.cpp" line="136"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="133"/>
+        <location filename="../app/gui/mainwindow.cpp" line="138"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="134"/>
+        <location filename="../app/gui/mainwindow.cpp" line="139"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="232"/>
+        <location filename="../app/gui/mainwindow.cpp" line="255"/>
         <source>new workspace</source>
         <translation>espacio de trabajo nuevo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="234"/>
+        <location filename="../app/gui/mainwindow.cpp" line="257"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n línea)</numerusform>
@@ -6376,28 +6442,28 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="237"/>
+        <location filename="../app/gui/mainwindow.cpp" line="260"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="242"/>
+        <location filename="../app/gui/mainwindow.cpp" line="265"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="247"/>
+        <location filename="../app/gui/mainwindow.cpp" line="270"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="257"/>
-        <location filename="../app/gui/mainwindow.cpp" line="260"/>
+        <location filename="../app/gui/mainwindow.cpp" line="280"/>
+        <location filename="../app/gui/mainwindow.cpp" line="283"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="261"/>
+        <location filename="../app/gui/mainwindow.cpp" line="284"/>
         <source>Written:
 %1
 
@@ -6408,12 +6474,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="269"/>
+        <location filename="../app/gui/mainwindow.cpp" line="292"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="270"/>
+        <location filename="../app/gui/mainwindow.cpp" line="293"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
@@ -6444,18 +6510,18 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="45"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="56"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="107"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="57"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="87"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="88"/>
         <source>The last workspace was not reopened: %1</source>
         <translation>El último espacio de trabajo no se volvió a abrir: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="110"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Espacio de trabajo: %1 de %n línea conectada</numerusform>
@@ -6475,29 +6541,29 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="139"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="138"/>
         <source>Save workspace</source>
         <translation>Guardar espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="135"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="134"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>Espacios de trabajo de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="148"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="162"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="147"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="161"/>
         <source>Add this line to the workspace</source>
         <translation>Añadir esta línea al espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
         <source>Name of the line (cell, station):</source>
         <translation>Nombre de la línea (celda, estación):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
         <source>line-%1</source>
         <translation>linea-%1</translation>
     </message>
@@ -7633,6 +7699,65 @@ Do you want to continue?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::model::FleetTile</name>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="39"/>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="53"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="45"/>
+        <source>Port %1: %2</source>
+        <translation>Puerto %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="48"/>
+        <source>Port %1 alarm: %2</source>
+        <translation>Alarma del puerto %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="54"/>
+        <source>Feeding</source>
+        <translation>Alimentando</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="55"/>
+        <source>Not feeding</source>
+        <translation>Sin alimentar</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="56"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · alimentado %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="195"/>
+        <source>Line down</source>
+        <translation>Línea caída</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="200"/>
+        <source>Line down since %1</source>
+        <translation>Línea caída desde las %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="201"/>
+        <source>Line down since %1 %2</source>
+        <translation>Línea caída desde el %1 a las %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="219"/>
+        <source>Station: %1</source>
+        <translation>Estación: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="231"/>
+        <source>Feeder: %1</source>
+        <translation>Alimentador: %1</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::model::Workspace</name>
     <message>
         <location filename="../lib/model/workspace/workspace.cpp" line="26"/>
@@ -7640,7 +7765,7 @@ Do you want to continue?</source>
         <translation>una línea necesita un nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspace.cpp" line="28"/>
+        <location filename="../lib/model/workspace/workspace.cpp" line="29"/>
         <source>the workspace already has a line named &quot;%1&quot;</source>
         <translation>el espacio de trabajo ya tiene una línea llamada «%1»</translation>
     </message>

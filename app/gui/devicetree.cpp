@@ -88,12 +88,26 @@ bool DeviceTree::select(int line, const DeviceModel *device, int port) {
     return true;
 }
 
+bool DeviceTree::selectFleet() {
+    QTreeWidgetItem *fleet = lineItem(kFleet);
+    if (!fleet)
+        return false;
+    setCurrentItem(fleet);
+    return true;
+}
+
 void DeviceTree::rebuild() {
     const int line = selectedLine();
     const QPointer<DeviceModel> device = selectedDevice();
     const int port = selectedPort();
     blockSignals(true);
     clear();
+    if (m_workspace.count() > 0) {
+        auto *fleet = new QTreeWidgetItem(this);
+        fleet->setData(0, kLineRole, kFleet);
+        fleet->setData(0, kDeviceRole, 0);
+        fleet->setText(0, tr("Fleet overview"));
+    }
     addLine(kBarLine);
     for (int i = 0; i < m_workspace.count(); ++i)
         addLine(i);
@@ -104,6 +118,8 @@ void DeviceTree::rebuild() {
     relabel();
     blockSignals(false);
     if (device && select(line, device, port))
+        return;
+    if (line == kFleet && selectFleet())
         return;
     for (int i = 0; i < topLevelItemCount(); ++i) {
         if (topLevelItem(i)->childCount() > 0) {
@@ -144,7 +160,8 @@ void DeviceTree::scheduleRelabel() {
 
 void DeviceTree::relabel() {
     for (int i = 0; i < topLevelItemCount(); ++i)
-        relabelLine(topLevelItem(i));
+        if (topLevelItem(i)->data(0, kLineRole).toInt() != kFleet)
+            relabelLine(topLevelItem(i));
     fitLabels();
 }
 

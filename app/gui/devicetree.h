@@ -1,8 +1,9 @@
-// DeviceTree: line -> station (model, address) -> ports (tool); feeder. The connection bar's line
-// comes first (hidden while a workspace is open and it is not connected), then each line of the
-// open workspace under its name, its devices under the names the workspace gives them. Selecting
-// an item selects that line, device (and port) on every page. Labels follow the models live and
-// are never cut: a long one wraps at its spaces, and each label's tooltip carries its whole text.
+// DeviceTree: line -> station (model, address) -> ports (tool); feeder. While a workspace is open,
+// its fleet overview heads the tree (line kFleet, no device). The connection bar's line comes first
+// (hidden while a workspace is open and it is not connected), then each line of the open workspace
+// under its name, its devices under the names the workspace gives them. Selecting an item selects
+// that line, device (and port) on every page. Labels follow the models live and are never cut: a
+// long one wraps at its spaces, and each label's tooltip carries its whole text.
 #pragma once
 
 #include "model/session.h"
@@ -18,6 +19,8 @@ class DeviceTree : public QTreeWidget {
 public:
     // The connection bar's line: line number kBarLine; a workspace line: its index.
     static constexpr int kBarLine = -1;
+    // The fleet overview's item: a line number that is no line.
+    static constexpr int kFleet = -2;
 
     DeviceTree(model::Session &session, model::Workspace &workspace, QWidget *parent = nullptr);
 
@@ -26,6 +29,8 @@ public:
     [[nodiscard]] int selectedPort() const;
     // Selects the device of `line` (and its port when > 0); false when the tree does not hold it.
     bool select(int line, const model::DeviceModel *device, int port = 0);
+    // Selects the fleet overview; false while no workspace is open.
+    bool selectFleet();
 
 Q_SIGNALS:
     void selectionChangedTo(int line, tipscope::model::DeviceModel *device, int port);

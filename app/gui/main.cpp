@@ -78,7 +78,8 @@ int main(int argc, char *argv[]) {
     MainWindow window;
     window.show();
     bool connectNow = false;
-    if (parser.isSet(demo) || parser.isSet(shots)) {
+    // Screenshots are of the demo line, or of the workspace when one is given.
+    if (parser.isSet(demo) || (parser.isSet(shots) && !parser.isSet(workspace))) {
         start.kind = AppSettings::Kind::Demo;
         connectNow = true;
     } else if (parser.isSet(port)) {

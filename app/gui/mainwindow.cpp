@@ -11,6 +11,7 @@
 #include "journal/journalhealth.h"
 #include "linepages.h"
 #include "linkstatuslabel.h"
+#include "pages/fleet/fleetpage.h"
 #include "pages/page.h"
 
 #include "model/joints/jointlimitsfile.h"
@@ -53,6 +54,10 @@ MainWindow::MainWindow(QWidget *parent)
     m_barPages = new LinePages(m_session, m_journal.path(), LinePages::PortsPolled::Shown, m_stack);
     m_barPages->setWorkOrder(m_journal.context().workOrder);
     m_stack->addWidget(m_barPages);
+    m_fleet = new FleetPage(m_workspace, m_stack);
+    m_stack->addWidget(m_fleet);
+    connect(m_fleet, &FleetPage::deviceActivated, this,
+            [this](int line, DeviceModel *device) { m_tree->select(line, device); });
     connect(&m_context, &journal::WorkContextFollower::contextChanged, this,
             [this](const WorkContext &context) {
                 m_barPages->setWorkOrder(context.workOrder);
@@ -209,6 +214,10 @@ LinePages &MainWindow::linePages(int line) {
 }
 
 void MainWindow::onSelection(int line, DeviceModel *device, int port) {
+    if (line == DeviceTree::kFleet) {
+        showFleet();
+        return;
+    }
     LinePages &pages = linePages(line);
     pages.select(device, port);
     showPagesOf(pages);
@@ -220,10 +229,24 @@ void MainWindow::showPagesOf(LinePages &pages) {
     const auto *front = before ? qobject_cast<Page *>(before->currentWidget()) : nullptr;
     if (before != &pages && front)
         pages.showPage(front->title());
+    else if (!before && !m_frontBeforeFleet.isEmpty())
+        pages.showPage(m_frontBeforeFleet);
     m_stack->setCurrentWidget(&pages);
     m_barPages->setShown(&pages == m_barPages);
     for (const auto &[line, other] : m_linePages)
         other->setShown(other == &pages);
+}
+
+// The line pages behind the fleet poll nothing for being shown; the page in front of the last
+// pages seen comes back with them.
+void MainWindow::showFleet() {
+    if (const auto *before = qobject_cast<LinePages *>(m_stack->currentWidget()))
+        if (const auto *front = qobject_cast<Page *>(before->currentWidget()))
+            m_frontBeforeFleet = front->title();
+    m_stack->setCurrentWidget(m_fleet);
+    m_barPages->setShown(false);
+    for (const auto &[line, pages] : m_linePages)
+        pages->setShown(false);
 }
 
 void MainWindow::updateTitle() {

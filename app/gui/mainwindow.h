@@ -30,6 +30,7 @@ class QMenu;
 namespace tipscope::gui {
 
 class ConnectionBar;
+class FleetPage;
 class DeviceTree;
 class LinkStatusLabel;
 class LinePages;
@@ -53,6 +54,7 @@ public:
     // The pages on screen.
     [[nodiscard]] QWidget *shownPages() const;
     [[nodiscard]] DeviceTree &deviceTree() const { return *m_tree; }
+    [[nodiscard]] FleetPage &fleetPage() const { return *m_fleet; }
     [[nodiscard]] journal::Journal &journal() { return m_journal; }
     [[nodiscard]] journal::WorkContextFollower &workContext() { return m_context; }
 
@@ -79,6 +81,7 @@ private:
     void applyPreferencesTo(model::Session &session) const;
     void onSelection(int line, model::DeviceModel *device, int port);
     void showPagesOf(LinePages &pages);
+    void showFleet();
     void updateTitle();
     void updateWorkspaceStatus();
     void loadJointLimits();
@@ -100,6 +103,8 @@ private:
     DeviceTree *m_tree;
     QStackedWidget *m_stack;
     LinePages *m_barPages;
+    FleetPage *m_fleet;
+    QString m_frontBeforeFleet; // the page in front when the fleet overview was chosen
     std::map<int, LinePages *> m_linePages;
     QSplitter *m_splitter;
     LinkStatusLabel *m_linkStatus;

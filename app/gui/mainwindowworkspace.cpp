@@ -46,6 +46,7 @@ QString MainWindow::openWorkspace(const QString &path) {
     dropWorkspace();
     m_workspacePath = QFileInfo(path).absoluteFilePath();
     m_workspace.open(file.value());
+    m_tree->selectFleet(); // a fleet is seen whole first
     QSettings().setValue(kLastWorkspaceKey, m_workspacePath);
     updateWorkspaceStatus();
     return {};

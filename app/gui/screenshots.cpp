@@ -3,6 +3,7 @@
 #include "charts/chartspage.h"
 #include "devicetree.h"
 #include "dialogs/profiledialog.h"
+#include "linepages.h"
 #include "mainwindow.h"
 #include "pages/page.h"
 #include "widgets/parametereditor.h"
@@ -210,6 +211,31 @@ void Shooter::whenCompared(int index, ProfileDialog *dialog, int waitedMs) {
     dialog->deleteLater();
     shootPage(index + 1);
 }
+
+// A workspace: its fleet overview, and the first station of its first line on the Charts page.
+void shootWorkspace(MainWindow &window, const QString &folder) {
+    const auto shot = [folder](QWidget &widget, const QString &stem) {
+        save(widget, QDir(folder).filePath(stem + QStringLiteral(".png")));
+    };
+    QTimer::singleShot(kWarmUpMs, &window, [&window, shot] {
+        window.deviceTree().selectFleet();
+        QTimer::singleShot(kPerPageMs, &window, [&window, shot] {
+            shot(window, QStringLiteral("10-fleet"));
+            model::Session *first =
+                window.workspace().count() > 0 ? window.workspace().session(0) : nullptr;
+            if (!first || first->devices().isEmpty()) {
+                QApplication::quit();
+                return;
+            }
+            window.deviceTree().select(0, first->devices().first());
+            window.linePages(0).showPage(ChartsPage::tr("Charts"));
+            QTimer::singleShot(kWarmUpMs, &window, [&window, shot] {
+                shot(window, QStringLiteral("10-fleet-charts"));
+                QApplication::quit();
+            });
+        });
+    });
+}
 } // namespace
 
 void takeScreenshots(MainWindow &window, const QString &folder) {
@@ -217,6 +243,10 @@ void takeScreenshots(MainWindow &window, const QString &folder) {
     // The window is the screen (the size a tester chose for the virtual display), whole.
     if (const QScreen *screen = window.screen())
         window.setGeometry(screen->geometry());
+    if (window.workspace().count() > 0) {
+        shootWorkspace(window, folder);
+        return;
+    }
     // Something worth seeing: a port in the stand, an injected port error.
     QTimer::singleShot(kWarmUpMs / 2, &window, [&window] {
         if (sim::SimLine *line = window.session().demoLine()) {

@@ -4,6 +4,8 @@
 #include "devicetree.h"
 #include "linepages.h"
 #include "mainwindow.h"
+#include "pages/fleet/fleetpage.h"
+#include "pages/fleet/fleettilewidget.h"
 #include "pages/page.h"
 
 #include "i18n/translations.h"
@@ -48,6 +50,7 @@ private Q_SLOTS:
     void initTestCase();
     void theTreeHoldsEveryLineUnderItsName();
     void everyPageWorksForTheDeviceSelectedOnAnyLine();
+    void aWorkspaceOpensOnItsFleetAndATileOpensItsDevice();
     void aWorkspaceThatCannotBeReadIsRefusedAndTheOpenOneStays();
     void theSavedWorkspaceReopensAtTheNextStartUntilItIsClosed();
 
@@ -74,15 +77,16 @@ void TestMainWindowWorkspace::theTreeHoldsEveryLineUnderItsName() {
     QCOMPARE(w.openWorkspace(m_path), QString());
     waitForEveryLine(w);
     DeviceTree &tree = w.deviceTree();
-    QCOMPARE(tree.topLevelItemCount(), 3);
-    QVERIFY(tree.topLevelItem(0)->isHidden()); // the connection bar's line, not connected
-    QVERIFY(tree.topLevelItem(1)->text(0).startsWith(QStringLiteral("cell-1: ")));
-    QVERIFY(tree.topLevelItem(2)->text(0).startsWith(QStringLiteral("cell-2: ")));
-    QCOMPARE(tree.topLevelItem(1)->childCount(), 2);
-    QCOMPARE(tree.topLevelItem(2)->childCount(), 2);
+    QCOMPARE(tree.topLevelItemCount(), 4);     // the fleet, the connection bar's line, two lines
+    QVERIFY(tree.topLevelItem(1)->isHidden()); // the connection bar's line, not connected
+    QTreeWidgetItem *cell1 = tree.topLevelItem(2), *cell2 = tree.topLevelItem(3);
+    QVERIFY(cell1->text(0).startsWith(QStringLiteral("cell-1: ")));
+    QVERIFY(cell2->text(0).startsWith(QStringLiteral("cell-2: ")));
+    QCOMPARE(cell1->childCount(), 2);
+    QCOMPARE(cell2->childCount(), 2);
     // The name the workspace gives the station at address 1 of cell-2, and only there.
-    QTRY_VERIFY(tree.topLevelItem(2)->child(0)->text(0).startsWith(QStringLiteral("Rework B, ")));
-    QVERIFY(!tree.topLevelItem(1)->child(0)->text(0).contains(QStringLiteral("Rework B")));
+    QTRY_VERIFY(cell2->child(0)->text(0).startsWith(QStringLiteral("Rework B, ")));
+    QVERIFY(!cell1->child(0)->text(0).contains(QStringLiteral("Rework B")));
     QVERIFY2(w.windowTitle().contains(QStringLiteral("plant (2 lines)")),
              qPrintable(w.windowTitle()));
 }
@@ -113,6 +117,38 @@ void TestMainWindowWorkspace::everyPageWorksForTheDeviceSelectedOnAnyLine() {
     // Only the pages on screen are active.
     QVERIFY(!pages.page(QStringLiteral("Charts"))->isVisible());
     QVERIFY(firstPages.page(QStringLiteral("Charts"))->isVisible());
+}
+
+void TestMainWindowWorkspace::aWorkspaceOpensOnItsFleetAndATileOpensItsDevice() {
+    MainWindow w;
+    w.show();
+    QVERIFY(!w.deviceTree().selectFleet()); // no workspace, no fleet
+    QCOMPARE(w.openWorkspace(m_path), QString());
+    QCOMPARE(w.shownPages(), &w.fleetPage());
+    QCOMPARE(w.deviceTree().selectedLine(), DeviceTree::kFleet);
+    QCOMPARE(w.deviceTree().topLevelItem(0)->text(0), QStringLiteral("Fleet overview"));
+    waitForEveryLine(w);
+    QTRY_COMPARE(w.fleetPage().tileCount(), 4);
+    QCOMPARE(w.deviceTree().selectedLine(), DeviceTree::kFleet); // devices found: still the fleet
+
+    // The tile of cell-2's station opens that station's pages, with the page last in front.
+    Session &second = *w.workspace().session(1);
+    QVERIFY(w.deviceTree().select(0, w.workspace().session(0)->station()));
+    w.linePages(0).showPage(QStringLiteral("Counters"));
+    QVERIFY(w.deviceTree().selectFleet());
+    QCOMPARE(w.shownPages(), &w.fleetPage());
+    QVERIFY(!w.linePages(0).page(QStringLiteral("Counters"))->isVisible());
+    FleetTileWidget *tile = nullptr;
+    for (FleetTileWidget *t : w.fleetPage().shownTiles())
+        if (t->tile().device() == second.station())
+            tile = t;
+    QVERIFY(tile);
+    QTest::mouseClick(tile, Qt::LeftButton, {}, tile->rect().center());
+    QCOMPARE(w.shownPages(), &w.linePages(1));
+    QCOMPARE(w.deviceTree().selectedLine(), 1);
+    QCOMPARE(w.linePages(1).selectedDevice(), second.station());
+    QCOMPARE(qobject_cast<Page *>(w.linePages(1).currentWidget())->title(),
+             QStringLiteral("Counters"));
 }
 
 void TestMainWindowWorkspace::aWorkspaceThatCannotBeReadIsRefusedAndTheOpenOneStays() {

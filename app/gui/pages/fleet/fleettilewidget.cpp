@@ -67,14 +67,13 @@ bool FleetTileWidget::refresh() {
 }
 
 // The tool goes last: a long tool name ("T245/T470 (TR245/TR470)") is what the elision cuts, never
-// the temperatures.
+// the temperatures. The joints have a line of their own: on the port's row they pushed the tool
+// out of the tile.
 QString FleetTileWidget::portLine(const model::FleetPortState &port) const {
-    QString text = tr("P%1  %2 / %3  %4  %5")
-                       .arg(port.number)
-                       .arg(port.tipText, port.setpointText, port.powerText, port.statusText);
-    if (port.lastJoint)
-        text += tr("  · joint %1").arg(model::JointTableModel::verdictText(*port.lastJoint));
-    return text + QStringLiteral("  ") + port.toolText;
+    return tr("P%1  %2 / %3  %4  %5")
+               .arg(port.number)
+               .arg(port.tipText, port.setpointText, port.powerText, port.statusText) +
+           QStringLiteral("  ") + port.toolText;
 }
 
 QList<FleetTileWidget::Line> FleetTileWidget::layoutLines() const {
