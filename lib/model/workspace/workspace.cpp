@@ -15,6 +15,7 @@ void Workspace::open(const WorkspaceFile &file) {
     m_file = file;
     for (int i = 0; i < int(m_file.lines.size()); ++i) {
         auto session = std::make_unique<Session>();
+        session->scheduler().setFillWire(true);
         session->joints().setRules(limitsOf(i));
         connect(session.get(), &Session::stateChanged, this,
                 [this, i](Session::State state, const QString &text) {

@@ -2,11 +2,12 @@
 //
 // open() closes what was open and connects every line of the file; each Session keeps its own
 // request queue, poll scheduler, reconnection and statistics, so a line that is down, slow or
-// absent never holds up the others. Each line's joints are judged by the line's own limits, or
-// the shared ones (setSharedLimits()) when the line names none. The workspace owns the sessions;
-// a session() pointer stays valid until close() or the next open(). lineStateChanged() and
-// lineDevicesChanged() repeat a session's signals with the line's index; linesChanged() says the
-// set of lines changed (open, close).
+// absent never holds up the others. Each line's scheduler fills its wire (PollScheduler::
+// setFillWire()): a line polls as fast as its own wire carries, which costs no other line. Each
+// line's joints are judged by the line's own limits, or the shared ones (setSharedLimits()) when
+// the line names none. The workspace owns the sessions; a session() pointer stays valid until
+// close() or the next open(). lineStateChanged() and lineDevicesChanged() repeat a session's
+// signals with the line's index; linesChanged() says the set of lines changed (open, close).
 #pragma once
 
 #include "model/workspace/workspacefile.h"
