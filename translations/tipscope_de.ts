@@ -1657,12 +1657,12 @@
         <translation>tipscope-cli: journal retention erwartet eine Anzahl Tage (0 behält alles), zum Beispiel: journal retention 90</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="95"/>
+        <location filename="../app/cli/clijournal.cpp" line="96"/>
         <source>tipscope-cli: the retention could not be stored: %1</source>
         <translation>tipscope-cli: die Aufbewahrungsdauer konnte nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="110"/>
+        <location filename="../app/cli/clijournal.cpp" line="111"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal erwartet show oder retention TAGE</translation>
     </message>
@@ -2637,17 +2637,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointLimitsFile</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="32"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="36"/>
         <source>cannot read the joint limits %1: %2</source>
         <translation>die Lötstellen-Grenzwerte %1 können nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="34"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="38"/>
         <source>the joint limits %1 are too big</source>
         <translation>die Lötstellen-Grenzwerte %1 sind zu groß</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="39"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="41"/>
         <source>the joint limits %1 are not a JSON object: %2</source>
         <translation>die Lötstellen-Grenzwerte %1 sind kein JSON-Objekt: %2</translation>
     </message>
@@ -2777,6 +2777,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="32"/>
+        <location filename="../lib/journal/journalreader.cpp" line="213"/>
         <source>No journal is open.</source>
         <translation>Kein Journal ist geöffnet.</translation>
     </message>
@@ -2806,7 +2807,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Verlorene Einträge: %1. Grund: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="337"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="336"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
     </message>
@@ -3993,22 +3994,22 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>WorkContextFile</name>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="36"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="41"/>
         <source>cannot read the work context %1: %2</source>
         <translation>der Arbeitskontext %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
         <source>the work context %1 is too big to be one</source>
         <translation>der Arbeitskontext %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>der Arbeitskontext %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="46"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="51"/>
         <source>the work context %1: %2</source>
         <translation>der Arbeitskontext %1: %2</translation>
     </message>
@@ -4024,62 +4025,68 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>WorkspaceFile</name>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="29"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="30"/>
         <source>not a TipScope workspace (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>kein TipScope-Arbeitsbereich (&quot;format&quot; ist nicht &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="33"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="34"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; muss eine ganze Zahl ab 1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="35"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="36"/>
         <source>written by a later TipScope (workspace version %1); this one reads version %2 and older</source>
         <translation>von einem neueren TipScope geschrieben (Arbeitsbereich-Version %1); dieses liest Version %2 und ältere</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="63"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="64"/>
         <source>&quot;lines&quot; must be a list of lines</source>
         <translation>&quot;lines&quot; muss eine Liste von Leitungen sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="69"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="70"/>
         <source>line %1</source>
         <translation>Leitung %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="70"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="71"/>
         <source>line %1 (%2)</source>
         <translation>Leitung %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="72"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="73"/>
         <source>%1: must be an object</source>
         <translation>%1: muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="77"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="78"/>
         <source>%1: the name is already another line&apos;s; each line needs its own</source>
         <translation>%1: der Name gehört schon einer anderen Leitung; jede Leitung braucht einen eigenen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="88"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="92"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="95"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>der Arbeitsbereich %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="90"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="93"/>
+        <source>there is no such file</source>
+        <translation>diese Datei gibt es nicht</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="97"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>der Arbeitsbereich %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="94"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>der Arbeitsbereich %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="96"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
         <source>it is a list</source>
         <translation>er ist eine Liste</translation>
     </message>
@@ -4178,13 +4185,23 @@ Dauerhaft mit dieser udev-Regel:
     </message>
     <message>
         <location filename="../app/gui/main.cpp" line="61"/>
+        <source>Open the lines of this workspace file.</source>
+        <translation>Die Linien dieser Arbeitsbereichsdatei öffnen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="65"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Ein PNG jeder Seite in DIR speichern, dann beenden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="66"/>
+        <location filename="../app/gui/main.cpp" line="70"/>
         <source>tipscope: there is no display (neither DISPLAY nor WAYLAND_DISPLAY is set); start it on a desktop, or use tipscope-cli</source>
         <translation>tipscope: es gibt keine Anzeige (weder DISPLAY noch WAYLAND_DISPLAY ist gesetzt); starten Sie es auf einem Desktop, oder verwenden Sie tipscope-cli</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="98"/>
+        <source>tipscope: %1</source>
+        <translation>tipscope: %1</translation>
     </message>
 </context>
 <context>
@@ -4211,6 +4228,7 @@ Dauerhaft mit dieser udev-Regel:
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="30"/>
         <location filename="../app/gui/charts/chartspage.h" line="69"/>
+        <location filename="../app/gui/screenshots.cpp" line="230"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
@@ -5172,27 +5190,42 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::DeviceTree</name>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="20"/>
+        <location filename="../app/gui/devicetree.cpp" line="23"/>
         <source>Devices</source>
         <translation>Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="86"/>
+        <location filename="../app/gui/devicetree.cpp" line="155"/>
         <source>No line</source>
         <translation>Keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="92"/>
+        <location filename="../app/gui/devicetree.cpp" line="161"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="162"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="170"/>
         <source>feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="92"/>
+        <location filename="../app/gui/devicetree.cpp" line="170"/>
         <source>station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="97"/>
+        <location filename="../app/gui/devicetree.cpp" line="176"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="181"/>
         <source>Port %1: %2</source>
         <translation>Port %1: %2</translation>
     </message>
@@ -6269,88 +6302,101 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="46"/>
+        <location filename="../app/gui/mainwindow.cpp" line="47"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <location filename="../app/gui/mainwindow.cpp" line="111"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="114"/>
+        <location filename="../app/gui/mainwindow.cpp" line="113"/>
         <source>Work &amp;context…</source>
         <translation>Arbeits&amp;kontext…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="118"/>
+        <location filename="../app/gui/mainwindow.cpp" line="117"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="120"/>
+        <location filename="../app/gui/mainwindow.cpp" line="119"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="121"/>
+        <location filename="../app/gui/mainwindow.cpp" line="120"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="122"/>
+        <location filename="../app/gui/mainwindow.cpp" line="121"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="130"/>
+        <location filename="../app/gui/mainwindow.cpp" line="129"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Lötstellen-Grenzwerte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="131"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="132"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="134"/>
+        <location filename="../app/gui/mainwindow.cpp" line="133"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="135"/>
+        <location filename="../app/gui/mainwindow.cpp" line="134"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="211"/>
+        <location filename="../app/gui/mainwindow.cpp" line="232"/>
+        <source>new workspace</source>
+        <translation>neuer Arbeitsbereich</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mainwindow.cpp" line="234"/>
+        <source>TipScope — %1 (%n line(s))</source>
+        <translation>
+            <numerusform>TipScope — %1 (%n Linie)</numerusform>
+            <numerusform>TipScope — %1 (%n Linien)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="237"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="216"/>
+        <location filename="../app/gui/mainwindow.cpp" line="242"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="221"/>
+        <location filename="../app/gui/mainwindow.cpp" line="247"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="231"/>
-        <location filename="../app/gui/mainwindow.cpp" line="234"/>
+        <location filename="../app/gui/mainwindow.cpp" line="257"/>
+        <location filename="../app/gui/mainwindow.cpp" line="260"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="235"/>
+        <location filename="../app/gui/mainwindow.cpp" line="261"/>
         <source>Written:
 %1
 
@@ -6361,14 +6407,98 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="243"/>
+        <location filename="../app/gui/mainwindow.cpp" line="269"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="244"/>
+        <location filename="../app/gui/mainwindow.cpp" line="270"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="30"/>
+        <source>&amp;Open workspace…</source>
+        <translation>Arbeitsbereich ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="32"/>
+        <source>&amp;Save workspace</source>
+        <translation>Arbeitsbereich &amp;speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="34"/>
+        <source>Save workspace &amp;as…</source>
+        <translation>Arbeitsbereich speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="36"/>
+        <source>&amp;Add this line to the workspace…</source>
+        <translation>Diese Linie zum Arbeitsbereich &amp;hinzufügen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="38"/>
+        <source>C&amp;lose workspace</source>
+        <translation>Arbeitsbereich s&amp;chließen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="45"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="56"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="107"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="87"/>
+        <source>The last workspace was not reopened: %1</source>
+        <translation>Der letzte Arbeitsbereich wurde nicht wieder geöffnet: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <source>Workspace: %1 of %n line(s) connected</source>
+        <translation>
+            <numerusform>Arbeitsbereich: %1 von %n Linie verbunden</numerusform>
+            <numerusform>Arbeitsbereich: %1 von %n Linien verbunden</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="123"/>
+        <source>Open workspace</source>
+        <translation>Arbeitsbereich öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="119"/>
+        <source>TipScope workspaces (*.json);;All files (*)</source>
+        <translation>TipScope-Arbeitsbereiche (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="139"/>
+        <source>Save workspace</source>
+        <translation>Arbeitsbereich speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="135"/>
+        <source>TipScope workspaces (*.json)</source>
+        <translation>TipScope-Arbeitsbereiche (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="148"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="162"/>
+        <source>Add this line to the workspace</source>
+        <translation>Diese Linie zum Arbeitsbereich hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <source>Name of the line (cell, station):</source>
+        <translation>Name der Linie (Zelle, Station):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <source>line-%1</source>
+        <translation>linie-%1</translation>
     </message>
 </context>
 <context>
@@ -7499,6 +7629,19 @@ Möchten Sie fortfahren?</translation>
         <location filename="../lib/model/consolesender.cpp" line="91"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: gesendet, warte auf Antwort…</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::Workspace</name>
+    <message>
+        <location filename="../lib/model/workspace/workspace.cpp" line="26"/>
+        <source>a line needs a name</source>
+        <translation>eine Linie braucht einen Namen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspace.cpp" line="28"/>
+        <source>the workspace already has a line named &quot;%1&quot;</source>
+        <translation>der Arbeitsbereich hat schon eine Linie namens „%1“</translation>
     </message>
 </context>
 </TS>

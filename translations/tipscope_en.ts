@@ -177,6 +177,25 @@
     </message>
 </context>
 <context>
+    <name>tipscope::gui::MainWindow</name>
+    <message numerus="yes">
+        <location filename="../app/gui/mainwindow.cpp" line="234"/>
+        <source>TipScope — %1 (%n line(s))</source>
+        <translation>
+            <numerusform>TipScope — %1 (%n line)</numerusform>
+            <numerusform>TipScope — %1 (%n lines)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <source>Workspace: %1 of %n line(s) connected</source>
+        <translation>
+            <numerusform>Workspace: %1 of %n line connected</numerusform>
+            <numerusform>Workspace: %1 of %n lines connected</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::ProfileDialog</name>
     <message numerus="yes">
         <location filename="../app/gui/dialogs/profiledialog.cpp" line="185"/>

@@ -1657,12 +1657,12 @@
         <translation>tipscope-cli: journal retention espera un número de días (0 lo conserva todo), por ejemplo: journal retention 90</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="95"/>
+        <location filename="../app/cli/clijournal.cpp" line="96"/>
         <source>tipscope-cli: the retention could not be stored: %1</source>
         <translation>tipscope-cli: no se pudo guardar el tiempo de conservación: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="110"/>
+        <location filename="../app/cli/clijournal.cpp" line="111"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal espera show o retention DÍAS</translation>
     </message>
@@ -2638,17 +2638,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>JointLimitsFile</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="32"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="36"/>
         <source>cannot read the joint limits %1: %2</source>
         <translation>no se pueden leer los límites de soldadura %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="34"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="38"/>
         <source>the joint limits %1 are too big</source>
         <translation>los límites de soldadura %1 son demasiado grandes</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="39"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="41"/>
         <source>the joint limits %1 are not a JSON object: %2</source>
         <translation>los límites de soldadura %1 no son un objeto JSON: %2</translation>
     </message>
@@ -2778,6 +2778,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="32"/>
+        <location filename="../lib/journal/journalreader.cpp" line="213"/>
         <source>No journal is open.</source>
         <translation>No hay ningún diario abierto.</translation>
     </message>
@@ -2807,7 +2808,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>Registros perdidos: %1. Motivo: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="337"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="336"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>El diario se cerró antes de poder escribirlos: %1</translation>
     </message>
@@ -3994,22 +3995,22 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>WorkContextFile</name>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="36"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="41"/>
         <source>cannot read the work context %1: %2</source>
         <translation>no se puede leer el contexto de trabajo %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="38"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
         <source>the work context %1 is too big to be one</source>
         <translation>el contexto de trabajo %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>el contexto de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="46"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="51"/>
         <source>the work context %1: %2</source>
         <translation>el contexto de trabajo %1: %2</translation>
     </message>
@@ -4025,62 +4026,68 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>WorkspaceFile</name>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="29"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="30"/>
         <source>not a TipScope workspace (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>no es un espacio de trabajo de TipScope (&quot;format&quot; no es &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="33"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="34"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; debe ser un número entero desde 1</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="35"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="36"/>
         <source>written by a later TipScope (workspace version %1); this one reads version %2 and older</source>
         <translation>escrito por un TipScope posterior (versión de espacio de trabajo %1); este lee la versión %2 y anteriores</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="63"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="64"/>
         <source>&quot;lines&quot; must be a list of lines</source>
         <translation>&quot;lines&quot; debe ser una lista de líneas</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="69"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="70"/>
         <source>line %1</source>
         <translation>línea %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="70"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="71"/>
         <source>line %1 (%2)</source>
         <translation>línea %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="72"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="73"/>
         <source>%1: must be an object</source>
         <translation>%1: debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="77"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="78"/>
         <source>%1: the name is already another line&apos;s; each line needs its own</source>
         <translation>%1: el nombre ya es de otra línea; cada línea necesita el suyo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="88"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="92"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="95"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>no se puede leer el espacio de trabajo %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="90"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="93"/>
+        <source>there is no such file</source>
+        <translation>no existe ese archivo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="97"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>el espacio de trabajo %1 es demasiado grande para ser uno</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="94"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>el espacio de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="96"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -4179,13 +4186,23 @@ Hágalo permanente con esta regla de udev:
     </message>
     <message>
         <location filename="../app/gui/main.cpp" line="61"/>
+        <source>Open the lines of this workspace file.</source>
+        <translation>Abrir las líneas de este archivo de espacio de trabajo.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="65"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Guardar un PNG de cada página en DIR y salir.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="66"/>
+        <location filename="../app/gui/main.cpp" line="70"/>
         <source>tipscope: there is no display (neither DISPLAY nor WAYLAND_DISPLAY is set); start it on a desktop, or use tipscope-cli</source>
         <translation>tipscope: no hay pantalla (no están definidas DISPLAY ni WAYLAND_DISPLAY); inícielo en un escritorio, o use tipscope-cli</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="98"/>
+        <source>tipscope: %1</source>
+        <translation>tipscope: %1</translation>
     </message>
 </context>
 <context>
@@ -4212,6 +4229,7 @@ Hágalo permanente con esta regla de udev:
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="30"/>
         <location filename="../app/gui/charts/chartspage.h" line="69"/>
+        <location filename="../app/gui/screenshots.cpp" line="230"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
@@ -5173,27 +5191,42 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::DeviceTree</name>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="20"/>
+        <location filename="../app/gui/devicetree.cpp" line="23"/>
         <source>Devices</source>
         <translation>Equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="86"/>
+        <location filename="../app/gui/devicetree.cpp" line="155"/>
         <source>No line</source>
         <translation>Sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="92"/>
+        <location filename="../app/gui/devicetree.cpp" line="161"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="162"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="170"/>
         <source>feeder</source>
         <translation>alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="92"/>
+        <location filename="../app/gui/devicetree.cpp" line="170"/>
         <source>station</source>
         <translation>estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="97"/>
+        <location filename="../app/gui/devicetree.cpp" line="176"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="181"/>
         <source>Port %1: %2</source>
         <translation>Puerto %1: %2</translation>
     </message>
@@ -6270,88 +6303,101 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="46"/>
+        <location filename="../app/gui/mainwindow.cpp" line="47"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="113"/>
+        <location filename="../app/gui/mainwindow.cpp" line="111"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="114"/>
+        <location filename="../app/gui/mainwindow.cpp" line="113"/>
         <source>Work &amp;context…</source>
         <translation>&amp;Contexto de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="118"/>
+        <location filename="../app/gui/mainwindow.cpp" line="117"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="120"/>
+        <location filename="../app/gui/mainwindow.cpp" line="119"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="121"/>
+        <location filename="../app/gui/mainwindow.cpp" line="120"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="122"/>
+        <location filename="../app/gui/mainwindow.cpp" line="121"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="130"/>
+        <location filename="../app/gui/mainwindow.cpp" line="129"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Límites de soldadura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="131"/>
+        <location filename="../app/gui/mainwindow.cpp" line="130"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="132"/>
+        <location filename="../app/gui/mainwindow.cpp" line="131"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="134"/>
+        <location filename="../app/gui/mainwindow.cpp" line="133"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="135"/>
+        <location filename="../app/gui/mainwindow.cpp" line="134"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="211"/>
+        <location filename="../app/gui/mainwindow.cpp" line="232"/>
+        <source>new workspace</source>
+        <translation>espacio de trabajo nuevo</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mainwindow.cpp" line="234"/>
+        <source>TipScope — %1 (%n line(s))</source>
+        <translation>
+            <numerusform>TipScope — %1 (%n línea)</numerusform>
+            <numerusform>TipScope — %1 (%n líneas)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindow.cpp" line="237"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="216"/>
+        <location filename="../app/gui/mainwindow.cpp" line="242"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="221"/>
+        <location filename="../app/gui/mainwindow.cpp" line="247"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="231"/>
-        <location filename="../app/gui/mainwindow.cpp" line="234"/>
+        <location filename="../app/gui/mainwindow.cpp" line="257"/>
+        <location filename="../app/gui/mainwindow.cpp" line="260"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="235"/>
+        <location filename="../app/gui/mainwindow.cpp" line="261"/>
         <source>Written:
 %1
 
@@ -6362,14 +6408,98 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="243"/>
+        <location filename="../app/gui/mainwindow.cpp" line="269"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="244"/>
+        <location filename="../app/gui/mainwindow.cpp" line="270"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="30"/>
+        <source>&amp;Open workspace…</source>
+        <translation>&amp;Abrir espacio de trabajo…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="32"/>
+        <source>&amp;Save workspace</source>
+        <translation>&amp;Guardar espacio de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="34"/>
+        <source>Save workspace &amp;as…</source>
+        <translation>Guardar espacio de trabajo &amp;como…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="36"/>
+        <source>&amp;Add this line to the workspace…</source>
+        <translation>Añadir esta &amp;línea al espacio de trabajo…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="38"/>
+        <source>C&amp;lose workspace</source>
+        <translation>Ce&amp;rrar espacio de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="45"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="56"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="107"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="87"/>
+        <source>The last workspace was not reopened: %1</source>
+        <translation>El último espacio de trabajo no se volvió a abrir: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <source>Workspace: %1 of %n line(s) connected</source>
+        <translation>
+            <numerusform>Espacio de trabajo: %1 de %n línea conectada</numerusform>
+            <numerusform>Espacio de trabajo: %1 de %n líneas conectadas</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="123"/>
+        <source>Open workspace</source>
+        <translation>Abrir espacio de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="119"/>
+        <source>TipScope workspaces (*.json);;All files (*)</source>
+        <translation>Espacios de trabajo de TipScope (*.json);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="139"/>
+        <source>Save workspace</source>
+        <translation>Guardar espacio de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="135"/>
+        <source>TipScope workspaces (*.json)</source>
+        <translation>Espacios de trabajo de TipScope (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="148"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="162"/>
+        <source>Add this line to the workspace</source>
+        <translation>Añadir esta línea al espacio de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <source>Name of the line (cell, station):</source>
+        <translation>Nombre de la línea (celda, estación):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <source>line-%1</source>
+        <translation>linea-%1</translation>
     </message>
 </context>
 <context>
@@ -7500,6 +7630,19 @@ Do you want to continue?</source>
         <location filename="../lib/model/consolesender.cpp" line="91"/>
         <source>%1: sent, waiting for the answer…</source>
         <translation>%1: enviado, esperando la respuesta…</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::Workspace</name>
+    <message>
+        <location filename="../lib/model/workspace/workspace.cpp" line="26"/>
+        <source>a line needs a name</source>
+        <translation>una línea necesita un nombre</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspace.cpp" line="28"/>
+        <source>the workspace already has a line named &quot;%1&quot;</source>
+        <translation>el espacio de trabajo ya tiene una línea llamada «%1»</translation>
     </message>
 </context>
 </TS>

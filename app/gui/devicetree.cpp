@@ -1,6 +1,7 @@
 #include "devicetree.h"
 
 #include <QHeaderView>
+#include <QPointer>
 #include <QStyle>
 #include <QTreeWidgetItemIterator>
 
@@ -9,13 +10,15 @@ namespace tipscope::gui {
 using namespace tipscope::model;
 
 namespace {
+constexpr int kLineRole = Qt::UserRole;
 constexpr int kDeviceRole = Qt::UserRole + 1;
 constexpr int kPortRole = Qt::UserRole + 2;
 } // namespace
 
-DeviceTree::DeviceTree(Session &session, QWidget *parent)
+DeviceTree::DeviceTree(Session &session, Workspace &workspace, QWidget *parent)
     : QTreeWidget(parent)
-    , m_session(session) {
+    , m_session(session)
+    , m_workspace(workspace) {
     setHeaderHidden(true);
     setAccessibleName(tr("Devices"));
     setMinimumWidth(200);
@@ -26,21 +29,44 @@ DeviceTree::DeviceTree(Session &session, QWidget *parent)
     setTextElideMode(Qt::ElideNone);
     connect(&session, &Session::devicesChanged, this, &DeviceTree::rebuild);
     connect(&session, &Session::stateChanged, this, &DeviceTree::relabel);
+    connect(&workspace, &Workspace::linesChanged, this, &DeviceTree::rebuild);
+    connect(&workspace, &Workspace::lineDevicesChanged, this, &DeviceTree::rebuild);
+    connect(&workspace, &Workspace::lineStateChanged, this, &DeviceTree::scheduleRelabel);
     // A port's model changes with every live value; its label (tool, error) far more rarely.
     m_relabel.setSingleShot(true);
     m_relabel.setInterval(kRelabelMs);
     connect(&m_relabel, &QTimer::timeout, this, &DeviceTree::relabel);
-    connect(this, &QTreeWidget::currentItemChanged, this,
-            [this] { Q_EMIT selectionChangedTo(selectedDevice(), selectedPort()); });
+    connect(this, &QTreeWidget::currentItemChanged, this, [this] {
+        Q_EMIT selectionChangedTo(selectedLine(), selectedDevice(), selectedPort());
+    });
     rebuild();
+}
+
+Session *DeviceTree::sessionOf(int line) const {
+    if (line == kBarLine)
+        return &m_session;
+    return line >= 0 && line < m_workspace.count() ? m_workspace.session(line) : nullptr;
+}
+
+QTreeWidgetItem *DeviceTree::lineItem(int line) const {
+    for (int i = 0; i < topLevelItemCount(); ++i)
+        if (topLevelItem(i)->data(0, kLineRole).toInt() == line)
+            return topLevelItem(i);
+    return nullptr;
+}
+
+int DeviceTree::selectedLine() const {
+    const QTreeWidgetItem *item = currentItem();
+    return item ? item->data(0, kLineRole).toInt() : kBarLine;
 }
 
 DeviceModel *DeviceTree::selectedDevice() const {
     const QTreeWidgetItem *item = currentItem();
-    if (!item)
+    const Session *session = item ? sessionOf(item->data(0, kLineRole).toInt()) : nullptr;
+    if (!session)
         return nullptr;
     const int index = item->data(0, kDeviceRole).toInt();
-    return index > 0 ? m_session.devices().value(index - 1) : nullptr;
+    return index > 0 ? session->devices().value(index - 1) : nullptr;
 }
 
 int DeviceTree::selectedPort() const {
@@ -48,49 +74,107 @@ int DeviceTree::selectedPort() const {
     return item ? item->data(0, kPortRole).toInt() : 0;
 }
 
+bool DeviceTree::select(int line, const DeviceModel *device, int port) {
+    const Session *session = sessionOf(line);
+    QTreeWidgetItem *top = lineItem(line);
+    const int index = session ? int(session->devices().indexOf(device)) : -1;
+    if (!top || index < 0 || index >= top->childCount())
+        return false;
+    QTreeWidgetItem *item = top->child(index);
+    for (int c = 0; port > 0 && c < item->childCount(); ++c)
+        if (item->child(c)->data(0, kPortRole).toInt() == port)
+            item = item->child(c);
+    setCurrentItem(item);
+    return true;
+}
+
 void DeviceTree::rebuild() {
+    const int line = selectedLine();
+    const QPointer<DeviceModel> device = selectedDevice();
+    const int port = selectedPort();
     blockSignals(true);
     clear();
+    addLine(kBarLine);
+    for (int i = 0; i < m_workspace.count(); ++i)
+        addLine(i);
+    // The connection bar's line is in the way of a workspace while it is not used.
+    lineItem(kBarLine)->setHidden(m_workspace.count() > 0 && m_session.devices().isEmpty() &&
+                                  m_session.state() == Session::State::Disconnected);
+    expandAll();
+    relabel();
+    blockSignals(false);
+    if (device && select(line, device, port))
+        return;
+    for (int i = 0; i < topLevelItemCount(); ++i) {
+        if (topLevelItem(i)->childCount() > 0) {
+            setCurrentItem(topLevelItem(i)->child(0));
+            return;
+        }
+    }
+    setCurrentItem(nullptr);
+    Q_EMIT selectionChangedTo(kBarLine, nullptr, 0);
+}
+
+void DeviceTree::addLine(int lineIndex) {
     auto *line = new QTreeWidgetItem(this);
+    line->setData(0, kLineRole, lineIndex);
     line->setData(0, kDeviceRole, 0);
-    for (int i = 0; i < m_session.devices().size(); ++i) {
-        DeviceModel *d = m_session.devices().at(i);
+    Session *session = sessionOf(lineIndex);
+    for (int i = 0; i < session->devices().size(); ++i) {
+        DeviceModel *d = session->devices().at(i);
         auto *item = new QTreeWidgetItem(line);
+        item->setData(0, kLineRole, lineIndex);
         item->setData(0, kDeviceRole, i + 1);
         if (auto *st = qobject_cast<StationModel *>(d)) {
             for (PortModel *port : st->ports()) {
                 auto *p = new QTreeWidgetItem(item);
+                p->setData(0, kLineRole, lineIndex);
                 p->setData(0, kDeviceRole, i + 1);
                 p->setData(0, kPortRole, port->number());
-                connect(port, &PortModel::changed, this, [this] {
-                    if (!m_relabel.isActive()) // not restarted: a busy port still gets a label
-                        m_relabel.start();
-                });
+                connect(port, &PortModel::changed, this, &DeviceTree::scheduleRelabel);
             }
         }
     }
-    expandAll();
-    relabel();
-    blockSignals(false);
-    if (line->childCount() > 0)
-        setCurrentItem(line->child(0));
-    else
-        Q_EMIT selectionChangedTo(nullptr, 0);
+}
+
+void DeviceTree::scheduleRelabel() {
+    if (!m_relabel.isActive()) // not restarted: a busy port still gets a label
+        m_relabel.start();
 }
 
 void DeviceTree::relabel() {
-    QTreeWidgetItem *line = topLevelItem(0);
-    if (!line)
-        return;
-    line->setText(0,
-                  m_session.line() ? m_session.line()->transport().description() : tr("No line"));
+    for (int i = 0; i < topLevelItemCount(); ++i)
+        relabelLine(topLevelItem(i));
+    fitLabels();
+}
+
+void DeviceTree::relabelLine(QTreeWidgetItem *line) {
+    const int lineIndex = line->data(0, kLineRole).toInt();
+    Session *session = sessionOf(lineIndex);
+    const QString where =
+        session->line() ? session->line()->transport().description() : tr("No line");
+    if (lineIndex == kBarLine) {
+        line->setText(0, where);
+    } else {
+        const bool up = session->state() == Session::State::Connected;
+        line->setText(0,
+                      up ? tr("%1: %2").arg(m_workspace.line(lineIndex).name, where)
+                         : tr("%1: %2 (%3)")
+                               .arg(m_workspace.line(lineIndex).name, where, session->stateText()));
+    }
     for (int i = 0; i < line->childCount(); ++i) {
         QTreeWidgetItem *item = line->child(i);
-        DeviceModel *d = m_session.devices().value(item->data(0, kDeviceRole).toInt() - 1);
+        DeviceModel *d = session->devices().value(item->data(0, kDeviceRole).toInt() - 1);
         if (!d)
             continue;
         const QString kind = qobject_cast<FeederModel *>(d) ? tr("feeder") : tr("station");
-        item->setText(0, QStringLiteral("%1 (%2)").arg(d->displayName(), kind));
+        // The name the workspace gives the device comes first, its model and address after.
+        const QString given = lineIndex == kBarLine
+                                  ? QString()
+                                  : m_workspace.line(lineIndex).deviceName(d->address());
+        const QString name =
+            given.isEmpty() ? d->displayName() : tr("%1, %2").arg(given, d->displayName());
+        item->setText(0, QStringLiteral("%1 (%2)").arg(name, kind));
         auto *st = qobject_cast<StationModel *>(d);
         for (int c = 0; st && c < item->childCount(); ++c) {
             PortModel *port = st->port(item->child(c)->data(0, kPortRole).toInt());
@@ -100,7 +184,6 @@ void DeviceTree::relabel() {
             item->child(c)->setText(0, text);
         }
     }
-    fitLabels();
 }
 
 // QTreeView wraps a long label but keeps one line's height for its row, which hides the rest:

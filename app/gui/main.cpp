@@ -56,11 +56,15 @@ int main(int argc, char *argv[]) {
     const QCommandLineOption tcp(QStringLiteral("tcp"),
                                  QApplication::translate("main", "Connect to a TCP serial server."),
                                  QStringLiteral("HOST:PORT"));
+    const QCommandLineOption workspace(
+        QStringLiteral("workspace"),
+        QApplication::translate("main", "Open the lines of this workspace file."),
+        QStringLiteral("FILE"));
     const QCommandLineOption shots(
         QStringLiteral("screenshots"),
         QApplication::translate("main", "Save a PNG of every page into DIR, then quit."),
         QStringLiteral("DIR"));
-    parser.addOptions({demo, port, tcp, shots});
+    parser.addOptions({demo, port, tcp, workspace, shots});
     parser.process(app);
     if (headless && !parser.isSet(shots)) {
         QTextStream(stderr) << QApplication::translate(
@@ -88,6 +92,16 @@ int main(int argc, char *argv[]) {
     }
     if (connectNow)
         window.connectWith(start);
+    if (parser.isSet(workspace)) {
+        if (const QString refused = window.openWorkspace(parser.value(workspace));
+            !refused.isEmpty()) {
+            QTextStream(stderr) << QApplication::translate("main", "tipscope: %1").arg(refused)
+                                << Qt::endl;
+            return 2;
+        }
+    } else if (!connectNow) {
+        window.reopenLastWorkspace();
+    }
     if (parser.isSet(shots))
         takeScreenshots(window, parser.value(shots));
     return QApplication::exec();

@@ -9,9 +9,9 @@
 
 #include "journal/jointstatistics.h"
 #include "journal/journalhealth.h"
+#include "linepages.h"
 #include "linkstatuslabel.h"
-#include "pages/jointspage.h"
-#include "pages/pagefactory.h"
+#include "pages/page.h"
 
 #include "model/joints/jointlimitsfile.h"
 #include "model/supportreport.h"
@@ -20,14 +20,15 @@
 #include <QCloseEvent>
 #include <QDesktopServices>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QStandardPaths>
 #include <QStatusBar>
-#include <QTabWidget>
 #include <QToolBar>
 #include <QUrl>
 
@@ -47,25 +48,30 @@ MainWindow::MainWindow(QWidget *parent)
     bar->setObjectName(QStringLiteral("connectionToolBar"));
     bar->setMovable(false);
     bar->addWidget(m_connection);
-    m_tree = new DeviceTree(m_session, this);
-    m_tabs = new QTabWidget(this);
-    m_tabs->setDocumentMode(true);
-    m_pages = createPages(m_session, m_tabs);
-    for (Page *p : std::as_const(m_pages)) {
-        m_tabs->addTab(p, p->title());
-        if (auto *joints = qobject_cast<JointsPage *>(p))
-            connectJointsPage(*joints);
-    }
+    m_tree = new DeviceTree(m_session, m_workspace, this);
+    m_stack = new QStackedWidget(this);
+    m_barPages = new LinePages(m_session, m_journal.path(), LinePages::PortsPolled::Shown, m_stack);
+    m_barPages->setWorkOrder(m_journal.context().workOrder);
+    m_stack->addWidget(m_barPages);
+    connect(&m_context, &journal::WorkContextFollower::contextChanged, this,
+            [this](const WorkContext &context) {
+                m_barPages->setWorkOrder(context.workOrder);
+                for (const auto &[line, pages] : m_linePages)
+                    pages->setWorkOrder(context.workOrder);
+            });
     m_splitter = new QSplitter(this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
     m_splitter->addWidget(m_tree);
-    m_splitter->addWidget(m_tabs);
+    m_splitter->addWidget(m_stack);
     m_splitter->setStretchFactor(1, 1);
     m_splitter->setSizes({230, 1000});
     setCentralWidget(m_splitter);
     m_stateLabel = new QLabel(this);
     m_linkStatus = new LinkStatusLabel(m_session, this);
+    m_workspaceLabel = new QLabel(this);
+    m_workspaceLabel->hide();
     statusBar()->addWidget(m_stateLabel, 1);
+    statusBar()->addPermanentWidget(m_workspaceLabel);
     statusBar()->addPermanentWidget(new JournalStatusButton(m_journal, m_context, this));
     statusBar()->addPermanentWidget(m_linkStatus);
     buildMenus();
@@ -82,35 +88,28 @@ MainWindow::MainWindow(QWidget *parent)
                 updateTitle();
             });
     connect(&m_session, &Session::devicesChanged, this, &MainWindow::updateTitle);
-    connect(&m_session, &Session::devicesChanged, this, &MainWindow::updateVisiblePorts);
     connect(m_tree, &DeviceTree::selectionChangedTo, this, &MainWindow::onSelection);
-    connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::onTabChanged);
+    connect(&m_workspace, &Workspace::linesChanged, this, &MainWindow::onWorkspaceLines);
+    connect(&m_workspace, &Workspace::lineStateChanged, this, &MainWindow::updateWorkspaceStatus);
     applyPreferences(m_settings);
     restoreGeometry(store.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(store.value(QStringLiteral("window/state")).toByteArray());
     m_splitter->restoreState(store.value(QStringLiteral("window/splitter")).toByteArray());
     const int tab = store.value(QStringLiteral("window/tab"), 0).toInt();
-    m_tabs->setCurrentIndex(tab >= 0 && tab < m_tabs->count() ? tab : 0);
-    onTabChanged(m_tabs->currentIndex());
+    m_barPages->setCurrentIndex(tab >= 0 && tab < m_barPages->count() ? tab : 0);
+    showPagesOf(*m_barPages);
     updateTitle();
     if (size().width() < 400)
         resize(1280, 820);
 }
 
-MainWindow::~MainWindow() = default;
-
-// The Joints page reads this window's journal, stamps live joints with its work order until the
-// journal has them, and brings the Charts page forward for a joint.
-void MainWindow::connectJointsPage(JointsPage &joints) {
-    joints.setJournalPath(m_journal.path());
-    joints.setWorkOrder(m_journal.context().workOrder);
-    connect(&m_context, &journal::WorkContextFollower::contextChanged, &joints,
-            [&joints](const WorkContext &context) { joints.setWorkOrder(context.workOrder); });
-    connect(&joints, &JointsPage::chartsShown, m_tabs, &QTabWidget::setCurrentWidget);
+MainWindow::~MainWindow() {
+    dropWorkspace();
 }
 
 void MainWindow::buildMenus() {
     QMenu *file = menuBar()->addMenu(tr("&File"));
+    buildWorkspaceMenu(*file);
     file->addAction(tr("Work &context…"), this, [this] {
         WorkContextDialog dialog(m_context, this);
         dialog.exec();
@@ -139,29 +138,41 @@ void MainWindow::buildMenus() {
     });
 }
 
+QTabWidget &MainWindow::pages() const {
+    return *m_barPages;
+}
+
 Page *MainWindow::page(const QString &title) const {
-    for (Page *p : m_pages)
-        if (p->title() == title)
-            return p;
-    return nullptr;
+    return m_barPages->page(title);
+}
+
+QWidget *MainWindow::shownPages() const {
+    return m_stack->currentWidget();
 }
 
 void MainWindow::applyPreferences(const AppSettings &settings) {
     m_settings = settings;
     QSettings store;
     m_settings.save(store);
-    m_session.setTemperatureUnit(settings.unit);
-    m_session.scheduler().setInterval(PollClass::Live, settings.liveMs);
-    m_session.scheduler().setInterval(PollClass::Status, settings.statusMs);
-    m_session.scheduler().setInterval(PollClass::Counter, settings.counterMs);
-    // For the histories of the devices found from now on; those held keep their size.
-    m_session.telemetry().setTiers(settings.telemetryTiers());
+    applyPreferencesTo(m_session);
+    // A workspace line keeps the link timing its file gives it.
     if (link::Line *line = m_session.line()) {
         link::QueueSettings q = line->queue().settings();
-        q.turnaroundMs = settings.turnaroundMs;
-        q.retries = settings.retries;
+        q.turnaroundMs = m_settings.turnaroundMs;
+        q.retries = m_settings.retries;
         line->queue().setSettings(q);
     }
+    for (int i = 0; i < m_workspace.count(); ++i)
+        applyPreferencesTo(*m_workspace.session(i));
+}
+
+void MainWindow::applyPreferencesTo(Session &session) const {
+    session.setTemperatureUnit(m_settings.unit);
+    session.scheduler().setInterval(PollClass::Live, m_settings.liveMs);
+    session.scheduler().setInterval(PollClass::Status, m_settings.statusMs);
+    session.scheduler().setInterval(PollClass::Counter, m_settings.counterMs);
+    // For the histories of the devices found from now on; those held keep their size.
+    session.telemetry().setTiers(m_settings.telemetryTiers());
 }
 
 QString MainWindow::connectLine() {
@@ -183,31 +194,46 @@ void MainWindow::connectWith(const AppSettings &settings) {
     connectLine();
 }
 
-void MainWindow::onSelection(DeviceModel *device, int port) {
-    for (Page *p : std::as_const(m_pages)) {
-        p->setSelection(device, port);
-        const int index = m_tabs->indexOf(p);
-        m_tabs->setTabVisible(index, !device || p->appliesTo(device));
+LinePages &MainWindow::linePages(int line) {
+    if (line == DeviceTree::kBarLine)
+        return *m_barPages;
+    auto it = m_linePages.find(line);
+    if (it == m_linePages.end()) {
+        auto *pages = new LinePages(*m_workspace.session(line), m_journal.path(),
+                                    LinePages::PortsPolled::Every, m_stack);
+        pages->setWorkOrder(m_journal.context().workOrder);
+        m_stack->addWidget(pages);
+        it = m_linePages.emplace(line, pages).first;
     }
-    updateVisiblePorts();
+    return *it->second;
 }
 
-void MainWindow::onTabChanged(int index) {
-    for (int i = 0; i < m_pages.size(); ++i)
-        m_pages.at(i)->setActive(m_tabs->indexOf(m_pages.at(i)) == index);
-    updateVisiblePorts();
+void MainWindow::onSelection(int line, DeviceModel *device, int port) {
+    LinePages &pages = linePages(line);
+    pages.select(device, port);
+    showPagesOf(pages);
 }
 
-void MainWindow::updateVisiblePorts() {
-    // The shown page decides which ports' live values are worth the wire.
-    auto *current = qobject_cast<Page *>(m_tabs->currentWidget());
-    const QSet<int> ports = current ? current->visiblePorts() : QSet<int>();
-    for (DeviceModel *d : m_session.devices())
-        m_session.scheduler().setVisiblePorts(d, qobject_cast<StationModel *>(d) ? ports
-                                                                                 : QSet<int>());
+// Moving to another line keeps the page in front: Charts stays Charts.
+void MainWindow::showPagesOf(LinePages &pages) {
+    const auto *before = qobject_cast<LinePages *>(m_stack->currentWidget());
+    const auto *front = before ? qobject_cast<Page *>(before->currentWidget()) : nullptr;
+    if (before != &pages && front)
+        pages.showPage(front->title());
+    m_stack->setCurrentWidget(&pages);
+    m_barPages->setShown(&pages == m_barPages);
+    for (const auto &[line, other] : m_linePages)
+        other->setShown(other == &pages);
 }
 
 void MainWindow::updateTitle() {
+    if (m_workspace.count() > 0) {
+        const QString name = m_workspacePath.isEmpty()
+                                 ? tr("new workspace")
+                                 : QFileInfo(m_workspacePath).completeBaseName();
+        setWindowTitle(tr("TipScope — %1 (%n line(s))", nullptr, m_workspace.count()).arg(name));
+        return;
+    }
     QString what = tr("not connected");
     if (StationModel *st = m_session.station())
         what = st->displayName();
@@ -245,6 +271,7 @@ void MainWindow::loadJointLimits() {
         return;
     }
     m_session.joints().setRules(rules.value());
+    m_workspace.setSharedLimits(rules.value());
 }
 
 void MainWindow::editJointLimits() {
@@ -258,8 +285,9 @@ void MainWindow::closeEvent(QCloseEvent *event) {
     store.setValue(QStringLiteral("window/geometry"), saveGeometry());
     store.setValue(QStringLiteral("window/state"), saveState());
     store.setValue(QStringLiteral("window/splitter"), m_splitter->saveState());
-    store.setValue(QStringLiteral("window/tab"), m_tabs->currentIndex());
+    store.setValue(QStringLiteral("window/tab"), m_barPages->currentIndex());
     m_session.disconnectFromLine();
+    dropWorkspace();
     // The last joints and the disconnect reach the file before the window goes.
     (void)m_journal.flush(5000);
     event->accept();

@@ -1,9 +1,11 @@
 // MainWindow: the connection bar, the device tree, the pages, and the status bar with the
-// line's state and statistics. It owns the Session; pages and widgets talk to its models. It
-// keeps the session's joints and events in the journal (the default file, shared with the CLI),
+// line's state and statistics. It owns the connection bar's Session and the Workspace of lines
+// opened together (File › Open workspace); each line has its own pages (LinePages), made when one
+// of its devices is first selected, and pages and widgets talk to the models of their line. It
+// keeps every line's joints and events in the journal (the default file, shared with the CLI),
 // stamped with the work context of the shared context file, and judges joints by the shared
-// joint limits file.
-// Window geometry, splitter state and the last connection are remembered (AppSettings).
+// joint limits file unless a workspace line names its own.
+// Window geometry, splitter state, the last connection and the last workspace are remembered.
 #pragma once
 
 #include "model/appsettings.h"
@@ -12,19 +14,25 @@
 #include "journal/sessionjournal.h"
 #include "journal/workcontextfile.h"
 #include "model/session.h"
+#include "model/workspace/workspace.h"
 
 #include <QMainWindow>
+#include <map>
+#include <memory>
+#include <vector>
 
 class QTabWidget;
 class QSplitter;
 class QLabel;
+class QStackedWidget;
+class QMenu;
 
 namespace tipscope::gui {
 
 class ConnectionBar;
 class DeviceTree;
 class LinkStatusLabel;
-class JointsPage;
+class LinePages;
 class Page;
 
 class MainWindow : public QMainWindow {
@@ -33,10 +41,17 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
+    // The connection bar's line, and its pages.
     [[nodiscard]] model::Session &session() { return m_session; }
     [[nodiscard]] ConnectionBar &connectionBar() const { return *m_connection; }
-    [[nodiscard]] QTabWidget &pages() const { return *m_tabs; }
+    [[nodiscard]] QTabWidget &pages() const;
     [[nodiscard]] Page *page(const QString &title) const;
+    [[nodiscard]] model::Workspace &workspace() { return m_workspace; }
+    [[nodiscard]] QString workspacePath() const { return m_workspacePath; }
+    // The pages of a workspace line (made now when they were not yet).
+    [[nodiscard]] LinePages &linePages(int line);
+    // The pages on screen.
+    [[nodiscard]] QWidget *shownPages() const;
     [[nodiscard]] DeviceTree &deviceTree() const { return *m_tree; }
     [[nodiscard]] journal::Journal &journal() { return m_journal; }
     [[nodiscard]] journal::WorkContextFollower &workContext() { return m_context; }
@@ -44,6 +59,13 @@ public:
     // Connects with the connection bar's settings (saving them); a refusal is shown and returned.
     QString connectLine();
     void connectWith(const model::AppSettings &settings);
+    // Opens the workspace file, closing the one open; a refusal is returned, and the one open
+    // stays open.
+    QString openWorkspace(const QString &path);
+    QString saveWorkspace(const QString &path);
+    void closeWorkspace();
+    // Reopens the workspace open when TipScope last closed, if there was one.
+    void reopenLastWorkspace();
     void writeSupportReport();
     void editJointLimits();
 
@@ -52,26 +74,37 @@ protected:
 
 private:
     void buildMenus();
-    void connectJointsPage(JointsPage &joints);
+    void buildWorkspaceMenu(QMenu &file);
     void applyPreferences(const model::AppSettings &settings);
-    void onSelection(model::DeviceModel *device, int port);
-    void onTabChanged(int index);
-    void updateVisiblePorts();
+    void applyPreferencesTo(model::Session &session) const;
+    void onSelection(int line, model::DeviceModel *device, int port);
+    void showPagesOf(LinePages &pages);
     void updateTitle();
+    void updateWorkspaceStatus();
     void loadJointLimits();
+    void onWorkspaceLines();
+    void dropWorkspace();
+    void askToOpenWorkspace();
+    void askToSaveWorkspace(bool choosePath);
+    void addBarLineToWorkspace();
 
     model::Session m_session;
+    model::Workspace m_workspace;
     journal::Journal m_journal;
     journal::SessionJournal m_kept;
+    std::vector<std::unique_ptr<journal::SessionJournal>> m_keptLines;
+    QString m_workspacePath;
     journal::WorkContextFollower m_context;
     model::AppSettings m_settings;
     ConnectionBar *m_connection;
     DeviceTree *m_tree;
-    QTabWidget *m_tabs;
+    QStackedWidget *m_stack;
+    LinePages *m_barPages;
+    std::map<int, LinePages *> m_linePages;
     QSplitter *m_splitter;
     LinkStatusLabel *m_linkStatus;
     QLabel *m_stateLabel;
-    QList<Page *> m_pages;
+    QLabel *m_workspaceLabel;
 };
 
 } // namespace tipscope::gui

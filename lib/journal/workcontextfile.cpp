@@ -1,6 +1,7 @@
 #include "workcontextfile.h"
 
 #include "model/io/atomicsave.h"
+#include "model/io/jsonfile.h"
 #include "model/workcontextjson.h"
 
 #include <QCoreApplication>
@@ -29,19 +30,23 @@ QString workContextPathFor(const QString &journalPath) {
 }
 
 Outcome<model::WorkContext> readWorkContext(const QString &path) {
-    QFile file(path);
-    if (!file.exists())
-        return model::WorkContext{};
-    if (!file.open(QIODevice::ReadOnly))
-        return failure(Tr::tr("cannot read the work context %1: %2").arg(path, file.errorString()));
-    if (file.size() > kMaxBytes)
-        return failure(Tr::tr("the work context %1 is too big to be one").arg(path));
-    QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
-    if (!doc.isObject())
-        return failure(
-            Tr::tr("the work context %1 is not a JSON object: %2").arg(path, error.errorString()));
-    const auto context = model::workContextFromJson(doc.object());
+    const auto read = model::io::readJsonObject(path, kMaxBytes);
+    if (const auto *problem = std::get_if<model::io::JsonFileProblem>(&read)) {
+        using Kind = model::io::JsonFileProblem::Kind;
+        switch (problem->kind) {
+        case Kind::Missing:
+            return model::WorkContext{};
+        case Kind::Unreadable:
+            return failure(
+                Tr::tr("cannot read the work context %1: %2").arg(path, problem->detail));
+        case Kind::TooBig:
+            return failure(Tr::tr("the work context %1 is too big to be one").arg(path));
+        case Kind::NotAnObject:
+            return failure(
+                Tr::tr("the work context %1 is not a JSON object: %2").arg(path, problem->detail));
+        }
+    }
+    const auto context = model::workContextFromJson(std::get<QJsonObject>(read));
     if (!context)
         return failure(Tr::tr("the work context %1: %2").arg(path, context.error()));
     return context;

@@ -4,6 +4,7 @@
 #include "programrun.h"
 
 #include <QProcess>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace tipscope;
@@ -27,6 +28,7 @@ private Q_SLOTS:
     void helpAndVersionWorkWithoutADisplay();
     void anUnknownOptionIsRefusedWithoutADisplay();
     void theWindowWithoutADisplayIsRefusedWithTheReason();
+    void aWorkspaceThatCannotBeOpenedIsRefusedWithTheReason();
 };
 
 void TestGuiCommandLine::helpAndVersionWorkWithoutADisplay_data() {
@@ -60,6 +62,21 @@ void TestGuiCommandLine::theWindowWithoutADisplayIsRefusedWithTheReason() {
     const testing::ProgramRun r = runWithoutDisplay({QStringLiteral("--demo")});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("no display")), qPrintable(r.err));
+}
+
+void TestGuiCommandLine::aWorkspaceThatCannotBeOpenedIsRefusedWithTheReason() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("absent.json"));
+    QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
+    e.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    e.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.path()); // the user's settings stay untouched
+    e.insert(QStringLiteral("XDG_DATA_HOME"), dir.path());
+    QProcess p;
+    p.setProcessEnvironment(e);
+    p.start(testing::binaryPath(QStringLiteral("tipscope")), {QStringLiteral("--workspace"), path});
+    const testing::ProgramRun r = testing::finishProcess(p, 30000);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(path), qPrintable(r.err));
 }
 
 QTEST_MAIN(TestGuiCommandLine)

@@ -1,6 +1,7 @@
 #include "model/joints/jointlimitsfile.h"
 
 #include "model/io/atomicsave.h"
+#include "model/io/jsonfile.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -24,20 +25,23 @@ QString defaultJointLimitsPath() {
 }
 
 protocol::Outcome<JointLimitRules> loadJointLimits(const QString &path) {
-    QFile file(path);
-    if (!file.exists())
-        return JointLimitRules{};
-    if (!file.open(QIODevice::ReadOnly))
-        return protocol::failure(
-            Tr::tr("cannot read the joint limits %1: %2").arg(path, file.errorString()));
-    if (file.size() > kMaxBytes)
-        return protocol::failure(Tr::tr("the joint limits %1 are too big").arg(path));
-    QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
-    if (!doc.isObject())
-        return protocol::failure(
-            Tr::tr("the joint limits %1 are not a JSON object: %2").arg(path, error.errorString()));
-    const auto rules = JointLimitRules::fromJson(doc.object());
+    const auto read = io::readJsonObject(path, kMaxBytes);
+    if (const auto *problem = std::get_if<io::JsonFileProblem>(&read)) {
+        using Kind = io::JsonFileProblem::Kind;
+        switch (problem->kind) {
+        case Kind::Missing:
+            return JointLimitRules{};
+        case Kind::Unreadable:
+            return protocol::failure(
+                Tr::tr("cannot read the joint limits %1: %2").arg(path, problem->detail));
+        case Kind::TooBig:
+            return protocol::failure(Tr::tr("the joint limits %1 are too big").arg(path));
+        case Kind::NotAnObject:
+            return protocol::failure(
+                Tr::tr("the joint limits %1 are not a JSON object: %2").arg(path, problem->detail));
+        }
+    }
+    const auto rules = JointLimitRules::fromJson(std::get<QJsonObject>(read));
     if (!rules)
         return protocol::failure(QStringLiteral("%1: %2").arg(path, rules.error()));
     return rules;

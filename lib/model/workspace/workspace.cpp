@@ -13,22 +13,48 @@ Workspace::~Workspace() {
 void Workspace::open(const WorkspaceFile &file) {
     close();
     m_file = file;
-    for (int i = 0; i < int(m_file.lines.size()); ++i) {
-        auto session = std::make_unique<Session>();
-        session->scheduler().setFillWire(true);
-        session->joints().setRules(limitsOf(i));
-        connect(session.get(), &Session::stateChanged, this,
-                [this, i](Session::State state, const QString &text) {
-                    Q_EMIT lineStateChanged(i, state, text);
-                });
-        connect(session.get(), &Session::devicesChanged, this,
-                [this, i] { Q_EMIT lineDevicesChanged(i); });
-        m_sessions.push_back(std::move(session));
-    }
+    for (int i = 0; i < int(m_file.lines.size()); ++i)
+        startSession(i);
     Q_EMIT linesChanged();
     // Connected after every session exists, so a line's signals find all the others in place.
     for (int i = 0; i < count(); ++i)
         m_sessions.at(size_t(i))->connectTo(m_file.lines.at(i).session);
+}
+
+protocol::Outcome<void> Workspace::addLine(const WorkspaceLine &line) {
+    if (line.name.trimmed().isEmpty())
+        return protocol::failure(tr("a line needs a name"));
+    if (indexOf(line.name) >= 0)
+        return protocol::failure(
+            tr("the workspace already has a line named \"%1\"").arg(line.name));
+    m_file.lines.append(line);
+    const int index = count();
+    startSession(index);
+    Q_EMIT linesChanged();
+    m_sessions.back()->connectTo(line.session);
+    return {};
+}
+
+void Workspace::startSession(int i) {
+    auto session = std::make_unique<Session>();
+    session->scheduler().setFillWire(true);
+    session->joints().setRules(limitsOf(i));
+    Session *s = session.get();
+    connect(s, &Session::stateChanged, this, [this, i](Session::State state, const QString &text) {
+        Q_EMIT lineStateChanged(i, state, text);
+    });
+    connect(s, &Session::devicesChanged, this, [this, i, s] {
+        for (DeviceModel *d : s->devices()) {
+            if (auto *station = qobject_cast<StationModel *>(d)) {
+                QSet<int> every;
+                for (const PortModel *port : station->ports())
+                    every.insert(port->number());
+                s->scheduler().setVisiblePorts(station, every);
+            }
+        }
+        Q_EMIT lineDevicesChanged(i);
+    });
+    m_sessions.push_back(std::move(session));
 }
 
 void Workspace::close() {

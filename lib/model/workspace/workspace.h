@@ -2,12 +2,16 @@
 //
 // open() closes what was open and connects every line of the file; each Session keeps its own
 // request queue, poll scheduler, reconnection and statistics, so a line that is down, slow or
-// absent never holds up the others. Each line's scheduler fills its wire (PollScheduler::
-// setFillWire()): a line polls as fast as its own wire carries, which costs no other line. Each
-// line's joints are judged by the line's own limits, or the shared ones (setSharedLimits()) when
-// the line names none. The workspace owns the sessions; a session() pointer stays valid until
-// close() or the next open(). lineStateChanged() and lineDevicesChanged() repeat a session's
-// signals with the line's index; linesChanged() says the set of lines changed (open, close).
+// absent never holds up the others. Each line's joints are judged by the line's own limits, or
+// the shared ones (setSharedLimits()) when the line names none. The workspace owns the sessions;
+// a session() pointer stays valid until close() or the next open(). lineStateChanged() and
+// lineDevicesChanged() repeat a session's signals with the line's index; linesChanged() says the
+// set of lines changed (open, addLine, close).
+//
+// A workspace watches a fleet: every port of every station is polled at the live interval, shown
+// or not, so each line's joints are found and its tiles are current. Each line's scheduler also
+// fills its wire (PollScheduler::setFillWire()): a line polls as fast as its own wire carries,
+// which costs no other line.
 #pragma once
 
 #include "model/workspace/workspacefile.h"
@@ -25,6 +29,8 @@ public:
     ~Workspace() override;
 
     void open(const WorkspaceFile &file);
+    // Adds a line to those open and connects it; the others carry on. Refuses a name in use.
+    protocol::Outcome<void> addLine(const WorkspaceLine &line);
     void close();
 
     [[nodiscard]] const WorkspaceFile &file() const { return m_file; }
@@ -46,6 +52,8 @@ Q_SIGNALS:
     void lineDevicesChanged(int index);
 
 private:
+    void startSession(int index);
+
     WorkspaceFile m_file;
     JointLimitRules m_shared;
     std::vector<std::unique_ptr<Session>> m_sessions;

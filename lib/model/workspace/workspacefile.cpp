@@ -1,6 +1,7 @@
 #include "model/workspace/workspacefile.h"
 
 #include "model/io/atomicsave.h"
+#include "model/io/jsonfile.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -83,19 +84,24 @@ Outcome<WorkspaceFile> WorkspaceFile::fromJson(const QJsonObject &json) {
 }
 
 Outcome<WorkspaceFile> WorkspaceFile::load(const QString &path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return failure(Tr::tr("cannot read the workspace %1: %2").arg(path, f.errorString()));
-    if (f.size() > kMaxBytes)
-        return failure(Tr::tr("the workspace %1 is too big to be one").arg(path));
-    QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &error);
-    if (!doc.isObject())
-        return failure(Tr::tr("the workspace %1 is not a JSON object: %2")
-                           .arg(path, error.error == QJsonParseError::NoError
-                                          ? Tr::tr("it is a list")
-                                          : error.errorString()));
-    const auto file = fromJson(doc.object());
+    const auto read = io::readJsonObject(path, kMaxBytes);
+    if (const auto *problem = std::get_if<io::JsonFileProblem>(&read)) {
+        using Kind = io::JsonFileProblem::Kind;
+        switch (problem->kind) {
+        case Kind::Missing:
+            return failure(Tr::tr("cannot read the workspace %1: %2")
+                               .arg(path, Tr::tr("there is no such file")));
+        case Kind::Unreadable:
+            return failure(Tr::tr("cannot read the workspace %1: %2").arg(path, problem->detail));
+        case Kind::TooBig:
+            return failure(Tr::tr("the workspace %1 is too big to be one").arg(path));
+        case Kind::NotAnObject:
+            return failure(Tr::tr("the workspace %1 is not a JSON object: %2")
+                               .arg(path, problem->detail.isEmpty() ? Tr::tr("it is a list")
+                                                                    : problem->detail));
+        }
+    }
+    const auto file = fromJson(std::get<QJsonObject>(read));
     if (!file)
         return failure(QStringLiteral("%1: %2").arg(path, file.error()));
     return file;

@@ -35,12 +35,12 @@ WorkspaceLine tcpLine(const QString &name, const QString &where) {
     return l;
 }
 
-// Samples of port 1 of the line's station so far (0 before it has one).
-qint64 samplesOf(Session &session) {
+// Samples of a port of the line's station so far (0 before it has one).
+qint64 samplesOf(Session &session, int port = 1) {
     if (!session.station())
         return 0;
     const TelemetryBuffer *buffer =
-        session.telemetry().buffer(TelemetryRecorder::keyOf(*session.station(), 1));
+        session.telemetry().buffer(TelemetryRecorder::keyOf(*session.station(), port));
     return buffer ? buffer->totalAppended() : 0;
 }
 
@@ -52,6 +52,7 @@ class TestWorkspace : public QObject {
 private Q_SLOTS:
     void aDeadLineNeitherStopsTheOthersNorStaysDead();
     void eachLineIsJudgedByItsOwnLimitsAndNamesItsDevices();
+    void aLineJoinsUnderANewNameAndEveryPortIsWatched();
 };
 
 void TestWorkspace::aDeadLineNeitherStopsTheOthersNorStaysDead() {
@@ -149,6 +150,52 @@ void TestWorkspace::eachLineIsJudgedByItsOwnLimitsAndNamesItsDevices() {
     workspace.close();
     QCOMPARE(workspace.count(), 0);
     QCOMPARE(lines.count(), 2);
+}
+
+// A line added to those open connects while the first carries on; a name in use, or none, is
+// refused and adds nothing. A workspace watches a fleet: every port of every station is polled
+// live, with no page asking for it.
+void TestWorkspace::aLineJoinsUnderANewNameAndEveryPortIsWatched() {
+    WorkspaceLine demo;
+    demo.name = QStringLiteral("cell-1");
+    demo.session.line.kind = link::LineSettings::Kind::Demo;
+    demo.session.demoPaced = false;
+    WorkspaceFile file;
+    file.lines = {demo};
+    Workspace workspace;
+    workspace.open(file);
+    QTRY_VERIFY_WITH_TIMEOUT(workspace.session(0)->station(), kConnectMs);
+    Session &first = *workspace.session(0);
+
+    QSignalSpy lines(&workspace, &Workspace::linesChanged);
+    QVERIFY(lines.isValid());
+    const auto same = workspace.addLine(demo);
+    QVERIFY(!same.ok());
+    QVERIFY2(same.error().contains(QStringLiteral("cell-1")), qPrintable(same.error()));
+    WorkspaceLine unnamed = demo;
+    unnamed.name = QStringLiteral("  ");
+    QVERIFY(!workspace.addLine(unnamed).ok());
+    QCOMPARE(workspace.count(), 1);
+    QCOMPARE(lines.count(), 0);
+
+    WorkspaceLine second = demo;
+    second.name = QStringLiteral("cell-2");
+    QVERIFY(workspace.addLine(second).ok());
+    QCOMPARE(workspace.count(), 2);
+    QCOMPARE(lines.count(), 1);
+    QCOMPARE(workspace.indexOf(QStringLiteral("cell-2")), 1);
+    QCOMPARE(workspace.session(0), &first); // the first line was left as it was
+    QCOMPARE(first.state(), Session::State::Connected);
+    QTRY_VERIFY_WITH_TIMEOUT(workspace.session(1)->station(), kConnectMs);
+
+    // The scheduler polls a port nobody shows at the status interval; a workspace's ports are
+    // all at the live one: port 4's tip is read as often as port 1's.
+    for (Session *s : {&first, workspace.session(1)}) {
+        s->scheduler().setInterval(PollClass::Live, 100);
+        s->scheduler().setInterval(PollClass::Status, 600000);
+        const qint64 before = samplesOf(*s, 4);
+        QTRY_VERIFY_WITH_TIMEOUT(samplesOf(*s, 4) > before + 10, kConnectMs);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestWorkspace)

@@ -1,0 +1,161 @@
+// The main window with a workspace open, on the offscreen platform: the lines of the file, each
+// under its name in the device tree with its own pages; a file that cannot be read refused with
+// the reason while the open workspace stays; the workspace saved, and reopened at the next start.
+#include "devicetree.h"
+#include "linepages.h"
+#include "mainwindow.h"
+#include "pages/page.h"
+
+#include "i18n/translations.h"
+#include "model/workspace/workspacefile.h"
+
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace tipscope;
+using namespace tipscope::gui;
+using namespace tipscope::model;
+
+namespace {
+constexpr int kConnectMs = 20000;
+
+WorkspaceFile twoDemoLines() {
+    WorkspaceFile file;
+    for (const char *name : {"cell-1", "cell-2"}) {
+        WorkspaceLine line;
+        line.name = QLatin1String(name);
+        line.cell = QStringLiteral("Cell %1").arg(file.lines.size() + 1);
+        line.session.line.kind = link::LineSettings::Kind::Demo;
+        file.lines.append(line);
+    }
+    file.lines[1].deviceNames.insert(1, QStringLiteral("Rework B"));
+    return file;
+}
+
+void waitForEveryLine(MainWindow &w) {
+    for (int i = 0; i < w.workspace().count(); ++i) {
+        QTRY_COMPARE_WITH_TIMEOUT(w.workspace().session(i)->state(), Session::State::Connected,
+                                  kConnectMs);
+        QTRY_COMPARE_WITH_TIMEOUT(w.workspace().session(i)->devices().size(), 2, kConnectMs);
+    }
+}
+} // namespace
+
+class TestMainWindowWorkspace : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void theTreeHoldsEveryLineUnderItsName();
+    void everyPageWorksForTheDeviceSelectedOnAnyLine();
+    void aWorkspaceThatCannotBeReadIsRefusedAndTheOpenOneStays();
+    void theSavedWorkspaceReopensAtTheNextStartUntilItIsClosed();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_path;
+};
+
+void TestMainWindowWorkspace::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    // English plurals ("2 lines") come from the English translation, as in the application.
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), QStringLiteral("en")),
+             QStringLiteral("en"));
+    QCoreApplication::setOrganizationName(QStringLiteral("TipScopeTests"));
+    QSettings().clear();
+    QVERIFY(m_dir.isValid());
+    m_path = m_dir.filePath(QStringLiteral("plant.json"));
+    QVERIFY(twoDemoLines().save(m_path).ok());
+}
+
+void TestMainWindowWorkspace::theTreeHoldsEveryLineUnderItsName() {
+    MainWindow w;
+    w.show();
+    QCOMPARE(w.openWorkspace(m_path), QString());
+    waitForEveryLine(w);
+    DeviceTree &tree = w.deviceTree();
+    QCOMPARE(tree.topLevelItemCount(), 3);
+    QVERIFY(tree.topLevelItem(0)->isHidden()); // the connection bar's line, not connected
+    QVERIFY(tree.topLevelItem(1)->text(0).startsWith(QStringLiteral("cell-1: ")));
+    QVERIFY(tree.topLevelItem(2)->text(0).startsWith(QStringLiteral("cell-2: ")));
+    QCOMPARE(tree.topLevelItem(1)->childCount(), 2);
+    QCOMPARE(tree.topLevelItem(2)->childCount(), 2);
+    // The name the workspace gives the station at address 1 of cell-2, and only there.
+    QTRY_VERIFY(tree.topLevelItem(2)->child(0)->text(0).startsWith(QStringLiteral("Rework B, ")));
+    QVERIFY(!tree.topLevelItem(1)->child(0)->text(0).contains(QStringLiteral("Rework B")));
+    QVERIFY2(w.windowTitle().contains(QStringLiteral("plant (2 lines)")),
+             qPrintable(w.windowTitle()));
+}
+
+void TestMainWindowWorkspace::everyPageWorksForTheDeviceSelectedOnAnyLine() {
+    MainWindow w;
+    w.show();
+    QCOMPARE(w.openWorkspace(m_path), QString());
+    waitForEveryLine(w);
+    Session &second = *w.workspace().session(1);
+    QVERIFY(w.deviceTree().select(1, second.station(), 2));
+    LinePages &pages = w.linePages(1);
+    QCOMPARE(w.shownPages(), &pages);
+    QCOMPARE(pages.selectedDevice(), second.station());
+    QCOMPARE(w.deviceTree().selectedPort(), 2);
+    pages.showPage(QStringLiteral("Charts"));
+
+    // Another line's feeder: its own pages, the Feeder page among them, and still the Charts
+    // page in front, as it was.
+    Session &first = *w.workspace().session(0);
+    QVERIFY(w.deviceTree().select(0, first.feeder()));
+    LinePages &firstPages = w.linePages(0);
+    QCOMPARE(w.shownPages(), &firstPages);
+    QCOMPARE(firstPages.selectedDevice(), first.feeder());
+    QCOMPARE(qobject_cast<Page *>(firstPages.currentWidget())->title(), QStringLiteral("Charts"));
+    Page *feeder = firstPages.page(QStringLiteral("Feeder"));
+    QVERIFY(feeder && firstPages.isTabVisible(firstPages.indexOf(feeder)));
+    // Only the pages on screen are active.
+    QVERIFY(!pages.page(QStringLiteral("Charts"))->isVisible());
+    QVERIFY(firstPages.page(QStringLiteral("Charts"))->isVisible());
+}
+
+void TestMainWindowWorkspace::aWorkspaceThatCannotBeReadIsRefusedAndTheOpenOneStays() {
+    MainWindow w;
+    QCOMPARE(w.openWorkspace(m_path), QString());
+    const QString broken = m_dir.filePath(QStringLiteral("broken.json"));
+    QFile f(broken);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "tipscope-workspace", "version": 1, "lines": [{"name": "x"}]})");
+    f.close();
+    const QString refused = w.openWorkspace(broken);
+    QVERIFY2(refused.contains(QStringLiteral("broken.json")) &&
+                 refused.contains(QStringLiteral("connection")),
+             qPrintable(refused));
+    QCOMPARE(w.workspace().count(), 2);
+    QCOMPARE(w.workspacePath(), QFileInfo(m_path).absoluteFilePath());
+    QVERIFY(!w.openWorkspace(m_dir.filePath(QStringLiteral("absent.json"))).isEmpty());
+    QCOMPARE(w.workspace().count(), 2);
+}
+
+void TestMainWindowWorkspace::theSavedWorkspaceReopensAtTheNextStartUntilItIsClosed() {
+    const QString copy = m_dir.filePath(QStringLiteral("copy.json"));
+    {
+        MainWindow w;
+        QCOMPARE(w.openWorkspace(m_path), QString());
+        QCOMPARE(w.saveWorkspace(copy), QString());
+        const auto saved = WorkspaceFile::load(copy);
+        QVERIFY2(saved.ok(), qPrintable(saved.error()));
+        QCOMPARE(saved.value().toJson(), twoDemoLines().toJson());
+    }
+    {
+        MainWindow w;
+        QCOMPARE(w.workspace().count(), 0);
+        w.reopenLastWorkspace();
+        QCOMPARE(w.workspacePath(), QFileInfo(copy).absoluteFilePath());
+        QCOMPARE(w.workspace().count(), 2);
+        w.closeWorkspace();
+        QCOMPARE(w.workspace().count(), 0);
+    }
+    MainWindow w;
+    w.reopenLastWorkspace();
+    QCOMPARE(w.workspace().count(), 0);
+}
+
+QTEST_MAIN(TestMainWindowWorkspace)
+#include "tst_mainwindowworkspace.moc"
