@@ -4004,7 +4004,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>der Arbeitskontext %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="46"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>der Arbeitskontext %1 ist kein JSON-Objekt: %2</translation>
     </message>
@@ -4081,12 +4081,12 @@ Dauerhaft mit dieser udev-Regel:
         <translation>der Arbeitsbereich %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>der Arbeitsbereich %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
         <source>it is a list</source>
         <translation>er ist eine Liste</translation>
     </message>
@@ -4228,7 +4228,6 @@ Dauerhaft mit dieser udev-Regel:
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="30"/>
         <location filename="../app/gui/charts/chartspage.h" line="69"/>
-        <location filename="../app/gui/screenshots.cpp" line="230"/>
         <source>Charts</source>
         <translation>Diagramme</translation>
     </message>
@@ -5819,6 +5818,72 @@ Zurücksetzen?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::FleetPage</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="29"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="30"/>
+        <source>Line</source>
+        <translation>Leitung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <source>State, worst first</source>
+        <translation>Zustand, schlechtester zuerst</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
+        <source>Sort by:</source>
+        <translation>Sortieren nach:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
+        <source>Needs attention only</source>
+        <translation>Nur was Aufmerksamkeit braucht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="115"/>
+        <source>Devices: %1 · need attention: %2</source>
+        <translation>Geräte: %1 · brauchen Aufmerksamkeit: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="206"/>
+        <source>No devices: the workspace&apos;s lines have found none yet.</source>
+        <translation>Keine Geräte: die Leitungen des Arbeitsbereichs haben noch keine gefunden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="207"/>
+        <source>No device needs attention.</source>
+        <translation>Kein Gerät braucht Aufmerksamkeit.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="47"/>
+        <source>Fleet</source>
+        <translation>Geräteübersicht</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FleetTileWidget</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="72"/>
+        <source>P%1  %2 / %3  %4  %5</source>
+        <translation>P%1  %2 / %3  %4  %5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="76"/>
+        <source>  · joint %1</source>
+        <translation>  · Lötstelle %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="98"/>
+        <source>Last joint: %1 (port %2)</source>
+        <translation>Letzte Lötstelle: %1 (Port %2)</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
@@ -6454,7 +6519,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Der letzte Arbeitsbereich wurde nicht wieder geöffnet: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="109"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Arbeitsbereich: %1 von %n Linie verbunden</numerusform>
@@ -6462,41 +6527,41 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="123"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="117"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="122"/>
         <source>Open workspace</source>
         <translation>Arbeitsbereich öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="119"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
         <source>TipScope workspaces (*.json);;All files (*)</source>
         <translation>TipScope-Arbeitsbereiche (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="139"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="129"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="137"/>
         <source>Save workspace</source>
         <translation>Arbeitsbereich speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="135"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="133"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>TipScope-Arbeitsbereiche (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="148"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="162"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="146"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="151"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="160"/>
         <source>Add this line to the workspace</source>
         <translation>Diese Linie zum Arbeitsbereich hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="151"/>
         <source>Name of the line (cell, station):</source>
         <translation>Name der Linie (Zelle, Station):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
         <source>line-%1</source>
         <translation>linie-%1</translation>
     </message>
@@ -7632,6 +7697,65 @@ Möchten Sie fortfahren?</translation>
     </message>
 </context>
 <context>
+    <name>tipscope::model::FleetTile</name>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="39"/>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="53"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="45"/>
+        <source>Port %1: %2</source>
+        <translation>Port %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="48"/>
+        <source>Port %1 alarm: %2</source>
+        <translation>Port %1 Alarm: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="54"/>
+        <source>Feeding</source>
+        <translation>Vorschub läuft</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="55"/>
+        <source>Not feeding</source>
+        <translation>Kein Vorschub</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="56"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · vorgeschoben %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="195"/>
+        <source>Line down</source>
+        <translation>Leitung getrennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="200"/>
+        <source>Line down since %1</source>
+        <translation>Leitung getrennt seit %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="201"/>
+        <source>Line down since %1 %2</source>
+        <translation>Leitung getrennt seit %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="219"/>
+        <source>Station: %1</source>
+        <translation>Station: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="231"/>
+        <source>Feeder: %1</source>
+        <translation>Lotdrahtvorschub: %1</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::model::Workspace</name>
     <message>
         <location filename="../lib/model/workspace/workspace.cpp" line="26"/>
@@ -7639,7 +7763,7 @@ Möchten Sie fortfahren?</translation>
         <translation>eine Linie braucht einen Namen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspace.cpp" line="28"/>
+        <location filename="../lib/model/workspace/workspace.cpp" line="29"/>
         <source>the workspace already has a line named &quot;%1&quot;</source>
         <translation>der Arbeitsbereich hat schon eine Linie namens „%1“</translation>
     </message>

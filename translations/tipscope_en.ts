@@ -187,7 +187,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="109"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Workspace: %1 of %n line connected</numerusform>

@@ -4005,7 +4005,7 @@ Hágalo permanente con esta regla de udev:
         <translation>el contexto de trabajo %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="45"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="46"/>
         <source>the work context %1 is not a JSON object: %2</source>
         <translation>el contexto de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
@@ -4082,12 +4082,12 @@ Hágalo permanente con esta regla de udev:
         <translation>el espacio de trabajo %1 es demasiado grande para ser uno</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>el espacio de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -4229,7 +4229,6 @@ Hágalo permanente con esta regla de udev:
     <message>
         <location filename="../app/gui/charts/chartspage.cpp" line="30"/>
         <location filename="../app/gui/charts/chartspage.h" line="69"/>
-        <location filename="../app/gui/screenshots.cpp" line="230"/>
         <source>Charts</source>
         <translation>Gráficos</translation>
     </message>
@@ -5820,6 +5819,72 @@ Reset it?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::gui::FleetPage</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="29"/>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="30"/>
+        <source>Line</source>
+        <translation>Línea</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <source>State, worst first</source>
+        <translation>Estado, el peor primero</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
+        <source>Sort by:</source>
+        <translation>Ordenar por:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
+        <source>Needs attention only</source>
+        <translation>Solo lo que requiere atención</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="115"/>
+        <source>Devices: %1 · need attention: %2</source>
+        <translation>Equipos: %1 · requieren atención: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="206"/>
+        <source>No devices: the workspace&apos;s lines have found none yet.</source>
+        <translation>Sin equipos: las líneas del espacio de trabajo aún no han encontrado ninguno.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="207"/>
+        <source>No device needs attention.</source>
+        <translation>Ningún equipo requiere atención.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="47"/>
+        <source>Fleet</source>
+        <translation>Flota</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::FleetTileWidget</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="72"/>
+        <source>P%1  %2 / %3  %4  %5</source>
+        <translation>P%1  %2 / %3  %4  %5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="76"/>
+        <source>  · joint %1</source>
+        <translation>  · soldadura %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="98"/>
+        <source>Last joint: %1 (port %2)</source>
+        <translation>Última soldadura: %1 (puerto %2)</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
@@ -6455,7 +6520,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>El último espacio de trabajo no se volvió a abrir: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="109"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Espacio de trabajo: %1 de %n línea conectada</numerusform>
@@ -6463,41 +6528,41 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="123"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="117"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="122"/>
         <source>Open workspace</source>
         <translation>Abrir espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="119"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
         <source>TipScope workspaces (*.json);;All files (*)</source>
         <translation>Espacios de trabajo de TipScope (*.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="139"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="129"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="137"/>
         <source>Save workspace</source>
         <translation>Guardar espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="135"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="133"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>Espacios de trabajo de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="148"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="162"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="146"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="151"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="160"/>
         <source>Add this line to the workspace</source>
         <translation>Añadir esta línea al espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="151"/>
         <source>Name of the line (cell, station):</source>
         <translation>Nombre de la línea (celda, estación):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
         <source>line-%1</source>
         <translation>linea-%1</translation>
     </message>
@@ -7633,6 +7698,65 @@ Do you want to continue?</source>
     </message>
 </context>
 <context>
+    <name>tipscope::model::FleetTile</name>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="39"/>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="53"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="45"/>
+        <source>Port %1: %2</source>
+        <translation>Puerto %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="48"/>
+        <source>Port %1 alarm: %2</source>
+        <translation>Alarma del puerto %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="54"/>
+        <source>Feeding</source>
+        <translation>Alimentando</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="55"/>
+        <source>Not feeding</source>
+        <translation>Sin alimentar</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="56"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · alimentado %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="195"/>
+        <source>Line down</source>
+        <translation>Línea caída</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="200"/>
+        <source>Line down since %1</source>
+        <translation>Línea caída desde las %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="201"/>
+        <source>Line down since %1 %2</source>
+        <translation>Línea caída desde el %1 a las %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="219"/>
+        <source>Station: %1</source>
+        <translation>Estación: %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/fleettile.cpp" line="231"/>
+        <source>Feeder: %1</source>
+        <translation>Alimentador: %1</translation>
+    </message>
+</context>
+<context>
     <name>tipscope::model::Workspace</name>
     <message>
         <location filename="../lib/model/workspace/workspace.cpp" line="26"/>
@@ -7640,7 +7764,7 @@ Do you want to continue?</source>
         <translation>una línea necesita un nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspace.cpp" line="28"/>
+        <location filename="../lib/model/workspace/workspace.cpp" line="29"/>
         <source>the workspace already has a line named &quot;%1&quot;</source>
         <translation>el espacio de trabajo ya tiene una línea llamada «%1»</translation>
     </message>

@@ -65,8 +65,11 @@ int FlowLayout::arrange(const QRect &rect, bool place) const {
         if (place)
             for (const auto &[item, at] : std::as_const(line)) {
                 const QSize size = item->sizeHint();
+                // Centred on the line, unless the item asks for its top (tiles of a wall).
+                const int dy =
+                    item->alignment() & Qt::AlignTop ? 0 : (lineHeight - size.height()) / 2;
                 item->setGeometry(
-                    QRect(QPoint(at.x(), at.y() + (lineHeight - size.height()) / 2),
+                    QRect(QPoint(at.x(), at.y() + dy),
                           size.boundedTo(QSize(area.right() - at.x() + 1, lineHeight))));
             }
         line.clear();

@@ -1,6 +1,7 @@
 // FlowLayout: widgets in a row that wraps onto the next line when the row is too narrow, like words
 // in a paragraph. A toolbar laid out with it never makes its window wider than the screen (the
 // Charts page's buttons in German were 33 px wider than 1280), at the cost of a second line.
+// Items are centred on their line, or at its top when their alignment says Qt::AlignTop.
 #pragma once
 
 #include <QLayout>

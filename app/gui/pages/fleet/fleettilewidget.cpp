@@ -1,0 +1,179 @@
+#include "pages/fleet/fleettilewidget.h"
+
+#include "pages/levelstyle.h"
+
+#include "model/joints/jointtable.h"
+
+#include <QKeyEvent>
+#include <QPainter>
+
+namespace tipscope::gui {
+
+using model::Level;
+
+namespace {
+constexpr int kMargin = 8;
+constexpr int kLineGap = 2;
+constexpr int kWidthInChars = 46; // a port's row unabridged in German, four tiles on 1920 px
+constexpr int kBorder = 2;
+} // namespace
+
+FleetTileWidget::FleetTileWidget(model::FleetTile *tile, QWidget *parent)
+    : QWidget(parent)
+    , m_tile(tile) {
+    m_tile->setParent(this);
+    setFocusPolicy(Qt::StrongFocus);
+    setCursor(Qt::PointingHandCursor);
+    setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
+    m_clock.start();
+    connect(m_tile, &model::FleetTile::changed, this, &FleetTileWidget::markDirty);
+    connect(m_tile, &model::FleetTile::sampleArrived, this, [this] {
+        if (m_arrivedNs < 0)
+            m_arrivedNs = m_clock.nsecsElapsed();
+        markDirty();
+    });
+    refresh();
+}
+
+void FleetTileWidget::markDirty() {
+    if (m_dirty)
+        return;
+    m_dirty = true;
+    Q_EMIT dirtied();
+}
+
+bool FleetTileWidget::refresh() {
+    if (!m_dirty)
+        return false;
+    m_dirty = false;
+    model::FleetTileState state = m_tile->state();
+    if (state == m_shown) {
+        // Nothing to show for the readings that came: they are not late, they are the same.
+        m_arrivedNs = -1;
+        return false;
+    }
+    m_shown = std::move(state);
+    // A tile out of sight is not drawn: its readings would count as late when it reappears.
+    m_repaintDueNs = isVisible() ? m_arrivedNs : -1;
+    m_arrivedNs = -1;
+    // Laid out once per change; paints between changes (exposures, scrolling) reuse it.
+    const qsizetype before = m_lines.size();
+    m_lines = layoutLines();
+    setAccessibleName(m_shown.deviceName);
+    if (m_lines.size() != before)
+        updateGeometry();
+    update();
+    return true;
+}
+
+// The tool goes last: a long tool name ("T245/T470 (TR245/TR470)") is what the elision cuts, never
+// the temperatures.
+QString FleetTileWidget::portLine(const model::FleetPortState &port) const {
+    QString text = tr("P%1  %2 / %3  %4  %5")
+                       .arg(port.number)
+                       .arg(port.tipText, port.setpointText, port.powerText, port.statusText);
+    if (port.lastJoint)
+        text += tr("  · joint %1").arg(model::JointTableModel::verdictText(*port.lastJoint));
+    return text + QStringLiteral("  ") + port.toolText;
+}
+
+QList<FleetTileWidget::Line> FleetTileWidget::layoutLines() const {
+    const model::FleetTileState &s = m_shown;
+    QList<Line> lines;
+    lines.append({s.deviceName, Level::Unknown, true});
+    QStringList where = {s.lineName};
+    if (!s.cell.isEmpty())
+        where.append(s.cell);
+    where.append(s.model);
+    lines.append({where.join(QStringLiteral(" · ")), Level::Unknown, false});
+    if (!s.lineUp)
+        lines.append({s.lineText, Level::Unknown, true});
+    for (const model::FleetPortState &port : s.ports)
+        lines.append({portLine(port), Level::Unknown, false});
+    if (!s.feederText.isEmpty())
+        lines.append({s.feederText, Level::Unknown, false});
+    for (const model::FleetProblem &problem : s.problems)
+        lines.append({problem.text, problem.level, false});
+    if (s.lastJoint)
+        lines.append({tr("Last joint: %1 (port %2)")
+                          .arg(model::JointTableModel::verdictText(*s.lastJoint))
+                          .arg(s.lastJointPort),
+                      model::jointLevel(*s.lastJoint), false});
+    return lines;
+}
+
+QStringList FleetTileWidget::lines() const {
+    QStringList texts;
+    for (const Line &line : m_lines)
+        texts.append(line.text);
+    return texts;
+}
+
+int FleetTileWidget::lineHeight() const {
+    return fontMetrics().height() + kLineGap;
+}
+
+QSize FleetTileWidget::sizeHint() const {
+    return {fontMetrics().averageCharWidth() * kWidthInChars + 2 * kMargin,
+            qMax(int(m_lines.size()), 2) * lineHeight() + 2 * kMargin};
+}
+
+void FleetTileWidget::paintEvent(QPaintEvent *) {
+    if (m_repaintDueNs >= 0) {
+        Q_EMIT latencyMeasured(double(m_clock.nsecsElapsed() - m_repaintDueNs) / 1e6);
+        m_repaintDueNs = -1;
+    }
+    QPainter painter(this);
+    const bool stale = !m_shown.lineUp;
+    const QPalette::ColorGroup group = stale ? QPalette::Disabled : QPalette::Active;
+    const QRect frame = rect().adjusted(1, 1, -1, -1);
+    painter.fillRect(frame, palette().color(group, stale ? QPalette::Window : QPalette::Base));
+    if (const QVariant tint = levelTint(m_shown.worst()); tint.isValid() && !stale)
+        painter.fillRect(frame, tint.value<QColor>());
+    painter.setPen(
+        QPen(palette().color(group, hasFocus() ? QPalette::Highlight : QPalette::Mid), kBorder));
+    painter.drawRect(frame);
+    painter.setPen(palette().color(group, QPalette::Text));
+    const int height = lineHeight();
+    const int iconSize = fontMetrics().height();
+    int y = kMargin;
+    for (const Line &line : std::as_const(m_lines)) {
+        QFont font = this->font();
+        font.setBold(line.bold);
+        painter.setFont(font);
+        int x = kMargin;
+        if (line.level != Level::Unknown) {
+            levelIcon(line.level)
+                .paint(&painter, QRect(x, y, iconSize, iconSize), Qt::AlignCenter,
+                       stale ? QIcon::Disabled : QIcon::Normal);
+            x += iconSize + kLineGap * 2;
+        }
+        const int width = this->width() - kMargin - x;
+        painter.drawText(QRect(x, y, width, height), Qt::AlignLeft | Qt::AlignVCenter,
+                         QFontMetrics(font).elidedText(line.text, Qt::ElideRight, width));
+        y += height;
+    }
+}
+
+void FleetTileWidget::mouseReleaseEvent(QMouseEvent *event) {
+    if (event->button() == Qt::LeftButton && rect().contains(event->position().toPoint()))
+        Q_EMIT activated();
+    QWidget::mouseReleaseEvent(event);
+}
+
+void FleetTileWidget::keyPressEvent(QKeyEvent *event) {
+    if (event->key() == Qt::Key_Return || event->key() == Qt::Key_Enter ||
+        event->key() == Qt::Key_Space) {
+        Q_EMIT activated();
+        return;
+    }
+    QWidget::keyPressEvent(event);
+}
+
+void FleetTileWidget::hideEvent(QHideEvent *event) {
+    m_arrivedNs = -1;
+    m_repaintDueNs = -1;
+    QWidget::hideEvent(event);
+}
+
+} // namespace tipscope::gui

@@ -1,0 +1,73 @@
+// FleetTileWidget: one device of the fleet overview, drawn from a model::FleetTile: its name, its
+// line, cell and model, a row per port (tool, tip temperature against setpoint, power, status,
+// the port's last joint), the feeder's state, the errors and alarms each with its level's icon,
+// the last joint's verdict, and the line down with since when.
+//
+// The tile is tinted by its worst level (levelstyle); while its line is down it is greyed and
+// says since when, so nothing on it reads as current. It repaints only when refresh() finds its
+// state changed since it was last drawn; refresh() is the owner's to call at a bounded rate,
+// whatever the rate of the readings. Every tip reading that arrives is stamped; the first
+// repaint after it reports how late it was (latencyMeasured(), in ms), and a reading that changes
+// nothing shown is dropped from the measure. A click, Enter or Space is activated().
+#pragma once
+
+#include "model/workspace/fleettile.h"
+
+#include <QElapsedTimer>
+#include <QWidget>
+
+namespace tipscope::gui {
+
+class FleetTileWidget : public QWidget {
+    Q_OBJECT
+public:
+    // Takes ownership of `tile`.
+    FleetTileWidget(model::FleetTile *tile, QWidget *parent = nullptr);
+
+    [[nodiscard]] model::FleetTile &tile() const { return *m_tile; }
+    // The state as last drawn (or about to be).
+    [[nodiscard]] const model::FleetTileState &shown() const { return m_shown; }
+    // Whether a reading or a change arrived since the last refresh().
+    [[nodiscard]] bool isDirty() const { return m_dirty; }
+    // Takes the tile's state if it may have changed; true (and a repaint scheduled) when it did.
+    bool refresh();
+    // The lines the tile draws, top to bottom, as text (for tests and screen readers).
+    [[nodiscard]] QStringList lines() const;
+
+    [[nodiscard]] QSize sizeHint() const override;
+    [[nodiscard]] QSize minimumSizeHint() const override { return sizeHint(); }
+
+Q_SIGNALS:
+    // Something may have changed: the owner should refresh() soon.
+    void dirtied();
+    void activated();
+    void latencyMeasured(double ms);
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
+private:
+    struct Line {
+        QString text;
+        model::Level level = model::Level::Unknown; // an icon for problems, none otherwise
+        bool bold = false;
+    };
+
+    void markDirty();
+    [[nodiscard]] QList<Line> layoutLines() const;
+    [[nodiscard]] QString portLine(const model::FleetPortState &port) const;
+    [[nodiscard]] int lineHeight() const;
+
+    model::FleetTile *m_tile;
+    model::FleetTileState m_shown;
+    bool m_dirty = true;
+    QElapsedTimer m_clock;
+    qint64 m_arrivedNs = -1;    // the oldest reading not yet shown
+    qint64 m_repaintDueNs = -1; // its stamp, once a repaint is scheduled for it
+    QList<Line> m_lines;        // what m_shown draws
+};
+
+} // namespace tipscope::gui
