@@ -4,6 +4,7 @@
 #include "fleetday.h"
 
 #include "model/workspace/workspace.h"
+#include "pages/fleet/fleetpage.h"
 #include "ptyfixtures.h"
 
 #include <QElapsedTimer>
@@ -169,7 +170,12 @@ int runFleetLiveBench(const QStringList &args) {
     }
     printFigure(QStringLiteral("fleet.connect_s"), double(connecting.elapsed()) / 1000,
                 QStringLiteral("s"));
+    gui::FleetPage page(workspace);
+    page.resize(1920, 1080); // a wall display
+    page.show();
     waitMs(kWarmupMs);
+    printFigure(QStringLiteral("fleet.tiles"), page.tileCount(), QStringLiteral("tiles"), 0);
+    page.clearTileLatencies();
 
     const Snapshot before = snapshot(workspace, sims);
     QElapsedTimer wall;
@@ -177,6 +183,7 @@ int runFleetLiveBench(const QStringList &args) {
     waitMs(int(minutes * 60000));
     const Snapshot after = snapshot(workspace, sims);
     const double seconds = double(wall.elapsed()) / 1000;
+    const std::vector<double> latencies = page.tileLatenciesMs();
 
     printFigure(QStringLiteral("fleet.seconds"), seconds, QStringLiteral("s"));
     printFigure(QStringLiteral("fleet.gui_cpu_percent"),
@@ -195,6 +202,13 @@ int runFleetLiveBench(const QStringList &args) {
         printFigure(QStringLiteral("fleet.%1_hz").arg(fleetChannelName(int(c))), rates[c],
                     QStringLiteral("Hz"), 2);
     }
+    const QList<double> late(latencies.begin(), latencies.end());
+    printFigure(QStringLiteral("fleet.tile_repaints"), double(late.size()),
+                QStringLiteral("repaints"), 0);
+    printFigure(QStringLiteral("fleet.tile_latency_ms_p50"), quantile(late, 0.5),
+                QStringLiteral("ms"));
+    printFigure(QStringLiteral("fleet.tile_latency_ms_p99"), quantile(late, 0.99),
+                QStringLiteral("ms"));
     printFigure(QStringLiteral("fleet.rss_mb"), double(selfStatusBytes("VmRSS:")) / (1 << 20),
                 QStringLiteral("MB"));
     workspace.close();

@@ -16,6 +16,7 @@
 //   fleet.tx_per_s, fleet.wire_limit_tx_per_s   both summed over the lines
 //   fleet.rate_ratio             the two sums' ratio (target >= 0.95)
 //   fleet.cpu_us_per_tx          the process's CPU time per transaction
+//   fleet.tiles, fleet.tile_repaints   the page's tiles, and its repaints during the run
 //   fleet.tile_latency_ms_p50/_p99  a sample's arrival to its tile repainted (target p99 < 250)
 //   fleet.port<N>_hz, fleet.feeder_hz  samples a second of a station's channel, averaged
 // and then, at those rates, the memory of a day of the fleet (printDayMemory(), fleetday.h):
