@@ -1,11 +1,12 @@
 // runFleetLiveBench: a fleet of simulated lines in one workspace, for `tipscope-bench fleet`.
 //
 // Starts --stations (default 32) `tipscope-sim --tcp 127.0.0.1:0 --pace 19200 --activity`
-// processes (a DME each, its wire paced like a 19200-baud line, its ports soldering and resting
-// as in the demo), opens them all as TCP lines in one model::Workspace, shows the fleet overview
-// on the offscreen platform, lets discovery and the first readings pass, then measures for
-// --minutes (default 10; fractions such as 0.5 allowed). --by-intervals turns each line's
-// filling of its wire off, to compare with polling by the intervals alone. Prints:
+// processes, detached (a DME and a feeder each, the wire paced like a 19200-baud line, the ports
+// soldering and resting as in the demo), opens them all as TCP lines in one model::Workspace,
+// shows the fleet overview on the offscreen platform, lets discovery and the first readings
+// pass, then measures for --minutes (default 10; fractions such as 0.5 allowed). --by-intervals
+// turns each line's filling of its wire off, to compare with polling by the intervals alone.
+// Prints:
 //   fleet.gui_cpu_percent        this whole process's user + system CPU over the run, % of one
 //                                core (target < 5)
 //   fleet.sim_cpu_percent        the simulators' together, for context: they share the machine
