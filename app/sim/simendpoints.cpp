@@ -158,6 +158,10 @@ void TcpEndpoint::onNewConnection() {
         m_client->deleteLater();
     m_client = next;
     m_client->setReadBufferSize(kMaxUnreadBytes);
+    // A paced answer leaves a byte at a time. With Nagle's algorithm each byte after the first
+    // would wait for the client's delayed acknowledgement (up to 40 ms on Linux), a wait no
+    // serial wire has: a line of 71 transactions a second carried 20.
+    m_client->setSocketOption(QAbstractSocket::LowDelayOption, 1);
     m_line.clearWire();
     connect(m_client, &QTcpSocket::readyRead, this, [this, next] {
         if (next == m_client)

@@ -10,8 +10,10 @@
 namespace tipscope::link {
 
 struct LinkStats {
-    qint64 sent = 0;     // frames written, retries included
-    qint64 answered = 0; // requests that ended with a valid A or N answer
+    qint64 sent = 0;          // frames written, retries included
+    qint64 sentBytes = 0;     // their bytes: with receivedBytes, how busy the wire was
+    qint64 receivedBytes = 0; // every byte received, inside frames or not
+    qint64 answered = 0;      // requests that ended with a valid A or N answer
     qint64 timeouts = 0;
     qint64 probesUnanswered = 0; // discovery probes to empty addresses: expected silence
     qint64 corrupted = 0;        // BCC or format errors in received data

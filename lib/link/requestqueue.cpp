@@ -152,6 +152,7 @@ void RequestQueue::transmit() {
     if (e.attempts == 1)
         e.firstSentUs = e.lastSentUs;
     ++m_stats.sent;
+    m_stats.sentBytes += bytes.size();
     m_bytesToConfirm = bytes.size();
     m_state = State::Writing;
     m_timer.start(kWriteWatchdogMs + int(2 * wireMs(int(bytes.size()))));
@@ -185,6 +186,7 @@ bool RequestQueue::matches(const Entry &e, const Frame &a) const {
 }
 
 void RequestQueue::onReceived(const QByteArray &bytes) {
+    m_stats.receivedBytes += bytes.size();
     m_tap.rx(bytes);
     qCDebug(lcLinkHex).noquote() << "RX" << bytes.toHex(' ');
     for (const DecodeEvent &ev : m_decoder.feed(bytes)) {

@@ -141,6 +141,28 @@ void PollScheduler::setAdaptive(bool on) {
         pump();
 }
 
+void PollScheduler::setFillWire(bool on) {
+    m_fillWire = on;
+    if (m_running)
+        pump();
+}
+
+PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
+    Item *best = nullptr;
+    double bestShare = -1;
+    for (Item &i : m_items) {
+        if (i.inFlight || !i.parameter || i.pollClass != PollClass::Live || i.dueMs >= kNever)
+            continue;
+        const int iv = effectiveInterval(i);
+        const double share = iv > 0 ? double(now - i.polledMs) / iv : 0;
+        if (iv > 0 && share > bestShare) {
+            best = &i;
+            bestShare = share;
+        }
+    }
+    return best;
+}
+
 const Parameter *PollScheduler::portParameter(DeviceModel *device, int port,
                                               protocol::Role role) const {
     for (const Item &i : m_items)
@@ -224,12 +246,18 @@ void PollScheduler::pump() {
             if (earlier)
                 best = &i;
         }
+        // An early read goes behind every poll waiting in the queue: were it a live poll, a
+        // waiting setting (a background poll) would never be sent, as early reads never end.
+        const bool early = !best && m_fillWire;
+        if (early)
+            best = furthestAlong(now);
         if (!best)
             break;
         ++m_slot;
         const PollClass c = best->pollClass;
-        const Priority prio = c == PollClass::Live || c == PollClass::Status ? Priority::LivePoll
-                                                                             : Priority::Background;
+        const Priority prio = !early && (c == PollClass::Live || c == PollClass::Status)
+                                  ? Priority::LivePoll
+                                  : Priority::Background;
         Reply *reply = best->parameter->refresh(prio);
         if (!reply) {
             best->dueMs = kNever;

@@ -25,6 +25,13 @@
 // the wire is full, the due live value longest overdue for its own interval goes first, so each
 // gets the wire in proportion to its rate: a recovery is sampled finely while the resting ports
 // keep their turns. Off, every value keeps its class's interval and the earliest due goes first.
+//
+// Filling the wire (setFillWire(), off by default; a Workspace turns it on) polls a line at the
+// rate its wire carries rather than at its intervals: when a slot is free and nothing is due, it
+// goes to the live value furthest along its own interval, so every live value is read as often
+// as the wire allows, each in proportion to its rate (a resting port's tip still twice as often
+// as its live interval says relative to its power, and so on). Only live values are read early:
+// errors, settings, counters and identity keep their intervals.
 #pragma once
 
 #include "parameter.h"
@@ -59,6 +66,8 @@ public:
     void requestRefresh(DeviceModel *device, PollClass pollClass);
     void setMaxInFlight(int n) { m_maxInFlight = qMax(1, n); }
     void setAdaptive(bool on);
+    void setFillWire(bool on);
+    [[nodiscard]] bool fillsWire() const { return m_fillWire; }
     [[nodiscard]] bool isAdaptive() const { return m_adaptive; }
     // Whether the port's last readings say it is in a joint (the adaptive rule above).
     [[nodiscard]] bool isBusy(DeviceModel *device, int port) const;
@@ -95,6 +104,8 @@ private:
     // The order among due live values, lowest first: their due time; adaptive, how long they
     // are overdue for their interval.
     [[nodiscard]] double urgency(const Item &item, qint64 now) const;
+    // Filling the wire: the live value furthest along its interval, not yet due; null if none.
+    [[nodiscard]] Item *furthestAlong(qint64 now);
     [[nodiscard]] const Parameter *portParameter(DeviceModel *device, int port,
                                                  protocol::Role role) const;
     // After a reading: a port that has just turned busy gets its tip and power due now.
@@ -110,6 +121,7 @@ private:
     int m_slot = 0;
     bool m_running = false;
     bool m_adaptive = true;
+    bool m_fillWire = false;
     QSet<QPair<DeviceModel *, int>> m_busy;
     qint64 m_holdUntilMs = 0;
     qint64 m_done = 0;

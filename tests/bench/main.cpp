@@ -7,6 +7,7 @@
 #include "benchsupport.h"
 #include "chartbench.h"
 #include "fleetbench.h"
+#include "fleetlivebench.h"
 #include "jointbench.h"
 #include "journalbench.h"
 #include "linkbench.h"
@@ -51,6 +52,10 @@ const Subcommand kSubcommands[] = {
      "a day of 32 stations' telemetry at the demo's rates: tiered and single-tier memory "
      "(--seconds N, --hz R, --stations S, --hours H)",
      tipscope::bench::runFleetBench},
+    {"fleet",
+     "32 paced simulators in one workspace with the fleet overview shown: GUI CPU, transactions "
+     "against the wire limit, tile latency, a day's memory (--stations N, --minutes M)",
+     tipscope::bench::runFleetLiveBench, true},
 };
 
 void printUsage(QTextStream &s) {

@@ -184,15 +184,19 @@ void TestLinkStats::theSummaryNamesEveryFigure() {
 void TestLinkStats::aQueueCountsWhatHappenedOnTheWire() {
     ScriptedQueue line(1, 20);
     // ST1 is answered, MAT refused (NAK 5), TT1 answered only on its second attempt, SMN never.
-    line.transport.setResponder([](const Frame &request, int attempt) -> QByteArray {
+    qint64 answerBytes = 0;
+    line.transport.setResponder([&answerBytes](const Frame &request, int attempt) -> QByteArray {
+        QByteArray answer;
         if (request.command == "MAT")
-            return nakTo(request, 5).encode();
-        if (request.command == "TT1" && attempt == 1)
-            return {};
-        if (request.command == "SMN")
-            return {};
-        return answerTo(request, "00350").encode();
+            answer = nakTo(request, 5).encode();
+        else if (!(request.command == "TT1" && attempt == 1) && request.command != "SMN")
+            answer = answerTo(request, "00350").encode();
+        answerBytes += answer.size();
+        return answer;
     });
+    qint64 writtenBytes = 0;
+    connect(&line.transport, &tipscope::test::ScriptedTransport::written, this,
+            [&writtenBytes](const QByteArray &bytes) { writtenBytes += bytes.size(); });
     QObject owner;
     QList<Reply *> replies;
     for (const QByteArray command : {"ST1", "MAT", "TT1", "SMN"})
@@ -202,7 +206,11 @@ void TestLinkStats::aQueueCountsWhatHappenedOnTheWire() {
         kWaitMs);
 
     const LinkStats &s = line.queue.stats();
-    QCOMPARE(s.sent, 6);     // ST1, MAT, TT1 twice, SMN twice
+    QCOMPARE(s.sent, 6); // ST1, MAT, TT1 twice, SMN twice
+    QVERIFY(writtenBytes > 6 * 5);
+    QCOMPARE(s.sentBytes, writtenBytes);
+    QVERIFY(answerBytes > 3 * 5);
+    QCOMPARE(s.receivedBytes, answerBytes);
     QCOMPARE(s.answered, 3); // ST1, the NAK, TT1
     QCOMPARE(s.timeouts, 3); // TT1 once, SMN twice
     QCOMPARE(s.retries, 2);  // TT1 and SMN once each

@@ -3,6 +3,8 @@
 
 #include "model/pollscheduler.h"
 
+#include <algorithm>
+
 using namespace tipscope;
 using namespace tipscope::model;
 using namespace tipscope::testing;
@@ -31,6 +33,8 @@ private Q_SLOTS:
     void aClosedLinePausesPollingInsteadOfSpinning();
     void aPortInAJointHasItsLiveValuesPolledMoreOften_data();
     void aPortInAJointHasItsLiveValuesPolledMoreOften();
+    void fillingTheWireKeepsItBusyWithLiveValuesOnly_data();
+    void fillingTheWireKeepsItBusyWithLiveValuesOnly();
 };
 
 void TestScheduler::visiblePortsUpdateFasterThanHiddenOnes() {
@@ -143,6 +147,57 @@ void TestScheduler::aPortInAJointHasItsLiveValuesPolledMoreOften() {
         QVERIFY2(2 * busyTip.size() < 3 * restingTip.size(), qPrintable(counts));
         QVERIFY2(2 * busyPower.size() < 3 * restingPower.size(), qPrintable(counts));
     }
+}
+
+void TestScheduler::fillingTheWireKeepsItBusyWithLiveValuesOnly_data() {
+    QTest::addColumn<bool>("fill");
+    QTest::newRow("filling the wire") << true;
+    QTest::newRow("by the intervals") << false;
+}
+
+// Live and status values due only every 4 s on a wire paced at 19200 baud. Filling the wire, the
+// line spends most of its bytes' time reading live values early; settings, counters and identity,
+// read once at the start, are not read again. By the intervals alone, the wire mostly idles.
+void TestScheduler::fillingTheWireKeepsItBusyWithLiveValuesOnly() {
+    QFETCH(bool, fill);
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    PollScheduler s;
+    auto st = pacedStation(f, s, {1, 2, 3, 4});
+    s.setInterval(PollClass::Live, 4000);
+    s.setInterval(PollClass::Status, 4000);
+    s.setFillWire(fill);
+    QCOMPARE(s.fillsWire(), fill);
+    s.start();
+    // Every setting, counter and identity value is read once at the start; then the window.
+    std::vector<std::unique_ptr<QSignalSpy>> onceReads;
+    for (Parameter *p : st->parameters()) {
+        const PollClass c = p->isReadable() ? pollClassOf(p->meta()) : PollClass::None;
+        if (c == PollClass::Settings || c == PollClass::Counter || c == PollClass::Identity)
+            onceReads.push_back(std::make_unique<QSignalSpy>(p, &Parameter::updated));
+    }
+    QVERIFY(!onceReads.empty());
+    const auto readOnce = [&onceReads] {
+        return std::count_if(onceReads.begin(), onceReads.end(),
+                             [](const auto &spy) { return spy->size() == 1; });
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(readOnce(), std::ptrdiff_t(onceReads.size()), 30000);
+    const sim::SimLineStats before = f.simLine->stats();
+    QElapsedTimer window;
+    window.start();
+    QTest::qWait(2000);
+    const sim::SimLineStats after = f.simLine->stats();
+    const double wireBytes = double(window.elapsed()) / 1000 * 19200 / 10;
+    const double busy =
+        double(after.bytesSent + after.bytesReceived - before.bytesSent - before.bytesReceived) /
+        wireBytes;
+    const QString share = QStringLiteral("wire busy %1 of the time").arg(busy);
+    qInfo().noquote() << share;
+    if (fill)
+        QVERIFY2(busy > 0.5, qPrintable(share)); // the in-process pacing by timers leaves gaps
+    else
+        QVERIFY2(busy < 0.3, qPrintable(share));
+    for (const auto &spy : onceReads)
+        QCOMPARE(spy->size(), 1);
 }
 
 QTEST_GUILESS_MAIN(TestScheduler)

@@ -37,6 +37,7 @@ protocol::Outcome<void> Workspace::addLine(const WorkspaceLine &line) {
 
 void Workspace::startSession(int i) {
     auto session = std::make_unique<Session>();
+    session->scheduler().setFillWire(true);
     session->joints().setRules(limitsOf(i));
     Session *s = session.get();
     connect(s, &Session::stateChanged, this, [this, i](Session::State state, const QString &text) {

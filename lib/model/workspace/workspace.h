@@ -9,7 +9,9 @@
 // set of lines changed (open, addLine, close).
 //
 // A workspace watches a fleet: every port of every station is polled at the live interval, shown
-// or not, so each line's joints are found and its tiles are current.
+// or not, so each line's joints are found and its tiles are current. Each line's scheduler also
+// fills its wire (PollScheduler::setFillWire()): a line polls as fast as its own wire carries,
+// which costs no other line.
 #pragma once
 
 #include "model/workspace/workspacefile.h"

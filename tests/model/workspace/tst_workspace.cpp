@@ -78,6 +78,8 @@ void TestWorkspace::aDeadLineNeitherStopsTheOthersNorStaysDead() {
     QVERIFY(states.isValid());
     workspace.open(file);
     QCOMPARE(workspace.count(), 3);
+    for (int i = 0; i < workspace.count(); ++i)
+        QVERIFY(workspace.session(i)->scheduler().fillsWire());
     Session &a = *workspace.session(0), &b = *workspace.session(1), &tcp = *workspace.session(2);
     for (Session *s : {&a, &b, &tcp}) {
         QTRY_VERIFY_WITH_TIMEOUT(s->state() == Session::State::Connected && s->station(),

@@ -1,0 +1,33 @@
+// runFleetLiveBench: a fleet of simulated lines in one workspace, for `tipscope-bench fleet`.
+//
+// Starts --stations (default 32) `tipscope-sim --tcp 127.0.0.1:0 --pace 19200 --activity`
+// processes, detached (a DME and a feeder each, the wire paced like a 19200-baud line, the ports
+// soldering and resting as in the demo), opens them all as TCP lines in one model::Workspace,
+// shows the fleet overview on the offscreen platform, lets discovery and the first readings
+// pass, then measures for --minutes (default 10; fractions such as 0.5 allowed). --by-intervals
+// turns each line's filling of its wire off, to compare with polling by the intervals alone.
+// Prints:
+//   fleet.gui_cpu_percent        this whole process's user + system CPU over the run, % of one
+//                                core (target < 5)
+//   fleet.sim_cpu_percent        the simulators' together, for context: they share the machine
+//   fleet.lineNN_tx_per_s        answered transactions a second of each line
+//   fleet.lineNN_wire_limit_tx_per_s  what its paced wire carries: the pace's bytes a second
+//                                over the bytes of the line's own request and answer frames per
+//                                transaction (its link statistics)
+//   fleet.tx_per_s, fleet.wire_limit_tx_per_s   both summed over the lines
+//   fleet.rate_ratio             the two sums' ratio (target >= 0.95)
+//   fleet.cpu_us_per_tx          the process's CPU time per transaction
+//   fleet.tiles, fleet.tile_repaints   the page's tiles, and its repaints during the run
+//   fleet.tile_latency_ms_p50/_p99  a sample's arrival to its tile repainted (target p99 < 250)
+//   fleet.port<N>_hz, fleet.feeder_hz  samples a second of a station's channel, averaged
+// and then, at those rates, the memory of a day of the fleet (printDayMemory(), fleetday.h):
+// fleet.memory_mb_24h beside fleet.memory_mb_24h_single_tier. A benchmark: it asserts nothing.
+#pragma once
+
+#include <QStringList>
+
+namespace tipscope::bench {
+
+int runFleetLiveBench(const QStringList &args);
+
+} // namespace tipscope::bench
