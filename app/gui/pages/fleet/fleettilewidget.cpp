@@ -142,8 +142,10 @@ void FleetTileWidget::paintEvent(QPaintEvent *) {
         painter.setFont(font);
         int x = kMargin;
         if (line.level != Level::Unknown) {
-            levelIcon(line.level)
-                .paint(&painter, QRect(x, y, iconSize, iconSize), Qt::AlignCenter,
+            QIcon &icon = m_icons.at(size_t(line.level));
+            if (icon.isNull())
+                icon = levelIcon(line.level);
+            icon.paint(&painter, QRect(x, y, iconSize, iconSize), Qt::AlignCenter,
                        stale ? QIcon::Disabled : QIcon::Normal);
             x += iconSize + kLineGap * 2;
         }
