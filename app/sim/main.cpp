@@ -29,6 +29,7 @@ struct Options {
     int address = -1;
     SimFaults faults;
     int pace = 0;
+    int chunkMs = 0;
     bool robotModeOff = false;
     bool activity = false;
     int jointsPerMinute = 0;
@@ -93,6 +94,7 @@ std::unique_ptr<SimLine> buildLine(const Options &o) {
         die(QStringLiteral("--joints-per-minute needs a station; the model is SFR"));
     line->setFaults(o.faults);
     line->setBaud(o.pace);
+    line->setChunkMs(o.chunkMs);
     line->setDemoActivity(o.activity);
     line->setRandomJoints(o.jointsPerMinute, o.faults.seed);
     line->setClockRunning(true);
@@ -131,6 +133,11 @@ int main(int argc, char *argv[]) {
         {QStringLiteral("pace"),
          QStringLiteral("Pace both directions like a wire at BAUD (0: off)."),
          QStringLiteral("BAUD")},
+        {QStringLiteral("chunk"),
+         QStringLiteral("With --pace: hand an answer over every MS after its first byte, or "
+                        "whole once it is in, as a USB adapter's latency timer or a device "
+                        "server's packing does (0: a byte at a time)."),
+         QStringLiteral("MS")},
         {QStringLiteral("latency"), QStringLiteral("Answer turnaround in ms."),
          QStringLiteral("MS")},
         {QStringLiteral("drop"),
@@ -182,6 +189,7 @@ int main(int argc, char *argv[]) {
     o.noAddr = p.isSet(QStringLiteral("no-addr"));
     o.address = intOption(p, QStringLiteral("address"), -1, 1, 99);
     o.pace = intOption(p, QStringLiteral("pace"), 0, 0, 4'000'000);
+    o.chunkMs = intOption(p, QStringLiteral("chunk"), 0, 0, 1000);
     o.faults.latencyMs = intOption(p, QStringLiteral("latency"), 0, 0, 60'000);
     o.faults.dropShare = shareOption(p, QStringLiteral("drop"));
     o.faults.corruptShare = shareOption(p, QStringLiteral("corrupt"));

@@ -5,7 +5,9 @@
 // soldering and resting as in the demo), opens them all as TCP lines in one model::Workspace,
 // shows the fleet overview on the offscreen platform, lets discovery and the first readings
 // pass, then measures for --minutes (default 10; fractions such as 0.5 allowed). --by-intervals
-// turns each line's filling of its wire off, to compare with polling by the intervals alone.
+// turns each line's filling of its wire off, to compare with polling by the intervals alone;
+// --chunk-ms C has the simulators hand each answer over every C ms rather than a byte at a time
+// (tipscope-sim --chunk), as a USB adapter's latency timer or a device server's packing does.
 // Prints:
 //   fleet.gui_cpu_percent        this whole process's user + system CPU over the run, % of one
 //                                core (target < 5)

@@ -82,6 +82,7 @@ private Q_SLOTS:
     void sfrAnswersTheGuidesWorkedFrame();
     void ownPtyServesAPlainSerialClient();
     void tcpServesRawFrames();
+    void aChunkedPacedAnswerArrivesWhole();
     void tcpClientThatNeverReadsCostsABoundedBuffer();
     void pacedJunkDoesNotSilenceTheSimulator();
     void helpListsEveryCommandThePtySimulatorAccepts();
@@ -205,6 +206,31 @@ void TestSimSerial::tcpServesRawFrames() {
     socket.connectToHost(QStringLiteral("127.0.0.1"), quint16(where.section(':', 1).toInt()));
     QVERIFY(socket.waitForConnected(3000));
     runScript(socket, {{rd("SMN", std::nullopt), "AHDR-2C"}, {rd("ST2", std::nullopt), "N00004"}});
+}
+
+// --chunk: a paced answer is handed over once it is in, as a device server packs a frame, not a
+// byte at a time (a client wake-up a byte).
+void TestSimSerial::aChunkedPacedAnswerArrivesWhole() {
+    SimProcess sim;
+    QString error;
+    const QString where =
+        sim.start({QStringLiteral("--model"), QStringLiteral("HDR"), QStringLiteral("--tcp"),
+                   QStringLiteral("127.0.0.1:0"), QStringLiteral("--pace"), QStringLiteral("19200"),
+                   QStringLiteral("--chunk"), QStringLiteral("200")},
+                  &error);
+    QVERIFY2(where.startsWith(QStringLiteral("127.0.0.1:")), qPrintable(error + where));
+    QTcpSocket socket;
+    socket.connectToHost(QStringLiteral("127.0.0.1"), quint16(where.section(':', 1).toInt()));
+    QVERIFY(socket.waitForConnected(3000));
+    socket.write(rd("SMN", std::nullopt).encode());
+    QVERIFY(socket.waitForReadyRead(3000));
+    const QByteArray first = socket.readAll();
+    FrameDecoder decoder;
+    const auto events = decoder.feed(first);
+    QVERIFY2(events.size() == 1 && events.front().kind == DecodeEvent::Kind::Frame,
+             qPrintable(QString::fromLatin1(first.toHex(' '))));
+    QCOMPARE(events.front().frame.header, Header::Answer);
+    QCOMPARE(events.front().frame.data, QByteArray("HDR-2C"));
 }
 
 namespace {
