@@ -6,15 +6,23 @@ namespace tipscope::gui {
 
 LinkStatusLabel::LinkStatusLabel(model::Session &session, QWidget *parent)
     : QLabel(parent)
-    , m_session(session) {
+    , m_session(&session) {
     setAccessibleName(tr("Line statistics"));
     connect(&m_timer, &QTimer::timeout, this, &LinkStatusLabel::refresh);
     m_timer.start(500);
     refresh();
 }
 
+void LinkStatusLabel::setSession(model::Session *session) {
+    m_session = session;
+    setVisible(session != nullptr);
+    refresh();
+}
+
 void LinkStatusLabel::refresh() {
-    link::Line *line = m_session.line();
+    if (!m_session)
+        return;
+    link::Line *line = m_session->line();
     if (!line) {
         setText(tr("no line"));
         setToolTip({});

@@ -1,5 +1,6 @@
 // LinkStatusLabel: the status bar's line statistics (transactions per second, median latency,
-// timeouts, BCC errors, NAKs), refreshed twice a second, with the full breakdown as tooltip.
+// timeouts, BCC errors, NAKs), refreshed twice a second, with the full breakdown as tooltip. It
+// follows the line whose pages are shown (setSession()); with none (the fleet overview), hidden.
 #pragma once
 
 #include "model/session.h"
@@ -14,9 +15,11 @@ class LinkStatusLabel : public QLabel {
 public:
     explicit LinkStatusLabel(model::Session &session, QWidget *parent = nullptr);
     void refresh();
+    // The line to follow; the session must outlive it or be replaced first.
+    void setSession(model::Session *session);
 
 private:
-    model::Session &m_session;
+    model::Session *m_session;
     QTimer m_timer;
 };
 

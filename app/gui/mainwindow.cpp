@@ -232,6 +232,7 @@ void MainWindow::showPagesOf(LinePages &pages) {
     else if (!before && !m_frontBeforeFleet.isEmpty())
         pages.showPage(m_frontBeforeFleet);
     m_stack->setCurrentWidget(&pages);
+    m_linkStatus->setSession(&pages.session());
     m_barPages->setShown(&pages == m_barPages);
     for (const auto &[line, other] : m_linePages)
         other->setShown(other == &pages);
@@ -244,6 +245,7 @@ void MainWindow::showFleet() {
         if (const auto *front = qobject_cast<Page *>(before->currentWidget()))
             m_frontBeforeFleet = front->title();
     m_stack->setCurrentWidget(m_fleet);
+    m_linkStatus->setSession(nullptr); // many lines: the workspace's count says how they are
     m_barPages->setShown(false);
     for (const auto &[line, pages] : m_linePages)
         pages->setShown(false);

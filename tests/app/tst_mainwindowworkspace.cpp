@@ -3,6 +3,7 @@
 // the reason while the open workspace stays; the workspace saved, and reopened at the next start.
 #include "devicetree.h"
 #include "linepages.h"
+#include "linkstatuslabel.h"
 #include "mainwindow.h"
 #include "pages/fleet/fleetpage.h"
 #include "pages/fleet/fleettilewidget.h"
@@ -127,6 +128,9 @@ void TestMainWindowWorkspace::aWorkspaceOpensOnItsFleetAndATileOpensItsDevice() 
     QCOMPARE(w.shownPages(), &w.fleetPage());
     QCOMPARE(w.deviceTree().selectedLine(), DeviceTree::kFleet);
     QCOMPARE(w.deviceTree().topLevelItem(0)->text(0), QStringLiteral("Fleet overview"));
+    // Many lines shown: no one line's statistics in the status bar.
+    auto *statistics = w.findChild<LinkStatusLabel *>();
+    QVERIFY(statistics && !statistics->isVisible());
     waitForEveryLine(w);
     QTRY_COMPARE(w.fleetPage().tileCount(), 4);
     QCOMPARE(w.deviceTree().selectedLine(), DeviceTree::kFleet); // devices found: still the fleet
@@ -149,6 +153,9 @@ void TestMainWindowWorkspace::aWorkspaceOpensOnItsFleetAndATileOpensItsDevice() 
     QCOMPARE(w.linePages(1).selectedDevice(), second.station());
     QCOMPARE(qobject_cast<Page *>(w.linePages(1).currentWidget())->title(),
              QStringLiteral("Counters"));
+    // The statistics are those of the device's line (the connection bar's has none: "no line").
+    QVERIFY(statistics->isVisible());
+    QVERIFY2(statistics->text().contains(QStringLiteral("tx/s")), qPrintable(statistics->text()));
 }
 
 void TestMainWindowWorkspace::aWorkspaceThatCannotBeReadIsRefusedAndTheOpenOneStays() {
