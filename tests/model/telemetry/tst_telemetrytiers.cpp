@@ -162,8 +162,9 @@ void TestTelemetryTiers::chartColumnsLoseNoSpikeAndInventNone() {
         // sample of the window's whole buckets and nothing beyond a bucket after it.
         qint32 low = std::numeric_limits<qint32>::max();
         qint32 high = std::numeric_limits<qint32>::min();
-        for (const MinMaxBucket &b :
-             p.tiered.decimate({0}, t0, t1, kColumns, ColumnEdges::Blocks).at(0)) {
+        // Kept whole: a range-for over .at(0) of the temporary would read freed columns.
+        const auto columns = p.tiered.decimate({0}, t0, t1, kColumns, ColumnEdges::Blocks);
+        for (const MinMaxBucket &b : columns.at(0)) {
             low = qMin(low, b.min);
             high = qMax(high, b.max);
         }
