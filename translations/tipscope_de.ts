@@ -25,6 +25,185 @@
     </message>
 </context>
 <context>
+    <name>AgentConfig</name>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="37"/>
+        <source>%1 must be text</source>
+        <translation>%1 muss ein Text sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
+        <source>%1 must be a whole number from %2 to %3</source>
+        <translation>%1 muss eine ganze Zahl von %2 bis %3 sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="55"/>
+        <source>%1 must be true or false</source>
+        <translation>%1 muss true oder false sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="61"/>
+        <source>%1 must be an object</source>
+        <translation>%1 muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="79"/>
+        <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
+        <translation>keine Konfiguration des TipScope-Agenten (&quot;format&quot; ist nicht &quot;%1&quot;)</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="83"/>
+        <source>&quot;version&quot; must be a whole number from 1</source>
+        <translation>&quot;version&quot; muss eine ganze Zahl ab 1 sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="85"/>
+        <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
+        <translation>für ein neueres TipScope geschrieben (Version %1); dieses liest Version %2 und ältere</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="113"/>
+        <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
+        <translation>broker.protocol muss &quot;3.1.1&quot; oder &quot;5&quot; sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="125"/>
+        <source>broker.host must name the broker</source>
+        <translation>broker.host muss den Broker nennen</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="127"/>
+        <source>broker.password_file and broker.password_env: give one of them</source>
+        <translation>broker.password_file und broker.password_env: nur eines von beiden angeben</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="136"/>
+        <source>file %1</source>
+        <translation>Datei %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="142"/>
+        <source>environment variable %1</source>
+        <translation>Umgebungsvariable %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="166"/>
+        <source>site must name the site</source>
+        <translation>site muss den Standort nennen</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="168"/>
+        <source>workspace must name the workspace file of the lines to run</source>
+        <translation>workspace muss die Arbeitsbereichsdatei der zu betreibenden Linien nennen</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="189"/>
+        <source>cannot read the configuration %1: there is no such file</source>
+        <translation>die Konfiguration %1 kann nicht gelesen werden: diese Datei gibt es nicht</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="192"/>
+        <source>cannot read the configuration %1: %2</source>
+        <translation>die Konfiguration %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
+        <source>the configuration %1 is too big to be one</source>
+        <translation>die Konfiguration %1 ist zu groß, um eine zu sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="196"/>
+        <source>the configuration %1 is not a JSON object: %2</source>
+        <translation>die Konfiguration %1 ist kein JSON-Objekt: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <source>it is a list</source>
+        <translation>es ist eine Liste</translation>
+    </message>
+</context>
+<context>
+    <name>AgentMain</name>
+    <message>
+        <location filename="../app/agent/main.cpp" line="30"/>
+        <source>without a user name</source>
+        <translation>ohne Benutzernamen</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="32"/>
+        <source>as %1, without a password</source>
+        <translation>als %1, ohne Passwort</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="33"/>
+        <source>as %1, password from the %2</source>
+        <translation>als %1, Passwort aus %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/agent/main.cpp" line="37"/>
+        <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
+        <translation>
+            <numerusform>Standort %1, %n Linie (%2), Broker %3:%4%5 %6</numerusform>
+            <numerusform>Standort %1, %n Linien (%2), Broker %3:%4%5 %6</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="40"/>
+        <source> with TLS</source>
+        <translation> mit TLS</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="53"/>
+        <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
+        <translation>Betreibt die Linien eines Arbeitsbereichs ohne Bildschirm, hält ihre Lötstellen und Ereignisse im Journal fest und veröffentlicht sie an einen MQTT-Broker.</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="59"/>
+        <source>The agent&apos;s configuration (default %1).</source>
+        <translation>Die Konfiguration des Agenten (Vorgabe %1).</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="59"/>
+        <source>file</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="63"/>
+        <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
+        <translation>Liest die Konfiguration und ihren Arbeitsbereich, meldet Fehler und beendet sich.</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="68"/>
+        <source>unexpected argument %1</source>
+        <translation>unerwartetes Argument %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="83"/>
+        <source>%1 is good: %2</source>
+        <translation>%1 ist in Ordnung: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="94"/>
+        <source>configuration refused, the running one stays: %1</source>
+        <translation>Konfiguration abgelehnt, die laufende bleibt: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="98"/>
+        <source>reloading: %1</source>
+        <translation>neu laden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="102"/>
+        <source>tipscope-agent %1 starting: %2</source>
+        <translation>tipscope-agent %1 startet: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="106"/>
+        <source>stopped</source>
+        <translation>beendet</translation>
+    </message>
+</context>
+<context>
     <name>AppSettings</name>
     <message>
         <location filename="../lib/model/appsettings.cpp" line="116"/>
@@ -6345,22 +6524,22 @@ Zurücksetzen?</translation>
         <translation>Leitungsstatistik</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="19"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="27"/>
         <source>no line</source>
         <translation>keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="25"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="33"/>
         <source>%L1 tx/s · %L2 ms · %3 timeouts · %4 BCC errors · %5 NAKs</source>
         <translation>%L1 tx/s · %L2 ms · %3 Zeitüberschreitungen · %4 BCC-Fehler · %5 NAKs</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="33"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="41"/>
         <source>NAK %1 × %2: %3</source>
         <translation>NAK %1 × %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="38"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="46"/>
         <source>Reconnects: %1</source>
         <translation>Neuverbindungen: %1</translation>
     </message>
@@ -6428,12 +6607,12 @@ Zurücksetzen?</translation>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="255"/>
+        <location filename="../app/gui/mainwindow.cpp" line="257"/>
         <source>new workspace</source>
         <translation>neuer Arbeitsbereich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="257"/>
+        <location filename="../app/gui/mainwindow.cpp" line="259"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n Linie)</numerusform>
@@ -6441,28 +6620,28 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="260"/>
+        <location filename="../app/gui/mainwindow.cpp" line="262"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="265"/>
+        <location filename="../app/gui/mainwindow.cpp" line="267"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="270"/>
+        <location filename="../app/gui/mainwindow.cpp" line="272"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="280"/>
-        <location filename="../app/gui/mainwindow.cpp" line="283"/>
+        <location filename="../app/gui/mainwindow.cpp" line="282"/>
+        <location filename="../app/gui/mainwindow.cpp" line="285"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="284"/>
+        <location filename="../app/gui/mainwindow.cpp" line="286"/>
         <source>Written:
 %1
 
@@ -6473,12 +6652,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="292"/>
+        <location filename="../app/gui/mainwindow.cpp" line="294"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="293"/>
+        <location filename="../app/gui/mainwindow.cpp" line="295"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
@@ -7531,37 +7710,37 @@ Möchten Sie fortfahren?</translation>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="211"/>
+        <location filename="../lib/link/requestqueue.cpp" line="213"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="240"/>
+        <location filename="../lib/link/requestqueue.cpp" line="242"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="249"/>
+        <location filename="../lib/link/requestqueue.cpp" line="251"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="253"/>
+        <location filename="../lib/link/requestqueue.cpp" line="255"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="271"/>
+        <location filename="../lib/link/requestqueue.cpp" line="273"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="292"/>
+        <location filename="../lib/link/requestqueue.cpp" line="294"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <location filename="../lib/link/requestqueue.cpp" line="312"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -7569,7 +7748,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="313"/>
+        <location filename="../lib/link/requestqueue.cpp" line="315"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
@@ -7577,17 +7756,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="316"/>
+        <location filename="../lib/link/requestqueue.cpp" line="318"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="378"/>
+        <location filename="../lib/link/requestqueue.cpp" line="380"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="380"/>
+        <location filename="../lib/link/requestqueue.cpp" line="382"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>

@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>AgentMain</name>
+    <message numerus="yes">
+        <location filename="../app/agent/main.cpp" line="37"/>
+        <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
+        <translation>
+            <numerusform>site %1, %n line (%2), broker %3:%4%5 %6</numerusform>
+            <numerusform>site %1, %n lines (%2), broker %3:%4%5 %6</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>CliCommands</name>
     <message numerus="yes">
         <location filename="../app/cli/clicommands.cpp" line="52"/>
@@ -179,7 +190,7 @@
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="257"/>
+        <location filename="../app/gui/mainwindow.cpp" line="259"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n line)</numerusform>
@@ -255,7 +266,7 @@
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <location filename="../lib/link/requestqueue.cpp" line="312"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
@@ -263,7 +274,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="313"/>
+        <location filename="../lib/link/requestqueue.cpp" line="315"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>%n byte of garbage came instead</numerusform>

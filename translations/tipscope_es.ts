@@ -25,6 +25,185 @@
     </message>
 </context>
 <context>
+    <name>AgentConfig</name>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="37"/>
+        <source>%1 must be text</source>
+        <translation>%1 debe ser un texto</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
+        <source>%1 must be a whole number from %2 to %3</source>
+        <translation>%1 debe ser un número entero de %2 a %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="55"/>
+        <source>%1 must be true or false</source>
+        <translation>%1 debe ser true o false</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="61"/>
+        <source>%1 must be an object</source>
+        <translation>%1 debe ser un objeto</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="79"/>
+        <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
+        <translation>no es una configuración del agente de TipScope (&quot;format&quot; no es &quot;%1&quot;)</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="83"/>
+        <source>&quot;version&quot; must be a whole number from 1</source>
+        <translation>&quot;version&quot; debe ser un número entero desde 1</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="85"/>
+        <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
+        <translation>escrita para un TipScope más reciente (versión %1); este lee la versión %2 y anteriores</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="113"/>
+        <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
+        <translation>broker.protocol debe ser &quot;3.1.1&quot; o &quot;5&quot;</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="125"/>
+        <source>broker.host must name the broker</source>
+        <translation>broker.host debe indicar el broker</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="127"/>
+        <source>broker.password_file and broker.password_env: give one of them</source>
+        <translation>broker.password_file y broker.password_env: indique solo uno de los dos</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="136"/>
+        <source>file %1</source>
+        <translation>archivo %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="142"/>
+        <source>environment variable %1</source>
+        <translation>variable de entorno %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="166"/>
+        <source>site must name the site</source>
+        <translation>site debe indicar la planta</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="168"/>
+        <source>workspace must name the workspace file of the lines to run</source>
+        <translation>workspace debe indicar el archivo de espacio de trabajo de las líneas que se ejecutan</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="189"/>
+        <source>cannot read the configuration %1: there is no such file</source>
+        <translation>no se puede leer la configuración %1: no existe ese archivo</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="192"/>
+        <source>cannot read the configuration %1: %2</source>
+        <translation>no se puede leer la configuración %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
+        <source>the configuration %1 is too big to be one</source>
+        <translation>la configuración %1 es demasiado grande para serlo</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="196"/>
+        <source>the configuration %1 is not a JSON object: %2</source>
+        <translation>la configuración %1 no es un objeto JSON: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <source>it is a list</source>
+        <translation>es una lista</translation>
+    </message>
+</context>
+<context>
+    <name>AgentMain</name>
+    <message>
+        <location filename="../app/agent/main.cpp" line="30"/>
+        <source>without a user name</source>
+        <translation>sin nombre de usuario</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="32"/>
+        <source>as %1, without a password</source>
+        <translation>como %1, sin contraseña</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="33"/>
+        <source>as %1, password from the %2</source>
+        <translation>como %1, contraseña de %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/agent/main.cpp" line="37"/>
+        <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
+        <translation>
+            <numerusform>planta %1, %n línea (%2), broker %3:%4%5 %6</numerusform>
+            <numerusform>planta %1, %n líneas (%2), broker %3:%4%5 %6</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="40"/>
+        <source> with TLS</source>
+        <translation> con TLS</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="53"/>
+        <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
+        <translation>Ejecuta las líneas de un espacio de trabajo sin pantalla, guarda sus soldaduras y eventos en el diario y los publica en un broker MQTT.</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="59"/>
+        <source>The agent&apos;s configuration (default %1).</source>
+        <translation>La configuración del agente (por omisión %1).</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="59"/>
+        <source>file</source>
+        <translation>archivo</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="63"/>
+        <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
+        <translation>Lee la configuración y su espacio de trabajo, indica lo que está mal y termina.</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="68"/>
+        <source>unexpected argument %1</source>
+        <translation>argumento inesperado %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="83"/>
+        <source>%1 is good: %2</source>
+        <translation>%1 es correcta: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="94"/>
+        <source>configuration refused, the running one stays: %1</source>
+        <translation>configuración rechazada, se mantiene la actual: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="98"/>
+        <source>reloading: %1</source>
+        <translation>recargando: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="102"/>
+        <source>tipscope-agent %1 starting: %2</source>
+        <translation>tipscope-agent %1 arrancando: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="106"/>
+        <source>stopped</source>
+        <translation>detenido</translation>
+    </message>
+</context>
+<context>
     <name>AppSettings</name>
     <message>
         <location filename="../lib/model/appsettings.cpp" line="116"/>
@@ -6346,22 +6525,22 @@ Reset it?</source>
         <translation>Estadísticas de la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="19"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="27"/>
         <source>no line</source>
         <translation>sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="25"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="33"/>
         <source>%L1 tx/s · %L2 ms · %3 timeouts · %4 BCC errors · %5 NAKs</source>
         <translation>%L1 tx/s · %L2 ms · %3 tiempos agotados · %4 errores BCC · %5 NAK</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="33"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="41"/>
         <source>NAK %1 × %2: %3</source>
         <translation>NAK %1 × %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/linkstatuslabel.cpp" line="38"/>
+        <location filename="../app/gui/linkstatuslabel.cpp" line="46"/>
         <source>Reconnects: %1</source>
         <translation>Reconexiones: %1</translation>
     </message>
@@ -6429,12 +6608,12 @@ Reset it?</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="255"/>
+        <location filename="../app/gui/mainwindow.cpp" line="257"/>
         <source>new workspace</source>
         <translation>espacio de trabajo nuevo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="257"/>
+        <location filename="../app/gui/mainwindow.cpp" line="259"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n línea)</numerusform>
@@ -6442,28 +6621,28 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="260"/>
+        <location filename="../app/gui/mainwindow.cpp" line="262"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="265"/>
+        <location filename="../app/gui/mainwindow.cpp" line="267"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="270"/>
+        <location filename="../app/gui/mainwindow.cpp" line="272"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="280"/>
-        <location filename="../app/gui/mainwindow.cpp" line="283"/>
+        <location filename="../app/gui/mainwindow.cpp" line="282"/>
+        <location filename="../app/gui/mainwindow.cpp" line="285"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="284"/>
+        <location filename="../app/gui/mainwindow.cpp" line="286"/>
         <source>Written:
 %1
 
@@ -6474,12 +6653,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="292"/>
+        <location filename="../app/gui/mainwindow.cpp" line="294"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="293"/>
+        <location filename="../app/gui/mainwindow.cpp" line="295"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
@@ -7532,37 +7711,37 @@ Do you want to continue?</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="211"/>
+        <location filename="../lib/link/requestqueue.cpp" line="213"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="240"/>
+        <location filename="../lib/link/requestqueue.cpp" line="242"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="249"/>
+        <location filename="../lib/link/requestqueue.cpp" line="251"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="253"/>
+        <location filename="../lib/link/requestqueue.cpp" line="255"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="271"/>
+        <location filename="../lib/link/requestqueue.cpp" line="273"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="292"/>
+        <location filename="../lib/link/requestqueue.cpp" line="294"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="310"/>
+        <location filename="../lib/link/requestqueue.cpp" line="312"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -7570,7 +7749,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="313"/>
+        <location filename="../lib/link/requestqueue.cpp" line="315"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>en su lugar llegó %n byte de basura</numerusform>
@@ -7578,17 +7757,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="316"/>
+        <location filename="../lib/link/requestqueue.cpp" line="318"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="378"/>
+        <location filename="../lib/link/requestqueue.cpp" line="380"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="380"/>
+        <location filename="../lib/link/requestqueue.cpp" line="382"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>

@@ -101,7 +101,8 @@ bool MosquittoBroker::writeConfiguration(QString *error) {
     QStringList lines{
         QStringLiteral("listener %1 127.0.0.1").arg(m_port),
         QStringLiteral("user ") + currentUserName(),
-        QStringLiteral("persistence false"),
+        QStringLiteral("persistence %1").arg(m_options.persistence ? "true" : "false"),
+        QStringLiteral("persistence_location ") + m_dir.path() + QLatin1Char('/'),
         QStringLiteral("log_dest file ") + m_dir.filePath(QStringLiteral("mosquitto.log")),
         QStringLiteral("log_type all"),
         QStringLiteral("allow_anonymous %1").arg(m_options.users.isEmpty() ? "true" : "false")};

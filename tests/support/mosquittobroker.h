@@ -25,6 +25,9 @@ struct BrokerOptions {
     // Serve TLS with these certificates instead of plain MQTT.
     const TestCertificates *tls = nullptr;
     bool requireClientCertificate = false;
+    // Keep sessions, queued messages and retained ones across a stop() and start(), as a plant's
+    // broker does: a persistent subscriber then misses nothing published while it reconnects.
+    bool persistence = false;
 };
 
 class MosquittoBroker {

@@ -1,0 +1,46 @@
+// AgentConfig: what tipscope-agent (and `tipscope-cli monitor --mqtt`) is told to do, read from a
+// versioned JSON file (docs/mqtt.md, "The agent's configuration"):
+//     {"format": "tipscope-agent", "version": 1, "site": "plant-a", "workspace": "lines.json",
+//      "journal": "/var/lib/tipscope/journal.sqlite", "broker": {"host": "mqtt.plant", ...},
+//      "live": {"interval_ms": 1000, "batch_ms": 0}, "counters_interval_s": 600,
+//      "remote_apply": false}
+//
+// load() refuses a file that is not an agent configuration, one of a later version, a field of
+// the wrong kind or out of range (naming the field), a workspace that cannot be read, and a
+// password that cannot be read: everything is checked before anything connects, so SIGHUP with
+// a bad file keeps the running configuration. The password comes from a file or an environment
+// variable the configuration names, never from the file itself or a command line.
+#pragma once
+
+#include "model/workspace/workspacefile.h"
+#include "mqtt/mqttsettings.h"
+
+#include "protocol/outcome.h"
+
+namespace tipscope::plant {
+
+struct LiveSettings {
+    int intervalMs = 1000; // at most one message per port per interval
+    int batchMs = 0;       // > 0: the samples of this long go out together, as a list
+};
+
+struct AgentConfig {
+    static constexpr int kVersion = 1;
+
+    QString path; // the file read, for messages
+    QString site = QStringLiteral("site");
+    QString workspacePath;
+    model::WorkspaceFile workspace;
+    QString journalPath; // empty: the journal every TipScope program shares
+    mqtt::MqttSettings broker;
+    QString passwordSource; // "file /etc/tipscope/broker-password", for logs (never the value)
+    LiveSettings live;
+    int countersIntervalS = 600;
+    bool remoteApply = false;
+
+    [[nodiscard]] static protocol::Outcome<AgentConfig> fromJson(const QJsonObject &json,
+                                                                 const QString &folder);
+    [[nodiscard]] static protocol::Outcome<AgentConfig> load(const QString &path);
+};
+
+} // namespace tipscope::plant

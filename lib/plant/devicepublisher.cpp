@@ -1,0 +1,186 @@
+#include "devicepublisher.h"
+
+#include "model/devicemodel.h"
+#include "model/feedermodel.h"
+#include "model/stationmodel.h"
+#include "mqtt/mqttclient.h"
+
+#include <QDateTime>
+#include <QJsonDocument>
+
+namespace tipscope::plant {
+
+using protocol::Group;
+using protocol::Role;
+
+namespace {
+qint64 nowMs() {
+    return QDateTime::currentMSecsSinceEpoch();
+}
+} // namespace
+
+DevicePublisher::DevicePublisher(mqtt::MqttClient &shared, const AgentConfig &config,
+                                 const Publisher &who, model::DeviceModel &device,
+                                 DevicePlace place, QObject *parent)
+    : QObject(parent)
+    , m_shared(shared)
+    , m_config(config)
+    , m_who(who)
+    , m_device(&device)
+    , m_place(std::move(place))
+    , m_presence(std::make_unique<mqtt::MqttClient>()) {
+    mqtt::MqttSettings settings = config.broker;
+    settings.clientId = m_place.client;
+    settings.cleanSession = true; // it publishes only its status: nothing to keep
+    // The will's time is when the device came online: the last moment it is known to be up.
+    settings.will = {
+        m_place.root + QStringLiteral("/status"),
+        QJsonDocument(statusPayload(false, who, nowMs())).toJson(QJsonDocument::Compact), 1, true};
+    m_presence->setSettings(settings);
+    connect(m_presence.get(), &mqtt::MqttClient::connected, this, &DevicePublisher::publishStatus);
+    connect(m_presence.get(), &mqtt::MqttClient::published, this, [this](int id) {
+        if (id == m_offlineId && id != 0) {
+            m_offlineConfirmed = true;
+            Q_EMIT offline();
+        }
+    });
+    connect(&device, &model::DeviceModel::lineUpChanged, this, &DevicePublisher::publishStatus);
+    connect(&device, &model::DeviceModel::parameterChanged, this,
+            &DevicePublisher::onParameterChanged);
+    if (auto *station = qobject_cast<model::StationModel *>(&device)) {
+        for (model::PortModel *port : station->ports())
+            if (model::Parameter *tip = port->parameter(Role::TipTemperature))
+                connect(tip, &model::Parameter::updated, this,
+                        [this, n = port->number(), tip] { onReading(n, tip); });
+    } else if (auto *feeder = qobject_cast<model::FeederModel *>(&device)) {
+        if (model::Parameter *fed = feeder->parameter(Role::FedLength))
+            connect(fed, &model::Parameter::updated, this, [this, fed] { onReading(0, fed); });
+    }
+    m_countersTimer.setInterval(config.countersIntervalS * 1000);
+    connect(&m_countersTimer, &QTimer::timeout, this, &DevicePublisher::publishCounters);
+    m_countersTimer.start();
+    m_presence->start();
+    publishRetained();
+}
+
+DevicePublisher::~DevicePublisher() = default;
+
+void DevicePublisher::goOffline() {
+    if (m_presence->state() != mqtt::MqttClient::State::Connected) {
+        Q_EMIT offline();
+        return;
+    }
+    const auto sent = m_presence->publish(
+        m_place.root + QStringLiteral("/status"),
+        QJsonDocument(statusPayload(false, m_who, nowMs())).toJson(QJsonDocument::Compact), 1,
+        true);
+    m_offlineId = sent.messageId;
+    if (!sent.ok())
+        Q_EMIT offline();
+}
+
+void DevicePublisher::publishRetained() {
+    if (m_shared.state() != mqtt::MqttClient::State::Connected || !m_device)
+        return;
+    publishInfo();
+    publishCounters();
+    publishAlarms(true);
+}
+
+void DevicePublisher::publishStatus() {
+    if (!m_device || m_presence->state() != mqtt::MqttClient::State::Connected)
+        return;
+    (void)m_presence->publish(
+        m_place.root + QStringLiteral("/status"),
+        QJsonDocument(statusPayload(true, m_who, nowMs(), m_device->isLineUp()))
+            .toJson(QJsonDocument::Compact),
+        1, true);
+}
+
+void DevicePublisher::publishInfo() {
+    publish(QStringLiteral("info"), infoPayload(*m_device, m_place.line, m_place.name, nowMs()), 1,
+            true);
+}
+
+void DevicePublisher::publishCounters() {
+    if (!m_device)
+        return;
+    publish(QStringLiteral("counters"), countersPayload(*m_device, nowMs()), 1, true);
+}
+
+void DevicePublisher::publishAlarms(bool always) {
+    const QJsonArray alarms = activeAlarms(*m_device);
+    if (!always && m_alarmsPublished && alarms == m_alarms)
+        return;
+    m_alarms = alarms;
+    m_alarmsPublished = m_shared.state() == mqtt::MqttClient::State::Connected;
+    publish(QStringLiteral("alarms"), alarmsPayload(alarms, nowMs()), 1, true);
+}
+
+void DevicePublisher::onParameterChanged(model::Parameter *p) {
+    const protocol::CommandSpec &meta = p->meta();
+    if (meta.group == Group::Errors) {
+        publishAlarms(false);
+    } else if (meta.role == Role::ConnectedTool) {
+        publishInfo();
+    } else if (meta.group == Group::Counter && p->number()) {
+        const qint64 value = *p->number();
+        const auto before = m_counterValues.constFind(p->code());
+        const bool reset = before != m_counterValues.cend() && value < *before;
+        m_counterValues.insert(p->code(), value);
+        const bool complete = !m_countersComplete &&
+                              m_counterValues.size() == m_device->parameters(Group::Counter).size();
+        m_countersComplete = m_countersComplete || complete;
+        if (reset || complete)
+            publishCounters();
+    }
+}
+
+void DevicePublisher::onReading(int port, model::Parameter *timeSource) {
+    if (!m_device)
+        return;
+    const qint64 readMs = timeSource->lastUpdate().toMSecsSinceEpoch();
+    LiveSlot &slot = m_live[port];
+    const qint64 interval = m_config.live.intervalMs;
+    if (readMs < slot.dueMs)
+        return;
+    // Keeps the rate on average; after a pause (a lost line) it starts afresh.
+    slot.dueMs = readMs - slot.dueMs > interval ? readMs + interval : slot.dueMs + interval;
+    QJsonObject payload;
+    if (port == 0)
+        payload = feederLivePayload(*qobject_cast<model::FeederModel *>(m_device.data()), readMs);
+    else
+        payload = portLivePayload(*qobject_cast<model::StationModel *>(m_device.data())->port(port),
+                                  readMs);
+    if (m_config.live.batchMs <= 0)
+        return sendLive(port, payload);
+    if (slot.batch.isEmpty())
+        slot.batchStartMs = readMs;
+    slot.batch.append(payload);
+    if (readMs - slot.batchStartMs >= m_config.live.batchMs) {
+        sendLive(port, {{QStringLiteral("ts"), slot.batch.first()[QStringLiteral("ts")]},
+                        {QStringLiteral("samples"), slot.batch}});
+        slot.batch = {};
+    }
+}
+
+void DevicePublisher::sendLive(int port, const QJsonObject &payload) {
+    if (m_shared.state() != mqtt::MqttClient::State::Connected)
+        return; // live values are not kept for later: they are not backfilled
+    publish(liveTopic(port), payload, 0, false);
+    ++m_liveCount;
+}
+
+QString DevicePublisher::liveTopic(int port) const {
+    return port == 0 ? QStringLiteral("feeder/live") : QStringLiteral("port/%1/live").arg(port);
+}
+
+void DevicePublisher::publish(const QString &leaf, const QJsonObject &payload, int qos,
+                              bool retain) {
+    if (m_shared.state() != mqtt::MqttClient::State::Connected)
+        return; // sent again by publishRetained() once connected
+    (void)m_shared.publish(m_place.root + QLatin1Char('/') + leaf,
+                           QJsonDocument(payload).toJson(QJsonDocument::Compact), qos, retain);
+}
+
+} // namespace tipscope::plant

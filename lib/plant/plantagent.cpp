@@ -1,0 +1,130 @@
+#include "plantagent.h"
+
+#include "mqtt/mqttclient.h"
+
+#include <QLoggingCategory>
+
+Q_LOGGING_CATEGORY(lcAgent, "tipscope.agent")
+
+namespace tipscope::plant {
+
+namespace {
+// The demo line of a workspace plays a station at work, so joints come without hardware.
+model::WorkspaceFile withDemoActivity(model::WorkspaceFile file) {
+    for (model::WorkspaceLine &line : file.lines)
+        if (line.session.line.kind == link::LineSettings::Kind::Demo)
+            line.session.demoActivity = true;
+    return file;
+}
+} // namespace
+
+PlantAgent::PlantAgent(Publisher who, QObject *parent)
+    : QObject(parent)
+    , m_who(std::move(who)) {
+    connect(&m_workspace, &model::Workspace::linesChanged, this, &PlantAgent::keepLines);
+    connect(&m_workspace, &model::Workspace::lineStateChanged, this, &PlantAgent::onLineState);
+}
+
+PlantAgent::~PlantAgent() {
+    m_publisher.reset();
+    m_kept.clear();
+    m_workspace.close();
+}
+
+void PlantAgent::start(const AgentConfig &config) {
+    m_config = config;
+    m_journal = std::make_unique<journal::Journal>(config.journalPath);
+    qCInfo(lcAgent, "journal %s", qPrintable(m_journal->path()));
+    connect(m_journal.get(), &journal::Journal::stateChanged, this,
+            [this](journal::JournalState state) {
+                if (state == journal::JournalState::Failed)
+                    qCCritical(lcAgent, "the journal cannot be written: %s",
+                               qPrintable(m_journal->errorText()));
+                else if (state == journal::JournalState::Ready)
+                    qCInfo(lcAgent, "the journal is written");
+            });
+    connect(m_journal.get(), &journal::Journal::recordsLost, this,
+            [](qint64 total, const QString &reason) {
+                qCCritical(lcAgent, "%lld records lost: %s", total, qPrintable(reason));
+            });
+    m_publisher = std::make_unique<PlantPublisher>(m_workspace, *m_journal);
+    connect(m_publisher.get(), &PlantPublisher::stopped, this, [this] {
+        if (!m_stopping)
+            return;
+        if (!m_journal->flush(10000))
+            qCCritical(lcAgent, "the journal could not write everything before stopping");
+        Q_EMIT finished();
+    });
+    openLines();
+    m_publisher->start(m_config, m_who);
+    watchClient();
+}
+
+void PlantAgent::reload(const AgentConfig &config) {
+    if (config.journalPath != m_config.journalPath)
+        qCWarning(lcAgent, "the journal stays %s until the agent restarts",
+                  qPrintable(m_journal->path()));
+    const bool linesChanged =
+        config.workspace.toJson() != m_config.workspace.toJson() || config.site != m_config.site;
+    const QString journalPath = m_config.journalPath;
+    m_config = config;
+    m_config.journalPath = journalPath;
+    if (linesChanged)
+        openLines();
+    m_publisher->start(m_config, m_who);
+    watchClient();
+    qCInfo(lcAgent, "configuration %s applied%s", qPrintable(config.path),
+           linesChanged ? ", lines opened again" : "");
+}
+
+void PlantAgent::stop() {
+    if (m_stopping)
+        return;
+    m_stopping = true;
+    qCInfo(lcAgent, "stopping: every device goes offline");
+    m_publisher->stop();
+}
+
+void PlantAgent::openLines() {
+    m_kept.clear();
+    m_workspace.open(withDemoActivity(m_config.workspace));
+}
+
+// Every line of the workspace keeps its joints and events in the journal from its first moment.
+void PlantAgent::keepLines() {
+    m_kept.clear();
+    for (int i = 0; i < m_workspace.count(); ++i)
+        m_kept.push_back(
+            std::make_unique<journal::SessionJournal>(*m_workspace.session(i), *m_journal));
+}
+
+void PlantAgent::watchClient() {
+    mqtt::MqttClient *client = m_publisher->client();
+    const QString where =
+        QStringLiteral("%1:%2").arg(m_config.broker.host).arg(m_config.broker.port);
+    connect(client, &mqtt::MqttClient::connected, this,
+            [where] { qCInfo(lcAgent, "connected to the broker %s", qPrintable(where)); });
+    // The client itself logs each failed attempt; said here once, until it connects again.
+    connect(client, &mqtt::MqttClient::problemOccurred, this, [this] {
+        if (!std::exchange(m_brokerTrouble, true))
+            qCWarning(lcAgent, "the lines are polled and journaled meanwhile; joints and events "
+                               "are forwarded once the broker takes them");
+    });
+    connect(client, &mqtt::MqttClient::connected, this, [this] { m_brokerTrouble = false; });
+    connect(m_publisher->forwarder(), &JournalForwarder::problemChanged, this,
+            [](const QString &problem) {
+                if (!problem.isEmpty())
+                    qCWarning(lcAgent, "cannot read the journal to forward it: %s",
+                              qPrintable(problem));
+            });
+}
+
+void PlantAgent::onLineState(int index, model::Session::State state, const QString &text) {
+    const QString line = m_workspace.line(index).name;
+    if (state == model::Session::State::Connected)
+        qCInfo(lcAgent, "line %s: %s", qPrintable(line), qPrintable(text));
+    else if (state == model::Session::State::Retrying || state == model::Session::State::Failed)
+        qCWarning(lcAgent, "line %s: %s", qPrintable(line), qPrintable(text));
+}
+
+} // namespace tipscope::plant

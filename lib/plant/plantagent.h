@@ -1,0 +1,65 @@
+// PlantAgent: a line service without a screen, shared by tipscope-agent and `tipscope-cli monitor
+// --mqtt`. It opens the configuration's workspace (every line polled live, each with its own
+// request queue and reconnection), keeps each line's joints and events in the journal, and
+// publishes the lines to the broker (PlantPublisher) with store and forward from the journal.
+// The demo line of a workspace solders and rests, so the agent can be tried without a station.
+//
+// reload() applies a new configuration: the lines are opened again only when the workspace
+// changed, the broker clients are always made anew; the journal stays the one opened first (a
+// new path needs a restart, and reload() says so). stop() publishes every device offline, waits
+// for the journal to write what it holds, and emits finished(). What happens is said through the
+// logging category tipscope.agent (lines up and down, the broker connected or why not, the
+// backlog forwarded), for the program to print; the password never appears in it.
+#pragma once
+
+#include "agentconfig.h"
+#include "plantpublisher.h"
+
+#include "journal/journal.h"
+#include "journal/sessionjournal.h"
+#include "model/workspace/workspace.h"
+
+#include <QObject>
+#include <memory>
+#include <vector>
+
+namespace tipscope::plant {
+
+class PlantAgent : public QObject {
+    Q_OBJECT
+public:
+    // `who` names the program in every device's status.
+    explicit PlantAgent(Publisher who, QObject *parent = nullptr);
+    ~PlantAgent() override;
+
+    // Opens the journal and the lines and starts publishing. A journal that cannot be written
+    // is said, and holds its records in memory until it can (journal.h).
+    void start(const AgentConfig &config);
+    void reload(const AgentConfig &config);
+    void stop();
+
+    [[nodiscard]] model::Workspace &workspace() { return m_workspace; }
+    [[nodiscard]] journal::Journal *journal() const { return m_journal.get(); }
+    [[nodiscard]] PlantPublisher *publisher() const { return m_publisher.get(); }
+    [[nodiscard]] const AgentConfig &config() const { return m_config; }
+
+Q_SIGNALS:
+    void finished();
+
+private:
+    void openLines();
+    void keepLines();
+    void watchClient();
+    void onLineState(int index, model::Session::State state, const QString &text);
+
+    Publisher m_who;
+    AgentConfig m_config;
+    std::unique_ptr<journal::Journal> m_journal;
+    model::Workspace m_workspace;
+    std::vector<std::unique_ptr<journal::SessionJournal>> m_kept;
+    std::unique_ptr<PlantPublisher> m_publisher;
+    bool m_stopping = false;
+    bool m_brokerTrouble = false;
+};
+
+} // namespace tipscope::plant

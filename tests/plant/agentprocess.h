@@ -1,0 +1,37 @@
+// A tipscope-agent for tests: the built program run on a configuration written into a temporary
+// folder (a workspace of one TCP line, the broker of the test, a journal of its own), with what it
+// logs kept for failure messages. Stops with SIGTERM when destroyed, or is killed (SIGKILL).
+#pragma once
+
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+namespace tipscope::testing {
+
+class AgentProcess {
+public:
+    AgentProcess();
+    ~AgentProcess();
+
+    // The configuration: `broker` is merged into the defaults (127.0.0.1:port, keep-alive 5 s,
+    // retries at most a second apart); `extra` into the top level.
+    void configure(const QString &tcpLine, int brokerPort, const QJsonObject &broker = {},
+                   const QJsonObject &extra = {});
+    [[nodiscard]] bool start(QString *error);
+    // SIGTERM, then waits for the exit code.
+    [[nodiscard]] int stop();
+    void kill();
+
+    [[nodiscard]] QString folder() const { return m_dir.path(); }
+    [[nodiscard]] QString journalPath() const;
+    [[nodiscard]] QString log();
+    [[nodiscard]] QProcess &process() { return m_process; }
+
+private:
+    QTemporaryDir m_dir;
+    QProcess m_process;
+    QString m_log;
+};
+
+} // namespace tipscope::testing

@@ -1,0 +1,155 @@
+// The agent's configuration file: defaults, relative paths, the password from a file or the
+// environment (never from the file itself), and every refusal naming the field, checked before
+// anything connects.
+#include "plant/agentconfig.h"
+
+#include <QFile>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace tipscope::plant;
+
+namespace {
+void write(const QString &path, const QByteArray &text) {
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(text);
+}
+} // namespace
+
+class TestAgentConfig : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+    QString path(const QString &name) const { return m_dir.filePath(name); }
+
+    tipscope::protocol::Outcome<AgentConfig> load(const QByteArray &json) {
+        write(path(QStringLiteral("agent.json")), json);
+        return AgentConfig::load(path(QStringLiteral("agent.json")));
+    }
+
+private Q_SLOTS:
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        write(path(QStringLiteral("lines.json")),
+              R"({"format": "tipscope-workspace", "version": 1,
+                  "lines": [{"name": "demo", "connection": {"kind": "demo"}}]})");
+        write(path(QStringLiteral("secret")), "s3cret\n");
+    }
+
+    void aSmallFileGetsTheDefaults() {
+        const auto c = load(R"({"format": "tipscope-agent", "version": 1,
+                                "workspace": "lines.json"})");
+        QVERIFY2(c, qPrintable(c.error()));
+        QCOMPARE(c->site, QStringLiteral("site"));
+        QCOMPARE(c->workspacePath, path(QStringLiteral("lines.json")));
+        QCOMPARE(c->workspace.lines.size(), 1);
+        QCOMPARE(c->broker.host, QStringLiteral("localhost"));
+        QCOMPARE(c->broker.port, 1883);
+        QCOMPARE(c->live.intervalMs, 1000);
+        QCOMPARE(c->live.batchMs, 0);
+        QCOMPARE(c->countersIntervalS, 600);
+        QVERIFY(!c->remoteApply);
+        QVERIFY(c->journalPath.isEmpty());
+        QVERIFY(c->broker.password.isEmpty());
+    }
+
+    void everyFieldIsRead() {
+        const auto c = load(R"({"format": "tipscope-agent", "version": 1, "site": "Plant A",
+            "workspace": "lines.json", "journal": "data/journal.sqlite",
+            "broker": {"host": "mqtt.plant", "port": 8883, "client_id": "line-7",
+                       "keep_alive_s": 20, "retry_max_s": 10, "username": "line7",
+                       "password_file": "secret", "protocol": "5",
+                       "tls": {"ca_file": "ca.pem", "cert_file": "c.pem", "key_file": "k.pem"}},
+            "live": {"interval_ms": 250, "batch_ms": 5000}, "counters_interval_s": 60,
+            "remote_apply": true})");
+        QVERIFY2(c, qPrintable(c.error()));
+        QCOMPARE(c->site, QStringLiteral("Plant A"));
+        QCOMPARE(c->journalPath, path(QStringLiteral("data/journal.sqlite")));
+        QCOMPARE(c->broker.host, QStringLiteral("mqtt.plant"));
+        QCOMPARE(c->broker.port, 8883);
+        QCOMPARE(c->broker.clientId, QStringLiteral("line-7"));
+        QCOMPARE(c->broker.keepAliveSeconds, 20);
+        QCOMPARE(c->broker.retryMaxMs, 10000);
+        QCOMPARE(c->broker.username, QStringLiteral("line7"));
+        QCOMPARE(c->broker.password, QByteArray("s3cret"));
+        QVERIFY(!c->passwordSource.contains(QLatin1String("s3cret")));
+        QVERIFY(c->broker.protocol == tipscope::mqtt::MqttProtocol::V5);
+        QCOMPARE(c->broker.tls.caFile, path(QStringLiteral("ca.pem")));
+        QCOMPARE(c->live.intervalMs, 250);
+        QCOMPARE(c->live.batchMs, 5000);
+        QCOMPARE(c->countersIntervalS, 60);
+        QVERIFY(c->remoteApply);
+    }
+
+    void thePasswordMayComeFromTheEnvironment() {
+        qputenv("TIPSCOPE_TEST_BROKER_PASSWORD", "from-env");
+        const auto c = load(R"({"format": "tipscope-agent", "version": 1,
+            "workspace": "lines.json", "broker": {"username": "u",
+            "password_env": "TIPSCOPE_TEST_BROKER_PASSWORD"}})");
+        QVERIFY2(c, qPrintable(c.error()));
+        QCOMPARE(c->broker.password, QByteArray("from-env"));
+        qunsetenv("TIPSCOPE_TEST_BROKER_PASSWORD");
+        const auto unset = load(R"({"format": "tipscope-agent", "version": 1,
+            "workspace": "lines.json", "broker": {"password_env": "TIPSCOPE_TEST_BROKER_PASSWORD"}})");
+        QVERIFY(!unset);
+        QVERIFY2(unset.error().contains(QLatin1String("TIPSCOPE_TEST_BROKER_PASSWORD")),
+                 qPrintable(unset.error()));
+    }
+
+    void refusals_data() {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("named");
+        QTest::newRow("not an agent file")
+            << QByteArray(R"({"format": "tipscope-workspace", "version": 1})") << "format";
+        QTest::newRow("later version")
+            << QByteArray(
+                   R"({"format": "tipscope-agent", "version": 9, "workspace": "lines.json"})")
+            << "version 9";
+        QTest::newRow("no workspace")
+            << QByteArray(R"({"format": "tipscope-agent", "version": 1})") << "workspace";
+        QTest::newRow("missing workspace")
+            << QByteArray(R"({"format": "tipscope-agent", "version": 1, "workspace": "gone.json"})")
+            << "gone.json";
+        QTest::newRow("port out of range")
+            << QByteArray(R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json",
+                              "broker": {"port": 70000}})")
+            << "broker.port";
+        QTest::newRow("interval of the wrong kind")
+            << QByteArray(R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json",
+                              "live": {"interval_ms": "fast"}})")
+            << "live.interval_ms";
+        QTest::newRow("two password sources")
+            << QByteArray(R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json",
+                              "broker": {"password_file": "secret", "password_env": "X"}})")
+            << "password_env";
+        QTest::newRow("missing password file")
+            << QByteArray(R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json",
+                              "broker": {"password_file": "nothing-here"}})")
+            << "nothing-here";
+        QTest::newRow("unknown protocol")
+            << QByteArray(R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json",
+                              "broker": {"protocol": "4"}})")
+            << "broker.protocol";
+        QTest::newRow("remote apply not a flag")
+            << QByteArray(R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json",
+                              "remote_apply": "yes"})")
+            << "remote_apply";
+        QTest::newRow("a list") << QByteArray("[1, 2]") << "list";
+    }
+    void refusals() {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, named);
+        const auto c = load(json);
+        QVERIFY(!c);
+        QVERIFY2(c.error().contains(named), qPrintable(c.error()));
+        QVERIFY2(c.error().contains(path(QStringLiteral("agent.json"))) ||
+                     c.error().contains(QLatin1String("gone.json")),
+                 qPrintable(c.error()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAgentConfig)
+#include "tst_agentconfig.moc"

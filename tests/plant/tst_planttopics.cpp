@@ -1,0 +1,67 @@
+// Topic names of docs/mqtt.md: the device level from a name or from address and family, every
+// level lower-cased and made safe, and the way back from a topic to its site, line and device.
+#include "plant/planttopics.h"
+
+#include <QTest>
+
+using namespace tipscope::plant;
+
+class TestPlantTopics : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void deviceLevels_data() {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("address"); // -1: without addresses
+        QTest::addColumn<QString>("family");
+        QTest::addColumn<QString>("level");
+        QTest::newRow("station at 01") << "" << 1 << "DME"
+                                       << "01-dme";
+        QTest::newRow("feeder at 10") << "" << 10 << "SFR"
+                                      << "10-sfr";
+        QTest::newRow("without addresses") << "" << -1 << "DDR"
+                                           << "--ddr";
+        QTest::newRow("named") << "Rework A" << 1 << "DME"
+                               << "rework_a";
+        QTest::newRow("named with wildcards") << "Zelle #3/+" << 2 << "HDE"
+                                              << "zelle__3__";
+        QTest::newRow("umlaut") << "Lötplatz" << 2 << "HDE"
+                                << "l_tplatz";
+    }
+    void deviceLevels() {
+        QFETCH(QString, name);
+        QFETCH(int, address);
+        QFETCH(QString, family);
+        QFETCH(QString, level);
+        QCOMPARE(
+            deviceLevel(name, address < 0 ? std::nullopt : std::optional<int>(address), family),
+            level);
+    }
+
+    void rootsAreSanitized() {
+        QCOMPARE(deviceRoot(QStringLiteral("Plant A"), QStringLiteral("cell-3"),
+                            QStringLiteral("01-dme")),
+                 QStringLiteral("tipscope/v1/plant_a/cell-3/01-dme"));
+        QCOMPARE(deviceRoot(QStringLiteral("site"), QStringLiteral("demo"), QStringLiteral("")),
+                 QStringLiteral("tipscope/v1/site/demo/_"));
+        QCOMPARE(agentRoot(QStringLiteral("Plant A"), QStringLiteral("tipscope-line-pc")),
+                 QStringLiteral("tipscope/v1/plant_a/_agent/tipscope-line-pc"));
+    }
+
+    void topicsParseBack() {
+        const auto live =
+            parseDeviceTopic(QStringLiteral("tipscope/v1/plant_a/cell-3/01-dme/port/2/live"));
+        QVERIFY(live);
+        QCOMPARE(live->site, QStringLiteral("plant_a"));
+        QCOMPARE(live->line, QStringLiteral("cell-3"));
+        QCOMPARE(live->device, QStringLiteral("01-dme"));
+        QCOMPARE(live->leaf, QStringLiteral("port/2/live"));
+        QVERIFY(!parseDeviceTopic(QStringLiteral("tipscope/v1/plant_a/cell-3/01-dme")));
+        QVERIFY(!parseDeviceTopic(QStringLiteral("tipscope/v2/plant_a/cell-3/01-dme/status")));
+        QVERIFY(!parseDeviceTopic(QStringLiteral("tipscope/v1/plant_a/_agent/pc/event")));
+        QVERIFY(!parseDeviceTopic(QStringLiteral("tipscope/v1/plant_a//01-dme/status")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPlantTopics)
+#include "tst_planttopics.moc"
