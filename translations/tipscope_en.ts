@@ -24,6 +24,17 @@
     </message>
 </context>
 <context>
+    <name>CliMonitorMqtt</name>
+    <message numerus="yes">
+        <location filename="../app/cli/climonitormqtt.cpp" line="108"/>
+        <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
+        <translation>
+            <numerusform>%n device, %1 live messages, %2 joints and events forwarded, %3 waiting. %4</numerusform>
+            <numerusform>%n devices, %1 live messages, %2 joints and events forwarded, %3 waiting. %4</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>CliRecord</name>
     <message numerus="yes">
         <location filename="../app/cli/clirecord.cpp" line="193"/>

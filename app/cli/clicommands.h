@@ -17,6 +17,8 @@ int runMonitor(CliSession &s);
 int runDump(CliSession &s);
 int runProfile(CliSession &s);
 int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err);
+// monitor --mqtt: the lines (one, or a workspace's) published as tipscope-agent does.
+int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err);
 // Their own session (record) or none (measure): recordings, as the Charts page writes them.
 int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err);

@@ -24,7 +24,8 @@ const QStringList kValueOptions = {
     QStringLiteral("family"),   QStringLiteral("since"),      QStringLiteral("until"),
     QStringLiteral("device"),   QStringLiteral("port"),       QStringLiteral("verdict"),
     QStringLiteral("tool"),     QStringLiteral("work-order"), QStringLiteral("serial"),
-    QStringLiteral("operator"), QStringLiteral("journal"),    QStringLiteral("limit")};
+    QStringLiteral("operator"), QStringLiteral("journal"),    QStringLiteral("limit"),
+    QStringLiteral("mqtt"),     QStringLiteral("mqtt-user"),  QStringLiteral("site")};
 
 // `monitor --csv FILE` names a file; `joints --csv` a format.
 bool takesValue(const QString &command, const QString &option) {
@@ -38,7 +39,8 @@ const QMap<QString, QStringList> kCommandOptions = {
     {QStringLiteral("send"), {}},
     {QStringLiteral("monitor"),
      {QStringLiteral("interval"), QStringLiteral("duration"), QStringLiteral("csv"),
-      QStringLiteral("csv-one-file"), QStringLiteral("journal"), QStringLiteral("limit")}},
+      QStringLiteral("csv-one-file"), QStringLiteral("journal"), QStringLiteral("limit"),
+      QStringLiteral("mqtt"), QStringLiteral("mqtt-user"), QStringLiteral("site")}},
     {QStringLiteral("dump"), {QStringLiteral("json")}},
     {QStringLiteral("commands"), {QStringLiteral("family")}},
     {QStringLiteral("profile"), {QStringLiteral("force"), QStringLiteral("dry-run")}},
@@ -89,6 +91,9 @@ QString CliParser::usage() {
         "          [--limit RULE] [--journal FILE]\n"
         "                            tip temperature, setpoint, power and status per port, and\n"
         "                            a line per joint, each joint kept in the journal\n"
+        "  monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]\n"
+        "                            publish the lines to an MQTT broker as tipscope-agent does\n"
+        "                            (docs/mqtt.md); the password from TIPSCOPE_MQTT_PASSWORD\n"
         "  dump [--json]             every readable parameter, counter and error\n"
         "  commands [--family F]     the command catalog\n"
         "  profile save FILE         every writable setting of the device to a JSON profile\n"

@@ -30,6 +30,9 @@ int main(int argc, char *argv[]) {
         out << "tipscope-cli " << QCoreApplication::applicationVersion() << Qt::endl;
         return kOk;
     }
+    if (options->command == QLatin1String("monitor") &&
+        options->values.contains(QStringLiteral("mqtt")))
+        return runMonitorMqtt(*options, out, err);
     if (!options->workspace.isEmpty())
         return runWorkspace(*options, out, err);
     if (options->command == QLatin1String("commands"))

@@ -77,7 +77,6 @@ void PlantPublisher::finishStop() {
     for (const auto &device : m_devices)
         if (device->isOfflineConfirmed())
             device->presence().stop();
-    m_forwarder.reset();
     if (m_client)
         m_client->stop();
     Q_EMIT stopped();

@@ -1,0 +1,154 @@
+// tipscope-cli monitor --mqtt HOST:PORT: a quick trial of the plant's MQTT without the service.
+// The line the command line names (or every line of --workspace) runs in a PlantAgent, the same
+// as tipscope-agent's, so the topics and payloads are the agent's (docs/mqtt.md). Every interval
+// a line says where it stands: the broker, the devices, what was published and forwarded. The
+// password comes from the environment (TIPSCOPE_MQTT_PASSWORD), never from an argument.
+#include "clicommands.h"
+
+#include "link/tcptransport.h"
+#include "mqtt/mqttclient.h"
+#include "mqtt/mqttsecret.h"
+#include "mqtt/mqtttopic.h"
+#include "plant/plantagent.h"
+
+#include <QDateTime>
+#include <QEventLoop>
+#include <QFileInfo>
+#include <QLoggingCategory>
+#include <QSysInfo>
+#include <QTimer>
+#include <cmath>
+
+namespace tipscope::cli {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(CliMonitorMqtt)
+};
+
+const char kPasswordVariable[] = "TIPSCOPE_MQTT_PASSWORD";
+
+// The line the options name, called as docs/mqtt.md says: "demo" for the demo, the serial
+// device's name, or the TCP server's host and port.
+model::WorkspaceLine lineOf(const CliOptions &o) {
+    model::WorkspaceLine line;
+    line.session.line = o.line;
+    line.session.addressing =
+        o.addressing == CliOptions::Addressing::With      ? model::Session::Addressing::With
+        : o.addressing == CliOptions::Addressing::Without ? model::Session::Addressing::Without
+                                                          : model::Session::Addressing::Auto;
+    line.session.targetAddress = o.targetAddress;
+    switch (o.line.kind) {
+    case link::LineSettings::Kind::Demo:
+        line.name = QStringLiteral("demo");
+        break;
+    case link::LineSettings::Kind::Serial:
+        line.name = QFileInfo(o.line.serial.portName).fileName();
+        break;
+    case link::LineSettings::Kind::Tcp:
+        line.name = QStringLiteral("%1-%2").arg(o.line.tcpHost).arg(o.line.tcpPort);
+        break;
+    }
+    return line;
+}
+
+protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
+    plant::AgentConfig c;
+    QString host;
+    quint16 port = 0;
+    if (!link::TcpTransport::parseHostPort(o.values.value(QStringLiteral("mqtt")), &host, &port))
+        return protocol::failure(Tr::tr("--mqtt takes the broker as HOST:PORT"));
+    c.broker.host = host;
+    c.broker.port = port;
+    c.broker.username = o.values.value(QStringLiteral("mqtt-user"));
+    if (!c.broker.username.isEmpty() && qEnvironmentVariableIsSet(kPasswordVariable)) {
+        auto password = mqtt::readSecretEnvironment(QLatin1String(kPasswordVariable));
+        if (!password)
+            return protocol::failure(password.error());
+        c.broker.password = password.value();
+    }
+    c.site = o.values.value(QStringLiteral("site"), QStringLiteral("site"));
+    if (c.site.trimmed().isEmpty())
+        return protocol::failure(Tr::tr("--site takes the site's name"));
+    bool ok = true;
+    c.live.intervalMs =
+        o.values.value(QStringLiteral("interval"), QStringLiteral("1000")).toInt(&ok);
+    if (!ok || c.live.intervalMs < 100 || c.live.intervalMs > 3600000)
+        return protocol::failure(Tr::tr("--interval takes milliseconds from 100 to 3600000"));
+    c.journalPath = o.values.value(QStringLiteral("journal"));
+    // Not the agent's own id, so a trial beside a running agent does not take its session over.
+    c.broker.clientId = QStringLiteral("tipscope-cli-%1-%2")
+                            .arg(QSysInfo::machineHostName(), mqtt::sanitizeTopicLevel(c.site));
+    if (o.workspace.isEmpty()) {
+        c.workspace.lines = {lineOf(o)};
+    } else {
+        auto file = model::WorkspaceFile::load(o.workspace);
+        if (!file)
+            return protocol::failure(file.error());
+        c.workspace = file.value();
+        c.workspacePath = o.workspace;
+    }
+    return c;
+}
+
+QString standing(const plant::PlantAgent &agent) {
+    const plant::PlantPublisher &p = *agent.publisher();
+    qint64 live = 0;
+    for (const auto &device : p.devices())
+        live += device->liveCount();
+    const mqtt::MqttClient *client = p.client();
+    using State = mqtt::MqttClient::State;
+    const State state = client->state();
+    const QString broker = state == State::Connected ? Tr::tr("Broker connected.")
+                           : state == State::Stopped || state == State::Stopping
+                               ? Tr::tr("Broker disconnected.")
+                           : client->problemText().isEmpty() ? Tr::tr("Connecting to the broker.")
+                                                             : client->problemText();
+    return Tr::tr("%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4",
+                  nullptr, int(p.devices().size()))
+        .arg(live)
+        .arg(p.forwarder()->acknowledgedCount())
+        .arg(p.forwarder()->waitingCount())
+        .arg(broker);
+}
+
+} // namespace
+
+int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err) {
+    const auto config = configOf(o);
+    if (!config) {
+        err << "tipscope-cli: " << config.error() << Qt::endl;
+        return kUsage;
+    }
+    bool ok = true;
+    const double durationS =
+        o.values.value(QStringLiteral("duration"), QStringLiteral("0")).toDouble(&ok);
+    if (!ok || !std::isfinite(durationS) || durationS < 0 || durationS > 1e9) {
+        err << Tr::tr("tipscope-cli: --duration takes seconds") << Qt::endl;
+        return kUsage;
+    }
+    if (!o.verbose) // every MQTT state change and request is for --verbose
+        QLoggingCategory::setFilterRules(QStringLiteral("*.debug=false"));
+    plant::PlantAgent agent(
+        {QStringLiteral("tipscope-cli"), QCoreApplication::applicationVersion()});
+    QEventLoop loop;
+    QObject::connect(&agent, &plant::PlantAgent::finished, &loop, &QEventLoop::quit);
+    agent.start(config.value());
+    bool connected = false;
+    QObject::connect(agent.publisher()->client(), &mqtt::MqttClient::connected, &loop,
+                     [&connected] { connected = true; });
+    QTimer report;
+    QObject::connect(&report, &QTimer::timeout, &loop, [&] {
+        out << QDateTime::currentDateTime().toString(Qt::ISODateWithMs) << "  " << standing(agent)
+            << Qt::endl;
+    });
+    report.start(config->live.intervalMs);
+    if (durationS > 0)
+        QTimer::singleShot(qint64(durationS * 1000), &agent, &plant::PlantAgent::stop);
+    loop.exec();
+    out << standing(agent) << Qt::endl;
+    return connected ? kOk : kTransport; // never reached the broker: a transport error
+}
+
+} // namespace tipscope::cli
