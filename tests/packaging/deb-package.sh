@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# deb-package.sh CPACK BUILD-DIR SCRATCH VERSION
+# deb-package.sh CPACK BUILD-DIR SCRATCH VERSION AGENT-BINARY|not-built
 # Builds the Debian package from the binaries already built in BUILD-DIR (cpack runs the same
 # configuration as `cmake --build BUILD-DIR --target package`, but writes into SCRATCH), then
-# checks its control fields and contents, unpacks it with `dpkg -x` into a scratch root, and
-# runs the programs from there.
+# checks its control fields, maintainer scripts and contents, unpacks it with `dpkg -x` into a
+# scratch root, and runs the programs from there. AGENT-BINARY is `not-built` while the tree has
+# no tipscope-agent target: the package then cannot hold the agent, and the output says so.
 set -euo pipefail
 . "$(dirname "$0")/common.sh"
 need dpkg dpkg
@@ -16,6 +17,13 @@ cpack=${1:?cpack}
 build=${2:?build directory}
 scratch=${3:?scratch directory}
 version=${4:?project version}
+agent=${5:?tipscope-agent or not-built}
+programs=(tipscope tipscope-cli tipscope-sim)
+if [ "$agent" = not-built ]; then
+    echo "NOTE: this tree builds no tipscope-agent: the package is checked without it"
+else
+    programs+=(tipscope-agent)
+fi
 
 rm -rf "$scratch"
 mkdir -p "$scratch/out"
@@ -42,19 +50,44 @@ depends=$(field Depends)
 for lib in libqt6core6 libqt6gui6 libqt6widgets6 libqt6network6 libqt6serialport6; do
     [[ ", $depends," =~ ,\ $lib[\ ,] ]] || fail "Depends does not name $lib: $depends"
 done
+# ... and these are: a Qt plugin (the journal's SQLite driver) and the tool postinst uses.
+for package in libqt6sql6-sqlite adduser; do
+    [[ ", $depends," =~ ,\ ${package}[\ ,] ]] || fail "Depends does not name $package: $depends"
+done
+
+echo "== maintainer scripts"
+control="$scratch/control"
+dpkg-deb -e "$deb" "$control"
+for script in postinst prerm postrm; do
+    [ -x "$control/$script" ] || fail "the package has no executable $script"
+    sh -n "$control/$script" || fail "$script is not a valid shell script"
+    # Nothing starts unless the administrator enables it.
+    if grep -nE 'systemctl +(enable|start|restart|reload)|--now' "$control/$script"; then
+        fail "$script enables or starts the service"
+    fi
+done
+grep -qE '^ *adduser .*--system .*--home /var/lib/tipscope .*tipscope$' "$control/postinst" ||
+    fail "postinst does not make the system user tipscope"
+grep -qE '^ *adduser .*tipscope dialout$' "$control/postinst" ||
+    fail "postinst does not add the user tipscope to dialout"
+for conffile in /etc/tipscope/agent.json /etc/tipscope/workspace.json; do
+    grep -qxF "$conffile" "$control/conffiles" || fail "$conffile is not a conffile"
+done
 
 echo "== contents"
 dpkg-deb -c "$deb" | awk '{print $NF}' | sed 's,^\./,/,' >"$scratch/contents.txt"
 expected=(
-    /usr/bin/tipscope
-    /usr/bin/tipscope-cli
-    /usr/bin/tipscope-sim
+    "${programs[@]/#//usr/bin/}"
     /usr/share/applications/tipscope.desktop
     /usr/share/icons/hicolor/scalable/apps/tipscope.svg
     /usr/share/metainfo/io.github.tipscope.TipScope.metainfo.xml
     /usr/share/man/man1/tipscope-cli.1.gz
     /usr/share/man/man1/tipscope-sim.1.gz
+    /usr/share/man/man8/tipscope-agent.8.gz
     /usr/share/doc/tipscope/README.dialout.md
+    /lib/systemd/system/tipscope-agent.service
+    /etc/tipscope/agent.json
+    /etc/tipscope/workspace.json
 )
 # Whatever translations the build made must be in the package too (none is fine).
 while IFS= read -r qm; do
@@ -69,13 +102,13 @@ echo "the package holds all ${#expected[@]} expected files"
 echo "== unpacked into $scratch/root"
 root="$scratch/root"
 dpkg -x "$deb" "$root"
-for exe in tipscope tipscope-cli tipscope-sim; do
+for exe in "${programs[@]}"; do
     if readelf -d "$root/usr/bin/$exe" | grep -E 'RPATH|RUNPATH' | grep -qF "$build"; then
         fail "$exe would load libraries from the build tree"
     fi
 done
-for page in tipscope-cli tipscope-sim; do
-    gzip -t "$root/usr/share/man/man1/$page.1.gz" || fail "$page.1.gz is not a valid gzip file"
+for page in man1/tipscope-cli.1 man1/tipscope-sim.1 man8/tipscope-agent.8; do
+    gzip -t "$root/usr/share/man/$page.gz" || fail "$page.gz is not a valid gzip file"
 done
 
 run() {
@@ -90,4 +123,13 @@ run "tipscope-cli $version" "$root/usr/bin/tipscope-cli" --version
 run "SMN DME-2C" "$root/usr/bin/tipscope-cli" --demo read SMN
 run "$version" "$root/usr/bin/tipscope-sim" --version
 run "$version" env QT_QPA_PLATFORM=offscreen "$root/usr/bin/tipscope" --version
+# The example the package installs works as it is: its workspace is the demo line...
+run "[demo] 01 DME-2C" "$root/usr/bin/tipscope-cli" --workspace "$root/etc/tipscope/workspace.json" \
+    detect
+# ... and the agent accepts the configuration naming it.
+if [ "$agent" != not-built ]; then
+    run "$version" "$root/usr/bin/tipscope-agent" --version
+    "$root/usr/bin/tipscope-agent" --check --config "$root/etc/tipscope/agent.json" ||
+        fail "tipscope-agent --check refuses the example configuration"
+fi
 echo "PASS: $deb"

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # man-pages-cover.sh CLI-BINARY CLI-PAGE SIM-BINARY SIM-PAGE GUI-BINARY GUI-PAGE
+#                    AGENT-BINARY|not-built AGENT-PAGE
 # The manual pages must describe everything the programs offer: every option in their --help,
 # every tipscope-cli command, and every control command tipscope-sim lists for `help`. A new
-# option without a line in its manual page fails here.
+# option without a line in its manual page fails here. AGENT-BINARY is `not-built` while the tree
+# has no tipscope-agent target; its options are then not compared, and the script says so.
 set -euo pipefail
 . "$(dirname "$0")/common.sh"
 need groff groff-base
@@ -13,6 +15,8 @@ sim=${3:?tipscope-sim}
 simPage=${4:?tipscope-sim.1}
 gui=${5:?tipscope}
 guiPage=${6:?tipscope.1}
+agent=${7:?tipscope-agent or not-built}
+agentPage=${8:?tipscope-agent.8}
 scratch=$(mktemp -d)
 simPid=
 cleanup() {
@@ -83,6 +87,24 @@ QT_QPA_PLATFORM=offscreen "$gui" --help >"$scratch/gui-help.txt" 2>/dev/null ||
     fail "$gui --help failed"
 for opt in $(options <"$scratch/gui-help.txt"); do
     check "$scratch/gui.txt" "tipscope option $opt" "$(tag "$opt")"
+done
+
+# --- tipscope-agent (the service) -----------------------------------------------------------
+render "$agentPage" >"$scratch/agent.txt"
+if [ "$agent" = not-built ]; then
+    echo "NOTE: this tree builds no tipscope-agent, so its --help is not compared with its page"
+else
+    "$agent" --help >"$scratch/agent-help.txt" || fail "$agent --help failed"
+    for opt in $(options <"$scratch/agent-help.txt"); do
+        check "$scratch/agent.txt" "tipscope-agent option $opt" "$(tag "$opt")"
+    done
+fi
+for code in 0 1 2; do
+    check "$scratch/agent.txt" "tipscope-agent exit status $code" "^ +$code +[A-Z]"
+done
+# What a service manager sends it: reload and stop.
+for signal in SIGHUP SIGTERM SIGINT; do
+    check "$scratch/agent.txt" "tipscope-agent signal $signal" "^ +(SIG[A-Z]+, )*$signal(,| |$)"
 done
 
 if [ ${#missing[@]} -gt 0 ]; then
