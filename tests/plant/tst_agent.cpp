@@ -128,7 +128,8 @@ private Q_SLOTS:
         m_agent = std::make_unique<AgentProcess>();
         m_agent->configure(
             m_line, m_broker.port(), {},
-            {{QStringLiteral("live"), QJsonObject{{QStringLiteral("interval_ms"), 500}}}});
+            {{QStringLiteral("live"), QJsonObject{{QStringLiteral("interval_ms"), 500}}},
+             {QStringLiteral("remote_apply"), true}});
         QVERIFY2(m_agent->start(&error), qPrintable(error));
     }
 
@@ -217,6 +218,68 @@ private Q_SLOTS:
         QVERIFY(!j.value(QStringLiteral("id")).toString().isEmpty());
         QTest::qWait(3000);
         QCOMPARE(m_subscriber->on(kRoot + QStringLiteral("/joint"), from).size(), 1);
+    }
+
+    void aProfileIsAppliedThroughTheBrokerForANamedClient() {
+        const QString profile = QStringLiteral(
+            R"({"request_id": "r-1", "profile": {"format": "tipscope-profile", "schema": 1,
+                "family": "DME", "values": {"S21": "00200"}}})");
+        const qsizetype from = m_subscriber->count();
+        QProcess pub;
+        startTool(pub, QStringLiteral("mosquitto_pub"), m_broker,
+                  {QStringLiteral("-q"), QStringLiteral("1"), QStringLiteral("-t"),
+                   kRoot + QStringLiteral("/cmd/apply-profile/tech1"), QStringLiteral("-m"),
+                   profile});
+        QVERIFY(pub.waitForFinished(10000));
+        const auto result = m_subscriber->waitFor(
+            kRoot + QStringLiteral("/cmd/result"), [](const QJsonObject &) { return true; }, 20000,
+            from);
+        QVERIFY2(result, qPrintable(m_agent->log()));
+        const QJsonObject r = result->payload;
+        QVERIFY2(r.value(QStringLiteral("ok")).toBool(), qPrintable(QJsonDocument(r).toJson()));
+        QCOMPARE(r.value(QStringLiteral("request_id")).toString(), QStringLiteral("r-1"));
+        QCOMPARE(r.value(QStringLiteral("client")).toString(), QStringLiteral("tech1"));
+        const QJsonArray changed = r.value(QStringLiteral("changed")).toArray();
+        QCOMPARE(changed.size(), 1);
+        QCOMPARE(changed.first().toObject().value(QStringLiteral("code")).toString(),
+                 QStringLiteral("S21"));
+        QVERIFY(changed.first().toObject().value(QStringLiteral("ok")).toBool());
+        // The journal keeps who asked.
+        journal::JournalReader reader;
+        QVERIFY(reader.open(m_agent->journalPath()));
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                journal::EventFilter filter;
+                filter.kinds = {journal::JournalEvent::Kind::ProfileApply};
+                const auto events = reader.events(filter);
+                for (const journal::StoredEvent &e : events.value())
+                    if (e.record.details.value(QStringLiteral("client")).toString() ==
+                        QLatin1String("tech1"))
+                        return true;
+                return false;
+            },
+            10000));
+    }
+
+    void aCommandWithoutAClientNameIsRefused() {
+        const qsizetype from = m_subscriber->count();
+        QProcess pub;
+        startTool(pub, QStringLiteral("mosquitto_pub"), m_broker,
+                  {QStringLiteral("-q"), QStringLiteral("1"), QStringLiteral("-t"),
+                   kRoot + QStringLiteral("/cmd/apply-profile"), QStringLiteral("-m"),
+                   QStringLiteral(R"({"format": "tipscope-profile", "schema": 1,
+                                      "family": "DME", "values": {"S21": "00150"}})")});
+        QVERIFY(pub.waitForFinished(10000));
+        const auto result = m_subscriber->waitFor(
+            kRoot + QStringLiteral("/cmd/result"), [](const QJsonObject &) { return true; }, 10000,
+            from);
+        QVERIFY(result);
+        QVERIFY(!result->payload.value(QStringLiteral("ok")).toBool());
+        QVERIFY2(result->payload.value(QStringLiteral("error"))
+                     .toString()
+                     .contains(QLatin1String("user name")),
+                 qPrintable(QJsonDocument(result->payload).toJson()));
+        QVERIFY(!result->payload.contains(QStringLiteral("changed")));
     }
 
     void aBrokerOutageLosesNoJoint() {
@@ -308,6 +371,22 @@ private Q_SLOTS:
         const qsizetype before = m_subscriber->count();
         QVERIFY2(m_agent->start(&error), qPrintable(error));
         QVERIFY(m_subscriber->waitFor(kRoot + QStringLiteral("/status"), isOnline, 20000, before));
+        // This agent's configuration leaves remote apply off: a command is refused, saying so.
+        QProcess pub;
+        startTool(pub, QStringLiteral("mosquitto_pub"), m_broker,
+                  {QStringLiteral("-q"), QStringLiteral("1"), QStringLiteral("-t"),
+                   kRoot + QStringLiteral("/cmd/apply-profile/tech1"), QStringLiteral("-m"),
+                   QStringLiteral(R"({"format": "tipscope-profile", "schema": 1,
+                                      "family": "DME", "values": {"S21": "00150"}})")});
+        QVERIFY(pub.waitForFinished(10000));
+        const auto refused = m_subscriber->waitFor(
+            kRoot + QStringLiteral("/cmd/result"),
+            [](const QJsonObject &r) { return !r.value(QStringLiteral("ok")).toBool(); }, 10000,
+            before);
+        QVERIFY(refused);
+        QVERIFY(refused->payload.value(QStringLiteral("error"))
+                    .toString()
+                    .contains(QLatin1String("off")));
         const qsizetype from = m_subscriber->count();
         QElapsedTimer sinceKill;
         sinceKill.start();
