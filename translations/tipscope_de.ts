@@ -1933,7 +1933,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="128"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="125"/>
+        <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
+        <translation>tipscope-cli: %1 ist nicht gesetzt: Verbindung als %2 ohne Passwort</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="132"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
@@ -3882,6 +3887,62 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <location filename="../lib/model/profilelimits.cpp" line="90"/>
         <source>%1 is above %2</source>
         <translation>%1 liegt über %2</translation>
+    </message>
+</context>
+<context>
+    <name>RemoteApply</name>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="75"/>
+        <source>a retained command is not carried out: it would run again at every reconnect</source>
+        <translation>ein gespeicherter (retained) Befehl wird nicht ausgeführt: er liefe bei jeder Wiederverbindung erneut</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="78"/>
+        <source>remote profile apply is off in this agent&apos;s configuration</source>
+        <translation>das Anwenden von Profilen aus der Ferne ist in der Konfiguration dieses Agenten aus</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="80"/>
+        <source>publish the command under your user name: %1/%2/USER</source>
+        <translation>den Befehl unter dem eigenen Benutzernamen veröffentlichen: %1/%2/BENUTZER</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="85"/>
+        <source>no device of this agent is published at %1</source>
+        <translation>unter %1 veröffentlicht dieser Agent kein Gerät</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="87"/>
+        <source>another profile is being applied to this device</source>
+        <translation>auf dieses Gerät wird gerade ein anderes Profil angewendet</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="93"/>
+        <source>not a profile: %1</source>
+        <translation>kein Profil: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/plant/remoteapply.cpp" line="123"/>
+        <source>%n setting(s) not taken</source>
+        <translation>
+            <numerusform>%n Einstellung nicht übernommen</numerusform>
+            <numerusform>%n Einstellungen nicht übernommen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="153"/>
+        <source>Profile applied through MQTT for %1</source>
+        <translation>Profil über MQTT für %1 angewendet</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="154"/>
+        <source>Profile through MQTT for %1 not applied: %2</source>
+        <translation>Profil über MQTT für %1 nicht angewendet: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="155"/>
+        <source>an unnamed client</source>
+        <translation>einen unbenannten Client</translation>
     </message>
 </context>
 <context>

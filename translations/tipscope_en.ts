@@ -125,6 +125,17 @@
     </message>
 </context>
 <context>
+    <name>RemoteApply</name>
+    <message numerus="yes">
+        <location filename="../lib/plant/remoteapply.cpp" line="123"/>
+        <source>%n setting(s) not taken</source>
+        <translation>
+            <numerusform>%n setting not taken</numerusform>
+            <numerusform>%n settings not taken</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>Session</name>
     <message numerus="yes">
         <location filename="../lib/model/session.cpp" line="241"/>

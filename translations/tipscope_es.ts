@@ -1933,7 +1933,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="128"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="125"/>
+        <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
+        <translation>tipscope-cli: %1 no está definida: se conecta como %2 sin contraseña</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="132"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration espera segundos</translation>
     </message>
@@ -3883,6 +3888,62 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <location filename="../lib/model/profilelimits.cpp" line="90"/>
         <source>%1 is above %2</source>
         <translation>%1 está por encima de %2</translation>
+    </message>
+</context>
+<context>
+    <name>RemoteApply</name>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="75"/>
+        <source>a retained command is not carried out: it would run again at every reconnect</source>
+        <translation>una orden retenida (retained) no se ejecuta: se repetiría en cada reconexión</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="78"/>
+        <source>remote profile apply is off in this agent&apos;s configuration</source>
+        <translation>la aplicación remota de perfiles está desactivada en la configuración de este agente</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="80"/>
+        <source>publish the command under your user name: %1/%2/USER</source>
+        <translation>publique la orden bajo su nombre de usuario: %1/%2/USUARIO</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="85"/>
+        <source>no device of this agent is published at %1</source>
+        <translation>este agente no publica ningún dispositivo en %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="87"/>
+        <source>another profile is being applied to this device</source>
+        <translation>ya se está aplicando otro perfil a este dispositivo</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="93"/>
+        <source>not a profile: %1</source>
+        <translation>no es un perfil: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/plant/remoteapply.cpp" line="123"/>
+        <source>%n setting(s) not taken</source>
+        <translation>
+            <numerusform>%n ajuste no aceptado</numerusform>
+            <numerusform>%n ajustes no aceptados</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="153"/>
+        <source>Profile applied through MQTT for %1</source>
+        <translation>Perfil aplicado por MQTT para %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="154"/>
+        <source>Profile through MQTT for %1 not applied: %2</source>
+        <translation>Perfil por MQTT para %1 no aplicado: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remoteapply.cpp" line="155"/>
+        <source>an unnamed client</source>
+        <translation>un cliente sin nombre</translation>
     </message>
 </context>
 <context>

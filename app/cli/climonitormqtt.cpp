@@ -121,6 +121,10 @@ int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err) {
         err << "tipscope-cli: " << config.error() << Qt::endl;
         return kUsage;
     }
+    if (!config->broker.username.isEmpty() && config->broker.password.isEmpty())
+        err << Tr::tr("tipscope-cli: %1 is not set: connecting as %2 without a password")
+                   .arg(QLatin1String(kPasswordVariable), config->broker.username)
+            << Qt::endl;
     bool ok = true;
     const double durationS =
         o.values.value(QStringLiteral("duration"), QStringLiteral("0")).toDouble(&ok);

@@ -3,6 +3,7 @@
 #include <QDateTime>
 #include <QJsonArray>
 #include <QStringList>
+#include <cmath>
 
 namespace tipscope::journal {
 
@@ -68,7 +69,7 @@ QJsonObject jointJson(const StoredJoint &stored) {
             {kFields[13], optional(j.recoveryMs)},
             {kFields[14], double(j.durationMs)},
             {kFields[15], j.powerPeak},
-            {kFields[16], j.powerIntegral},
+            {kFields[16], std::round(j.powerIntegral * 1000) / 1000}, // no float noise
             {kFields[17], model::jointVerdictName(j.verdict)},
             {kFields[18], stored.context.workOrder},
             {kFields[19], stored.context.boardSerial},

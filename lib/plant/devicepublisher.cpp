@@ -56,6 +56,14 @@ DevicePublisher::DevicePublisher(mqtt::MqttClient &shared, const AgentConfig &co
         if (model::Parameter *fed = feeder->parameter(Role::FedLength))
             connect(fed, &model::Parameter::updated, this, [this, fed] { onReading(0, fed); });
     }
+    m_infoTimer.setSingleShot(true);
+    m_infoTimer.setInterval(300);
+    connect(&m_infoTimer, &QTimer::timeout, this, &DevicePublisher::publishInfo);
+    if (config.live.batchMs > 0) {
+        m_batchTimer.setInterval(config.live.batchMs);
+        connect(&m_batchTimer, &QTimer::timeout, this, &DevicePublisher::flushBatches);
+        m_batchTimer.start();
+    }
     m_countersTimer.setInterval(config.countersIntervalS * 1000);
     connect(&m_countersTimer, &QTimer::timeout, this, &DevicePublisher::publishCounters);
     m_countersTimer.start();
@@ -66,6 +74,7 @@ DevicePublisher::DevicePublisher(mqtt::MqttClient &shared, const AgentConfig &co
 DevicePublisher::~DevicePublisher() = default;
 
 void DevicePublisher::goOffline() {
+    flushBatches();
     if (m_presence->state() != mqtt::MqttClient::State::Connected) {
         Q_EMIT offline();
         return;
@@ -77,6 +86,26 @@ void DevicePublisher::goOffline() {
     m_offlineId = sent.messageId;
     if (!sent.ok())
         Q_EMIT offline();
+}
+
+void DevicePublisher::retire(bool sayOffline) {
+    flushBatches();
+    if (m_presence->state() != mqtt::MqttClient::State::Connected) {
+        deleteLater();
+        return;
+    }
+    if (sayOffline)
+        (void)m_presence->publish(
+            m_place.root + QStringLiteral("/status"),
+            QJsonDocument(statusPayload(false, m_who, nowMs())).toJson(QJsonDocument::Compact), 1,
+            true);
+    connect(m_presence.get(), &mqtt::MqttClient::stateChanged, this,
+            [this](mqtt::MqttClient::State state) {
+                if (state == mqtt::MqttClient::State::Stopped)
+                    deleteLater();
+            });
+    QTimer::singleShot(5000, this, &QObject::deleteLater); // a broker that never answers
+    m_presence->stop();
 }
 
 void DevicePublisher::publishRetained() {
@@ -122,7 +151,7 @@ void DevicePublisher::onParameterChanged(model::Parameter *p) {
     if (meta.group == Group::Errors) {
         publishAlarms(false);
     } else if (meta.role == Role::ConnectedTool) {
-        publishInfo();
+        m_infoTimer.start();
     } else if (meta.group == Group::Counter && p->number()) {
         const qint64 value = *p->number();
         const auto before = m_counterValues.constFind(p->code());
@@ -154,13 +183,16 @@ void DevicePublisher::onReading(int port, model::Parameter *timeSource) {
                                   readMs);
     if (m_config.live.batchMs <= 0)
         return sendLive(port, payload);
-    if (slot.batch.isEmpty())
-        slot.batchStartMs = readMs;
     slot.batch.append(payload);
-    if (readMs - slot.batchStartMs >= m_config.live.batchMs) {
-        sendLive(port, {{QStringLiteral("ts"), slot.batch.first()[QStringLiteral("ts")]},
-                        {QStringLiteral("samples"), slot.batch}});
-        slot.batch = {};
+}
+
+void DevicePublisher::flushBatches() {
+    for (auto it = m_live.begin(); it != m_live.end(); ++it) {
+        if (it->batch.isEmpty())
+            continue;
+        sendLive(it.key(), {{QStringLiteral("ts"), it->batch.first()[QStringLiteral("ts")]},
+                            {QStringLiteral("samples"), it->batch}});
+        it->batch = {};
     }
 }
 

@@ -11,9 +11,10 @@
 // Live values are published as they are read, at most one message per port each interval (the
 // interval is kept on average: a reading is sent when the next slot is due), with the reading's
 // own time, so a subscriber's latency is the wire's, not a timer's. With batching, the samples of
-// batchMs go out as one list. Nothing is published for a port that was not read: a gap stays a
-// gap. Counters go out at start, every countersIntervalS, when all are first read, and at once
-// when one goes down (a reset); alarms when the set in force changes; info when a tool changes.
+// batchMs go out as one list (also when readings stop, and before going offline). Nothing is
+// published for a port that was not read: a gap stays a gap. Counters go out at start, every
+// countersIntervalS, when all are first read, and at once when one goes down (a reset); alarms when
+// the set in force changes; info when a tool changes.
 #pragma once
 
 #include "agentconfig.h"
@@ -63,6 +64,10 @@ public:
     void goOffline();
     // Everything retained again, after the shared client (re)connected.
     void publishRetained();
+    // Hands over to a successor (a reload): the presence client disconnects cleanly, so the broker
+    // drops its will and the device does not flash offline; `sayOffline` first publishes offline
+    // (the successor publishes under another root). Deletes itself once disconnected.
+    void retire(bool sayOffline);
 
 Q_SIGNALS:
     void offline();
@@ -71,7 +76,6 @@ private:
     struct LiveSlot {
         qint64 dueMs = 0;
         QJsonArray batch;
-        qint64 batchStartMs = 0;
     };
 
     void publishStatus();
@@ -81,6 +85,7 @@ private:
     void onParameterChanged(model::Parameter *parameter);
     void onReading(int port, model::Parameter *timeSource);
     void sendLive(int port, const QJsonObject &payload);
+    void flushBatches();
     [[nodiscard]] QString liveTopic(int port) const;
     void publish(const QString &leaf, const QJsonObject &payload, int qos, bool retain);
 
@@ -96,6 +101,8 @@ private:
     QJsonArray m_alarms;
     bool m_alarmsPublished = false;
     QTimer m_countersTimer;
+    QTimer m_infoTimer;  // tools are read one port at a time: one info for all of them
+    QTimer m_batchTimer; // a batch goes out on time even when readings stop
     int m_offlineId = 0;
     bool m_offlineConfirmed = false;
     qint64 m_liveCount = 0;

@@ -20,11 +20,11 @@ constexpr int kStallMs = 60000;
 } // namespace
 
 JournalForwarder::JournalForwarder(journal::Journal &journal, mqtt::MqttClient &client,
-                                   RootOf rootOf, QObject *parent)
+                                   PlaceOf placeOf, QObject *parent)
     : QObject(parent)
     , m_journal(journal)
     , m_client(client)
-    , m_rootOf(std::move(rootOf)) {
+    , m_placeOf(std::move(placeOf)) {
     m_pumpTimer.setSingleShot(true);
     m_pumpTimer.setInterval(20); // coalesces a burst of commits and acknowledgements
     connect(&m_pumpTimer, &QTimer::timeout, this, &JournalForwarder::pump);
@@ -95,14 +95,20 @@ void JournalForwarder::pump() {
                 (j < joints->size() && joints->at(j).record.endMs <= events->at(e).record.timeMs);
             if (takeJoint) {
                 const journal::StoredJoint &joint = joints->at(j++);
-                if (!publish(m_rootOf(joint.record.device) + QStringLiteral("/joint"),
-                             journal::jointJson(joint), {true, joint.id}))
+                const Place place = m_placeOf(joint.record.device);
+                QJsonObject payload = journal::jointJson(joint);
+                payload.insert(QStringLiteral("line"), place.line);
+                payload.insert(QStringLiteral("connection"), joint.record.device.line);
+                if (!publish(place.root + QStringLiteral("/joint"), payload, {true, joint.id}))
                     return;
                 m_jointCursor = joint.id;
             } else {
                 const journal::StoredEvent &event = events->at(e++);
-                if (!publish(m_rootOf(event.record.device) + QStringLiteral("/event"),
-                             eventPayload(event), {false, event.id}))
+                const Place place = m_placeOf(event.record.device);
+                QJsonObject payload = eventPayload(event);
+                payload.insert(QStringLiteral("line"), place.line);
+                payload.insert(QStringLiteral("connection"), event.record.device.line);
+                if (!publish(place.root + QStringLiteral("/event"), payload, {false, event.id}))
                     return;
                 m_eventCursor = event.id;
             }

@@ -3,6 +3,8 @@
 // (PUBACK). A broker outage, a network cut or an agent restart loses none: what was not
 // acknowledged is still unsent in the journal and goes out, in order, once the client is
 // connected again. Duplicates are possible (QoS 1 is at least once) and carry the record's id.
+// Each payload names the workspace line as `line` and how the device is reached as `connection`,
+// as `info` does (the journal's own export calls the connection `line`).
 //
 // Only records the journal has made durable are read, so nothing is published that a crash could
 // take back. At most kWindow messages wait for their acknowledgement at a time; the rest wait in
@@ -33,11 +35,16 @@ namespace tipscope::plant {
 class JournalForwarder : public QObject {
     Q_OBJECT
 public:
-    // The root topic a record of `device` goes under (an agent's root for an empty identity).
-    using RootOf = std::function<QString(const model::DeviceIdentity &device)>;
+    // Where a record of `device` goes: its root topic (an agent's root for an empty identity)
+    // and the name of the workspace line it is on (empty when none).
+    struct Place {
+        QString root;
+        QString line;
+    };
+    using PlaceOf = std::function<Place(const model::DeviceIdentity &device)>;
     static constexpr int kWindow = 200;
 
-    JournalForwarder(journal::Journal &journal, mqtt::MqttClient &client, RootOf rootOf,
+    JournalForwarder(journal::Journal &journal, mqtt::MqttClient &client, PlaceOf placeOf,
                      QObject *parent = nullptr);
 
     // Forgets what is waiting for an acknowledgement and reads again from the oldest unsent
@@ -71,7 +78,7 @@ private:
 
     journal::Journal &m_journal;
     mqtt::MqttClient &m_client;
-    RootOf m_rootOf;
+    PlaceOf m_placeOf;
     journal::JournalReader m_reader;
     qint64 m_jointCursor = 0;
     qint64 m_eventCursor = 0;

@@ -6,6 +6,8 @@
 #include "model/portmodel.h"
 #include "model/stationmodel.h"
 
+#include <cmath>
+
 namespace tipscope::plant {
 
 using journal::utcText;
@@ -14,8 +16,9 @@ using protocol::Wording;
 
 namespace {
 
+// Rounded to the thousandth, so a tenth on the wire reads 57.9 and not 57.900000000000006.
 QJsonValue optionalNumber(std::optional<qint64> value, double scale = 1) {
-    return value ? QJsonValue(double(*value) * scale) : QJsonValue();
+    return value ? QJsonValue(std::round(double(*value) * scale * 1000) / 1000) : QJsonValue();
 }
 
 QJsonValue addressValue(std::optional<int> address) {

@@ -26,7 +26,15 @@ PlantPublisher::~PlantPublisher() = default;
 
 void PlantPublisher::start(const AgentConfig &config, const Publisher &who) {
     m_stopTimer.stop();
+    // The devices hand over to their successors; under the same roots without going offline.
+    const bool sameRoots = m_client && config.site == m_config.site;
+    for (auto &device : m_devices) {
+        DevicePublisher *old = device.release();
+        old->setParent(this);
+        old->retire(!sameRoots);
+    }
     m_devices.clear();
+    m_remoteApply.reset();
     m_forwarder.reset();
     if (m_client)
         m_client->stop();
@@ -47,7 +55,15 @@ void PlantPublisher::start(const AgentConfig &config, const Publisher &who) {
             device->publishRetained();
     });
     m_forwarder = std::make_unique<JournalForwarder>(
-        m_journal, *m_client, [this](const model::DeviceIdentity &d) { return rootOf(d); });
+        m_journal, *m_client, [this](const model::DeviceIdentity &d) { return placeOf(d); });
+    m_remoteApply =
+        std::make_unique<RemoteApply>(*m_client, m_journal, config.site, config.remoteApply,
+                                      [this](const QString &root) -> model::DeviceModel * {
+                                          for (const auto &device : m_devices)
+                                              if (device->place().root == root)
+                                                  return device->device();
+                                          return nullptr;
+                                      });
     m_client->start();
     syncAll();
 }
@@ -139,12 +155,12 @@ void PlantPublisher::addDevice(int index, model::DeviceModel &device) {
     m_devices.push_back(std::move(publisher));
 }
 
-QString PlantPublisher::rootOf(const model::DeviceIdentity &identity) const {
+JournalForwarder::Place PlantPublisher::placeOf(const model::DeviceIdentity &identity) const {
     if (identity.isEmpty())
-        return agentRoot(m_config.site, m_agentId);
+        return {agentRoot(m_config.site, m_agentId), QString()};
     for (const auto &d : m_devices)
         if (d->device() && d->device()->identity() == identity)
-            return d->place().root;
+            return {d->place().root, d->place().line};
     // A device this run has not found (yet): its line is the one reached the same way.
     QString line = identity.line;
     QString name;
@@ -155,7 +171,7 @@ QString PlantPublisher::rootOf(const model::DeviceIdentity &identity) const {
                 name = m_workspace.line(i).deviceName(identity.address);
             }
     const QString family = protocol::Catalog::builtin().familyForModel(identity.model);
-    return deviceRoot(m_config.site, line, deviceLevel(name, identity.address, family));
+    return {deviceRoot(m_config.site, line, deviceLevel(name, identity.address, family)), line};
 }
 
 } // namespace tipscope::plant

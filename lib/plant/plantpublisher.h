@@ -12,6 +12,7 @@
 #include "agentconfig.h"
 #include "devicepublisher.h"
 #include "journalforwarder.h"
+#include "remoteapply.h"
 
 #include <QObject>
 #include <QTimer>
@@ -44,8 +45,8 @@ public:
         return m_devices;
     }
     [[nodiscard]] QString agentId() const { return m_agentId; }
-    // The root topic of records about `device`, also of one the workspace no longer has.
-    [[nodiscard]] QString rootOf(const model::DeviceIdentity &device) const;
+    // Where records about `device` go, also for one the workspace no longer has.
+    [[nodiscard]] JournalForwarder::Place placeOf(const model::DeviceIdentity &device) const;
 
 Q_SIGNALS:
     void stopped();
@@ -66,6 +67,7 @@ private:
     QString m_agentId;
     std::unique_ptr<mqtt::MqttClient> m_client;
     std::unique_ptr<JournalForwarder> m_forwarder;
+    std::unique_ptr<RemoteApply> m_remoteApply;
     std::vector<std::unique_ptr<DevicePublisher>> m_devices;
     int m_awaitingOffline = 0;
     QTimer m_stopTimer;

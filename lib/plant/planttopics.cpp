@@ -21,8 +21,11 @@ QString deviceLevel(const QString &name, std::optional<int> address, const QStri
 }
 
 QString deviceRoot(const QString &site, const QString &line, const QString &device) {
-    return QStringList{QLatin1String(kTopicPrefix), sanitizeTopicLevel(site),
-                       sanitizeTopicLevel(line), sanitizeTopicLevel(device)}
+    QString lineLevel = sanitizeTopicLevel(line);
+    if (lineLevel == kAgentLevel) // the agents' own level: a line of that name steps aside
+        lineLevel.prepend(QLatin1Char('_'));
+    return QStringList{QLatin1String(kTopicPrefix), sanitizeTopicLevel(site), lineLevel,
+                       sanitizeTopicLevel(device)}
         .join(QLatin1Char('/'));
 }
 

@@ -4,7 +4,8 @@
 // gives it, or `<address>-<family>` ("01-dme", "10-sfr"), or `--<family>` ("--ddr") for a device
 // that answers without addresses. Every level goes through sanitizeTopicLevel() (lower case,
 // anything outside [a-z0-9_-] becomes `_`). Records about no device in particular (a context
-// change, the journal's own reports) go under the agent's root, `tipscope/v1/<site>/_agent/<id>`.
+// change, the journal's own reports) go under the agent's root, `tipscope/v1/<site>/_agent/<id>`;
+// a line that is itself called `_agent` is published as `__agent`, so the two never mix.
 //
 // parseDeviceTopic() is the way back, for views that subscribe to `tipscope/v1/#`: the site, line
 // and device levels of a topic under a device's root, and what follows them.

@@ -44,6 +44,9 @@ private Q_SLOTS:
                  QStringLiteral("tipscope/v1/plant_a/cell-3/01-dme"));
         QCOMPARE(deviceRoot(QStringLiteral("site"), QStringLiteral("demo"), QStringLiteral("")),
                  QStringLiteral("tipscope/v1/site/demo/_"));
+        QCOMPARE(
+            deviceRoot(QStringLiteral("site"), QStringLiteral("_agent"), QStringLiteral("01-dme")),
+            QStringLiteral("tipscope/v1/site/__agent/01-dme"));
         QCOMPARE(agentRoot(QStringLiteral("Plant A"), QStringLiteral("tipscope-line-pc")),
                  QStringLiteral("tipscope/v1/plant_a/_agent/tipscope-line-pc"));
     }
