@@ -3946,6 +3946,56 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>RemoteTile</name>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="27"/>
+        <location filename="../lib/plant/remotetile.cpp" line="39"/>
+        <location filename="../lib/plant/remotetile.cpp" line="50"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="48"/>
+        <source>Feeding</source>
+        <translation>Zuführung läuft</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="49"/>
+        <source>Not feeding</source>
+        <translation>Keine Zuführung</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="54"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · vorgeschoben %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="64"/>
+        <source>Port %1 alarm: %2</source>
+        <translation>Port %1 Alarm: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="65"/>
+        <source>Port %1: %2</source>
+        <translation>Port %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="80"/>
+        <source>Agent offline</source>
+        <translation>Agent offline</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="84"/>
+        <source>Agent offline since %1</source>
+        <translation>Agent offline seit %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="85"/>
+        <source>Agent offline since %1 %2</source>
+        <translation>Agent offline seit %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>SerialPortList</name>
     <message>
         <location filename="../lib/link/ports/serialportlist.cpp" line="161"/>
@@ -4456,44 +4506,59 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="45"/>
+        <location filename="../app/gui/main.cpp" line="46"/>
         <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
         <translation>JBC-Lötstationen und den SFR-Lotdrahtvorschub konfigurieren und überwachen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="51"/>
+        <location filename="../app/gui/main.cpp" line="52"/>
         <source>Start on the built-in simulated DME station and SFR feeder.</source>
         <translation>Mit der eingebauten simulierten DME-Station und dem SFR-Lotdrahtvorschub starten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="54"/>
+        <location filename="../app/gui/main.cpp" line="55"/>
         <source>Connect to this serial port.</source>
         <translation>Mit dieser seriellen Schnittstelle verbinden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="57"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
         <source>Connect to a TCP serial server.</source>
         <translation>Mit einem seriellen TCP-Server verbinden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="61"/>
+        <location filename="../app/gui/main.cpp" line="62"/>
         <source>Open the lines of this workspace file.</source>
         <translation>Die Linien dieser Arbeitsbereichsdatei öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="65"/>
+        <location filename="../app/gui/main.cpp" line="66"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Ein PNG jeder Seite in DIR speichern, dann beenden.</translation>
     </message>
     <message>
         <location filename="../app/gui/main.cpp" line="70"/>
+        <source>Watch the devices published to this MQTT broker on the fleet overview.</source>
+        <translation>Die an diesen MQTT-Broker veröffentlichten Geräte in der Geräteübersicht verfolgen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="75"/>
+        <source>With --plant: only this site&apos;s devices.</source>
+        <translation>Mit --plant: nur die Geräte dieses Standorts.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="80"/>
         <source>tipscope: there is no display (neither DISPLAY nor WAYLAND_DISPLAY is set); start it on a desktop, or use tipscope-cli</source>
         <translation>tipscope: es gibt keine Anzeige (weder DISPLAY noch WAYLAND_DISPLAY ist gesetzt); starten Sie es auf einem Desktop, oder verwenden Sie tipscope-cli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="99"/>
+        <location filename="../app/gui/main.cpp" line="109"/>
         <source>tipscope: %1</source>
         <translation>tipscope: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="121"/>
+        <source>tipscope: --plant takes the broker as HOST:PORT</source>
+        <translation>tipscope: --plant erwartet den Broker als HOST:PORT</translation>
     </message>
 </context>
 <context>
@@ -5487,42 +5552,42 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="109"/>
+        <location filename="../app/gui/devicetree.cpp" line="116"/>
         <source>Fleet overview</source>
         <translation>Geräteübersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="172"/>
+        <location filename="../app/gui/devicetree.cpp" line="179"/>
         <source>No line</source>
         <translation>Keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="178"/>
+        <location filename="../app/gui/devicetree.cpp" line="185"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="179"/>
+        <location filename="../app/gui/devicetree.cpp" line="186"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="187"/>
+        <location filename="../app/gui/devicetree.cpp" line="194"/>
         <source>feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="187"/>
+        <location filename="../app/gui/devicetree.cpp" line="194"/>
         <source>station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="193"/>
+        <location filename="../app/gui/devicetree.cpp" line="200"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="198"/>
+        <location filename="../app/gui/devicetree.cpp" line="205"/>
         <source>Port %1: %2</source>
         <translation>Port %1: %2</translation>
     </message>
@@ -6118,47 +6183,52 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FleetPage</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="29"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="30"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
         <source>Line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="33"/>
         <source>State, worst first</source>
         <translation>Zustand, schlechtester zuerst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
         <source>Sort by:</source>
         <translation>Sortieren nach:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="36"/>
         <source>Needs attention only</source>
         <translation>Nur was Aufmerksamkeit braucht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="115"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="117"/>
         <source>Devices: %1 · need attention: %2</source>
         <translation>Geräte: %1 · brauchen Aufmerksamkeit: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="206"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="239"/>
+        <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
+        <translation>Noch keine Geräte: vom Broker des Werks ist nichts gekommen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="240"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Keine Geräte: die Leitungen des Arbeitsbereichs haben noch keine gefunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="207"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="238"/>
         <source>No device needs attention.</source>
         <translation>Kein Gerät braucht Aufmerksamkeit.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.h" line="47"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="52"/>
         <source>Fleet</source>
         <translation>Geräteübersicht</translation>
     </message>
@@ -6660,72 +6730,72 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="48"/>
+        <location filename="../app/gui/mainwindow.cpp" line="49"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="116"/>
+        <location filename="../app/gui/mainwindow.cpp" line="125"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="118"/>
+        <location filename="../app/gui/mainwindow.cpp" line="129"/>
         <source>Work &amp;context…</source>
         <translation>Arbeits&amp;kontext…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="122"/>
+        <location filename="../app/gui/mainwindow.cpp" line="133"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="124"/>
+        <location filename="../app/gui/mainwindow.cpp" line="135"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="125"/>
+        <location filename="../app/gui/mainwindow.cpp" line="136"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="126"/>
+        <location filename="../app/gui/mainwindow.cpp" line="137"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="134"/>
+        <location filename="../app/gui/mainwindow.cpp" line="145"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Lötstellen-Grenzwerte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="135"/>
+        <location filename="../app/gui/mainwindow.cpp" line="146"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="136"/>
+        <location filename="../app/gui/mainwindow.cpp" line="147"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="138"/>
+        <location filename="../app/gui/mainwindow.cpp" line="149"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="139"/>
+        <location filename="../app/gui/mainwindow.cpp" line="150"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="257"/>
+        <location filename="../app/gui/mainwindow.cpp" line="268"/>
         <source>new workspace</source>
         <translation>neuer Arbeitsbereich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="259"/>
+        <location filename="../app/gui/mainwindow.cpp" line="270"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n Linie)</numerusform>
@@ -6733,28 +6803,28 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="262"/>
+        <location filename="../app/gui/mainwindow.cpp" line="273"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="267"/>
+        <location filename="../app/gui/mainwindow.cpp" line="278"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="272"/>
+        <location filename="../app/gui/mainwindow.cpp" line="283"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="282"/>
-        <location filename="../app/gui/mainwindow.cpp" line="285"/>
+        <location filename="../app/gui/mainwindow.cpp" line="293"/>
+        <location filename="../app/gui/mainwindow.cpp" line="296"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="286"/>
+        <location filename="../app/gui/mainwindow.cpp" line="297"/>
         <source>Written:
 %1
 
@@ -6765,12 +6835,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="294"/>
+        <location filename="../app/gui/mainwindow.cpp" line="305"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="295"/>
+        <location filename="../app/gui/mainwindow.cpp" line="306"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
@@ -6857,6 +6927,31 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
         <source>line-%1</source>
         <translation>linie-%1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="18"/>
+        <source>Connect to &amp;plant…</source>
+        <translation>Mit dem &amp;Werk verbinden…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="24"/>
+        <source>Disconnect from p&amp;lant</source>
+        <translation>Vom W&amp;erk trennen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="62"/>
+        <source>Plant: %1</source>
+        <translation>Werk: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="63"/>
+        <source>Plant: %1 not connected</source>
+        <translation>Werk: %1 nicht verbunden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="64"/>
+        <source>Watching %1 on the plant&apos;s broker</source>
+        <translation>Verfolgt %1 auf dem Broker des Werks</translation>
     </message>
 </context>
 <context>
@@ -7008,6 +7103,59 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
         <source>last read %1</source>
         <translation>zuletzt gelesen %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::PlantDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="24"/>
+        <source>Connect to plant</source>
+        <translation>Mit dem Werk verbinden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="34"/>
+        <source>every site</source>
+        <translation>alle Standorte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="35"/>
+        <source>The fleet overview shows every device the line PCs publish there; their pages are read-only. This window publishes nothing.</source>
+        <translation>Die Geräteübersicht zeigt jedes Gerät, das die Linien-PCs dort veröffentlichen; ihre Seiten sind schreibgeschützt. Dieses Fenster veröffentlicht nichts.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="40"/>
+        <source>&amp;Broker:</source>
+        <translation>&amp;Broker:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="41"/>
+        <source>P&amp;ort:</source>
+        <translation>P&amp;ort:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="42"/>
+        <source>&amp;User name:</source>
+        <translation>&amp;Benutzername:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="43"/>
+        <source>&amp;Password:</source>
+        <translation>&amp;Passwort:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="44"/>
+        <source>&amp;Site:</source>
+        <translation>&amp;Standort:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="46"/>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="74"/>
+        <source>the broker&apos;s host name or address</source>
+        <translation>Hostname oder Adresse des Brokers</translation>
     </message>
 </context>
 <context>
@@ -7450,6 +7598,111 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <location filename="../app/gui/pages/jointcharts.cpp" line="145"/>
         <source>No recovered joints listed</source>
         <translation>Keine erholten Lötstellen aufgeführt</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RemoteDevicePage</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <source>Tip</source>
+        <translation>Spitze</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <source>Setpoint</source>
+        <translation>Sollwert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <source>Power</source>
+        <translation>Leistung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Ended</source>
+        <translation>Ende</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Verdict</source>
+        <translation>Bewertung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Dip (K)</source>
+        <translation>Einbruch (K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Recovery (s)</source>
+        <translation>Erholung (s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="70"/>
+        <source>‹ Fleet overview</source>
+        <translation>‹ Geräteübersicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="78"/>
+        <source>Live values</source>
+        <translation>Live-Werte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="81"/>
+        <source>Recent joints, newest first</source>
+        <translation>Letzte Lötstellen, neueste zuerst</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="100"/>
+        <source>No such device on the plant&apos;s broker</source>
+        <translation>Dieses Gerät gibt es auf dem Broker des Werks nicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="104"/>
+        <source>%1 · %2 on %3 (%4)</source>
+        <translation>%1 · %2 an %3 (%4)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="108"/>
+        <source>Read-only: published by %1 %2 through the plant&apos;s broker; current.</source>
+        <translation>Schreibgeschützt: veröffentlicht von %1 %2 über den Broker des Werks; aktuell.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="110"/>
+        <source>Read-only, not current: %1. The values are the last published.</source>
+        <translation>Schreibgeschützt, nicht aktuell: %1. Die Werte sind die zuletzt veröffentlichten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="122"/>
+        <source>No errors or alarms in force.</source>
+        <translation>Keine Fehler oder Alarme aktiv.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="123"/>
+        <source>In force: %1</source>
+        <translation>Aktiv: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="139"/>
+        <source>never</source>
+        <translation>nie</translation>
     </message>
 </context>
 <context>

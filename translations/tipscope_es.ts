@@ -3947,6 +3947,56 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>RemoteTile</name>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="27"/>
+        <location filename="../lib/plant/remotetile.cpp" line="39"/>
+        <location filename="../lib/plant/remotetile.cpp" line="50"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="48"/>
+        <source>Feeding</source>
+        <translation>Alimentando</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="49"/>
+        <source>Not feeding</source>
+        <translation>Sin alimentar</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="54"/>
+        <source>%1 · fed %2</source>
+        <translation>%1 · alimentado %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="64"/>
+        <source>Port %1 alarm: %2</source>
+        <translation>Puerto %1 alarma: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="65"/>
+        <source>Port %1: %2</source>
+        <translation>Puerto %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="80"/>
+        <source>Agent offline</source>
+        <translation>Agente desconectado</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="84"/>
+        <source>Agent offline since %1</source>
+        <translation>Agente desconectado desde las %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/remotetile.cpp" line="85"/>
+        <source>Agent offline since %1 %2</source>
+        <translation>Agente desconectado desde el %1 a las %2</translation>
+    </message>
+</context>
+<context>
     <name>SerialPortList</name>
     <message>
         <location filename="../lib/link/ports/serialportlist.cpp" line="161"/>
@@ -4457,44 +4507,59 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="45"/>
+        <location filename="../app/gui/main.cpp" line="46"/>
         <source>Configure and monitor JBC soldering stations and the SFR feeder.</source>
         <translation>Configure y supervise estaciones de soldadura JBC y el alimentador SFR.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="51"/>
+        <location filename="../app/gui/main.cpp" line="52"/>
         <source>Start on the built-in simulated DME station and SFR feeder.</source>
         <translation>Iniciar con la estación DME y el alimentador SFR simulados integrados.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="54"/>
+        <location filename="../app/gui/main.cpp" line="55"/>
         <source>Connect to this serial port.</source>
         <translation>Conectar a este puerto serie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="57"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
         <source>Connect to a TCP serial server.</source>
         <translation>Conectar a un servidor serie TCP.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="61"/>
+        <location filename="../app/gui/main.cpp" line="62"/>
         <source>Open the lines of this workspace file.</source>
         <translation>Abrir las líneas de este archivo de espacio de trabajo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="65"/>
+        <location filename="../app/gui/main.cpp" line="66"/>
         <source>Save a PNG of every page into DIR, then quit.</source>
         <translation>Guardar un PNG de cada página en DIR y salir.</translation>
     </message>
     <message>
         <location filename="../app/gui/main.cpp" line="70"/>
+        <source>Watch the devices published to this MQTT broker on the fleet overview.</source>
+        <translation>Seguir en la vista de la flota los dispositivos publicados en este broker MQTT.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="75"/>
+        <source>With --plant: only this site&apos;s devices.</source>
+        <translation>Con --plant: solo los dispositivos de esta planta.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="80"/>
         <source>tipscope: there is no display (neither DISPLAY nor WAYLAND_DISPLAY is set); start it on a desktop, or use tipscope-cli</source>
         <translation>tipscope: no hay pantalla (no están definidas DISPLAY ni WAYLAND_DISPLAY); inícielo en un escritorio, o use tipscope-cli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="99"/>
+        <location filename="../app/gui/main.cpp" line="109"/>
         <source>tipscope: %1</source>
         <translation>tipscope: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="121"/>
+        <source>tipscope: --plant takes the broker as HOST:PORT</source>
+        <translation>tipscope: --plant espera el broker como HOST:PUERTO</translation>
     </message>
 </context>
 <context>
@@ -5488,42 +5553,42 @@ Hágalo permanente con esta regla de udev:
         <translation>Equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="109"/>
+        <location filename="../app/gui/devicetree.cpp" line="116"/>
         <source>Fleet overview</source>
         <translation>Vista de la flota</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="172"/>
+        <location filename="../app/gui/devicetree.cpp" line="179"/>
         <source>No line</source>
         <translation>Sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="178"/>
+        <location filename="../app/gui/devicetree.cpp" line="185"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="179"/>
+        <location filename="../app/gui/devicetree.cpp" line="186"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="187"/>
+        <location filename="../app/gui/devicetree.cpp" line="194"/>
         <source>feeder</source>
         <translation>alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="187"/>
+        <location filename="../app/gui/devicetree.cpp" line="194"/>
         <source>station</source>
         <translation>estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="193"/>
+        <location filename="../app/gui/devicetree.cpp" line="200"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="198"/>
+        <location filename="../app/gui/devicetree.cpp" line="205"/>
         <source>Port %1: %2</source>
         <translation>Puerto %1: %2</translation>
     </message>
@@ -6119,47 +6184,52 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FleetPage</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="29"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="30"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
         <source>Line</source>
         <translation>Línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="33"/>
         <source>State, worst first</source>
         <translation>Estado, el peor primero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
         <source>Sort by:</source>
         <translation>Ordenar por:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="36"/>
         <source>Needs attention only</source>
         <translation>Solo lo que requiere atención</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="115"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="117"/>
         <source>Devices: %1 · need attention: %2</source>
         <translation>Equipos: %1 · requieren atención: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="206"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="239"/>
+        <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
+        <translation>Aún no hay dispositivos: no ha llegado nada del broker de la planta.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="240"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Sin equipos: las líneas del espacio de trabajo aún no han encontrado ninguno.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="207"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="238"/>
         <source>No device needs attention.</source>
         <translation>Ningún equipo requiere atención.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.h" line="47"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="52"/>
         <source>Fleet</source>
         <translation>Flota</translation>
     </message>
@@ -6661,72 +6731,72 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="48"/>
+        <location filename="../app/gui/mainwindow.cpp" line="49"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="116"/>
+        <location filename="../app/gui/mainwindow.cpp" line="125"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="118"/>
+        <location filename="../app/gui/mainwindow.cpp" line="129"/>
         <source>Work &amp;context…</source>
         <translation>&amp;Contexto de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="122"/>
+        <location filename="../app/gui/mainwindow.cpp" line="133"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="124"/>
+        <location filename="../app/gui/mainwindow.cpp" line="135"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="125"/>
+        <location filename="../app/gui/mainwindow.cpp" line="136"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="126"/>
+        <location filename="../app/gui/mainwindow.cpp" line="137"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="134"/>
+        <location filename="../app/gui/mainwindow.cpp" line="145"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Límites de soldadura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="135"/>
+        <location filename="../app/gui/mainwindow.cpp" line="146"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="136"/>
+        <location filename="../app/gui/mainwindow.cpp" line="147"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="138"/>
+        <location filename="../app/gui/mainwindow.cpp" line="149"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="139"/>
+        <location filename="../app/gui/mainwindow.cpp" line="150"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="257"/>
+        <location filename="../app/gui/mainwindow.cpp" line="268"/>
         <source>new workspace</source>
         <translation>espacio de trabajo nuevo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="259"/>
+        <location filename="../app/gui/mainwindow.cpp" line="270"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n línea)</numerusform>
@@ -6734,28 +6804,28 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="262"/>
+        <location filename="../app/gui/mainwindow.cpp" line="273"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="267"/>
+        <location filename="../app/gui/mainwindow.cpp" line="278"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="272"/>
+        <location filename="../app/gui/mainwindow.cpp" line="283"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="282"/>
-        <location filename="../app/gui/mainwindow.cpp" line="285"/>
+        <location filename="../app/gui/mainwindow.cpp" line="293"/>
+        <location filename="../app/gui/mainwindow.cpp" line="296"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="286"/>
+        <location filename="../app/gui/mainwindow.cpp" line="297"/>
         <source>Written:
 %1
 
@@ -6766,12 +6836,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="294"/>
+        <location filename="../app/gui/mainwindow.cpp" line="305"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="295"/>
+        <location filename="../app/gui/mainwindow.cpp" line="306"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
@@ -6858,6 +6928,31 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
         <source>line-%1</source>
         <translation>linea-%1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="18"/>
+        <source>Connect to &amp;plant…</source>
+        <translation>Conectar con la &amp;planta…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="24"/>
+        <source>Disconnect from p&amp;lant</source>
+        <translation>Desconectar de la p&amp;lanta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="62"/>
+        <source>Plant: %1</source>
+        <translation>Planta: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="63"/>
+        <source>Plant: %1 not connected</source>
+        <translation>Planta: %1 sin conexión</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowplant.cpp" line="64"/>
+        <source>Watching %1 on the plant&apos;s broker</source>
+        <translation>Siguiendo %1 en el broker de la planta</translation>
     </message>
 </context>
 <context>
@@ -7009,6 +7104,59 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
         <source>last read %1</source>
         <translation>última lectura %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::PlantDialog</name>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="24"/>
+        <source>Connect to plant</source>
+        <translation>Conectar con la planta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="34"/>
+        <source>every site</source>
+        <translation>todas las plantas</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="35"/>
+        <source>The fleet overview shows every device the line PCs publish there; their pages are read-only. This window publishes nothing.</source>
+        <translation>La vista de la flota muestra cada dispositivo que los PC de línea publican allí; sus páginas son de solo lectura. Esta ventana no publica nada.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="40"/>
+        <source>&amp;Broker:</source>
+        <translation>&amp;Broker:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="41"/>
+        <source>P&amp;ort:</source>
+        <translation>P&amp;uerto:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="42"/>
+        <source>&amp;User name:</source>
+        <translation>&amp;Usuario:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="43"/>
+        <source>&amp;Password:</source>
+        <translation>&amp;Contraseña:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="44"/>
+        <source>&amp;Site:</source>
+        <translation>P&amp;lanta:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="46"/>
+        <source>Connect</source>
+        <translation>Conectar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/dialogs/plantdialog.cpp" line="74"/>
+        <source>the broker&apos;s host name or address</source>
+        <translation>nombre o dirección del broker</translation>
     </message>
 </context>
 <context>
@@ -7451,6 +7599,111 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <location filename="../app/gui/pages/jointcharts.cpp" line="145"/>
         <source>No recovered joints listed</source>
         <translation>Ninguna soldadura recuperada en la lista</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::gui::RemoteDevicePage</name>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <source>Tip</source>
+        <translation>Punta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <source>Setpoint</source>
+        <translation>Consigna</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <source>Power</source>
+        <translation>Potencia</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Ended</source>
+        <translation>Fin</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Verdict</source>
+        <translation>Veredicto</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Dip (K)</source>
+        <translation>Caída (K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <source>Recovery (s)</source>
+        <translation>Recuperación (s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="70"/>
+        <source>‹ Fleet overview</source>
+        <translation>‹ Vista de la flota</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="78"/>
+        <source>Live values</source>
+        <translation>Valores en vivo</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="81"/>
+        <source>Recent joints, newest first</source>
+        <translation>Soldaduras recientes, la más nueva primero</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="100"/>
+        <source>No such device on the plant&apos;s broker</source>
+        <translation>Ese dispositivo no está en el broker de la planta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="104"/>
+        <source>%1 · %2 on %3 (%4)</source>
+        <translation>%1 · %2 en %3 (%4)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="108"/>
+        <source>Read-only: published by %1 %2 through the plant&apos;s broker; current.</source>
+        <translation>Solo lectura: publicado por %1 %2 a través del broker de la planta; actual.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="110"/>
+        <source>Read-only, not current: %1. The values are the last published.</source>
+        <translation>Solo lectura, no actual: %1. Los valores son los últimos publicados.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="122"/>
+        <source>No errors or alarms in force.</source>
+        <translation>Ningún error ni alarma activos.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="123"/>
+        <source>In force: %1</source>
+        <translation>Activos: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="139"/>
+        <source>never</source>
+        <translation>nunca</translation>
     </message>
 </context>
 <context>

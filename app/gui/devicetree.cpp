@@ -96,13 +96,20 @@ bool DeviceTree::selectFleet() {
     return true;
 }
 
+void DeviceTree::setPlantWatched(bool watched) {
+    if (watched == m_plantWatched)
+        return;
+    m_plantWatched = watched;
+    rebuild();
+}
+
 void DeviceTree::rebuild() {
     const int line = selectedLine();
     const QPointer<DeviceModel> device = selectedDevice();
     const int port = selectedPort();
     blockSignals(true);
     clear();
-    if (m_workspace.count() > 0) {
+    if (m_workspace.count() > 0 || m_plantWatched) {
         auto *fleet = new QTreeWidgetItem(this);
         fleet->setData(0, kLineRole, kFleet);
         fleet->setData(0, kDeviceRole, 0);

@@ -1,9 +1,10 @@
-// DeviceTree: line -> station (model, address) -> ports (tool); feeder. While a workspace is open,
-// its fleet overview heads the tree (line kFleet, no device). The connection bar's line comes first
-// (hidden while a workspace is open and it is not connected), then each line of the open workspace
-// under its name, its devices under the names the workspace gives them. Selecting an item selects
-// that line, device (and port) on every page. Labels follow the models live and are never cut: a
-// long one wraps at its spaces, and each label's tooltip carries its whole text.
+// DeviceTree: line -> station (model, address) -> ports (tool); feeder. While a workspace is open
+// or a plant is watched, the fleet overview heads the tree (line kFleet, no device). The connection
+// bar's line comes first (hidden while a workspace is open and it is not connected), then each line
+// of the open workspace under its name, its devices under the names the workspace gives them.
+// Selecting an item selects that line, device (and port) on every page. Labels follow the models
+// live and are never cut: a long one wraps at its spaces, and each label's tooltip carries its
+// whole text.
 #pragma once
 
 #include "model/session.h"
@@ -29,8 +30,10 @@ public:
     [[nodiscard]] int selectedPort() const;
     // Selects the device of `line` (and its port when > 0); false when the tree does not hold it.
     bool select(int line, const model::DeviceModel *device, int port = 0);
-    // Selects the fleet overview; false while no workspace is open.
+    // Selects the fleet overview; false while no workspace is open and no plant watched.
     bool selectFleet();
+    // The fleet overview also heads the tree while the window watches a plant's broker.
+    void setPlantWatched(bool watched);
 
 Q_SIGNALS:
     void selectionChangedTo(int line, tipscope::model::DeviceModel *device, int port);
@@ -53,6 +56,7 @@ private:
     model::Session &m_session;
     model::Workspace &m_workspace;
     QTimer m_relabel;
+    bool m_plantWatched = false;
 };
 
 } // namespace tipscope::gui

@@ -1,5 +1,6 @@
 // tipscope: the desktop application.
 #include "i18n/translations.h"
+#include "link/tcptransport.h"
 #include "mainwindow.h"
 #include "model/appsettings.h"
 #include "screenshots.h"
@@ -64,7 +65,16 @@ int main(int argc, char *argv[]) {
         QStringLiteral("screenshots"),
         QApplication::translate("main", "Save a PNG of every page into DIR, then quit."),
         QStringLiteral("DIR"));
-    parser.addOptions({demo, port, tcp, workspace, shots});
+    const QCommandLineOption plant(
+        QStringLiteral("plant"),
+        QApplication::translate("main", "Watch the devices published to this MQTT broker on the "
+                                        "fleet overview."),
+        QStringLiteral("HOST:PORT"));
+    const QCommandLineOption plantSite(
+        QStringLiteral("plant-site"),
+        QApplication::translate("main", "With --plant: only this site's devices."),
+        QStringLiteral("SITE"));
+    parser.addOptions({demo, port, tcp, workspace, shots, plant, plantSite});
     parser.process(app);
     if (headless && !parser.isSet(shots)) {
         QTextStream(stderr) << QApplication::translate(
@@ -102,6 +112,19 @@ int main(int argc, char *argv[]) {
         }
     } else if (!connectNow) {
         window.reopenLastWorkspace();
+    }
+    if (parser.isSet(plant)) {
+        tipscope::mqtt::MqttSettings broker;
+        quint16 brokerPort = 0;
+        if (!tipscope::link::TcpTransport::parseHostPort(parser.value(plant), &broker.host,
+                                                         &brokerPort)) {
+            QTextStream(stderr) << QApplication::translate(
+                                       "main", "tipscope: --plant takes the broker as HOST:PORT")
+                                << Qt::endl;
+            return 2;
+        }
+        broker.port = brokerPort;
+        window.watchPlant(broker, parser.value(plantSite));
     }
     if (parser.isSet(shots))
         takeScreenshots(window, parser.value(shots));

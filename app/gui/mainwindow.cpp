@@ -12,6 +12,7 @@
 #include "linepages.h"
 #include "linkstatuslabel.h"
 #include "pages/fleet/fleetpage.h"
+#include "pages/fleet/remotedevicepage.h"
 #include "pages/page.h"
 
 #include "model/joints/jointlimitsfile.h"
@@ -56,6 +57,10 @@ MainWindow::MainWindow(QWidget *parent)
     m_stack->addWidget(m_barPages);
     m_fleet = new FleetPage(m_workspace, m_stack);
     m_stack->addWidget(m_fleet);
+    m_remotePage = new RemoteDevicePage(m_plant, m_stack);
+    m_stack->addWidget(m_remotePage);
+    connect(m_fleet, &FleetPage::remoteDeviceActivated, this, &MainWindow::showRemoteDevice);
+    connect(m_remotePage, &RemoteDevicePage::backRequested, this, &MainWindow::showFleet);
     connect(m_fleet, &FleetPage::deviceActivated, this,
             [this](int line, DeviceModel *device) { m_tree->select(line, device); });
     connect(&m_context, &journal::WorkContextFollower::contextChanged, this,
@@ -77,6 +82,9 @@ MainWindow::MainWindow(QWidget *parent)
     m_workspaceLabel->hide();
     statusBar()->addWidget(m_stateLabel, 1);
     statusBar()->addPermanentWidget(m_workspaceLabel);
+    m_plantLabel = new QLabel(this);
+    m_plantLabel->hide();
+    statusBar()->addPermanentWidget(m_plantLabel);
     statusBar()->addPermanentWidget(new JournalStatusButton(m_journal, m_context, this));
     statusBar()->addPermanentWidget(m_linkStatus);
     buildMenus();
@@ -109,12 +117,15 @@ MainWindow::MainWindow(QWidget *parent)
 }
 
 MainWindow::~MainWindow() {
+    m_fleet->watchPlant(nullptr); // its remote tiles read the watch, which goes first
     dropWorkspace();
 }
 
 void MainWindow::buildMenus() {
     QMenu *file = menuBar()->addMenu(tr("&File"));
     buildWorkspaceMenu(*file);
+    buildPlantMenu(*file);
+    file->addSeparator();
     file->addAction(tr("Work &context…"), this, [this] {
         WorkContextDialog dialog(m_context, this);
         dialog.exec();

@@ -5,6 +5,8 @@
 // keeps every line's joints and events in the journal (the default file, shared with the CLI),
 // stamped with the work context of the shared context file, and judges joints by the shared
 // joint limits file unless a workspace line names its own.
+// File › Connect to plant watches the plant's broker: every device other TipScopes publish joins
+// the fleet overview, with read-only pages (mainwindowplant.cpp).
 // Window geometry, splitter state, the last connection and the last workspace are remembered.
 #pragma once
 
@@ -15,6 +17,8 @@
 #include "journal/workcontextfile.h"
 #include "model/session.h"
 #include "model/workspace/workspace.h"
+#include "mqtt/mqttsettings.h"
+#include "plant/plantwatch.h"
 
 #include <QMainWindow>
 #include <map>
@@ -26,6 +30,7 @@ class QSplitter;
 class QLabel;
 class QStackedWidget;
 class QMenu;
+class QAction;
 
 namespace tipscope::gui {
 
@@ -35,6 +40,7 @@ class DeviceTree;
 class LinkStatusLabel;
 class LinePages;
 class Page;
+class RemoteDevicePage;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -70,6 +76,11 @@ public:
     void reopenLastWorkspace();
     void writeSupportReport();
     void editJointLimits();
+    // Watches the plant's broker: every device published there joins the fleet overview.
+    void watchPlant(const mqtt::MqttSettings &broker, const QString &site);
+    void stopWatchingPlant();
+    [[nodiscard]] plant::PlantWatch &plantWatch() { return m_plant; }
+    [[nodiscard]] RemoteDevicePage &remoteDevicePage() const { return *m_remotePage; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -77,6 +88,9 @@ protected:
 private:
     void buildMenus();
     void buildWorkspaceMenu(QMenu &file);
+    void buildPlantMenu(QMenu &file);
+    void showRemoteDevice(const QString &root);
+    void updatePlantStatus();
     void applyPreferences(const model::AppSettings &settings);
     void applyPreferencesTo(model::Session &session) const;
     void onSelection(int line, model::DeviceModel *device, int port);
@@ -110,6 +124,11 @@ private:
     LinkStatusLabel *m_linkStatus;
     QLabel *m_stateLabel;
     QLabel *m_workspaceLabel;
+    plant::PlantWatch m_plant;
+    QString m_plantWhere; // host:port while watching
+    RemoteDevicePage *m_remotePage;
+    QLabel *m_plantLabel;
+    QAction *m_stopWatchingPlant = nullptr;
 };
 
 } // namespace tipscope::gui

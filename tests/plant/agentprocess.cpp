@@ -28,10 +28,13 @@ AgentProcess::~AgentProcess() {
 
 void AgentProcess::configure(const QString &tcpLine, int brokerPort, const QJsonObject &broker,
                              const QJsonObject &extra) {
-    const QJsonObject line{
-        {QStringLiteral("name"), QStringLiteral("cell-1")},
-        {QStringLiteral("connection"), QJsonObject{{QStringLiteral("kind"), QStringLiteral("tcp")},
-                                                   {QStringLiteral("address"), tcpLine}}}};
+    const QJsonObject connection =
+        tcpLine == QLatin1String("demo")
+            ? QJsonObject{{QStringLiteral("kind"), QStringLiteral("demo")}}
+            : QJsonObject{{QStringLiteral("kind"), QStringLiteral("tcp")},
+                          {QStringLiteral("address"), tcpLine}};
+    const QJsonObject line{{QStringLiteral("name"), QStringLiteral("cell-1")},
+                           {QStringLiteral("connection"), connection}};
     writeJson(m_dir.filePath(QStringLiteral("lines.json")),
               {{QStringLiteral("format"), QStringLiteral("tipscope-workspace")},
                {QStringLiteral("version"), 1},

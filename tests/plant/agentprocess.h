@@ -14,7 +14,8 @@ public:
     AgentProcess();
     ~AgentProcess();
 
-    // The configuration: `broker` is merged into the defaults (127.0.0.1:port, keep-alive 5 s,
+    // The configuration of a line "cell-1" reached at `tcpLine` ("demo": the built-in demo line,
+    // which solders): `broker` is merged into the defaults (127.0.0.1:port, keep-alive 5 s,
     // retries at most a second apart); `extra` into the top level.
     void configure(const QString &tcpLine, int brokerPort, const QJsonObject &broker = {},
                    const QJsonObject &extra = {});

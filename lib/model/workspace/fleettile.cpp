@@ -150,7 +150,7 @@ bool fleetTileBefore(const FleetTileState &a, const FleetTileState &b, FleetSort
 
 FleetTile::FleetTile(const Workspace &workspace, int line, DeviceModel &device, Clock clock,
                      QObject *parent)
-    : QObject(parent)
+    : FleetTileSource(parent)
     , m_workspace(workspace)
     , m_line(line)
     , m_device(&device)

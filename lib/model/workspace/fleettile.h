@@ -83,7 +83,25 @@ enum class FleetSortKey { Name, Line, State };
 [[nodiscard]] bool fleetTileBefore(const FleetTileState &a, const FleetTileState &b,
                                    FleetSortKey key);
 
-class FleetTile : public QObject {
+// What a fleet overview draws a tile from: a device of this window's workspace (FleetTile), or
+// one another TipScope publishes to the plant's broker (plant::RemoteTile). changed() says that
+// state() may differ; sampleArrived() comes for every tip reading, changed or not.
+class FleetTileSource : public QObject {
+    Q_OBJECT
+public:
+    using QObject::QObject;
+
+    [[nodiscard]] virtual FleetTileState state() const = 0;
+    // The workspace line and the device of a local tile; -1 and null for a remote one.
+    [[nodiscard]] virtual int lineIndex() const { return -1; }
+    [[nodiscard]] virtual DeviceModel *device() const { return nullptr; }
+
+Q_SIGNALS:
+    void changed();
+    void sampleArrived();
+};
+
+class FleetTile : public FleetTileSource {
     Q_OBJECT
 public:
     using Clock = std::function<qint64()>; // milliseconds since the epoch
@@ -92,15 +110,11 @@ public:
     FleetTile(const Workspace &workspace, int line, DeviceModel &device, Clock clock = {},
               QObject *parent = nullptr);
 
-    [[nodiscard]] int lineIndex() const { return m_line; }
-    [[nodiscard]] DeviceModel *device() const { return m_device; }
-    [[nodiscard]] FleetTileState state() const;
+    [[nodiscard]] int lineIndex() const override { return m_line; }
+    [[nodiscard]] DeviceModel *device() const override { return m_device; }
+    [[nodiscard]] FleetTileState state() const override;
     // "Line down since 08:12" (with the date when not today by the clock), "Line down".
     [[nodiscard]] static QString downText(std::optional<qint64> sinceMs, qint64 nowMs);
-
-Q_SIGNALS:
-    void changed();
-    void sampleArrived();
 
 private:
     void onLineUpChanged(bool up);

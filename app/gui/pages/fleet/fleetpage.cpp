@@ -4,6 +4,8 @@
 #include "widgets/flowlayout.h"
 
 #include "model/workspace/workspace.h"
+#include "plant/plantwatch.h"
+#include "plant/remotetile.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -159,16 +161,47 @@ void FleetPage::removeTilesIf(const std::function<bool(const FleetTileWidget *)>
 }
 
 void FleetPage::addTile(int line, model::DeviceModel *device) {
-    auto *tile = new FleetTileWidget(new model::FleetTile(m_workspace, line, *device), m_host);
-    connect(tile, &FleetTileWidget::dirtied, this, &FleetPage::scheduleRefresh);
-    connect(tile, &FleetTileWidget::latencyMeasured, this, &FleetPage::recordLatency);
+    FleetTileWidget *tile = placeTile(new model::FleetTile(m_workspace, line, *device));
     connect(tile, &FleetTileWidget::activated, this, [this, tile] {
         if (model::DeviceModel *device = tile->tile().device())
             Q_EMIT deviceActivated(tile->tile().lineIndex(), device);
     });
+}
+
+void FleetPage::watchPlant(const plant::PlantWatch *watch) {
+    if (m_plant)
+        disconnect(m_plant, nullptr, this, nullptr);
+    removeTilesIf([](const FleetTileWidget *tile) {
+        return qobject_cast<const plant::RemoteTile *>(&tile->tile()) != nullptr;
+    });
+    m_plant = watch;
+    if (watch) {
+        connect(watch, &plant::PlantWatch::deviceAdded, this, [this](const QString &root) {
+            addRemoteTile(root);
+            arrange();
+        });
+        connect(watch, &plant::PlantWatch::cleared, this, [this, watch] { watchPlant(watch); });
+        for (const QString &root : watch->roots())
+            addRemoteTile(root);
+    }
+    arrange();
+}
+
+void FleetPage::addRemoteTile(const QString &root) {
+    FleetTileWidget *tile = placeTile(new plant::RemoteTile(*m_plant, root));
+    connect(tile, &FleetTileWidget::activated, this,
+            [this, root] { Q_EMIT remoteDeviceActivated(root); });
+    tile->refresh();
+}
+
+FleetTileWidget *FleetPage::placeTile(model::FleetTileSource *source) {
+    auto *tile = new FleetTileWidget(source, m_host);
+    connect(tile, &FleetTileWidget::dirtied, this, &FleetPage::scheduleRefresh);
+    connect(tile, &FleetTileWidget::latencyMeasured, this, &FleetPage::recordLatency);
     m_flow->addWidget(tile);
     m_flow->setAlignment(tile, Qt::AlignTop);
     m_tiles.append(tile);
+    return tile;
 }
 
 void FleetPage::scheduleRefresh() {
@@ -202,9 +235,9 @@ void FleetPage::arrange() {
         m_flow->invalidate();
     m_summary->setText(summaryText());
     const bool none = shownTiles().isEmpty();
-    m_empty->setText(m_tiles.isEmpty()
-                         ? tr("No devices: the workspace's lines have found none yet.")
-                         : tr("No device needs attention."));
+    m_empty->setText(!m_tiles.isEmpty() ? tr("No device needs attention.")
+                     : m_plant ? tr("No devices yet: nothing has come from the plant's broker.")
+                               : tr("No devices: the workspace's lines have found none yet."));
     m_empty->setVisible(none);
 }
 

@@ -1,5 +1,6 @@
 // FleetPage: the fleet overview: every device of every line of a Workspace as a tile
-// (FleetTileWidget), in rows that wrap, so a narrow window shows one column and a wall display
+// (FleetTileWidget), and every device of a watched plant's broker (plant::RemoteTile), in rows
+// that wrap, so a narrow window shows one column and a wall display
 // many. A toolbar sorts the tiles by name, line or state (the worst first) and can show only the
 // devices that need attention (FleetTileState::needsAttention()). Clicking a tile (or Enter on
 // it) is deviceActivated(), for the window to open that device's own pages.
@@ -31,6 +32,10 @@ class DeviceModel;
 class Workspace;
 } // namespace tipscope::model
 
+namespace tipscope::plant {
+class PlantWatch;
+}
+
 namespace tipscope::gui {
 
 class FlowLayout;
@@ -56,6 +61,9 @@ public:
     [[nodiscard]] int columnCount() const;
     // Refreshes every tile that may have changed now, without waiting for the timer.
     void refreshNow();
+    // Also shows every device the plant's broker publishes (none: only the workspace's). The
+    // watch must outlive the page or be replaced first.
+    void watchPlant(const plant::PlantWatch *watch);
     // The summary above the tiles ("Devices: 8 · need attention: 2").
     [[nodiscard]] QString summaryText() const;
 
@@ -64,6 +72,8 @@ public:
 
 Q_SIGNALS:
     void deviceActivated(int line, tipscope::model::DeviceModel *device);
+    // A tile of a device another TipScope publishes: its topic root.
+    void remoteDeviceActivated(const QString &root);
 
 protected:
     void showEvent(QShowEvent *event) override;
@@ -73,12 +83,15 @@ private:
     void syncLine(int line);
     void removeTilesIf(const std::function<bool(const FleetTileWidget *)> &gone);
     void addTile(int line, model::DeviceModel *device);
+    void addRemoteTile(const QString &root);
+    FleetTileWidget *placeTile(model::FleetTileSource *source);
     void scheduleRefresh();
     // Puts the tiles in order and applies the filter; relays them out only if that moved one.
     void arrange();
     void recordLatency(double ms);
 
     model::Workspace &m_workspace;
+    const plant::PlantWatch *m_plant = nullptr;
     QComboBox *m_sort;
     QCheckBox *m_attention;
     QLabel *m_summary;

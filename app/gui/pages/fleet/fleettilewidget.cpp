@@ -18,7 +18,7 @@ constexpr int kWidthInChars = 46; // a port's row unabridged in German, four til
 constexpr int kBorder = 2;
 } // namespace
 
-FleetTileWidget::FleetTileWidget(model::FleetTile *tile, QWidget *parent)
+FleetTileWidget::FleetTileWidget(model::FleetTileSource *tile, QWidget *parent)
     : QWidget(parent)
     , m_tile(tile) {
     m_tile->setParent(this);
@@ -26,8 +26,8 @@ FleetTileWidget::FleetTileWidget(model::FleetTile *tile, QWidget *parent)
     setCursor(Qt::PointingHandCursor);
     setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
     m_clock.start();
-    connect(m_tile, &model::FleetTile::changed, this, &FleetTileWidget::markDirty);
-    connect(m_tile, &model::FleetTile::sampleArrived, this, [this] {
+    connect(m_tile, &model::FleetTileSource::changed, this, &FleetTileWidget::markDirty);
+    connect(m_tile, &model::FleetTileSource::sampleArrived, this, [this] {
         if (m_arrivedNs < 0)
             m_arrivedNs = m_clock.nsecsElapsed();
         markDirty();

@@ -24,9 +24,9 @@ class FleetTileWidget : public QWidget {
     Q_OBJECT
 public:
     // Takes ownership of `tile`.
-    FleetTileWidget(model::FleetTile *tile, QWidget *parent = nullptr);
+    FleetTileWidget(model::FleetTileSource *tile, QWidget *parent = nullptr);
 
-    [[nodiscard]] model::FleetTile &tile() const { return *m_tile; }
+    [[nodiscard]] model::FleetTileSource &tile() const { return *m_tile; }
     // The state as last drawn (or about to be).
     [[nodiscard]] const model::FleetTileState &shown() const { return m_shown; }
     // Whether a reading or a change arrived since the last refresh().
@@ -63,7 +63,7 @@ private:
     [[nodiscard]] QString portLine(const model::FleetPortState &port) const;
     [[nodiscard]] int lineHeight() const;
 
-    model::FleetTile *m_tile;
+    model::FleetTileSource *m_tile;
     model::FleetTileState m_shown;
     bool m_dirty = true;
     QElapsedTimer m_clock;

@@ -1,0 +1,156 @@
+#include "pages/fleet/remotedevicepage.h"
+
+#include "model/joints/jointtable.h"
+#include "plant/plantwatch.h"
+#include "plant/remotetile.h"
+
+#include <QDateTime>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QJsonObject>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace tipscope::gui {
+
+namespace {
+constexpr int kRefreshMs = 250;
+
+QTableWidget *table(const QStringList &headers, QWidget *parent) {
+    auto *t = new QTableWidget(0, int(headers.size()), parent);
+    t->setHorizontalHeaderLabels(headers);
+    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->setSelectionBehavior(QAbstractItemView::SelectRows);
+    t->verticalHeader()->hide();
+    t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    t->horizontalHeader()->setStretchLastSection(true);
+    return t;
+}
+
+void fill(QTableWidget *t, const QList<QStringList> &rows) {
+    t->setRowCount(int(rows.size()));
+    for (int r = 0; r < rows.size(); ++r)
+        for (int c = 0; c < rows.at(r).size(); ++c) {
+            auto *item = t->item(r, c);
+            if (!item) {
+                item = new QTableWidgetItem;
+                t->setItem(r, c, item);
+            }
+            item->setText(rows.at(r).at(c));
+        }
+}
+
+QString number(const QJsonObject &o, const char *key, int decimals = 0) {
+    const QJsonValue v = o.value(QLatin1String(key));
+    return v.isDouble() ? QLocale().toString(v.toDouble(), 'f', decimals) : QStringLiteral("—");
+}
+} // namespace
+
+RemoteDevicePage::RemoteDevicePage(const plant::PlantWatch &watch, QWidget *parent)
+    : QWidget(parent)
+    , m_watch(watch) {
+    m_title = new QLabel(this);
+    QFont bold = m_title->font();
+    bold.setBold(true);
+    bold.setPointSizeF(bold.pointSizeF() * 1.2);
+    m_title->setFont(bold);
+    m_title->setWordWrap(true);
+    m_state = new QLabel(this);
+    m_state->setWordWrap(true);
+    m_ports =
+        table({tr("Port"), tr("Tool"), tr("Tip"), tr("Setpoint"), tr("Power"), tr("Status")}, this);
+    m_alarms = new QLabel(this);
+    m_alarms->setWordWrap(true);
+    m_joints = table(
+        {tr("Ended"), tr("Port"), tr("Tool"), tr("Verdict"), tr("Dip (K)"), tr("Recovery (s)")},
+        this);
+    auto *back = new QPushButton(tr("‹ Fleet overview"), this);
+    connect(back, &QPushButton::clicked, this, &RemoteDevicePage::backRequested);
+    auto *top = new QHBoxLayout;
+    top->addWidget(m_title, 1);
+    top->addWidget(back, 0, Qt::AlignTop);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(m_state);
+    layout->addWidget(new QLabel(tr("Live values"), this));
+    layout->addWidget(m_ports, 1);
+    layout->addWidget(m_alarms);
+    layout->addWidget(new QLabel(tr("Recent joints, newest first"), this));
+    layout->addWidget(m_joints, 2);
+    m_refresh.setSingleShot(true);
+    m_refresh.setInterval(kRefreshMs);
+    connect(&m_refresh, &QTimer::timeout, this, &RemoteDevicePage::refresh);
+    connect(&watch, &plant::PlantWatch::deviceChanged, this, [this](const QString &root) {
+        if (root == m_root && !m_refresh.isActive())
+            m_refresh.start();
+    });
+}
+
+void RemoteDevicePage::showDevice(const QString &root) {
+    m_root = root;
+    refresh();
+}
+
+void RemoteDevicePage::refresh() {
+    const plant::RemoteDevice *d = m_watch.device(m_root);
+    if (!d) {
+        m_title->setText(tr("No such device on the plant's broker"));
+        return;
+    }
+    const model::FleetTileState s = plant::remoteTileState(*d, QDateTime::currentMSecsSinceEpoch());
+    m_title->setText(tr("%1 · %2 on %3 (%4)").arg(s.deviceName, s.model, s.lineName, d->site));
+    const QString agent = d->status.value(QStringLiteral("agent")).toString();
+    m_state->setText(
+        s.lineUp
+            ? tr("Read-only: published by %1 %2 through the plant's broker; current.")
+                  .arg(agent, d->status.value(QStringLiteral("version")).toString())
+            : tr("Read-only, not current: %1. The values are the last published.").arg(s.lineText));
+    m_state->setStyleSheet(s.lineUp ? QString() : QStringLiteral("color: #b35c00;"));
+    QList<QStringList> ports;
+    for (const model::FleetPortState &p : s.ports)
+        ports.append({QString::number(p.number), p.toolText, p.tipText, p.setpointText, p.powerText,
+                      p.statusText});
+    fill(m_ports, ports);
+    m_ports->setEnabled(s.lineUp); // greyed: not current
+    QStringList problems;
+    for (const model::FleetProblem &problem : s.problems)
+        problems.append(problem.text);
+    m_alarms->setText(problems.isEmpty()
+                          ? tr("No errors or alarms in force.")
+                          : tr("In force: %1").arg(problems.join(QStringLiteral("; "))));
+    QList<QStringList> joints;
+    for (auto it = d->joints.crbegin(); it != d->joints.crend(); ++it) {
+        const QJsonObject &j = *it;
+        const auto verdict =
+            model::jointVerdictFromName(j.value(QStringLiteral("verdict")).toString());
+        const QDateTime end =
+            QDateTime::fromString(j.value(QStringLiteral("end")).toString(), Qt::ISODateWithMs)
+                .toLocalTime();
+        const QJsonValue recovery = j.value(QStringLiteral("recovery_ms"));
+        joints.append({QLocale().toString(end, QLocale::ShortFormat),
+                       QString::number(j.value(QStringLiteral("port")).toInt()),
+                       j.value(QStringLiteral("tool")).toString(),
+                       verdict ? model::JointTableModel::verdictText(*verdict) : QString(),
+                       number(j, "dip_k"),
+                       recovery.isDouble() ? QLocale().toString(recovery.toDouble() / 1000, 'f', 2)
+                                           : tr("never")});
+    }
+    fill(m_joints, joints);
+}
+
+QStringList RemoteDevicePage::lines() const {
+    QStringList out{m_title->text(), m_state->text(), m_alarms->text()};
+    for (const QTableWidget *t : {m_ports, m_joints})
+        for (int r = 0; r < t->rowCount(); ++r) {
+            QStringList cells;
+            for (int c = 0; c < t->columnCount(); ++c)
+                cells.append(t->item(r, c) ? t->item(r, c)->text() : QString());
+            out.append(cells.join(QLatin1Char('|')));
+        }
+    return out;
+}
+
+} // namespace tipscope::gui

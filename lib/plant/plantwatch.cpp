@@ -1,0 +1,112 @@
+#include "plantwatch.h"
+
+#include "planttopics.h"
+
+#include "mqtt/mqtttopic.h"
+
+#include <QDateTime>
+#include <QJsonDocument>
+
+namespace tipscope::plant {
+
+PlantWatch::PlantWatch(QObject *parent)
+    : QObject(parent)
+    , m_client(std::make_unique<mqtt::MqttClient>()) {}
+
+PlantWatch::~PlantWatch() = default;
+
+void PlantWatch::start(const mqtt::MqttSettings &broker, const QString &site) {
+    stop();
+    m_client = std::make_unique<mqtt::MqttClient>();
+    mqtt::MqttSettings settings = broker;
+    settings.cleanSession = true; // a watcher wants the retained state, not a backlog
+    m_client->setSettings(settings);
+    m_filter = QStringLiteral("%1/%2/#").arg(
+        QLatin1String(kTopicPrefix),
+        site.trimmed().isEmpty() ? QStringLiteral("+") : mqtt::sanitizeTopicLevel(site));
+    (void)m_client->subscribe(m_filter, 1);
+    connect(m_client.get(), &mqtt::MqttClient::messageReceived, this, &PlantWatch::onMessage);
+    m_client->start();
+}
+
+void PlantWatch::stop() {
+    m_client->stop();
+    if (!m_devices.isEmpty()) {
+        m_devices.clear();
+        Q_EMIT cleared();
+    }
+}
+
+const RemoteDevice *PlantWatch::device(const QString &root) const {
+    const auto it = m_devices.constFind(root);
+    return it == m_devices.cend() ? nullptr : &*it;
+}
+
+void PlantWatch::onMessage(const QString &topic, const QByteArray &payload, bool) {
+    const auto where = parseDeviceTopic(topic);
+    if (!where || where->leaf.startsWith(QLatin1String("cmd/")))
+        return;
+    const QJsonObject json = QJsonDocument::fromJson(payload).object();
+    const QString root = deviceRoot(where->site, where->line, where->device);
+    const bool added = !m_devices.contains(root);
+    RemoteDevice &d = m_devices[root];
+    if (added) {
+        d.root = root;
+        d.site = where->site;
+        d.line = where->line;
+        d.device = where->device;
+    }
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const QString &leaf = where->leaf;
+    bool sample = false;
+    if (leaf == QLatin1String("status")) {
+        const bool online = json.value(QStringLiteral("online")).toBool();
+        if (!online && (d.online || !d.statusKnown))
+            d.offlineSinceMs = d.statusKnown ? now
+                                             : QDateTime::fromString(json.value("ts").toString(),
+                                                                     Qt::ISODateWithMs)
+                                                   .toMSecsSinceEpoch();
+        if (online)
+            d.offlineSinceMs.reset();
+        d.statusKnown = true;
+        d.online = online;
+        d.lineUp = json.value(QStringLiteral("line_up")).toBool(true);
+        d.status = json;
+    } else if (leaf == QLatin1String("info")) {
+        d.info = json;
+    } else if (leaf == QLatin1String("alarms")) {
+        d.alarms = json.value(QStringLiteral("alarms")).toArray();
+    } else if (leaf == QLatin1String("counters")) {
+        d.counters = json;
+    } else if (leaf == QLatin1String("joint")) {
+        const QString id = json.value(QStringLiteral("id")).toString();
+        const bool seen = std::any_of(d.joints.cbegin(), d.joints.cend(), [&id](const auto &j) {
+            return j.value(QStringLiteral("id")).toString() == id;
+        }); // QoS 1 may deliver a joint twice
+        if (!seen)
+            d.joints.append(json);
+        while (d.joints.size() > RemoteDevice::kMaxJoints)
+            d.joints.removeFirst();
+    } else if (leaf == QLatin1String("feeder/live")) {
+        d.feeder = json;
+        d.lastLiveMs = now;
+        sample = true;
+    } else if (leaf.startsWith(QLatin1String("port/")) && leaf.endsWith(QLatin1String("/live"))) {
+        bool ok = false;
+        const int port = leaf.section(QLatin1Char('/'), 1, 1).toInt(&ok);
+        if (!ok)
+            return;
+        // A batch: its newest sample is what the port shows now.
+        const QJsonArray samples = json.value(QStringLiteral("samples")).toArray();
+        d.live.insert(port, samples.isEmpty() ? json : samples.last().toObject());
+        d.lastLiveMs = now;
+        sample = true;
+    }
+    if (added)
+        Q_EMIT deviceAdded(root);
+    Q_EMIT deviceChanged(root);
+    if (sample)
+        Q_EMIT sampleArrived(root);
+}
+
+} // namespace tipscope::plant
