@@ -16,6 +16,7 @@
 #include <QLoggingCategory>
 #include <QTextStream>
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -234,13 +235,13 @@ qsizetype missingOf(const QList<QString> &ids, const PlantSubscriber &subscriber
     });
 }
 
-// Stops the broker for the outage, starts it again and waits for the backlog; false when the
-// broker did not come back.
-bool measureOutage(Plant &plant, int outageS) {
+// Stops the broker for the outage, starts it again and waits for the backlog. Returns when the
+// broker came back (ms since the epoch), nullopt when it did not.
+std::optional<qint64> measureOutage(Plant &plant, int outageS) {
     journal::JournalReader reader;
     if (const auto opened = reader.open(plant.agent.journalPath()); !opened) {
         printError(QStringLiteral("the agent's journal: ") + opened.error());
-        return false;
+        return std::nullopt;
     }
     const qint64 outageStartMs = nowMs();
     plant.broker->stop();
@@ -248,7 +249,7 @@ bool measureOutage(Plant &plant, int outageS) {
     QString error;
     if (!plant.broker->start(&error)) {
         printError(QStringLiteral("the broker did not start again: ") + error);
-        return false;
+        return std::nullopt;
     }
     const qint64 returnMs = nowMs();
     QList<QString> backlog;
@@ -259,10 +260,13 @@ bool measureOutage(Plant &plant, int outageS) {
                    missingOf(backlog, plant.subscriber) == 0;
         },
         kForwardTimeoutMs);
+    qint64 firstArrivalMs = std::numeric_limits<qint64>::max();
     qint64 lastArrivalMs = returnMs;
     for (const QString &id : backlog)
-        if (const auto arrivals = plant.subscriber.jointArrivals().value(id); !arrivals.isEmpty())
+        if (const auto arrivals = plant.subscriber.jointArrivals().value(id); !arrivals.isEmpty()) {
+            firstArrivalMs = std::min(firstArrivalMs, arrivals.first());
             lastArrivalMs = std::max(lastArrivalMs, arrivals.first());
+        }
     const double drainS = double(lastArrivalMs - returnMs) / 1000;
     printFigure(QStringLiteral("plant.outage_s"), double(returnMs - outageStartMs) / 1000,
                 QStringLiteral("s"));
@@ -272,22 +276,41 @@ bool measureOutage(Plant &plant, int outageS) {
         printError(QStringLiteral("%1 of the backlog's joints had not arrived after %2 s")
                        .arg(missingOf(backlog, plant.subscriber))
                        .arg(kForwardTimeoutMs / 1000));
+    // How much of the drain is the agent's reconnecting (its retries back off up to 1 s).
+    printFigure(QStringLiteral("plant.backlog_first_s"),
+                backlog.isEmpty() || firstArrivalMs > lastArrivalMs
+                    ? 0
+                    : double(firstArrivalMs - returnMs) / 1000,
+                QStringLiteral("s"), 2);
     printFigure(QStringLiteral("plant.backlog_drain_s"), drainS, QStringLiteral("s"), 2);
     printFigure(QStringLiteral("plant.backlog_drain_per_s"),
                 drainS > 0 ? double(backlog.size()) / drainS : 0, QStringLiteral("joints/s"));
-    return true;
+    return returnMs;
 }
 
-// Every joint the journal holds now, once the agent had the time to forward them all.
-void countLost(Plant &plant) {
+// Every joint the journal holds now, once the agent had the time to forward them all. Each
+// duplicate is noted with its copies' arrivals from the broker's return, to tell the agent's
+// resending from the broker's redelivery to the subscriber.
+void countLost(Plant &plant, qint64 returnMs) {
     journal::JournalReader reader;
     QList<QString> all;
     if (reader.open(plant.agent.journalPath()))
         all = journalJointIds(reader, std::nullopt, std::nullopt);
     (void)runUntil([&] { return missingOf(all, plant.subscriber) == 0; }, kForwardTimeoutMs);
     qint64 duplicates = 0;
-    for (const QList<qint64> &arrivals : plant.subscriber.jointArrivals())
-        duplicates += arrivals.size() - 1;
+    const auto &received = plant.subscriber.jointArrivals();
+    for (auto it = received.cbegin(); it != received.cend(); ++it) {
+        duplicates += it.value().size() - 1;
+        if (it.value().size() < 2)
+            continue;
+        QStringList atS;
+        for (const qint64 ms : it.value())
+            atS.append(QString::number(double(ms - returnMs) / 1000, 'f', 3));
+        printNote(QStringLiteral("joint %1 arrived %2 times, at %3 s from the broker's return")
+                      .arg(it.key())
+                      .arg(it.value().size())
+                      .arg(atS.join(QStringLiteral(", "))));
+    }
     printFigure(QStringLiteral("plant.joints_total"), double(all.size()), QStringLiteral("joints"),
                 0);
     printFigure(QStringLiteral("plant.joints_lost"), double(missingOf(all, plant.subscriber)),
@@ -316,9 +339,11 @@ int runPlantBench(const QStringList &args) {
     (void)runUntil([] { return false; }, kWarmupMs);
     if (!interrupted())
         measureLive(plant, options.seconds);
-    if (interrupted() || !measureOutage(plant, options.outageS))
+    const std::optional<qint64> returnMs =
+        interrupted() ? std::nullopt : measureOutage(plant, options.outageS);
+    if (!returnMs)
         return 1;
-    countLost(plant);
+    countLost(plant, *returnMs);
     if (plant.agent.process().state() != QProcess::Running) {
         printError(QStringLiteral("the agent ended during the run"));
         printAgentLog(plant.agent);

@@ -17,11 +17,14 @@
 //   plant.messages_per_s         every message the subscriber received in the window, a second
 //   plant.live_per_port_hz       live messages a port a second (the ports of the devices' info)
 //   plant.backlog_joints         joints of the agent's journal that started during the outage
+//   plant.backlog_first_s        from the broker's return until the first of those arrived (the
+//                                agent's reconnecting)
 //   plant.backlog_drain_s        from the broker's return until the last of those arrived
 //   plant.backlog_drain_per_s    the two's ratio
 //   plant.joints_total           the journal's joints of the whole run, once all are forwarded
 //   plant.joints_lost            of those, ids the subscriber never received (must be 0)
-//   plant.joints_duplicated      copies received beyond the first (QoS 1 allows them)
+//   plant.joints_duplicated      copies received beyond the first (QoS 1 allows them); each
+//                                duplicated joint is noted on stderr with its copies' arrivals
 // A benchmark: it asserts nothing, but exits non-zero when it could not measure (Mosquitto not
 // installed, a process that did not start, devices that never came online).
 #pragma once
