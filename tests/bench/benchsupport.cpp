@@ -10,12 +10,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <sys/resource.h>
 #include <unistd.h>
 
 namespace tipscope::bench {
 
 namespace {
+
+volatile std::sig_atomic_t g_interrupted = 0;
 
 QTextStream &out() {
     static QTextStream s(stdout);
@@ -114,6 +117,32 @@ void waitMs(int ms) {
     QEventLoop loop;
     QTimer::singleShot(ms, &loop, &QEventLoop::quit);
     loop.exec();
+}
+
+bool runUntil(const std::function<bool()> &done, int timeoutMs) {
+    QEventLoop loop;
+    QTimer check;
+    QObject::connect(&check, &QTimer::timeout, &loop, [&] {
+        if (done() || interrupted())
+            loop.quit();
+    });
+    check.start(100);
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    if (!done() && !interrupted())
+        loop.exec();
+    return done();
+}
+
+void stopOnSignals() {
+    struct sigaction action {};
+    action.sa_handler = [](int) { g_interrupted = 1; };
+    ::sigemptyset(&action.sa_mask);
+    ::sigaction(SIGINT, &action, nullptr);
+    ::sigaction(SIGTERM, &action, nullptr);
+}
+
+bool interrupted() {
+    return g_interrupted != 0;
 }
 
 double quantile(QList<double> values, double p) {

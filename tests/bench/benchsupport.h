@@ -8,6 +8,7 @@
 
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <optional>
 
 namespace tipscope::bench {
@@ -33,6 +34,13 @@ void printMachineContext();
 [[nodiscard]] qint64 selfStatusBytes(const char *field);
 // Runs the event loop for `ms`.
 void waitMs(int ms);
+// Runs the event loop (no polling, unlike QTest::qWait) until `done` holds, checked every 100 ms,
+// or `timeoutMs` passed, or SIGINT or SIGTERM came after stopOnSignals(); returns done().
+[[nodiscard]] bool runUntil(const std::function<bool()> &done, int timeoutMs);
+// From now on SIGINT and SIGTERM end every runUntil() and make interrupted() true, so a bench
+// that starts processes can still stop them all on its way out.
+void stopOnSignals();
+[[nodiscard]] bool interrupted();
 
 // The p-quantile (0..1) of `values` by the nearest rank; 0 for an empty list.
 [[nodiscard]] double quantile(QList<double> values, double p);

@@ -2,17 +2,13 @@
 
 #include "benchsupport.h"
 #include "fleetday.h"
+#include "simstations.h"
 
 #include "model/workspace/workspace.h"
 #include "pages/fleet/fleetpage.h"
-#include "ptyfixtures.h"
 
 #include <QElapsedTimer>
-#include <QFile>
-#include <QProcess>
-#include <QTemporaryDir>
 #include <QTextStream>
-#include <csignal>
 #include <memory>
 #include <vector>
 
@@ -26,57 +22,6 @@ constexpr int kConnectMs = 120000;
 // Discovery, the first reading of every setting and the tips heating up stay out of the figures.
 constexpr int kWarmupMs = 10000;
 constexpr int kDayHours = 24;
-
-// One simulated line: a tipscope-sim started detached, its address read from the file its
-// standard output goes to. Detached, the simulator leaves no pipe or process handle in this
-// process, whose event loop would otherwise poll three of them a line beside the line's socket:
-// what is measured is what the application has, a socket a line.
-class SimLine {
-public:
-    explicit SimLine(QString name)
-        : m_name(std::move(name)) {}
-    ~SimLine() {
-        if (m_pid > 0)
-            ::kill(pid_t(m_pid), SIGTERM);
-    }
-    SimLine(const SimLine &) = delete;
-    SimLine &operator=(const SimLine &) = delete;
-
-    // Starts the simulator and returns the address it serves, or empty with `error` set.
-    [[nodiscard]] QString start(const QStringList &args, QString *error) {
-        const QString out = m_dir.filePath(QStringLiteral("out"));
-        QProcess process;
-        process.setProgram(testing::binaryPath(QStringLiteral("tipscope-sim")));
-        process.setArguments(args);
-        process.setStandardOutputFile(out);
-        process.setStandardErrorFile(m_dir.filePath(QStringLiteral("err")));
-        if (!m_dir.isValid() || !process.startDetached(&m_pid)) {
-            *error = QStringLiteral("tipscope-sim did not start");
-            return {};
-        }
-        QFile file(out);
-        QElapsedTimer waited;
-        waited.start();
-        while (waited.elapsed() < 10000) {
-            if (file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-                const QByteArray first = file.readLine();
-                file.close();
-                if (first.endsWith('\n'))
-                    return QString::fromLocal8Bit(first).trimmed();
-            }
-            waitMs(50);
-        }
-        *error = QStringLiteral("tipscope-sim printed no address");
-        return {};
-    }
-    [[nodiscard]] const QString &name() const { return m_name; }
-    [[nodiscard]] qint64 pid() const { return m_pid; }
-
-private:
-    QString m_name;
-    QTemporaryDir m_dir;
-    qint64 m_pid = 0;
-};
 
 // What a line's link statistics say at one moment.
 struct LineCounts {
@@ -102,26 +47,16 @@ model::WorkspaceLine tcpLine(const QString &name, const QString &where) {
 }
 
 // Starts the simulators and returns the workspace file of their lines; empty on failure.
-model::WorkspaceFile startSimulators(std::vector<std::unique_ptr<SimLine>> &sims, int stations,
-                                     int chunkMs) {
+model::WorkspaceFile startSimulators(std::vector<SimStation> &sims, int stations, int chunkMs) {
     const QStringList args = {QStringLiteral("--model"),  QStringLiteral("DME"),
                               QStringLiteral("--feeder"), QStringLiteral("--activity"),
                               QStringLiteral("--tcp"),    QStringLiteral("127.0.0.1:0"),
                               QStringLiteral("--pace"),   QString::number(kPaceBaud),
                               QStringLiteral("--chunk"),  QString::number(chunkMs)};
+    sims = startSimStations(stations, [&](int) { return args; });
     model::WorkspaceFile file;
-    for (int i = 0; i < stations; ++i) {
-        auto line =
-            std::make_unique<SimLine>(QStringLiteral("line%1").arg(i + 1, 2, 10, QLatin1Char('0')));
-        QString error;
-        const QString where = line->start(args, &error);
-        if (where.isEmpty()) {
-            printError(QStringLiteral("%1: %2").arg(line->name(), error));
-            return {};
-        }
-        file.lines.append(tcpLine(line->name(), where));
-        sims.push_back(std::move(line));
-    }
+    for (const SimStation &station : sims)
+        file.lines.append(tcpLine(station.sim->name(), station.address));
     return file;
 }
 
@@ -134,8 +69,7 @@ bool allConnected(const model::Workspace &workspace) {
     return true;
 }
 
-Snapshot snapshot(const model::Workspace &workspace,
-                  const std::vector<std::unique_ptr<SimLine>> &sims) {
+Snapshot snapshot(const model::Workspace &workspace, const std::vector<SimStation> &sims) {
     Snapshot s;
     for (int i = 0; i < workspace.count(); ++i) {
         model::Session &session = *workspace.session(i);
@@ -145,8 +79,8 @@ Snapshot snapshot(const model::Workspace &workspace,
         for (size_t c = 0; c < samples.size(); ++c)
             s.samples[c] += samples[c];
     }
-    for (const auto &line : sims)
-        s.simCpuUs += processCpuUs(line->pid()).value_or(0);
+    for (const SimStation &station : sims)
+        s.simCpuUs += processCpuUs(station.sim->pid()).value_or(0);
     s.cpuUs = selfCpuUs();
     return s;
 }
@@ -203,7 +137,7 @@ int runFleetLiveBench(const QStringList &args) {
     }
 
     const int chunkMs = qMax(0, optionValue(args, "--chunk-ms", QStringLiteral("0")).toInt());
-    std::vector<std::unique_ptr<SimLine>> sims;
+    std::vector<SimStation> sims;
     const model::WorkspaceFile file = startSimulators(sims, stations, chunkMs);
     if (file.lines.isEmpty())
         return 1;

@@ -12,6 +12,7 @@
 #include "journalbench.h"
 #include "linkbench.h"
 #include "mqttbench.h"
+#include "plantbench.h"
 #include "replaybench.h"
 #include "soakbench.h"
 
@@ -56,6 +57,11 @@ const Subcommand kSubcommands[] = {
      "32 paced simulators in one workspace with the fleet overview shown: GUI CPU, transactions "
      "against the wire limit, tile latency, a day's memory (--stations N, --minutes M)",
      tipscope::bench::runFleetLiveBench, true},
+    {"plant",
+     "simulated stations, tipscope-agent and a Mosquitto broker: agent CPU, live latency, "
+     "messages a second, a broker outage's backlog and its drain, joints lost (--stations N, "
+     "--seconds S, --outage-s O)",
+     tipscope::bench::runPlantBench},
 };
 
 void printUsage(QTextStream &s) {

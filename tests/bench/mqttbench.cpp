@@ -34,21 +34,6 @@ qint64 contextSwitches() {
     return 0;
 }
 
-// Runs the event loop (no polling, unlike QTest::qWait) until `done` holds or time is up.
-template <typename Done> bool runUntil(Done done, int timeoutMs) {
-    QEventLoop loop;
-    QTimer check;
-    QObject::connect(&check, &QTimer::timeout, &loop, [&] {
-        if (done())
-            loop.quit();
-    });
-    check.start(100);
-    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-    if (!done())
-        loop.exec();
-    return done();
-}
-
 bool connectClient(MqttClient &client, const testing::MosquittoBroker &broker, const QString &id) {
     mqtt::MqttSettings settings;
     settings.host = QStringLiteral("127.0.0.1");

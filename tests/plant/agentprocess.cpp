@@ -3,7 +3,6 @@
 #include "ptyfixtures.h"
 
 #include <QFile>
-#include <QJsonArray>
 #include <QJsonDocument>
 #include <csignal>
 
@@ -26,19 +25,30 @@ AgentProcess::~AgentProcess() {
         (void)stop();
 }
 
+QJsonObject AgentProcess::tcpLineJson(const QString &name, const QString &address) {
+    return {
+        {QStringLiteral("name"), name},
+        {QStringLiteral("connection"), QJsonObject{{QStringLiteral("kind"), QStringLiteral("tcp")},
+                                                   {QStringLiteral("address"), address}}}};
+}
+
 void AgentProcess::configure(const QString &tcpLine, int brokerPort, const QJsonObject &broker,
                              const QJsonObject &extra) {
-    const QJsonObject connection =
+    const QJsonObject line =
         tcpLine == QLatin1String("demo")
-            ? QJsonObject{{QStringLiteral("kind"), QStringLiteral("demo")}}
-            : QJsonObject{{QStringLiteral("kind"), QStringLiteral("tcp")},
-                          {QStringLiteral("address"), tcpLine}};
-    const QJsonObject line{{QStringLiteral("name"), QStringLiteral("cell-1")},
-                           {QStringLiteral("connection"), connection}};
+            ? QJsonObject{{QStringLiteral("name"), QStringLiteral("cell-1")},
+                          {QStringLiteral("connection"),
+                           QJsonObject{{QStringLiteral("kind"), QStringLiteral("demo")}}}}
+            : tcpLineJson(QStringLiteral("cell-1"), tcpLine);
+    configureLines({line}, brokerPort, broker, extra);
+}
+
+void AgentProcess::configureLines(const QJsonArray &lines, int brokerPort,
+                                  const QJsonObject &broker, const QJsonObject &extra) {
     writeJson(m_dir.filePath(QStringLiteral("lines.json")),
               {{QStringLiteral("format"), QStringLiteral("tipscope-workspace")},
                {QStringLiteral("version"), 1},
-               {QStringLiteral("lines"), QJsonArray{line}}});
+               {QStringLiteral("lines"), lines}});
     QJsonObject brokerJson{{QStringLiteral("host"), QStringLiteral("127.0.0.1")},
                            {QStringLiteral("port"), brokerPort},
                            {QStringLiteral("client_id"), QStringLiteral("test-agent")},

@@ -1,8 +1,10 @@
-// A tipscope-agent for tests: the built program run on a configuration written into a temporary
-// folder (a workspace of one TCP line, the broker of the test, a journal of its own), with what it
-// logs kept for failure messages. Stops with SIGTERM when destroyed, or is killed (SIGKILL).
+// A tipscope-agent for tests and benches: the built program run on a configuration written into a
+// temporary folder (a workspace of TCP lines, the broker of the test, a journal of its own), with
+// what it logs kept for failure messages. Stops with SIGTERM when destroyed, or is killed
+// (SIGKILL).
 #pragma once
 
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -19,6 +21,11 @@ public:
     // retries at most a second apart); `extra` into the top level.
     void configure(const QString &tcpLine, int brokerPort, const QJsonObject &broker = {},
                    const QJsonObject &extra = {});
+    // The same with a workspace of several lines, each {"name", "connection"} as a workspace
+    // file has them (tcpLineJson() makes one).
+    void configureLines(const QJsonArray &lines, int brokerPort, const QJsonObject &broker = {},
+                        const QJsonObject &extra = {});
+    [[nodiscard]] static QJsonObject tcpLineJson(const QString &name, const QString &address);
     [[nodiscard]] bool start(QString *error);
     // SIGTERM, then waits for the exit code.
     [[nodiscard]] int stop();

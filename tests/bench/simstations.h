@@ -1,0 +1,49 @@
+// Simulated stations for the benches that run a fleet (`tipscope-bench fleet`, `plant`): each a
+// tipscope-sim started detached and serving TCP on a free loopback port, its address read from
+// the file its standard output goes to.
+//
+// Detached, a simulator leaves no pipe or process handle in the bench, whose event loop would
+// otherwise poll three of them a station beside what is measured. A DetachedSim sends its
+// simulator SIGTERM when destroyed, so a bench that fails half-way leaves none running.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <QTemporaryDir>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace tipscope::bench {
+
+class DetachedSim {
+public:
+    explicit DetachedSim(QString name)
+        : m_name(std::move(name)) {}
+    ~DetachedSim();
+    DetachedSim(const DetachedSim &) = delete;
+    DetachedSim &operator=(const DetachedSim &) = delete;
+
+    // Starts the simulator and returns the address it serves, or empty with `error` set.
+    [[nodiscard]] QString start(const QStringList &args, QString *error);
+    [[nodiscard]] const QString &name() const { return m_name; }
+    [[nodiscard]] qint64 pid() const { return m_pid; }
+
+private:
+    QString m_name;
+    QTemporaryDir m_dir;
+    qint64 m_pid = 0;
+};
+
+// One started station: its simulator and the address to connect to.
+struct SimStation {
+    std::unique_ptr<DetachedSim> sim;
+    QString address; // host:port
+};
+
+// Starts `stations` simulators named line01, line02, ..., the i-th (from 0) with argsOf(i).
+// Empty, with the failure printed, when one did not start (those started are stopped).
+[[nodiscard]] std::vector<SimStation>
+startSimStations(int stations, const std::function<QStringList(int)> &argsOf);
+
+} // namespace tipscope::bench
