@@ -89,7 +89,12 @@ void DevicePublisher::goOffline() {
 }
 
 void DevicePublisher::retire(bool sayOffline) {
-    flushBatches();
+    flushBatches(); // while the shared client is still there
+    // From here on nothing reaches the shared client, which goes before this object does.
+    m_device = nullptr;
+    m_countersTimer.stop();
+    m_infoTimer.stop();
+    m_batchTimer.stop();
     if (m_presence->state() != mqtt::MqttClient::State::Connected) {
         deleteLater();
         return;
@@ -127,6 +132,8 @@ void DevicePublisher::publishStatus() {
 }
 
 void DevicePublisher::publishInfo() {
+    if (!m_device)
+        return;
     publish(QStringLiteral("info"), infoPayload(*m_device, m_place.line, m_place.name, nowMs()), 1,
             true);
 }
@@ -147,6 +154,8 @@ void DevicePublisher::publishAlarms(bool always) {
 }
 
 void DevicePublisher::onParameterChanged(model::Parameter *p) {
+    if (!m_device)
+        return;
     const protocol::CommandSpec &meta = p->meta();
     if (meta.group == Group::Errors) {
         publishAlarms(false);
@@ -197,7 +206,7 @@ void DevicePublisher::flushBatches() {
 }
 
 void DevicePublisher::sendLive(int port, const QJsonObject &payload) {
-    if (m_shared.state() != mqtt::MqttClient::State::Connected)
+    if (!m_device || m_shared.state() != mqtt::MqttClient::State::Connected)
         return; // live values are not kept for later: they are not backfilled
     publish(liveTopic(port), payload, 0, false);
     ++m_liveCount;
@@ -209,7 +218,7 @@ QString DevicePublisher::liveTopic(int port) const {
 
 void DevicePublisher::publish(const QString &leaf, const QJsonObject &payload, int qos,
                               bool retain) {
-    if (m_shared.state() != mqtt::MqttClient::State::Connected)
+    if (!m_device || m_shared.state() != mqtt::MqttClient::State::Connected)
         return; // sent again by publishRetained() once connected
     (void)m_shared.publish(m_place.root + QLatin1Char('/') + leaf,
                            QJsonDocument(payload).toJson(QJsonDocument::Compact), qos, retain);

@@ -333,6 +333,18 @@ private Q_SLOTS:
             from));
     }
 
+    void aReloadKeepsTheDevicesOnline() {
+        // The same configuration again: new connections, but no device flashes offline.
+        const qsizetype from = m_subscriber->count();
+        ::kill(pid_t(m_agent->process().processId()), SIGHUP);
+        QVERIFY(QTest::qWaitFor(
+            [&] { return m_agent->log().contains(QLatin1String("configuration")); }, 10000));
+        QVERIFY(m_subscriber->waitFor(kRoot + QStringLiteral("/status"), isOnline, 10000, from));
+        QTest::qWait(2000);
+        for (const Message &m : m_subscriber->on(kRoot + QStringLiteral("/status"), from))
+            QVERIFY2(isOnline(m.payload), qPrintable(QJsonDocument(m.payload).toJson()));
+    }
+
     void aReloadAppliesTheNewConfiguration() {
         m_agent->configure(m_line, m_broker.port(), {}, {{QStringLiteral("site"), "Other Site"}});
         const qsizetype from = m_subscriber->count();
