@@ -32,10 +32,12 @@ DevicePublisher::DevicePublisher(mqtt::MqttClient &shared, const AgentConfig &co
     mqtt::MqttSettings settings = config.broker;
     settings.clientId = m_place.client;
     settings.cleanSession = true; // it publishes only its status: nothing to keep
-    // The will's time is when the device came online: the last moment it is known to be up.
-    settings.will = {
-        m_place.root + QStringLiteral("/status"),
-        QJsonDocument(statusPayload(false, who, nowMs())).toJson(QJsonDocument::Compact), 1, true};
+    // The will's time is when the device came online, not when it went; "will" says so, so a
+    // viewer that first sees it does not take that time for the moment the agent went away.
+    QJsonObject will = statusPayload(false, who, nowMs());
+    will.insert(QStringLiteral("will"), true);
+    settings.will = {m_place.root + QStringLiteral("/status"),
+                     QJsonDocument(will).toJson(QJsonDocument::Compact), 1, true};
     m_presence->setSettings(settings);
     connect(m_presence.get(), &mqtt::MqttClient::connected, this, &DevicePublisher::publishStatus);
     connect(m_presence.get(), &mqtt::MqttClient::published, this, [this](int id) {

@@ -61,11 +61,13 @@ void PlantWatch::onMessage(const QString &topic, const QByteArray &payload, bool
     bool sample = false;
     if (leaf == QLatin1String("status")) {
         const bool online = json.value(QStringLiteral("online")).toBool();
-        if (!online && (d.online || !d.statusKnown))
-            d.offlineSinceMs = d.statusKnown ? now
-                                             : QDateTime::fromString(json.value("ts").toString(),
-                                                                     Qt::ISODateWithMs)
-                                                   .toMSecsSinceEpoch();
+        // Seen go: now. Found gone: the clean stop's time; a will's is not when it went.
+        if (!online && d.statusKnown && d.online)
+            d.offlineSinceMs = now;
+        else if (!online && !d.statusKnown && !json.value(QStringLiteral("will")).toBool())
+            d.offlineSinceMs = QDateTime::fromString(json.value(QStringLiteral("ts")).toString(),
+                                                     Qt::ISODateWithMs)
+                                   .toMSecsSinceEpoch();
         if (online)
             d.offlineSinceMs.reset();
         d.statusKnown = true;

@@ -7,6 +7,7 @@
 #include "pages/fleet/fleetpage.h"
 #include "pages/fleet/fleettilewidget.h"
 #include "pages/fleet/remotedevicepage.h"
+#include "plant/remotetile.h"
 
 #include "../mqtt/mqtttesting.h"
 #include "../plant/agentprocess.h"
@@ -89,8 +90,25 @@ private Q_SLOTS:
                 return !station->shown().lineUp;
             },
             10000));
-        QVERIFY2(station->shown().lineText.startsWith(QStringLiteral("Agent offline")),
+        // Seen going: since when it went.
+        QVERIFY2(station->shown().lineText.startsWith(QStringLiteral("Agent offline since")),
                  qPrintable(station->shown().lineText));
+        // A window that comes later finds only the retained will, whose time is when the device
+        // came online: it says offline, and not since that time.
+        plant::PlantWatch later;
+        later.start(brokerSettings(broker, QStringLiteral("test-later-view")),
+                    QStringLiteral("Test Site"));
+        QString root;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                for (const QString &r : later.roots())
+                    if (later.device(r)->statusKnown && later.device(r)->device == "01-dme")
+                        root = r;
+                return !root.isEmpty();
+            },
+            10000));
+        QCOMPARE(plant::remoteTileState(*later.device(root), 0).lineText,
+                 QStringLiteral("Agent offline"));
         QVERIFY(QTest::qWaitFor(
             [&] { return page.lines().join('\n').contains(QStringLiteral("not current")); }, 5000));
 

@@ -415,7 +415,9 @@ private Q_SLOTS:
                   {QStringLiteral("-C"), QStringLiteral("1"), QStringLiteral("-W"),
                    QStringLiteral("5"), QStringLiteral("-t"), kRoot + QStringLiteral("/status")});
         QVERIFY(sub.waitForFinished(10000));
-        QVERIFY(!isOnline(QJsonDocument::fromJson(sub.readAllStandardOutput()).object()));
+        const QJsonObject will = QJsonDocument::fromJson(sub.readAllStandardOutput()).object();
+        QVERIFY(!isOnline(will));
+        QVERIFY(will.value(QStringLiteral("will")).toBool()); // its time is not when it went
     }
 
     void aWrongPasswordIsSaidAndPollingGoesOn() {
