@@ -4,6 +4,8 @@
 
 #include "clisession.h"
 
+#include "model/session.h"
+
 namespace tipscope::cli {
 
 // The command of s.options() that talks to the devices on the open line (detect, read, write,
@@ -17,6 +19,9 @@ int runMonitor(CliSession &s);
 int runDump(CliSession &s);
 int runProfile(CliSession &s);
 int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err);
+// The line the options name (connection, addressing, the demo's activity), for commands that run
+// a Session of their own instead of the CliSession's line.
+[[nodiscard]] model::Session::Settings sessionSettingsOf(const CliOptions &o);
 // monitor --mqtt: the lines (one, or a workspace's) published as tipscope-agent does.
 int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err);
 // Their own session (record) or none (measure): recordings, as the Charts page writes them.

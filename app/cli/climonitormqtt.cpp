@@ -33,12 +33,7 @@ const char kPasswordVariable[] = "TIPSCOPE_MQTT_PASSWORD";
 // device's name, or the TCP server's host and port.
 model::WorkspaceLine lineOf(const CliOptions &o) {
     model::WorkspaceLine line;
-    line.session.line = o.line;
-    line.session.addressing =
-        o.addressing == CliOptions::Addressing::With      ? model::Session::Addressing::With
-        : o.addressing == CliOptions::Addressing::Without ? model::Session::Addressing::Without
-                                                          : model::Session::Addressing::Auto;
-    line.session.targetAddress = o.targetAddress;
+    line.session = sessionSettingsOf(o);
     switch (o.line.kind) {
     case link::LineSettings::Kind::Demo:
         line.name = QStringLiteral("demo");

@@ -39,17 +39,6 @@ extern "C" void requestStop(int) {
     g_stop = true;
 }
 
-Session::Settings sessionSettings(const CliOptions &o) {
-    Session::Settings s;
-    s.line = o.line;
-    s.addressing = o.addressing == CliOptions::Addressing::With      ? Session::Addressing::With
-                   : o.addressing == CliOptions::Addressing::Without ? Session::Addressing::Without
-                                                                     : Session::Addressing::Auto;
-    s.targetAddress = o.targetAddress;
-    s.demoActivity = o.demoActivity;
-    return s;
-}
-
 // Runs the event loop until `done` holds, `timeoutMs` passed, or a stop was asked for.
 template <class Done> bool waitFor(Done done, int timeoutMs) {
     QDeadlineTimer deadline(timeoutMs);
@@ -139,7 +128,7 @@ int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err) {
     std::signal(SIGTERM, requestStop);
 
     Session session;
-    session.connectTo(sessionSettings(o));
+    session.connectTo(sessionSettingsOf(o));
     if (const int rc = connect(session, err); rc != kOk)
         return rc;
     if (StationModel *station = session.station()) {

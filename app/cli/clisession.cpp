@@ -1,5 +1,7 @@
 #include "clisession.h"
 
+#include "clicommands.h"
+
 #include "model/feedermodel.h"
 #include "model/stationmodel.h"
 #include "protocol/elide.h"
@@ -208,6 +210,18 @@ std::unique_ptr<model::DeviceModel> CliSession::model(const DeviceInfo &device) 
     if (Catalog::builtin().family(device.family)->isFeeder())
         return std::make_unique<model::FeederModel>(m_line->queue(), device);
     return std::make_unique<model::StationModel>(m_line->queue(), device);
+}
+
+model::Session::Settings sessionSettingsOf(const CliOptions &o) {
+    model::Session::Settings s;
+    s.line = o.line;
+    s.addressing = o.addressing == CliOptions::Addressing::With ? model::Session::Addressing::With
+                   : o.addressing == CliOptions::Addressing::Without
+                       ? model::Session::Addressing::Without
+                       : model::Session::Addressing::Auto;
+    s.targetAddress = o.targetAddress;
+    s.demoActivity = o.demoActivity;
+    return s;
 }
 
 } // namespace tipscope::cli

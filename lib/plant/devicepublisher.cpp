@@ -81,13 +81,17 @@ void DevicePublisher::goOffline() {
         Q_EMIT offline();
         return;
     }
+    m_offlineId = publishOffline();
+    if (m_offlineId == 0)
+        Q_EMIT offline();
+}
+
+int DevicePublisher::publishOffline() {
     const auto sent = m_presence->publish(
         m_place.root + QStringLiteral("/status"),
         QJsonDocument(statusPayload(false, m_who, nowMs())).toJson(QJsonDocument::Compact), 1,
         true);
-    m_offlineId = sent.messageId;
-    if (!sent.ok())
-        Q_EMIT offline();
+    return sent.ok() ? sent.messageId : 0;
 }
 
 void DevicePublisher::retire(bool sayOffline) {
@@ -102,10 +106,7 @@ void DevicePublisher::retire(bool sayOffline) {
         return;
     }
     if (sayOffline)
-        (void)m_presence->publish(
-            m_place.root + QStringLiteral("/status"),
-            QJsonDocument(statusPayload(false, m_who, nowMs())).toJson(QJsonDocument::Compact), 1,
-            true);
+        (void)publishOffline();
     connect(m_presence.get(), &mqtt::MqttClient::stateChanged, this,
             [this](mqtt::MqttClient::State state) {
                 if (state == mqtt::MqttClient::State::Stopped)

@@ -79,6 +79,8 @@ private:
     };
 
     void publishStatus();
+    // {"online": false} through the presence client, retained; its message id, 0 if refused.
+    int publishOffline();
     void publishInfo();
     void publishCounters();
     void publishAlarms(bool always);
