@@ -1895,37 +1895,37 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="61"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="56"/>
         <source>--mqtt takes the broker as HOST:PORT</source>
         <translation>--mqtt erwartet den Broker als HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="68"/>
         <source>--site takes the site&apos;s name</source>
         <translation>--site erwartet den Namen des Standorts</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="78"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
         <source>--interval takes milliseconds from 100 to 3600000</source>
         <translation>--interval erwartet Millisekunden von 100 bis 3600000</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="103"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="98"/>
         <source>Broker connected.</source>
         <translation>Broker verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="105"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="100"/>
         <source>Broker disconnected.</source>
         <translation>Broker getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="106"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="101"/>
         <source>Connecting to the broker.</source>
         <translation>Verbindung zum Broker wird aufgebaut.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="108"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="103"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n Gerät, %1 Live-Nachrichten, %2 Lötstellen und Ereignisse weitergeleitet, %3 wartend. %4</numerusform>
@@ -1933,12 +1933,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="125"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="120"/>
         <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
         <translation>tipscope-cli: %1 ist nicht gesetzt: Verbindung als %2 ohne Passwort</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="132"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="127"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
@@ -2178,53 +2178,53 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="77"/>
+        <location filename="../app/cli/clirecord.cpp" line="66"/>
         <source>tipscope-cli: interrupted before the recording started</source>
         <translation>tipscope-cli: abgebrochen, bevor die Aufzeichnung begann</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="82"/>
+        <location filename="../app/cli/clirecord.cpp" line="71"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="117"/>
+        <location filename="../app/cli/clirecord.cpp" line="106"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record erwartet eine DATEI, z. B. record linie3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="125"/>
+        <location filename="../app/cli/clirecord.cpp" line="114"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration erwartet Sekunden (0: bis zum Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="132"/>
-        <location filename="../app/cli/clirecord.cpp" line="160"/>
+        <location filename="../app/cli/clirecord.cpp" line="121"/>
+        <location filename="../app/cli/clirecord.cpp" line="149"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: in %1 kann nicht aufgezeichnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="134"/>
+        <location filename="../app/cli/clirecord.cpp" line="123"/>
         <source>no such folder</source>
         <translation>Ordner nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="134"/>
+        <location filename="../app/cli/clirecord.cpp" line="123"/>
         <source>not writable</source>
         <translation>nicht beschreibbar</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="181"/>
+        <location filename="../app/cli/clirecord.cpp" line="170"/>
         <source># recording %1 of %2 to %3</source>
         <translation># zeichne %1 von %2 in %3 auf</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="189"/>
+        <location filename="../app/cli/clirecord.cpp" line="178"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="193"/>
+        <location filename="../app/cli/clirecord.cpp" line="182"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n Zeile nach %1 aufgezeichnet</numerusform>
@@ -2235,42 +2235,42 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="74"/>
+        <location filename="../app/cli/clisession.cpp" line="76"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="79"/>
+        <location filename="../app/cli/clisession.cpp" line="81"/>
         <source>connected to %1</source>
         <translation>verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="148"/>
+        <location filename="../app/cli/clisession.cpp" line="150"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="157"/>
+        <location filename="../app/cli/clisession.cpp" line="159"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="158"/>
+        <location filename="../app/cli/clisession.cpp" line="160"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="152"/>
+        <location filename="../app/cli/clisession.cpp" line="154"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="180"/>
+        <location filename="../app/cli/clisession.cpp" line="182"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="185"/>
+        <location filename="../app/cli/clisession.cpp" line="187"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -5552,42 +5552,42 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="116"/>
+        <location filename="../app/gui/devicetree.cpp" line="120"/>
         <source>Fleet overview</source>
         <translation>Geräteübersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="179"/>
+        <location filename="../app/gui/devicetree.cpp" line="183"/>
         <source>No line</source>
         <translation>Keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="185"/>
+        <location filename="../app/gui/devicetree.cpp" line="189"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="186"/>
+        <location filename="../app/gui/devicetree.cpp" line="190"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="194"/>
+        <location filename="../app/gui/devicetree.cpp" line="198"/>
         <source>feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="194"/>
+        <location filename="../app/gui/devicetree.cpp" line="198"/>
         <source>station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="200"/>
+        <location filename="../app/gui/devicetree.cpp" line="204"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="205"/>
+        <location filename="../app/gui/devicetree.cpp" line="209"/>
         <source>Port %1: %2</source>
         <translation>Port %1: %2</translation>
     </message>
@@ -6183,52 +6183,57 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FleetPage</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="33"/>
         <source>Line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="33"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
         <source>State, worst first</source>
         <translation>Zustand, schlechtester zuerst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="35"/>
         <source>Sort by:</source>
         <translation>Sortieren nach:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="36"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="37"/>
         <source>Needs attention only</source>
         <translation>Nur was Aufmerksamkeit braucht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="117"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="122"/>
         <source>Devices: %1 · need attention: %2</source>
         <translation>Geräte: %1 · brauchen Aufmerksamkeit: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="239"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="124"/>
+        <source>%1 · lines without a device: %2</source>
+        <translation>%1 · Linien ohne Gerät: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="260"/>
         <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
         <translation>Noch keine Geräte: vom Broker des Werks ist nichts gekommen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="240"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="261"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Keine Geräte: die Leitungen des Arbeitsbereichs haben noch keine gefunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="238"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
         <source>No device needs attention.</source>
         <translation>Kein Gerät braucht Aufmerksamkeit.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.h" line="52"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="54"/>
         <source>Fleet</source>
         <translation>Geräteübersicht</translation>
     </message>
@@ -6241,7 +6246,7 @@ Zurücksetzen?</translation>
         <translation>P%1  %2 / %3  %4  %5</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="97"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="98"/>
         <source>Last joint: %1 (port %2)</source>
         <translation>Letzte Lötstelle: %1 (Port %2)</translation>
     </message>
@@ -8299,6 +8304,24 @@ Möchten Sie fortfahren?</translation>
         <location filename="../lib/model/workspace/fleettile.cpp" line="231"/>
         <source>Feeder: %1</source>
         <translation>Lotdrahtvorschub: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::LineTile</name>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="49"/>
+        <source>No device</source>
+        <translation>Kein Gerät</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="59"/>
+        <source>No device answered</source>
+        <translation>Kein Gerät hat geantwortet</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="60"/>
+        <source>Looking for devices</source>
+        <translation>Suche nach Geräten</translation>
     </message>
 </context>
 <context>

@@ -26,7 +26,7 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="108"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="103"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n device, %1 live messages, %2 joints and events forwarded, %3 waiting. %4</numerusform>
@@ -37,7 +37,7 @@
 <context>
     <name>CliRecord</name>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="193"/>
+        <location filename="../app/cli/clirecord.cpp" line="182"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>recorded %n row to %1</numerusform>

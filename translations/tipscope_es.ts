@@ -1895,37 +1895,37 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="61"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="56"/>
         <source>--mqtt takes the broker as HOST:PORT</source>
         <translation>--mqtt espera el broker como HOST:PUERTO</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="68"/>
         <source>--site takes the site&apos;s name</source>
         <translation>--site espera el nombre de la planta</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="78"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
         <source>--interval takes milliseconds from 100 to 3600000</source>
         <translation>--interval espera milisegundos de 100 a 3600000</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="103"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="98"/>
         <source>Broker connected.</source>
         <translation>Broker conectado.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="105"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="100"/>
         <source>Broker disconnected.</source>
         <translation>Broker desconectado.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="106"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="101"/>
         <source>Connecting to the broker.</source>
         <translation>Conectando con el broker.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="108"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="103"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n dispositivo, %1 mensajes en vivo, %2 soldaduras y eventos reenviados, %3 en espera. %4</numerusform>
@@ -1933,12 +1933,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="125"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="120"/>
         <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
         <translation>tipscope-cli: %1 no está definida: se conecta como %2 sin contraseña</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="132"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="127"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration espera segundos</translation>
     </message>
@@ -2179,53 +2179,53 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="77"/>
+        <location filename="../app/cli/clirecord.cpp" line="66"/>
         <source>tipscope-cli: interrupted before the recording started</source>
         <translation>tipscope-cli: interrumpido antes de que empezara la grabación</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="82"/>
+        <location filename="../app/cli/clirecord.cpp" line="71"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="117"/>
+        <location filename="../app/cli/clirecord.cpp" line="106"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record espera un ARCHIVO, p. ej. record linea3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="125"/>
+        <location filename="../app/cli/clirecord.cpp" line="114"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration espera segundos (0: hasta que se interrumpa)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="132"/>
-        <location filename="../app/cli/clirecord.cpp" line="160"/>
+        <location filename="../app/cli/clirecord.cpp" line="121"/>
+        <location filename="../app/cli/clirecord.cpp" line="149"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: no se puede grabar en %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="134"/>
+        <location filename="../app/cli/clirecord.cpp" line="123"/>
         <source>no such folder</source>
         <translation>la carpeta no existe</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="134"/>
+        <location filename="../app/cli/clirecord.cpp" line="123"/>
         <source>not writable</source>
         <translation>sin permiso de escritura</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="181"/>
+        <location filename="../app/cli/clirecord.cpp" line="170"/>
         <source># recording %1 of %2 to %3</source>
         <translation># grabando %1 de %2 en %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="189"/>
+        <location filename="../app/cli/clirecord.cpp" line="178"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: falló la escritura de %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="193"/>
+        <location filename="../app/cli/clirecord.cpp" line="182"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n fila grabada en %1</numerusform>
@@ -2236,42 +2236,42 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="74"/>
+        <location filename="../app/cli/clisession.cpp" line="76"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="79"/>
+        <location filename="../app/cli/clisession.cpp" line="81"/>
         <source>connected to %1</source>
         <translation>conectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="148"/>
+        <location filename="../app/cli/clisession.cpp" line="150"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: el catálogo no indica ningún comando que identifique un equipo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="157"/>
+        <location filename="../app/cli/clisession.cpp" line="159"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="158"/>
+        <location filename="../app/cli/clisession.cpp" line="160"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="152"/>
+        <location filename="../app/cli/clisession.cpp" line="154"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="180"/>
+        <location filename="../app/cli/clisession.cpp" line="182"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="185"/>
+        <location filename="../app/cli/clisession.cpp" line="187"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -5553,42 +5553,42 @@ Hágalo permanente con esta regla de udev:
         <translation>Equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="116"/>
+        <location filename="../app/gui/devicetree.cpp" line="120"/>
         <source>Fleet overview</source>
         <translation>Vista de la flota</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="179"/>
+        <location filename="../app/gui/devicetree.cpp" line="183"/>
         <source>No line</source>
         <translation>Sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="185"/>
+        <location filename="../app/gui/devicetree.cpp" line="189"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="186"/>
+        <location filename="../app/gui/devicetree.cpp" line="190"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="194"/>
+        <location filename="../app/gui/devicetree.cpp" line="198"/>
         <source>feeder</source>
         <translation>alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="194"/>
+        <location filename="../app/gui/devicetree.cpp" line="198"/>
         <source>station</source>
         <translation>estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="200"/>
+        <location filename="../app/gui/devicetree.cpp" line="204"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="205"/>
+        <location filename="../app/gui/devicetree.cpp" line="209"/>
         <source>Port %1: %2</source>
         <translation>Puerto %1: %2</translation>
     </message>
@@ -6184,52 +6184,57 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FleetPage</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="31"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
         <source>Name</source>
         <translation>Nombre</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="32"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="33"/>
         <source>Line</source>
         <translation>Línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="33"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
         <source>State, worst first</source>
         <translation>Estado, el peor primero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="34"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="35"/>
         <source>Sort by:</source>
         <translation>Ordenar por:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="36"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="37"/>
         <source>Needs attention only</source>
         <translation>Solo lo que requiere atención</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="117"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="122"/>
         <source>Devices: %1 · need attention: %2</source>
         <translation>Equipos: %1 · requieren atención: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="239"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="124"/>
+        <source>%1 · lines without a device: %2</source>
+        <translation>%1 · líneas sin equipo: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="260"/>
         <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
         <translation>Aún no hay dispositivos: no ha llegado nada del broker de la planta.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="240"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="261"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Sin equipos: las líneas del espacio de trabajo aún no han encontrado ninguno.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="238"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
         <source>No device needs attention.</source>
         <translation>Ningún equipo requiere atención.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.h" line="52"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="54"/>
         <source>Fleet</source>
         <translation>Flota</translation>
     </message>
@@ -6242,7 +6247,7 @@ Reset it?</source>
         <translation>P%1  %2 / %3  %4  %5</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="97"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="98"/>
         <source>Last joint: %1 (port %2)</source>
         <translation>Última soldadura: %1 (puerto %2)</translation>
     </message>
@@ -8300,6 +8305,24 @@ Do you want to continue?</source>
         <location filename="../lib/model/workspace/fleettile.cpp" line="231"/>
         <source>Feeder: %1</source>
         <translation>Alimentador: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::model::LineTile</name>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="49"/>
+        <source>No device</source>
+        <translation>Ningún equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="59"/>
+        <source>No device answered</source>
+        <translation>Ningún equipo ha respondido</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="60"/>
+        <source>Looking for devices</source>
+        <translation>Buscando equipos</translation>
     </message>
 </context>
 <context>

@@ -77,6 +77,10 @@ int DeviceTree::selectedPort() const {
 bool DeviceTree::select(int line, const DeviceModel *device, int port) {
     const Session *session = sessionOf(line);
     QTreeWidgetItem *top = lineItem(line);
+    if (!device && top && line != kFleet) {
+        setCurrentItem(top);
+        return true;
+    }
     const int index = session ? int(session->devices().indexOf(device)) : -1;
     if (!top || index < 0 || index >= top->childCount())
         return false;

@@ -28,7 +28,8 @@ public:
     [[nodiscard]] int selectedLine() const;
     [[nodiscard]] model::DeviceModel *selectedDevice() const;
     [[nodiscard]] int selectedPort() const;
-    // Selects the device of `line` (and its port when > 0); false when the tree does not hold it.
+    // Selects the device of `line` (and its port when > 0), or the line itself when `device` is
+    // null; false when the tree does not hold it.
     bool select(int line, const model::DeviceModel *device, int port = 0);
     // Selects the fleet overview; false while no workspace is open and no plant watched.
     bool selectFleet();

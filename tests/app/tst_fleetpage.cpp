@@ -17,6 +17,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QSignalSpy>
+#include <QTcpServer>
 #include <QtTest>
 
 using namespace tipscope;
@@ -36,13 +37,24 @@ QStringList shownNames(const FleetPage &page) {
     return names;
 }
 
-// Every station tile shows all its ports read.
+// Every line has found its devices and every station tile shows all its ports read.
 bool stationsRead(const FleetPage &page) {
-    for (const FleetTileWidget *tile : page.shownTiles())
+    for (const FleetTileWidget *tile : page.shownTiles()) {
+        if (!tile->tile().device())
+            return false;
         for (const FleetPortState &p : tile->shown().ports)
             if (!p.tip || !p.setpoint)
                 return false;
+    }
     return page.tileCount() > 0;
+}
+
+// A loopback port nobody listens on: connecting is refused at once.
+quint16 refusingPort() {
+    QTcpServer server;
+    if (!server.listen(QHostAddress::LocalHost))
+        return 0;
+    return server.serverPort();
 }
 } // namespace
 
@@ -59,6 +71,7 @@ private Q_SLOTS:
     void theColumnsGrowWithTheWidth();
     void aTileRepaintsOnlyWhenWhatItShowsChangedAndSaysHowLate();
     void aLineJoiningAddsItsTilesAndKeepsTheOthers();
+    void aLineWithoutADeviceHasATileThatSaysWhy();
 
 private:
     [[nodiscard]] FleetTileWidget *tileNamed(const QString &name) const;
@@ -224,6 +237,48 @@ void TestFleetPage::aLineJoiningAddsItsTilesAndKeepsTheOthers() {
     m_workspace->close();
     QCOMPARE(m_page->tileCount(), 0);
     QVERIFY(m_page->shownTiles().isEmpty());
+}
+
+// A line that never came up is on the overview, worst first, saying since when and why, instead
+// of being missing from it; its click opens the line.
+void TestFleetPage::aLineWithoutADeviceHasATileThatSaysWhy() {
+    const quint16 port = refusingPort();
+    QVERIFY(port != 0);
+    WorkspaceLine dead;
+    dead.name = QStringLiteral("line-dead");
+    dead.cell = QStringLiteral("Cell 9");
+    dead.session.line.kind = link::LineSettings::Kind::Tcp;
+    dead.session.line.tcpHost = QStringLiteral("127.0.0.1");
+    dead.session.line.tcpPort = port;
+    QVERIFY(m_workspace->addLine(dead).ok());
+    const int line = m_workspace->indexOf(dead.name);
+    m_page->setSortKey(FleetSortKey::State);
+    QTRY_VERIFY_WITH_TIMEOUT(m_page->shownTiles().size() == 7 &&
+                                 !m_page->shownTiles().first()->shown().lineText.isEmpty() &&
+                                 m_page->shownTiles().first()->shown().downSinceMs.has_value() &&
+                                 m_workspace->session(line)->state() == Session::State::Retrying,
+                             kConnectMs);
+    FleetTileWidget *tile = m_page->shownTiles().first();
+    QCOMPARE(tile->tile().lineIndex(), line);
+    QVERIFY(!tile->tile().device());
+    const QStringList lines = tile->lines();
+    QCOMPARE(lines.at(0), QStringLiteral("No device"));
+    QCOMPARE(lines.at(1), QStringLiteral("line-dead · Cell 9"));
+    QVERIFY2(lines.at(2).startsWith(QStringLiteral("Line down since ")), qPrintable(lines.at(2)));
+    // Why, in full: the reason wraps rather than losing its end to the tile's edge.
+    QVERIFY2(lines.mid(3).join(QLatin1Char(' ')).endsWith(QStringLiteral("Connection refused")),
+             qPrintable(lines.join(QLatin1Char('|'))));
+    QVERIFY(tile->shown().needsAttention());
+    QCOMPARE(m_page->summaryText(),
+             QStringLiteral("Devices: 6 · need attention: 1 · lines without a device: 1"));
+    m_page->setAttentionOnly(true);
+    QCOMPARE(m_page->shownTiles(), QList<FleetTileWidget *>{tile});
+
+    QSignalSpy activated(m_page.get(), &FleetPage::deviceActivated);
+    QTest::mouseClick(tile, Qt::LeftButton);
+    QCOMPARE(activated.size(), 1);
+    QCOMPARE(activated.first().at(0).toInt(), line);
+    QCOMPARE(activated.first().at(1).value<DeviceModel *>(), nullptr);
 }
 
 QTEST_MAIN(TestFleetPage)

@@ -102,11 +102,11 @@ bool operator==(const FleetTileState &a, const FleetTileState &b) {
            a.model == b.model && a.ports == b.ports && a.feederText == b.feederText &&
            a.problems == b.problems && a.lastJoint == b.lastJoint &&
            a.lastJointPort == b.lastJointPort && a.read == b.read && a.lineUp == b.lineUp &&
-           a.downSinceMs == b.downSinceMs && a.lineText == b.lineText;
+           a.downSinceMs == b.downSinceMs && a.lineText == b.lineText && a.lineOnly == b.lineOnly;
 }
 
 Level FleetTileState::worst() const {
-    if (!read)
+    if (!read && problems.isEmpty())
         return Level::Unknown;
     Level level = lastJoint ? jointLevel(*lastJoint) : Level::Ok;
     for (const FleetProblem &p : problems)

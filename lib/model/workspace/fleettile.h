@@ -64,9 +64,10 @@ struct FleetTileState {
     bool lineUp = false;
     std::optional<qint64> downSinceMs; // while down, when known (ms since the epoch)
     QString lineText;                  // empty while up: "Line down since 08:12"
+    bool lineOnly = false;             // the tile of a line without a device (LineTile)
 
     // The worst of the problems and the last joint (jointLevel()); Ok when there is none, Unknown
-    // before anything was read.
+    // before anything was read and no problem is known.
     [[nodiscard]] Level worst() const;
     // The line is down, or a problem or the last joint is a Warning or worse.
     [[nodiscard]] bool needsAttention() const;

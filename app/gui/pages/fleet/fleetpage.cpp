@@ -3,6 +3,7 @@
 #include "pages/fleet/fleettilewidget.h"
 #include "widgets/flowlayout.h"
 
+#include "model/workspace/linetile.h"
 #include "model/workspace/workspace.h"
 #include "plant/plantwatch.h"
 #include "plant/remotetile.h"
@@ -114,7 +115,12 @@ void FleetPage::refreshNow() {
 QString FleetPage::summaryText() const {
     const auto attention = std::count_if(m_tiles.cbegin(), m_tiles.cend(),
                                          [](const auto *t) { return t->shown().needsAttention(); });
-    return tr("Devices: %1 · need attention: %2").arg(m_tiles.size()).arg(attention);
+    const auto empty = std::count_if(m_tiles.cbegin(), m_tiles.cend(), [](const auto *t) {
+        return qobject_cast<const model::LineTile *>(&t->tile()) != nullptr;
+    });
+    const QString devices =
+        tr("Devices: %1 · need attention: %2").arg(m_tiles.size() - empty).arg(attention);
+    return empty == 0 ? devices : tr("%1 · lines without a device: %2").arg(devices).arg(empty);
 }
 
 void FleetPage::showEvent(QShowEvent *event) {
@@ -135,9 +141,16 @@ void FleetPage::rebuild() {
 // again keeps what the other tiles know (since when their line is down, their last joints).
 void FleetPage::syncLine(int line) {
     const QList<model::DeviceModel *> &devices = m_workspace.session(line)->devices();
+    // A line's own tile (no device) stands in for its devices until it has some.
     removeTilesIf([line, &devices](const FleetTileWidget *tile) {
-        return tile->tile().lineIndex() == line && !devices.contains(tile->tile().device());
+        const model::DeviceModel *device = tile->tile().device();
+        return tile->tile().lineIndex() == line &&
+               (device ? !devices.contains(device) : !devices.isEmpty());
     });
+    if (devices.isEmpty() && std::none_of(m_tiles.cbegin(), m_tiles.cend(), [line](const auto *t) {
+            return t->tile().lineIndex() == line;
+        }))
+        addLineTile(line);
     for (model::DeviceModel *device : devices) {
         const bool tiled = std::any_of(m_tiles.cbegin(), m_tiles.cend(), [device](const auto *t) {
             return t->tile().device() == device;
@@ -166,6 +179,13 @@ void FleetPage::addTile(int line, model::DeviceModel *device) {
         if (model::DeviceModel *device = tile->tile().device())
             Q_EMIT deviceActivated(tile->tile().lineIndex(), device);
     });
+}
+
+void FleetPage::addLineTile(int line) {
+    FleetTileWidget *tile = placeTile(new model::LineTile(m_workspace, line));
+    connect(tile, &FleetTileWidget::activated, this,
+            [this, tile] { Q_EMIT deviceActivated(tile->tile().lineIndex(), nullptr); });
+    tile->refresh();
 }
 
 void FleetPage::watchPlant(const plant::PlantWatch *watch) {

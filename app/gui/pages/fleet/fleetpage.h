@@ -3,7 +3,9 @@
 // that wrap, so a narrow window shows one column and a wall display
 // many. A toolbar sorts the tiles by name, line or state (the worst first) and can show only the
 // devices that need attention (FleetTileState::needsAttention()). Clicking a tile (or Enter on
-// it) is deviceActivated(), for the window to open that device's own pages.
+// it) is deviceActivated(), for the window to open that device's own pages. A line without a
+// device has a tile of its own (model::LineTile) saying why, until its devices are found; its
+// click is deviceActivated() with no device, for the window to open the line.
 //
 // Readings arrive far faster than anyone reads 128 ports: a tile only notes that it may have
 // changed, and every kRefreshMs the page refreshes the tiles that noted it, so only tiles whose
@@ -71,6 +73,7 @@ public:
     void clearTileLatencies() { m_latencies.clear(); }
 
 Q_SIGNALS:
+    // `device` is null for a line's own tile.
     void deviceActivated(int line, tipscope::model::DeviceModel *device);
     // A tile of a device another TipScope publishes: its topic root.
     void remoteDeviceActivated(const QString &root);
@@ -83,6 +86,7 @@ private:
     void syncLine(int line);
     void removeTilesIf(const std::function<bool(const FleetTileWidget *)> &gone);
     void addTile(int line, model::DeviceModel *device);
+    void addLineTile(int line);
     void addRemoteTile(const QString &root);
     FleetTileWidget *placeTile(model::FleetTileSource *source);
     void scheduleRefresh();

@@ -16,6 +16,7 @@ constexpr int kMargin = 8;
 constexpr int kLineGap = 2;
 constexpr int kWidthInChars = 46; // a port's row unabridged in German, four tiles on 1920 px
 constexpr int kBorder = 2;
+constexpr int kMaxProblemRows = 3; // the reason a line is down is read in full, not guessed at
 } // namespace
 
 FleetTileWidget::FleetTileWidget(model::FleetTileSource *tile, QWidget *parent)
@@ -83,7 +84,8 @@ QList<FleetTileWidget::Line> FleetTileWidget::layoutLines() const {
     QStringList where = {s.lineName};
     if (!s.cell.isEmpty())
         where.append(s.cell);
-    where.append(s.model);
+    if (!s.model.isEmpty())
+        where.append(s.model);
     lines.append({where.join(QStringLiteral(" · ")), Level::Unknown, false});
     if (!s.lineUp)
         lines.append({s.lineText, Level::Unknown, true});
@@ -92,13 +94,35 @@ QList<FleetTileWidget::Line> FleetTileWidget::layoutLines() const {
     if (!s.feederText.isEmpty())
         lines.append({s.feederText, Level::Unknown, false});
     for (const model::FleetProblem &problem : s.problems)
-        lines.append({problem.text, problem.level, false});
+        appendProblem(lines, problem);
     if (s.lastJoint)
         lines.append({tr("Last joint: %1 (port %2)")
                           .arg(model::JointTableModel::verdictText(*s.lastJoint))
                           .arg(s.lastJointPort),
                       model::jointLevel(*s.lastJoint), false});
     return lines;
+}
+
+// A problem says why: it wraps at its spaces instead of losing its end ("…: Connection refused")
+// to the tile's edge; only what passes kMaxProblemRows is cut.
+void FleetTileWidget::appendProblem(QList<Line> &lines, const model::FleetProblem &problem) const {
+    const QFontMetrics metrics = fontMetrics();
+    const int width = sizeHint().width() - 2 * kMargin - metrics.height() - kLineGap * 2;
+    const QStringList words = problem.text.split(QLatin1Char(' '));
+    QString row;
+    int rows = 0;
+    for (qsizetype i = 0; i < words.size(); ++i) {
+        const QString wider = row.isEmpty() ? words.at(i) : row + QLatin1Char(' ') + words.at(i);
+        if (row.isEmpty() || metrics.horizontalAdvance(wider) <= width ||
+            rows == kMaxProblemRows - 1) {
+            row = wider;
+            continue;
+        }
+        lines.append({row, problem.level, false, rows > 0});
+        ++rows;
+        row = words.at(i);
+    }
+    lines.append({row, problem.level, false, rows > 0});
 }
 
 QStringList FleetTileWidget::lines() const {
@@ -123,7 +147,8 @@ void FleetTileWidget::paintEvent(QPaintEvent *) {
         m_repaintDueNs = -1;
     }
     QPainter painter(this);
-    const bool stale = !m_shown.lineUp;
+    // A line's own tile shows nothing stale: what it says of the line is current.
+    const bool stale = !m_shown.lineUp && !m_shown.lineOnly;
     const QPalette::ColorGroup group = stale ? QPalette::Disabled : QPalette::Active;
     const QRect frame = rect().adjusted(1, 1, -1, -1);
     painter.fillRect(frame, palette().color(group, stale ? QPalette::Window : QPalette::Base));
@@ -141,7 +166,9 @@ void FleetTileWidget::paintEvent(QPaintEvent *) {
         font.setBold(line.bold);
         painter.setFont(font);
         int x = kMargin;
-        if (line.level != Level::Unknown) {
+        if (line.continued) {
+            x += iconSize + kLineGap * 2;
+        } else if (line.level != Level::Unknown) {
             QIcon &icon = m_icons.at(size_t(line.level));
             if (icon.isNull())
                 icon = levelIcon(line.level);

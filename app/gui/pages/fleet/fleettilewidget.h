@@ -56,11 +56,13 @@ private:
         QString text;
         model::Level level = model::Level::Unknown; // an icon for problems, none otherwise
         bool bold = false;
+        bool continued = false; // a wrapped problem's further row: under its text, no icon
     };
 
     void markDirty();
     [[nodiscard]] QList<Line> layoutLines() const;
     [[nodiscard]] QString portLine(const model::FleetPortState &port) const;
+    void appendProblem(QList<Line> &lines, const model::FleetProblem &problem) const;
     [[nodiscard]] int lineHeight() const;
 
     model::FleetTileSource *m_tile;

@@ -1,0 +1,71 @@
+#include "model/workspace/linetile.h"
+
+#include "model/workspace/workspace.h"
+
+#include <QDateTime>
+
+namespace tipscope::model {
+
+namespace {
+
+// The session's words start a sentence of their own on the tile.
+QString sentence(QString text) {
+    if (!text.isEmpty())
+        text[0] = text.at(0).toUpper();
+    return text;
+}
+
+bool isDown(Session::State state) {
+    return state == Session::State::Retrying || state == Session::State::Failed ||
+           state == Session::State::Disconnected;
+}
+
+} // namespace
+
+LineTile::LineTile(const Workspace &workspace, int line, Clock clock, QObject *parent)
+    : FleetTileSource(parent)
+    , m_workspace(workspace)
+    , m_line(line)
+    , m_clock(clock ? std::move(clock)
+                    : Clock([] { return QDateTime::currentMSecsSinceEpoch(); })) {
+    // Down already when the tile is made: since when is not known, and not guessed.
+    connect(&workspace, &Workspace::lineStateChanged, this,
+            [this](int index, Session::State state) { onStateChanged(index, state); });
+}
+
+void LineTile::onStateChanged(int line, Session::State state) {
+    if (line != m_line)
+        return;
+    if (!isDown(state))
+        m_downSinceMs.reset();
+    else if (!m_downSinceMs)
+        m_downSinceMs = m_clock();
+    Q_EMIT changed();
+}
+
+FleetTileState LineTile::state() const {
+    FleetTileState s;
+    const WorkspaceLine &line = m_workspace.line(m_line);
+    const Session &session = *m_workspace.session(m_line);
+    s.deviceName = tr("No device");
+    s.lineName = line.name;
+    s.cell = line.cell;
+    // Up means a device could be reached; until one answers, nothing on this line is known.
+    s.lineUp = false;
+    s.lineOnly = true;
+    if (isDown(session.state())) {
+        s.downSinceMs = m_downSinceMs;
+        s.lineText = FleetTile::downText(m_downSinceMs, m_clock());
+        const QString why = session.line() ? session.line()->lastError() : QString();
+        s.problems.append({Level::Error, sentence(why.isEmpty() ? session.stateText() : why)});
+    } else {
+        s.lineText = session.state() == Session::State::Connected ? tr("No device answered")
+                                                                  : tr("Looking for devices");
+        s.problems.append(
+            {session.state() == Session::State::Connected ? Level::Warning : Level::Info,
+             sentence(session.stateText())});
+    }
+    return s;
+}
+
+} // namespace tipscope::model
