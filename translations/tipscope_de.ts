@@ -6213,22 +6213,22 @@ Zurücksetzen?</translation>
         <translation>Geräte: %1 · brauchen Aufmerksamkeit: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="123"/>
         <source>%1 · lines without a device: %2</source>
         <translation>%1 · Linien ohne Gerät: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="260"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
         <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
         <translation>Noch keine Geräte: vom Broker des Werks ist nichts gekommen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="261"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="260"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Keine Geräte: die Leitungen des Arbeitsbereichs haben noch keine gefunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="258"/>
         <source>No device needs attention.</source>
         <translation>Kein Gerät braucht Aufmerksamkeit.</translation>
     </message>
@@ -6241,12 +6241,12 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FleetTileWidget</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="73"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="74"/>
         <source>P%1  %2 / %3  %4  %5</source>
         <translation>P%1  %2 / %3  %4  %5</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="98"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="99"/>
         <source>Last joint: %1 (port %2)</source>
         <translation>Letzte Lötstelle: %1 (Port %2)</translation>
     </message>
@@ -6962,62 +6962,67 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;Keine Station. Verbinden Sie sich mit einer Leitung oder starten Sie die Demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <source>&lt;i&gt;No station on this line.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;Keine Station an dieser Linie.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="140"/>
         <source>family %1</source>
         <translation>Familie %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="141"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="142"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="144"/>
         <source>transformer %1</source>
         <translation>Transformator %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
         <source>fuse present</source>
         <translation>Sicherung vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="138"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="147"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;Sicherung fehlt oder ist durchgebrannt&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="144"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="153"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Stationsfehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
         <source>feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="166"/>
         <source>fed %1</source>
         <translation>vorgeschoben %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="168"/>
         <source>speed %1</source>
         <translation>Geschwindigkeit %1</translation>
     </message>
@@ -7027,22 +7032,22 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Übersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
         <source>not connected, as last read</source>
         <translation>nicht verbunden, wie zuletzt gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="185"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="194"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: noch nichts gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="187"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="196"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt um %1 gelesen. Die Robotersteuerung ist aus, bis die Leitung wieder da ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="191"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="200"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>Nur-Beobachten ist an: die Robotersteuerung ist aus.</translation>
     </message>
@@ -8309,17 +8314,17 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::model::LineTile</name>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="49"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="44"/>
         <source>No device</source>
         <translation>Kein Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="59"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="56"/>
         <source>No device answered</source>
         <translation>Kein Gerät hat geantwortet</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="60"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="57"/>
         <source>Looking for devices</source>
         <translation>Suche nach Geräten</translation>
     </message>

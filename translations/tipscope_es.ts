@@ -6214,22 +6214,22 @@ Reset it?</source>
         <translation>Equipos: %1 · requieren atención: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="123"/>
         <source>%1 · lines without a device: %2</source>
         <translation>%1 · líneas sin equipo: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="260"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
         <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
         <translation>Aún no hay dispositivos: no ha llegado nada del broker de la planta.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="261"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="260"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Sin equipos: las líneas del espacio de trabajo aún no han encontrado ninguno.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="258"/>
         <source>No device needs attention.</source>
         <translation>Ningún equipo requiere atención.</translation>
     </message>
@@ -6242,12 +6242,12 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FleetTileWidget</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="73"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="74"/>
         <source>P%1  %2 / %3  %4  %5</source>
         <translation>P%1  %2 / %3  %4  %5</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="98"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="99"/>
         <source>Last joint: %1 (port %2)</source>
         <translation>Última soldadura: %1 (puerto %2)</translation>
     </message>
@@ -6963,62 +6963,67 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::OverviewPage</name>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="124"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
         <source>&lt;i&gt;No station. Connect to a line, or start the demo.&lt;/i&gt;</source>
         <translation>&lt;i&gt;No hay ninguna estación. Conéctese a una línea o inicie la demo.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="131"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <source>&lt;i&gt;No station on this line.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;No hay ninguna estación en esta línea.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="140"/>
         <source>family %1</source>
         <translation>familia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="132"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="141"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="133"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="142"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="135"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="144"/>
         <source>transformer %1</source>
         <translation>transformador %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="137"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="146"/>
         <source>fuse present</source>
         <translation>fusible presente</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="138"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="147"/>
         <source>&lt;span style=&apos;color:#c01c28&apos;&gt;fuse missing or blown&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#c01c28&apos;&gt;fusible ausente o fundido&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="144"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="153"/>
         <source>⚠ Station error: %1</source>
         <translation>⚠ Error de estación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
         <source>feeding</source>
         <translation>alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="155"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
         <source>idle</source>
         <translation>en espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="157"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="166"/>
         <source>fed %1</source>
         <translation>alimentado %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="159"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="168"/>
         <source>speed %1</source>
         <translation>velocidad %1</translation>
     </message>
@@ -7028,22 +7033,22 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Vista general</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="164"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="173"/>
         <source>not connected, as last read</source>
         <translation>no conectado, según la última lectura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="185"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="194"/>
         <source>⚠ Not connected: nothing has been read yet. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: aún no se ha leído nada. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="187"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="196"/>
         <source>⚠ Not connected: the greyed values are as last read at %1. The robot controls are off until the line is back.</source>
         <translation>⚠ No conectado: los valores en gris son los de la última lectura a las %1. Los mandos del robot están desactivados hasta que vuelva la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/overviewpage.cpp" line="191"/>
+        <location filename="../app/gui/pages/overviewpage.cpp" line="200"/>
         <source>Monitor-only mode is on: the robot controls are off.</source>
         <translation>El modo solo monitorización está activo: los mandos del robot están desactivados.</translation>
     </message>
@@ -8310,17 +8315,17 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::model::LineTile</name>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="49"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="44"/>
         <source>No device</source>
         <translation>Ningún equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="59"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="56"/>
         <source>No device answered</source>
         <translation>Ningún equipo ha respondido</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="60"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="57"/>
         <source>Looking for devices</source>
         <translation>Buscando equipos</translation>
     </message>

@@ -16,4 +16,10 @@ QString repeatedEventText(const QString &text, int count, const QString &lastTim
     return Tr::tr("%1 (%n times, until %2)", nullptr, count).arg(text, lastTime);
 }
 
+QString asSentence(QString text) {
+    if (!text.isEmpty())
+        text[0] = text.at(0).toUpper();
+    return text;
+}
+
 } // namespace tipscope::model

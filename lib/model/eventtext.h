@@ -11,4 +11,8 @@ namespace tipscope::model {
 // the count and `lastTime`, already written in the form the caller shows times in.
 [[nodiscard]] QString repeatedEventText(const QString &text, int count, const QString &lastTime);
 
+// A state or error text written to follow a colon ("cannot connect to tcp …: Connection
+// refused"), capitalised where it stands alone.
+[[nodiscard]] QString asSentence(QString text);
+
 } // namespace tipscope::model

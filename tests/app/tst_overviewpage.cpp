@@ -20,6 +20,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QTcpServer>
 #include <QtTest>
 
 using namespace tipscope;
@@ -46,6 +47,7 @@ private Q_SLOTS:
     void aSetpointOutOfRangeIsRefusedNotClamped();
     void theTransformerTemperatureFollowsTheTemperatureUnit();
     void eachCardShowsItsPortsLastJointAndStillFits();
+    void aLineWithoutAStationSaysWhatItIsDoing();
 
 private:
     void connectDemo();
@@ -90,6 +92,26 @@ void TestOverviewPage::eachCardShowsItsPortsLastJointAndStillFits() {
     auto *scroll = m_page->findChild<QScrollArea *>();
     QVERIFY(scroll);
     QTRY_COMPARE(scroll->verticalScrollBar()->maximum(), 0);
+}
+
+// A fleet tile of a line that never came up opens this page: it says what the line is doing, not
+// "connect to a line", which the technician already did.
+void TestOverviewPage::aLineWithoutAStationSaysWhatItIsDoing() {
+    QVERIFY2(m_page->stationText().contains(QStringLiteral("Connect to a line")),
+             qPrintable(m_page->stationText()));
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost));
+    Session::Settings settings;
+    settings.line.kind = link::LineSettings::Kind::Tcp;
+    settings.line.tcpHost = QStringLiteral("127.0.0.1");
+    settings.line.tcpPort = server.serverPort();
+    server.close(); // nobody listens: the connection is refused
+    m_session->connectTo(settings);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Retrying, kConnectMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(m_page->stationText().startsWith(QStringLiteral(
+                                  "<i>No station on this line.</i>Disconnected, retrying")) &&
+                                  m_page->stationText().endsWith(QStringLiteral("refused")),
+                              qPrintable(m_page->stationText()), kConnectMs);
 }
 
 void TestOverviewPage::init() {

@@ -2,6 +2,7 @@
 
 #include "portcard.h"
 
+#include "model/eventtext.h"
 #include "model/telemetryrecorder.h"
 
 #include <QGridLayout>
@@ -56,6 +57,10 @@ OverviewPage::OverviewPage(Session &session, QWidget *parent)
     layout->addWidget(scroll, 1);
     layout->addWidget(m_feeder);
     connect(&session, &Session::devicesChanged, this, &OverviewPage::rebuild);
+    connect(&session, &Session::stateChanged, this, [this] {
+        if (!m_session.station())
+            refreshStation();
+    });
     connect(&session.joints(), &JointWatcher::jointEnded, this, &OverviewPage::showJoint);
     connect(&session, &Session::monitorOnlyChanged, this, &OverviewPage::updateWritesAllowed);
     rebuild();
@@ -120,10 +125,14 @@ QString OverviewPage::noticeText() const {
 void OverviewPage::refreshStation() {
     StationModel *st = m_session.station();
     if (!st) {
-        m_station->setText(m_session.devices().isEmpty()
-                               ? tr("<i>No station. Connect to a line, or start the demo.</i>")
-                               : QString());
-        m_stationProblem->clear();
+        // A line in use says what it is doing about it: a fleet tile's click lands here.
+        const bool idle = m_session.state() == Session::State::Disconnected;
+        const bool none = m_session.devices().isEmpty();
+        m_station->setText(!none  ? QString()
+                           : idle ? tr("<i>No station. Connect to a line, or start the demo.</i>")
+                                  : tr("<i>No station on this line.</i>"));
+        m_stationProblem->setText(none && !idle ? model::asSentence(m_session.stateText())
+                                                : QString());
         return;
     }
     QStringList facts{

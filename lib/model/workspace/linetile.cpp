@@ -1,5 +1,6 @@
 #include "model/workspace/linetile.h"
 
+#include "model/eventtext.h"
 #include "model/workspace/workspace.h"
 
 #include <QDateTime>
@@ -7,13 +8,6 @@
 namespace tipscope::model {
 
 namespace {
-
-// The session's words start a sentence of their own on the tile.
-QString sentence(QString text) {
-    if (!text.isEmpty())
-        text[0] = text.at(0).toUpper();
-    return text;
-}
 
 bool isDown(Session::State state) {
     return state == Session::State::Retrying || state == Session::State::Failed ||
@@ -57,13 +51,13 @@ FleetTileState LineTile::state() const {
         s.downSinceMs = m_downSinceMs;
         s.lineText = FleetTile::downText(m_downSinceMs, m_clock());
         const QString why = session.line() ? session.line()->lastError() : QString();
-        s.problems.append({Level::Error, sentence(why.isEmpty() ? session.stateText() : why)});
+        s.problems.append({Level::Error, asSentence(why.isEmpty() ? session.stateText() : why)});
     } else {
         s.lineText = session.state() == Session::State::Connected ? tr("No device answered")
                                                                   : tr("Looking for devices");
         s.problems.append(
             {session.state() == Session::State::Connected ? Level::Warning : Level::Info,
-             sentence(session.stateText())});
+             asSentence(session.stateText())});
     }
     return s;
 }
