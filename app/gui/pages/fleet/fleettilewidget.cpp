@@ -59,7 +59,9 @@ bool FleetTileWidget::refresh() {
     m_arrivedNs = -1;
     // Laid out once per change; paints between changes (exposures, scrolling) reuse it.
     const qsizetype before = m_lines.size();
-    m_lines = layoutLines();
+    QList<Line> lines = layoutLines();
+    keepShapedText(lines);
+    m_lines = std::move(lines);
     setAccessibleName(m_shown.deviceName);
     if (m_lines.size() != before)
         updateGeometry();
@@ -125,6 +127,24 @@ void FleetTileWidget::appendProblem(QList<Line> &lines, const model::FleetProble
     lines.append({row, problem.level, false, rows > 0});
 }
 
+// A row whose text did not change keeps its shaped glyphs; on a station tile only the rows of
+// the ports whose readings moved are shaped again.
+void FleetTileWidget::keepShapedText(QList<Line> &lines) const {
+    for (qsizetype i = 0; i < qMin(lines.size(), m_lines.size()); ++i) {
+        const Line &was = m_lines.at(i);
+        if (was.text == lines.at(i).text && was.bold == lines.at(i).bold) {
+            lines[i].glyphs = was.glyphs;
+            lines[i].glyphsWidth = was.glyphsWidth;
+        }
+    }
+}
+
+QFont FleetTileWidget::fontOf(const Line &line) const {
+    QFont font = this->font();
+    font.setBold(line.bold);
+    return font;
+}
+
 QStringList FleetTileWidget::lines() const {
     QStringList texts;
     for (const Line &line : m_lines)
@@ -161,9 +181,8 @@ void FleetTileWidget::paintEvent(QPaintEvent *) {
     const int height = lineHeight();
     const int iconSize = fontMetrics().height();
     int y = kMargin;
-    for (const Line &line : std::as_const(m_lines)) {
-        QFont font = this->font();
-        font.setBold(line.bold);
+    for (Line &line : m_lines) {
+        const QFont font = fontOf(line);
         painter.setFont(font);
         int x = kMargin;
         if (line.continued) {
@@ -177,8 +196,14 @@ void FleetTileWidget::paintEvent(QPaintEvent *) {
             x += iconSize + kLineGap * 2;
         }
         const int width = this->width() - kMargin - x;
-        painter.drawText(QRect(x, y, width, height), Qt::AlignLeft | Qt::AlignVCenter,
-                         QFontMetrics(font).elidedText(line.text, Qt::ElideRight, width));
+        const QFontMetrics metrics(font);
+        if (line.glyphsWidth != width) {
+            line.glyphs.setTextFormat(Qt::PlainText);
+            line.glyphs.setText(metrics.elidedText(line.text, Qt::ElideRight, width));
+            line.glyphs.prepare(QTransform(), font);
+            line.glyphsWidth = width;
+        }
+        painter.drawStaticText(QPointF(x, y + (height - metrics.height()) / 2.0), line.glyphs);
         y += height;
     }
 }

@@ -15,6 +15,7 @@
 
 #include <QElapsedTimer>
 #include <QIcon>
+#include <QStaticText>
 #include <QWidget>
 #include <array>
 
@@ -53,10 +54,20 @@ protected:
 
 private:
     struct Line {
+        Line(QString text, model::Level level, bool bold, bool continued = false)
+            : text(std::move(text))
+            , level(level)
+            , bold(bold)
+            , continued(continued) {}
+
         QString text;
         model::Level level = model::Level::Unknown; // an icon for problems, none otherwise
         bool bold = false;
         bool continued = false; // a wrapped problem's further row: under its text, no icon
+        // The text elided to `glyphsWidth` and shaped, kept while the text is: shaping at every
+        // paint was the tiles' largest cost with 128 ports changing.
+        QStaticText glyphs;
+        int glyphsWidth = -1;
     };
 
     void markDirty();
@@ -64,6 +75,8 @@ private:
     [[nodiscard]] QString portLine(const model::FleetPortState &port) const;
     void appendProblem(QList<Line> &lines, const model::FleetProblem &problem) const;
     [[nodiscard]] int lineHeight() const;
+    [[nodiscard]] QFont fontOf(const Line &line) const;
+    void keepShapedText(QList<Line> &lines) const;
 
     model::FleetTileSource *m_tile;
     model::FleetTileState m_shown;
