@@ -35,6 +35,10 @@ void Reply::finish(ReplyError error, const QString &why) {
     m_error = error;
     m_errorString = why;
     Q_EMIT finished();
+    // Nothing touches a reply after finish(): the queue's loops and the deferred finish hold it
+    // by QPointer or call finish() last.
+    if (m_deleteWhenFinished)
+        delete this;
 }
 
 } // namespace tipscope::link

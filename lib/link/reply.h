@@ -37,6 +37,9 @@ public:
     [[nodiscard]] int nakCode() const { return m_nakCode; }
     [[nodiscard]] int attempts() const { return m_attempts; }
     [[nodiscard]] qint64 latencyUs() const { return m_latencyUs; }
+    // The reply deletes itself once finished() has been delivered: what deleteLater() in a slot
+    // does, without posting an event (a wake-up of the event loop) for every request of a poll.
+    void setDeleteWhenFinished(bool on) { m_deleteWhenFinished = on; }
 
 Q_SIGNALS:
     void finished();
@@ -53,6 +56,7 @@ private:
     int m_nakCode = 0;
     int m_attempts = 0;
     qint64 m_latencyUs = 0;
+    bool m_deleteWhenFinished = false;
 };
 
 } // namespace tipscope::link

@@ -189,6 +189,7 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
     m_stats.receivedBytes += bytes.size();
     m_tap.rx(bytes);
     qCDebug(lcLinkHex).noquote() << "RX" << bytes.toHex(' ');
+    ++m_receiving;
     for (const DecodeEvent &ev : m_decoder.feed(bytes)) {
         const bool waiting = m_current && (m_state == State::Writing || m_state == State::Waiting);
         switch (ev.kind) {
@@ -214,6 +215,11 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
             break;
         }
     }
+    --m_receiving;
+    // The frames after an answer in the same read were judged before the next request went out,
+    // as they were when the gap was a timer.
+    if (m_receiving == 0 && m_gapDue)
+        onGapElapsed();
     Q_EMIT statsChanged();
 }
 
@@ -266,7 +272,7 @@ void RequestQueue::complete(const Frame &answer) {
         m_stats.naks[code] += 1;
         if (code == kNakBcc && canRetry(e)) {
             m_state = State::Gap;
-            m_gapTimer.start(m_settings.interFrameGapMs);
+            startGap();
             return;
         }
         finishCurrent(ReplyError::Nak,
@@ -300,7 +306,7 @@ void RequestQueue::attemptFailed(ReplyError error, const QString &why) {
                               << e.attempts << (retry ? "retrying" : "giving up");
     if (retry) {
         m_state = State::Gap;
-        m_gapTimer.start(m_settings.interFrameGapMs);
+        startGap();
         return;
     }
     // The streak counts requests that got no answer at all, not attempts; a probe's silence is
@@ -325,7 +331,7 @@ void RequestQueue::finishCurrent(ReplyError error, const QString &why, const Fra
     Entry e = std::move(*m_current);
     m_current.reset();
     m_state = State::Gap;
-    m_gapTimer.start(m_settings.interFrameGapMs);
+    startGap();
     const int nak = error == ReplyError::Nak ? parseNumber(answer.data).value_or(-1) : 0;
     for (const QPointer<Reply> &r : e.replies) {
         if (!r)
@@ -338,7 +344,15 @@ void RequestQueue::finishCurrent(ReplyError error, const QString &why, const Fra
     }
 }
 
+void RequestQueue::startGap() {
+    if (m_receiving > 0 && m_settings.interFrameGapMs <= 0)
+        m_gapDue = true;
+    else
+        m_gapTimer.start(m_settings.interFrameGapMs);
+}
+
 void RequestQueue::onGapElapsed() {
+    m_gapDue = false;
     if (m_current) {
         if (m_open && m_transport)
             transmit();
@@ -351,6 +365,7 @@ void RequestQueue::onGapElapsed() {
 void RequestQueue::failEverything(ReplyError error, const QString &why) {
     m_timer.stop();
     m_gapTimer.stop();
+    m_gapDue = false;
     m_holdTimer.stop();
     m_state = State::Idle;
     m_decoder.reset();

@@ -148,6 +148,7 @@ private:
     void onReceived(const QByteArray &bytes);
     void onTimer();
     void onGapElapsed();
+    void startGap();
     void onFrame(const protocol::DecodeEvent &event);
     void onStray(const protocol::DecodeEvent &event);
     void complete(const protocol::Frame &answer);
@@ -173,6 +174,11 @@ private:
     int m_urgentRun = 0;
     QTimer m_timer;
     QTimer m_gapTimer;
+    // Within onReceived(), a gap of 0 ms ends when the bytes received are all handled, not at
+    // another turn of the event loop: at a full wire that turn was a poll() of every socket per
+    // request.
+    int m_receiving = 0;
+    bool m_gapDue = false;
     QTimer m_holdTimer;
     LateAnswers m_late;
     protocol::FrameDecoder m_decoder;

@@ -72,8 +72,13 @@ void TcpTransport::close() {
 }
 
 void TcpTransport::write(const QByteArray &bytes) {
-    if (isOpen())
-        m_socket.write(bytes);
+    if (!isOpen())
+        return;
+    // Out now, not at the event loop's next turn: one turn (a poll() of every line's socket) less
+    // per request, and the request is on the wire sooner. (An unbuffered socket would save the
+    // write notifier's switching too, but it never reports a peer that closed.)
+    m_socket.write(bytes);
+    m_socket.flush();
 }
 
 bool TcpTransport::isOpen() const {

@@ -171,8 +171,8 @@ Reply *Parameter::refresh(Priority priority) {
         setState(State::Reading);
     Reply *reply =
         m_device.queue().enqueue(Request::read(m_device.address(), *m_read, priority), this);
+    reply->setDeleteWhenFinished(true);
     connect(reply, &Reply::finished, this, [this, reply, wasFailed, failure, byLine] {
-        reply->deleteLater();
         if (reply->ok()) {
             deviceReported(reply->answer().data);
             return;
