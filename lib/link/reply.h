@@ -27,6 +27,7 @@ class Reply : public QObject {
     Q_OBJECT
 public:
     explicit Reply(const protocol::Frame &request, QObject *parent = nullptr);
+    ~Reply() override;
 
     [[nodiscard]] bool isFinished() const { return m_finished; }
     [[nodiscard]] ReplyError error() const { return m_error; }
@@ -57,6 +58,7 @@ private:
     int m_attempts = 0;
     qint64 m_latencyUs = 0;
     bool m_deleteWhenFinished = false;
+    bool *m_deletedDuringFinish = nullptr; // set while finished() is being delivered
 };
 
 } // namespace tipscope::link

@@ -143,6 +143,7 @@ private Q_SLOTS:
     void timeoutStreakCountsRequestsNotRetries();
     void probeSilenceDoesNotLengthenTheTimeoutStreak();
     void corruptedAnswerEndsTheTimeoutStreak();
+    void aReplyThatDeletesItselfIsGoneAfterItsFinishedEvenWhenItsOwnerWentFirst();
 };
 
 void TestRequestQueue::oneRequestIsOutstandingAtATime() {
@@ -957,6 +958,30 @@ void TestRequestQueue::corruptedAnswerEndsTheTimeoutStreak() {
 
     QVERIFY(!streak.isEmpty());
     QCOMPARE(streak.last().at(0).toInt(), 1);
+}
+
+// A polled reading's reply goes once its finished() is delivered, without a posted event; when a
+// slot deletes its owner (and with it the reply) first, it is not deleted a second time (ASan
+// and glibc both report a double delete).
+void TestRequestQueue::aReplyThatDeletesItselfIsGoneAfterItsFinishedEvenWhenItsOwnerWentFirst() {
+    Bench b;
+    b.transport.setResponder(answerEverything);
+    QPointer<Reply> kept = b.read("ST1");
+    kept->setDeleteWhenFinished(true);
+    bool delivered = false;
+    connect(kept, &Reply::finished, this, [&] { delivered = kept && kept->ok(); });
+    QTRY_VERIFY_WITH_TIMEOUT(!kept, kNoAnswerWaitMs);
+    QVERIFY(delivered);
+
+    auto *owner = new QObject;
+    QPointer<Reply> orphan = b.queue.enqueue(Request::read(1, "ST2", Priority::UserRead), owner);
+    orphan->setDeleteWhenFinished(true);
+    connect(orphan, &Reply::finished, this, [&owner] {
+        delete owner;
+        owner = nullptr;
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(!owner, kNoAnswerWaitMs);
+    QVERIFY(!orphan);
 }
 
 QTEST_GUILESS_MAIN(TestRequestQueue)
