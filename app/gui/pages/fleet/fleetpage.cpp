@@ -115,9 +115,8 @@ void FleetPage::refreshNow() {
 QString FleetPage::summaryText() const {
     const auto attention = std::count_if(m_tiles.cbegin(), m_tiles.cend(),
                                          [](const auto *t) { return t->shown().needsAttention(); });
-    const auto empty = std::count_if(m_tiles.cbegin(), m_tiles.cend(), [](const auto *t) {
-        return qobject_cast<const model::LineTile *>(&t->tile()) != nullptr;
-    });
+    const auto empty = std::count_if(m_tiles.cbegin(), m_tiles.cend(),
+                                     [](const auto *t) { return t->shown().lineOnly; });
     const QString devices =
         tr("Devices: %1 · need attention: %2").arg(m_tiles.size() - empty).arg(attention);
     return empty == 0 ? devices : tr("%1 · lines without a device: %2").arg(devices).arg(empty);
