@@ -98,6 +98,7 @@ private Q_SLOTS:
     void opensToAListeningServer();
     void openingWhenOpenSaysOpenedAgainOnTheSameConnection();
     void sendsExactlyTheBytesAndSaysTheyWereWritten();
+    void moreThanTheSocketTakesAtOnceGoesOutWholeAndInOrder();
     void handsOnWhatArrivesHoweverTheNetworkSplitsIt();
     void whatThePeerSentBeforeClosingIsStillReceived();
     void aPeerThatClosesIsADroppedLineWithTheReason();
@@ -150,6 +151,25 @@ void TestTcpTransport::sendsExactlyTheBytesAndSaysTheyWereWritten() {
                              kWaitMs);
     QCOMPARE(arrived, first + second);
     QTRY_COMPARE_WITH_TIMEOUT(summed(l.written), qint64(first.size() + second.size()), kWaitMs);
+}
+
+// A request goes straight to the socket; what the socket cannot take yet (a peer that is not
+// reading, a full buffer) waits in Qt's buffer, and what is written next goes after it.
+void TestTcpTransport::moreThanTheSocketTakesAtOnceGoesOutWholeAndInOrder() {
+    Link l;
+    QTcpSocket *peer = l.connect();
+    QVERIFY(peer);
+    QByteArray big(32 << 20, Qt::Uninitialized); // beyond any loopback socket's buffers
+    for (qsizetype i = 0; i < big.size(); ++i)
+        big[i] = char(i * 7 / 5);
+    const QByteArray after = Frame::read("SMN").addressed(0, 1).encode();
+    l.t.write(big);
+    l.t.write(after);
+    QByteArray arrived;
+    QTRY_VERIFY_WITH_TIMEOUT((arrived += peer->readAll()).size() >= big.size() + after.size(),
+                             kWaitMs);
+    QVERIFY(arrived == big + after); // not QCOMPARE: 32 MB would be printed on a failure
+    QTRY_COMPARE_WITH_TIMEOUT(summed(l.written), qint64(big.size() + after.size()), kWaitMs);
 }
 
 void TestTcpTransport::handsOnWhatArrivesHoweverTheNetworkSplitsIt() {
