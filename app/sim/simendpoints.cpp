@@ -1,5 +1,6 @@
 #include "simendpoints.h"
 
+#include "link/socketsend.h"
 #include "sim/simline.h"
 
 #include <QFile>
@@ -130,8 +131,12 @@ TcpEndpoint::TcpEndpoint(SimLine &line, QObject *parent)
     , m_server(new QTcpServer(this)) {
     connect(m_server, &QTcpServer::newConnection, this, &TcpEndpoint::onNewConnection);
     connect(&m_line, &SimLine::transmit, this, [this](const QByteArray &b) {
-        if (m_client)
-            writeBounded(*m_client, b, m_line);
+        if (!m_client)
+            return;
+        // Sent at once, as a device server does, not at the event loop's next turn.
+        const qsizetype sent = link::sendNow(*m_client, b);
+        if (sent < b.size())
+            writeBounded(*m_client, sent > 0 ? b.mid(sent) : b, m_line);
     });
 }
 
