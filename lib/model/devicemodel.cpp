@@ -49,9 +49,8 @@ DeviceModel::DeviceModel(RequestQueue &queue, const DeviceInfo &info, const Cata
         auto *p = new Parameter(*this, reads.value(code), writes.value(code), this);
         m_parameters.append(p);
         m_byCode.insert(code, p);
-        if (p->meta().role != Role::None)
-            m_byRole.insert({p->meta().role, p->spec().port}, p);
     }
+    indexByRole();
     for (Parameter *p : m_parameters) {
         const CommandSpec &s = p->meta();
         if (!s.limitMin.isEmpty() || !s.limitMax.isEmpty())
@@ -83,8 +82,21 @@ Action *DeviceModel::action(const QByteArray &code) const {
     return m_actionByCode.value(code);
 }
 
+void DeviceModel::indexByRole() {
+    int roles = 0;
+    for (const Parameter *p : std::as_const(m_parameters)) {
+        roles = qMax(roles, int(p->meta().role) + 1);
+        m_rolePorts = qMax(m_rolePorts, p->spec().port + 1);
+    }
+    m_byRole.assign(size_t(roles) * size_t(m_rolePorts), nullptr);
+    for (Parameter *p : std::as_const(m_parameters))
+        if (p->meta().role != Role::None && p->spec().port >= 0)
+            m_byRole[size_t(int(p->meta().role) * m_rolePorts + p->spec().port)] = p;
+}
+
 Parameter *DeviceModel::parameter(Role role, int port) const {
-    return m_byRole.value({role, port});
+    const size_t at = size_t(int(role) * m_rolePorts + port);
+    return port >= 0 && port < m_rolePorts && at < m_byRole.size() ? m_byRole[at] : nullptr;
 }
 
 Action *DeviceModel::action(Role role) const {

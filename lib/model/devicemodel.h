@@ -25,6 +25,7 @@
 #include <QMap>
 #include <QObject>
 #include <QPointer>
+#include <vector>
 
 namespace tipscope::model {
 
@@ -127,12 +128,17 @@ protected:
     [[nodiscard]] QString sourceName(int port = 0) const;
 
 private:
+    void indexByRole();
+
     link::RequestQueue &m_queue;
     link::DeviceInfo m_info;
     const protocol::Catalog &m_catalog;
     QList<Parameter *> m_parameters;
     QMap<QByteArray, Parameter *> m_byCode;
-    QMap<std::pair<protocol::Role, int>, Parameter *> m_byRole;
+    // [role][port], flat: every reading looks values up by role (the recorder, the tiles, the
+    // scheduler), and a tree of pairs was a visible share of the fleet's CPU.
+    std::vector<Parameter *> m_byRole;
+    int m_rolePorts = 0;
     QList<Action *> m_actions;
     QMap<QByteArray, Action *> m_actionByCode;
     QMap<protocol::Role, Action *> m_actionByRole;

@@ -35,9 +35,10 @@ void PollScheduler::addDevice(DeviceModel *device) {
         const PollClass c = p->isReadable() ? pollClassOf(p->meta()) : PollClass::None;
         if (c == PollClass::None)
             continue;
-        m_items.push_back({p, device, c, p->meta().usesPort() ? p->spec().port : 0, p->meta().role,
-                           nowMs(), false, 0});
+        m_items.push_back({p, p, device, c, p->meta().usesPort() ? p->spec().port : 0,
+                           p->meta().role, nowMs(), false, 0, 0});
     }
+    updateIntervals(device);
     connect(device, &QObject::destroyed, this, [this, device] { removeDevice(device); });
     if (m_running)
         pump();
@@ -61,6 +62,7 @@ void PollScheduler::setInterval(PollClass c, int ms) {
     if (c == PollClass::None)
         return;
     m_intervals[int(c)] = qMax(0, ms);
+    updateIntervals();
     for (Item &i : m_items)
         if (i.pollClass == c && !i.inFlight)
             i.dueMs = qMin(i.dueMs, nowMs() + effectiveInterval(i));
@@ -74,6 +76,7 @@ int PollScheduler::interval(PollClass c) const {
 
 void PollScheduler::setVisiblePorts(DeviceModel *device, const QSet<int> &ports) {
     m_visible.insert(device, ports);
+    updateIntervals(device);
     for (Item &i : m_items)
         if (i.device == device && i.pollClass == PollClass::Live && ports.contains(i.port) &&
             !i.inFlight)
@@ -90,7 +93,13 @@ void PollScheduler::requestRefresh(DeviceModel *device, PollClass c) {
         pump();
 }
 
-int PollScheduler::effectiveInterval(const Item &i) const {
+void PollScheduler::updateIntervals(const DeviceModel *device, int port) {
+    for (Item &i : m_items)
+        if ((!device || i.device == device) && (port < 0 || i.port == port))
+            i.interval = computeInterval(i);
+}
+
+int PollScheduler::computeInterval(const Item &i) const {
     const int iv =
         i.pollClass == PollClass::Live && i.port > 0 && !m_visible.value(i.device).contains(i.port)
             ? m_intervals[int(PollClass::Status)]
@@ -133,6 +142,7 @@ double PollScheduler::urgency(const Item &i, qint64 now) const {
 void PollScheduler::setAdaptive(bool on) {
     m_adaptive = on;
     m_busy.clear();
+    updateIntervals();
     const qint64 now = nowMs();
     for (Item &i : m_items)
         if (!i.inFlight)
@@ -163,19 +173,11 @@ PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
     return best;
 }
 
-const Parameter *PollScheduler::portParameter(DeviceModel *device, int port,
-                                              protocol::Role role) const {
-    for (const Item &i : m_items)
-        if (i.device == device && i.port == port && i.role == role)
-            return i.parameter;
-    return nullptr;
-}
-
 bool PollScheduler::isBusy(DeviceModel *device, int port) const {
     using protocol::Role;
-    const Parameter *tip = portParameter(device, port, Role::TipTemperature);
-    const Parameter *setpoint = portParameter(device, port, Role::Setpoint);
-    const Parameter *power = portParameter(device, port, Role::Power);
+    const Parameter *tip = device->parameter(Role::TipTemperature, port);
+    const Parameter *setpoint = device->parameter(Role::Setpoint, port);
+    const Parameter *power = device->parameter(Role::Power, port);
     const auto tipNow = tip ? tip->number() : std::nullopt;
     const auto setNow = setpoint ? setpoint->number() : std::nullopt;
     if (tipNow && setNow && *tipNow < *setNow - kBusyBelowK)
@@ -193,9 +195,11 @@ void PollScheduler::followBusy(DeviceModel *device, int port, qint64 now) {
         return;
     if (!busy) {
         m_busy.remove(key);
+        updateIntervals(device, port);
         return;
     }
     m_busy.insert(key);
+    updateIntervals(device, port);
     for (Item &i : m_items)
         if (i.device == device && i.port == port && !i.inFlight &&
             (i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power))
@@ -265,7 +269,7 @@ void PollScheduler::pump() {
         }
         best->inFlight = true;
         ++m_inFlight;
-        QPointer<Parameter> param = best->parameter;
+        Parameter *param = best->raw;
         connect(reply, &Reply::finished, this, [this, reply, param] {
             --m_inFlight;
             ++m_done;
@@ -275,7 +279,7 @@ void PollScheduler::pump() {
             if (lineDown)
                 m_holdUntilMs = t + kLineDownHoldMs;
             for (Item &i : m_items) {
-                if (i.parameter != param)
+                if (i.raw != param)
                     continue;
                 if (m_adaptive && i.port > 0 && !lineDown)
                     followBusy(i.device, i.port, t);

@@ -87,6 +87,7 @@ public:
 private:
     struct Item {
         QPointer<Parameter> parameter;
+        Parameter *raw = nullptr; // the same, to find the item fast; never dereferenced
         DeviceModel *device = nullptr;
         PollClass pollClass = PollClass::None;
         int port = 0;
@@ -94,10 +95,18 @@ private:
         qint64 dueMs = 0;
         bool inFlight = false;
         qint64 polledMs = 0; // when its last poll finished
+        int interval = 0;    // effectiveInterval(), kept current by updateIntervals()
     };
 
     void pump();
-    [[nodiscard]] int effectiveInterval(const Item &item) const;
+    // The interval the item is polled at now. Cached: choosing a poll compares every item, and
+    // working it out each time (the port's visibility, whether it is in a joint) was most of the
+    // scheduler's cost at a full wire.
+    [[nodiscard]] static int effectiveInterval(const Item &item) { return item.interval; }
+    [[nodiscard]] int computeInterval(const Item &item) const;
+    // After what the intervals depend on changed: of a device's items (all devices' when null),
+    // of one port's when port >= 0.
+    void updateIntervals(const DeviceModel *device = nullptr, int port = -1);
     [[nodiscard]] int adaptedInterval(const Item &item, int interval) const;
     // A busy port's tip temperature or power, while adaptive.
     [[nodiscard]] bool inJoint(const Item &item) const;
@@ -106,8 +115,6 @@ private:
     [[nodiscard]] double urgency(const Item &item, qint64 now) const;
     // Filling the wire: the live value furthest along its interval, not yet due; null if none.
     [[nodiscard]] Item *furthestAlong(qint64 now);
-    [[nodiscard]] const Parameter *portParameter(DeviceModel *device, int port,
-                                                 protocol::Role role) const;
     // After a reading: a port that has just turned busy gets its tip and power due now.
     void followBusy(DeviceModel *device, int port, qint64 now);
     [[nodiscard]] qint64 nowMs() const { return m_clock.elapsed(); }
