@@ -10,6 +10,7 @@
 #include <QElapsedTimer>
 #include <QTextStream>
 #include <memory>
+#include <numeric>
 #include <vector>
 
 namespace tipscope::bench {
@@ -89,6 +90,7 @@ Snapshot snapshot(const model::Workspace &workspace, const std::vector<SimStatio
 double printRates(const model::Workspace &workspace, const Snapshot &before, const Snapshot &after,
                   double seconds) {
     double rateSum = 0, limitSum = 0;
+    QList<double> latencies, periods, wires; // latencies: every line's last answers, pooled
     for (int i = 0; i < workspace.count(); ++i) {
         const qint64 answered = after.lines[size_t(i)].answered - before.lines[size_t(i)].answered;
         const qint64 bytes = after.lines[size_t(i)].bytes - before.lines[size_t(i)].bytes;
@@ -102,11 +104,33 @@ double printRates(const model::Workspace &workspace, const Snapshot &before, con
                     QStringLiteral("tx/s"));
         rateSum += rate;
         limitSum += limit;
+        if (rate > 0 && limit > 0) {
+            periods.append(1000 / rate);
+            wires.append(1000 / limit);
+            for (const qint64 us : workspace.session(i)->line()->queue().stats().recentLatencyUs)
+                latencies.append(double(us) / 1000);
+        }
     }
     printFigure(QStringLiteral("fleet.tx_per_s"), rateSum, QStringLiteral("tx/s"));
     printFigure(QStringLiteral("fleet.wire_limit_tx_per_s"), limitSum, QStringLiteral("tx/s"));
     printFigure(QStringLiteral("fleet.rate_ratio"), limitSum > 0 ? rateSum / limitSum : 0,
                 QString(), 3);
+    // Where a transaction's time goes beyond its wire time: before the answer was complete (the
+    // simulator's and this process's wake-ups, the loopback) or after it (choosing and sending
+    // the next request).
+    const double period = quantile(periods, 0.5), wire = quantile(wires, 0.5);
+    const double latency =
+        latencies.isEmpty()
+            ? 0
+            : std::accumulate(latencies.begin(), latencies.end(), 0.0) / double(latencies.size());
+    printFigure(QStringLiteral("fleet.tx_period_ms"), period, QStringLiteral("ms"), 2);
+    printFigure(QStringLiteral("fleet.tx_wire_ms"), wire, QStringLiteral("ms"), 2);
+    printFigure(QStringLiteral("fleet.answer_latency_ms_mean"), latency, QStringLiteral("ms"), 2);
+    printFigure(QStringLiteral("fleet.answer_latency_ms_p50"), quantile(latencies, 0.5),
+                QStringLiteral("ms"), 2);
+    printFigure(QStringLiteral("fleet.answer_latency_ms_p99"), quantile(latencies, 0.99),
+                QStringLiteral("ms"), 2);
+    printFigure(QStringLiteral("fleet.after_answer_ms"), period - latency, QStringLiteral("ms"), 2);
     return rateSum;
 }
 

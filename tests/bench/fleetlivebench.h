@@ -18,6 +18,11 @@
 //                                transaction (its link statistics)
 //   fleet.tx_per_s, fleet.wire_limit_tx_per_s   both summed over the lines
 //   fleet.rate_ratio             the two sums' ratio (target >= 0.95)
+//   fleet.tx_period_ms, fleet.tx_wire_ms   a transaction's mean time and its wire time (the
+//                                lines' median); fleet.answer_latency_ms_mean/_p50/_p99, from a
+//                                request written to its answer complete (each line's last 1000
+//                                answers, pooled), and fleet.after_answer_ms, the rest: from an
+//                                answer to the next request written
 //   fleet.cpu_us_per_tx          the process's CPU time per transaction
 //   fleet.tiles, fleet.tile_repaints   the page's tiles, and its repaints during the run
 //   fleet.tile_latency_ms_p50/_p99  a sample's arrival to its tile repainted (target p99 < 250)
