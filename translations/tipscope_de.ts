@@ -2427,53 +2427,53 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="70"/>
+        <location filename="../lib/model/devicemodel.cpp" line="69"/>
         <source>%1 at %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="71"/>
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="75"/>
-        <location filename="../lib/model/devicemodel.cpp" line="145"/>
+        <location filename="../lib/model/devicemodel.cpp" line="74"/>
+        <location filename="../lib/model/devicemodel.cpp" line="157"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="205"/>
+        <location filename="../lib/model/devicemodel.cpp" line="217"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="107"/>
+        <location filename="../lib/model/devicemodel.cpp" line="119"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="131"/>
+        <location filename="../lib/model/devicemodel.cpp" line="143"/>
         <source>tool %1</source>
         <translation>Werkzeug %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="142"/>
+        <location filename="../lib/model/devicemodel.cpp" line="154"/>
         <source>%1, %2, port %3</source>
         <translation>%1, %2, Port %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="148"/>
+        <location filename="../lib/model/devicemodel.cpp" line="160"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="191"/>
+        <location filename="../lib/model/devicemodel.cpp" line="203"/>
         <source>Monitor-only mode is on: nothing is written.</source>
         <translation>Nur-Beobachten ist an: nichts wird geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="193"/>
+        <location filename="../lib/model/devicemodel.cpp" line="205"/>
         <source>Not connected: nothing can be sent until the line is back.</source>
         <translation>Nicht verbunden: nichts kann gesendet werden, bis die Leitung wieder da ist.</translation>
     </message>
@@ -6208,27 +6208,27 @@ Zurücksetzen?</translation>
         <translation>Nur was Aufmerksamkeit braucht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="122"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="121"/>
         <source>Devices: %1 · need attention: %2</source>
         <translation>Geräte: %1 · brauchen Aufmerksamkeit: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="123"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="122"/>
         <source>%1 · lines without a device: %2</source>
         <translation>%1 · Linien ohne Gerät: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="258"/>
         <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
         <translation>Noch keine Geräte: vom Broker des Werks ist nichts gekommen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="260"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Keine Geräte: die Leitungen des Arbeitsbereichs haben noch keine gefunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="258"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="257"/>
         <source>No device needs attention.</source>
         <translation>Kein Gerät braucht Aufmerksamkeit.</translation>
     </message>
@@ -6241,12 +6241,12 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FleetTileWidget</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="74"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="76"/>
         <source>P%1  %2 / %3  %4  %5</source>
         <translation>P%1  %2 / %3  %4  %5</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="99"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="101"/>
         <source>Last joint: %1 (port %2)</source>
         <translation>Letzte Lötstelle: %1 (Port %2)</translation>
     </message>
@@ -8086,37 +8086,37 @@ Möchten Sie fortfahren?</translation>
         <translation>nicht gesendet: die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="213"/>
+        <location filename="../lib/link/requestqueue.cpp" line="214"/>
         <source>the answer was corrupted (%1)</source>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="242"/>
+        <location filename="../lib/link/requestqueue.cpp" line="248"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="251"/>
+        <location filename="../lib/link/requestqueue.cpp" line="257"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="255"/>
+        <location filename="../lib/link/requestqueue.cpp" line="261"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="273"/>
+        <location filename="../lib/link/requestqueue.cpp" line="279"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="294"/>
+        <location filename="../lib/link/requestqueue.cpp" line="300"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="312"/>
+        <location filename="../lib/link/requestqueue.cpp" line="318"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -8124,7 +8124,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="315"/>
+        <location filename="../lib/link/requestqueue.cpp" line="321"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
@@ -8132,17 +8132,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="318"/>
+        <location filename="../lib/link/requestqueue.cpp" line="324"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="380"/>
+        <location filename="../lib/link/requestqueue.cpp" line="395"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="382"/>
+        <location filename="../lib/link/requestqueue.cpp" line="397"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>
@@ -8181,17 +8181,17 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::link::TcpTransport</name>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="27"/>
+        <location filename="../lib/link/tcptransport.cpp" line="29"/>
         <source>the connection to %1 dropped (%2)</source>
         <translation>die Verbindung zu %1 ist abgebrochen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="34"/>
+        <location filename="../lib/link/tcptransport.cpp" line="36"/>
         <source>cannot connect to %1: %2</source>
         <translation>Verbindung zu %1 nicht möglich: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="63"/>
+        <location filename="../lib/link/tcptransport.cpp" line="65"/>
         <source>cannot connect to %1: no connection within %2 s</source>
         <translation>Verbindung zu %1 nicht möglich: keine Verbindung innerhalb von %2 s</translation>
     </message>
@@ -8319,12 +8319,17 @@ Möchten Sie fortfahren?</translation>
         <translation>Kein Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="56"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="58"/>
         <source>No device answered</source>
         <translation>Kein Gerät hat geantwortet</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="57"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="59"/>
+        <source>Connecting</source>
+        <translation>Verbindung wird aufgebaut</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="60"/>
         <source>Looking for devices</source>
         <translation>Suche nach Geräten</translation>
     </message>

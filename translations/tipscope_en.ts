@@ -288,7 +288,7 @@
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="312"/>
+        <location filename="../lib/link/requestqueue.cpp" line="318"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
@@ -296,7 +296,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="315"/>
+        <location filename="../lib/link/requestqueue.cpp" line="321"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>%n byte of garbage came instead</numerusform>

@@ -2428,53 +2428,53 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>DeviceModel</name>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="70"/>
+        <location filename="../lib/model/devicemodel.cpp" line="69"/>
         <source>%1 at %2</source>
         <translation>%1, dirección %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="71"/>
+        <location filename="../lib/model/devicemodel.cpp" line="70"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="75"/>
-        <location filename="../lib/model/devicemodel.cpp" line="145"/>
+        <location filename="../lib/model/devicemodel.cpp" line="74"/>
+        <location filename="../lib/model/devicemodel.cpp" line="157"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="205"/>
+        <location filename="../lib/model/devicemodel.cpp" line="217"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="107"/>
+        <location filename="../lib/model/devicemodel.cpp" line="119"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="131"/>
+        <location filename="../lib/model/devicemodel.cpp" line="143"/>
         <source>tool %1</source>
         <translation>herramienta %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="142"/>
+        <location filename="../lib/model/devicemodel.cpp" line="154"/>
         <source>%1, %2, port %3</source>
         <translation>%1, %2, puerto %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="148"/>
+        <location filename="../lib/model/devicemodel.cpp" line="160"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="191"/>
+        <location filename="../lib/model/devicemodel.cpp" line="203"/>
         <source>Monitor-only mode is on: nothing is written.</source>
         <translation>El modo solo monitorización está activo: no se escribe nada.</translation>
     </message>
     <message>
-        <location filename="../lib/model/devicemodel.cpp" line="193"/>
+        <location filename="../lib/model/devicemodel.cpp" line="205"/>
         <source>Not connected: nothing can be sent until the line is back.</source>
         <translation>No conectado: no se puede enviar nada hasta que vuelva la línea.</translation>
     </message>
@@ -6209,27 +6209,27 @@ Reset it?</source>
         <translation>Solo lo que requiere atención</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="122"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="121"/>
         <source>Devices: %1 · need attention: %2</source>
         <translation>Equipos: %1 · requieren atención: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="123"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="122"/>
         <source>%1 · lines without a device: %2</source>
         <translation>%1 · líneas sin equipo: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="258"/>
         <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
         <translation>Aún no hay dispositivos: no ha llegado nada del broker de la planta.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="260"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Sin equipos: las líneas del espacio de trabajo aún no han encontrado ninguno.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="258"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="257"/>
         <source>No device needs attention.</source>
         <translation>Ningún equipo requiere atención.</translation>
     </message>
@@ -6242,12 +6242,12 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FleetTileWidget</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="74"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="76"/>
         <source>P%1  %2 / %3  %4  %5</source>
         <translation>P%1  %2 / %3  %4  %5</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="99"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="101"/>
         <source>Last joint: %1 (port %2)</source>
         <translation>Última soldadura: %1 (puerto %2)</translation>
     </message>
@@ -8087,37 +8087,37 @@ Do you want to continue?</source>
         <translation>no enviado: la línea no está conectada</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="213"/>
+        <location filename="../lib/link/requestqueue.cpp" line="214"/>
         <source>the answer was corrupted (%1)</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="242"/>
+        <location filename="../lib/link/requestqueue.cpp" line="248"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="251"/>
+        <location filename="../lib/link/requestqueue.cpp" line="257"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="255"/>
+        <location filename="../lib/link/requestqueue.cpp" line="261"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="273"/>
+        <location filename="../lib/link/requestqueue.cpp" line="279"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="294"/>
+        <location filename="../lib/link/requestqueue.cpp" line="300"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="312"/>
+        <location filename="../lib/link/requestqueue.cpp" line="318"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -8125,7 +8125,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="315"/>
+        <location filename="../lib/link/requestqueue.cpp" line="321"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>en su lugar llegó %n byte de basura</numerusform>
@@ -8133,17 +8133,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="318"/>
+        <location filename="../lib/link/requestqueue.cpp" line="324"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="380"/>
+        <location filename="../lib/link/requestqueue.cpp" line="395"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="382"/>
+        <location filename="../lib/link/requestqueue.cpp" line="397"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
@@ -8182,17 +8182,17 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::link::TcpTransport</name>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="27"/>
+        <location filename="../lib/link/tcptransport.cpp" line="29"/>
         <source>the connection to %1 dropped (%2)</source>
         <translation>se cortó la conexión con %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="34"/>
+        <location filename="../lib/link/tcptransport.cpp" line="36"/>
         <source>cannot connect to %1: %2</source>
         <translation>no se puede conectar con %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/tcptransport.cpp" line="63"/>
+        <location filename="../lib/link/tcptransport.cpp" line="65"/>
         <source>cannot connect to %1: no connection within %2 s</source>
         <translation>no se puede conectar con %1: sin conexión en %2 s</translation>
     </message>
@@ -8320,12 +8320,17 @@ Do you want to continue?</source>
         <translation>Ningún equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="56"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="58"/>
         <source>No device answered</source>
         <translation>Ningún equipo ha respondido</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="57"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="59"/>
+        <source>Connecting</source>
+        <translation>Conectando</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/linetile.cpp" line="60"/>
         <source>Looking for devices</source>
         <translation>Buscando equipos</translation>
     </message>

@@ -13,6 +13,7 @@
 #include "sim/simstation.h"
 
 #include "demoworkspace.h"
+#include "fullbacklog.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -72,6 +73,7 @@ private Q_SLOTS:
     void aTileRepaintsOnlyWhenWhatItShowsChangedAndSaysHowLate();
     void aLineJoiningAddsItsTilesAndKeepsTheOthers();
     void aLineWithoutADeviceHasATileThatSaysWhy();
+    void aLineStillConnectingSaysSoNotThatItLooksForDevices();
 
 private:
     [[nodiscard]] FleetTileWidget *tileNamed(const QString &name) const;
@@ -279,6 +281,29 @@ void TestFleetPage::aLineWithoutADeviceHasATileThatSaysWhy() {
     QCOMPARE(activated.size(), 1);
     QCOMPARE(activated.first().at(0).toInt(), line);
     QCOMPARE(activated.first().at(1).value<DeviceModel *>(), nullptr);
+}
+
+// A server that never accepts keeps the line connecting: its tile says so, not that devices are
+// being looked for, and it is not down yet.
+void TestFleetPage::aLineStillConnectingSaysSoNotThatItLooksForDevices() {
+    const tipscope::testing::FullBacklog server;
+    QVERIFY(server.port() != 0);
+    WorkspaceLine slow;
+    slow.name = QStringLiteral("line-slow");
+    slow.session.line.kind = link::LineSettings::Kind::Tcp;
+    slow.session.line.tcpHost = QStringLiteral("127.0.0.1");
+    slow.session.line.tcpPort = server.port();
+    QVERIFY(m_workspace->addLine(slow).ok());
+    const int line = m_workspace->indexOf(slow.name);
+    QTRY_VERIFY_WITH_TIMEOUT(m_page->shownTiles().size() == 7, kConnectMs);
+    FleetTileWidget *tile = nullptr;
+    for (FleetTileWidget *t : m_page->shownTiles())
+        if (t->tile().lineIndex() == line)
+            tile = t;
+    QVERIFY(tile);
+    QCOMPARE(m_workspace->session(line)->state(), Session::State::Connecting);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->shown().lineText, QStringLiteral("Connecting"), kConnectMs);
+    QVERIFY(!tile->shown().downSinceMs); // not down: no "since"
 }
 
 QTEST_MAIN(TestFleetPage)

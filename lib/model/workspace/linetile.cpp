@@ -53,11 +53,13 @@ FleetTileState LineTile::state() const {
         const QString why = session.line() ? session.line()->lastError() : QString();
         s.problems.append({Level::Error, asSentence(why.isEmpty() ? session.stateText() : why)});
     } else {
-        s.lineText = session.state() == Session::State::Connected ? tr("No device answered")
-                                                                  : tr("Looking for devices");
-        s.problems.append(
-            {session.state() == Session::State::Connected ? Level::Warning : Level::Info,
-             asSentence(session.stateText())});
+        const Session::State state = session.state();
+        // Connecting is not looking yet: a server that never accepts must not read as a search.
+        s.lineText = state == Session::State::Connected    ? tr("No device answered")
+                     : state == Session::State::Connecting ? tr("Connecting")
+                                                           : tr("Looking for devices");
+        s.problems.append({state == Session::State::Connected ? Level::Warning : Level::Info,
+                           asSentence(session.stateText())});
     }
     return s;
 }
