@@ -64,11 +64,11 @@ FleetPage::FleetPage(model::Workspace &workspace, QWidget *parent)
             [this] { setSortKey(FleetSortKey(m_sort->currentData().toInt())); });
     connect(m_attention, &QCheckBox::toggled, this, &FleetPage::setAttentionOnly);
     m_refreshTimer.setSingleShot(true);
-    m_refreshTimer.setInterval(kRefreshMs);
+    m_refreshTimer.setInterval(kRefreshMs / kRefreshSteps);
     // Hidden, the tiles stay marked and are brought up to date when the page is shown.
     connect(&m_refreshTimer, &QTimer::timeout, this, [this] {
         if (isVisible())
-            refreshNow();
+            refreshDirtyFor(kRefreshMs - m_refreshTimer.interval());
     });
     connect(&workspace, &model::Workspace::linesChanged, this, &FleetPage::rebuild);
     connect(&workspace, &model::Workspace::lineDevicesChanged, this, &FleetPage::syncLine);
@@ -105,11 +105,21 @@ int FleetPage::columnCount() const {
 }
 
 void FleetPage::refreshNow() {
-    bool changed = false;
-    for (FleetTileWidget *tile : std::as_const(m_tiles))
-        changed |= tile->refresh();
+    refreshDirtyFor(0);
+}
+
+void FleetPage::refreshDirtyFor(qint64 ms) {
+    bool changed = false, waiting = false;
+    for (FleetTileWidget *tile : std::as_const(m_tiles)) {
+        if (tile->dirtyForMs() >= ms)
+            changed |= tile->refresh();
+        else
+            waiting |= tile->isDirty();
+    }
     if (changed)
         arrange();
+    if (waiting)
+        scheduleRefresh();
 }
 
 QString FleetPage::summaryText() const {

@@ -40,6 +40,7 @@ void FleetTileWidget::markDirty() {
     if (m_dirty)
         return;
     m_dirty = true;
+    m_dirtySinceNs = m_clock.nsecsElapsed();
     Q_EMIT dirtied();
 }
 

@@ -32,6 +32,10 @@ public:
     [[nodiscard]] const model::FleetTileState &shown() const { return m_shown; }
     // Whether a reading or a change arrived since the last refresh().
     [[nodiscard]] bool isDirty() const { return m_dirty; }
+    // How long it has been dirty, in ms; -1 when it is not.
+    [[nodiscard]] qint64 dirtyForMs() const {
+        return m_dirty ? (m_clock.nsecsElapsed() - m_dirtySinceNs) / 1'000'000 : -1;
+    }
     // Takes the tile's state if it may have changed; true (and a repaint scheduled) when it did.
     bool refresh();
     // The lines the tile draws, top to bottom, as text (for tests and screen readers).
@@ -82,6 +86,7 @@ private:
     model::FleetTileState m_shown;
     bool m_dirty = true;
     QElapsedTimer m_clock;
+    qint64 m_dirtySinceNs = 0;
     qint64 m_arrivedNs = -1;    // the oldest reading not yet shown
     qint64 m_repaintDueNs = -1; // its stamp, once a repaint is scheduled for it
     QList<Line> m_lines;        // what m_shown draws
