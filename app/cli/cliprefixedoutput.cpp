@@ -13,9 +13,10 @@ QMutex &outputLock() {
 }
 } // namespace
 
-PrefixedOutput::PrefixedOutput(const QString &prefix, std::FILE *target)
+PrefixedOutput::PrefixedOutput(const QString &prefix, std::FILE *target, Keep keep)
     : m_prefix(prefix.toUtf8())
-    , m_target(target) {
+    , m_target(target)
+    , m_keep(keep) {
     QIODevice::open(QIODevice::WriteOnly | QIODevice::Unbuffered);
 }
 
@@ -42,6 +43,8 @@ qint64 PrefixedOutput::writeData(const char *data, qint64 size) {
 }
 
 void PrefixedOutput::emitLine(QByteArrayView line) {
+    if (m_keep == Keep::Text)
+        m_kept.append(line).append('\n');
     QMutexLocker lock(&outputLock());
     std::fwrite(m_prefix.constData(), 1, size_t(m_prefix.size()), m_target);
     std::fwrite(line.data(), 1, size_t(line.size()), m_target);

@@ -61,6 +61,7 @@ class TestCliWorkspace : public QObject {
 private Q_SLOTS:
     void initTestCase();
     void detectRunsOnEveryLineEachLinePrefixedWithItsName();
+    void detectWithJsonPrintsOneDocumentForTheWholeWorkspace();
     void monitorWritesACsvFilePerLineWhileADeadLineWaits();
     void monitorWritesOneCsvFileWithALineColumnWhenAsked();
     void aBadWorkspaceIsRefusedNamingTheLineAndTheField();
@@ -123,6 +124,45 @@ void TestCliWorkspace::detectRunsOnEveryLineEachLinePrefixedWithItsName() {
     // Every line of output says whose it is.
     for (const QString &l : r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts))
         QVERIFY2(l.startsWith(QLatin1Char('[')), qPrintable(l));
+}
+
+void TestCliWorkspace::detectWithJsonPrintsOneDocumentForTheWholeWorkspace() {
+    const QString workspace = writeWorkspace({line(QStringLiteral("bench-a"), demo()),
+                                              line(QStringLiteral("gone"), tcp(kDeadServer)),
+                                              line(QStringLiteral("bench-b"), demo())});
+    QVERIFY(!workspace.isEmpty());
+
+    const ProgramRun r = runCli({"--workspace", workspace, "detect", "--json"});
+    QCOMPARE(r.exitCode, 5); // the dead line's
+    QJsonParseError parsed{};
+    const QJsonObject doc = QJsonDocument::fromJson(r.out.toUtf8(), &parsed).object();
+    QVERIFY2(parsed.error == QJsonParseError::NoError, qPrintable(r.out));
+    QCOMPARE(doc.value(QStringLiteral("command")).toString(), QStringLiteral("detect"));
+    QVERIFY(doc.value(QStringLiteral("workspace")).toString().endsWith(QStringLiteral(".json")));
+    const QJsonArray lines = doc.value(QStringLiteral("lines")).toArray();
+    QCOMPARE(lines.size(), 3);
+    QStringList names;
+    for (const QJsonValue &l : lines)
+        names << l[QStringLiteral("line")].toString();
+    QCOMPARE(names, QStringList({"bench-a", "gone", "bench-b"})); // the file's order
+    for (int i : {0, 2}) {
+        const QJsonObject working = lines.at(i).toObject();
+        QCOMPARE(working.value(QStringLiteral("exitCode")).toInt(), 0);
+        QStringList models;
+        for (const QJsonValue &d : working.value(QStringLiteral("devices")).toArray())
+            models << d[QStringLiteral("model")].toString();
+        QCOMPARE(models, QStringList({"DME-2C", "SFR-A"}));
+        QVERIFY(!working.contains(QStringLiteral("messages")));
+    }
+    const QJsonObject dead = lines.at(1).toObject();
+    QCOMPARE(dead.value(QStringLiteral("exitCode")).toInt(), 5);
+    QVERIFY(!dead.contains(QStringLiteral("devices")));
+    const QJsonArray said = dead.value(QStringLiteral("messages")).toArray();
+    QCOMPARE(said.size(), 1);
+    QVERIFY2(said.first().toString().startsWith(QStringLiteral("tipscope-cli: cannot open")),
+             qPrintable(r.out));
+    // Standard error still says it, under the line's name.
+    QCOMPARE(linesOf(r.err, QStringLiteral("gone")), QStringList{said.first().toString()});
 }
 
 void TestCliWorkspace::monitorWritesACsvFilePerLineWhileADeadLineWaits() {
