@@ -284,7 +284,12 @@ void MainWindow::writeSupportReport() {
         QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
     if (folder.isEmpty())
         return;
-    QJsonObject report = model::supportReportJson(m_session);
+    QList<ReportedLine> lines;
+    for (int i = 0; i < m_workspace.count(); ++i) {
+        const WorkspaceLine &line = m_workspace.line(i);
+        lines.append({line.name, line.cell, line.location, m_workspace.session(i)});
+    }
+    QJsonObject report = model::supportReportJson(m_session, lines);
     (void)m_journal.flush(2000); // the last joints count too
     report.insert(QStringLiteral("journal"), journal::journalHealth(m_journal));
     report.insert(QStringLiteral("joints"), journal::lastDayOfJoints(m_journal.path()));

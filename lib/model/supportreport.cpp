@@ -1,14 +1,11 @@
+// The support report as JSON, and written to files with its text beside it.
 #include "supportreport.h"
 
-#include "eventtext.h"
 #include "model/io/atomicsave.h"
 #include "session.h"
 #include "settingname.h"
 #include "timetext.h"
 
-#include "protocol/catalogtext.h"
-
-#include <QCoreApplication>
 #include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -18,10 +15,6 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(SupportReport)
-};
-
 // Ports in the order a person reads them: the device's own (0) first.
 QList<int> errorPorts(const DeviceModel &d) {
     QList<int> ports{0};
@@ -65,101 +58,9 @@ QJsonObject deviceJson(const DeviceModel &d) {
             {QStringLiteral("values"), values},
             {QStringLiteral("whatToCheck"), advice}};
 }
-// A report written before values had labels names them by the catalog's name alone.
-QString label(const QJsonObject &value) {
-    const QString label = value.value(QStringLiteral("label")).toString();
-    return label.isEmpty() ? protocol::catalogText(value.value(QStringLiteral("name")).toString())
-                           : label;
-}
 
-// "Device 01: DME-2C (DME), software 1.02"; what is not known is left out, not left blank.
-QString deviceHeading(const QJsonObject &d) {
-    const QString model = d.value(QStringLiteral("model")).toString();
-    const QString family = d.value(QStringLiteral("family")).toString();
-    const QString software = d.value(QStringLiteral("softwareVersion")).toString();
-    QString heading = Tr::tr("Device %1").arg(d.value(QStringLiteral("address")).toString());
-    if (!model.isEmpty() || !family.isEmpty())
-        heading += QStringLiteral(": ") + (model.isEmpty() ? family
-                                           : family.isEmpty() || family == model
-                                               ? model
-                                               : Tr::tr("%1 (%2)").arg(model, family));
-    if (!software.isEmpty())
-        heading += Tr::tr(", software %1").arg(software);
-    return heading;
-}
-
-// "Joints from … to …:", then one line per port with its counts by verdict and its recovery times.
-QString jointStatisticsText(const QJsonObject &joints) {
-    if (joints.contains(QStringLiteral("error")))
-        return Tr::tr("Joints of the last 24 hours: not read: %1")
-            .arg(joints.value(QStringLiteral("error")).toString());
-    QStringList out{Tr::tr("Joints from %1 to %2:")
-                        .arg(joints.value(QStringLiteral("since")).toString(),
-                             joints.value(QStringLiteral("until")).toString())};
-    const QJsonArray ports = joints.value(QStringLiteral("ports")).toArray();
-    if (ports.isEmpty())
-        out << Tr::tr("  none");
-    for (const QJsonValue &pv : ports) {
-        const QJsonObject p = pv.toObject();
-        const auto count = [&p](const QString &name) {
-            return QString::number(p.value(name).toInteger());
-        };
-        QString line =
-            Tr::tr("  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, "
-                   "%7 incomplete")
-                .arg(p.value(QStringLiteral("device")).toString())
-                .arg(p.value(QStringLiteral("port")).toInt())
-                .arg(count(QStringLiteral("joints")), count(QStringLiteral("ok")),
-                     count(QStringLiteral("slow recovery")), count(QStringLiteral("too deep")),
-                     count(QStringLiteral("incomplete")));
-        if (p.contains(QStringLiteral("recoveryMedianMs")))
-            line += Tr::tr("; recovery median %1 ms, 95th percentile %2 ms")
-                        .arg(count(QStringLiteral("recoveryMedianMs")),
-                             count(QStringLiteral("recoveryP95Ms")));
-        out << line;
-    }
-    return out.join(QLatin1Char('\n'));
-}
-// "Journal: PATH", whether it writes, what it holds, what it lost (journal/journalhealth.h).
-QString journalHealthText(const QJsonObject &j) {
-    const auto number = [&j](const QString &name) {
-        return QString::number(j.value(name).toInteger());
-    };
-    const auto text = [&j](const QString &name) { return j.value(name).toString(); };
-    QStringList out{Tr::tr("Journal: %1").arg(text(QStringLiteral("path")))};
-    const QString state = text(QStringLiteral("state"));
-    const QString writing = state == QLatin1String("ready")     ? Tr::tr("yes")
-                            : state == QLatin1String("failed")  ? Tr::tr("no")
-                            : state == QLatin1String("opening") ? Tr::tr("not yet, opening")
-                                                                : Tr::tr("no, closed");
-    const QString error = text(QStringLiteral("error"));
-    out << (error.isEmpty() ? Tr::tr("  writing: %1").arg(writing)
-                            : Tr::tr("  writing: %1: %2").arg(writing, error));
-    if (j.value(QStringLiteral("lost")).toInteger() > 0)
-        out << Tr::tr("  lost: %1 records (%2)")
-                   .arg(number(QStringLiteral("lost")), text(QStringLiteral("lossReason")));
-    if (j.contains(QStringLiteral("readError"))) {
-        out << Tr::tr("  not read: %1").arg(text(QStringLiteral("readError")));
-        return out.join(QLatin1Char('\n'));
-    }
-    out << Tr::tr("  %1 joints and %2 events, %3 and %4 of them not yet published; "
-                  "%5 waiting in memory")
-               .arg(number(QStringLiteral("joints")), number(QStringLiteral("events")),
-                    number(QStringLiteral("unsentJoints")), number(QStringLiteral("unsentEvents")),
-                    number(QStringLiteral("pending")));
-    if (j.contains(QStringLiteral("oldest")))
-        out << Tr::tr("  from %1 to %2")
-                   .arg(text(QStringLiteral("oldest")), text(QStringLiteral("newest")));
-    const qint64 days = j.value(QStringLiteral("retentionDays")).toInteger();
-    out << (days == 0 ? Tr::tr("  kept without a time limit; %1 bytes on disk")
-                            .arg(number(QStringLiteral("bytes")))
-                      : Tr::tr("  kept for %1 days; %2 bytes on disk")
-                            .arg(QString::number(days), number(QStringLiteral("bytes"))));
-    return out.join(QLatin1Char('\n'));
-}
-} // namespace
-
-QJsonObject supportReportJson(Session &session, int recentEvents) {
+// The parts of a report that belong to one line: its link and statistics, its devices, its events.
+QJsonObject linePart(Session &session, int recentEvents) {
     QJsonObject line;
     if (link::Line *l = session.line()) {
         const link::LinkStats &s = l->queue().stats();
@@ -198,69 +99,41 @@ QJsonObject supportReportJson(Session &session, int recentEvents) {
             event.insert(QStringLiteral("lastTime"), isoTimeWithOffset(e.lastTime));
         events.append(event);
     }
-    return {{QStringLiteral("format"), QStringLiteral("tipscope-support-report")},
-            {QStringLiteral("created"), isoTimeWithOffset(QDateTime::currentDateTime())},
-            {QStringLiteral("tipscopeVersion"), QStringLiteral(TIPSCOPE_VERSION)},
-            {QStringLiteral("qtVersion"), QString::fromLatin1(qVersion())},
-            {QStringLiteral("system"), QSysInfo::prettyProductName()},
-            {QStringLiteral("line"), line},
+    return {{QStringLiteral("line"), line},
             {QStringLiteral("devices"), devices},
             {QStringLiteral("events"), events}};
 }
+} // namespace
 
-QString supportReportText(const QJsonObject &r) {
-    QStringList out;
-    out << Tr::tr("TipScope support report, %1").arg(r.value(QStringLiteral("created")).toString())
-        << Tr::tr("TipScope %1, Qt %2, %3")
-               .arg(r.value(QStringLiteral("tipscopeVersion")).toString(),
-                    r.value(QStringLiteral("qtVersion")).toString(),
-                    r.value(QStringLiteral("system")).toString())
-        << QString();
-    const QJsonObject line = r.value(QStringLiteral("line")).toObject();
-    out << Tr::tr("Line: %1").arg(line.value(QStringLiteral("transport")).toString())
-        << Tr::tr("State: %1").arg(line.value(QStringLiteral("state")).toString())
-        << Tr::tr("Statistics: %1").arg(line.value(QStringLiteral("summary")).toString())
-        << QString();
-    for (const QJsonValue &dv : r.value(QStringLiteral("devices")).toArray()) {
-        const QJsonObject d = dv.toObject();
-        out << deviceHeading(d);
-        for (const QJsonValue &vv : d.value(QStringLiteral("values")).toArray()) {
-            const QJsonObject v = vv.toObject();
-            // The JSON keeps the catalog's English name for machines; people read the label,
-            // which names the tool and port of a per-tool or per-port setting.
-            out << QStringLiteral("  %1 %2: %3")
-                       .arg(v.value(QStringLiteral("code")).toString(), -4)
-                       .arg(label(v), v.value(QStringLiteral("text")).toString());
-        }
-        const QJsonArray advice = d.value(QStringLiteral("whatToCheck")).toArray();
-        if (!advice.isEmpty())
-            out << Tr::tr("  What to check:");
-        for (const QJsonValue &av : advice) {
-            const QJsonObject a = av.toObject();
-            out << QStringLiteral("    %1 (%2): %3")
-                       .arg(a.value(QStringLiteral("label")).toString(),
-                            a.value(QStringLiteral("error")).toString(),
-                            a.value(QStringLiteral("check")).toString());
-        }
-        out << QString();
+QJsonObject supportReportJson(Session &session, int recentEvents) {
+    QJsonObject report{{QStringLiteral("format"), QStringLiteral("tipscope-support-report")},
+                       {QStringLiteral("created"), isoTimeWithOffset(QDateTime::currentDateTime())},
+                       {QStringLiteral("tipscopeVersion"), QStringLiteral(TIPSCOPE_VERSION)},
+                       {QStringLiteral("qtVersion"), QString::fromLatin1(qVersion())},
+                       {QStringLiteral("system"), QSysInfo::prettyProductName()}};
+    const QJsonObject part = linePart(session, recentEvents);
+    for (auto it = part.begin(); it != part.end(); ++it)
+        report.insert(it.key(), it.value());
+    return report;
+}
+
+QJsonObject supportReportJson(Session &session, const QList<ReportedLine> &workspace,
+                              int recentEvents) {
+    QJsonObject report = supportReportJson(session, recentEvents);
+    if (workspace.isEmpty())
+        return report;
+    QJsonArray lines;
+    for (const ReportedLine &l : workspace) {
+        QJsonObject part = linePart(*l.session, recentEvents);
+        part.insert(QStringLiteral("name"), l.name);
+        if (!l.cell.isEmpty())
+            part.insert(QStringLiteral("cell"), l.cell);
+        if (!l.location.isEmpty())
+            part.insert(QStringLiteral("location"), l.location);
+        lines.append(part);
     }
-    if (r.contains(QStringLiteral("journal")))
-        out << journalHealthText(r.value(QStringLiteral("journal")).toObject()) << QString();
-    if (r.contains(QStringLiteral("joints")))
-        out << jointStatisticsText(r.value(QStringLiteral("joints")).toObject()) << QString();
-    out << Tr::tr("Recent events:");
-    for (const QJsonValue &ev : r.value(QStringLiteral("events")).toArray()) {
-        const QJsonObject e = ev.toObject();
-        const QString text = repeatedEventText(e.value(QStringLiteral("text")).toString(),
-                                               e.value(QStringLiteral("count")).toInt(1),
-                                               e.value(QStringLiteral("lastTime")).toString());
-        out << QStringLiteral("  %1 [%2] %3 %4: %5")
-                   .arg(e.value(QStringLiteral("time")).toString(),
-                        e.value(QStringLiteral("severity")).toString(),
-                        e.value(QStringLiteral("kind")).toString(),
-                        e.value(QStringLiteral("source")).toString(), text);
-    }
-    return out.join(QLatin1Char('\n')) + QLatin1Char('\n');
+    report.insert(QStringLiteral("lines"), lines);
+    return report;
 }
 
 protocol::Outcome<QStringList> writeSupportReport(const QJsonObject &report,

@@ -1,7 +1,7 @@
 // The support report on a real Session in demo mode (the simulated DME at 01 and SFR at 10):
 // what support staff read in it names each setting's tool and port, says what to check for an
-// error, carries the UTC offset on every time, collapses a flood into one line, and leaves
-// nothing blank that is not known.
+// error, carries the UTC offset on every time, collapses a flood into one line, leaves nothing
+// blank that is not known, and gives each line of a workspace its own part under its names.
 #include "model/supportreport.h"
 
 #include "model/session.h"
@@ -38,6 +38,8 @@ private Q_SLOTS:
     void everyTimeCarriesItsOffsetFromUtc();
     void aFloodIsOneLineWithItsCountAndSpan();
     void whatIsNotKnownIsLeftOutNotBlank();
+    void aWorkspaceLineComesUnderItsNamesWithItsOwnDevicesAndEvents();
+    void anUnusedBarLineBesideAWorkspaceIsLeftOut();
 
 private:
     [[nodiscard]] QJsonObject device(const QJsonObject &report, const QString &family) const;
@@ -155,6 +157,63 @@ void TestSupportReport::whatIsNotKnownIsLeftOutNotBlank() {
             line.contains(feeder.value(QStringLiteral("model")).toString()))
             QVERIFY2(!line.contains(QStringLiteral("software")), qPrintable(line));
     }
+}
+
+void TestSupportReport::aWorkspaceLineComesUnderItsNamesWithItsOwnDevicesAndEvents() {
+    Session cell;
+    Session::Settings settings;
+    settings.line.kind = link::LineSettings::Kind::Demo;
+    cell.connectTo(settings);
+    QTRY_VERIFY_WITH_TIMEOUT(cell.station() && cell.feeder(), kConnectMs);
+    cell.eventLog().add(Event::Kind::Write, Event::Severity::Info, QStringLiteral("DME-2C at 01"),
+                        QStringLiteral("happened on cell-3 only"));
+
+    const QJsonObject report = supportReportJson(
+        *m_session,
+        {{QStringLiteral("cell-3"), QStringLiteral("Cell 3"), QStringLiteral("Hall B"), &cell}});
+    const QJsonArray lines = report.value(QStringLiteral("lines")).toArray();
+    QCOMPARE(lines.size(), 1);
+    const QJsonObject line = lines.first().toObject();
+    QCOMPARE(line.value(QStringLiteral("name")).toString(), QStringLiteral("cell-3"));
+    QCOMPARE(line.value(QStringLiteral("location")).toString(), QStringLiteral("Hall B"));
+    QVERIFY(!line.value(QStringLiteral("line"))
+                 .toObject()
+                 .value(QStringLiteral("summary"))
+                 .toString()
+                 .isEmpty());
+    QStringList families;
+    for (const QJsonValue &d : line.value(QStringLiteral("devices")).toArray())
+        families << d[QStringLiteral("family")].toString();
+    QCOMPARE(families, QStringList({"DME", "SFR"}));
+    const auto mentions = [](const QJsonArray &events) {
+        for (const QJsonValue &e : events)
+            if (e[QStringLiteral("text")].toString() == QLatin1String("happened on cell-3 only"))
+                return true;
+        return false;
+    };
+    QVERIFY(mentions(line.value(QStringLiteral("events")).toArray()));
+    QVERIFY(!mentions(report.value(QStringLiteral("events")).toArray())); // not the bar line's
+
+    // People read the line's part under its names, its events with it.
+    const QString text = supportReportText(report);
+    const qsizetype heading =
+        text.indexOf(QStringLiteral("Workspace line cell-3 (Cell 3, Hall B)"));
+    const qsizetype event = text.indexOf(QStringLiteral("happened on cell-3 only"));
+    const qsizetype barEvents = text.indexOf(QStringLiteral("\nRecent events:"));
+    QVERIFY2(heading > 0 && heading < event && event < barEvents, qPrintable(text));
+    QVERIFY2(text.indexOf(QStringLiteral("Device 01: DME-2C"), heading) > heading,
+             qPrintable(text));
+}
+
+void TestSupportReport::anUnusedBarLineBesideAWorkspaceIsLeftOut() {
+    Session unused;
+    const QString text = supportReportText(
+        supportReportJson(unused, {{QStringLiteral("cell-3"), {}, {}, m_session.get()}}));
+    QVERIFY2(text.contains(QStringLiteral("\nWorkspace line cell-3\nLine: ")), qPrintable(text));
+    QCOMPARE(text.count(QStringLiteral("\nLine: ")), 1); // the workspace line's alone
+    for (const QString &line : text.split(QLatin1Char('\n')))
+        QVERIFY2(!line.endsWith(QLatin1Char(' ')) && !line.contains(QStringLiteral("()")),
+                 qPrintable(line));
 }
 
 QTEST_MAIN(TestSupportReport)
