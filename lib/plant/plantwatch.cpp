@@ -59,6 +59,7 @@ void PlantWatch::onMessage(const QString &topic, const QByteArray &payload, bool
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     const QString &leaf = where->leaf;
     bool sample = false;
+    std::optional<std::pair<int, QJsonArray>> portSamples;
     if (leaf == QLatin1String("status")) {
         const bool online = json.value(QStringLiteral("online")).toBool();
         // Seen go: now. Found gone: the clean stop's time; a will's is not when it went.
@@ -99,14 +100,19 @@ void PlantWatch::onMessage(const QString &topic, const QByteArray &payload, bool
         if (!ok)
             return;
         // A batch: its newest sample is what the port shows now.
-        const QJsonArray samples = json.value(QStringLiteral("samples")).toArray();
-        d.live.insert(port, samples.isEmpty() ? json : samples.last().toObject());
+        QJsonArray samples = json.value(QStringLiteral("samples")).toArray();
+        if (samples.isEmpty())
+            samples.append(json);
+        d.live.insert(port, samples.last().toObject());
         d.lastLiveMs = now;
         sample = true;
+        portSamples = {port, samples};
     }
     if (added)
         Q_EMIT deviceAdded(root);
     Q_EMIT deviceChanged(root);
+    if (portSamples)
+        Q_EMIT portSamplesArrived(root, portSamples->first, portSamples->second);
     if (sample)
         Q_EMIT sampleArrived(root);
 }

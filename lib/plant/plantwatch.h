@@ -59,6 +59,8 @@ Q_SIGNALS:
     void deviceAdded(const QString &root);
     void deviceChanged(const QString &root);
     void sampleArrived(const QString &root);
+    // Every sample of a port's live message (a batch has several), oldest first.
+    void portSamplesArrived(const QString &root, int port, const QJsonArray &samples);
     void cleared();
 
 private:

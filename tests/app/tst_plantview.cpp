@@ -1,12 +1,15 @@
 // The plant view: a window connected to the plant's broker shows on its fleet overview every
 // device a real tipscope-agent publishes there (its demo line: a DME and an SFR), with live
-// values; a remote tile opens the device's read-only page with its ports and joints; when the
-// agent dies (kill -9), its tiles and page say the agent is offline instead of looking current.
+// values; a remote tile opens the device's read-only page with its ports, their curves and its
+// joints; when the agent dies (kill -9), its tiles and page say the agent is offline instead of
+// looking current, and its curves break there.
+#include "charts/chartwidget.h"
 #include "devicetree.h"
 #include "mainwindow.h"
 #include "pages/fleet/fleetpage.h"
 #include "pages/fleet/fleettilewidget.h"
 #include "pages/fleet/remotedevicepage.h"
+#include "plant/remotehistory.h"
 #include "plant/remotetile.h"
 
 #include "../mqtt/mqtttesting.h"
@@ -81,6 +84,13 @@ private Q_SLOTS:
         QVERIFY2(shown.contains(QStringLiteral("DME-2C")), qPrintable(shown));
         QVERIFY2(shown.contains(QStringLiteral("T210")), qPrintable(shown));
         QVERIFY2(!shown.contains(QStringLiteral("not current")), qPrintable(shown));
+        // The chart draws the curves received from the live topic: four ports, three curves each.
+        QCOMPARE(page.chart().seriesCount(), 12);
+        QVERIFY(QTest::qWaitFor([&] { return page.chart().pointCount(0) >= 2; }, 10000));
+        const model::TelemetryKey port1 = plant::RemoteHistory::keyOf(page.root(), 1);
+        const model::TelemetryBuffer *history = page.history().telemetry().buffer(port1);
+        QVERIFY(history && history->size() >= 2);
+        QVERIFY(!history->gaps().isOpen());
 
         // The agent dies: the broker publishes its devices' wills.
         agent.kill();
@@ -90,6 +100,8 @@ private Q_SLOTS:
                 return !station->shown().lineUp;
             },
             10000));
+        // Its curves break where the agent went: nothing after it is joined to what came before.
+        QVERIFY(page.history().telemetry().buffer(port1)->gaps().isOpen());
         // Seen going: since when it went.
         QVERIFY2(station->shown().lineText.startsWith(QStringLiteral("Agent offline since")),
                  qPrintable(station->shown().lineText));

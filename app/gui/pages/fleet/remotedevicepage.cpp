@@ -1,7 +1,11 @@
 #include "pages/fleet/remotedevicepage.h"
 
+#include "charts/chartwidget.h"
+
+#include "model/chart/chartframe.h"
 #include "model/joints/jointtable.h"
 #include "plant/plantwatch.h"
+#include "plant/remotehistory.h"
 #include "plant/remotetile.h"
 
 #include <QDateTime>
@@ -11,6 +15,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -43,6 +48,17 @@ void fill(QTableWidget *t, const QList<QStringList> &rows) {
         }
 }
 
+// Every row of a short table in view (a station has at most four ports): the chart below takes
+// the room, not an empty table.
+void fitRows(QTableWidget *t) {
+    int height = t->horizontalHeader()->sizeHint().height() + 2 * t->frameWidth();
+    for (int r = 0; r < t->rowCount(); ++r)
+        height += t->verticalHeader()->sectionSize(r);
+    if (t->horizontalScrollBar()->isVisible())
+        height += t->horizontalScrollBar()->sizeHint().height();
+    t->setFixedHeight(height);
+}
+
 QString number(const QJsonObject &o, const char *key, int decimals = 0) {
     const QJsonValue v = o.value(QLatin1String(key));
     return v.isDouble() ? QLocale().toString(v.toDouble(), 'f', decimals) : QStringLiteral("—");
@@ -62,6 +78,15 @@ RemoteDevicePage::RemoteDevicePage(const plant::PlantWatch &watch, QWidget *pare
     m_state->setWordWrap(true);
     m_ports =
         table({tr("Port"), tr("Tool"), tr("Tip"), tr("Setpoint"), tr("Power"), tr("Status")}, this);
+    m_history = new plant::RemoteHistory(watch, this);
+    m_chart = new ChartWidget(this);
+    m_chart->setTitle(tr("Tip, setpoint and power, last 10 minutes"));
+    m_chart->setTitleShown(false);
+    m_chart->setCompact(true);
+    m_chart->setAxisTitle(model::ChartAxis::Left, tr("Temperature (°C)"));
+    m_chart->setAxisTitle(model::ChartAxis::Right, tr("Power (%)"));
+    m_chart->setMinimumHeight(160);
+    m_ports->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_alarms = new QLabel(this);
     m_alarms->setWordWrap(true);
     m_joints = table(
@@ -76,7 +101,9 @@ RemoteDevicePage::RemoteDevicePage(const plant::PlantWatch &watch, QWidget *pare
     layout->addLayout(top);
     layout->addWidget(m_state);
     layout->addWidget(new QLabel(tr("Live values"), this));
-    layout->addWidget(m_ports, 1);
+    layout->addWidget(m_ports);
+    layout->addWidget(new QLabel(tr("Tip, setpoint and power, last 10 minutes"), this));
+    layout->addWidget(m_chart, 3);
     layout->addWidget(m_alarms);
     layout->addWidget(new QLabel(tr("Recent joints, newest first"), this));
     layout->addWidget(m_joints, 2);
@@ -114,6 +141,7 @@ void RemoteDevicePage::refresh() {
         ports.append({QString::number(p.number), p.toolText, p.tipText, p.setpointText, p.powerText,
                       p.statusText});
     fill(m_ports, ports);
+    fitRows(m_ports);
     m_ports->setEnabled(s.lineUp); // greyed: not current
     QStringList problems;
     for (const model::FleetProblem &problem : s.problems)
@@ -139,6 +167,40 @@ void RemoteDevicePage::refresh() {
                                            : tr("never")});
     }
     fill(m_joints, joints);
+    drawChart();
+}
+
+// The last minutes of every port, tip solid, setpoint dashed, power dotted on the right axis, a
+// colour per port as on the local charts; a gap in what was received stays a gap.
+void RemoteDevicePage::drawChart() {
+    const QList<model::ChartChannel> channels = m_history->channels(m_root);
+    const QList<model::ChartTrace> traces = plant::RemoteHistory::traces(channels);
+    QStringList keys;
+    for (const model::ChartChannel &c : channels)
+        keys.append(c.key);
+    if (const QString shown = keys.join(QLatin1Char(' ')); shown != m_chartChannels) {
+        m_chartChannels = shown;
+        QList<ChartSeriesStyle> series, legend;
+        for (const model::ChartTrace &t : traces)
+            series.append({t.name, t.color, t.style, t.format.axis});
+        for (const model::ChartChannel &c : channels)
+            legend.append(
+                {c.title, model::portColor(c.port), Qt::SolidLine, model::ChartAxis::Left});
+        for (int s = 0; s < traces.size() && s < 3; ++s)
+            legend.append({model::traceName(traces.at(s).series, 0), QColor(0x60, 0x60, 0x60),
+                           traces.at(s).style, traces.at(s).format.axis});
+        m_chart->setSeries(series, legend);
+    }
+    // The agent's clock stamps the samples: a window behind it still shows the newest.
+    qint64 t1 = QDateTime::currentMSecsSinceEpoch();
+    for (const model::ChartChannel &c : channels)
+        t1 = qMax(t1, m_history->telemetry().buffer(c.key)->lastTime() + 1);
+    const qint64 t0 = t1 - kChartSpanMs;
+    const model::ChartFrame frame =
+        model::buildFrame(m_history->telemetry(), channels, traces, t0, t1, m_chart->plotWidth());
+    const model::ValueSpan left = model::niceRange(frame.left, 10);
+    m_chart->showData(ChartData{t0, t1, left.min, left.max, 0, 100, frame.points});
+    m_chart->setEmptyText(frame.pointCount == 0 ? tr("No live values received yet") : QString());
 }
 
 QStringList RemoteDevicePage::lines() const {
