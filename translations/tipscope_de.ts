@@ -2278,7 +2278,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliWorkspace</name>
     <message>
-        <location filename="../app/cli/cliworkspace.cpp" line="94"/>
+        <location filename="../app/cli/cliworkspace.cpp" line="167"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: der Arbeitsbereich %1 hat keine Leitungen</translation>
     </message>
@@ -4126,142 +4126,157 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="213"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="173"/>
         <source>TipScope support report, %1</source>
         <translation>TipScope-Supportbericht, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="214"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="174"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="220"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="115"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="221"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="116"/>
         <source>State: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="222"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="117"/>
         <source>Statistics: %1</source>
         <translation>Statistik: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="251"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="166"/>
+        <source>Workspace line %1</source>
+        <translation>Linie %1 des Arbeitsbereichs</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreporttext.cpp" line="167"/>
+        <source>Workspace line %1 (%2)</source>
+        <translation>Linie %1 des Arbeitsbereichs (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreporttext.cpp" line="188"/>
+        <source>Recent events of %1:</source>
+        <translation>Letzte Ereignisse von %1:</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreporttext.cpp" line="196"/>
         <source>Recent events:</source>
         <translation>Letzte Ereignisse:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="80"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="31"/>
         <source>Device %1</source>
         <translation>Gerät %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="85"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="36"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="87"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="38"/>
         <source>, software %1</source>
         <translation>, Software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="94"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="45"/>
         <source>Joints of the last 24 hours: not read: %1</source>
         <translation>Lötstellen der letzten 24 Stunden: nicht gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="96"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="47"/>
         <source>Joints from %1 to %2:</source>
         <translation>Lötstellen von %1 bis %2:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="101"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="52"/>
         <source>  none</source>
         <translation>  keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="108"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="59"/>
         <source>  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, %7 incomplete</source>
         <translation>  %1, Port %2: %3 Lötstellen: %4 in Ordnung, %5 langsame Erholung, %6 zu tief, %7 unvollständig</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="116"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="67"/>
         <source>; recovery median %1 ms, 95th percentile %2 ms</source>
         <translation>; Erholzeit Median %1 ms, 95. Perzentil %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="129"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="80"/>
         <source>Journal: %1</source>
         <translation>Journal: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="131"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="82"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="132"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="83"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="133"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="84"/>
         <source>not yet, opening</source>
         <translation>noch nicht, wird geöffnet</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="134"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="85"/>
         <source>no, closed</source>
         <translation>nein, geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="136"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="87"/>
         <source>  writing: %1</source>
         <translation>  schreibt: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="137"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="88"/>
         <source>  writing: %1: %2</source>
         <translation>  schreibt: %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="139"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="90"/>
         <source>  lost: %1 records (%2)</source>
         <translation>  verloren: %1 Einträge (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="142"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="93"/>
         <source>  not read: %1</source>
         <translation>  nicht gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="145"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="96"/>
         <source>  %1 joints and %2 events, %3 and %4 of them not yet published; %5 waiting in memory</source>
         <translation>  %1 Lötstellen und %2 Ereignisse, davon %3 und %4 noch nicht veröffentlicht; %5 warten im Speicher</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="151"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="102"/>
         <source>  from %1 to %2</source>
         <translation>  von %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="154"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="105"/>
         <source>  kept without a time limit; %1 bytes on disk</source>
         <translation>  ohne Zeitgrenze aufbewahrt; %1 Byte auf der Festplatte</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="156"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="107"/>
         <source>  kept for %1 days; %2 bytes on disk</source>
         <translation>  %1 Tage aufbewahrt; %2 Byte auf der Festplatte</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="237"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="132"/>
         <source>  What to check:</source>
         <translation>  Was zu prüfen ist:</translation>
     </message>
@@ -5087,7 +5102,7 @@ Dauerhaft mit dieser udev-Regel:
     </message>
     <message>
         <location filename="../app/gui/connectionbar.cpp" line="71"/>
-        <location filename="../app/gui/connectionbar.cpp" line="179"/>
+        <location filename="../app/gui/connectionbar.cpp" line="186"/>
         <source>&amp;Connect</source>
         <translation>&amp;Verbinden</translation>
     </message>
@@ -5107,39 +5122,44 @@ Dauerhaft mit dieser udev-Regel:
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="179"/>
+        <location filename="../app/gui/connectionbar.cpp" line="186"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Trennen</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="191"/>
+        <location filename="../app/gui/connectionbar.cpp" line="198"/>
         <source>Connected</source>
         <translation>Verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="196"/>
+        <location filename="../app/gui/connectionbar.cpp" line="203"/>
         <source>Connecting</source>
         <translation>Verbindung wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="196"/>
+        <location filename="../app/gui/connectionbar.cpp" line="203"/>
         <source>Detecting devices</source>
         <translation>Geräte werden erkannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="200"/>
+        <location filename="../app/gui/connectionbar.cpp" line="207"/>
         <source>Disconnected, retrying</source>
         <translation>Getrennt, neuer Versuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="204"/>
+        <location filename="../app/gui/connectionbar.cpp" line="211"/>
         <source>Cannot connect</source>
         <translation>Verbindung nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="207"/>
+        <location filename="../app/gui/connectionbar.cpp" line="214"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="219"/>
+        <source> (this bar&apos;s line only: %1)</source>
+        <translation> (nur die Linie dieser Leiste: %1)</translation>
     </message>
 </context>
 <context>
@@ -5557,37 +5577,37 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Geräteübersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="183"/>
+        <location filename="../app/gui/devicetree.cpp" line="184"/>
         <source>No line</source>
         <translation>Keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="189"/>
+        <location filename="../app/gui/devicetree.cpp" line="190"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="190"/>
+        <location filename="../app/gui/devicetree.cpp" line="191"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="198"/>
+        <location filename="../app/gui/devicetree.cpp" line="199"/>
         <source>feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="198"/>
+        <location filename="../app/gui/devicetree.cpp" line="199"/>
         <source>station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="204"/>
+        <location filename="../app/gui/devicetree.cpp" line="205"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="209"/>
+        <location filename="../app/gui/devicetree.cpp" line="210"/>
         <source>Port %1: %2</source>
         <translation>Port %1: %2</translation>
     </message>
@@ -6208,32 +6228,32 @@ Zurücksetzen?</translation>
         <translation>Nur was Aufmerksamkeit braucht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="121"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="131"/>
         <source>Devices: %1 · need attention: %2</source>
         <translation>Geräte: %1 · brauchen Aufmerksamkeit: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="122"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="132"/>
         <source>%1 · lines without a device: %2</source>
         <translation>%1 · Linien ohne Gerät: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="258"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="268"/>
         <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
         <translation>Noch keine Geräte: vom Broker des Werks ist nichts gekommen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="269"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Keine Geräte: die Leitungen des Arbeitsbereichs haben noch keine gefunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="257"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="267"/>
         <source>No device needs attention.</source>
         <translation>Kein Gerät braucht Aufmerksamkeit.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.h" line="54"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="58"/>
         <source>Fleet</source>
         <translation>Geräteübersicht</translation>
     </message>
@@ -6241,12 +6261,12 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FleetTileWidget</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="76"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="77"/>
         <source>P%1  %2 / %3  %4  %5</source>
         <translation>P%1  %2 / %3  %4  %5</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="101"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="102"/>
         <source>Last joint: %1 (port %2)</source>
         <translation>Letzte Lötstelle: %1 (Port %2)</translation>
     </message>
@@ -6823,13 +6843,13 @@ Zurücksetzen?</translation>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="293"/>
-        <location filename="../app/gui/mainwindow.cpp" line="296"/>
+        <location filename="../app/gui/mainwindow.cpp" line="298"/>
+        <location filename="../app/gui/mainwindow.cpp" line="301"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="297"/>
+        <location filename="../app/gui/mainwindow.cpp" line="302"/>
         <source>Written:
 %1
 
@@ -6840,12 +6860,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="305"/>
+        <location filename="../app/gui/mainwindow.cpp" line="310"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="306"/>
+        <location filename="../app/gui/mainwindow.cpp" line="311"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
@@ -6894,42 +6914,55 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
             <numerusform>Arbeitsbereich: %1 von %n Linien verbunden</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="120"/>
+        <source>the workspace&apos;s %n line(s) are in the tree</source>
+        <translation>
+            <numerusform>die %n Linie des Arbeitsbereichs steht im Baum</numerusform>
+            <numerusform>die %n Linien des Arbeitsbereichs stehen im Baum</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="123"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="122"/>
+        <source>the plant&apos;s devices are on the fleet overview</source>
+        <translation>die Geräte der Anlage sind in der Flottenübersicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="129"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="134"/>
         <source>Open workspace</source>
         <translation>Arbeitsbereich öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="119"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
         <source>TipScope workspaces (*.json);;All files (*)</source>
         <translation>TipScope-Arbeitsbereiche (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="138"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="141"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="149"/>
         <source>Save workspace</source>
         <translation>Arbeitsbereich speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="134"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="145"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>TipScope-Arbeitsbereiche (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="147"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="161"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="158"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="163"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="172"/>
         <source>Add this line to the workspace</source>
         <translation>Diese Linie zum Arbeitsbereich hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="163"/>
         <source>Name of the line (cell, station):</source>
         <translation>Name der Linie (Zelle, Station):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="164"/>
         <source>line-%1</source>
         <translation>linie-%1</translation>
     </message>
@@ -6944,17 +6977,17 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Vom W&amp;erk trennen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowplant.cpp" line="62"/>
+        <location filename="../app/gui/mainwindowplant.cpp" line="64"/>
         <source>Plant: %1</source>
         <translation>Werk: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowplant.cpp" line="63"/>
+        <location filename="../app/gui/mainwindowplant.cpp" line="65"/>
         <source>Plant: %1 not connected</source>
         <translation>Werk: %1 nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowplant.cpp" line="64"/>
+        <location filename="../app/gui/mainwindowplant.cpp" line="66"/>
         <source>Watching %1 on the plant&apos;s broker</source>
         <translation>Verfolgt %1 auf dem Broker des Werks</translation>
     </message>
@@ -7613,106 +7646,127 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::RemoteDevicePage</name>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
         <source>Tip</source>
         <translation>Spitze</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="83"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="105"/>
+        <source>Tip, setpoint and power, last 10 minutes</source>
+        <translation>Spitze, Sollwert und Leistung, letzte 10 Minuten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="86"/>
+        <source>Temperature (°C)</source>
+        <translation>Temperatur (°C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="87"/>
+        <source>Power (%)</source>
+        <translation>Leistung (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Ended</source>
         <translation>Ende</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Verdict</source>
         <translation>Bewertung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Dip (K)</source>
         <translation>Einbruch (K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Recovery (s)</source>
         <translation>Erholung (s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="70"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="95"/>
         <source>‹ Fleet overview</source>
         <translation>‹ Geräteübersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="78"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="103"/>
         <source>Live values</source>
         <translation>Live-Werte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="81"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="108"/>
         <source>Recent joints, newest first</source>
         <translation>Letzte Lötstellen, neueste zuerst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="100"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="127"/>
         <source>No such device on the plant&apos;s broker</source>
         <translation>Dieses Gerät gibt es auf dem Broker des Werks nicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="104"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="131"/>
         <source>%1 · %2 on %3 (%4)</source>
         <translation>%1 · %2 an %3 (%4)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="108"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="135"/>
         <source>Read-only: published by %1 %2 through the plant&apos;s broker; current.</source>
         <translation>Schreibgeschützt: veröffentlicht von %1 %2 über den Broker des Werks; aktuell.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="110"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="137"/>
         <source>Read-only, not current: %1. The values are the last published.</source>
         <translation>Schreibgeschützt, nicht aktuell: %1. Die Werte sind die zuletzt veröffentlichten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="122"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="150"/>
         <source>No errors or alarms in force.</source>
         <translation>Keine Fehler oder Alarme aktiv.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="123"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="151"/>
         <source>In force: %1</source>
         <translation>Aktiv: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="139"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="167"/>
         <source>never</source>
         <translation>nie</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="203"/>
+        <source>No live values received yet</source>
+        <translation>Noch keine Live-Werte empfangen</translation>
     </message>
 </context>
 <context>
@@ -8345,6 +8399,14 @@ Möchten Sie fortfahren?</translation>
         <location filename="../lib/model/workspace/workspace.cpp" line="29"/>
         <source>the workspace already has a line named &quot;%1&quot;</source>
         <translation>der Arbeitsbereich hat schon eine Linie namens „%1“</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::plant::RemoteHistory</name>
+    <message>
+        <location filename="../lib/plant/remotehistory.cpp" line="100"/>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
     </message>
 </context>
 </TS>

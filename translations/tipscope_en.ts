@@ -227,6 +227,14 @@
             <numerusform>Workspace: %1 of %n lines connected</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="120"/>
+        <source>the workspace&apos;s %n line(s) are in the tree</source>
+        <translation>
+            <numerusform>the workspace&apos;s %n line is in the tree</numerusform>
+            <numerusform>the workspace&apos;s %n lines are in the tree</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>tipscope::gui::ProfileDialog</name>

@@ -2279,7 +2279,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliWorkspace</name>
     <message>
-        <location filename="../app/cli/cliworkspace.cpp" line="94"/>
+        <location filename="../app/cli/cliworkspace.cpp" line="167"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: el espacio de trabajo %1 no tiene líneas</translation>
     </message>
@@ -4127,142 +4127,157 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="213"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="173"/>
         <source>TipScope support report, %1</source>
         <translation>Informe de soporte de TipScope, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="214"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="174"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="220"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="115"/>
         <source>Line: %1</source>
         <translation>Línea: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="221"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="116"/>
         <source>State: %1</source>
         <translation>Estado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="222"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="117"/>
         <source>Statistics: %1</source>
         <translation>Estadísticas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="251"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="166"/>
+        <source>Workspace line %1</source>
+        <translation>Línea %1 del espacio de trabajo</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreporttext.cpp" line="167"/>
+        <source>Workspace line %1 (%2)</source>
+        <translation>Línea %1 del espacio de trabajo (%2)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreporttext.cpp" line="188"/>
+        <source>Recent events of %1:</source>
+        <translation>Eventos recientes de %1:</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/supportreporttext.cpp" line="196"/>
         <source>Recent events:</source>
         <translation>Eventos recientes:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="80"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="31"/>
         <source>Device %1</source>
         <translation>Equipo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="85"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="36"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="87"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="38"/>
         <source>, software %1</source>
         <translation>, software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="94"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="45"/>
         <source>Joints of the last 24 hours: not read: %1</source>
         <translation>Soldaduras de las últimas 24 horas: no leídas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="96"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="47"/>
         <source>Joints from %1 to %2:</source>
         <translation>Soldaduras de %1 a %2:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="101"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="52"/>
         <source>  none</source>
         <translation>  ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="108"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="59"/>
         <source>  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, %7 incomplete</source>
         <translation>  %1, puerto %2: %3 soldaduras: %4 correctas, %5 recuperación lenta, %6 demasiado profundas, %7 incompletas</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="116"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="67"/>
         <source>; recovery median %1 ms, 95th percentile %2 ms</source>
         <translation>; recuperación mediana %1 ms, percentil 95 %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="129"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="80"/>
         <source>Journal: %1</source>
         <translation>Diario: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="131"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="82"/>
         <source>yes</source>
         <translation>sí</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="132"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="83"/>
         <source>no</source>
         <translation>no</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="133"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="84"/>
         <source>not yet, opening</source>
         <translation>todavía no, abriéndose</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="134"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="85"/>
         <source>no, closed</source>
         <translation>no, cerrado</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="136"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="87"/>
         <source>  writing: %1</source>
         <translation>  escribe: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="137"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="88"/>
         <source>  writing: %1: %2</source>
         <translation>  escribe: %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="139"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="90"/>
         <source>  lost: %1 records (%2)</source>
         <translation>  perdidos: %1 registros (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="142"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="93"/>
         <source>  not read: %1</source>
         <translation>  no leído: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="145"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="96"/>
         <source>  %1 joints and %2 events, %3 and %4 of them not yet published; %5 waiting in memory</source>
         <translation>  %1 soldaduras y %2 eventos, de ellos %3 y %4 aún sin publicar; %5 esperando en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="151"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="102"/>
         <source>  from %1 to %2</source>
         <translation>  de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="154"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="105"/>
         <source>  kept without a time limit; %1 bytes on disk</source>
         <translation>  conservado sin límite de tiempo; %1 bytes en disco</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="156"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="107"/>
         <source>  kept for %1 days; %2 bytes on disk</source>
         <translation>  conservado %1 días; %2 bytes en disco</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreport.cpp" line="237"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="132"/>
         <source>  What to check:</source>
         <translation>  Qué comprobar:</translation>
     </message>
@@ -5088,7 +5103,7 @@ Hágalo permanente con esta regla de udev:
     </message>
     <message>
         <location filename="../app/gui/connectionbar.cpp" line="71"/>
-        <location filename="../app/gui/connectionbar.cpp" line="179"/>
+        <location filename="../app/gui/connectionbar.cpp" line="186"/>
         <source>&amp;Connect</source>
         <translation>&amp;Conectar</translation>
     </message>
@@ -5108,39 +5123,44 @@ Hágalo permanente con esta regla de udev:
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="179"/>
+        <location filename="../app/gui/connectionbar.cpp" line="186"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Desconectar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="191"/>
+        <location filename="../app/gui/connectionbar.cpp" line="198"/>
         <source>Connected</source>
         <translation>Conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="196"/>
+        <location filename="../app/gui/connectionbar.cpp" line="203"/>
         <source>Connecting</source>
         <translation>Conectando</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="196"/>
+        <location filename="../app/gui/connectionbar.cpp" line="203"/>
         <source>Detecting devices</source>
         <translation>Detectando equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="200"/>
+        <location filename="../app/gui/connectionbar.cpp" line="207"/>
         <source>Disconnected, retrying</source>
         <translation>Desconectado, reintentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="204"/>
+        <location filename="../app/gui/connectionbar.cpp" line="211"/>
         <source>Cannot connect</source>
         <translation>No se puede conectar</translation>
     </message>
     <message>
-        <location filename="../app/gui/connectionbar.cpp" line="207"/>
+        <location filename="../app/gui/connectionbar.cpp" line="214"/>
         <source>Disconnected</source>
         <translation>Desconectado</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connectionbar.cpp" line="219"/>
+        <source> (this bar&apos;s line only: %1)</source>
+        <translation> (solo la línea de esta barra: %1)</translation>
     </message>
 </context>
 <context>
@@ -5558,37 +5578,37 @@ Hágalo permanente con esta regla de udev:
         <translation>Vista de la flota</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="183"/>
+        <location filename="../app/gui/devicetree.cpp" line="184"/>
         <source>No line</source>
         <translation>Sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="189"/>
+        <location filename="../app/gui/devicetree.cpp" line="190"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="190"/>
+        <location filename="../app/gui/devicetree.cpp" line="191"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="198"/>
+        <location filename="../app/gui/devicetree.cpp" line="199"/>
         <source>feeder</source>
         <translation>alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="198"/>
+        <location filename="../app/gui/devicetree.cpp" line="199"/>
         <source>station</source>
         <translation>estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="204"/>
+        <location filename="../app/gui/devicetree.cpp" line="205"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="209"/>
+        <location filename="../app/gui/devicetree.cpp" line="210"/>
         <source>Port %1: %2</source>
         <translation>Puerto %1: %2</translation>
     </message>
@@ -6209,32 +6229,32 @@ Reset it?</source>
         <translation>Solo lo que requiere atención</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="121"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="131"/>
         <source>Devices: %1 · need attention: %2</source>
         <translation>Equipos: %1 · requieren atención: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="122"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="132"/>
         <source>%1 · lines without a device: %2</source>
         <translation>%1 · líneas sin equipo: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="258"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="268"/>
         <source>No devices yet: nothing has come from the plant&apos;s broker.</source>
         <translation>Aún no hay dispositivos: no ha llegado nada del broker de la planta.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="259"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="269"/>
         <source>No devices: the workspace&apos;s lines have found none yet.</source>
         <translation>Sin equipos: las líneas del espacio de trabajo aún no han encontrado ninguno.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="257"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.cpp" line="267"/>
         <source>No device needs attention.</source>
         <translation>Ningún equipo requiere atención.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleetpage.h" line="54"/>
+        <location filename="../app/gui/pages/fleet/fleetpage.h" line="58"/>
         <source>Fleet</source>
         <translation>Flota</translation>
     </message>
@@ -6242,12 +6262,12 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FleetTileWidget</name>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="76"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="77"/>
         <source>P%1  %2 / %3  %4  %5</source>
         <translation>P%1  %2 / %3  %4  %5</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="101"/>
+        <location filename="../app/gui/pages/fleet/fleettilewidget.cpp" line="102"/>
         <source>Last joint: %1 (port %2)</source>
         <translation>Última soldadura: %1 (puerto %2)</translation>
     </message>
@@ -6824,13 +6844,13 @@ Reset it?</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="293"/>
-        <location filename="../app/gui/mainwindow.cpp" line="296"/>
+        <location filename="../app/gui/mainwindow.cpp" line="298"/>
+        <location filename="../app/gui/mainwindow.cpp" line="301"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="297"/>
+        <location filename="../app/gui/mainwindow.cpp" line="302"/>
         <source>Written:
 %1
 
@@ -6841,12 +6861,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="305"/>
+        <location filename="../app/gui/mainwindow.cpp" line="310"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="306"/>
+        <location filename="../app/gui/mainwindow.cpp" line="311"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
@@ -6895,42 +6915,55 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
             <numerusform>Espacio de trabajo: %1 de %n líneas conectadas</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="120"/>
+        <source>the workspace&apos;s %n line(s) are in the tree</source>
+        <translation>
+            <numerusform>la %n línea del espacio de trabajo está en el árbol</numerusform>
+            <numerusform>las %n líneas del espacio de trabajo están en el árbol</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="123"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="122"/>
+        <source>the plant&apos;s devices are on the fleet overview</source>
+        <translation>los equipos de la planta están en la vista de flota</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="129"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="134"/>
         <source>Open workspace</source>
         <translation>Abrir espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="119"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
         <source>TipScope workspaces (*.json);;All files (*)</source>
         <translation>Espacios de trabajo de TipScope (*.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="138"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="141"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="149"/>
         <source>Save workspace</source>
         <translation>Guardar espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="134"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="145"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>Espacios de trabajo de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="147"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="161"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="158"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="163"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="172"/>
         <source>Add this line to the workspace</source>
         <translation>Añadir esta línea al espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="152"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="163"/>
         <source>Name of the line (cell, station):</source>
         <translation>Nombre de la línea (celda, estación):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="153"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="164"/>
         <source>line-%1</source>
         <translation>linea-%1</translation>
     </message>
@@ -6945,17 +6978,17 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Desconectar de la p&amp;lanta</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowplant.cpp" line="62"/>
+        <location filename="../app/gui/mainwindowplant.cpp" line="64"/>
         <source>Plant: %1</source>
         <translation>Planta: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowplant.cpp" line="63"/>
+        <location filename="../app/gui/mainwindowplant.cpp" line="65"/>
         <source>Plant: %1 not connected</source>
         <translation>Planta: %1 sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowplant.cpp" line="64"/>
+        <location filename="../app/gui/mainwindowplant.cpp" line="66"/>
         <source>Watching %1 on the plant&apos;s broker</source>
         <translation>Siguiendo %1 en el broker de la planta</translation>
     </message>
@@ -7614,106 +7647,127 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::RemoteDevicePage</name>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
         <source>Tip</source>
         <translation>Punta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
         <source>Setpoint</source>
         <translation>Consigna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
         <source>Power</source>
         <translation>Potencia</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="64"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
         <source>Status</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="83"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="105"/>
+        <source>Tip, setpoint and power, last 10 minutes</source>
+        <translation>Punta, consigna y potencia, últimos 10 minutos</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="86"/>
+        <source>Temperature (°C)</source>
+        <translation>Temperatura (°C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="87"/>
+        <source>Power (%)</source>
+        <translation>Potencia (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Ended</source>
         <translation>Fin</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Verdict</source>
         <translation>Veredicto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Dip (K)</source>
         <translation>Caída (K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="68"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
         <source>Recovery (s)</source>
         <translation>Recuperación (s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="70"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="95"/>
         <source>‹ Fleet overview</source>
         <translation>‹ Vista de la flota</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="78"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="103"/>
         <source>Live values</source>
         <translation>Valores en vivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="81"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="108"/>
         <source>Recent joints, newest first</source>
         <translation>Soldaduras recientes, la más nueva primero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="100"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="127"/>
         <source>No such device on the plant&apos;s broker</source>
         <translation>Ese dispositivo no está en el broker de la planta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="104"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="131"/>
         <source>%1 · %2 on %3 (%4)</source>
         <translation>%1 · %2 en %3 (%4)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="108"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="135"/>
         <source>Read-only: published by %1 %2 through the plant&apos;s broker; current.</source>
         <translation>Solo lectura: publicado por %1 %2 a través del broker de la planta; actual.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="110"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="137"/>
         <source>Read-only, not current: %1. The values are the last published.</source>
         <translation>Solo lectura, no actual: %1. Los valores son los últimos publicados.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="122"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="150"/>
         <source>No errors or alarms in force.</source>
         <translation>Ningún error ni alarma activos.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="123"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="151"/>
         <source>In force: %1</source>
         <translation>Activos: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="139"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="167"/>
         <source>never</source>
         <translation>nunca</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="203"/>
+        <source>No live values received yet</source>
+        <translation>Aún no se han recibido valores en vivo</translation>
     </message>
 </context>
 <context>
@@ -8346,6 +8400,14 @@ Do you want to continue?</source>
         <location filename="../lib/model/workspace/workspace.cpp" line="29"/>
         <source>the workspace already has a line named &quot;%1&quot;</source>
         <translation>el espacio de trabajo ya tiene una línea llamada «%1»</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::plant::RemoteHistory</name>
+    <message>
+        <location filename="../lib/plant/remotehistory.cpp" line="100"/>
+        <source>Port %1</source>
+        <translation>Puerto %1</translation>
     </message>
 </context>
 </TS>

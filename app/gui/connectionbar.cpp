@@ -174,7 +174,14 @@ AppSettings ConnectionBar::settings(const AppSettings &base) const {
     return a;
 }
 
+void ConnectionBar::setBesideNote(const QString &note) {
+    m_besideNote = note;
+    setState(m_stateShown, m_stateText);
+}
+
 void ConnectionBar::setState(Session::State state, const QString &text) {
+    m_stateShown = state;
+    m_stateText = text;
     m_connected = state != Session::State::Disconnected && state != Session::State::Failed;
     m_connect->setText(m_connected ? tr("&Disconnect") : tr("&Connect"));
     for (QWidget *w : {static_cast<QWidget *>(m_kind), static_cast<QWidget *>(m_port),
@@ -207,7 +214,9 @@ void ConnectionBar::setState(Session::State state, const QString &text) {
         label = tr("Disconnected");
         break;
     }
-    const QString detail = detailAfter(label, text);
+    QString detail = detailAfter(label, text);
+    if (state == Session::State::Disconnected && !m_besideNote.isEmpty())
+        detail = tr(" (this bar's line only: %1)").arg(m_besideNote);
     m_state->setText(QStringLiteral("<span style='color:%1; font-weight:bold'>● %2</span>%3")
                          .arg(colour, label, detail.toHtmlEscaped()));
     m_state->setAccessibleName(label + detail);

@@ -30,6 +30,9 @@ public:
     // The bar's fields written over `base` (which carries the preferences).
     [[nodiscard]] model::AppSettings settings(const model::AppSettings &base) const;
     void setState(model::Session::State state, const QString &text);
+    // What else the window runs, said beside an unused bar ("the workspace's 32 lines are in
+    // the tree"), so that its "Disconnected" is not read as the fleet's; empty: nothing else.
+    void setBesideNote(const QString &note);
     void setMonitorOnly(bool on);
     [[nodiscard]] QString stateText() const;
 
@@ -56,6 +59,9 @@ private:
     QLabel *m_state;
     link::SerialPortList *m_ports;
     bool m_connected = false;
+    model::Session::State m_stateShown = model::Session::State::Disconnected;
+    QString m_stateText;
+    QString m_besideNote;
 };
 
 } // namespace tipscope::gui

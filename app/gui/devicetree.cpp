@@ -122,8 +122,9 @@ void DeviceTree::rebuild() {
     addLine(kBarLine);
     for (int i = 0; i < m_workspace.count(); ++i)
         addLine(i);
-    // The connection bar's line is in the way of a workspace while it is not used.
-    lineItem(kBarLine)->setHidden(m_workspace.count() > 0 && m_session.devices().isEmpty() &&
+    // The connection bar's line is in the way of a workspace or a plant while it is not used.
+    lineItem(kBarLine)->setHidden((m_workspace.count() > 0 || m_plantWatched) &&
+                                  m_session.devices().isEmpty() &&
                                   m_session.state() == Session::State::Disconnected);
     expandAll();
     relabel();

@@ -98,6 +98,7 @@ private:
     void showFleet();
     void updateTitle();
     void updateWorkspaceStatus();
+    void updateBarNote();
     void loadJointLimits();
     void onWorkspaceLines();
     void dropWorkspace();

@@ -35,6 +35,7 @@ void MainWindow::watchPlant(const mqtt::MqttSettings &broker, const QString &sit
     m_stopWatchingPlant->setEnabled(true);
     m_plantWhere = QStringLiteral("%1:%2").arg(broker.host).arg(broker.port);
     updatePlantStatus();
+    updateBarNote();
 }
 
 void MainWindow::stopWatchingPlant() {
@@ -46,6 +47,7 @@ void MainWindow::stopWatchingPlant() {
         showFleet();
     m_plantWhere.clear();
     updatePlantStatus();
+    updateBarNote();
 }
 
 void MainWindow::showRemoteDevice(const QString &root) {

@@ -110,7 +110,18 @@ void MainWindow::updateWorkspaceStatus() {
         tr("Workspace: %1 of %n line(s) connected", nullptr, lines).arg(lines - down.size()));
     m_workspaceLabel->setToolTip(down.join(QLatin1Char('\n')));
     m_workspaceLabel->setStyleSheet(down.isEmpty() ? QString() : QStringLiteral("color: #b35c00;"));
+    updateBarNote();
     updateTitle();
+}
+
+void MainWindow::updateBarNote() {
+    if (m_workspace.count() > 0)
+        m_connection->setBesideNote(
+            tr("the workspace's %n line(s) are in the tree", nullptr, m_workspace.count()));
+    else if (!m_plantWhere.isEmpty())
+        m_connection->setBesideNote(tr("the plant's devices are on the fleet overview"));
+    else
+        m_connection->setBesideNote({});
 }
 
 void MainWindow::askToOpenWorkspace() {

@@ -1,6 +1,7 @@
 // The main window with a workspace open, on the offscreen platform: the lines of the file, each
 // under its name in the device tree with its own pages; a file that cannot be read refused with
 // the reason while the open workspace stays; the workspace saved, and reopened at the next start.
+#include "connectionbar.h"
 #include "devicetree.h"
 #include "linepages.h"
 #include "linkstatuslabel.h"
@@ -90,6 +91,12 @@ void TestMainWindowWorkspace::theTreeHoldsEveryLineUnderItsName() {
     QVERIFY(!cell1->child(0)->text(0).contains(QStringLiteral("Rework B")));
     QVERIFY2(w.windowTitle().contains(QStringLiteral("plant (2 lines)")),
              qPrintable(w.windowTitle()));
+    // The bar's "Disconnected" is its own line's, and says so above a running workspace.
+    QCOMPARE(w.connectionBar().stateText(),
+             QStringLiteral("Disconnected (this bar's line only: the workspace's 2 lines are in "
+                            "the tree)"));
+    w.closeWorkspace();
+    QCOMPARE(w.connectionBar().stateText(), QStringLiteral("Disconnected"));
 }
 
 void TestMainWindowWorkspace::everyPageWorksForTheDeviceSelectedOnAnyLine() {
