@@ -82,10 +82,9 @@ RemoteDevicePage::RemoteDevicePage(const plant::PlantWatch &watch, QWidget *pare
     m_chart = new ChartWidget(this);
     m_chart->setTitle(tr("Tip, setpoint and power, last 10 minutes"));
     m_chart->setTitleShown(false);
-    m_chart->setCompact(true);
     m_chart->setAxisTitle(model::ChartAxis::Left, tr("Temperature (°C)"));
     m_chart->setAxisTitle(model::ChartAxis::Right, tr("Power (%)"));
-    m_chart->setMinimumHeight(160);
+    m_chart->setMinimumHeight(200);
     m_ports->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_alarms = new QLabel(this);
     m_alarms->setWordWrap(true);
@@ -106,7 +105,7 @@ RemoteDevicePage::RemoteDevicePage(const plant::PlantWatch &watch, QWidget *pare
     layout->addWidget(m_chart, 3);
     layout->addWidget(m_alarms);
     layout->addWidget(new QLabel(tr("Recent joints, newest first"), this));
-    layout->addWidget(m_joints, 2);
+    layout->addWidget(m_joints, 1);
     m_refresh.setSingleShot(true);
     m_refresh.setInterval(kRefreshMs);
     connect(&m_refresh, &QTimer::timeout, this, &RemoteDevicePage::refresh);
