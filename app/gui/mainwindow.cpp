@@ -67,7 +67,7 @@ MainWindow::MainWindow(QWidget *parent)
             [this](const WorkContext &context) {
                 m_barPages->setWorkOrder(context.workOrder);
                 for (const auto &[line, pages] : m_linePages)
-                    pages->setWorkOrder(context.workOrder);
+                    pages->setWorkOrder(workOrderOf(line));
             });
     m_splitter = new QSplitter(this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -217,11 +217,19 @@ LinePages &MainWindow::linePages(int line) {
     if (it == m_linePages.end()) {
         auto *pages = new LinePages(*m_workspace.session(line), m_journal.path(),
                                     LinePages::PortsPolled::Every, m_stack);
-        pages->setWorkOrder(m_journal.context().workOrder);
+        pages->setWorkOrder(workOrderOf(line));
         m_stack->addWidget(pages);
         it = m_linePages.emplace(line, pages).first;
     }
     return *it->second;
+}
+
+// A line's joints are stamped with its own work context when it has one, else the shared one.
+QString MainWindow::workOrderOf(int line) const {
+    if (line >= 0 && line < m_workspace.count())
+        if (const auto own = m_workspace.line(line).ownContext())
+            return own->workOrder;
+    return m_journal.context().workOrder;
 }
 
 void MainWindow::onSelection(int line, DeviceModel *device, int port) {

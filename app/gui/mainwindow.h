@@ -99,6 +99,7 @@ private:
     void updateTitle();
     void updateWorkspaceStatus();
     void updateBarNote();
+    [[nodiscard]] QString workOrderOf(int line) const;
     void loadJointLimits();
     void onWorkspaceLines();
     void dropWorkspace();

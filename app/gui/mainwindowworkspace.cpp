@@ -89,11 +89,14 @@ void MainWindow::reopenLastWorkspace() {
 }
 
 // Every line of the workspace, as soon as its session exists and before it connects: its joints
-// and events go to the journal and it polls at the intervals of the preferences.
+// and events go to the journal (with the line's own work context, when it has one) and it polls
+// at the intervals of the preferences.
 void MainWindow::onWorkspaceLines() {
     while (int(m_keptLines.size()) < m_workspace.count()) {
-        Session &session = *m_workspace.session(int(m_keptLines.size()));
-        m_keptLines.push_back(std::make_unique<journal::SessionJournal>(session, m_journal));
+        const int line = int(m_keptLines.size());
+        Session &session = *m_workspace.session(line);
+        m_keptLines.push_back(std::make_unique<journal::SessionJournal>(
+            session, m_journal, m_workspace.line(line).ownContext()));
         applyPreferencesTo(session);
     }
     updateWorkspaceStatus();

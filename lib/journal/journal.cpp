@@ -78,7 +78,18 @@ QUuid Journal::append(JournalEvent event) {
     return enqueue(PendingEvent{QUuid(), {}, std::move(event)});
 }
 
-template <typename Pending> QUuid Journal::enqueue(Pending pending) {
+QUuid Journal::append(const model::JointRecord &joint, const model::WorkContext &context) {
+    return enqueue(PendingJoint{QUuid(), {}, joint}, &context);
+}
+
+QUuid Journal::append(JournalEvent event, const model::WorkContext &context) {
+    if (event.timeMs == 0)
+        event.timeMs = QDateTime::currentMSecsSinceEpoch();
+    return enqueue(PendingEvent{QUuid(), {}, std::move(event)}, &context);
+}
+
+template <typename Pending>
+QUuid Journal::enqueue(Pending pending, const model::WorkContext *context) {
     QString reason;
     {
         QMutexLocker lock(&m_shared->mutex);
@@ -92,7 +103,7 @@ template <typename Pending> QUuid Journal::enqueue(Pending pending) {
         }
         if (reason.isEmpty()) {
             pending.uid = QUuid::createUuid();
-            pending.context = m_shared->context;
+            pending.context = context ? *context : m_shared->context;
             const QUuid uid = pending.uid;
             lock.unlock();
             return post(*m_shared, m_writer, std::move(pending))

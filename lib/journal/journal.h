@@ -12,7 +12,8 @@
 //   records reach backlogLimit, further appends are counted lost with the reason (lostCount(),
 //   lossReason(), `recordsLost`) instead of kept; nothing is dropped silently, and after a
 //   recovery a "journal" event in the journal itself says how many records were lost and why.
-// - setContext() stamps every later joint and event and records a context-change event.
+// - setContext() stamps every later joint and event and records a context-change event; a
+//   record appended with a context of its own (a workspace line's) carries that one instead.
 // - Store-and-forward marks records sent by row id (markJointsSent(), markEventsSent());
 //   JournalReader lists the unsent ones in order.
 // - Records older than the retention (default 365 days; 0 keeps all) are pruned on the writer
@@ -53,6 +54,10 @@ public:
     QUuid append(const model::JointRecord &joint);
     // An event without a time (0) is stamped with the wall clock.
     QUuid append(JournalEvent event);
+    // The same, stamped with `context` instead of the journal's: a workspace line that has a work
+    // context of its own.
+    QUuid append(const model::JointRecord &joint, const model::WorkContext &context);
+    QUuid append(JournalEvent event, const model::WorkContext &context);
     void markJointsSent(const QList<qint64> &ids);
     void markEventsSent(const QList<qint64> &ids);
 
@@ -85,7 +90,9 @@ Q_SIGNALS:
     void pruned(qint64 joints, qint64 events);
 
 private:
-    template <typename Pending> QUuid enqueue(Pending pending);
+    // Stamped with `context`, or the journal's when null.
+    template <typename Pending>
+    QUuid enqueue(Pending pending, const model::WorkContext *context = nullptr);
     QUuid countLostNow(const QString &reason);
 
     QString m_path;

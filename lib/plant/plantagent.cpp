@@ -94,8 +94,8 @@ void PlantAgent::openLines() {
 void PlantAgent::keepLines() {
     m_kept.clear();
     for (int i = 0; i < m_workspace.count(); ++i)
-        m_kept.push_back(
-            std::make_unique<journal::SessionJournal>(*m_workspace.session(i), *m_journal));
+        m_kept.push_back(std::make_unique<journal::SessionJournal>(
+            *m_workspace.session(i), *m_journal, m_workspace.line(i).ownContext()));
 }
 
 void PlantAgent::watchClient() {

@@ -8,6 +8,7 @@
 #include "mainwindow.h"
 #include "pages/fleet/fleetpage.h"
 #include "pages/fleet/fleettilewidget.h"
+#include "pages/jointspage.h"
 #include "pages/page.h"
 
 #include "i18n/translations.h"
@@ -34,6 +35,7 @@ WorkspaceFile twoDemoLines() {
         file.lines.append(line);
     }
     file.lines[1].deviceNames.insert(1, QStringLiteral("Rework B"));
+    file.lines[1].context.workOrder = QStringLiteral("WO-cell-2");
     return file;
 }
 
@@ -125,6 +127,12 @@ void TestMainWindowWorkspace::everyPageWorksForTheDeviceSelectedOnAnyLine() {
     // Only the pages on screen are active.
     QVERIFY(!pages.page(QStringLiteral("Charts"))->isVisible());
     QVERIFY(firstPages.page(QStringLiteral("Charts"))->isVisible());
+    // Each line's Joints page follows the work order its joints are stamped with: cell-2's own.
+    const auto workOrderOn = [](LinePages &p) {
+        return qobject_cast<JointsPage *>(p.page(QStringLiteral("Joints")))->workOrder();
+    };
+    QCOMPARE(workOrderOn(pages), QStringLiteral("WO-cell-2"));
+    QVERIFY(workOrderOn(firstPages) != QStringLiteral("WO-cell-2"));
 }
 
 void TestMainWindowWorkspace::aWorkspaceOpensOnItsFleetAndATileOpensItsDevice() {

@@ -1,6 +1,6 @@
 // A session kept in a journal: the demo station at work through the real session and a real
 // SQLite file. Its joints and events are there after the session is gone, stamped with the work
-// context another program wrote to the context file.
+// context another program wrote to the context file, or with its line's own.
 #include "journal/journalreader.h"
 #include "journal/sessionjournal.h"
 #include "journal/workcontextfile.h"
@@ -26,6 +26,7 @@ class TestSessionJournal : public QObject {
 private Q_SLOTS:
     void jointsAndEventsOfASessionAreKeptWithTheWorkContext();
     void aWorkContextFileThatCannotBeReadIsReportedAndChangesNothing();
+    void aLineWithAWorkContextOfItsOwnIsKeptWithIt();
 };
 
 void TestSessionJournal::jointsAndEventsOfASessionAreKeptWithTheWorkContext() {
@@ -109,6 +110,53 @@ void TestSessionJournal::aWorkContextFileThatCannotBeReadIsReportedAndChangesNot
              qPrintable(unreadable.last().first().toString()));
     QCOMPARE(journal.context(), context);
     QVERIFY(journal.flush());
+}
+
+// A workspace line with a work context of its own: its joints and events carry it, whatever the
+// journal's shared context says; what is not the line's keeps the shared one.
+void TestSessionJournal::aLineWithAWorkContextOfItsOwnIsKeptWithIt() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+    const model::WorkContext shared{QStringLiteral("WO-shared"), {}, QStringLiteral("ana")};
+    const model::WorkContext own{QStringLiteral("WO-line-3"), QStringLiteral("SN-3"),
+                                 QStringLiteral("ben")};
+    {
+        Journal journal(path);
+        journal.setContext(shared);
+        model::Session session;
+        SessionJournal kept(session, journal, own);
+        QSignalSpy joints(&session.joints(), &model::JointWatcher::jointEnded);
+        QVERIFY(joints.isValid());
+        model::Session::Settings settings = testing::unpacedDemoSettings();
+        settings.demoActivity = true;
+        session.connectTo(settings);
+        QTRY_VERIFY_WITH_TIMEOUT(!joints.isEmpty(), kJointMs);
+        session.disconnectFromLine();
+        QCOMPARE(journal.context(), shared);
+        QVERIFY(journal.flush());
+    }
+
+    JournalReader reader;
+    QVERIFY(reader.open(path));
+    const auto stored = reader.joints({});
+    QVERIFY2(stored, qPrintable(stored.error()));
+    QVERIFY(!stored.value().isEmpty());
+    for (const StoredJoint &j : stored.value())
+        QCOMPARE(j.context, own);
+    EventFilter connections;
+    connections.kinds = {JournalEvent::Kind::Connection};
+    const auto events = reader.events(connections);
+    QVERIFY2(events, qPrintable(events.error()));
+    QVERIFY(!events.value().isEmpty());
+    for (const StoredEvent &e : events.value())
+        QCOMPARE(e.context, own);
+    EventFilter changes;
+    changes.kinds = {JournalEvent::Kind::ContextChange};
+    const auto contextEvents = reader.events(changes);
+    QVERIFY2(contextEvents, qPrintable(contextEvents.error()));
+    QCOMPARE(contextEvents.value().size(), 1); // the journal's own change, with its context
+    QCOMPARE(contextEvents.value().first().context, shared);
 }
 
 QTEST_GUILESS_MAIN(TestSessionJournal)

@@ -33,7 +33,12 @@ struct WorkspaceLine {
     // Station names by bus address; -1 names the device that answers without addresses.
     QMap<int, QString> deviceNames;
     std::optional<JointLimitRules> jointLimits; // none: the shared limits apply
-    WorkContext context;
+    WorkContext context;                        // empty: the shared one applies
+
+    // The line's own work context, when it has one.
+    [[nodiscard]] std::optional<WorkContext> ownContext() const {
+        return context.isEmpty() ? std::nullopt : std::optional<WorkContext>(context);
+    }
 
     // The name given to the device at `address` (none: without addresses), or empty.
     [[nodiscard]] QString deviceName(std::optional<int> address) const {
