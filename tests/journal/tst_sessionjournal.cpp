@@ -19,6 +19,29 @@ using namespace tipscope::journal;
 namespace {
 constexpr int kJointMs =
     sim::DemoActivity::kJointOffsetMs + sim::DemoActivity::kJointEveryMs + 10'000;
+
+struct DemoRun {
+    model::DeviceIdentity station;
+    model::JointRecord firstJoint;
+};
+
+// The demo station at work, kept in `journal` (with its line's own context, when given), until
+// its first joint ends; nothing when it does not come in time.
+std::optional<DemoRun> keepDemoUntilAJoint(Journal &journal,
+                                           std::optional<model::WorkContext> lineContext) {
+    model::Session session;
+    SessionJournal kept(session, journal, std::move(lineContext));
+    QSignalSpy joints(&session.joints(), &model::JointWatcher::jointEnded);
+    model::Session::Settings settings = testing::unpacedDemoSettings();
+    settings.demoActivity = true;
+    session.connectTo(settings);
+    if (!QTest::qWaitFor([&] { return session.station() != nullptr; }, 30000) ||
+        !QTest::qWaitFor([&] { return !joints.isEmpty(); }, kJointMs))
+        return std::nullopt;
+    DemoRun run{session.station()->identity(), joints.first().first().value<model::JointRecord>()};
+    session.disconnectFromLine();
+    return run;
+}
 } // namespace
 
 class TestSessionJournal : public QObject {
@@ -47,18 +70,10 @@ void TestSessionJournal::jointsAndEventsOfASessionAreKeptWithTheWorkContext() {
         QVERIFY(writeWorkContext(contextPath, context));
         QTRY_COMPARE_WITH_TIMEOUT(journal.context(), context, 10000);
 
-        model::Session session;
-        SessionJournal kept(session, journal);
-        QSignalSpy joints(&session.joints(), &model::JointWatcher::jointEnded);
-        QVERIFY(joints.isValid());
-        model::Session::Settings settings = testing::unpacedDemoSettings();
-        settings.demoActivity = true;
-        session.connectTo(settings);
-        QTRY_VERIFY_WITH_TIMEOUT(session.station(), 30000);
-        station = session.station()->identity();
-        QTRY_VERIFY_WITH_TIMEOUT(!joints.isEmpty(), kJointMs);
-        seen = joints.first().first().value<model::JointRecord>();
-        session.disconnectFromLine();
+        const auto run = keepDemoUntilAJoint(journal, std::nullopt);
+        QVERIFY(run);
+        station = run->station;
+        seen = run->firstJoint;
         QVERIFY(journal.flush());
     }
 
@@ -124,15 +139,7 @@ void TestSessionJournal::aLineWithAWorkContextOfItsOwnIsKeptWithIt() {
     {
         Journal journal(path);
         journal.setContext(shared);
-        model::Session session;
-        SessionJournal kept(session, journal, own);
-        QSignalSpy joints(&session.joints(), &model::JointWatcher::jointEnded);
-        QVERIFY(joints.isValid());
-        model::Session::Settings settings = testing::unpacedDemoSettings();
-        settings.demoActivity = true;
-        session.connectTo(settings);
-        QTRY_VERIFY_WITH_TIMEOUT(!joints.isEmpty(), kJointMs);
-        session.disconnectFromLine();
+        QVERIFY(keepDemoUntilAJoint(journal, own));
         QCOMPARE(journal.context(), shared);
         QVERIFY(journal.flush());
     }
