@@ -3,6 +3,7 @@
 #include "benchsupport.h"
 #include "fleetday.h"
 #include "simstations.h"
+#include "wirefloor.h"
 
 #include "model/workspace/workspace.h"
 #include "pages/fleet/fleetpage.h"
@@ -11,6 +12,7 @@
 #include <QTextStream>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 namespace tipscope::bench {
@@ -23,6 +25,7 @@ constexpr int kConnectMs = 120000;
 // Discovery, the first reading of every setting and the tips heating up stay out of the figures.
 constexpr int kWarmupMs = 10000;
 constexpr int kDayHours = 24;
+constexpr int kFloorSeconds = 30;
 
 // What a line's link statistics say at one moment.
 struct LineCounts {
@@ -150,7 +153,9 @@ int runFleetLiveBench(const QStringList &args) {
                "memory of a day of the fleet at the sample rates achieved. --by-intervals polls\n"
                "each line by its intervals only instead of filling its wire. --chunk-ms hands\n"
                "each answer over in chunks every C ms, as a USB adapter or a device server does\n"
-               "(default 0: a byte at a time, the most wake-ups).\n";
+               "(default 0: a byte at a time, the most wake-ups). First, for 30 s, the wire\n"
+               "floor: a bare epoll client on the same simulators, the least CPU any client\n"
+               "spends on these wires.\n";
         return 0;
     }
     const int stations = qMax(1, optionValue(args, "--stations", QStringLiteral("32")).toInt());
@@ -165,6 +170,21 @@ int runFleetLiveBench(const QStringList &args) {
     const model::WorkspaceFile file = startSimulators(sims, stations, chunkMs);
     if (file.lines.isEmpty())
         return 1;
+    // Before the workspace takes the simulators over, so both see the same wires.
+    QString floorError;
+    const std::optional<WireFloor> floor =
+        measureWireFloor(sims, kFloorSeconds * 1000, &floorError);
+    if (!floor) {
+        printError(floorError);
+        return 1;
+    }
+    printFigure(QStringLiteral("fleet.floor_tx_per_s"), floor->txPerS, QStringLiteral("tx/s"));
+    printFigure(QStringLiteral("fleet.floor_cpu_us_per_tx"), floor->cpuUsPerTx,
+                QStringLiteral("us"));
+    printFigure(QStringLiteral("fleet.floor_user_us_per_tx"), floor->userUsPerTx,
+                QStringLiteral("us"));
+    printFigure(QStringLiteral("fleet.floor_cpu_percent"), floor->cpuPercentAt(floor->txPerS),
+                QStringLiteral("% of one core"));
     model::Workspace workspace;
     workspace.open(file);
     // For comparison: every line polled by its intervals only, as a single session is.
@@ -206,9 +226,11 @@ int runFleetLiveBench(const QStringList &args) {
                 100.0 * double(after.simCpuUs - before.simCpuUs) / (seconds * 1e6),
                 QStringLiteral("% of one core"));
     const double rate = printRates(workspace, before, after, seconds);
-    printFigure(QStringLiteral("fleet.cpu_us_per_tx"),
-                rate > 0 ? double(after.cpuUs - before.cpuUs) / (rate * seconds) : 0,
-                QStringLiteral("us"));
+    const double usPerTx = rate > 0 ? double(after.cpuUs - before.cpuUs) / (rate * seconds) : 0;
+    printFigure(QStringLiteral("fleet.cpu_us_per_tx"), usPerTx, QStringLiteral("us"));
+    printFigure(QStringLiteral("fleet.floor_cpu_percent_at_fleet_rate"), floor->cpuPercentAt(rate),
+                QStringLiteral("% of one core"));
+    printFigure(QStringLiteral("fleet.cpu_over_floor"), usPerTx / floor->cpuUsPerTx, QString(), 2);
     ChannelRates rates{};
     for (size_t c = 0; c < rates.size(); ++c) {
         rates[c] = double(after.samples[c] - before.samples[c]) / seconds / stations;

@@ -8,7 +8,11 @@
 // turns each line's filling of its wire off, to compare with polling by the intervals alone;
 // --chunk-ms C has the simulators hand each answer over every C ms rather than a byte at a time
 // (tipscope-sim --chunk), as a USB adapter's latency timer or a device server's packing does.
-// Prints:
+// Before the workspace opens, the wire floor (wirefloor.h) is measured on the same simulators for
+// 30 s. Prints:
+//   fleet.floor_tx_per_s, fleet.floor_cpu_us_per_tx (fleet.floor_user_us_per_tx the user part),
+//   fleet.floor_cpu_percent      the floor client filling every wire: its rate, its CPU per
+//                                transaction and its share of one core
 //   fleet.gui_cpu_percent        this whole process's user + system CPU over the run, % of one
 //                                core (target < 5)
 //   fleet.sim_cpu_percent        the simulators' together, for context: they share the machine
@@ -24,6 +28,9 @@
 //                                answers, pooled), and fleet.after_answer_ms, the rest: from an
 //                                answer to the next request written
 //   fleet.cpu_us_per_tx          the process's CPU time per transaction
+//   fleet.floor_cpu_percent_at_fleet_rate  the floor's CPU per transaction at the fleet's rate:
+//                                the least fleet.gui_cpu_percent could be on this machine
+//   fleet.cpu_over_floor         fleet.cpu_us_per_tx over fleet.floor_cpu_us_per_tx
 //   fleet.tiles, fleet.tile_repaints   the page's tiles, and its repaints during the run
 //   fleet.tile_latency_ms_p50/_p99  a sample's arrival to its tile repainted (target p99 < 250)
 //   fleet.port<N>_hz, fleet.feeder_hz  samples a second of a station's channel, averaged

@@ -5,6 +5,7 @@
 #include "mosquittobroker.h"
 #include "plantsubscriber.h"
 #include "simstations.h"
+#include "wirefloor.h"
 
 #include "journal/journalreader.h"
 
@@ -28,6 +29,7 @@ namespace {
 constexpr int kOnlineTimeoutMs = 120000;
 // The tips heating up and the first reading of everything stay out of the figures.
 constexpr int kWarmupMs = 10000;
+constexpr int kFloorSeconds = 30;
 // A joint that started during the outage is journaled once its recovery ended (at most 3 s with
 // the simulator's random joints) and the journal made it durable: wait this long after the
 // broker's return before the backlog read from the journal is taken as complete.
@@ -52,6 +54,7 @@ struct Plant {
     std::vector<SimStation> stations;
     testing::AgentProcess agent;
     int devices = 0;
+    std::optional<WireFloor> floor;
 };
 
 qint64 nowMs() {
@@ -110,14 +113,6 @@ void printAgentLog(testing::AgentProcess &agent) {
 // Starts the broker, the subscriber, the stations and the agent, and waits until every device
 // says online. False, with the reason printed, when something did not come up.
 bool startPlant(Plant &plant, const Options &o) {
-    testing::BrokerOptions brokerOptions;
-    brokerOptions.persistence = true;
-    plant.broker = std::make_unique<testing::MosquittoBroker>(brokerOptions);
-    QString error;
-    if (!plant.broker->start(&error) || !plant.subscriber.connectTo(plant.broker->port(), &error)) {
-        printError(error);
-        return false;
-    }
     plant.stations = startSimStations(o.stations, [&](int i) {
         QStringList args{QStringLiteral("--model"),
                          QStringLiteral("DME"),
@@ -137,6 +132,27 @@ bool startPlant(Plant &plant, const Options &o) {
     });
     if (plant.stations.empty())
         return false;
+    // Before the broker and the agent: the floor's loop holds this process's event loop, and
+    // the agent would take the simulators over.
+    QString error;
+    plant.floor = measureWireFloor(plant.stations, kFloorSeconds * 1000, &error);
+    if (!plant.floor) {
+        printError(error);
+        return false;
+    }
+    printFigure(QStringLiteral("plant.floor_tx_per_s"), plant.floor->txPerS,
+                QStringLiteral("tx/s"));
+    printFigure(QStringLiteral("plant.floor_cpu_us_per_tx"), plant.floor->cpuUsPerTx,
+                QStringLiteral("us"));
+    printFigure(QStringLiteral("plant.floor_cpu_pct"),
+                plant.floor->cpuPercentAt(plant.floor->txPerS), QStringLiteral("% of one core"));
+    testing::BrokerOptions brokerOptions;
+    brokerOptions.persistence = true;
+    plant.broker = std::make_unique<testing::MosquittoBroker>(brokerOptions);
+    if (!plant.broker->start(&error) || !plant.subscriber.connectTo(plant.broker->port(), &error)) {
+        printError(error);
+        return false;
+    }
     QJsonArray lines;
     for (const SimStation &s : plant.stations)
         lines.append(testing::AgentProcess::tcpLineJson(s.sim->name(), s.address));

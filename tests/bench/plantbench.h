@@ -7,7 +7,12 @@
 // 5 s, retries at most 1 s apart, its own journal), and a subscriber in this process
 // (PlantSubscriber). Once every device's status is online and a warm-up has passed, it measures
 // for --seconds, then stops the broker for --outage-s while the stations keep making joints,
-// starts it again and waits for the backlog. Prints:
+// starts it again and waits for the backlog. Before the broker and the agent start, the wire floor
+// (wirefloor.h) is measured on the same stations for 30 s. Prints:
+//   plant.floor_tx_per_s, plant.floor_cpu_us_per_tx, plant.floor_cpu_pct  the floor client
+//                                filling every wire, as the agent's lines do: its rate, its CPU
+//                                per transaction and its share of one core, the least
+//                                plant.agent_cpu_pct could be on this machine
 //   plant.agent_cpu_pct          the agent's user + system CPU (/proc/<pid>/stat) over the
 //                                window, % of one core (target < 5)
 //   plant.stations_cpu_pct, plant.subscriber_cpu_pct  the simulators' together and this
