@@ -18,7 +18,7 @@ using namespace tipscope;
 
 namespace {
 
-struct Tr {
+struct AgentMainTr {
     Q_DECLARE_TR_FUNCTIONS(AgentMain)
 };
 
@@ -26,18 +26,19 @@ constexpr int kExitUsage = 2;
 const QString kDefaultConfig = QStringLiteral("/etc/tipscope/agent.json");
 
 QString summary(const plant::AgentConfig &c) {
-    const QString who =
-        c.broker.username.isEmpty() ? Tr::tr("without a user name")
-        : c.passwordSource.isEmpty()
-            ? Tr::tr("as %1, without a password").arg(c.broker.username)
-            : Tr::tr("as %1, password from the %2").arg(c.broker.username, c.passwordSource);
+    const QString who = c.broker.username.isEmpty() ? AgentMainTr::tr("without a user name")
+                        : c.passwordSource.isEmpty()
+                            ? AgentMainTr::tr("as %1, without a password").arg(c.broker.username)
+                            : AgentMainTr::tr("as %1, password from the %2")
+                                  .arg(c.broker.username, c.passwordSource);
     QStringList lines;
     for (const model::WorkspaceLine &line : c.workspace.lines)
         lines << line.name;
-    return Tr::tr("site %1, %n line(s) (%2), broker %3:%4%5 %6", nullptr, int(lines.size()))
+    return AgentMainTr::tr("site %1, %n line(s) (%2), broker %3:%4%5 %6", nullptr,
+                           int(lines.size()))
         .arg(c.site, lines.join(QStringLiteral(", ")), c.broker.host)
         .arg(c.broker.port)
-        .arg(c.broker.tls.caFile.isEmpty() ? QString() : Tr::tr(" with TLS"), who);
+        .arg(c.broker.tls.caFile.isEmpty() ? QString() : AgentMainTr::tr(" with TLS"), who);
 }
 
 } // namespace
@@ -49,24 +50,26 @@ int main(int argc, char *argv[]) {
     i18n::installTranslators(app, QStringLiteral("system"));
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        Tr::tr("Runs the lines of a workspace without a screen, keeps their joints and events in "
-               "the journal and publishes them to an MQTT broker."));
+    parser.setApplicationDescription(AgentMainTr::tr(
+        "Runs the lines of a workspace without a screen, keeps their joints and events in "
+        "the journal and publishes them to an MQTT broker."));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption configOption(
         QStringLiteral("config"),
-        Tr::tr("The agent's configuration (default %1).").arg(kDefaultConfig), Tr::tr("file"),
-        kDefaultConfig);
+        AgentMainTr::tr("The agent's configuration (default %1).").arg(kDefaultConfig),
+        AgentMainTr::tr("file"), kDefaultConfig);
     const QCommandLineOption checkOption(
         QStringLiteral("check"),
-        Tr::tr("Reads the configuration and its workspace, says what is wrong, and exits."));
+        AgentMainTr::tr(
+            "Reads the configuration and its workspace, says what is wrong, and exits."));
     parser.addOptions({configOption, checkOption});
     parser.process(app);
     if (!parser.positionalArguments().isEmpty()) {
-        QTextStream(stderr) << "tipscope-agent: "
-                            << Tr::tr("unexpected argument %1").arg(parser.positionalArguments()[0])
-                            << Qt::endl;
+        QTextStream(stderr)
+            << "tipscope-agent: "
+            << AgentMainTr::tr("unexpected argument %1").arg(parser.positionalArguments()[0])
+            << Qt::endl;
         return kExitUsage;
     }
 
@@ -80,7 +83,8 @@ int main(int argc, char *argv[]) {
         return kExitUsage;
     }
     if (parser.isSet(checkOption)) {
-        qInfo("%s", qPrintable(Tr::tr("%1 is good: %2").arg(path, summary(config.value()))));
+        qInfo("%s",
+              qPrintable(AgentMainTr::tr("%1 is good: %2").arg(path, summary(config.value()))));
         return 0;
     }
 
@@ -91,18 +95,19 @@ int main(int argc, char *argv[]) {
     QObject::connect(&signals, &agent::UnixSignals::reloadRequested, &agent, [&agent, path] {
         const auto reloaded = plant::AgentConfig::load(path);
         if (!reloaded) {
-            qCritical("%s", qPrintable(Tr::tr("configuration refused, the running one stays: %1")
-                                           .arg(reloaded.error())));
+            qCritical("%s",
+                      qPrintable(AgentMainTr::tr("configuration refused, the running one stays: %1")
+                                     .arg(reloaded.error())));
             return;
         }
-        qInfo("%s", qPrintable(Tr::tr("reloading: %1").arg(summary(reloaded.value()))));
+        qInfo("%s", qPrintable(AgentMainTr::tr("reloading: %1").arg(summary(reloaded.value()))));
         agent.reload(reloaded.value());
     });
     QObject::connect(&agent, &plant::PlantAgent::finished, &app, &QCoreApplication::quit);
-    qInfo("%s", qPrintable(Tr::tr("tipscope-agent %1 starting: %2")
+    qInfo("%s", qPrintable(AgentMainTr::tr("tipscope-agent %1 starting: %2")
                                .arg(app.applicationVersion(), summary(config.value()))));
     agent.start(config.value());
     const int rc = app.exec();
-    qInfo("%s", qPrintable(Tr::tr("stopped")));
+    qInfo("%s", qPrintable(AgentMainTr::tr("stopped")));
     return rc;
 }

@@ -18,7 +18,7 @@ using namespace tipscope::protocol;
 
 namespace {
 
-struct Tr {
+struct CliCommandsTr {
     Q_DECLARE_TR_FUNCTIONS(CliCommands)
 };
 
@@ -37,7 +37,7 @@ QJsonObject deviceJson(const DeviceInfo &d) {
 }
 
 void reportFailure(CliSession &s, const Reply &reply, const QString &what) {
-    s.err() << Tr::tr("tipscope-cli: %1: %2").arg(what, reply.errorString()) << Qt::endl;
+    s.err() << CliCommandsTr::tr("tipscope-cli: %1: %2").arg(what, reply.errorString()) << Qt::endl;
 }
 
 void reportFailure(CliSession &s, const Reply &reply) {
@@ -49,7 +49,7 @@ QString describeRaw(const QByteArray &bytes) {
     const auto frame = parseFrame(bytes);
     if (frame)
         return frame->toString();
-    return Tr::tr("%n raw byte(s), not a frame (%1)", nullptr, int(bytes.size()))
+    return CliCommandsTr::tr("%n raw byte(s), not a frame (%1)", nullptr, int(bytes.size()))
         .arg(frame.error().why);
 }
 
@@ -61,7 +61,8 @@ QString formatReading(const ResolvedCommand &cmd, const QByteArray &data, bool r
         return code + QLatin1Char(' ') + QString::fromLatin1(data);
     const auto value = decodeAnswer(cmd, data);
     if (!value)
-        return Tr::tr("%1 unreadable data field '%2'").arg(code, QString::fromLatin1(data));
+        return CliCommandsTr::tr("%1 unreadable data field '%2'")
+            .arg(code, QString::fromLatin1(data));
     // Data for scripts: the catalog's English labels, whatever the language of the messages.
     const QString described = describeValue(cmd, *value, Wording::Catalog);
     const ValueKind k = cmd.spec->kind;
@@ -100,7 +101,8 @@ int runDetect(CliSession &s) {
 
 int runRead(CliSession &s) {
     if (s.options().args.isEmpty()) {
-        s.err() << Tr::tr("tipscope-cli: read needs at least one command code, e.g. read ST1")
+        s.err() << CliCommandsTr::tr(
+                       "tipscope-cli: read needs at least one command code, e.g. read ST1")
                 << Qt::endl;
         return kUsage;
     }
@@ -111,8 +113,9 @@ int runRead(CliSession &s) {
         const QByteArray code = arg.toUpper().toLatin1();
         const DeviceInfo *d = s.deviceFor(code, Direction::Read);
         if (!d) {
-            s.err() << Tr::tr("tipscope-cli: no device here can read '%1'").arg(elided(arg))
-                    << Qt::endl;
+            s.err()
+                << CliCommandsTr::tr("tipscope-cli: no device here can read '%1'").arg(elided(arg))
+                << Qt::endl;
             worst = qMax(worst, int(kRefused));
             continue;
         }
@@ -134,12 +137,12 @@ static int verifyWrite(CliSession &s, const DeviceInfo &d, const ResolvedCommand
                        const QByteArray &data) {
     const auto readCmd = Catalog::builtin().resolve(d.family, cmd.code, Direction::Read);
     if (!readCmd || cmd.spec->kind == ValueKind::Flags || cmd.spec->kind == ValueKind::Action) {
-        s.out() << Tr::tr("%1 written").arg(QString::fromLatin1(cmd.code)) << Qt::endl;
+        s.out() << CliCommandsTr::tr("%1 written").arg(QString::fromLatin1(cmd.code)) << Qt::endl;
         return kOk;
     }
     Reply *back = s.ask(Request::read(d.address, *readCmd));
     if (!back->ok()) {
-        s.err() << Tr::tr("tipscope-cli: %1 was accepted but could not be read back: %2")
+        s.err() << CliCommandsTr::tr("tipscope-cli: %1 was accepted but could not be read back: %2")
                        .arg(QString::fromLatin1(cmd.code), back->errorString())
                 << Qt::endl;
         return CliSession::exitCodeFor(*back);
@@ -147,12 +150,14 @@ static int verifyWrite(CliSession &s, const DeviceInfo &d, const ResolvedCommand
     const auto wrote = decodeAnswer(*readCmd, data);
     const auto now = decodeAnswer(*readCmd, back->answer().data);
     if (!wrote || !now || !(*wrote == *now)) {
-        s.err() << Tr::tr("tipscope-cli: verification failed: wrote %1, the device reports %2")
+        s.err() << CliCommandsTr::tr(
+                       "tipscope-cli: verification failed: wrote %1, the device reports %2")
                        .arg(QString::fromLatin1(data), QString::fromLatin1(back->answer().data))
                 << Qt::endl;
         return kNak;
     }
-    s.out() << Tr::tr("%1 (verified)").arg(formatReading(*readCmd, back->answer().data, false))
+    s.out() << CliCommandsTr::tr("%1 (verified)")
+                   .arg(formatReading(*readCmd, back->answer().data, false))
             << Qt::endl;
     return kOk;
 }
@@ -172,7 +177,8 @@ static int checkDeviceLimits(CliSession &s, const DeviceInfo &d, const QByteArra
             continue;
         Reply *r = s.ask(Request::read(d.address, l->code()));
         if (!r->ok()) {
-            s.err() << Tr::tr("tipscope-cli: %1 was not sent: its limit %2 could not be read: %3")
+            s.err() << CliCommandsTr::tr(
+                           "tipscope-cli: %1 was not sent: its limit %2 could not be read: %3")
                            .arg(QString::fromLatin1(code), limit, r->errorString())
                     << Qt::endl;
             return CliSession::exitCodeFor(*r);
@@ -180,7 +186,8 @@ static int checkDeviceLimits(CliSession &s, const DeviceInfo &d, const QByteArra
         l->deviceReported(r->answer().data);
     }
     if (const QString why = p->validate(wire); !why.isEmpty()) {
-        s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(why) << Qt::endl;
+        s.err() << CliCommandsTr::tr("tipscope-cli: refused, nothing was sent: %1").arg(why)
+                << Qt::endl;
         return kRefused;
     }
     return kOk;
@@ -190,7 +197,8 @@ int runWrite(CliSession &s) {
     const QStringList &args = s.options().args;
     const bool raw = s.options().flags.contains(QStringLiteral("raw"));
     if (args.size() != 2 && !(args.size() == 1 && !raw)) {
-        s.err() << Tr::tr("tipscope-cli: write takes CODE VALUE, e.g. write ST1 350") << Qt::endl;
+        s.err() << CliCommandsTr::tr("tipscope-cli: write takes CODE VALUE, e.g. write ST1 350")
+                << Qt::endl;
         return kUsage;
     }
     if (const int rc = s.resolveDevices(); rc != kOk)
@@ -198,9 +206,9 @@ int runWrite(CliSession &s) {
     const QByteArray code = args.at(0).toUpper().toLatin1();
     const DeviceInfo *d = s.deviceFor(code, Direction::Write);
     if (!d) {
-        s.err()
-            << Tr::tr("tipscope-cli: no device here accepts writes of '%1'").arg(elided(args.at(0)))
-            << Qt::endl;
+        s.err() << CliCommandsTr::tr("tipscope-cli: no device here accepts writes of '%1'")
+                       .arg(elided(args.at(0)))
+                << Qt::endl;
         return kRefused;
     }
     const auto cmd = *Catalog::builtin().resolve(d->family, code, Direction::Write);
@@ -212,12 +220,12 @@ int runWrite(CliSession &s) {
         const QString typed = args.at(1);
         for (QChar c : typed)
             if (c.unicode() < 0x20 || c.unicode() > 0x7e)
-                error = Tr::tr("the data field must be printable ASCII");
+                error = CliCommandsTr::tr("the data field must be printable ASCII");
         if (typed.isEmpty())
-            error = Tr::tr("the data field must be printable ASCII");
+            error = CliCommandsTr::tr("the data field must be printable ASCII");
         data = typed.toLatin1();
         if (data.size() > 32)
-            error = Tr::tr("the data field is longer than 32 characters");
+            error = CliCommandsTr::tr("the data field is longer than 32 characters");
     } else if (cmd.spec->kind == ValueKind::Action && args.size() == 1) {
         data = cmd.spec->fixedData;
     } else if (const auto typed =
@@ -234,7 +242,8 @@ int runWrite(CliSession &s) {
         data = *field;
     }
     if (!error.isEmpty()) {
-        s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(error) << Qt::endl;
+        s.err() << CliCommandsTr::tr("tipscope-cli: refused, nothing was sent: %1").arg(error)
+                << Qt::endl;
         return kRefused;
     }
     if (wire)
@@ -250,15 +259,17 @@ int runWrite(CliSession &s) {
 
 int runSend(CliSession &s) {
     if (s.options().args.isEmpty()) {
-        s.err() << Tr::tr("tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 "
-                          "52 53 4D 4E 03 02")
+        s.err() << CliCommandsTr::tr(
+                       "tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 "
+                       "52 53 4D 4E 03 02")
                 << Qt::endl;
         return kUsage;
     }
     const auto bytes = parseHexBytes(s.options().args.join(QLatin1Char(' ')));
     if (!bytes.ok()) {
-        s.err() << Tr::tr("tipscope-cli: refused, nothing was sent: %1").arg(bytes.error())
-                << Qt::endl;
+        s.err()
+            << CliCommandsTr::tr("tipscope-cli: refused, nothing was sent: %1").arg(bytes.error())
+            << Qt::endl;
         return kRefused;
     }
     Request r;
@@ -323,7 +334,7 @@ int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const Catalog &cat = Catalog::builtin();
     const QString family = o.values.value(QStringLiteral("family")).toUpper();
     if (!family.isEmpty() && !cat.family(family)) {
-        err << Tr::tr("tipscope-cli: unknown family '%1'; known: %2")
+        err << CliCommandsTr::tr("tipscope-cli: unknown family '%1'; known: %2")
                    .arg(elided(family), cat.familyNames().join(QLatin1String(", ")))
             << Qt::endl;
         return kUsage;
@@ -346,12 +357,12 @@ int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err) {
         out << qSetFieldWidth(5) << Qt::left << c.pattern << qSetFieldWidth(3) << access
             << qSetFieldWidth(0) << catalogText(c.name);
         if (c.dangerous)
-            out << Tr::tr(" [dangerous]");
+            out << CliCommandsTr::tr(" [dangerous]");
         out << "\n      " << catalogText(c.description);
         if (!range.isEmpty())
-            out << "\n      " << Tr::tr("values: %1").arg(range);
-        out << "\n      " << Tr::tr("families: %1").arg(c.families.join(QLatin1Char(' ')))
-            << Qt::endl;
+            out << "\n      " << CliCommandsTr::tr("values: %1").arg(range);
+        out << "\n      "
+            << CliCommandsTr::tr("families: %1").arg(c.families.join(QLatin1Char(' '))) << Qt::endl;
     }
     return kOk;
 }

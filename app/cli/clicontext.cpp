@@ -13,7 +13,7 @@ namespace tipscope::cli {
 
 namespace {
 
-struct Tr {
+struct CliContextTr {
     Q_DECLARE_TR_FUNCTIONS(CliContext)
 };
 
@@ -39,7 +39,8 @@ protocol::Outcome<void> applyLine(const QString &line, model::WorkContext &c) {
         c.operatorName = value;
     else
         return protocol::failure(
-            Tr::tr("'%1' is not a context line: write work_order=W, board_serial=S or operator=O")
+            CliContextTr::tr(
+                "'%1' is not a context line: write work_order=W, board_serial=S or operator=O")
                 .arg(line));
     return {};
 }
@@ -54,7 +55,7 @@ protocol::Outcome<model::WorkContext> changed(const CliOptions &o, model::WorkCo
     if (o.flags.contains(QStringLiteral("stdin"))) {
         QFile in;
         if (!in.open(stdin, QIODevice::ReadOnly | QIODevice::Text))
-            return protocol::failure(Tr::tr("cannot read standard input"));
+            return protocol::failure(CliContextTr::tr("cannot read standard input"));
         while (!in.atEnd()) {
             const QString line = QString::fromUtf8(in.readLine()).trimmed();
             if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
@@ -89,8 +90,9 @@ int runContext(const CliOptions &o, QTextStream &out, QTextStream &err) {
         }
         next = c.value();
     } else if (action != QLatin1String("clear") || o.args.size() > 1) {
-        err << Tr::tr("tipscope-cli: context takes show, set [--work-order W] [--serial S] "
-                      "[--operator O] [--stdin], or clear")
+        err << CliContextTr::tr(
+                   "tipscope-cli: context takes show, set [--work-order W] [--serial S] "
+                   "[--operator O] [--stdin], or clear")
             << Qt::endl;
         return kUsage;
     }
@@ -121,8 +123,8 @@ int runLimits(const CliOptions &o, QTextStream &out, QTextStream &err) {
     } else if (action == QLatin1String("clear") && o.args.size() == 1) {
         rules = model::JointLimitRules(rules.defaults());
     } else if (action != QLatin1String("show") || o.args.size() > 1) {
-        err << Tr::tr("tipscope-cli: limits takes show, set RULE (such as "
-                      "port=1,tool=C245,recovery=3.5,dip=60) or clear")
+        err << CliContextTr::tr("tipscope-cli: limits takes show, set RULE (such as "
+                                "port=1,tool=C245,recovery=3.5,dip=60) or clear")
             << Qt::endl;
         return kUsage;
     }

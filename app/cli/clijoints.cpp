@@ -18,7 +18,7 @@ using namespace tipscope::journal;
 
 namespace {
 
-struct Tr {
+struct CliJointsTr {
     Q_DECLARE_TR_FUNCTIONS(CliJoints)
 };
 
@@ -38,7 +38,8 @@ protocol::Outcome<qint64> timeOf(const QString &text, qint64 nowMs) {
         t = QDateTime(QDate::fromString(text, Qt::ISODate), QTime(0, 0));
     if (!t.isValid())
         return protocol::failure(
-            Tr::tr("'%1' is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00")
+            CliJointsTr::tr(
+                "'%1' is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00")
                 .arg(text));
     return t.toMSecsSinceEpoch();
 }
@@ -61,8 +62,8 @@ protocol::Outcome<QString> deviceKeyOf(const JournalReader &reader, const QStrin
     if (keys.size() == 1)
         return keys.first();
     if (keys.isEmpty())
-        return protocol::failure(Tr::tr("the journal has no device '%1'").arg(text));
-    return protocol::failure(Tr::tr("'%1' names %2 devices; give one of:\n  %3")
+        return protocol::failure(CliJointsTr::tr("the journal has no device '%1'").arg(text));
+    return protocol::failure(CliJointsTr::tr("'%1' names %2 devices; give one of:\n  %3")
                                  .arg(text)
                                  .arg(keys.size())
                                  .arg(keys.join(QStringLiteral("\n  "))));
@@ -90,7 +91,7 @@ protocol::Outcome<JointFilter> filterOf(const CliOptions &o, const JournalReader
         bool ok = false;
         const int port = o.values.value(QStringLiteral("port")).toInt(&ok);
         if (!ok || port < 1 || port > 4)
-            return protocol::failure(Tr::tr("--port takes a port number from 1 to 4"));
+            return protocol::failure(CliJointsTr::tr("--port takes a port number from 1 to 4"));
         f.port = port;
     }
     if (o.values.contains(QStringLiteral("verdict"))) {
@@ -99,7 +100,7 @@ protocol::Outcome<JointFilter> filterOf(const CliOptions &o, const JournalReader
         f.verdict = model::jointVerdictFromName(v);
         if (!f.verdict)
             return protocol::failure(
-                Tr::tr("--verdict takes ok, slow-recovery, too-deep or incomplete"));
+                CliJointsTr::tr("--verdict takes ok, slow-recovery, too-deep or incomplete"));
     }
     if (o.values.contains(QStringLiteral("tool")))
         f.tool = o.values.value(QStringLiteral("tool"));
@@ -141,7 +142,7 @@ int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const bool json = o.flags.contains(QStringLiteral("json"));
     const bool csv = o.flags.contains(QStringLiteral("csv"));
     if (json && csv) {
-        err << Tr::tr("tipscope-cli: give --json or --csv, not both") << Qt::endl;
+        err << CliJointsTr::tr("tipscope-cli: give --json or --csv, not both") << Qt::endl;
         return kUsage;
     }
     JournalReader reader;

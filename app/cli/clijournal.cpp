@@ -19,7 +19,7 @@ using namespace tipscope::journal;
 
 namespace {
 
-struct Tr {
+struct CliJournalTr {
     Q_DECLARE_TR_FUNCTIONS(CliJournal)
 };
 
@@ -74,8 +74,8 @@ int setRetention(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const QString text = o.args.value(1);
     const int days = text.toInt(&ok);
     if (!ok || o.args.size() != 2) {
-        err << Tr::tr("tipscope-cli: journal retention takes a number of days (0 keeps "
-                      "everything), for example: journal retention 90")
+        err << CliJournalTr::tr("tipscope-cli: journal retention takes a number of days (0 keeps "
+                                "everything), for example: journal retention 90")
             << Qt::endl;
         return kUsage;
     }
@@ -93,7 +93,8 @@ int setRetention(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const auto stored = opened ? reader.retentionDays() : protocol::failure(opened.error());
     if (!stored || *stored != days) {
         const QString why = !stored ? stored.error() : journal.errorText();
-        err << Tr::tr("tipscope-cli: the retention could not be stored: %1").arg(why) << Qt::endl;
+        err << CliJournalTr::tr("tipscope-cli: the retention could not be stored: %1").arg(why)
+            << Qt::endl;
         return kTransport;
     }
     out << "retention: " << retentionText(days) << Qt::endl;
@@ -108,7 +109,7 @@ int runJournal(const CliOptions &o, QTextStream &out, QTextStream &err) {
         return show(o, out, err);
     if (action == QLatin1String("retention"))
         return setRetention(o, out, err);
-    err << Tr::tr("tipscope-cli: journal takes show or retention DAYS") << Qt::endl;
+    err << CliJournalTr::tr("tipscope-cli: journal takes show or retention DAYS") << Qt::endl;
     return kUsage;
 }
 

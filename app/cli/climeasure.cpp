@@ -17,7 +17,7 @@ using namespace tipscope::model;
 
 namespace {
 
-struct Tr {
+struct CliMeasureTr {
     Q_DECLARE_TR_FUNCTIONS(CliMeasure)
 };
 
@@ -63,8 +63,9 @@ QJsonObject json(const PortEvent &e, const SeriesFormat &temp) {
 
 int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err) {
     if (o.args.size() != 1) {
-        err << Tr::tr("tipscope-cli: measure takes one FILE, a recording (record, or the Charts "
-                      "page's Record or CSV export)")
+        err << CliMeasureTr::tr(
+                   "tipscope-cli: measure takes one FILE, a recording (record, or the Charts "
+                   "page's Record or CSV export)")
             << Qt::endl;
         return kUsage;
     }

@@ -28,7 +28,7 @@ using namespace tipscope::protocol;
 
 namespace {
 
-struct Tr {
+struct CliMonitorTr {
     Q_DECLARE_TR_FUNCTIONS(CliMonitor)
 };
 
@@ -113,14 +113,15 @@ int runMonitor(CliSession &s) {
         s.options().values.value(QStringLiteral("interval"), QStringLiteral("1000")).toInt(&ok);
     if (!ok || intervalMs < 0) {
         s.err()
-            << Tr::tr("tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)")
+            << CliMonitorTr::tr(
+                   "tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)")
             << Qt::endl;
         return kUsage;
     }
     const double durationS =
         s.options().values.value(QStringLiteral("duration"), QStringLiteral("0")).toDouble(&ok);
     if (!ok || !std::isfinite(durationS) || durationS < 0 || durationS > 1e9) {
-        s.err() << Tr::tr("tipscope-cli: --duration takes seconds") << Qt::endl;
+        s.err() << CliMonitorTr::tr("tipscope-cli: --duration takes seconds") << Qt::endl;
         return kUsage;
     }
     const auto limits = limitsOf(s.options());
@@ -132,7 +133,8 @@ int runMonitor(CliSession &s) {
         return rc;
     const DeviceInfo *station = s.firstStation();
     if (!station) {
-        s.err() << Tr::tr("tipscope-cli: monitor needs a station; none was found") << Qt::endl;
+        s.err() << CliMonitorTr::tr("tipscope-cli: monitor needs a station; none was found")
+                << Qt::endl;
         return kUsage;
     }
     const DeviceInfo d = *station;
@@ -156,7 +158,8 @@ int runMonitor(CliSession &s) {
         if (state == Line::State::Retrying && !lost)
             s.err() << "# " << s.line().stateText() << Qt::endl;
         else if (state == Line::State::Open && lost)
-            s.err() << "# " << Tr::tr("reconnected to %1").arg(s.line().transport().description())
+            s.err() << "# "
+                    << CliMonitorTr::tr("reconnected to %1").arg(s.line().transport().description())
                     << Qt::endl;
         if (state == Line::State::Retrying || state == Line::State::Open)
             lost = state == Line::State::Retrying;
@@ -177,7 +180,7 @@ int runMonitor(CliSession &s) {
             PortReading r = readPort(s, d, p, &worst);
             if (!r.ok) {
                 joints.gap(p, r.joint.timeMs);
-                parts.append(Tr::tr("P%1 --").arg(p));
+                parts.append(CliMonitorTr::tr("P%1 --").arg(p));
                 continue;
             }
             r.joint.tool = tools.at(p - 1);

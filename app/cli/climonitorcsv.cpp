@@ -10,7 +10,7 @@
 namespace tipscope::cli {
 
 namespace {
-struct Tr {
+struct MonitorCsvTr {
     Q_DECLARE_TR_FUNCTIONS(CliMonitor)
 };
 } // namespace
@@ -20,7 +20,7 @@ protocol::Outcome<std::shared_ptr<MonitorCsv>> MonitorCsv::create(const QString 
     std::shared_ptr<MonitorCsv> csv(new MonitorCsv(lineColumn));
     csv->m_file.setFileName(path);
     if (!csv->m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
-        return protocol::failure(Tr::tr("tipscope-cli: cannot write %1: %2")
+        return protocol::failure(MonitorCsvTr::tr("tipscope-cli: cannot write %1: %2")
                                      .arg(protocol::elidedPath(path), csv->m_file.errorString()));
     return csv;
 }

@@ -9,7 +9,7 @@
 namespace tipscope::cli {
 
 namespace {
-struct Tr {
+struct MonitorJointsTr {
     Q_DECLARE_TR_FUNCTIONS(CliMonitor)
 };
 constexpr int kFinishMs = 10'000;
@@ -57,7 +57,7 @@ bool MonitorJoints::finish() {
     if (m_journal.flush(kFinishMs))
         return true;
     m_session.err() << "# "
-                    << Tr::tr("%1 records could not be kept in the journal %2: %3")
+                    << MonitorJointsTr::tr("%1 records could not be kept in the journal %2: %3")
                            .arg(m_journal.pendingCount() + m_journal.lostCount())
                            .arg(m_journal.path(), m_journal.errorText())
                     << Qt::endl;

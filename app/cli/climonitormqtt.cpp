@@ -23,7 +23,7 @@ namespace tipscope::cli {
 
 namespace {
 
-struct Tr {
+struct CliMonitorMqttTr {
     Q_DECLARE_TR_FUNCTIONS(CliMonitorMqtt)
 };
 
@@ -53,7 +53,7 @@ protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     QString host;
     quint16 port = 0;
     if (!link::TcpTransport::parseHostPort(o.values.value(QStringLiteral("mqtt")), &host, &port))
-        return protocol::failure(Tr::tr("--mqtt takes the broker as HOST:PORT"));
+        return protocol::failure(CliMonitorMqttTr::tr("--mqtt takes the broker as HOST:PORT"));
     c.broker.host = host;
     c.broker.port = port;
     c.broker.username = o.values.value(QStringLiteral("mqtt-user"));
@@ -65,12 +65,13 @@ protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     }
     c.site = o.values.value(QStringLiteral("site"), QStringLiteral("site"));
     if (c.site.trimmed().isEmpty())
-        return protocol::failure(Tr::tr("--site takes the site's name"));
+        return protocol::failure(CliMonitorMqttTr::tr("--site takes the site's name"));
     bool ok = true;
     c.live.intervalMs =
         o.values.value(QStringLiteral("interval"), QStringLiteral("1000")).toInt(&ok);
     if (!ok || c.live.intervalMs < 100 || c.live.intervalMs > 3600000)
-        return protocol::failure(Tr::tr("--interval takes milliseconds from 100 to 3600000"));
+        return protocol::failure(
+            CliMonitorMqttTr::tr("--interval takes milliseconds from 100 to 3600000"));
     c.journalPath = o.values.value(QStringLiteral("journal"));
     // Not the agent's own id, so a trial beside a running agent does not take its session over.
     c.broker.clientId = QStringLiteral("tipscope-cli-%1-%2")
@@ -95,13 +96,15 @@ QString standing(const plant::PlantAgent &agent) {
     const mqtt::MqttClient *client = p.client();
     using State = mqtt::MqttClient::State;
     const State state = client->state();
-    const QString broker = state == State::Connected ? Tr::tr("Broker connected.")
+    const QString broker = state == State::Connected ? CliMonitorMqttTr::tr("Broker connected.")
                            : state == State::Stopped || state == State::Stopping
-                               ? Tr::tr("Broker disconnected.")
-                           : client->problemText().isEmpty() ? Tr::tr("Connecting to the broker.")
-                                                             : client->problemText();
-    return Tr::tr("%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4",
-                  nullptr, int(p.devices().size()))
+                               ? CliMonitorMqttTr::tr("Broker disconnected.")
+                           : client->problemText().isEmpty()
+                               ? CliMonitorMqttTr::tr("Connecting to the broker.")
+                               : client->problemText();
+    return CliMonitorMqttTr::tr(
+               "%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4",
+               nullptr, int(p.devices().size()))
         .arg(live)
         .arg(p.forwarder()->acknowledgedCount())
         .arg(p.forwarder()->waitingCount())
@@ -117,14 +120,15 @@ int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err) {
         return kUsage;
     }
     if (!config->broker.username.isEmpty() && config->broker.password.isEmpty())
-        err << Tr::tr("tipscope-cli: %1 is not set: connecting as %2 without a password")
+        err << CliMonitorMqttTr::tr(
+                   "tipscope-cli: %1 is not set: connecting as %2 without a password")
                    .arg(QLatin1String(kPasswordVariable), config->broker.username)
             << Qt::endl;
     bool ok = true;
     const double durationS =
         o.values.value(QStringLiteral("duration"), QStringLiteral("0")).toDouble(&ok);
     if (!ok || !std::isfinite(durationS) || durationS < 0 || durationS > 1e9) {
-        err << Tr::tr("tipscope-cli: --duration takes seconds") << Qt::endl;
+        err << CliMonitorMqttTr::tr("tipscope-cli: --duration takes seconds") << Qt::endl;
         return kUsage;
     }
     if (!o.verbose) // every MQTT state change and request is for --verbose

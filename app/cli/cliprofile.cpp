@@ -12,7 +12,7 @@ using namespace tipscope::model;
 
 namespace {
 
-struct Tr {
+struct CliProfileTr {
     Q_DECLARE_TR_FUNCTIONS(CliProfile)
 };
 
@@ -40,7 +40,7 @@ int save(CliSession &s, DeviceModel &device, const QString &path) {
     QStringList missing;
     const Profile p = Profile::capture(device, &missing);
     if (!missing.isEmpty()) {
-        s.err() << Tr::tr("tipscope-cli: could not read %1; no profile written")
+        s.err() << CliProfileTr::tr("tipscope-cli: could not read %1; no profile written")
                        .arg(missing.join(QLatin1Char(' ')))
                 << Qt::endl;
         return s.line().state() == Line::State::Open ? kNoAnswer : kTransport;
@@ -49,7 +49,7 @@ int save(CliSession &s, DeviceModel &device, const QString &path) {
         s.err() << "tipscope-cli: " << saved.error() << Qt::endl;
         return kUsage;
     }
-    s.out() << Tr::tr("saved %1 settings of %2 to %3")
+    s.out() << CliProfileTr::tr("saved %1 settings of %2 to %3")
                    .arg(p.values.size())
                    .arg(device.displayName(), path)
             << Qt::endl;
@@ -63,7 +63,8 @@ int runProfile(CliSession &s) {
     static const QStringList verbs = {QStringLiteral("save"), QStringLiteral("diff"),
                                       QStringLiteral("apply")};
     if (args.size() != 2 || !verbs.contains(args.at(0))) {
-        s.err() << Tr::tr("tipscope-cli: profile takes save FILE, diff FILE or apply FILE")
+        s.err() << CliProfileTr::tr(
+                       "tipscope-cli: profile takes save FILE, diff FILE or apply FILE")
                 << Qt::endl;
         return kUsage;
     }
@@ -102,7 +103,7 @@ int runProfile(CliSession &s) {
     }
     s.out() << r.text() << Qt::endl;
     if (!r.conflicts.isEmpty()) { // a diff: applying this profile would be refused
-        s.err() << Tr::tr("tipscope-cli: applying this profile would be refused: %1")
+        s.err() << CliProfileTr::tr("tipscope-cli: applying this profile would be refused: %1")
                        .arg(r.conflictReason())
                 << Qt::endl;
         return kRefused;

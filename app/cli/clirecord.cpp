@@ -25,7 +25,7 @@ using namespace tipscope::model;
 
 namespace {
 
-struct Tr {
+struct CliRecordTr {
     Q_DECLARE_TR_FUNCTIONS(CliRecord)
 };
 
@@ -63,12 +63,13 @@ int connect(Session &session, QTextStream &err) {
     };
     waitFor(settled, std::numeric_limits<int>::max());
     if (g_stop) {
-        err << Tr::tr("tipscope-cli: interrupted before the recording started") << Qt::endl;
+        err << CliRecordTr::tr("tipscope-cli: interrupted before the recording started")
+            << Qt::endl;
         return kUsage;
     }
     if (session.state() != Session::State::Connected) {
         link::Line *line = session.line();
-        err << Tr::tr("tipscope-cli: cannot open %1: %2")
+        err << CliRecordTr::tr("tipscope-cli: cannot open %1: %2")
                    .arg(line ? line->transport().description() : QString(),
                         line ? line->lastError() : session.stateText())
             << Qt::endl;
@@ -103,7 +104,8 @@ bool everyLimitRead(Session &session) {
 
 int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err) {
     if (o.args.size() != 1) {
-        err << Tr::tr("tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60")
+        err << CliRecordTr::tr(
+                   "tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60")
             << Qt::endl;
         return kUsage;
     }
@@ -111,16 +113,17 @@ int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const double durationS =
         o.values.value(QStringLiteral("duration"), QStringLiteral("0")).toDouble(&ok);
     if (!ok || !std::isfinite(durationS) || durationS < 0 || durationS > 1e9) {
-        err << Tr::tr("tipscope-cli: --duration takes seconds (0: until interrupted)") << Qt::endl;
+        err << CliRecordTr::tr("tipscope-cli: --duration takes seconds (0: until interrupted)")
+            << Qt::endl;
         return kUsage;
     }
     // Said before connecting, which may take long: the file is only created once samples come.
     const QFileInfo file(o.args.first());
     const QFileInfo folder(file.absolutePath());
     if (!folder.isDir() || !folder.isWritable() || (file.exists() && !file.isWritable())) {
-        err << Tr::tr("tipscope-cli: cannot record to %1: %2")
-                   .arg(file.filePath(),
-                        !folder.isDir() ? Tr::tr("no such folder") : Tr::tr("not writable"))
+        err << CliRecordTr::tr("tipscope-cli: cannot record to %1: %2")
+                   .arg(file.filePath(), !folder.isDir() ? CliRecordTr::tr("no such folder")
+                                                         : CliRecordTr::tr("not writable"))
             << Qt::endl;
         return kUsage;
     }
@@ -146,7 +149,8 @@ int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const QString error = recorder.start(path, channels, TemperatureUnit::Celsius,
                                          QCoreApplication::applicationVersion());
     if (!error.isEmpty()) {
-        err << Tr::tr("tipscope-cli: cannot record to %1: %2").arg(path, error) << Qt::endl;
+        err << CliRecordTr::tr("tipscope-cli: cannot record to %1: %2").arg(path, error)
+            << Qt::endl;
         return kUsage;
     }
     QString failure;
@@ -167,7 +171,7 @@ int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err) {
     QStringList names;
     for (const ChartChannel &c : channels)
         names.append(c.id);
-    err << Tr::tr("# recording %1 of %2 to %3")
+    err << CliRecordTr::tr("# recording %1 of %2 to %3")
                .arg(names.join(QStringLiteral(", ")), session.stateText(), path)
         << Qt::endl;
     const int durationMs = durationS > 0 ? int(qMin(durationS * 1000, 2e9)) : -1;
@@ -175,11 +179,13 @@ int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err) {
             durationMs < 0 ? std::numeric_limits<int>::max() : durationMs);
     recorder.stop();
     if (!failure.isEmpty()) {
-        err << Tr::tr("tipscope-cli: writing %1 failed: %2").arg(path, failure) << Qt::endl;
+        err << CliRecordTr::tr("tipscope-cli: writing %1 failed: %2").arg(path, failure)
+            << Qt::endl;
         return kUsage;
     }
     const qint64 rows = recorder.rowsWritten();
-    out << Tr::tr("recorded %n row(s) to %1", nullptr, int(qMin<qint64>(rows, 1'000'000'000)))
+    out << CliRecordTr::tr("recorded %n row(s) to %1", nullptr,
+                           int(qMin<qint64>(rows, 1'000'000'000)))
                .arg(path)
         << Qt::endl;
     return kOk;

@@ -19,7 +19,7 @@ namespace tipscope::cli {
 
 namespace {
 
-struct Tr {
+struct CliWorkspaceTr {
     Q_DECLARE_TR_FUNCTIONS(CliWorkspace)
 };
 
@@ -164,7 +164,8 @@ int runWorkspace(const CliOptions &options, QTextStream &out, QTextStream &err) 
         return kUsage;
     }
     if (file->lines.isEmpty()) {
-        err << Tr::tr("tipscope-cli: the workspace %1 has no lines").arg(options.workspace)
+        err << CliWorkspaceTr::tr("tipscope-cli: the workspace %1 has no lines")
+                   .arg(options.workspace)
             << Qt::endl;
         return kUsage;
     }

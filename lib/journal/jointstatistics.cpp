@@ -7,10 +7,6 @@
 
 namespace tipscope::journal {
 
-namespace {
-constexpr qint64 kDayMs = 24 * 3600 * 1000;
-} // namespace
-
 protocol::Outcome<QJsonObject> jointStatistics(const JournalReader &reader, qint64 sinceMs,
                                                qint64 untilMs) {
     JointFilter range;

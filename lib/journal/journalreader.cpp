@@ -20,7 +20,7 @@ using protocol::Outcome;
 
 namespace {
 
-struct Tr {
+struct JournalReaderTr {
     Q_DECLARE_TR_FUNCTIONS(Journal)
 };
 
@@ -29,7 +29,7 @@ template <typename Row>
 Outcome<void> run(const QString &connection, const Select &select, Row row) {
     QSqlDatabase db = QSqlDatabase::database(connection, false);
     if (!db.isOpen())
-        return failure(Tr::tr("No journal is open."));
+        return failure(JournalReaderTr::tr("No journal is open."));
     QSqlQuery query(db);
     query.setForwardOnly(true);
     if (!query.prepare(select.sql))
@@ -81,7 +81,7 @@ Outcome<void> JournalReader::open(const QString &path) {
     close();
     m_path = path;
     if (!QFileInfo(path).isFile())
-        return failure(Tr::tr("There is no journal at %1.").arg(path));
+        return failure(JournalReaderTr::tr("There is no journal at %1.").arg(path));
     if (const auto opened = openJournalDatabase(path, m_connection, 0); !opened)
         return opened;
     m_open = true;
@@ -210,7 +210,7 @@ Outcome<JournalSummary> JournalReader::summary() const {
 Outcome<int> JournalReader::retentionDays() const {
     QSqlDatabase db = QSqlDatabase::database(m_connection, false);
     if (!db.isOpen())
-        return failure(Tr::tr("No journal is open."));
+        return failure(JournalReaderTr::tr("No journal is open."));
     return readRetentionDays(db);
 }
 

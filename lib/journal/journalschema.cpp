@@ -17,7 +17,7 @@ using protocol::Outcome;
 
 namespace {
 
-struct Tr {
+struct JournalSchemaTr {
     Q_DECLARE_TR_FUNCTIONS(Journal)
 };
 
@@ -79,8 +79,9 @@ Outcome<qint64> ownedVersion(QSqlDatabase &db) {
     if (!version)
         return version;
     if (*version > kJournalSchemaVersion)
-        return failure(Tr::tr("The journal %1 was written by a newer TipScope (schema %2; this one "
-                              "knows up to %3). It was left untouched.")
+        return failure(JournalSchemaTr::tr(
+                           "The journal %1 was written by a newer TipScope (schema %2; this one "
+                           "knows up to %3). It was left untouched.")
                            .arg(path)
                            .arg(*version)
                            .arg(kJournalSchemaVersion));
@@ -93,7 +94,8 @@ Outcome<qint64> ownedVersion(QSqlDatabase &db) {
     const bool foreignId = *applicationId != 0 && *applicationId != kJournalApplicationId;
     if (foreignId || (*version == 0 && *tables > 0))
         return failure(
-            Tr::tr("The file %1 is not a TipScope journal. It was left untouched.").arg(path));
+            JournalSchemaTr::tr("The file %1 is not a TipScope journal. It was left untouched.")
+                .arg(path));
     return version;
 }
 
@@ -170,7 +172,8 @@ Outcome<void> openJournalDatabase(const QString &path, const QString &connection
                                   qint64 maxSizeBytes) {
     const QString folder = QFileInfo(path).absolutePath();
     if (!QDir().mkpath(folder))
-        return failure(Tr::tr("Cannot create the folder %1 for the journal.").arg(folder));
+        return failure(
+            JournalSchemaTr::tr("Cannot create the folder %1 for the journal.").arg(folder));
     Outcome<void> opened;
     {
         QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), connectionName);

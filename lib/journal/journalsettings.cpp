@@ -13,7 +13,7 @@ using protocol::Outcome;
 
 namespace {
 
-struct Tr {
+struct JournalSettingsTr {
     Q_DECLARE_TR_FUNCTIONS(Journal)
 };
 
@@ -52,8 +52,9 @@ Outcome<void> storeRetentionDays(QSqlDatabase &db, int days) {
 
 Outcome<void> checkRetentionDays(int days) {
     if (days < 0 || days > kMaxRetentionDays)
-        return failure(Tr::tr("A retention of %1 days is not possible: give 0 (keep everything) "
-                              "up to %2 days.")
+        return failure(JournalSettingsTr::tr(
+                           "A retention of %1 days is not possible: give 0 (keep everything) "
+                           "up to %2 days.")
                            .arg(days)
                            .arg(kMaxRetentionDays));
     return {};

@@ -17,6 +17,8 @@
 
 namespace tipscope::journal {
 
+inline constexpr qint64 kDayMs = 24 * 3600 * 1000;
+
 template <typename T> struct Stored {
     qint64 id = 0;
     QUuid uid;

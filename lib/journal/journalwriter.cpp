@@ -18,11 +18,9 @@ Q_LOGGING_CATEGORY(lcJournal, "tipscope.journal")
 
 namespace {
 
-struct Tr {
+struct JournalWriterTr {
     Q_DECLARE_TR_FUNCTIONS(Journal)
 };
-
-constexpr qint64 kDayMs = 24 * 3600 * 1000;
 
 // Records a request stands for (a batch of sent marks is not a record).
 qint64 recordCount(const std::deque<Request> &requests) {
@@ -243,7 +241,7 @@ void JournalWriter::reportLosses() {
         report.event.details = {{QStringLiteral("lost"), lost},
                                 {QStringLiteral("reason"), m_shared->lossReason}};
         report.event.text =
-            Tr::tr("Records lost: %1. Reason: %2").arg(lost).arg(m_shared->lossReason);
+            JournalWriterTr::tr("Records lost: %1. Reason: %2").arg(lost).arg(m_shared->lossReason);
     }
     report.uid = QUuid::createUuid();
     report.event.kind = JournalEvent::Kind::Journal;
@@ -332,8 +330,8 @@ void JournalWriter::close() {
             QMutexLocker lock(&m_shared->mutex);
             reason = m_shared->errorText;
         }
-        countLost(left,
-                  Tr::tr("The journal was closed before it could write them: %1").arg(reason));
+        countLost(left, JournalWriterTr::tr("The journal was closed before it could write them: %1")
+                            .arg(reason));
     }
     m_backlog.clear();
     if (m_retryTimer)

@@ -6,7 +6,7 @@ namespace tipscope::journal {
 
 namespace {
 
-struct Tr {
+struct SqlErrorTr {
     Q_DECLARE_TR_FUNCTIONS(Journal)
 };
 
@@ -38,8 +38,9 @@ int primaryCode(const QSqlError &error) {
 QString describeSqlError(const QSqlError &error, const QString &path) {
     switch (primaryCode(error)) {
     case kFull:
-        return Tr::tr("The journal %1 cannot grow: the disk is full or the journal reached its "
-                      "size limit.")
+        return SqlErrorTr::tr(
+                   "The journal %1 cannot grow: the disk is full or the journal reached its "
+                   "size limit.")
             .arg(path);
     case kPerm:
     case kReadOnly:
@@ -48,21 +49,23 @@ QString describeSqlError(const QSqlError &error, const QString &path) {
         return readOnlyJournalText(path);
     case kCorrupt:
     case kNotADatabase:
-        return Tr::tr("The journal %1 is damaged or is not a journal; it was left untouched.")
+        return SqlErrorTr::tr(
+                   "The journal %1 is damaged or is not a journal; it was left untouched.")
             .arg(path);
     case kBusy:
     case kLocked:
-        return Tr::tr("The journal %1 is locked by another program.").arg(path);
+        return SqlErrorTr::tr("The journal %1 is locked by another program.").arg(path);
     case kIoError:
-        return Tr::tr("The disk holding the journal %1 reported an error.").arg(path);
+        return SqlErrorTr::tr("The disk holding the journal %1 reported an error.").arg(path);
     default:
-        return Tr::tr("The journal %1 reported an error: %2").arg(path, error.text());
+        return SqlErrorTr::tr("The journal %1 reported an error: %2").arg(path, error.text());
     }
 }
 
 QString readOnlyJournalText(const QString &path) {
-    return Tr::tr("The journal %1 cannot be written: its folder or the file is read-only or not "
-                  "accessible.")
+    return SqlErrorTr::tr(
+               "The journal %1 cannot be written: its folder or the file is read-only or not "
+               "accessible.")
         .arg(path);
 }
 

@@ -14,7 +14,7 @@
 namespace tipscope::journal {
 
 namespace {
-struct Tr {
+struct WorkContextFileTr {
     Q_DECLARE_TR_FUNCTIONS(WorkContextFile)
 };
 
@@ -37,18 +37,19 @@ Outcome<model::WorkContext> readWorkContext(const QString &path) {
         case Kind::Missing:
             return model::WorkContext{};
         case Kind::Unreadable:
-            return failure(
-                Tr::tr("cannot read the work context %1: %2").arg(path, problem->detail));
+            return failure(WorkContextFileTr::tr("cannot read the work context %1: %2")
+                               .arg(path, problem->detail));
         case Kind::TooBig:
-            return failure(Tr::tr("the work context %1 is too big to be one").arg(path));
-        case Kind::NotAnObject:
             return failure(
-                Tr::tr("the work context %1 is not a JSON object: %2").arg(path, problem->detail));
+                WorkContextFileTr::tr("the work context %1 is too big to be one").arg(path));
+        case Kind::NotAnObject:
+            return failure(WorkContextFileTr::tr("the work context %1 is not a JSON object: %2")
+                               .arg(path, problem->detail));
         }
     }
     const auto context = model::workContextFromJson(std::get<QJsonObject>(read));
     if (!context)
-        return failure(Tr::tr("the work context %1: %2").arg(path, context.error()));
+        return failure(WorkContextFileTr::tr("the work context %1: %2").arg(path, context.error()));
     return context;
 }
 

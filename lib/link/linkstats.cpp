@@ -7,7 +7,7 @@
 namespace tipscope::link {
 
 namespace {
-struct Tr {
+struct LinkStatsTr {
     Q_DECLARE_TR_FUNCTIONS(LinkStats)
 };
 constexpr qint64 kRateWindowMs = 5000;
@@ -57,8 +57,9 @@ qint64 LinkStats::nakTotal() const {
 }
 
 QString LinkStats::summary(qint64 nowMs) const {
-    return Tr::tr("%1 tx/s, latency %2 ms median (%3-%4), %5 sent, %6 answered, %7 timeouts, "
-                  "%8 corrupted, %9 NAKs, %10 stray, %11 retries")
+    return LinkStatsTr::tr(
+               "%1 tx/s, latency %2 ms median (%3-%4), %5 sent, %6 answered, %7 timeouts, "
+               "%8 corrupted, %9 NAKs, %10 stray, %11 retries")
         .arg(transactionsPerSecond(nowMs), 0, 'f', 1)
         .arg(medianLatencyUs() / 1000.0, 0, 'f', 1)
         .arg(minLatencyUs / 1000.0, 0, 'f', 1)

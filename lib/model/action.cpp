@@ -13,7 +13,7 @@ using namespace tipscope::link;
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct ActionTr {
     Q_DECLARE_TR_FUNCTIONS(Action)
 };
 } // namespace
@@ -25,11 +25,11 @@ Action::Action(DeviceModel &device, const ResolvedCommand &command, QObject *par
 
 QString Action::trigger(Confirmation confirmation, qint64 argument) {
     if (m_device.writesBlocked())
-        return Tr::tr("monitor-only mode is on: nothing is written");
+        return ActionTr::tr("monitor-only mode is on: nothing is written");
     if (isDangerous() && confirmation != Confirmation::Confirmed)
-        return Tr::tr("%1 needs an explicit confirmation: %2").arg(name(), danger());
+        return ActionTr::tr("%1 needs an explicit confirmation: %2").arg(name(), danger());
     if (m_running)
-        return Tr::tr("%1 is already running").arg(name());
+        return ActionTr::tr("%1 is already running").arg(name());
     const auto data = encodeWrite(m_command, argument);
     if (!data)
         return data.error();
@@ -40,7 +40,7 @@ QString Action::trigger(Confirmation confirmation, qint64 argument) {
         reply->deleteLater();
         m_running = false;
         if (reply->ok()) {
-            m_device.logWrite(m_command.port, Tr::tr("%1 done").arg(name()));
+            m_device.logWrite(m_command.port, ActionTr::tr("%1 done").arg(name()));
             // A reset's result is worth seeing at once (ECV, CPP, CFP, CTP share their code).
             if (Parameter *same = m_device.parameter(code()))
                 same->refresh();

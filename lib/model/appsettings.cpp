@@ -8,7 +8,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct AppSettingsTr {
     Q_DECLARE_TR_FUNCTIONS(AppSettings)
 };
 
@@ -113,7 +113,7 @@ protocol::Outcome<Session::Settings> AppSettings::sessionSettings() const {
         break;
     case Kind::Serial:
         if (serialPort.trimmed().isEmpty())
-            return protocol::failure(Tr::tr("choose a serial port"));
+            return protocol::failure(AppSettingsTr::tr("choose a serial port"));
         s.line.kind = link::LineSettings::Kind::Serial;
         s.line.serial.portName = serialPort.trimmed();
         break;
@@ -121,7 +121,8 @@ protocol::Outcome<Session::Settings> AppSettings::sessionSettings() const {
         if (!link::TcpTransport::parseHostPort(tcpAddress.trimmed(), &s.line.tcpHost,
                                                &s.line.tcpPort))
             return protocol::failure(
-                Tr::tr("'%1' is not HOST:PORT (for example 192.168.1.20:4001)").arg(tcpAddress));
+                AppSettingsTr::tr("'%1' is not HOST:PORT (for example 192.168.1.20:4001)")
+                    .arg(tcpAddress));
         s.line.kind = link::LineSettings::Kind::Tcp;
         break;
     }

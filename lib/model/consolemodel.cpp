@@ -17,7 +17,7 @@ namespace tipscope::model {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct ConsoleModelTr {
     Q_DECLARE_TR_FUNCTIONS(ConsoleModel)
 };
 
@@ -99,7 +99,7 @@ ConsoleEntry ConsoleModel::fromTap(const link::TapEvent &e) {
         if (auto f = parseFrame(e.bytes))
             c.frame = std::move(f).value();
         else
-            c.remark = Tr::tr("sent as typed (not a valid frame)");
+            c.remark = ConsoleModelTr::tr("sent as typed (not a valid frame)");
         break;
     case link::TapEvent::Kind::Rx:
         c.direction = ConsoleEntry::Direction::Rx;
@@ -115,7 +115,7 @@ ConsoleEntry ConsoleModel::fromTap(const link::TapEvent &e) {
                 c.remark = Catalog::builtin().nakText(
                     parseNumber(e.decoded.frame.data).value_or(-1), Wording::Translated);
             if (e.stray)
-                c.remark = Tr::tr("stray: answers no pending request");
+                c.remark = ConsoleModelTr::tr("stray: answers no pending request");
         } else {
             c.direction = ConsoleEntry::Direction::Error;
             c.bccOk = e.decoded.kind != DecodeEvent::Kind::BccError;
@@ -247,15 +247,15 @@ QString ConsoleModel::timeText(const ConsoleEntry &e) const {
 QString ConsoleModel::directionText(ConsoleEntry::Direction d) {
     switch (d) {
     case ConsoleEntry::Direction::Tx:
-        return Tr::tr("TX");
+        return ConsoleModelTr::tr("TX");
     case ConsoleEntry::Direction::Rx:
-        return Tr::tr("RX chunk");
+        return ConsoleModelTr::tr("RX chunk");
     case ConsoleEntry::Direction::Decoded:
-        return Tr::tr("RX");
+        return ConsoleModelTr::tr("RX");
     case ConsoleEntry::Direction::Error:
-        return Tr::tr("error");
+        return ConsoleModelTr::tr("error");
     case ConsoleEntry::Direction::Note:
-        return Tr::tr("note");
+        return ConsoleModelTr::tr("note");
     }
     return {};
 }
@@ -263,11 +263,11 @@ QString ConsoleModel::directionText(ConsoleEntry::Direction d) {
 QString ConsoleModel::headerText(protocol::Header h) {
     switch (h) {
     case protocol::Header::Read:
-        return Tr::tr("Read");
+        return ConsoleModelTr::tr("Read");
     case protocol::Header::Write:
-        return Tr::tr("Write");
+        return ConsoleModelTr::tr("Write");
     case protocol::Header::Answer:
-        return Tr::tr("Answer");
+        return ConsoleModelTr::tr("Answer");
     case protocol::Header::Nak:
         break;
     }
@@ -312,7 +312,7 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
         if (e.direction == ConsoleEntry::Direction::Rx ||
             e.direction == ConsoleEntry::Direction::Note)
             return QString();
-        return e.bccOk ? Tr::tr("ok") : Tr::tr("bad");
+        return e.bccOk ? ConsoleModelTr::tr("ok") : ConsoleModelTr::tr("bad");
     case Hex:
         return toHexText(e.bytes);
     case Ascii:

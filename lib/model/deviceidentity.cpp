@@ -7,11 +7,11 @@ namespace tipscope::model {
 
 namespace {
 
-struct Tr {
+struct DeviceIdentityTr {
     Q_DECLARE_TR_FUNCTIONS(DeviceIdentity)
 };
 
-constexpr QChar kSeparator = QLatin1Char('|');
+constexpr QChar kKeySeparator = QLatin1Char('|');
 constexpr QChar kEscape = QLatin1Char('\\');
 constexpr int kFields = 4;
 
@@ -19,7 +19,7 @@ QString escaped(const QString &field) {
     QString out;
     out.reserve(field.size());
     for (const QChar c : field) {
-        if (c == kSeparator || c == kEscape)
+        if (c == kKeySeparator || c == kEscape)
             out += kEscape;
         out += c;
     }
@@ -31,7 +31,7 @@ std::optional<QStringList> splitKey(const QString &key) {
     QStringList fields{QString()};
     for (qsizetype i = 0; i < key.size(); ++i) {
         const QChar c = key.at(i);
-        if (c == kSeparator) {
+        if (c == kKeySeparator) {
             fields.append(QString());
         } else if (c != kEscape) {
             fields.last() += c;
@@ -50,7 +50,7 @@ QString DeviceIdentity::key() const {
     const QString addressText =
         address ? QStringLiteral("%1").arg(*address, 2, 10, QLatin1Char('0')) : QString();
     return QStringList{escaped(line), addressText, escaped(model), escaped(softwareVersion)}.join(
-        kSeparator);
+        kKeySeparator);
 }
 
 std::optional<DeviceIdentity> DeviceIdentity::fromKey(const QString &key) {
@@ -70,10 +70,12 @@ std::optional<DeviceIdentity> DeviceIdentity::fromKey(const QString &key) {
 
 QString DeviceIdentity::description() const {
     const QString where =
-        address ? Tr::tr("%1 at %2").arg(model).arg(*address, 2, 10, QLatin1Char('0')) : model;
-    const QString software = softwareVersion.isEmpty() ? Tr::tr("software unknown")
-                                                       : Tr::tr("software %1").arg(softwareVersion);
-    return Tr::tr("%1 on %2, %3").arg(where, line, software);
+        address ? DeviceIdentityTr::tr("%1 at %2").arg(model).arg(*address, 2, 10, QLatin1Char('0'))
+                : model;
+    const QString software = softwareVersion.isEmpty()
+                                 ? DeviceIdentityTr::tr("software unknown")
+                                 : DeviceIdentityTr::tr("software %1").arg(softwareVersion);
+    return DeviceIdentityTr::tr("%1 on %2, %3").arg(where, line, software);
 }
 
 } // namespace tipscope::model

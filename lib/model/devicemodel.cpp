@@ -10,7 +10,7 @@ using namespace tipscope::link;
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct DeviceModelTr {
     Q_DECLARE_TR_FUNCTIONS(DeviceModel)
 };
 } // namespace
@@ -66,12 +66,12 @@ const FamilyInfo &DeviceModel::familyInfo() const {
 }
 
 QString DeviceModel::displayName() const {
-    return m_info.address ? Tr::tr("%1 at %2").arg(m_info.model, m_info.addressText())
-                          : Tr::tr("%1 (no address)").arg(m_info.model);
+    return m_info.address ? DeviceModelTr::tr("%1 at %2").arg(m_info.model, m_info.addressText())
+                          : DeviceModelTr::tr("%1 (no address)").arg(m_info.model);
 }
 
 QString DeviceModel::sourceName(int port) const {
-    return port > 0 ? Tr::tr("%1, port %2").arg(displayName()).arg(port) : displayName();
+    return port > 0 ? DeviceModelTr::tr("%1, port %2").arg(displayName()).arg(port) : displayName();
 }
 
 Parameter *DeviceModel::parameter(const QByteArray &code) const {
@@ -116,7 +116,7 @@ QString DeviceModel::errorAdvice(int port, Wording wording) const {
 
 QString DeviceModel::displayText(Role role, int port) const {
     const Parameter *p = parameter(role, port);
-    return p ? p->displayText() : Tr::tr("—");
+    return p ? p->displayText() : DeviceModelTr::tr("—");
 }
 
 QList<Parameter *> DeviceModel::parameters(Group group) const {
@@ -140,7 +140,7 @@ QString toolName(const Catalog &catalog, const QString &family, int tool, Wordin
     if (tools.contains(tool))
         return catalogText(tools.value(tool), wording);
     return wording == Wording::Catalog ? QStringLiteral("tool %1").arg(tool)
-                                       : Tr::tr("tool %1").arg(tool);
+                                       : DeviceModelTr::tr("tool %1").arg(tool);
 }
 
 QString qualifiedName(const Catalog &catalog, const ResolvedCommand &cmd, Wording wording) {
@@ -151,13 +151,13 @@ QString qualifiedName(const Catalog &catalog, const ResolvedCommand &cmd, Wordin
         cmd.tool >= 0 ? toolName(catalog, cmd.family, cmd.tool, wording) : QString();
     if (port > 0 && !tool.isEmpty())
         return english ? QStringLiteral("%1, %2, port %3").arg(name, tool).arg(port)
-                       : Tr::tr("%1, %2, port %3").arg(name, tool).arg(port);
+                       : DeviceModelTr::tr("%1, %2, port %3").arg(name, tool).arg(port);
     if (port > 0)
         return english ? QStringLiteral("%1, port %2").arg(name).arg(port)
-                       : Tr::tr("%1, port %2").arg(name).arg(port);
+                       : DeviceModelTr::tr("%1, port %2").arg(name).arg(port);
     if (!tool.isEmpty())
         return english ? QStringLiteral("%1, %2").arg(name, tool)
-                       : Tr::tr("%1, %2").arg(name, tool);
+                       : DeviceModelTr::tr("%1, %2").arg(name, tool);
     return name;
 }
 
@@ -200,9 +200,9 @@ void DeviceModel::setLineUp(bool up) {
 
 QString DeviceModel::writesUnavailableReason() const {
     if (m_writesBlocked)
-        return Tr::tr("Monitor-only mode is on: nothing is written.");
+        return DeviceModelTr::tr("Monitor-only mode is on: nothing is written.");
     if (!m_lineUp)
-        return Tr::tr("Not connected: nothing can be sent until the line is back.");
+        return DeviceModelTr::tr("Not connected: nothing can be sent until the line is back.");
     return {};
 }
 
@@ -214,7 +214,7 @@ void DeviceModel::refreshAll(Priority priority) {
 
 void DeviceModel::logCommunication(const QString &what, const QString &reason) {
     logEvent(Event::Kind::Communication, Event::Severity::Warning, 0,
-             m_queue.isOpen() ? Tr::tr("%1: %2").arg(what, reason) : reason);
+             m_queue.isOpen() ? DeviceModelTr::tr("%1: %2").arg(what, reason) : reason);
 }
 
 void DeviceModel::logWrite(int port, const QString &what, const QJsonObject &details) {

@@ -9,7 +9,7 @@ namespace tipscope::model {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct DisplayUnitsTr {
     Q_DECLARE_TR_FUNCTIONS(DisplayUnits)
 };
 } // namespace
@@ -78,11 +78,11 @@ Outcome<qint64> parseDisplayText(const ResolvedCommand &cmd, const QString &text
     if (!ok)
         d = number.trimmed().toDouble(&ok); // a script may use the C locale's decimal point
     if (!ok || !std::isfinite(d))
-        return failure(Tr::tr("'%1' is not a number").arg(s));
+        return failure(DisplayUnitsTr::tr("'%1' is not a number").arg(s));
     const qint64 wire = fromDisplay(cmd, d, t);
     if (std::fabs(toDisplay(cmd, wire, t) - d) > 1e-9 * qMax(1.0, std::fabs(d)))
-        return failure(
-            Tr::tr("%1 has more decimals than %2 can take").arg(s, catalogText(cmd.spec->name)));
+        return failure(DisplayUnitsTr::tr("%1 has more decimals than %2 can take")
+                           .arg(s, catalogText(cmd.spec->name)));
     return wire;
 }
 

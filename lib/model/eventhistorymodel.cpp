@@ -9,7 +9,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct EventHistoryModelTr {
     Q_DECLARE_TR_FUNCTIONS(EventHistoryModel)
 };
 } // namespace
@@ -105,15 +105,15 @@ QVariant EventHistoryModel::headerData(int section, Qt::Orientation orientation,
 QString EventHistoryModel::columnName(int column) {
     switch (column) {
     case Time:
-        return Tr::tr("Time");
+        return EventHistoryModelTr::tr("Time");
     case Severity:
-        return Tr::tr("Severity");
+        return EventHistoryModelTr::tr("Severity");
     case Kind:
-        return Tr::tr("Kind");
+        return EventHistoryModelTr::tr("Kind");
     case Source:
-        return Tr::tr("Source");
+        return EventHistoryModelTr::tr("Source");
     case Text:
-        return Tr::tr("What happened");
+        return EventHistoryModelTr::tr("What happened");
     default:
         return {};
     }

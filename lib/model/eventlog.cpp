@@ -5,7 +5,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct EventTr {
     Q_DECLARE_TR_FUNCTIONS(Event)
 };
 } // namespace
@@ -41,27 +41,27 @@ QString Event::kindName(Kind kind) {
 QString Event::kindTitle(Kind kind) {
     switch (kind) {
     case Kind::StationError:
-        return Tr::tr("Station error");
+        return EventTr::tr("Station error");
     case Kind::PortError:
-        return Tr::tr("Port error");
+        return EventTr::tr("Port error");
     case Kind::FeederError:
-        return Tr::tr("Feeder error");
+        return EventTr::tr("Feeder error");
     case Kind::Alarm:
-        return Tr::tr("Alarm");
+        return EventTr::tr("Alarm");
     case Kind::Status:
-        return Tr::tr("Status");
+        return EventTr::tr("Status");
     case Kind::Write:
-        return Tr::tr("Write");
+        return EventTr::tr("Write");
     case Kind::Communication:
-        return Tr::tr("Communication");
+        return EventTr::tr("Communication");
     case Kind::Connection:
-        return Tr::tr("Connection");
+        return EventTr::tr("Connection");
     case Kind::ToolChange:
-        return Tr::tr("Tool change");
+        return EventTr::tr("Tool change");
     case Kind::Joint:
-        return Tr::tr("Joint");
+        return EventTr::tr("Joint");
     case Kind::ProfileApply:
-        return Tr::tr("Profile apply");
+        return EventTr::tr("Profile apply");
     }
     return {};
 }

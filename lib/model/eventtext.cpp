@@ -5,7 +5,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct EventTextTr {
     Q_DECLARE_TR_FUNCTIONS(EventText)
 };
 } // namespace
@@ -13,7 +13,7 @@ struct Tr {
 QString repeatedEventText(const QString &text, int count, const QString &lastTime) {
     if (count <= 1)
         return text;
-    return Tr::tr("%1 (%n times, until %2)", nullptr, count).arg(text, lastTime);
+    return EventTextTr::tr("%1 (%n times, until %2)", nullptr, count).arg(text, lastTime);
 }
 
 QString asSentence(QString text) {

@@ -9,7 +9,7 @@ namespace tipscope::model {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct FeederModelTr {
     Q_DECLARE_TR_FUNCTIONS(FeederModel)
 };
 
@@ -79,7 +79,7 @@ std::optional<int> FeederModel::errorCode() const {
 
 QString FeederModel::errorText() const {
     const auto e = errorCode();
-    return e ? catalog().feederErrorText(*e, Wording::Translated) : Tr::tr("—");
+    return e ? catalog().feederErrorText(*e, Wording::Translated) : FeederModelTr::tr("—");
 }
 
 Level FeederModel::errorLevel() const {
@@ -97,7 +97,7 @@ QString FeederModel::trigger(Role role, Confirmation c, qint64 arg) {
 
 QString FeederModel::trigger(Action *action, const QString &name, Confirmation c, qint64 arg) {
     if (!action)
-        return Tr::tr("%1 has no command %2").arg(displayName(), name);
+        return FeederModelTr::tr("%1 has no command %2").arg(displayName(), name);
     return action->trigger(c, arg);
 }
 
@@ -112,7 +112,8 @@ void FeederModel::onParameterChanged(Parameter *p) {
     if (v != 0)
         logEvent(Event::Kind::FeederError, Event::Severity::Error, 0, errorText());
     else if (!first)
-        logEvent(Event::Kind::FeederError, Event::Severity::Info, 0, Tr::tr("error cleared"));
+        logEvent(Event::Kind::FeederError, Event::Severity::Info, 0,
+                 FeederModelTr::tr("error cleared"));
 }
 
 } // namespace tipscope::model

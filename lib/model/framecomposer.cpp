@@ -15,11 +15,11 @@ namespace tipscope::model {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct FrameComposerTr {
     Q_DECLARE_TR_FUNCTIONS(FrameComposer)
 };
 
-const QString kSeparator = QStringLiteral(" — ");
+const QString kNameSeparator = QStringLiteral(" — ");
 bool isPrintable(const QString &text) {
     for (QChar c : text)
         if (c.unicode() < 0x20 || c.unicode() > 0x7e)
@@ -37,10 +37,10 @@ QString writeProblem(const ResolvedCommand &cmd, const QString &data) {
     if (spec.kind == ValueKind::Action)
         return data.toLatin1() == spec.fixedData
                    ? QString()
-                   : Tr::tr("%1 carries the data field %2.")
+                   : FrameComposerTr::tr("%1 carries the data field %2.")
                          .arg(QString::fromLatin1(cmd.code), QString::fromLatin1(spec.fixedData));
     if (data.isEmpty())
-        return Tr::tr("A write needs a data field: %1.").arg(allowedText(cmd));
+        return FrameComposerTr::tr("A write needs a data field: %1.").arg(allowedText(cmd));
     const auto value = parseUserValue(cmd, data);
     if (!value)
         return value.error();
@@ -50,7 +50,8 @@ QString writeProblem(const ResolvedCommand &cmd, const QString &data) {
     const bool delay = spec.kind == ValueKind::Delay && !spec.special.contains(int(*value));
     const auto wire = delay ? encodeDelay(int(*value)) : encodeNumber(*value);
     if (wire && *wire != data.toLatin1())
-        return Tr::tr("On the wire this value is written %1.").arg(QString::fromLatin1(*wire));
+        return FrameComposerTr::tr("On the wire this value is written %1.")
+            .arg(QString::fromLatin1(*wire));
     return {};
 }
 
@@ -65,7 +66,8 @@ void addCatalogAdvice(const FrameInput &in, const QString &code, FrameDraft &dra
         draft.warning = true;
     };
     if (in.family.isEmpty())
-        return warn(Tr::tr("Unknown device family: the catalog cannot check this frame."));
+        return warn(
+            FrameComposerTr::tr("Unknown device family: the catalog cannot check this frame."));
     const Catalog &catalog = Catalog::builtin();
     const bool write = in.header == Header::Write;
     const Direction dir = directionOf(in.header);
@@ -73,27 +75,28 @@ void addCatalogAdvice(const FrameInput &in, const QString &code, FrameDraft &dra
     const auto cmd =
         code == code.toUpper() ? catalog.resolve(in.family, code.toLatin1(), dir) : std::nullopt;
     if (!cmd) {
-        QString text = write ? Tr::tr("%1 is not a %2 write command in the catalog.")
-                             : Tr::tr("%1 is not a %2 read command in the catalog.");
+        QString text = write ? FrameComposerTr::tr("%1 is not a %2 write command in the catalog.")
+                             : FrameComposerTr::tr("%1 is not a %2 read command in the catalog.");
         text = text.arg(code, in.family);
         if (code != code.toUpper() && catalog.resolve(in.family, code.toUpper().toLatin1(), dir))
-            text += QLatin1Char(' ') + Tr::tr("Did you mean %1?").arg(code.toUpper());
-        return warn(text + QLatin1Char(' ') + Tr::tr("It is sent as typed."));
+            text += QLatin1Char(' ') + FrameComposerTr::tr("Did you mean %1?").arg(code.toUpper());
+        return warn(text + QLatin1Char(' ') + FrameComposerTr::tr("It is sent as typed."));
     }
     const CommandSpec &spec = *cmd->spec;
     if (!write) {
         if (!in.data.isEmpty())
-            return warn(Tr::tr("Reads carry no data field; the device may refuse this frame."));
+            return warn(FrameComposerTr::tr(
+                "Reads carry no data field; the device may refuse this frame."));
         draft.hint = describe(spec);
         return;
     }
     const QString problem = writeProblem(*cmd, in.data);
     if (spec.dangerous)
-        return warn(Tr::tr("Dangerous: %1")
+        return warn(FrameComposerTr::tr("Dangerous: %1")
                         .arg(catalogText(spec.danger.isEmpty() ? spec.description : spec.danger)) +
                     (problem.isEmpty() ? QString() : QLatin1Char(' ') + problem));
     if (!problem.isEmpty())
-        return warn(Tr::tr("Catalog check: %1").arg(problem));
+        return warn(FrameComposerTr::tr("Catalog check: %1").arg(problem));
     draft.hint = describe(spec);
 }
 
@@ -107,7 +110,7 @@ QByteArray identityRead() {
 FrameTarget FrameTarget::of(const DeviceModel &device) {
     const link::DeviceInfo &info = device.info();
     const QString label = device.address() ? info.addressText() + QLatin1Char(' ') + info.model
-                                           : Tr::tr("%1 (no address)").arg(info.model);
+                                           : FrameComposerTr::tr("%1 (no address)").arg(info.model);
     return {label, device.address(), device.family()};
 }
 
@@ -120,7 +123,7 @@ QList<CommandChoice> FrameComposer::commands(int target, Header header) const {
     for (const ResolvedCommand &c :
          Catalog::builtin().expand(familyOf(target), directionOf(header))) {
         const QString code = QString::fromLatin1(c.code);
-        choices.append({code, code + kSeparator + catalogText(c.spec->name)});
+        choices.append({code, code + kNameSeparator + catalogText(c.spec->name)});
     }
     return choices;
 }
@@ -149,7 +152,8 @@ FrameDraft FrameComposer::compose(int target, Header header, const QString &comm
                                   const QString &data) const {
     if (target < 0 || target >= m_targets.size()) {
         FrameDraft none;
-        none.problem = Tr::tr("No device is known on this line: connect first, or send raw hex.");
+        none.problem =
+            FrameComposerTr::tr("No device is known on this line: connect first, or send raw hex.");
         return none;
     }
     FrameInput in;
@@ -166,17 +170,18 @@ FrameDraft FrameComposer::compose(const FrameInput &in) {
     FrameDraft draft;
     const QString code = in.command.trimmed();
     if (code.size() != 3 || !isPrintable(code)) {
-        draft.problem =
-            Tr::tr("Not sendable: the command must be 3 printable characters, e.g. SMN.");
+        draft.problem = FrameComposerTr::tr(
+            "Not sendable: the command must be 3 printable characters, e.g. SMN.");
         return draft;
     }
     if (!isPrintable(in.data)) {
-        draft.problem = Tr::tr("Not sendable: the data field may only hold printable ASCII.");
+        draft.problem =
+            FrameComposerTr::tr("Not sendable: the data field may only hold printable ASCII.");
         return draft;
     }
     if (in.target &&
         (*in.target < 0 || *in.target > kMaxAddress || in.source < 0 || in.source > kMaxAddress)) {
-        draft.problem = Tr::tr("Not sendable: addresses go from 00 to 99.");
+        draft.problem = FrameComposerTr::tr("Not sendable: addresses go from 00 to 99.");
         return draft;
     }
     Frame frame;
@@ -190,7 +195,7 @@ FrameDraft FrameComposer::compose(const FrameInput &in) {
 }
 
 QString FrameComposer::codeOf(const QString &typed) {
-    return typed.section(kSeparator, 0, 0).trimmed();
+    return typed.section(kNameSeparator, 0, 0).trimmed();
 }
 
 RawHex FrameComposer::readHex(const QString &text) {
@@ -205,9 +210,10 @@ RawHex FrameComposer::readHex(const QString &text) {
     const int n = int(raw.bytes->size());
     if (frame) {
         raw.frame = std::move(frame).value();
-        raw.text = Tr::tr("%n byte(s), a valid frame: %1", "", n).arg(raw.frame->toString());
+        raw.text =
+            FrameComposerTr::tr("%n byte(s), a valid frame: %1", "", n).arg(raw.frame->toString());
     } else {
-        raw.text = Tr::tr("%n byte(s), not a valid frame (%1): sent as typed", "", n)
+        raw.text = FrameComposerTr::tr("%n byte(s), not a valid frame (%1): sent as typed", "", n)
                        .arg(frame.error().why);
         raw.warning = true;
     }

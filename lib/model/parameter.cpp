@@ -12,7 +12,7 @@ using namespace tipscope::link;
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct ParameterTr {
     Q_DECLARE_TR_FUNCTIONS(Parameter)
 };
 constexpr double kRateSmoothing = 0.2;
@@ -68,29 +68,29 @@ void Parameter::setLimitParameters(Parameter *lower, Parameter *upper) {
 
 QString Parameter::allowedText() const {
     if (!m_write)
-        return Tr::tr("read-only");
+        return ParameterTr::tr("read-only");
     const ResolvedCommand &c = *m_write;
     if (c.spec->kind != ValueKind::Number && c.spec->kind != ValueKind::Delay)
         return protocol::allowedText(c);
     const TemperatureUnit t = m_device.temperatureUnit();
-    QString text =
-        Tr::tr("%1 to %2").arg(formatNumber(c, minimum(), t), formatNumber(c, maximum(), t));
+    QString text = ParameterTr::tr("%1 to %2")
+                       .arg(formatNumber(c, minimum(), t), formatNumber(c, maximum(), t));
     if (c.spec->step > 1) {
         const DisplayFormat f = displayFormat(c, t);
-        text += Tr::tr(" in steps of %1 %2")
+        text += ParameterTr::tr(" in steps of %1 %2")
                     .arg(QLocale().toString(c.spec->step * f.scale, 'f', f.decimals), f.unit);
     }
     QStringList specials;
     for (const QString &s : c.spec->special)
         specials.append(catalogText(s));
     if (!specials.isEmpty())
-        text += Tr::tr(", or %1").arg(specials.join(QLatin1String(", ")));
+        text += ParameterTr::tr(", or %1").arg(specials.join(QLatin1String(", ")));
     return text;
 }
 
 QString Parameter::validate(qint64 wire) const {
     if (!m_write)
-        return Tr::tr("%1 cannot be written").arg(label());
+        return ParameterTr::tr("%1 cannot be written").arg(label());
     const ResolvedCommand &c = *m_write;
     const bool special = c.spec->special.contains(int(wire));
     const bool numeric = c.spec->kind == ValueKind::Number || c.spec->kind == ValueKind::Delay;
@@ -99,12 +99,13 @@ QString Parameter::validate(qint64 wire) const {
         return {};
     const QString shown = numeric && !special ? formatNumber(c, wire, m_device.temperatureUnit())
                                               : QString::number(wire);
-    return Tr::tr("%1 is not allowed for %2: allowed is %3").arg(shown, label(), allowedText());
+    return ParameterTr::tr("%1 is not allowed for %2: allowed is %3")
+        .arg(shown, label(), allowedText());
 }
 
 QString Parameter::displayText() const {
     if (!m_value)
-        return Tr::tr("—");
+        return ParameterTr::tr("—");
     return formatValue(spec(), *m_value, m_device.temperatureUnit());
 }
 
@@ -116,7 +117,7 @@ QString Parameter::displayEditText() const {
 
 QString Parameter::setEdit(qint64 wire) {
     if (m_device.writesBlocked())
-        return Tr::tr("monitor-only mode is on: nothing is written");
+        return ParameterTr::tr("monitor-only mode is on: nothing is written");
     const QString why = validate(wire);
     if (!why.isEmpty())
         return why;
@@ -131,10 +132,10 @@ QString Parameter::setEdit(qint64 wire) {
 
 QString Parameter::setEditText(const QString &text) {
     if (!m_write)
-        return Tr::tr("%1 cannot be written").arg(label());
+        return ParameterTr::tr("%1 cannot be written").arg(label());
     const auto wire = parseDisplayText(*m_write, text, m_device.temperatureUnit());
     if (!wire)
-        return Tr::tr("%1: %2; allowed is %3").arg(label(), wire.error(), allowedText());
+        return ParameterTr::tr("%1: %2; allowed is %3").arg(label(), wire.error(), allowedText());
     return setEdit(*wire);
 }
 
@@ -185,7 +186,7 @@ Reply *Parameter::refresh(Priority priority) {
         }
         Q_EMIT readFailed();
         m_device.logCommunication(
-            Tr::tr("reading %1 (%2)").arg(settingName(*this), QString::fromLatin1(code())),
+            ParameterTr::tr("reading %1 (%2)").arg(settingName(*this), QString::fromLatin1(code())),
             reply->errorString());
     });
     return reply;
@@ -197,8 +198,8 @@ void Parameter::deviceReported(const QByteArray &data) {
     const auto v = decodeAnswer(*m_read, data);
     if (!v) {
         m_device.logCommunication(
-            Tr::tr("reading %1").arg(settingName(*this)),
-            Tr::tr("unreadable data field '%1'").arg(QString::fromLatin1(data)));
+            ParameterTr::tr("reading %1").arg(settingName(*this)),
+            ParameterTr::tr("unreadable data field '%1'").arg(QString::fromLatin1(data)));
         return;
     }
     // Milliseconds, not a QDateTime: a local date and time looks up the time zone each time,
@@ -229,7 +230,7 @@ quint64 Parameter::apply() {
     const quint64 id = ++lastWriteId;
     m_runningWrite = id;
     const QString blocked = m_device.writesBlocked()
-                                ? Tr::tr("monitor-only mode is on: nothing is written")
+                                ? ParameterTr::tr("monitor-only mode is on: nothing is written")
                                 : validate(*m_edit);
     const auto data = blocked.isEmpty() ? encodeWrite(*m_write, *m_edit)
                                         : Outcome<QByteArray>(protocol::failure(blocked));
@@ -251,10 +252,11 @@ quint64 Parameter::apply() {
             const ReplyError e = reply->error();
             const bool byLine = e == ReplyError::NotOpen || e == ReplyError::Disconnected;
             if (e == ReplyError::Nak || e == ReplyError::NotOpen || e == ReplyError::Cancelled) {
-                fail(Tr::tr("not written: %1").arg(reply->errorString()), id, byLine);
+                fail(ParameterTr::tr("not written: %1").arg(reply->errorString()), id, byLine);
                 return;
             }
-            fail(Tr::tr("perhaps not written, the answer was lost: %1").arg(reply->errorString()),
+            fail(ParameterTr::tr("perhaps not written, the answer was lost: %1")
+                     .arg(reply->errorString()),
                  id, byLine);
             refresh();
             return;
@@ -276,8 +278,8 @@ void Parameter::readBack(const QByteArray &written, quint64 id, bool again) {
         reply->deleteLater();
         if (!reply->ok()) {
             const ReplyError e = reply->error();
-            fail(Tr::tr("written, but the read-back failed: %1").arg(reply->errorString()), id,
-                 e == ReplyError::NotOpen || e == ReplyError::Disconnected);
+            fail(ParameterTr::tr("written, but the read-back failed: %1").arg(reply->errorString()),
+                 id, e == ReplyError::NotOpen || e == ReplyError::Disconnected);
             return;
         }
         const auto wrote = decodeAnswer(*m_read, written);
@@ -291,7 +293,7 @@ void Parameter::readBack(const QByteArray &written, quint64 id, bool again) {
         }
         deviceReported(reply->answer().data);
         if (!wrote || !m_value || !confirms(*m_read, *wrote, *m_value)) {
-            fail(Tr::tr("the device reports %1 after %2 was written")
+            fail(ParameterTr::tr("the device reports %1 after %2 was written")
                      .arg(displayText(), formatValue(*m_read, wrote.value_or(Value()),
                                                      m_device.temperatureUnit())),
                  id);
@@ -303,12 +305,12 @@ void Parameter::readBack(const QByteArray &written, quint64 id, bool again) {
         setState(State::InSync);
         Q_EMIT stateChanged(); // isSavedToMemory() changed even if the state did not
         // For audit: what was written and that the read-back proved it.
-        m_device.logWrite(
-            spec().port,
-            Tr::tr("%1 set to %2").arg(settingName(*this, NameParts::ToolOnly), displayText()),
-            {{QStringLiteral("code"), QString::fromLatin1(code())},
-             {QStringLiteral("value"), displayText()},
-             {QStringLiteral("readBack"), QStringLiteral("confirmed")}});
+        m_device.logWrite(spec().port,
+                          ParameterTr::tr("%1 set to %2")
+                              .arg(settingName(*this, NameParts::ToolOnly), displayText()),
+                          {{QStringLiteral("code"), QString::fromLatin1(code())},
+                           {QStringLiteral("value"), displayText()},
+                           {QStringLiteral("readBack"), QStringLiteral("confirmed")}});
         succeed(id);
     });
 }
@@ -322,7 +324,7 @@ void Parameter::fail(const QString &reason, quint64 id, bool byLine) {
     m_runningWrite = 0;
     setState(State::Failed, reason);
     m_failedByLine = byLine;
-    m_device.logCommunication(Tr::tr("writing %1").arg(settingName(*this)), reason);
+    m_device.logCommunication(ParameterTr::tr("writing %1").arg(settingName(*this)), reason);
     Q_EMIT writeFinished(false, reason, id);
 }
 

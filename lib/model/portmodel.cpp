@@ -9,7 +9,7 @@ namespace tipscope::model {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct PortModelTr {
     Q_DECLARE_TR_FUNCTIONS(PortModel)
 };
 } // namespace
@@ -26,13 +26,13 @@ PortStatus PortStatus::fromNumber(qint64 v) {
 QString PortStatus::modeName(Mode mode) {
     switch (mode) {
     case Mode::Working:
-        return Tr::tr("Working");
+        return PortModelTr::tr("Working");
     case Mode::Stand:
-        return Tr::tr("Stand");
+        return PortModelTr::tr("Stand");
     case Mode::Sleep:
-        return Tr::tr("Sleep");
+        return PortModelTr::tr("Sleep");
     case Mode::Hibernation:
-        return Tr::tr("Hibernation");
+        return PortModelTr::tr("Hibernation");
     }
     return {};
 }
@@ -40,13 +40,13 @@ QString PortStatus::modeName(Mode mode) {
 QString PortStatus::text() const {
     QStringList parts{modeName(mode)};
     if (cooling)
-        parts.append(Tr::tr("Cooling"));
+        parts.append(PortModelTr::tr("Cooling"));
     if (suction)
-        parts.append(Tr::tr("Suction"));
+        parts.append(PortModelTr::tr("Suction"));
     if (motor == 1)
-        parts.append(Tr::tr("Motor forward"));
+        parts.append(PortModelTr::tr("Motor forward"));
     else if (motor == 2)
-        parts.append(Tr::tr("Motor backward"));
+        parts.append(PortModelTr::tr("Motor backward"));
     return parts.join(QLatin1String(", "));
 }
 
@@ -57,10 +57,10 @@ TemperatureAlarm TemperatureAlarm::fromNumber(qint64 v) {
 QString TemperatureAlarm::text() const {
     QStringList parts;
     if (high)
-        parts.append(Tr::tr("High temperature"));
+        parts.append(PortModelTr::tr("High temperature"));
     if (low)
-        parts.append(Tr::tr("Low temperature"));
-    return parts.isEmpty() ? Tr::tr("None") : parts.join(QLatin1String(", "));
+        parts.append(PortModelTr::tr("Low temperature"));
+    return parts.isEmpty() ? PortModelTr::tr("None") : parts.join(QLatin1String(", "));
 }
 
 PortModel::PortModel(StationModel &station, int port, QObject *parent)
@@ -102,7 +102,7 @@ std::optional<int> PortModel::tool() const {
 
 QString PortModel::toolName() const {
     const auto t = tool();
-    return t ? toolName(*t) : Tr::tr("—");
+    return t ? toolName(*t) : PortModelTr::tr("—");
 }
 
 QString PortModel::toolName(int tool) const {
@@ -117,7 +117,7 @@ std::optional<int> PortModel::error() const {
 QString PortModel::errorText() const {
     const auto e = error();
     return e ? m_station.catalog().portErrorText(m_station.family(), *e, Wording::Translated)
-             : Tr::tr("—");
+             : PortModelTr::tr("—");
 }
 
 Level PortModel::errorLevel() const {
@@ -178,7 +178,7 @@ QList<Parameter *> PortModel::statusParameters() const {
 QString PortModel::write(Role role, qint64 value) {
     Parameter *p = parameter(role);
     if (!p)
-        return Tr::tr("this port has no %1 command").arg(m_station.commandName(role));
+        return PortModelTr::tr("this port has no %1 command").arg(m_station.commandName(role));
     const QString why = p->setEdit(value);
     if (why.isEmpty())
         p->apply();

@@ -7,7 +7,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct ProblemLevelTr {
     Q_DECLARE_TR_FUNCTIONS(ProblemLevel)
 };
 } // namespace
@@ -41,15 +41,15 @@ Level levelOf(const protocol::Catalog &catalog, const QString &tableName, std::o
 QString levelName(Level level) {
     switch (level) {
     case Level::Unknown:
-        return Tr::tr("Not read yet");
+        return ProblemLevelTr::tr("Not read yet");
     case Level::Ok:
-        return Tr::tr("OK");
+        return ProblemLevelTr::tr("OK");
     case Level::Info:
-        return Tr::tr("Info");
+        return ProblemLevelTr::tr("Info");
     case Level::Warning:
-        return Tr::tr("Warning");
+        return ProblemLevelTr::tr("Warning");
     case Level::Error:
-        return Tr::tr("Error");
+        return ProblemLevelTr::tr("Error");
     }
     return {};
 }

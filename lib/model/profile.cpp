@@ -16,7 +16,7 @@ namespace tipscope::model {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct ProfileTr {
     Q_DECLARE_TR_FUNCTIONS(Profile)
 };
 const QLatin1String kFormat("tipscope-profile");
@@ -110,17 +110,17 @@ QStringList Profile::problemsFor(const QString &fam) const {
         const auto w = cat.resolve(fam, code, Direction::Write);
         const auto r = cat.resolve(fam, code, Direction::Read);
         if (!w || !r || w->spec->kind == ValueKind::Flags || w->spec->kind == ValueKind::Action) {
-            problems.append(Tr::tr("%1: not a setting of a %2").arg(c, fam));
+            problems.append(ProfileTr::tr("%1: not a setting of a %2").arg(c, fam));
             continue;
         }
         const auto v = decodeAnswer(*r, data);
         if (!v || v->isText) {
-            problems.append(Tr::tr("%1: '%2' is not a valid data field")
+            problems.append(ProfileTr::tr("%1: '%2' is not a valid data field")
                                 .arg(c, elided(QString::fromLatin1(data))));
             continue;
         }
         if (const QString why = validate(*w, v->number); !why.isEmpty())
-            problems.append(Tr::tr("%1: %2").arg(c, why));
+            problems.append(ProfileTr::tr("%1: %2").arg(c, why));
     }
     return problems;
 }
@@ -129,34 +129,35 @@ Outcome<Profile> Profile::fromJson(const QByteArray &json) {
     const auto fail = [](const QString &why) { return failure(why); };
     // Qt takes a NUL inside a string, and keeps the last of two equal keys: both are refused.
     if (const QString why = profilejson::controlCharacterProblem(json); !why.isEmpty())
-        return fail(Tr::tr("not a valid JSON file: %1").arg(why));
+        return fail(ProfileTr::tr("not a valid JSON file: %1").arg(why));
     QJsonParseError pe;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
     if (pe.error != QJsonParseError::NoError)
-        return fail(
-            Tr::tr("not a valid JSON file: %1 at byte %2").arg(pe.errorString()).arg(pe.offset));
+        return fail(ProfileTr::tr("not a valid JSON file: %1 at byte %2")
+                        .arg(pe.errorString())
+                        .arg(pe.offset));
     if (const QStringList twice = profilejson::duplicateKeys(json); !twice.isEmpty()) {
         QStringList shown;
         for (const QString &key : twice)
             shown.append(elided(key));
-        return fail(Tr::tr("given more than once, so which value is meant is unclear: %1; "
-                           "nothing will be written")
+        return fail(ProfileTr::tr("given more than once, so which value is meant is unclear: %1; "
+                                  "nothing will be written")
                         .arg(shown.join(QLatin1String(", "))));
     }
     const QJsonObject root = doc.object();
     if (!doc.isObject() || root.value(QStringLiteral("format")).toString() != kFormat)
-        return fail(Tr::tr("not a TipScope profile (no \"format\": \"tipscope-profile\")"));
+        return fail(ProfileTr::tr("not a TipScope profile (no \"format\": \"tipscope-profile\")"));
     const int schema = root.value(QStringLiteral("schema")).toInt(-1);
     if (schema < kOldestProfileSchema || schema > kProfileSchema)
-        return fail(
-            Tr::tr("profile schema %1 is not supported (this version reads schemas %2 to %3)")
-                .arg(schema)
-                .arg(kOldestProfileSchema)
-                .arg(kProfileSchema));
+        return fail(ProfileTr::tr(
+                        "profile schema %1 is not supported (this version reads schemas %2 to %3)")
+                        .arg(schema)
+                        .arg(kOldestProfileSchema)
+                        .arg(kProfileSchema));
     Profile p;
     p.family = root.value(QStringLiteral("family")).toString().toUpper();
     if (!Catalog::builtin().family(p.family))
-        return fail(Tr::tr("unknown device family '%1'").arg(elided(p.family)));
+        return fail(ProfileTr::tr("unknown device family '%1'").arg(elided(p.family)));
     p.model = root.value(QStringLiteral("model")).toString();
     p.softwareVersion = root.value(QStringLiteral("softwareVersion")).toString();
     p.created =
@@ -164,19 +165,21 @@ Outcome<Profile> Profile::fromJson(const QByteArray &json) {
     p.comment = root.value(QStringLiteral("comment")).toString();
     const QJsonValue values = root.value(QStringLiteral("values"));
     if (!values.isObject() || values.toObject().isEmpty())
-        return fail(Tr::tr("the profile has no values"));
+        return fail(ProfileTr::tr("the profile has no values"));
     const QJsonObject v = values.toObject();
     for (auto it = v.begin(); it != v.end(); ++it) {
         ProfileNote note;
         const auto raw = rawOf(it.value(), schema, &note);
         if (!raw && schema < 2)
-            return fail(Tr::tr("%1: the value must be a data field in quotes, e.g. \"00350\"")
-                            .arg(elided(it.key())));
+            return fail(
+                ProfileTr::tr("%1: the value must be a data field in quotes, e.g. \"00350\"")
+                    .arg(elided(it.key())));
         if (!raw)
-            return fail(Tr::tr("%1: the value must be a data field in quotes, e.g. \"00350\", "
-                               "or an object with one in \"raw\" (and text in \"name\" and "
-                               "\"value\")")
-                            .arg(elided(it.key())));
+            return fail(
+                ProfileTr::tr("%1: the value must be a data field in quotes, e.g. \"00350\", "
+                              "or an object with one in \"raw\" (and text in \"name\" and "
+                              "\"value\")")
+                    .arg(elided(it.key())));
         const QByteArray code = it.key().toUpper().toLatin1();
         p.values.append({code, *raw});
         if (!note.name.isEmpty() || !note.value.isEmpty())
@@ -184,7 +187,7 @@ Outcome<Profile> Profile::fromJson(const QByteArray &json) {
     }
     const QStringList problems = p.problemsFor(p.family);
     if (!problems.isEmpty())
-        return fail(Tr::tr("the profile is refused, nothing will be written:\n%1")
+        return fail(ProfileTr::tr("the profile is refused, nothing will be written:\n%1")
                         .arg(problems.join(QLatin1Char('\n'))));
     return p;
 }
@@ -196,17 +199,17 @@ Outcome<void> Profile::save(const QString &path) const {
 Outcome<Profile> Profile::load(const QString &path) {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
-        return failure(Tr::tr("cannot read %1: %2").arg(elidedPath(path), f.errorString()));
+        return failure(ProfileTr::tr("cannot read %1: %2").arg(elidedPath(path), f.errorString()));
     // Read at most one byte more than allowed: size() is 0 for a FIFO or standard input.
     const QByteArray bytes = f.read(kMaxProfileBytes + 1);
     if (bytes.size() > kMaxProfileBytes)
-        return failure(Tr::tr("%1 is %2 bytes; a profile is at most %3")
+        return failure(ProfileTr::tr("%1 is %2 bytes; a profile is at most %3")
                            .arg(elidedPath(path))
                            .arg(qMax<qint64>(f.size(), bytes.size()))
                            .arg(kMaxProfileBytes));
     auto p = fromJson(bytes);
     if (!p.ok())
-        return failure(Tr::tr("%1: %2").arg(elidedPath(path), p.error()));
+        return failure(ProfileTr::tr("%1: %2").arg(elidedPath(path), p.error()));
     return p;
 }
 
@@ -222,7 +225,7 @@ QList<ProfileDifference> diffProfile(const Profile &profile, const DeviceModel &
             continue;
         const TemperatureUnit t = device.temperatureUnit();
         out.append({code, device.qualifiedLabel(*p),
-                    have ? formatValue(p->spec(), *have, t) : Tr::tr("unknown"),
+                    have ? formatValue(p->spec(), *have, t) : ProfileTr::tr("unknown"),
                     want ? formatValue(p->spec(), *want, t) : QString::fromLatin1(data),
                     p->rawValue(), data});
     }

@@ -17,7 +17,7 @@ using namespace tipscope::link;
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct ProfileApplierTr {
     Q_DECLARE_TR_FUNCTIONS(ProfileApplier)
 };
 } // namespace
@@ -30,36 +30,38 @@ int ApplyReport::failedCount() const {
 QString ApplyReport::text() const {
     QStringList lines;
     if (refused)
-        lines.append(Tr::tr("refused, nothing was written: %1").arg(reason));
+        lines.append(ProfileApplierTr::tr("refused, nothing was written: %1").arg(reason));
     for (const ProfileDifference &d : differences)
         if (!refused && (diffOnly || dryRun))
             lines.append(
-                Tr::tr("%1 %2: %3 → %4")
+                ProfileApplierTr::tr("%1 %2: %3 → %4")
                     .arg(QString::fromLatin1(d.code), d.name, d.deviceText, d.profileText));
     for (const ApplyItem &i : written)
-        lines.append(
-            i.ok ? Tr::tr("changed %1 %2: %3 → %4")
-                       .arg(QString::fromLatin1(i.code), i.name, i.before, i.after)
-                 : Tr::tr("FAILED %1 %2: %3").arg(QString::fromLatin1(i.code), i.name, i.reason));
+        lines.append(i.ok ? ProfileApplierTr::tr("changed %1 %2: %3 → %4")
+                                .arg(QString::fromLatin1(i.code), i.name, i.before, i.after)
+                          : ProfileApplierTr::tr("FAILED %1 %2: %3")
+                                .arg(QString::fromLatin1(i.code), i.name, i.reason));
     for (const QString &f : frames)
-        lines.append(Tr::tr("would send %1").arg(f));
+        lines.append(ProfileApplierTr::tr("would send %1").arg(f));
     for (const SkippedSetting &s : skipped)
-        lines.append(
-            Tr::tr("skipped %1 %2: %3").arg(QString::fromLatin1(s.code), s.name, s.reason));
+        lines.append(ProfileApplierTr::tr("skipped %1 %2: %3")
+                         .arg(QString::fromLatin1(s.code), s.name, s.reason));
     if (cancelled)
-        lines.append(Tr::tr("cancelled: the remaining values were not written"));
-    const QString skips =
-        skipped.isEmpty() ? QString() : Tr::tr("%n skipped", nullptr, int(skipped.size()));
+        lines.append(ProfileApplierTr::tr("cancelled: the remaining values were not written"));
+    const QString skips = skipped.isEmpty()
+                              ? QString()
+                              : ProfileApplierTr::tr("%n skipped", nullptr, int(skipped.size()));
     if (refused) {
         if (!skips.isEmpty())
             lines.append(skips);
         return lines.join(QLatin1Char('\n'));
     }
-    QString total = diffOnly ? Tr::tr("%n difference(s)", nullptr, int(differences.size()))
-                             : Tr::tr("%1 changed, %2 already right, %3 failed")
-                                   .arg(written.size() - failedCount())
-                                   .arg(unchanged)
-                                   .arg(failedCount());
+    QString total = diffOnly
+                        ? ProfileApplierTr::tr("%n difference(s)", nullptr, int(differences.size()))
+                        : ProfileApplierTr::tr("%1 changed, %2 already right, %3 failed")
+                              .arg(written.size() - failedCount())
+                              .arg(unchanged)
+                              .arg(failedCount());
     if (!skips.isEmpty())
         total += QStringLiteral(", ") + skips;
     lines.append(total);
@@ -76,8 +78,9 @@ QStringList ApplyReport::skippedCodes() const {
 QString ApplyReport::conflictReason() const {
     if (conflicts.isEmpty())
         return {};
-    return Tr::tr("the profile would break the limits that bound its settings (MIT ≤ MAT, "
-                  "MIT ≤ selected temperature ≤ MAT):\n%1")
+    return ProfileApplierTr::tr(
+               "the profile would break the limits that bound its settings (MIT ≤ MAT, "
+               "MIT ≤ selected temperature ≤ MAT):\n%1")
         .arg(conflicts.join(QLatin1Char('\n')));
 }
 
@@ -96,17 +99,19 @@ void ProfileApplier::start() {
     if (m_profile.family != m_device.family()) {
         keepSharedSettings();
         if (m_profile.values.isEmpty()) {
-            refuse(Tr::tr("none of the profile's settings exists on this %1 (skipped: %2)")
+            refuse(ProfileApplierTr::tr(
+                       "none of the profile's settings exists on this %1 (skipped: %2)")
                        .arg(m_device.family(), m_report.skippedCodes().join(QLatin1Char(' '))));
             return;
         }
         if (!m_force)
-            m_refuseAfterCompare = Tr::tr("the profile is for a %1, this device is a %2 (force "
-                                          "to apply the settings they share)")
-                                       .arg(m_profile.family, m_device.family());
+            m_refuseAfterCompare =
+                ProfileApplierTr::tr("the profile is for a %1, this device is a %2 (force "
+                                     "to apply the settings they share)")
+                    .arg(m_profile.family, m_device.family());
     }
     if (m_mode == Mode::Apply && m_device.writesBlocked()) {
-        refuse(Tr::tr("monitor-only mode is on"));
+        refuse(ProfileApplierTr::tr("monitor-only mode is on"));
         return;
     }
     readAll();
@@ -121,7 +126,8 @@ void ProfileApplier::keepSharedSettings() {
             p && Profile::isProfileParameter(*p)
                 ? Profile{m_device.family(), {}, {}, {}, {}, {entry}, {}}.problemsFor(
                       m_device.family())
-                : QStringList{Tr::tr("this %1 has no such setting").arg(m_device.family())};
+                : QStringList{
+                      ProfileApplierTr::tr("this %1 has no such setting").arg(m_device.family())};
         if (problems.isEmpty()) {
             kept.values.append(entry);
             continue;
@@ -165,7 +171,8 @@ void ProfileApplier::readAll() {
         connect(r, &Reply::finished, this, [this, total, r, code] {
             if (!r->ok())
                 m_unread.insert(code);
-            Q_EMIT progress(total - m_pendingReads + 1, total, Tr::tr("reading the device"));
+            Q_EMIT progress(total - m_pendingReads + 1, total,
+                            ProfileApplierTr::tr("reading the device"));
             if (--m_pendingReads == 0)
                 compare();
         });
@@ -227,9 +234,10 @@ void ProfileApplier::writeNext() {
     const QByteArray data = profileValue(code);
     const QString name = m_device.qualifiedLabel(*p);
     ApplyItem item{code, name, p->displayText(), {}, false, {}};
-    Q_EMIT progress(m_next, int(m_toWrite.size()), Tr::tr("writing %1").arg(name));
+    Q_EMIT progress(m_next, int(m_toWrite.size()), ProfileApplierTr::tr("writing %1").arg(name));
     const auto value = decodeAnswer(p->spec(), data);
-    const QString why = value ? p->setEdit(value->number) : Tr::tr("unreadable value");
+    const QString why =
+        value ? p->setEdit(value->number) : ProfileApplierTr::tr("unreadable value");
     if (!why.isEmpty()) {
         item.reason = why;
         m_report.written.append(item);
@@ -287,12 +295,13 @@ void ProfileApplier::logApply() {
                               {QStringLiteral("changes"), changes},
                               {QStringLiteral("unchanged"), m_report.unchanged},
                               {QStringLiteral("cancelled"), m_report.cancelled}};
-    const QString text = Tr::tr("profile %1 applied: %2 changed, %3 failed, %4 already right%5")
-                             .arg(QString::fromLatin1(hash.left(12)))
-                             .arg(m_report.written.size() - failed)
-                             .arg(failed)
-                             .arg(m_report.unchanged)
-                             .arg(m_report.cancelled ? Tr::tr(" (cancelled)") : QString());
+    const QString text =
+        ProfileApplierTr::tr("profile %1 applied: %2 changed, %3 failed, %4 already right%5")
+            .arg(QString::fromLatin1(hash.left(12)))
+            .arg(m_report.written.size() - failed)
+            .arg(failed)
+            .arg(m_report.unchanged)
+            .arg(m_report.cancelled ? ProfileApplierTr::tr(" (cancelled)") : QString());
     m_device.logEvent(Event::Kind::ProfileApply,
                       m_report.ok() ? Event::Severity::Info : Event::Severity::Warning, 0, text,
                       details);

@@ -10,7 +10,7 @@ namespace tipscope::model::profilejson {
 
 namespace {
 
-struct Tr {
+struct ProfileJsonTr {
     Q_DECLARE_TR_FUNCTIONS(Profile)
 };
 
@@ -98,8 +98,8 @@ QString controlCharacterProblem(const QByteArray &json) {
         if (b >= 0x20 || b == '\t' || b == '\n' || b == '\r')
             continue;
         if (b == 0)
-            return Tr::tr("a NUL byte at byte %1").arg(i + 1);
-        return Tr::tr("control character 0x%1 at byte %2")
+            return ProfileJsonTr::tr("a NUL byte at byte %1").arg(i + 1);
+        return ProfileJsonTr::tr("control character 0x%1 at byte %2")
             .arg(b, 2, 16, QLatin1Char('0'))
             .arg(i + 1);
     }

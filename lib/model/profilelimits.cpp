@@ -10,7 +10,7 @@ using namespace tipscope::protocol;
 
 namespace {
 
-struct Tr {
+struct ProfileLimitsTr {
     Q_DECLARE_TR_FUNCTIONS(ProfileLimits)
 };
 
@@ -61,8 +61,9 @@ EndValue endValue(const Profile &profile, const Parameter &p, const QSet<QByteAr
 }
 
 QString describe(const Parameter &p, const EndValue &v, TemperatureUnit unit) {
-    const QString where = v.fromProfile ? Tr::tr("in the profile") : Tr::tr("on the device now");
-    return Tr::tr("%1 %2 (%3)")
+    const QString where = v.fromProfile ? ProfileLimitsTr::tr("in the profile")
+                                        : ProfileLimitsTr::tr("on the device now");
+    return ProfileLimitsTr::tr("%1 %2 (%3)")
         .arg(QString::fromLatin1(p.code()), formatNumber(p.spec(), *v.number, unit), where);
 }
 
@@ -80,14 +81,15 @@ QString check(const Bound &b, const Profile &profile, const DeviceModel &device,
     if (!l.number || !h.number) {
         const Parameter &unknown = l.number ? hi : lo;
         const Parameter &other = l.number ? lo : hi;
-        return Tr::tr("%1 is not known (the device did not answer), so %2 cannot be checked "
-                      "against it")
+        return ProfileLimitsTr::tr(
+                   "%1 is not known (the device did not answer), so %2 cannot be checked "
+                   "against it")
             .arg(QString::fromLatin1(unknown.code()), QString::fromLatin1(other.code()));
     }
     if (isSpecial(lo, *l.number) || isSpecial(hi, *h.number) || *l.number <= *h.number)
         return {};
     const TemperatureUnit unit = device.temperatureUnit();
-    return Tr::tr("%1 is above %2").arg(describe(lo, l, unit), describe(hi, h, unit));
+    return ProfileLimitsTr::tr("%1 is above %2").arg(describe(lo, l, unit), describe(hi, h, unit));
 }
 
 bool touches(const Bound &b, const Profile &profile) {

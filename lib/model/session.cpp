@@ -10,7 +10,7 @@ namespace tipscope::model {
 using namespace tipscope::link;
 
 namespace {
-struct Tr {
+struct SessionTr {
     Q_DECLARE_TR_FUNCTIONS(Session)
 };
 
@@ -19,16 +19,17 @@ struct Tr {
 QString unidentifiedText(const IdentifyFailure &why, std::optional<int> address) {
     switch (why.kind) {
     case IdentifyFailure::Kind::NoModelNameCommand:
-        return Tr::tr("the catalog names no command that identifies a device");
+        return SessionTr::tr("the catalog names no command that identifies a device");
     case IdentifyFailure::Kind::UnknownModel:
-        return Tr::tr("the device reports the model '%1', which TipScope does not know")
+        return SessionTr::tr("the device reports the model '%1', which TipScope does not know")
             .arg(why.model);
     case IdentifyFailure::Kind::Unanswered:
         break;
     }
     if (!address)
-        return Tr::tr("the device without addresses did not identify itself: %1").arg(why.reason);
-    return Tr::tr("the device at address %1 did not identify itself: %2")
+        return SessionTr::tr("the device without addresses did not identify itself: %1")
+            .arg(why.reason);
+    return SessionTr::tr("the device at address %1 did not identify itself: %2")
         .arg(address.value(), 2, 10, QLatin1Char('0'))
         .arg(why.reason);
 }
@@ -45,7 +46,7 @@ Session::Session(const protocol::Catalog &catalog, QObject *parent)
     m_log.setClock([this] { return sampleTimeMs(); });
     connect(&m_joints, &JointWatcher::jointEnded, this, &Session::warnOfJoint);
     connect(&m_joints, &JointWatcher::tipWearing, this, &Session::noticeWear);
-    m_stateText = Tr::tr("disconnected");
+    m_stateText = SessionTr::tr("disconnected");
 }
 
 Session::~Session() {
@@ -131,11 +132,11 @@ void Session::disconnectFromLine() {
         m_line->disconnect(this);
         m_line->close();
         m_line.reset();
-        m_log.add(Event::Kind::Connection, Event::Severity::Info, Tr::tr("line"),
-                  Tr::tr("disconnected"));
+        m_log.add(Event::Kind::Connection, Event::Severity::Info, SessionTr::tr("line"),
+                  SessionTr::tr("disconnected"));
     }
     m_demo.reset();
-    setState(State::Disconnected, Tr::tr("disconnected"));
+    setState(State::Disconnected, SessionTr::tr("disconnected"));
 }
 
 void Session::onLineState(Line::State s, const QString &) {
@@ -144,7 +145,7 @@ void Session::onLineState(Line::State s, const QString &) {
         d->setLineUp(s == Line::State::Open);
     switch (s) {
     case Line::State::Open:
-        m_log.add(Event::Kind::Connection, Event::Severity::Info, Tr::tr("line"), text);
+        m_log.add(Event::Kind::Connection, Event::Severity::Info, SessionTr::tr("line"), text);
         if (m_devices.isEmpty())
             detect();
         else
@@ -152,7 +153,7 @@ void Session::onLineState(Line::State s, const QString &) {
         break;
     case Line::State::Retrying:
         m_recorder.markGaps(TelemetryGap::Cause::LineDown);
-        m_log.add(Event::Kind::Connection, Event::Severity::Error, Tr::tr("line"), text);
+        m_log.add(Event::Kind::Connection, Event::Severity::Error, SessionTr::tr("line"), text);
         setState(State::Retrying, text);
         break;
     case Line::State::Failed:
@@ -168,7 +169,7 @@ void Session::onLineState(Line::State s, const QString &) {
 
 void Session::detect() {
     setState(State::Detecting,
-             Tr::tr("looking for devices on %1").arg(m_line->transport().description()));
+             SessionTr::tr("looking for devices on %1").arg(m_line->transport().description()));
     if (m_settings.addressing == Addressing::With) {
         identify(m_settings.targetAddress);
         return;
@@ -219,26 +220,26 @@ void Session::adoptDevices(const QList<DeviceInfo> &found, const QString &uniden
         m_devices.append(d);
         m_scheduler.addDevice(d);
         d->logEvent(Event::Kind::Connection, Event::Severity::Info, 0,
-                    Tr::tr("found %1, software %2")
-                        .arg(info.family, info.softwareVersion.isEmpty() ? Tr::tr("unknown")
+                    SessionTr::tr("found %1, software %2")
+                        .arg(info.family, info.softwareVersion.isEmpty() ? SessionTr::tr("unknown")
                                                                          : info.softwareVersion));
     }
     m_scheduler.start();
     Q_EMIT devicesChanged();
     if (m_devices.isEmpty() && !unidentified.isEmpty())
-        setState(
-            State::Connected,
-            Tr::tr("connected to %1, but %2").arg(m_line->transport().description(), unidentified));
+        setState(State::Connected, SessionTr::tr("connected to %1, but %2")
+                                       .arg(m_line->transport().description(), unidentified));
     else if (m_devices.isEmpty())
-        setState(State::Connected, Tr::tr("connected to %1, but no device answered (robot mode "
-                                          "off? wrong addressing or baud rate?)")
-                                       .arg(m_line->transport().description()));
+        setState(State::Connected,
+                 SessionTr::tr("connected to %1, but no device answered (robot mode "
+                               "off? wrong addressing or baud rate?)")
+                     .arg(m_line->transport().description()));
     else
         setState(State::Connected, connectedText());
 }
 
 QString Session::connectedText() const {
-    return Tr::tr("%1, %n device(s)", nullptr, int(m_devices.size()))
+    return SessionTr::tr("%1, %n device(s)", nullptr, int(m_devices.size()))
         .arg(m_line->transport().description());
 }
 

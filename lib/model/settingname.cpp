@@ -10,7 +10,7 @@ namespace tipscope::model {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct SettingNameTr {
     Q_DECLARE_TR_FUNCTIONS(SettingName)
 };
 
@@ -19,7 +19,7 @@ QString toolName(const ResolvedCommand &command, const Catalog &catalog, Wording
     if (tools.contains(command.tool))
         return catalogText(tools.value(command.tool), wording);
     return wording == Wording::Catalog ? QStringLiteral("tool %1").arg(command.tool)
-                                       : Tr::tr("tool %1").arg(command.tool);
+                                       : SettingNameTr::tr("tool %1").arg(command.tool);
 }
 } // namespace
 
@@ -30,7 +30,7 @@ QString settingName(const ResolvedCommand &command, const Catalog &catalog, Name
         name.append(toolName(command, catalog, wording));
     if (command.port > 0 && parts == NameParts::ToolAndPort)
         name.append(wording == Wording::Catalog ? QStringLiteral("port %1").arg(command.port)
-                                                : Tr::tr("port %1").arg(command.port));
+                                                : SettingNameTr::tr("port %1").arg(command.port));
     return name.join(QLatin1String(", "));
 }
 

@@ -9,7 +9,7 @@ namespace tipscope::model {
 using namespace tipscope::protocol;
 
 namespace {
-struct Tr {
+struct StationModelTr {
     Q_DECLARE_TR_FUNCTIONS(StationModel)
 };
 
@@ -52,7 +52,8 @@ std::optional<int> StationModel::stationError() const {
 
 QString StationModel::stationErrorText() const {
     const auto e = stationError();
-    return e ? catalog().stationErrorText(family(), *e, Wording::Translated) : Tr::tr("—");
+    return e ? catalog().stationErrorText(family(), *e, Wording::Translated)
+             : StationModelTr::tr("—");
 }
 
 Level StationModel::stationErrorLevel() const {
@@ -71,14 +72,14 @@ std::optional<bool> StationModel::fusePresent() const {
 QString StationModel::triggerAction(Role role, Confirmation c, qint64 argument) {
     Action *a = action(role);
     if (!a)
-        return Tr::tr("%1 does not support %2").arg(displayName(), commandName(role));
+        return StationModelTr::tr("%1 does not support %2").arg(displayName(), commandName(role));
     return a->trigger(c, argument);
 }
 
 QString StationModel::saveToMemory() {
     Action *save = action(Role::SaveToMemory);
     if (!save)
-        return Tr::tr("%1 cannot save to memory").arg(displayName());
+        return StationModelTr::tr("%1 cannot save to memory").arg(displayName());
     connect(
         save, &Action::finished, this,
         [this, code = QString::fromLatin1(save->code())](bool ok) {
@@ -114,12 +115,12 @@ void StationModel::logChange(Parameter *p, int port) {
     if (role == Role::ConnectedTool) {
         if (!first)
             logEvent(Event::Kind::ToolChange, Event::Severity::Info, port,
-                     Tr::tr("%1 → %2").arg(toolName(int(before)), toolName(int(*v))));
+                     StationModelTr::tr("%1 → %2").arg(toolName(int(before)), toolName(int(*v))));
     } else if (role == Role::Status) {
         if (!first)
             logEvent(Event::Kind::Status, Event::Severity::Info, port,
-                     Tr::tr("%1 → %2").arg(PortStatus::fromNumber(before).text(),
-                                           PortStatus::fromNumber(*v).text()));
+                     StationModelTr::tr("%1 → %2").arg(PortStatus::fromNumber(before).text(),
+                                                       PortStatus::fromNumber(*v).text()));
     } else if (role == Role::Alarm) {
         if (*v != 0)
             logEvent(Event::Kind::Alarm, Event::Severity::Warning, port, p->displayText());
@@ -132,7 +133,7 @@ void StationModel::logChange(Parameter *p, int port) {
                      severityOf(catalog(), table, code), port, p->displayText());
         else if (!first)
             logEvent(isStation ? Event::Kind::StationError : Event::Kind::PortError,
-                     Event::Severity::Info, port, Tr::tr("error cleared"));
+                     Event::Severity::Info, port, StationModelTr::tr("error cleared"));
     }
 }
 

@@ -12,7 +12,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct SupportReportTr {
     Q_DECLARE_TR_FUNCTIONS(SupportReport)
 };
 
@@ -28,43 +28,44 @@ QString deviceHeading(const QJsonObject &d) {
     const QString model = d.value(QStringLiteral("model")).toString();
     const QString family = d.value(QStringLiteral("family")).toString();
     const QString software = d.value(QStringLiteral("softwareVersion")).toString();
-    QString heading = Tr::tr("Device %1").arg(d.value(QStringLiteral("address")).toString());
+    QString heading =
+        SupportReportTr::tr("Device %1").arg(d.value(QStringLiteral("address")).toString());
     if (!model.isEmpty() || !family.isEmpty())
         heading += QStringLiteral(": ") + (model.isEmpty() ? family
                                            : family.isEmpty() || family == model
                                                ? model
-                                               : Tr::tr("%1 (%2)").arg(model, family));
+                                               : SupportReportTr::tr("%1 (%2)").arg(model, family));
     if (!software.isEmpty())
-        heading += Tr::tr(", software %1").arg(software);
+        heading += SupportReportTr::tr(", software %1").arg(software);
     return heading;
 }
 
 // "Joints from … to …:", then one line per port with its counts by verdict and its recovery times.
 QString jointStatisticsText(const QJsonObject &joints) {
     if (joints.contains(QStringLiteral("error")))
-        return Tr::tr("Joints of the last 24 hours: not read: %1")
+        return SupportReportTr::tr("Joints of the last 24 hours: not read: %1")
             .arg(joints.value(QStringLiteral("error")).toString());
-    QStringList out{Tr::tr("Joints from %1 to %2:")
+    QStringList out{SupportReportTr::tr("Joints from %1 to %2:")
                         .arg(joints.value(QStringLiteral("since")).toString(),
                              joints.value(QStringLiteral("until")).toString())};
     const QJsonArray ports = joints.value(QStringLiteral("ports")).toArray();
     if (ports.isEmpty())
-        out << Tr::tr("  none");
+        out << SupportReportTr::tr("  none");
     for (const QJsonValue &pv : ports) {
         const QJsonObject p = pv.toObject();
         const auto count = [&p](const QString &name) {
             return QString::number(p.value(name).toInteger());
         };
         QString line =
-            Tr::tr("  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, "
-                   "%7 incomplete")
+            SupportReportTr::tr("  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, "
+                                "%7 incomplete")
                 .arg(p.value(QStringLiteral("device")).toString())
                 .arg(p.value(QStringLiteral("port")).toInt())
                 .arg(count(QStringLiteral("joints")), count(QStringLiteral("ok")),
                      count(QStringLiteral("slow recovery")), count(QStringLiteral("too deep")),
                      count(QStringLiteral("incomplete")));
         if (p.contains(QStringLiteral("recoveryMedianMs")))
-            line += Tr::tr("; recovery median %1 ms, 95th percentile %2 ms")
+            line += SupportReportTr::tr("; recovery median %1 ms, 95th percentile %2 ms")
                         .arg(count(QStringLiteral("recoveryMedianMs")),
                              count(QStringLiteral("recoveryP95Ms")));
         out << line;
@@ -77,34 +78,35 @@ QString journalHealthText(const QJsonObject &j) {
         return QString::number(j.value(name).toInteger());
     };
     const auto text = [&j](const QString &name) { return j.value(name).toString(); };
-    QStringList out{Tr::tr("Journal: %1").arg(text(QStringLiteral("path")))};
+    QStringList out{SupportReportTr::tr("Journal: %1").arg(text(QStringLiteral("path")))};
     const QString state = text(QStringLiteral("state"));
-    const QString writing = state == QLatin1String("ready")     ? Tr::tr("yes")
-                            : state == QLatin1String("failed")  ? Tr::tr("no")
-                            : state == QLatin1String("opening") ? Tr::tr("not yet, opening")
-                                                                : Tr::tr("no, closed");
+    const QString writing = state == QLatin1String("ready")    ? SupportReportTr::tr("yes")
+                            : state == QLatin1String("failed") ? SupportReportTr::tr("no")
+                            : state == QLatin1String("opening")
+                                ? SupportReportTr::tr("not yet, opening")
+                                : SupportReportTr::tr("no, closed");
     const QString error = text(QStringLiteral("error"));
-    out << (error.isEmpty() ? Tr::tr("  writing: %1").arg(writing)
-                            : Tr::tr("  writing: %1: %2").arg(writing, error));
+    out << (error.isEmpty() ? SupportReportTr::tr("  writing: %1").arg(writing)
+                            : SupportReportTr::tr("  writing: %1: %2").arg(writing, error));
     if (j.value(QStringLiteral("lost")).toInteger() > 0)
-        out << Tr::tr("  lost: %1 records (%2)")
+        out << SupportReportTr::tr("  lost: %1 records (%2)")
                    .arg(number(QStringLiteral("lost")), text(QStringLiteral("lossReason")));
     if (j.contains(QStringLiteral("readError"))) {
-        out << Tr::tr("  not read: %1").arg(text(QStringLiteral("readError")));
+        out << SupportReportTr::tr("  not read: %1").arg(text(QStringLiteral("readError")));
         return out.join(QLatin1Char('\n'));
     }
-    out << Tr::tr("  %1 joints and %2 events, %3 and %4 of them not yet published; "
-                  "%5 waiting in memory")
+    out << SupportReportTr::tr("  %1 joints and %2 events, %3 and %4 of them not yet published; "
+                               "%5 waiting in memory")
                .arg(number(QStringLiteral("joints")), number(QStringLiteral("events")),
                     number(QStringLiteral("unsentJoints")), number(QStringLiteral("unsentEvents")),
                     number(QStringLiteral("pending")));
     if (j.contains(QStringLiteral("oldest")))
-        out << Tr::tr("  from %1 to %2")
+        out << SupportReportTr::tr("  from %1 to %2")
                    .arg(text(QStringLiteral("oldest")), text(QStringLiteral("newest")));
     const qint64 days = j.value(QStringLiteral("retentionDays")).toInteger();
-    out << (days == 0 ? Tr::tr("  kept without a time limit; %1 bytes on disk")
+    out << (days == 0 ? SupportReportTr::tr("  kept without a time limit; %1 bytes on disk")
                             .arg(number(QStringLiteral("bytes")))
-                      : Tr::tr("  kept for %1 days; %2 bytes on disk")
+                      : SupportReportTr::tr("  kept for %1 days; %2 bytes on disk")
                             .arg(QString::number(days), number(QStringLiteral("bytes"))));
     return out.join(QLatin1Char('\n'));
 }
@@ -112,9 +114,10 @@ QString journalHealthText(const QJsonObject &j) {
 // A line's link, statistics and devices, each value with its label and what to check.
 void appendLine(QStringList &out, const QJsonObject &part) {
     const QJsonObject line = part.value(QStringLiteral("line")).toObject();
-    out << Tr::tr("Line: %1").arg(line.value(QStringLiteral("transport")).toString())
-        << Tr::tr("State: %1").arg(line.value(QStringLiteral("state")).toString())
-        << Tr::tr("Statistics: %1").arg(line.value(QStringLiteral("summary")).toString())
+    out << SupportReportTr::tr("Line: %1").arg(line.value(QStringLiteral("transport")).toString())
+        << SupportReportTr::tr("State: %1").arg(line.value(QStringLiteral("state")).toString())
+        << SupportReportTr::tr("Statistics: %1")
+               .arg(line.value(QStringLiteral("summary")).toString())
         << QString();
     for (const QJsonValue &dv : part.value(QStringLiteral("devices")).toArray()) {
         const QJsonObject d = dv.toObject();
@@ -129,7 +132,7 @@ void appendLine(QStringList &out, const QJsonObject &part) {
         }
         const QJsonArray advice = d.value(QStringLiteral("whatToCheck")).toArray();
         if (!advice.isEmpty())
-            out << Tr::tr("  What to check:");
+            out << SupportReportTr::tr("  What to check:");
         for (const QJsonValue &av : advice) {
             const QJsonObject a = av.toObject();
             out << QStringLiteral("    %1 (%2): %3")
@@ -162,16 +165,17 @@ QString workspaceLineHeading(const QJsonObject &part) {
         if (const QString name = part.value(key).toString(); !name.isEmpty())
             where << name;
     const QString name = part.value(QStringLiteral("name")).toString();
-    return where.isEmpty()
-               ? Tr::tr("Workspace line %1").arg(name)
-               : Tr::tr("Workspace line %1 (%2)").arg(name, where.join(QStringLiteral(", ")));
+    return where.isEmpty() ? SupportReportTr::tr("Workspace line %1").arg(name)
+                           : SupportReportTr::tr("Workspace line %1 (%2)")
+                                 .arg(name, where.join(QStringLiteral(", ")));
 }
 } // namespace
 
 QString supportReportText(const QJsonObject &r) {
     QStringList out;
-    out << Tr::tr("TipScope support report, %1").arg(r.value(QStringLiteral("created")).toString())
-        << Tr::tr("TipScope %1, Qt %2, %3")
+    out << SupportReportTr::tr("TipScope support report, %1")
+               .arg(r.value(QStringLiteral("created")).toString())
+        << SupportReportTr::tr("TipScope %1, Qt %2, %3")
                .arg(r.value(QStringLiteral("tipscopeVersion")).toString(),
                     r.value(QStringLiteral("qtVersion")).toString(),
                     r.value(QStringLiteral("system")).toString())
@@ -185,7 +189,8 @@ QString supportReportText(const QJsonObject &r) {
         const QJsonObject part = lv.toObject();
         out << workspaceLineHeading(part);
         appendLine(out, part);
-        out << Tr::tr("Recent events of %1:").arg(part.value(QStringLiteral("name")).toString());
+        out << SupportReportTr::tr("Recent events of %1:")
+                   .arg(part.value(QStringLiteral("name")).toString());
         appendEvents(out, part.value(QStringLiteral("events")).toArray());
         out << QString();
     }
@@ -193,7 +198,7 @@ QString supportReportText(const QJsonObject &r) {
         out << journalHealthText(r.value(QStringLiteral("journal")).toObject()) << QString();
     if (r.contains(QStringLiteral("joints")))
         out << jointStatisticsText(r.value(QStringLiteral("joints")).toObject()) << QString();
-    out << Tr::tr("Recent events:");
+    out << SupportReportTr::tr("Recent events:");
     appendEvents(out, r.value(QStringLiteral("events")).toArray());
     return out.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }

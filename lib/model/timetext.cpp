@@ -1,5 +1,7 @@
 #include "timetext.h"
 
+#include <QLocale>
+
 namespace tipscope::model {
 
 QString isoTimeWithOffset(const QDateTime &time) {
@@ -13,6 +15,10 @@ QString clockText(const QDateTime &time, const QDate &today) {
     const QDateTime local = time.toLocalTime();
     return local.toString(local.date() == today ? QStringLiteral("HH:mm:ss")
                                                 : QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+}
+
+QString secondsText(qint64 ms) {
+    return QLocale().toString(double(ms) / 1000, 'f', 1);
 }
 
 } // namespace tipscope::model

@@ -13,5 +13,7 @@ namespace tipscope::model {
 [[nodiscard]] QString isoTimeWithOffset(const QDateTime &time);
 // "10:02:03" on `today`, "2024-04-30 10:02:03" on any other day.
 [[nodiscard]] QString clockText(const QDateTime &time, const QDate &today = QDate::currentDate());
+// "4.2": a duration in seconds with one decimal, in the user's locale (people read it).
+[[nodiscard]] QString secondsText(qint64 ms);
 
 } // namespace tipscope::model

@@ -5,7 +5,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct WorkContextJsonTr {
     Q_DECLARE_TR_FUNCTIONS(WorkContextJson)
 };
 
@@ -23,7 +23,7 @@ QJsonObject workContextToJson(const WorkContext &context) {
 protocol::Outcome<WorkContext> workContextFromJson(const QJsonObject &json) {
     for (const QString &key : {kWorkOrder, kSerial, kOperator})
         if (json.contains(key) && !json.value(key).isString())
-            return protocol::failure(Tr::tr("%1 must be text").arg(key));
+            return protocol::failure(WorkContextJsonTr::tr("%1 must be text").arg(key));
     return WorkContext{json.value(kWorkOrder).toString().trimmed(),
                        json.value(kSerial).toString().trimmed(),
                        json.value(kOperator).toString().trimmed()};

@@ -18,7 +18,7 @@ Q_LOGGING_CATEGORY(lcMqtt, "tipscope.mqtt")
 namespace {
 
 // One translation context for every text of the client: here, mqttproblem.cpp, mqttsetup.cpp.
-struct Tr {
+struct MqttClientTr {
     Q_DECLARE_TR_FUNCTIONS(MqttClient)
 };
 
@@ -229,7 +229,7 @@ void MqttClient::dispatchEvents() {
             else
                 Q_EMIT publishRejected(
                     event.messageId,
-                    Tr::tr("The broker %1 refused the message: %2.")
+                    MqttClientTr::tr("The broker %1 refused the message: %2.")
                         .arg(where(), QString::fromUtf8(mosquitto_reason_string(event.code))));
             break;
         case Event::Kind::Subscribed:
@@ -281,24 +281,27 @@ MqttResult MqttClient::refuse(const QString &reason) {
 MqttResult MqttClient::publish(const QString &topic, const QByteArray &payload, int qos,
                                bool retain) {
     if (!isValidTopicName(topic))
-        return refuse(Tr::tr("'%1' is not a topic a message can be published to.").arg(topic));
+        return refuse(
+            MqttClientTr::tr("'%1' is not a topic a message can be published to.").arg(topic));
     if (qos < 0 || qos > 2)
-        return refuse(Tr::tr("QoS %1 does not exist; MQTT has 0, 1 and 2.").arg(qos));
+        return refuse(MqttClientTr::tr("QoS %1 does not exist; MQTT has 0, 1 and 2.").arg(qos));
     if (m_state != State::Connected)
-        return refuse(Tr::tr("Not connected to the broker %1: the message to %2 is dropped.")
-                          .arg(where(), topic));
+        return refuse(
+            MqttClientTr::tr("Not connected to the broker %1: the message to %2 is dropped.")
+                .arg(where(), topic));
     if (m_pending.size() >= m_settings.maxPendingMessages)
-        return refuse(Tr::tr("%1 messages wait to be taken by the broker %2: the message to %3 is "
+        return refuse(
+            MqttClientTr::tr("%1 messages wait to be taken by the broker %2: the message to %3 is "
                              "dropped.")
-                          .arg(m_pending.size())
-                          .arg(where(), topic));
+                .arg(m_pending.size())
+                .arg(where(), topic));
     const QByteArray name = topic.toUtf8();
     int messageId = 0;
     const int rc = mosquitto_publish(m_mosquitto.get(), &messageId, name.constData(),
                                      int(payload.size()), payload.constData(), qos, retain);
     serviceSoon();
     if (rc != MOSQ_ERR_SUCCESS)
-        return refuse(Tr::tr("The message to %1 was not sent: %2")
+        return refuse(MqttClientTr::tr("The message to %1 was not sent: %2")
                           .arg(topic, QString::fromUtf8(mosquitto_strerror(rc))));
     m_pending.insert(messageId, qos);
     return {messageId, {}};
@@ -306,9 +309,9 @@ MqttResult MqttClient::publish(const QString &topic, const QByteArray &payload, 
 
 MqttResult MqttClient::subscribe(const QString &filter, int qos) {
     if (!isValidTopicFilter(filter))
-        return {0, Tr::tr("'%1' is not a valid subscription filter.").arg(filter)};
+        return {0, MqttClientTr::tr("'%1' is not a valid subscription filter.").arg(filter)};
     if (qos < 0 || qos > 2)
-        return {0, Tr::tr("QoS %1 does not exist; MQTT has 0, 1 and 2.").arg(qos)};
+        return {0, MqttClientTr::tr("QoS %1 does not exist; MQTT has 0, 1 and 2.").arg(qos)};
     m_subscriptions.insert(filter, qos);
     if (m_state != State::Connected)
         return {};
@@ -317,14 +320,14 @@ MqttResult MqttClient::subscribe(const QString &filter, int qos) {
     const int rc = mosquitto_subscribe(m_mosquitto.get(), &messageId, name.constData(), qos);
     serviceSoon();
     if (rc != MOSQ_ERR_SUCCESS)
-        return {0, Tr::tr("The subscription to %1 was not sent: %2")
+        return {0, MqttClientTr::tr("The subscription to %1 was not sent: %2")
                        .arg(filter, QString::fromUtf8(mosquitto_strerror(rc)))};
     return {messageId, {}};
 }
 
 MqttResult MqttClient::unsubscribe(const QString &filter) {
     if (!m_subscriptions.remove(filter))
-        return {0, Tr::tr("There is no subscription to %1.").arg(filter)};
+        return {0, MqttClientTr::tr("There is no subscription to %1.").arg(filter)};
     if (m_state != State::Connected)
         return {};
     const QByteArray name = filter.toUtf8();
@@ -332,7 +335,7 @@ MqttResult MqttClient::unsubscribe(const QString &filter) {
     const int rc = mosquitto_unsubscribe(m_mosquitto.get(), &messageId, name.constData());
     serviceSoon();
     if (rc != MOSQ_ERR_SUCCESS)
-        return {0, Tr::tr("The subscription to %1 was not ended: %2")
+        return {0, MqttClientTr::tr("The subscription to %1 was not ended: %2")
                        .arg(filter, QString::fromUtf8(mosquitto_strerror(rc)))};
     return {messageId, {}};
 }

@@ -9,7 +9,7 @@ namespace tipscope::mqtt {
 
 namespace {
 
-struct Tr {
+struct MqttProblemTr {
     Q_DECLARE_TR_FUNCTIONS(MqttClient)
 };
 
@@ -24,35 +24,37 @@ constexpr int kV5InvalidClientId = 133;
 
 MqttProblemReport credentials(const QString &where) {
     return {MqttProblem::BadCredentials,
-            Tr::tr("The broker %1 refused the connection: bad user name or password.").arg(where)};
+            MqttProblemTr::tr("The broker %1 refused the connection: bad user name or password.")
+                .arg(where)};
 }
 
 MqttProblemReport notAuthorised(const QString &where) {
     return {MqttProblem::NotAuthorised,
-            Tr::tr("The broker %1 refused the connection: not authorised (wrong user name or "
-                   "password, or this user may not connect).")
+            MqttProblemTr::tr(
+                "The broker %1 refused the connection: not authorised (wrong user name or "
+                "password, or this user may not connect).")
                 .arg(where)};
 }
 
 MqttProblemReport refused(const QString &where, const QString &why) {
     return {MqttProblem::Refused,
-            Tr::tr("The broker %1 refused the connection: %2.").arg(where, why)};
+            MqttProblemTr::tr("The broker %1 refused the connection: %2.").arg(where, why)};
 }
 
 MqttProblemReport describeV311(int code, const QString &where) {
     switch (code) {
     case 1:
-        return refused(where, Tr::tr("it does not speak MQTT 3.1.1"));
+        return refused(where, MqttProblemTr::tr("it does not speak MQTT 3.1.1"));
     case 2:
-        return refused(where, Tr::tr("it does not accept this client id"));
+        return refused(where, MqttProblemTr::tr("it does not accept this client id"));
     case 3:
-        return refused(where, Tr::tr("the service is unavailable"));
+        return refused(where, MqttProblemTr::tr("the service is unavailable"));
     case 4:
         return credentials(where);
     case 5:
         return notAuthorised(where);
     default:
-        return refused(where, Tr::tr("return code %1").arg(code));
+        return refused(where, MqttProblemTr::tr("return code %1").arg(code));
     }
 }
 
@@ -64,14 +66,14 @@ MqttProblemReport describeV5(int code, const QString &where) {
     case kV5Banned:
         return notAuthorised(where);
     case kV5UnsupportedProtocol:
-        return refused(where, Tr::tr("it does not speak MQTT 5"));
+        return refused(where, MqttProblemTr::tr("it does not speak MQTT 5"));
     case kV5InvalidClientId:
-        return refused(where, Tr::tr("it does not accept this client id"));
+        return refused(where, MqttProblemTr::tr("it does not accept this client id"));
     case kV5ServerUnavailable:
     case kV5ServerBusy:
-        return refused(where, Tr::tr("the service is unavailable"));
+        return refused(where, MqttProblemTr::tr("the service is unavailable"));
     default:
-        return refused(where, Tr::tr("reason code %1").arg(code));
+        return refused(where, MqttProblemTr::tr("reason code %1").arg(code));
     }
 }
 
@@ -79,16 +81,16 @@ MqttProblemReport describeErrno(int errnoValue, const QString &where) {
     const QString why = QString::fromLocal8Bit(std::strerror(errnoValue));
     switch (errnoValue) {
     case ECONNREFUSED:
-        return {
-            MqttProblem::Unreachable,
-            Tr::tr("No MQTT broker accepts connections at %1 (connection refused).").arg(where)};
+        return {MqttProblem::Unreachable,
+                MqttProblemTr::tr("No MQTT broker accepts connections at %1 (connection refused).")
+                    .arg(where)};
     case ECONNRESET:
     case EPIPE:
         return {MqttProblem::ConnectionLost,
-                Tr::tr("The broker %1 closed the connection (%2).").arg(where, why)};
+                MqttProblemTr::tr("The broker %1 closed the connection (%2).").arg(where, why)};
     default:
         return {MqttProblem::Unreachable,
-                Tr::tr("The broker %1 cannot be reached: %2.").arg(where, why)};
+                MqttProblemTr::tr("The broker %1 cannot be reached: %2.").arg(where, why)};
     }
 }
 
@@ -109,26 +111,28 @@ MqttProblemReport describeLibraryError(int rc, int errnoValue, const QString &wh
                                     : describeErrno(errnoValue, where);
     case MOSQ_ERR_EAI:
         return {MqttProblem::HostNotFound,
-                Tr::tr("The broker's address %1 cannot be resolved.").arg(where)};
+                MqttProblemTr::tr("The broker's address %1 cannot be resolved.").arg(where)};
     case MOSQ_ERR_TLS:
         return {MqttProblem::TlsFailure,
                 detail.isEmpty()
-                    ? Tr::tr("The TLS handshake with the broker %1 failed.").arg(where)
-                    : Tr::tr("The TLS handshake with the broker %1 failed: %2").arg(where, detail)};
+                    ? MqttProblemTr::tr("The TLS handshake with the broker %1 failed.").arg(where)
+                    : MqttProblemTr::tr("The TLS handshake with the broker %1 failed: %2")
+                          .arg(where, detail)};
     case MOSQ_ERR_KEEPALIVE:
         return {MqttProblem::ConnectionLost,
-                Tr::tr("The broker %1 stopped answering within the keep-alive time.").arg(where)};
+                MqttProblemTr::tr("The broker %1 stopped answering within the keep-alive time.")
+                    .arg(where)};
     case MOSQ_ERR_CONN_LOST:
     case MOSQ_ERR_NO_CONN:
         return {MqttProblem::ConnectionLost,
-                Tr::tr("The connection to the broker %1 was lost.").arg(where)};
+                MqttProblemTr::tr("The connection to the broker %1 was lost.").arg(where)};
     case MOSQ_ERR_PROTOCOL:
     case MOSQ_ERR_MALFORMED_PACKET:
         return {MqttProblem::ProtocolError,
-                Tr::tr("The broker %1 sent data that is not valid MQTT.").arg(where)};
+                MqttProblemTr::tr("The broker %1 sent data that is not valid MQTT.").arg(where)};
     default:
         return {MqttProblem::ConnectionLost,
-                Tr::tr("The connection to the broker %1 failed: %2.")
+                MqttProblemTr::tr("The connection to the broker %1 failed: %2.")
                     .arg(where, QString::fromUtf8(mosquitto_strerror(rc)))};
     }
 }
@@ -136,12 +140,14 @@ MqttProblemReport describeLibraryError(int rc, int errnoValue, const QString &wh
 MqttProblemReport describeHangUp(const QString &where) {
     return {
         MqttProblem::Unreachable,
-        Tr::tr("The broker %1 cannot be reached: the connection was refused or reset.").arg(where)};
+        MqttProblemTr::tr("The broker %1 cannot be reached: the connection was refused or reset.")
+            .arg(where)};
 }
 
 MqttProblemReport describeLookupFailure(const QString &host, const QString &detail) {
-    return {MqttProblem::HostNotFound,
-            Tr::tr("The broker's host name %1 cannot be resolved: %2").arg(host, detail)};
+    return {
+        MqttProblem::HostNotFound,
+        MqttProblemTr::tr("The broker's host name %1 cannot be resolved: %2").arg(host, detail)};
 }
 
 } // namespace tipscope::mqtt

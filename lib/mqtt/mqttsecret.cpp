@@ -8,7 +8,7 @@ namespace tipscope::mqtt {
 
 namespace {
 
-struct Tr {
+struct MqttSecretTr {
     Q_DECLARE_TR_FUNCTIONS(MqttSecret)
 };
 
@@ -28,18 +28,19 @@ protocol::Outcome<QByteArray> readSecretFile(const QString &path) {
     using protocol::failure;
     const QFileInfo info(path);
     if (!info.exists())
-        return failure(Tr::tr("The password file %1 does not exist.").arg(path));
+        return failure(MqttSecretTr::tr("The password file %1 does not exist.").arg(path));
     if (info.size() > kMaxSecretBytes)
-        return failure(Tr::tr("The password file %1 is larger than %2 bytes; is it the right file?")
-                           .arg(path)
-                           .arg(kMaxSecretBytes));
+        return failure(
+            MqttSecretTr::tr("The password file %1 is larger than %2 bytes; is it the right file?")
+                .arg(path)
+                .arg(kMaxSecretBytes));
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return failure(
-            Tr::tr("The password file %1 cannot be read: %2").arg(path, file.errorString()));
+        return failure(MqttSecretTr::tr("The password file %1 cannot be read: %2")
+                           .arg(path, file.errorString()));
     const QByteArray line = withoutLineEnd(file.readLine(kMaxSecretBytes + 1));
     if (line.isEmpty())
-        return failure(Tr::tr("The password file %1 is empty.").arg(path));
+        return failure(MqttSecretTr::tr("The password file %1 is empty.").arg(path));
     return line;
 }
 
@@ -47,8 +48,8 @@ protocol::Outcome<QByteArray> readSecretEnvironment(const QString &name) {
     const QByteArray value = withoutLineEnd(qgetenv(name.toLocal8Bit().constData()));
     if (value.isEmpty())
         return protocol::failure(
-            Tr::tr("The environment variable %1 that should hold the password is not set "
-                   "or empty.")
+            MqttSecretTr::tr("The environment variable %1 that should hold the password is not set "
+                             "or empty.")
                 .arg(name));
     return value;
 }

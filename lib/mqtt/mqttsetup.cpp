@@ -15,7 +15,7 @@ using protocol::Outcome;
 
 namespace {
 
-struct Tr {
+struct MqttSetupTr {
     Q_DECLARE_TR_FUNCTIONS(MqttClient)
 };
 
@@ -43,15 +43,16 @@ Outcome<void> applyCredentials(mosquitto *client, const MqttSettings &settings) 
     if (settings.username.isEmpty() && settings.password.isEmpty())
         return {};
     if (settings.username.isEmpty())
-        return failure(Tr::tr("A password is set but no user name: MQTT sends a password only "
-                              "with a user name."));
+        return failure(
+            MqttSetupTr::tr("A password is set but no user name: MQTT sends a password only "
+                            "with a user name."));
     const QByteArray user = settings.username.toUtf8();
     const int rc = mosquitto_username_pw_set(
         client, user.constData(),
         settings.password.isEmpty() ? nullptr : settings.password.constData());
     if (rc != MOSQ_ERR_SUCCESS)
-        return failure(
-            Tr::tr("The user name %1 is not accepted: %2").arg(settings.username, libraryText(rc)));
+        return failure(MqttSetupTr::tr("The user name %1 is not accepted: %2")
+                           .arg(settings.username, libraryText(rc)));
     return {};
 }
 
@@ -62,20 +63,21 @@ Outcome<void> applyWill(mosquitto *client, const MqttWill &will) {
     const int rc = mosquitto_will_set(client, topic.constData(), int(will.payload.size()),
                                       will.payload.constData(), will.qos, will.retain);
     if (rc != MOSQ_ERR_SUCCESS)
-        return failure(
-            Tr::tr("The last will on %1 is not accepted: %2").arg(will.topic, libraryText(rc)));
+        return failure(MqttSetupTr::tr("The last will on %1 is not accepted: %2")
+                           .arg(will.topic, libraryText(rc)));
     return {};
 }
 
 Outcome<void> checkTlsFiles(const MqttTls &tls) {
     if (!readable(tls.caFile))
-        return failure(Tr::tr("The CA certificate file %1 cannot be read.").arg(tls.caFile));
-    if (tls.certFile.isEmpty() != tls.keyFile.isEmpty())
         return failure(
-            Tr::tr("A client certificate needs both its certificate file and its key file."));
+            MqttSetupTr::tr("The CA certificate file %1 cannot be read.").arg(tls.caFile));
+    if (tls.certFile.isEmpty() != tls.keyFile.isEmpty())
+        return failure(MqttSetupTr::tr(
+            "A client certificate needs both its certificate file and its key file."));
     for (const QString &path : {tls.certFile, tls.keyFile})
         if (!path.isEmpty() && !readable(path))
-            return failure(Tr::tr("The file %1 cannot be read.").arg(path));
+            return failure(MqttSetupTr::tr("The file %1 cannot be read.").arg(path));
     return {};
 }
 
@@ -93,7 +95,7 @@ Outcome<void> applyTls(mosquitto *client, const MqttTls &tls) {
     if (rc == MOSQ_ERR_SUCCESS)
         rc = mosquitto_tls_insecure_set(client, tls.insecure);
     if (rc != MOSQ_ERR_SUCCESS)
-        return failure(Tr::tr("TLS cannot be set up: %1").arg(libraryText(rc)));
+        return failure(MqttSetupTr::tr("TLS cannot be set up: %1").arg(libraryText(rc)));
     return {};
 }
 
@@ -101,7 +103,7 @@ Outcome<void> applyProtocol(mosquitto *client, MqttProtocol protocol) {
     const int version = protocol == MqttProtocol::V5 ? MQTT_PROTOCOL_V5 : MQTT_PROTOCOL_V311;
     const int rc = mosquitto_int_option(client, MOSQ_OPT_PROTOCOL_VERSION, version);
     if (rc != MOSQ_ERR_SUCCESS)
-        return failure(Tr::tr("The MQTT version cannot be set: %1").arg(libraryText(rc)));
+        return failure(MqttSetupTr::tr("The MQTT version cannot be set: %1").arg(libraryText(rc)));
     return {};
 }
 
@@ -123,9 +125,10 @@ Outcome<MosquittoHandle> createMosquitto(const MqttSettings &settings, void *use
     const QByteArray id = effectiveClientId(settings).toUtf8();
     MosquittoHandle client(mosquitto_new(id.constData(), settings.cleanSession, userData));
     if (!client)
-        return failure(errno == EINVAL
-                           ? Tr::tr("The client id %1 is not accepted.").arg(QString::fromUtf8(id))
-                           : Tr::tr("Out of memory for an MQTT client."));
+        return failure(
+            errno == EINVAL
+                ? MqttSetupTr::tr("The client id %1 is not accepted.").arg(QString::fromUtf8(id))
+                : MqttSetupTr::tr("Out of memory for an MQTT client."));
     // In this order, and no further than the first refusal.
     const std::function<Outcome<void>()> steps[] = {
         [&] { return applyProtocol(client.get(), settings.protocol); },

@@ -10,7 +10,7 @@
 namespace tipscope::plant {
 
 namespace {
-struct Tr {
+struct AgentConfigTr {
     Q_DECLARE_TR_FUNCTIONS(AgentConfig)
 };
 
@@ -34,7 +34,7 @@ public:
         if (v.isUndefined() || v.isNull())
             return;
         if (!v.isString())
-            return fail(Tr::tr("%1 must be text").arg(name(key)));
+            return fail(AgentConfigTr::tr("%1 must be text").arg(name(key)));
         target = v.toString();
     }
     void number(const char *key, int &target, int min, int max) {
@@ -43,8 +43,10 @@ public:
             return;
         const double d = v.toDouble(-1e300);
         if (!v.isDouble() || d != double(qint64(d)) || d < min || d > max)
-            return fail(
-                Tr::tr("%1 must be a whole number from %2 to %3").arg(name(key)).arg(min).arg(max));
+            return fail(AgentConfigTr::tr("%1 must be a whole number from %2 to %3")
+                            .arg(name(key))
+                            .arg(min)
+                            .arg(max));
         target = int(d);
     }
     void flag(const char *key, bool &target) {
@@ -52,13 +54,13 @@ public:
         if (v.isUndefined() || v.isNull())
             return;
         if (!v.isBool())
-            return fail(Tr::tr("%1 must be true or false").arg(name(key)));
+            return fail(AgentConfigTr::tr("%1 must be true or false").arg(name(key)));
         target = v.toBool();
     }
     [[nodiscard]] QJsonObject object(const char *key) {
         const QJsonValue v = m_object.value(QLatin1String(key));
         if (!v.isUndefined() && !v.isNull() && !v.isObject())
-            fail(Tr::tr("%1 must be an object").arg(name(key)));
+            fail(AgentConfigTr::tr("%1 must be an object").arg(name(key)));
         return v.toObject();
     }
     [[nodiscard]] QString name(const char *key) const { return m_prefix + QLatin1String(key); }
@@ -76,16 +78,18 @@ private:
 Outcome<void> checkHeader(const QJsonObject &json) {
     if (json.value(QStringLiteral("format")).toString() != kFormat)
         return failure(
-            Tr::tr("not a TipScope agent configuration (\"format\" is not \"%1\")").arg(kFormat));
+            AgentConfigTr::tr("not a TipScope agent configuration (\"format\" is not \"%1\")")
+                .arg(kFormat));
     const QJsonValue version = json.value(QStringLiteral("version"));
     if (!version.isDouble() || version.toDouble() < 1 ||
         version.toDouble() != double(version.toInt()))
-        return failure(Tr::tr("\"version\" must be a whole number from 1"));
+        return failure(AgentConfigTr::tr("\"version\" must be a whole number from 1"));
     if (version.toInt() > AgentConfig::kVersion)
-        return failure(Tr::tr("written for a later TipScope (version %1); this one reads version "
+        return failure(
+            AgentConfigTr::tr("written for a later TipScope (version %1); this one reads version "
                               "%2 and older")
-                           .arg(version.toInt())
-                           .arg(AgentConfig::kVersion));
+                .arg(version.toInt())
+                .arg(AgentConfig::kVersion));
     return {};
 }
 
@@ -110,7 +114,7 @@ void readBroker(Reader &top, AgentConfig &c, const QString &folder, QString *pro
     QString protocolName = QStringLiteral("3.1.1");
     broker.text("protocol", protocolName);
     if (protocolName != QLatin1String("3.1.1") && protocolName != QLatin1String("5"))
-        broker.fail(Tr::tr("broker.protocol must be \"3.1.1\" or \"5\""));
+        broker.fail(AgentConfigTr::tr("broker.protocol must be \"3.1.1\" or \"5\""));
     b.protocol =
         protocolName == QLatin1String("5") ? mqtt::MqttProtocol::V5 : mqtt::MqttProtocol::V311;
     Reader tls(broker.object("tls"), QStringLiteral("broker.tls."), problem);
@@ -122,9 +126,10 @@ void readBroker(Reader &top, AgentConfig &c, const QString &folder, QString *pro
     b.tls.certFile = resolved(folder, b.tls.certFile);
     b.tls.keyFile = resolved(folder, b.tls.keyFile);
     if (b.host.isEmpty())
-        broker.fail(Tr::tr("broker.host must name the broker"));
+        broker.fail(AgentConfigTr::tr("broker.host must name the broker"));
     if (!passwordFile.isEmpty() && !passwordEnv.isEmpty())
-        broker.fail(Tr::tr("broker.password_file and broker.password_env: give one of them"));
+        broker.fail(
+            AgentConfigTr::tr("broker.password_file and broker.password_env: give one of them"));
 }
 
 Outcome<void> readPassword(AgentConfig &c, const QString &file, const QString &env) {
@@ -133,13 +138,13 @@ Outcome<void> readPassword(AgentConfig &c, const QString &file, const QString &e
         if (!secret)
             return failure(secret.error());
         c.broker.password = secret.value();
-        c.passwordSource = Tr::tr("file %1").arg(file);
+        c.passwordSource = AgentConfigTr::tr("file %1").arg(file);
     } else if (!env.isEmpty()) {
         auto secret = mqtt::readSecretEnvironment(env);
         if (!secret)
             return failure(secret.error());
         c.broker.password = secret.value();
-        c.passwordSource = Tr::tr("environment variable %1").arg(env);
+        c.passwordSource = AgentConfigTr::tr("environment variable %1").arg(env);
     }
     return {};
 }
@@ -163,9 +168,9 @@ Outcome<AgentConfig> AgentConfig::fromJson(const QJsonObject &json, const QStrin
     QString passwordFile, passwordEnv;
     readBroker(top, c, folder, &problem, passwordFile, passwordEnv);
     if (c.site.trimmed().isEmpty())
-        top.fail(Tr::tr("site must name the site"));
+        top.fail(AgentConfigTr::tr("site must name the site"));
     if (c.workspacePath.isEmpty())
-        top.fail(Tr::tr("workspace must name the workspace file of the lines to run"));
+        top.fail(AgentConfigTr::tr("workspace must name the workspace file of the lines to run"));
     if (!problem.isEmpty())
         return failure(problem);
     c.workspacePath = resolved(folder, c.workspacePath);
@@ -186,16 +191,19 @@ Outcome<AgentConfig> AgentConfig::load(const QString &path) {
         switch (problem->kind) {
         case Kind::Missing:
             return failure(
-                Tr::tr("cannot read the configuration %1: there is no such file").arg(path));
+                AgentConfigTr::tr("cannot read the configuration %1: there is no such file")
+                    .arg(path));
         case Kind::Unreadable:
-            return failure(
-                Tr::tr("cannot read the configuration %1: %2").arg(path, problem->detail));
+            return failure(AgentConfigTr::tr("cannot read the configuration %1: %2")
+                               .arg(path, problem->detail));
         case Kind::TooBig:
-            return failure(Tr::tr("the configuration %1 is too big to be one").arg(path));
+            return failure(
+                AgentConfigTr::tr("the configuration %1 is too big to be one").arg(path));
         case Kind::NotAnObject:
-            return failure(Tr::tr("the configuration %1 is not a JSON object: %2")
-                               .arg(path, problem->detail.isEmpty() ? Tr::tr("it is a list")
-                                                                    : problem->detail));
+            return failure(AgentConfigTr::tr("the configuration %1 is not a JSON object: %2")
+                               .arg(path, problem->detail.isEmpty()
+                                              ? AgentConfigTr::tr("it is a list")
+                                              : problem->detail));
         }
     }
     auto config = fromJson(std::get<QJsonObject>(read), QFileInfo(path).absolutePath());

@@ -20,7 +20,7 @@
 namespace tipscope::plant {
 
 namespace {
-struct Tr {
+struct RemoteApplyTr {
     Q_DECLARE_TR_FUNCTIONS(RemoteApply)
 };
 const QString kLeaf = QStringLiteral("cmd/apply-profile");
@@ -72,25 +72,30 @@ void RemoteApply::onMessage(const QString &topic, const QByteArray &payload, boo
     if (command.requestId.isEmpty())
         command.requestId = QUuid::createUuid().toString(QUuid::WithoutBraces);
     if (retained)
-        return refuse(command, Tr::tr("a retained command is not carried out: it would run again "
-                                      "at every reconnect"));
+        return refuse(command,
+                      RemoteApplyTr::tr("a retained command is not carried out: it would run again "
+                                        "at every reconnect"));
     if (!m_enabled)
-        return refuse(command, Tr::tr("remote profile apply is off in this agent's configuration"));
+        return refuse(command, RemoteApplyTr::tr(
+                                   "remote profile apply is off in this agent's configuration"));
     if (command.client.isEmpty() || command.client.contains(QLatin1Char('/')))
-        return refuse(command, Tr::tr("publish the command under your user name: %1/%2/USER")
-                                   .arg(command.root, kLeaf));
+        return refuse(command,
+                      RemoteApplyTr::tr("publish the command under your user name: %1/%2/USER")
+                          .arg(command.root, kLeaf));
     command.device = m_deviceAt(command.root);
     if (!command.device)
-        return refuse(command,
-                      Tr::tr("no device of this agent is published at %1").arg(command.root));
+        return refuse(
+            command,
+            RemoteApplyTr::tr("no device of this agent is published at %1").arg(command.root));
     if (m_running.value(command.root))
-        return refuse(command, Tr::tr("another profile is being applied to this device"));
+        return refuse(command,
+                      RemoteApplyTr::tr("another profile is being applied to this device"));
     const QByteArray json =
         wrapped ? QJsonDocument(wrapper.value(QStringLiteral("profile")).toObject()).toJson()
                 : payload;
     const auto profile = model::Profile::fromJson(json);
     if (!profile)
-        return refuse(command, Tr::tr("not a profile: %1").arg(profile.error()));
+        return refuse(command, RemoteApplyTr::tr("not a profile: %1").arg(profile.error()));
     command.profileSha256 =
         QCryptographicHash::hash(profile->toJson(), QCryptographicHash::Sha256).toHex();
     auto *applier = new model::ProfileApplier(*command.device, profile.value(),
@@ -120,7 +125,7 @@ void RemoteApply::finish(const Command &command, const model::ApplyReport &repor
                                    {QStringLiteral("reason"), item.reason}});
     QString error = report.refused ? report.reason : report.conflictReason();
     if (error.isEmpty() && report.failedCount() > 0)
-        error = Tr::tr("%n setting(s) not taken", nullptr, report.failedCount());
+        error = RemoteApplyTr::tr("%n setting(s) not taken", nullptr, report.failedCount());
     answer(command, report.ok(), error,
            {{QStringLiteral("changed"), changed},
             {QStringLiteral("unchanged"), report.unchanged},
@@ -149,11 +154,11 @@ void RemoteApply::answer(const Command &command, bool ok, const QString &error,
         ok ? journal::JournalEvent::Severity::Info : journal::JournalEvent::Severity::Warning;
     if (command.device)
         event.device = command.device->identity();
-    event.text =
-        ok ? Tr::tr("Profile applied through MQTT for %1").arg(command.client)
-           : Tr::tr("Profile through MQTT for %1 not applied: %2")
-                 .arg(command.client.isEmpty() ? Tr::tr("an unnamed client") : command.client,
-                      error);
+    event.text = ok ? RemoteApplyTr::tr("Profile applied through MQTT for %1").arg(command.client)
+                    : RemoteApplyTr::tr("Profile through MQTT for %1 not applied: %2")
+                          .arg(command.client.isEmpty() ? RemoteApplyTr::tr("an unnamed client")
+                                                        : command.client,
+                               error);
     event.details = {{QStringLiteral("client"), command.client},
                      {QStringLiteral("requestId"), command.requestId},
                      {QStringLiteral("topic"), command.root + QLatin1Char('/') + kLeaf},

@@ -10,7 +10,7 @@
 namespace tipscope::plant {
 
 namespace {
-struct Tr {
+struct RemoteTileTr {
     Q_DECLARE_TR_FUNCTIONS(RemoteTile)
 };
 
@@ -24,7 +24,7 @@ QString text(const QJsonObject &o, const char *key, const QString &unit = {}) {
     if (v.isDouble())
         return unit.isEmpty() ? QLocale().toString(v.toDouble())
                               : QStringLiteral("%1 %2").arg(QLocale().toString(v.toDouble()), unit);
-    return v.isString() ? v.toString() : Tr::tr("—");
+    return v.isString() ? v.toString() : RemoteTileTr::tr("—");
 }
 
 // The agents publish stable English words; people read them in their language.
@@ -36,7 +36,7 @@ QString statusWords(const QJsonObject &live) {
                                               {QStringLiteral("sleep"), Mode::Sleep},
                                               {QStringLiteral("hibernation"), Mode::Hibernation}};
     if (!modes.contains(word))
-        return word.isEmpty() ? Tr::tr("—") : word;
+        return word.isEmpty() ? RemoteTileTr::tr("—") : word;
     model::PortStatus status;
     status.mode = modes.value(word);
     status.cooling = live.value(QStringLiteral("cooling")).toBool();
@@ -45,13 +45,13 @@ QString statusWords(const QJsonObject &live) {
 
 QString feederWords(const QJsonObject &feeder) {
     const QString word = feeder.value(QStringLiteral("status")).toString();
-    return word == QLatin1String("feeding") ? Tr::tr("Feeding")
-           : word == QLatin1String("idle")  ? Tr::tr("Not feeding")
-                                            : Tr::tr("—");
+    return word == QLatin1String("feeding") ? RemoteTileTr::tr("Feeding")
+           : word == QLatin1String("idle")  ? RemoteTileTr::tr("Not feeding")
+                                            : RemoteTileTr::tr("—");
 }
 
 QString feederLine(const QJsonObject &feeder) {
-    return Tr::tr("%1 · fed %2")
+    return RemoteTileTr::tr("%1 · fed %2")
         .arg(feederWords(feeder), text(feeder, "fed_mm", QStringLiteral("mm")));
 }
 
@@ -61,8 +61,8 @@ QString problemLine(const QJsonObject &problem) {
     if (port == 0)
         return what;
     if (problem.value(QStringLiteral("kind")).toString() == QLatin1String("alarm"))
-        return Tr::tr("Port %1 alarm: %2").arg(port).arg(what);
-    return Tr::tr("Port %1: %2").arg(port).arg(what);
+        return RemoteTileTr::tr("Port %1 alarm: %2").arg(port).arg(what);
+    return RemoteTileTr::tr("Port %1: %2").arg(port).arg(what);
 }
 
 model::Level levelFromWord(const QString &word) {
@@ -77,12 +77,12 @@ model::Level levelFromWord(const QString &word) {
 
 QString offlineText(std::optional<qint64> sinceMs, qint64 nowMs) {
     if (!sinceMs)
-        return Tr::tr("Agent offline");
+        return RemoteTileTr::tr("Agent offline");
     const QDateTime since = QDateTime::fromMSecsSinceEpoch(*sinceMs);
     const QString time = QLocale().toString(since.time(), QStringLiteral("HH:mm"));
     if (since.date() == QDateTime::fromMSecsSinceEpoch(nowMs).date())
-        return Tr::tr("Agent offline since %1").arg(time);
-    return Tr::tr("Agent offline since %1 %2")
+        return RemoteTileTr::tr("Agent offline since %1").arg(time);
+    return RemoteTileTr::tr("Agent offline since %1 %2")
         .arg(QLocale().toString(since.date(), QLocale::ShortFormat), time);
 }
 } // namespace

@@ -1,4 +1,5 @@
 #include "catalog.h"
+#include "frame.h"
 
 #include <QFile>
 #include <QtGlobal>
@@ -87,10 +88,6 @@ int Catalog::resolveToken(const QString &token, const FamilyInfo &family) const 
     return token.toInt();
 }
 
-static bool isDigit(char c) {
-    return c >= '0' && c <= '9';
-}
-
 std::optional<ResolvedCommand> Catalog::resolveSpec(const CommandSpec &spec,
                                                     const FamilyInfo &family,
                                                     const QByteArray &code,
@@ -102,11 +99,11 @@ std::optional<ResolvedCommand> Catalog::resolveSpec(const CommandSpec &spec,
         const char p = spec.pattern.at(i).toLatin1();
         const char c = code.at(i);
         if (p == 'x') {
-            if (!isDigit(c) || c - '0' < 1 || c - '0' > family.ports)
+            if (!isAsciiDigit(c) || c - '0' < 1 || c - '0' > family.ports)
                 return std::nullopt;
             r.port = c - '0';
         } else if (p == 'y') {
-            if (!isDigit(c) || !family.tools.contains(c - '0'))
+            if (!isAsciiDigit(c) || !family.tools.contains(c - '0'))
                 return std::nullopt;
             r.tool = c - '0';
         } else if (p != c) {

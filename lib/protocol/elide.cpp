@@ -5,7 +5,7 @@
 namespace tipscope::protocol {
 
 namespace {
-struct Tr {
+struct ElideTr {
     Q_DECLARE_TR_FUNCTIONS(Elide)
 };
 
@@ -36,7 +36,7 @@ QString elided(const QString &text, int maxChars) {
         appendShown(out, c);
     if (cut < 0)
         return out;
-    return Tr::tr("%1… (%2 characters)").arg(out).arg(characters);
+    return ElideTr::tr("%1… (%2 characters)").arg(out).arg(characters);
 }
 
 } // namespace tipscope::protocol

@@ -16,6 +16,11 @@ inline constexpr char kStx = 0x02;
 inline constexpr char kEtx = 0x03;
 inline constexpr int kMaxAddress = 99;
 
+// Command codes and data fields are ASCII: a digit is '0' to '9', whatever the locale.
+[[nodiscard]] constexpr bool isAsciiDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+
 enum class Header : char { Read = 'R', Write = 'W', Answer = 'A', Nak = 'N' };
 
 [[nodiscard]] std::optional<Header> headerFromChar(char c);

@@ -1,4 +1,5 @@
 #include "framedecoder.h"
+#include "frame.h"
 
 #include "protocollogging.h"
 
@@ -7,7 +8,7 @@
 namespace tipscope::protocol {
 
 namespace {
-struct Tr {
+struct FrameDecoderTr {
     Q_DECLARE_TR_FUNCTIONS(FrameDecoder)
 };
 } // namespace
@@ -15,24 +16,21 @@ struct Tr {
 QString decodeEventKindName(DecodeEvent::Kind kind) {
     switch (kind) {
     case DecodeEvent::Kind::Frame:
-        return Tr::tr("frame");
+        return FrameDecoderTr::tr("frame");
     case DecodeEvent::Kind::BccError:
-        return Tr::tr("BCC error");
+        return FrameDecoderTr::tr("BCC error");
     case DecodeEvent::Kind::FormatError:
-        return Tr::tr("format error");
+        return FrameDecoderTr::tr("format error");
     case DecodeEvent::Kind::Overflow:
-        return Tr::tr("overflow");
+        return FrameDecoderTr::tr("overflow");
     case DecodeEvent::Kind::Garbage:
-        return Tr::tr("garbage");
+        return FrameDecoderTr::tr("garbage");
     }
     return {};
 }
 
-static bool isDigit(char c) {
-    return c >= '0' && c <= '9';
-}
 static bool isCommandChar(char c) {
-    return isDigit(c) || (c >= 'A' && c <= 'Z');
+    return isAsciiDigit(c) || (c >= 'A' && c <= 'Z');
 }
 static bool isPrintable(char c) {
     return c >= 0x20 && c <= 0x7e;
@@ -46,37 +44,38 @@ Outcome<Frame, DecodeFailure> parseFrame(const QByteArray &raw) {
     using K = DecodeEvent::Kind;
     const qsizetype n = raw.size();
     if (n < 7 || raw.at(0) != kStx || raw.at(n - 2) != kEtx)
-        return fail(K::FormatError, Tr::tr("not STX…ETX BCC or too short"));
+        return fail(K::FormatError, FrameDecoderTr::tr("not STX…ETX BCC or too short"));
     const char expected = blockCheck(raw.left(n - 1));
     if (expected != raw.at(n - 1))
-        return fail(K::BccError, Tr::tr("BCC is %1, expected %2")
+        return fail(K::BccError, FrameDecoderTr::tr("BCC is %1, expected %2")
                                      .arg(quint8(raw.at(n - 1)), 2, 16, QLatin1Char('0'))
                                      .arg(quint8(expected), 2, 16, QLatin1Char('0')));
 
     const QByteArray body = raw.mid(1, n - 3);
     Frame f;
     qsizetype pos = 0;
-    if (isDigit(body.at(0))) {
-        if (body.size() < 8 || !isDigit(body.at(1)) || !isDigit(body.at(2)) || !isDigit(body.at(3)))
-            return fail(K::FormatError, Tr::tr("malformed addresses"));
+    if (isAsciiDigit(body.at(0))) {
+        if (body.size() < 8 || !isAsciiDigit(body.at(1)) || !isAsciiDigit(body.at(2)) ||
+            !isAsciiDigit(body.at(3)))
+            return fail(K::FormatError, FrameDecoderTr::tr("malformed addresses"));
         f.source = body.mid(0, 2).toInt();
         f.target = body.mid(2, 2).toInt();
         pos = 4;
     }
     if (body.size() < pos + 4)
-        return fail(K::FormatError, Tr::tr("too short for header and command"));
+        return fail(K::FormatError, FrameDecoderTr::tr("too short for header and command"));
     const auto header = headerFromChar(body.at(pos));
     if (!header)
-        return fail(K::FormatError, Tr::tr("unknown header"));
+        return fail(K::FormatError, FrameDecoderTr::tr("unknown header"));
     f.header = *header;
     f.command = body.mid(pos + 1, 3);
     for (char c : f.command)
         if (!isCommandChar(c))
-            return fail(K::FormatError, Tr::tr("command is not 3 letters or digits"));
+            return fail(K::FormatError, FrameDecoderTr::tr("command is not 3 letters or digits"));
     f.data = body.mid(pos + 4);
     for (char c : f.data)
         if (!isPrintable(c))
-            return fail(K::FormatError, Tr::tr("data field is not printable ASCII"));
+            return fail(K::FormatError, FrameDecoderTr::tr("data field is not printable ASCII"));
     return f;
 }
 
@@ -108,7 +107,7 @@ std::vector<DecodeEvent> FrameDecoder::feed(QByteArrayView chunk) {
             if (byte == kStx) {
                 // A frame cannot contain STX: the candidate was cut short; restart here.
                 emitRejected(out, DecodeEvent::Kind::FormatError,
-                             Tr::tr("frame interrupted by a new STX"));
+                             FrameDecoderTr::tr("frame interrupted by a new STX"));
                 m_candidate.append(byte);
                 m_state = State::InFrame;
             } else {
@@ -117,7 +116,7 @@ std::vector<DecodeEvent> FrameDecoder::feed(QByteArrayView chunk) {
                     m_state = State::AwaitBcc;
                 else if (m_candidate.size() > m_maxFrameSize - 1)
                     emitRejected(out, DecodeEvent::Kind::Overflow,
-                                 Tr::tr("no ETX within %1 bytes").arg(m_maxFrameSize));
+                                 FrameDecoderTr::tr("no ETX within %1 bytes").arg(m_maxFrameSize));
             }
             break;
         case State::AwaitBcc:
@@ -142,7 +141,7 @@ void FrameDecoder::flushGarbage(std::vector<DecodeEvent> &out) {
     DecodeEvent e;
     e.kind = DecodeEvent::Kind::Garbage;
     e.raw = m_garbage;
-    e.detail = Tr::tr("%n byte(s) outside any frame", nullptr, int(m_garbage.size()));
+    e.detail = FrameDecoderTr::tr("%n byte(s) outside any frame", nullptr, int(m_garbage.size()));
     logSkipped(e);
     out.push_back(std::move(e));
     m_garbage.clear();

@@ -7,7 +7,7 @@
 namespace tipscope::protocol {
 
 namespace {
-struct Tr {
+struct HexBytesTr {
     Q_DECLARE_TR_FUNCTIONS(HexBytes)
 };
 } // namespace
@@ -31,7 +31,8 @@ Outcome<QByteArray> parseHexBytes(const QString &text) {
         const QChar c = text.at(i);
         if (c.isSpace() || c == QLatin1Char(',') || c == QLatin1Char(':')) {
             if (pending >= 0)
-                return fail(Tr::tr("odd number of hex digits before position %1").arg(i + 1));
+                return fail(
+                    HexBytesTr::tr("odd number of hex digits before position %1").arg(i + 1));
             continue;
         }
         if (pending < 0 && c == QLatin1Char('0') && i + 1 < text.size() &&
@@ -41,20 +42,20 @@ Outcome<QByteArray> parseHexBytes(const QString &text) {
         }
         const int v = hexValue(c);
         if (v < 0)
-            return fail(Tr::tr("'%1' at position %2 is not a hex digit").arg(c).arg(i + 1));
+            return fail(HexBytesTr::tr("'%1' at position %2 is not a hex digit").arg(c).arg(i + 1));
         if (pending < 0) {
             pending = v;
         } else {
             out.append(char(pending * 16 + v));
             pending = -1;
             if (out.size() > kMaxHexInputBytes)
-                return fail(Tr::tr("more than %1 bytes").arg(kMaxHexInputBytes));
+                return fail(HexBytesTr::tr("more than %1 bytes").arg(kMaxHexInputBytes));
         }
     }
     if (pending >= 0)
-        return fail(Tr::tr("odd number of hex digits"));
+        return fail(HexBytesTr::tr("odd number of hex digits"));
     if (out.isEmpty())
-        return fail(Tr::tr("no bytes given"));
+        return fail(HexBytesTr::tr("no bytes given"));
     return out;
 }
 

@@ -9,7 +9,7 @@
 namespace tipscope::protocol {
 
 namespace {
-struct Tr {
+struct ValueCodecTr {
     Q_DECLARE_TR_FUNCTIONS(ValueCodec)
 };
 } // namespace
@@ -40,13 +40,13 @@ QString allowedText(const ResolvedCommand &cmd) {
     case ValueKind::Number:
     case ValueKind::Delay: {
         QString unit = wireUnitSymbol(cmd);
-        QString t = Tr::tr("%1 to %2%3")
+        QString t = ValueCodecTr::tr("%1 to %2%3")
                         .arg(formatNumber(cmd, cmd.min), formatNumber(cmd, cmd.max),
                              unit.isEmpty() ? QString() : QLatin1Char(' ') + unit);
         if (s.step > 1)
-            t += Tr::tr(" in steps of %1").arg(s.step);
+            t += ValueCodecTr::tr(" in steps of %1").arg(s.step);
         if (!s.special.isEmpty())
-            t += Tr::tr(", or %1").arg(joinSpecials(s.special));
+            t += ValueCodecTr::tr(", or %1").arg(joinSpecials(s.special));
         return t;
     }
     case ValueKind::Enum:
@@ -54,19 +54,20 @@ QString allowedText(const ResolvedCommand &cmd) {
         QStringList items;
         for (auto it = cmd.values.begin(); it != cmd.values.end(); ++it)
             items.append(QStringLiteral("%1 (%2)").arg(it.key()).arg(catalogText(it.value())));
-        return Tr::tr("one of %1").arg(items.join(QLatin1String(", ")));
+        return ValueCodecTr::tr("one of %1").arg(items.join(QLatin1String(", ")));
     }
     case ValueKind::Action:
-        return Tr::tr("no value (the command carries %1)").arg(QString::fromLatin1(s.fixedData));
+        return ValueCodecTr::tr("no value (the command carries %1)")
+            .arg(QString::fromLatin1(s.fixedData));
     case ValueKind::Hex:
     case ValueKind::Text:
-        return Tr::tr("nothing: it is read-only");
+        return ValueCodecTr::tr("nothing: it is read-only");
     }
     return {};
 }
 
 static QString refused(const ResolvedCommand &cmd, qint64 value) {
-    return Tr::tr("%1 refused for %2 (%3): allowed is %4")
+    return ValueCodecTr::tr("%1 refused for %2 (%3): allowed is %4")
         .arg(formatNumber(cmd, value), QString::fromLatin1(cmd.code), catalogText(cmd.spec->name),
              allowedText(cmd));
 }
@@ -75,13 +76,13 @@ QString validate(const ResolvedCommand &cmd, qint64 value) {
     const CommandSpec &s = *cmd.spec;
     const QString code = QString::fromLatin1(cmd.code);
     if (cmd.direction != Direction::Write || !s.writable)
-        return Tr::tr("%1 cannot be written").arg(code);
+        return ValueCodecTr::tr("%1 cannot be written").arg(code);
     switch (s.kind) {
     case ValueKind::Action:
         return {};
     case ValueKind::Hex:
     case ValueKind::Text:
-        return Tr::tr("%1 cannot be written").arg(code);
+        return ValueCodecTr::tr("%1 cannot be written").arg(code);
     case ValueKind::Enum:
     case ValueKind::Flags:
         if (cmd.values.contains(int(value)) && value == qint64(int(value)))
@@ -178,12 +179,12 @@ Outcome<qint64> parseUserValue(const ResolvedCommand &cmd, const QString &text) 
         if (auto d = parseDelayText(t))
             return *d;
         return failure(
-            Tr::tr("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(elided(t)));
+            ValueCodecTr::tr("'%1' is not a delay in seconds such as 1.6 or 01.60").arg(elided(t)));
     }
     bool ok = false;
     const qint64 v = t.toLongLong(&ok);
     if (!ok)
-        return failure(Tr::tr("'%1' is not a whole number; %2 takes %3")
+        return failure(ValueCodecTr::tr("'%1' is not a whole number; %2 takes %3")
                            .arg(elided(t), QString::fromLatin1(cmd.code), allowedText(cmd)));
     return v;
 }

@@ -12,7 +12,7 @@
 namespace tipscope::link {
 namespace {
 
-struct Tr {
+struct PortDiagnosticsTr {
     Q_DECLARE_TR_FUNCTIONS(PortDiagnostics)
 };
 
@@ -34,7 +34,8 @@ QString holderList(const QList<qint64> &pids, const QString &procRoot) {
         QString name = processName(pid, procRoot);
         // A second connection in this very program: "close that program" alone would mislead.
         if (pid == QCoreApplication::applicationPid())
-            name += name.isEmpty() ? Tr::tr("this program") : Tr::tr(", this program");
+            name += name.isEmpty() ? PortDiagnosticsTr::tr("this program")
+                                   : PortDiagnosticsTr::tr(", this program");
         holders << (name.isEmpty() ? QStringLiteral("PID %1").arg(pid)
                                    : QStringLiteral("PID %1 (%2)").arg(pid).arg(name));
     }
@@ -43,15 +44,19 @@ QString holderList(const QList<qint64> &pids, const QString &procRoot) {
 
 QString explainNoAccess(const QString &systemLocation) {
     const QString group = QFileInfo(detail::deviceLocation(systemLocation)).group();
-    const QString fix = Tr::tr("run `sudo usermod -aG %1 $USER`, then log out and back in.");
+    const QString fix =
+        PortDiagnosticsTr::tr("run `sudo usermod -aG %1 $USER`, then log out and back in.");
     if (group.isEmpty() || group == kDialout)
-        return Tr::tr("You are not allowed to open %1: %2").arg(systemLocation, fix.arg(kDialout));
-    if (group == QLatin1String("root"))
-        return Tr::tr("You are not allowed to open %1, and it belongs to group root rather than "
-                      "dialout, so joining a group will not help until a udev rule gives it "
-                      "GROUP=\"dialout\". Then %2")
+        return PortDiagnosticsTr::tr("You are not allowed to open %1: %2")
             .arg(systemLocation, fix.arg(kDialout));
-    return Tr::tr("You are not allowed to open %1, which belongs to group %2 (not dialout): %3")
+    if (group == QLatin1String("root"))
+        return PortDiagnosticsTr::tr(
+                   "You are not allowed to open %1, and it belongs to group root rather than "
+                   "dialout, so joining a group will not help until a udev rule gives it "
+                   "GROUP=\"dialout\". Then %2")
+            .arg(systemLocation, fix.arg(kDialout));
+    return PortDiagnosticsTr::tr(
+               "You are not allowed to open %1, which belongs to group %2 (not dialout): %3")
         .arg(systemLocation, group, fix.arg(group));
 }
 
@@ -93,24 +98,29 @@ QString explainOpenFailure(const QString &systemLocation, QSerialPort::SerialPor
         // telling the user to change groups then would send them the wrong way.
         const QList<qint64> holders = processesHolding(systemLocation, procRoot);
         if (!holders.isEmpty())
-            return Tr::tr("%1 is busy: it is held by %2. Close that connection, then try again.")
+            return PortDiagnosticsTr::tr(
+                       "%1 is busy: it is held by %2. Close that connection, then try again.")
                 .arg(systemLocation, holderList(holders, procRoot));
         return explainNoAccess(systemLocation);
     }
     case QSerialPort::DeviceNotFoundError:
-        return Tr::tr("There is no such port: %1. The adapter may be unplugged, or the port name "
-                      "may be mistyped.")
+        return PortDiagnosticsTr::tr(
+                   "There is no such port: %1. The adapter may be unplugged, or the port name "
+                   "may be mistyped.")
             .arg(systemLocation);
     case QSerialPort::OpenError:
-        return withQtReason(Tr::tr("%1 is already open in TipScope; close that connection first")
-                                .arg(systemLocation),
-                            qtErrorString);
+        return withQtReason(
+            PortDiagnosticsTr::tr("%1 is already open in TipScope; close that connection first")
+                .arg(systemLocation),
+            qtErrorString);
     case QSerialPort::ResourceError:
-        return withQtReason(Tr::tr("%1 stopped working, perhaps because the adapter was unplugged")
-                                .arg(systemLocation),
-                            qtErrorString);
+        return withQtReason(
+            PortDiagnosticsTr::tr("%1 stopped working, perhaps because the adapter was unplugged")
+                .arg(systemLocation),
+            qtErrorString);
     default:
-        return withQtReason(Tr::tr("Could not open %1").arg(systemLocation), qtErrorString);
+        return withQtReason(PortDiagnosticsTr::tr("Could not open %1").arg(systemLocation),
+                            qtErrorString);
     }
 }
 

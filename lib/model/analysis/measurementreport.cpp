@@ -10,7 +10,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct MeasurementReportTr {
     Q_DECLARE_TR_FUNCTIONS(MeasurementReport)
 };
 
@@ -29,7 +29,7 @@ QString statsLine(const TelemetryBuffer &buffer, const QString &series,
         return {};
     SeriesFormat mean = f;
     mean.decimals = f.decimals + 1;
-    return Tr::tr("%1: min %2, max %3, mean %4")
+    return MeasurementReportTr::tr("%1: min %2, max %3, mean %4")
         .arg(seriesTitle(series), f.format(f.toDisplay(s.min)), f.format(f.toDisplay(s.max)),
              mean.format(double(s.mean) * f.scale + f.offset));
 }
@@ -38,16 +38,19 @@ QStringList heatUpLines(const PortMeasurements &m, const SeriesFormat &temp, int
     QStringList out;
     for (qsizetype i = m.heatUps.size() - 1; i >= 0 && out.size() < maxListed; --i) {
         const HeatUp &h = m.heatUps.at(i);
-        const QString what = h.wake ? Tr::tr("wake") : Tr::tr("heat-up");
+        const QString what =
+            h.wake ? MeasurementReportTr::tr("wake") : MeasurementReportTr::tr("heat-up");
         const QString target = temp.format(temp.toDisplay(h.target));
-        out.append(h.reachedMs ? Tr::tr("%1 at %2 to %3: %4")
-                                     .arg(what, clock(h.startMs), target,
-                                          durationText(*h.reachedMs - h.startMs))
-                               : Tr::tr("%1 at %2 to %3: not reached in this window")
-                                     .arg(what, clock(h.startMs), target));
+        out.append(
+            h.reachedMs
+                ? MeasurementReportTr::tr("%1 at %2 to %3: %4")
+                      .arg(what, clock(h.startMs), target, durationText(*h.reachedMs - h.startMs))
+                : MeasurementReportTr::tr("%1 at %2 to %3: not reached in this window")
+                      .arg(what, clock(h.startMs), target));
     }
     if (m.heatUps.size() > maxListed)
-        out.append(Tr::tr("… %n more heat-up(s)", nullptr, int(m.heatUps.size() - maxListed)));
+        out.append(MeasurementReportTr::tr("… %n more heat-up(s)", nullptr,
+                                           int(m.heatUps.size() - maxListed)));
     return out;
 }
 
@@ -56,14 +59,16 @@ QStringList recoveryLines(const PortMeasurements &m, const SeriesFormat &temp, i
     for (qsizetype i = m.recoveries.size() - 1; i >= 0 && out.size() < maxListed; --i) {
         const Recovery &r = m.recoveries.at(i);
         const QString lowest = temp.format(temp.toDisplay(r.lowest));
-        out.append(r.recoveredMs ? Tr::tr("recovery at %1: %2 (dip to %3)")
-                                       .arg(clock(r.startMs),
-                                            durationText(*r.recoveredMs - r.startMs), lowest)
-                                 : Tr::tr("dip at %1 to %2: not recovered in this window")
-                                       .arg(clock(r.startMs), lowest));
+        out.append(
+            r.recoveredMs
+                ? MeasurementReportTr::tr("recovery at %1: %2 (dip to %3)")
+                      .arg(clock(r.startMs), durationText(*r.recoveredMs - r.startMs), lowest)
+                : MeasurementReportTr::tr("dip at %1 to %2: not recovered in this window")
+                      .arg(clock(r.startMs), lowest));
     }
     if (m.recoveries.size() > maxListed)
-        out.append(Tr::tr("… %n more recovery(s)", nullptr, int(m.recoveries.size() - maxListed)));
+        out.append(MeasurementReportTr::tr("… %n more recovery(s)", nullptr,
+                                           int(m.recoveries.size() - maxListed)));
     return out;
 }
 } // namespace
@@ -71,10 +76,14 @@ QStringList recoveryLines(const PortMeasurements &m, const SeriesFormat &temp, i
 QString durationText(qint64 ms) {
     const QLocale locale;
     if (ms < 60'000)
-        return Tr::tr("%1 s").arg(locale.toString(double(ms) / 1000, 'f', 1));
+        return MeasurementReportTr::tr("%1 s").arg(locale.toString(double(ms) / 1000, 'f', 1));
     if (ms < 3600'000)
-        return Tr::tr("%1 min %2 s").arg(ms / 60'000).arg(ms / 1000 % 60, 2, 10, QLatin1Char('0'));
-    return Tr::tr("%1 h %2 min").arg(ms / 3600'000).arg(ms / 60'000 % 60, 2, 10, QLatin1Char('0'));
+        return MeasurementReportTr::tr("%1 min %2 s")
+            .arg(ms / 60'000)
+            .arg(ms / 1000 % 60, 2, 10, QLatin1Char('0'));
+    return MeasurementReportTr::tr("%1 h %2 min")
+        .arg(ms / 3600'000)
+        .arg(ms / 60'000 % 60, 2, 10, QLatin1Char('0'));
 }
 
 QString measurementReport(const Telemetry &telemetry, const QList<ChartChannel> &channels,
@@ -100,7 +109,7 @@ QString measurementReport(const Telemetry &telemetry, const QList<ChartChannel> 
                 facts.append(line);
         }
         if (facts.isEmpty()) {
-            lines.append(Tr::tr("%1: no samples in this window").arg(c.title));
+            lines.append(MeasurementReportTr::tr("%1: no samples in this window").arg(c.title));
             continue;
         }
         // Three facts a line: with the transistor and transformer curves on, one line of five

@@ -13,7 +13,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct ChartSeriesTr {
     Q_DECLARE_TR_FUNCTIONS(ChartSeries)
 };
 
@@ -100,23 +100,23 @@ SeriesFormat seriesFormat(const QString &series, TemperatureUnit unit) {
 
 QString seriesTitle(const QString &series) {
     if (series == QLatin1String("tip"))
-        return Tr::tr("Tip");
+        return ChartSeriesTr::tr("Tip");
     if (series == QLatin1String("setpoint"))
-        return Tr::tr("Setpoint");
+        return ChartSeriesTr::tr("Setpoint");
     if (series == QLatin1String("power"))
-        return Tr::tr("Power");
+        return ChartSeriesTr::tr("Power");
     if (series == QLatin1String("status"))
-        return Tr::tr("Status");
+        return ChartSeriesTr::tr("Status");
     if (series == QLatin1String("fed"))
-        return Tr::tr("Fed length");
+        return ChartSeriesTr::tr("Fed length");
     if (series == QLatin1String("speed"))
-        return Tr::tr("Speed");
+        return ChartSeriesTr::tr("Speed");
     if (series == QLatin1String("feeding"))
-        return Tr::tr("Feeding");
+        return ChartSeriesTr::tr("Feeding");
     if (series == QLatin1String("transistor"))
-        return Tr::tr("Transistor");
+        return ChartSeriesTr::tr("Transistor");
     if (series == QLatin1String("transformer"))
-        return Tr::tr("Transformer");
+        return ChartSeriesTr::tr("Transformer");
     return series;
 }
 
@@ -128,7 +128,7 @@ QString traceName(const QString &series, int port) {
             return QCoreApplication::translate("ChartSeries", n.alone);
         return QCoreApplication::translate("ChartSeries", n.onPort).arg(port);
     }
-    return port == 0 ? series : Tr::tr("P%1 %2").arg(port).arg(series);
+    return port == 0 ? series : ChartSeriesTr::tr("P%1 %2").arg(port).arg(series);
 }
 
 QList<ChartChannel> sessionChannels(Session &session) {
@@ -147,7 +147,7 @@ QList<ChartChannel> sessionChannels(Session &session) {
                 c.key = TelemetryRecorder::keyOf(*station, port->number());
                 c.port = port->number();
                 c.id = QStringLiteral("port%1").arg(c.port);
-                c.title = Tr::tr("Port %1").arg(c.port);
+                c.title = ChartSeriesTr::tr("Port %1").arg(c.port);
                 describe(*station, c);
                 c.tool = port->tool() ? port->toolName() : QString();
                 if (const auto high = numberOf(port->parameter(protocol::Role::HighAlarm)))
@@ -162,7 +162,7 @@ QList<ChartChannel> sessionChannels(Session &session) {
             ChartChannel c;
             c.key = TelemetryRecorder::keyOf(*feeder, 0);
             c.id = QStringLiteral("feeder");
-            c.title = Tr::tr("Feeder");
+            c.title = ChartSeriesTr::tr("Feeder");
             describe(*feeder, c);
             if (const auto *buffer = session.telemetry().buffer(c.key))
                 c.series = buffer->seriesNames();

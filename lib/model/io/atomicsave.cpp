@@ -8,7 +8,7 @@
 namespace tipscope::model::io {
 
 namespace {
-struct Tr {
+struct AtomicSaveTr {
     Q_DECLARE_TR_FUNCTIONS(AtomicSave)
 };
 } // namespace
@@ -24,7 +24,7 @@ protocol::Outcome<void> saveAtomically(const QString &path,
     if (f.open(QIODevice::WriteOnly) && write(f) && f.commit())
         return {};
     return protocol::failure(
-        Tr::tr("cannot write %1: %2").arg(protocol::elidedPath(path), f.errorString()));
+        AtomicSaveTr::tr("cannot write %1: %2").arg(protocol::elidedPath(path), f.errorString()));
 }
 
 } // namespace tipscope::model::io

@@ -8,7 +8,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct JointLimitRulesTr {
     Q_DECLARE_TR_FUNCTIONS(JointLimitRules)
 };
 
@@ -45,27 +45,30 @@ void apply(const JointLimitRule &rule, JointLimits &limits) {
 
 Outcome<qint64> recoveryMsOf(double seconds) {
     if (!std::isfinite(seconds) || seconds <= 0 || seconds > kMaxRecoveryS)
-        return failure(Tr::tr("the longest recovery must be more than 0 s and at most %1 s")
-                           .arg(kMaxRecoveryS));
+        return failure(
+            JointLimitRulesTr::tr("the longest recovery must be more than 0 s and at most %1 s")
+                .arg(kMaxRecoveryS));
     return qRound64(seconds * 1000);
 }
 
 Outcome<int> dipOf(double k) {
     if (!std::isfinite(k) || k <= 0 || k > kMaxDipK || k != std::floor(k))
         return failure(
-            Tr::tr("the deepest dip must be a whole number of kelvin from 1 to %1").arg(kMaxDipK));
+            JointLimitRulesTr::tr("the deepest dip must be a whole number of kelvin from 1 to %1")
+                .arg(kMaxDipK));
     return int(k);
 }
 
 Outcome<double> wearOf(double share) {
     if (!std::isfinite(share) || share <= 0 || share > 10)
-        return failure(Tr::tr("the tip wear share must be more than 0 and at most 10"));
+        return failure(
+            JointLimitRulesTr::tr("the tip wear share must be more than 0 and at most 10"));
     return share;
 }
 
 Outcome<int> portOf(double port) {
     if (!std::isfinite(port) || port < 1 || port > 4 || port != std::floor(port))
-        return failure(Tr::tr("a port is a number from 1 to 4"));
+        return failure(JointLimitRulesTr::tr("a port is a number from 1 to 4"));
     return int(port);
 }
 
@@ -103,7 +106,7 @@ Outcome<JointLimitRule> ruleFromJson(const QJsonObject &o) {
         if (!o.contains(name))
             continue;
         if (!o.value(name).isDouble())
-            return failure(Tr::tr("%1 must be a number").arg(name));
+            return failure(JointLimitRulesTr::tr("%1 must be a number").arg(name));
         if (const auto set = setLimit(rule, name, o.value(name).toDouble()); !set)
             return failure(set.error());
     }
@@ -162,13 +165,14 @@ Outcome<JointLimitRules> JointLimitRules::fromJson(const QJsonObject &json) {
     JointLimitRules out;
     const auto defaults = ruleFromJson(json.value(QStringLiteral("default")).toObject());
     if (!defaults)
-        return failure(Tr::tr("joint limits: %1").arg(defaults.error()));
+        return failure(JointLimitRulesTr::tr("joint limits: %1").arg(defaults.error()));
     apply(defaults.value(), out.m_defaults);
     const QJsonArray rules = json.value(QStringLiteral("rules")).toArray();
     for (qsizetype i = 0; i < rules.size(); ++i) {
         const auto rule = ruleFromJson(rules.at(i).toObject());
         if (!rule)
-            return failure(Tr::tr("joint limit rule %1: %2").arg(i + 1).arg(rule.error()));
+            return failure(
+                JointLimitRulesTr::tr("joint limit rule %1: %2").arg(i + 1).arg(rule.error()));
         out.add(rule.value());
     }
     return out;
@@ -195,15 +199,17 @@ Outcome<JointLimitRule> JointLimitRules::parseRule(const QString &text) {
             if (const auto set = setLimit(rule, kWords.value(name), number); !set)
                 return failure(set.error());
         } else {
-            return failure(Tr::tr("“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, "
-                                  "dip=KELVIN or wear=SHARE, joined by commas")
+            return failure(JointLimitRulesTr::tr(
+                               "“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, "
+                               "dip=KELVIN or wear=SHARE, joined by commas")
                                .arg(part.trimmed()));
         }
     }
     if (!rule.maxRecoveryMs && !rule.maxDipK && !rule.wearShare)
-        return failure(Tr::tr("“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or "
-                              "wear=SHARE")
-                           .arg(text));
+        return failure(
+            JointLimitRulesTr::tr("“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or "
+                                  "wear=SHARE")
+                .arg(text));
     return rule;
 }
 

@@ -13,7 +13,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct JointLimitsFileTr {
     Q_DECLARE_TR_FUNCTIONS(JointLimitsFile)
 };
 constexpr qint64 kMaxBytes = 1024 * 1024;
@@ -32,13 +32,15 @@ protocol::Outcome<JointLimitRules> loadJointLimits(const QString &path) {
         case Kind::Missing:
             return JointLimitRules{};
         case Kind::Unreadable:
-            return protocol::failure(
-                Tr::tr("cannot read the joint limits %1: %2").arg(path, problem->detail));
+            return protocol::failure(JointLimitsFileTr::tr("cannot read the joint limits %1: %2")
+                                         .arg(path, problem->detail));
         case Kind::TooBig:
-            return protocol::failure(Tr::tr("the joint limits %1 are too big").arg(path));
+            return protocol::failure(
+                JointLimitsFileTr::tr("the joint limits %1 are too big").arg(path));
         case Kind::NotAnObject:
             return protocol::failure(
-                Tr::tr("the joint limits %1 are not a JSON object: %2").arg(path, problem->detail));
+                JointLimitsFileTr::tr("the joint limits %1 are not a JSON object: %2")
+                    .arg(path, problem->detail));
         }
     }
     const auto rules = JointLimitRules::fromJson(std::get<QJsonObject>(read));

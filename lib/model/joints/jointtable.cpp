@@ -11,7 +11,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct JointTableModelTr {
     Q_DECLARE_TR_FUNCTIONS(JointTableModel)
 };
 
@@ -152,19 +152,19 @@ QVariant JointTableModel::headerData(int section, Qt::Orientation orientation, i
 }
 
 QString JointTableModel::secondsText(qint64 ms) {
-    return Tr::tr("%1 s").arg(QLocale().toString(ms / 1000.0, 'f', 1));
+    return JointTableModelTr::tr("%1 s").arg(QLocale().toString(ms / 1000.0, 'f', 1));
 }
 
 QString JointTableModel::verdictText(JointVerdict verdict) {
     switch (verdict) {
     case JointVerdict::Ok:
-        return Tr::tr("ok");
+        return JointTableModelTr::tr("ok");
     case JointVerdict::SlowRecovery:
-        return Tr::tr("slow recovery");
+        return JointTableModelTr::tr("slow recovery");
     case JointVerdict::TooDeep:
-        return Tr::tr("too deep");
+        return JointTableModelTr::tr("too deep");
     case JointVerdict::Incomplete:
-        return Tr::tr("incomplete");
+        return JointTableModelTr::tr("incomplete");
     }
     return {};
 }
@@ -190,13 +190,13 @@ QString JointTableModel::text(const JointRow &row, int column, TemperatureUnit u
             .arg(shownDifference(j.dipDepth, unit))
             .arg(differenceUnitText(unit));
     case Recovery:
-        return j.recoveryMs ? secondsText(*j.recoveryMs) : Tr::tr("none");
+        return j.recoveryMs ? secondsText(*j.recoveryMs) : JointTableModelTr::tr("none");
     case Duration:
         return secondsText(j.durationMs);
     case PowerPeak:
         return QStringLiteral("%1 %").arg(j.powerPeak);
     case PowerIntegral:
-        return Tr::tr("%1 %·s").arg(locale.toString(j.powerIntegral, 'f', 1));
+        return JointTableModelTr::tr("%1 %·s").arg(locale.toString(j.powerIntegral, 'f', 1));
     case Verdict:
         return verdictText(j.verdict);
     case WorkOrder:
@@ -209,31 +209,31 @@ QString JointTableModel::text(const JointRow &row, int column, TemperatureUnit u
 QString JointTableModel::columnName(int column) {
     switch (column) {
     case Time:
-        return Tr::tr("Time");
+        return JointTableModelTr::tr("Time");
     case Device:
-        return Tr::tr("Device");
+        return JointTableModelTr::tr("Device");
     case Port:
-        return Tr::tr("Port");
+        return JointTableModelTr::tr("Port");
     case Tool:
-        return Tr::tr("Tool");
+        return JointTableModelTr::tr("Tool");
     case Setpoint:
-        return Tr::tr("Setpoint");
+        return JointTableModelTr::tr("Setpoint");
     case Lowest:
-        return Tr::tr("Lowest");
+        return JointTableModelTr::tr("Lowest");
     case Dip:
-        return Tr::tr("Dip");
+        return JointTableModelTr::tr("Dip");
     case Recovery:
-        return Tr::tr("Recovery");
+        return JointTableModelTr::tr("Recovery");
     case Duration:
-        return Tr::tr("Duration");
+        return JointTableModelTr::tr("Duration");
     case PowerPeak:
-        return Tr::tr("Power peak");
+        return JointTableModelTr::tr("Power peak");
     case PowerIntegral:
-        return Tr::tr("Power·time");
+        return JointTableModelTr::tr("Power·time");
     case Verdict:
-        return Tr::tr("Verdict");
+        return JointTableModelTr::tr("Verdict");
     case WorkOrder:
-        return Tr::tr("Work order");
+        return JointTableModelTr::tr("Work order");
     default:
         return {};
     }

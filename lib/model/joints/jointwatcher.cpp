@@ -2,19 +2,17 @@
 
 #include "model/displayunits.h"
 
+#include "model/timetext.h"
+
 #include <QCoreApplication>
 #include <QLocale>
 
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct JointWatcherTr {
     Q_DECLARE_TR_FUNCTIONS(JointWatcher)
 };
-
-QString seconds(qint64 ms) {
-    return QLocale().toString(double(ms) / 1000, 'f', 1);
-}
 } // namespace
 
 JointWatcher::JointWatcher(Telemetry &telemetry, QObject *parent)
@@ -108,14 +106,16 @@ void JointWatcher::emitIfEnded(const std::optional<JointRecord> &joint) {
 QString JointWatcher::warningText(const JointRecord &joint, const JointLimits &limits) {
     switch (joint.verdict) {
     case JointVerdict::TooDeep:
-        return Tr::tr("joint too deep: the tip fell %1 K below the setpoint (limit %2 K)")
+        return JointWatcherTr::tr(
+                   "joint too deep: the tip fell %1 K below the setpoint (limit %2 K)")
             .arg(joint.dipDepth)
             .arg(limits.maxDipK);
     case JointVerdict::SlowRecovery:
         return joint.recoveryMs
-                   ? Tr::tr("joint recovered slowly: %1 s (limit %2 s)")
-                         .arg(seconds(*joint.recoveryMs), seconds(limits.maxRecoveryMs))
-                   : Tr::tr("joint did not recover within %1 s").arg(seconds(joint.durationMs));
+                   ? JointWatcherTr::tr("joint recovered slowly: %1 s (limit %2 s)")
+                         .arg(secondsText(*joint.recoveryMs), secondsText(limits.maxRecoveryMs))
+                   : JointWatcherTr::tr("joint did not recover within %1 s")
+                         .arg(secondsText(joint.durationMs));
     case JointVerdict::Ok:
     case JointVerdict::Incomplete:
         break;

@@ -1,5 +1,7 @@
 #include "model/joints/tipwear.h"
 
+#include "model/timetext.h"
+
 #include <QCoreApplication>
 #include <QLocale>
 #include <algorithm>
@@ -7,7 +9,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct TipWearTr {
     Q_DECLARE_TR_FUNCTIONS(TipWear)
 };
 
@@ -20,10 +22,6 @@ template <typename Values> qint64 median(const Values &values) {
     std::sort(sorted.begin(), sorted.end());
     const size_t n = sorted.size();
     return n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
-}
-
-QString seconds(qint64 ms) {
-    return QLocale().toString(double(ms) / 1000, 'f', 1);
 }
 } // namespace
 
@@ -62,11 +60,13 @@ std::optional<qint64> TipWear::baselineMs(const DeviceIdentity &device, int port
 }
 
 QString TipWear::noticeText(const Notice &notice) {
-    return Tr::tr("tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when "
-                  "it was plugged in")
-        .arg(notice.tool.isEmpty() ? Tr::tr("the tool") : notice.tool, seconds(notice.recentMs))
+    return TipWearTr::tr(
+               "tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when "
+               "it was plugged in")
+        .arg(notice.tool.isEmpty() ? TipWearTr::tr("the tool") : notice.tool,
+             secondsText(notice.recentMs))
         .arg(kWindow)
-        .arg(seconds(notice.baselineMs));
+        .arg(secondsText(notice.baselineMs));
 }
 
 } // namespace tipscope::model

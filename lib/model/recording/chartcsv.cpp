@@ -10,7 +10,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct ChartCsvTr {
     Q_DECLARE_TR_FUNCTIONS(ChartCsv)
 };
 
@@ -203,7 +203,7 @@ QString ChartCsvWriter::errorString() const {
     if (m_out.status() == QTextStream::Ok)
         return {};
     const QString why = m_device.errorString();
-    return why.isEmpty() ? Tr::tr("the file could not be written") : why;
+    return why.isEmpty() ? ChartCsvTr::tr("the file could not be written") : why;
 }
 
 } // namespace tipscope::model

@@ -13,7 +13,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct ChartCsvParserTr {
     Q_DECLARE_TR_FUNCTIONS(ChartCsvReader)
 };
 
@@ -95,7 +95,7 @@ bool isAscii(QByteArrayView bytes) {
 ChartCsvParser::ChartCsvParser() = default;
 
 bool ChartCsvParser::fail(const QString &message) {
-    m_error = m_line > 0 ? Tr::tr("line %1: %2").arg(m_line).arg(message) : message;
+    m_error = m_line > 0 ? ChartCsvParserTr::tr("line %1: %2").arg(m_line).arg(message) : message;
     return false;
 }
 
@@ -103,7 +103,7 @@ bool ChartCsvParser::feed(const char *data, qsizetype size) {
     if (m_firstChunk && size > 0) {
         m_firstChunk = false;
         if (std::memchr(data, 0, size_t(qMin(size, kBinaryProbeBytes))))
-            return fail(Tr::tr("the file holds binary data, not CSV text"));
+            return fail(ChartCsvParserTr::tr("the file holds binary data, not CSV text"));
     }
     qsizetype start = 0;
     while (start < size) {
@@ -114,8 +114,9 @@ bool ChartCsvParser::feed(const char *data, qsizetype size) {
             if (m_pending.size() <= ChartCsvReader::kMaxLineBytes + 1)
                 return true;
             ++m_line;
-            return fail(Tr::tr("the line is longer than %1 bytes (is this a chart CSV?)")
-                            .arg(ChartCsvReader::kMaxLineBytes));
+            return fail(
+                ChartCsvParserTr::tr("the line is longer than %1 bytes (is this a chart CSV?)")
+                    .arg(ChartCsvReader::kMaxLineBytes));
         }
         const qsizetype end = newline - data;
         bool ok = false;
@@ -138,22 +139,24 @@ bool ChartCsvParser::line(QByteArrayView bytes) {
     while (bytes.endsWith('\r'))
         bytes.chop(1);
     if (bytes.size() > ChartCsvReader::kMaxLineBytes)
-        return fail(Tr::tr("the line is longer than %1 bytes (is this a chart CSV?)")
+        return fail(ChartCsvParserTr::tr("the line is longer than %1 bytes (is this a chart CSV?)")
                         .arg(ChartCsvReader::kMaxLineBytes));
     if (m_line == 1 && bytes.startsWith("\xEF\xBB\xBF"))
         bytes = bytes.sliced(3); // the byte-order mark some spreadsheets write
     if (!bytes.isEmpty() && std::memchr(bytes.data(), 0, size_t(bytes.size())))
-        return fail(Tr::tr("the file holds binary data, not CSV text"));
+        return fail(ChartCsvParserTr::tr("the file holds binary data, not CSV text"));
     if (!isAscii(bytes)) {
         QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
         const QString checked = utf8.decode(bytes);
         if (utf8.hasError())
-            return fail(Tr::tr("the text is not UTF-8 (save the file as \"CSV UTF-8\")"));
+            return fail(
+                ChartCsvParserTr::tr("the text is not UTF-8 (save the file as \"CSV UTF-8\")"));
     }
     if (bytes.startsWith('#')) {
         if (++m_comments > ChartCsvReader::kMaxCommentLines)
-            return fail(Tr::tr("more than %1 comment lines (\"#\"); a recording has a few, and "
-                               "one per channel")
+            return fail(ChartCsvParserTr::tr(
+                            "more than %1 comment lines (\"#\"); a recording has a few, and "
+                            "one per channel")
                             .arg(ChartCsvReader::kMaxCommentLines));
         comment(QString::fromUtf8(bytes));
         return true;
@@ -161,7 +164,7 @@ bool ChartCsvParser::line(QByteArrayView bytes) {
     if (bytes.trimmed().isEmpty())
         return true;
     if (!csv::splitLine(bytes, m_cells))
-        return fail(Tr::tr("a quoted cell is not closed"));
+        return fail(ChartCsvParserTr::tr("a quoted cell is not closed"));
     return m_haveHeader ? row(m_cells) : header(m_cells);
 }
 
@@ -187,10 +190,11 @@ bool ChartCsvParser::header(const csv::Cells &cells) {
     static const QRegularExpression name(
         QStringLiteral("^(port(\\d+)|feeder) (\\w+)(?: \\[(.+)\\])?$"));
     if (cells.at(0) != QByteArrayView(chartcsv::kTimeColumn))
-        return fail(Tr::tr("the header row should start with \"time\" (is this a chart CSV "
-                           "written by TipScope?)"));
+        return fail(
+            ChartCsvParserTr::tr("the header row should start with \"time\" (is this a chart CSV "
+                                 "written by TipScope?)"));
     if (cells.size() > ChartCsvReader::kMaxColumns)
-        return fail(Tr::tr("%1 columns; replay reads at most %2")
+        return fail(ChartCsvParserTr::tr("%1 columns; replay reads at most %2")
                         .arg(cells.size())
                         .arg(ChartCsvReader::kMaxColumns));
     QList<ChartChannel> &channels = m_data.recording->channels;
@@ -203,10 +207,11 @@ bool ChartCsvParser::header(const csv::Cells &cells) {
         }
         const auto m = name.match(cell);
         if (!m.hasMatch())
-            return fail(Tr::tr("column %1 \"%2\" is not \"port<n> <series> [unit]\" or "
-                               "\"feeder <series> [unit]\"")
-                            .arg(i + 1)
-                            .arg(cell));
+            return fail(
+                ChartCsvParserTr::tr("column %1 \"%2\" is not \"port<n> <series> [unit]\" or "
+                                     "\"feeder <series> [unit]\"")
+                    .arg(i + 1)
+                    .arg(cell));
         const QString id = m.captured(1);
         const QString series = m.captured(3);
         const QString unit = m.captured(4);
@@ -216,22 +221,24 @@ bool ChartCsvParser::header(const csv::Cells &cells) {
             m_data.recording->temperatureUnit = TemperatureUnit::Fahrenheit;
         }
         if (unit != format.unit)
-            return fail(Tr::tr("column %1 \"%2\": the unit should be \"%3\"")
-                            .arg(i + 1)
-                            .arg(cell, format.unit.isEmpty() ? Tr::tr("none") : format.unit));
+            return fail(
+                ChartCsvParserTr::tr("column %1 \"%2\": the unit should be \"%3\"")
+                    .arg(i + 1)
+                    .arg(cell, format.unit.isEmpty() ? ChartCsvParserTr::tr("none") : format.unit));
         qsizetype c = 0;
         while (c < channels.size() && channels.at(c).id != id)
             ++c;
         if (c == channels.size())
             addChannel(id, m.captured(2).toInt());
         if (channels[c].series.contains(series))
-            return fail(Tr::tr("column %1 \"%2\" appears twice").arg(i + 1).arg(cell));
+            return fail(
+                ChartCsvParserTr::tr("column %1 \"%2\" appears twice").arg(i + 1).arg(cell));
         channels[c].series.append(series);
         m_channelColumns[c].append(int(m_columns.size()));
         m_columns.append(Column{int(c), format});
     }
     if (channels.isEmpty())
-        return fail(Tr::tr("the header names no series columns"));
+        return fail(ChartCsvParserTr::tr("the header names no series columns"));
     // Storage grows with the samples, so the capacity costs nothing until it is used.
     for (const ChartChannel &c : std::as_const(channels))
         m_data.buffers.emplace_back(c.series, ChartCsvReader::kMaxSamplesPerChannel);
@@ -245,7 +252,8 @@ void ChartCsvParser::addChannel(const QString &id, int port) {
     ChartChannel channel;
     channel.id = channel.key = id;
     channel.port = port;
-    channel.title = channel.isFeeder() ? Tr::tr("Feeder") : Tr::tr("Port %1").arg(channel.port);
+    channel.title = channel.isFeeder() ? ChartCsvParserTr::tr("Feeder")
+                                       : ChartCsvParserTr::tr("Port %1").arg(channel.port);
     const auto meta = m_meta.value(id);
     channel.deviceModel = meta.value(QStringLiteral("device"));
     channel.address = meta.value(QStringLiteral("address"));
@@ -273,30 +281,31 @@ bool ChartCsvParser::channelValues(int channel, const csv::Cells &cells, QList<q
         const auto display = number(cell);
         const auto wire = display ? m_columns.at(i).format.toWire(*display) : std::nullopt;
         if (!wire)
-            return fail(Tr::tr("column %1: \"%2\" is not a number")
+            return fail(ChartCsvParserTr::tr("column %1: \"%2\" is not a number")
                             .arg(i + 2)
                             .arg(QString::fromUtf8(cell)));
         out.append(*wire);
     }
     present = filled > 0;
     if (filled != 0 && filled != columns.size())
-        return fail(Tr::tr("%1 has values in some of its columns but not all")
+        return fail(ChartCsvParserTr::tr("%1 has values in some of its columns but not all")
                         .arg(m_data.recording->channels.at(channel).id));
     return true;
 }
 
 bool ChartCsvParser::row(const csv::Cells &cells) {
     if (cells.size() != m_columns.size() + 1)
-        return fail(Tr::tr("%1 cells, but the header has %2 columns")
+        return fail(ChartCsvParserTr::tr("%1 cells, but the header has %2 columns")
                         .arg(cells.size())
                         .arg(m_columns.size() + 1));
     const auto ms = timeOf(cells.at(0));
     if (!ms)
-        return fail(Tr::tr("\"%1\" is not an ISO 8601 time").arg(cells.text(0)));
+        return fail(ChartCsvParserTr::tr("\"%1\" is not an ISO 8601 time").arg(cells.text(0)));
     ChartRecording &out = *m_data.recording;
     if (out.rows > 0 && *ms < out.lastMs)
-        return fail(Tr::tr("the time %1 is earlier than the row before it (rows must be in time "
-                           "order)")
+        return fail(ChartCsvParserTr::tr(
+                        "the time %1 is earlier than the row before it (rows must be in time "
+                        "order)")
                         .arg(cells.text(0)));
     for (int c = 0; c < int(m_data.buffers.size()); ++c) {
         bool present = false;
@@ -306,8 +315,9 @@ bool ChartCsvParser::row(const csv::Cells &cells) {
             continue;
         TelemetryBuffer &buffer = m_data.buffers[size_t(c)];
         if (buffer.size() >= ChartCsvReader::kMaxSamplesPerChannel)
-            return fail(Tr::tr("%1 has more than %2 samples, more than replay holds; split the "
-                               "file")
+            return fail(ChartCsvParserTr::tr(
+                            "%1 has more than %2 samples, more than replay holds; split the "
+                            "file")
                             .arg(out.channels.at(c).id)
                             .arg(ChartCsvReader::kMaxSamplesPerChannel));
         buffer.append(*ms, m_values);
@@ -329,7 +339,8 @@ bool ChartCsvParser::events(qint64 ms, const csv::Cells &cells) {
             continue;
         const auto event = ChartEvent::fromCsvCell(ms, cell);
         if (!event)
-            return fail(Tr::tr("the event \"%1\" is not \"<channel> <kind>: <text>\"").arg(cell));
+            return fail(ChartCsvParserTr::tr("the event \"%1\" is not \"<channel> <kind>: <text>\"")
+                            .arg(cell));
         m_data.recording->events.add(*event);
     }
     return true;
@@ -359,9 +370,9 @@ bool ChartCsvParser::finish() {
     }
     m_line = 0;
     if (!m_haveHeader)
-        return fail(Tr::tr("the file is empty or holds only comments"));
+        return fail(ChartCsvParserTr::tr("the file is empty or holds only comments"));
     if (m_data.recording->rows == 0)
-        return fail(Tr::tr("the file has a header but no rows"));
+        return fail(ChartCsvParserTr::tr("the file has a header but no rows"));
     return true;
 }
 

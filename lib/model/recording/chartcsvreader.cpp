@@ -20,14 +20,15 @@ using protocol::failure;
 using protocol::Outcome;
 
 namespace {
-struct Tr {
+struct ChartCsvReaderTr {
     Q_DECLARE_TR_FUNCTIONS(ChartCsvReader)
 };
 
 constexpr int kWaitStepMs = 100;
 
 QString tooLarge(qint64 limit) {
-    return Tr::tr("the file is larger than %1 MB; replay reads files up to %1 MB").arg(limit >> 20);
+    return ChartCsvReaderTr::tr("the file is larger than %1 MB; replay reads files up to %1 MB")
+        .arg(limit >> 20);
 }
 
 // A FIFO, a character device or a socket: waited on before each read, a step at a time, so that
@@ -104,11 +105,12 @@ Outcome<ChartRecordingData> parse(QIODevice &device, const Waiter &waiter,
         if (!parser.feed(chunk.constData(), n))
             return failure(parser.error());
         if (parser.heldBytes() > 2 * total + ChartCsvReader::kMemorySlackBytes) {
-            parser.fail(Tr::tr("its samples take %1 MB of memory after %2 MB read, more than "
-                               "replay allows (twice the file's size); a recording TipScope "
-                               "writes takes far less")
-                            .arg(parser.heldBytes() >> 20)
-                            .arg(total >> 20));
+            parser.fail(
+                ChartCsvReaderTr::tr("its samples take %1 MB of memory after %2 MB read, more than "
+                                     "replay allows (twice the file's size); a recording TipScope "
+                                     "writes takes far less")
+                    .arg(parser.heldBytes() >> 20)
+                    .arg(total >> 20));
             return failure(parser.error());
         }
         if (!keepGoing())
@@ -141,7 +143,7 @@ std::unique_ptr<ChartRecording> ChartRecordingData::assemble() {
 }
 
 QString ChartCsvReader::cancelledText() {
-    return Tr::tr("reading was cancelled");
+    return ChartCsvReaderTr::tr("reading was cancelled");
 }
 
 // The recording assembled in the calling thread, or the reason `data` has.
@@ -165,7 +167,7 @@ Outcome<ChartRecordingData> ChartCsvReader::readFileData(const QString &path,
     // A regular file over the limit is refused at once; the limit also applies to the bytes
     // read, for files whose size says nothing (FIFOs, /proc) or that grow while read.
     if (info.isFile() && info.size() > options.maxBytes)
-        return named(Tr::tr("the file is %1 MB; replay reads files up to %2 MB")
+        return named(ChartCsvReaderTr::tr("the file is %1 MB; replay reads files up to %2 MB")
                          .arg(info.size() >> 20)
                          .arg(options.maxBytes >> 20));
     QFile file;

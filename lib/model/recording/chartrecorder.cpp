@@ -7,7 +7,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct ChartRecorderTr {
     Q_DECLARE_TR_FUNCTIONS(ChartRecorder)
 };
 } // namespace
@@ -29,7 +29,7 @@ QString ChartRecorder::start(const QString &path, const QList<ChartChannel> &cha
                              TemperatureUnit unit, const QString &softwareVersion) {
     stop();
     if (channels.isEmpty())
-        return Tr::tr("nothing to record: no station or feeder is connected");
+        return ChartRecorderTr::tr("nothing to record: no station or feeder is connected");
     m_file.setFileName(path);
     if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
         return m_file.errorString();

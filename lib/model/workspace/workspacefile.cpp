@@ -14,7 +14,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct WorkspaceFileTr {
     Q_DECLARE_TR_FUNCTIONS(WorkspaceFile)
 };
 
@@ -27,14 +27,16 @@ constexpr qint64 kMaxBytes = 4 * 1024 * 1024;
 // The header: this is a workspace, of a version this TipScope reads.
 Outcome<void> checkHeader(const QJsonObject &json) {
     if (json.value(QStringLiteral("format")).toString() != kFormat)
-        return failure(Tr::tr("not a TipScope workspace (\"format\" is not \"%1\")").arg(kFormat));
+        return failure(WorkspaceFileTr::tr("not a TipScope workspace (\"format\" is not \"%1\")")
+                           .arg(kFormat));
     const QJsonValue version = json.value(QStringLiteral("version"));
     if (!version.isDouble() || version.toDouble() < 1 ||
         version.toDouble() != double(version.toInt()))
-        return failure(Tr::tr("\"version\" must be a whole number from 1"));
+        return failure(WorkspaceFileTr::tr("\"version\" must be a whole number from 1"));
     if (version.toInt() > WorkspaceFile::kVersion)
-        return failure(Tr::tr("written by a later TipScope (workspace version %1); this one reads "
-                              "version %2 and older")
+        return failure(WorkspaceFileTr::tr(
+                           "written by a later TipScope (workspace version %1); this one reads "
+                           "version %2 and older")
                            .arg(version.toInt())
                            .arg(WorkspaceFile::kVersion));
     return {};
@@ -61,21 +63,23 @@ Outcome<WorkspaceFile> WorkspaceFile::fromJson(const QJsonObject &json) {
     if (const auto header = checkHeader(json); !header)
         return failure(header.error());
     if (!json.value(QStringLiteral("lines")).isArray())
-        return failure(Tr::tr("\"lines\" must be a list of lines"));
+        return failure(WorkspaceFileTr::tr("\"lines\" must be a list of lines"));
     const QJsonArray list = json.value(QStringLiteral("lines")).toArray();
     WorkspaceFile file;
     QSet<QString> names;
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString name = list.at(i).toObject().value(QStringLiteral("name")).toString();
-        const QString which = name.isEmpty() ? Tr::tr("line %1").arg(i + 1)
-                                             : Tr::tr("line %1 (%2)").arg(i + 1).arg(name);
+        const QString which = name.isEmpty()
+                                  ? WorkspaceFileTr::tr("line %1").arg(i + 1)
+                                  : WorkspaceFileTr::tr("line %1 (%2)").arg(i + 1).arg(name);
         if (!list.at(i).isObject())
-            return failure(Tr::tr("%1: must be an object").arg(which));
+            return failure(WorkspaceFileTr::tr("%1: must be an object").arg(which));
         const auto line = workspaceLineFromJson(list.at(i).toObject());
         if (!line)
             return failure(QStringLiteral("%1: %2").arg(which, line.error()));
         if (names.contains(line->name))
-            return failure(Tr::tr("%1: the name is already another line's; each line needs its own")
+            return failure(WorkspaceFileTr::tr(
+                               "%1: the name is already another line's; each line needs its own")
                                .arg(which));
         names.insert(line->name);
         file.lines.append(line.value());
@@ -89,16 +93,18 @@ Outcome<WorkspaceFile> WorkspaceFile::load(const QString &path) {
         using Kind = io::JsonFileProblem::Kind;
         switch (problem->kind) {
         case Kind::Missing:
-            return failure(Tr::tr("cannot read the workspace %1: %2")
-                               .arg(path, Tr::tr("there is no such file")));
+            return failure(WorkspaceFileTr::tr("cannot read the workspace %1: %2")
+                               .arg(path, WorkspaceFileTr::tr("there is no such file")));
         case Kind::Unreadable:
-            return failure(Tr::tr("cannot read the workspace %1: %2").arg(path, problem->detail));
+            return failure(
+                WorkspaceFileTr::tr("cannot read the workspace %1: %2").arg(path, problem->detail));
         case Kind::TooBig:
-            return failure(Tr::tr("the workspace %1 is too big to be one").arg(path));
+            return failure(WorkspaceFileTr::tr("the workspace %1 is too big to be one").arg(path));
         case Kind::NotAnObject:
-            return failure(Tr::tr("the workspace %1 is not a JSON object: %2")
-                               .arg(path, problem->detail.isEmpty() ? Tr::tr("it is a list")
-                                                                    : problem->detail));
+            return failure(WorkspaceFileTr::tr("the workspace %1 is not a JSON object: %2")
+                               .arg(path, problem->detail.isEmpty()
+                                              ? WorkspaceFileTr::tr("it is a list")
+                                              : problem->detail));
         }
     }
     const auto file = fromJson(std::get<QJsonObject>(read));

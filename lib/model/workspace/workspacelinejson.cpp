@@ -14,7 +14,7 @@
 namespace tipscope::model {
 
 namespace {
-struct Tr {
+struct WorkspaceLineJsonTr {
     Q_DECLARE_TR_FUNCTIONS(WorkspaceFile)
 };
 
@@ -44,7 +44,7 @@ public:
         if (!has(key))
             return fallback;
         if (!m_object.value(key).isString())
-            return failure(Tr::tr("%1 must be text").arg(name(key)));
+            return failure(WorkspaceLineJsonTr::tr("%1 must be text").arg(name(key)));
         return m_object.value(key).toString().trimmed();
     }
     [[nodiscard]] Outcome<int> number(const QString &key, int fallback, int lo, int hi) const {
@@ -52,13 +52,15 @@ public:
             return fallback;
         const double v = m_object.value(key).toDouble(std::nan(""));
         if (!m_object.value(key).isDouble() || v != std::floor(v) || v < lo || v > hi)
-            return failure(
-                Tr::tr("%1 must be a whole number from %2 to %3").arg(name(key)).arg(lo).arg(hi));
+            return failure(WorkspaceLineJsonTr::tr("%1 must be a whole number from %2 to %3")
+                               .arg(name(key))
+                               .arg(lo)
+                               .arg(hi));
         return int(v);
     }
     [[nodiscard]] Outcome<bool> flag(const QString &key) const {
         if (has(key) && !m_object.value(key).isBool())
-            return failure(Tr::tr("%1 must be true or false").arg(name(key)));
+            return failure(WorkspaceLineJsonTr::tr("%1 must be true or false").arg(name(key)));
         return m_object.value(key).toBool();
     }
     [[nodiscard]] Outcome<int> oneOf(const QString &key, const QStringList &allowed,
@@ -67,13 +69,13 @@ public:
         if (!v)
             return failure(v.error());
         if (!allowed.contains(v.value()))
-            return failure(
-                Tr::tr("%1 must be one of %2").arg(name(key), allowed.join(QStringLiteral(", "))));
+            return failure(WorkspaceLineJsonTr::tr("%1 must be one of %2")
+                               .arg(name(key), allowed.join(QStringLiteral(", "))));
         return int(allowed.indexOf(v.value()));
     }
     [[nodiscard]] Outcome<QJsonObject> object(const QString &key) const {
         if (has(key) && !m_object.value(key).isObject())
-            return failure(Tr::tr("%1 must be an object").arg(name(key)));
+            return failure(WorkspaceLineJsonTr::tr("%1 must be an object").arg(name(key)));
         return m_object.value(key).toObject();
     }
 
@@ -96,8 +98,8 @@ Outcome<void> readConnection(const QJsonObject &json, link::LineSettings &line) 
     if (line.kind == link::LineSettings::Kind::Serial) {
         TAKE(port, f.text(QStringLiteral("port")));
         if (port.isEmpty())
-            return failure(
-                Tr::tr("%1 must name the serial port").arg(f.name(QStringLiteral("port"))));
+            return failure(WorkspaceLineJsonTr::tr("%1 must name the serial port")
+                               .arg(f.name(QStringLiteral("port"))));
         TAKE(baud, f.number(QStringLiteral("baud"), 19200, 50, 4'000'000));
         TAKE(parity, f.oneOf(QStringLiteral("parity"), kParities, 0));
         TAKE(stopBits, f.number(QStringLiteral("stop_bits"), 1, 1, 2));
@@ -108,8 +110,9 @@ Outcome<void> readConnection(const QJsonObject &json, link::LineSettings &line) 
     } else if (line.kind == link::LineSettings::Kind::Tcp) {
         TAKE(address, f.text(QStringLiteral("address")));
         if (!link::TcpTransport::parseHostPort(address, &line.tcpHost, &line.tcpPort))
-            return failure(Tr::tr("%1 must be HOST:PORT (for example 192.168.1.20:4001)")
-                               .arg(f.name(QStringLiteral("address"))));
+            return failure(
+                WorkspaceLineJsonTr::tr("%1 must be HOST:PORT (for example 192.168.1.20:4001)")
+                    .arg(f.name(QStringLiteral("address"))));
     }
     return {};
 }
@@ -140,27 +143,30 @@ Outcome<void> readAddressing(const QJsonObject &json, Session::Settings &session
 
 Outcome<QMap<int, QString>> readDeviceNames(const QJsonValue &value) {
     if (!value.isUndefined() && !value.isArray())
-        return failure(Tr::tr("devices must be a list"));
+        return failure(WorkspaceLineJsonTr::tr("devices must be a list"));
     QMap<int, QString> names;
     const QJsonArray list = value.toArray();
     for (qsizetype i = 0; i < list.size(); ++i) {
         const Fields f(list.at(i).toObject(), QStringLiteral("devices[%1].").arg(i));
         if (!list.at(i).isObject())
-            return failure(Tr::tr("devices[%1] must be an object").arg(i));
+            return failure(WorkspaceLineJsonTr::tr("devices[%1] must be an object").arg(i));
         const QJsonValue given = list.at(i).toObject().value(QStringLiteral("address"));
         const bool unaddressed = given.isNull();
         if (given.isUndefined())
-            return failure(Tr::tr("%1 must be an address from 0 to 99, or null for the device "
-                                  "without addresses")
+            return failure(WorkspaceLineJsonTr::tr(
+                               "%1 must be an address from 0 to 99, or null for the device "
+                               "without addresses")
                                .arg(f.name(QStringLiteral("address"))));
         TAKE(address,
              unaddressed ? Outcome<int>(-1) : f.number(QStringLiteral("address"), -1, 0, 99));
         TAKE(name, f.text(QStringLiteral("name")));
         if (name.isEmpty())
-            return failure(Tr::tr("%1 must not be empty").arg(f.name(QStringLiteral("name"))));
+            return failure(WorkspaceLineJsonTr::tr("%1 must not be empty")
+                               .arg(f.name(QStringLiteral("name"))));
         const int key = unaddressed ? -1 : address;
         if (names.contains(key))
-            return failure(Tr::tr("devices[%1] names a device named before").arg(i));
+            return failure(
+                WorkspaceLineJsonTr::tr("devices[%1] names a device named before").arg(i));
         names.insert(key, name);
     }
     return names;
@@ -219,14 +225,14 @@ Outcome<WorkspaceLine> workspaceLineFromJson(const QJsonObject &json) {
     WorkspaceLine line;
     TAKE(name, f.text(QStringLiteral("name")));
     if (name.isEmpty())
-        return failure(Tr::tr("every line needs a name"));
+        return failure(WorkspaceLineJsonTr::tr("every line needs a name"));
     line.name = name;
     TAKE(cell, f.text(QStringLiteral("cell")));
     TAKE(location, f.text(QStringLiteral("location")));
     line.cell = cell;
     line.location = location;
     if (!f.has(QStringLiteral("connection")))
-        return failure(Tr::tr("connection is missing"));
+        return failure(WorkspaceLineJsonTr::tr("connection is missing"));
     TAKE(connection, f.object(QStringLiteral("connection")));
     TAKE(linkJson, f.object(QStringLiteral("link")));
     TAKE(addressing, f.object(QStringLiteral("addressing")));
