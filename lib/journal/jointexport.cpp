@@ -28,12 +28,22 @@ const QStringList kFields = {QStringLiteral("ts"),
                              QStringLiteral("verdict"),
                              QStringLiteral("work_order"),
                              QStringLiteral("board_serial"),
-                             QStringLiteral("operator")};
+                             QStringLiteral("operator"),
+                             QStringLiteral("start_uncertainty_ms"),
+                             QStringLiteral("dip_uncertainty_k"),
+                             QStringLiteral("recovery_uncertainty_ms"),
+                             QStringLiteral("recovery_bounded")};
+
+double tenths(double value) {
+    return std::round(value * 10) / 10;
+}
 
 QString csvField(const QJsonValue &value) {
     QString text;
     if (value.isDouble())
         text = QString::number(value.toDouble(), 'g', 12);
+    else if (value.isBool())
+        text = value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
     else if (value.isString())
         text = value.toString();
     if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"')) ||
@@ -64,8 +74,8 @@ QJsonObject jointJson(const StoredJoint &stored) {
             {kFields[8], j.port},
             {kFields[9], j.tool},
             {kFields[10], j.setpoint},
-            {kFields[11], j.lowestTip},
-            {kFields[12], j.dipDepth},
+            {kFields[11], tenths(j.lowestTip)},
+            {kFields[12], tenths(j.dipDepth)},
             {kFields[13], optional(j.recoveryMs)},
             {kFields[14], double(j.durationMs)},
             {kFields[15], j.powerPeak},
@@ -73,7 +83,11 @@ QJsonObject jointJson(const StoredJoint &stored) {
             {kFields[17], model::jointVerdictName(j.verdict)},
             {kFields[18], stored.context.workOrder},
             {kFields[19], stored.context.boardSerial},
-            {kFields[20], stored.context.operatorName}};
+            {kFields[20], stored.context.operatorName},
+            {kFields[21], double(j.startUncertaintyMs)},
+            {kFields[22], tenths(j.dipUncertaintyK)},
+            {kFields[23], double(j.recoveryUncertaintyMs)},
+            {kFields[24], j.recoveryBounded}};
 }
 
 QString jointCsvHeader() {

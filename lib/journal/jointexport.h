@@ -3,8 +3,11 @@
 // with milliseconds. The same names in both forms:
 //     ts, end, id, device, line, address, model, software, port, tool, setpoint_c, lowest_c,
 //     dip_k, recovery_ms, duration_ms, power_peak_pct, power_integral_pct_s, verdict,
-//     work_order, board_serial, operator
-// A joint that never recovered has an empty recovery_ms (null in JSON).
+//     work_order, board_serial, operator, start_uncertainty_ms, dip_uncertainty_k,
+//     recovery_uncertainty_ms, recovery_bounded
+// A joint that never recovered has an empty recovery_ms (null in JSON). lowest_c and dip_k are
+// to a tenth; each *_uncertainty is the ± within which the true value lies, and recovery_bounded
+// (true or false) says the readings could only bound the recovery (see model/joints/jointrecord.h).
 #pragma once
 
 #include "journaltypes.h"

@@ -54,6 +54,13 @@ const Migration kMigrations[] = {
       "ALTER TABLE events ADD COLUMN sent INTEGER NOT NULL DEFAULT 0",
       "CREATE INDEX events_unsent ON events (id) WHERE sent = 0"}},
     {3, {"CREATE TABLE settings (key TEXT PRIMARY KEY, value TEXT NOT NULL)"}},
+    // How sure each joint's figures are; lowest_tip and dip_depth hold tenths of a degree from
+    // here on (SQLite keeps a fractional value in an INTEGER column as it is).
+    {4,
+     {"ALTER TABLE joints ADD COLUMN start_uncertainty_ms INTEGER NOT NULL DEFAULT 0",
+      "ALTER TABLE joints ADD COLUMN dip_uncertainty_k REAL NOT NULL DEFAULT 0",
+      "ALTER TABLE joints ADD COLUMN recovery_uncertainty_ms INTEGER NOT NULL DEFAULT 0",
+      "ALTER TABLE joints ADD COLUMN recovery_bounded INTEGER NOT NULL DEFAULT 0"}},
 };
 
 Outcome<void> run(QSqlDatabase &db, const QString &sql) {

@@ -11,7 +11,8 @@ namespace {
 const char kJointColumns[] =
     "SELECT j.id, j.uid, j.sent, c.work_order, c.board_serial, c.operator, d.line, d.address, "
     "d.model, d.software, j.port, j.tool, j.start_ms, j.end_ms, j.setpoint, j.lowest_tip, "
-    "j.dip_depth, j.recovery_ms, j.duration_ms, j.power_peak, j.power_integral, j.verdict "
+    "j.dip_depth, j.recovery_ms, j.duration_ms, j.power_peak, j.power_integral, j.verdict, "
+    "j.start_uncertainty_ms, j.dip_uncertainty_k, j.recovery_uncertainty_ms, j.recovery_bounded "
     "FROM joints j LEFT JOIN devices d ON d.id = j.device_id "
     "LEFT JOIN contexts c ON c.id = j.context_id";
 const char kEventColumns[] =
@@ -140,8 +141,8 @@ StoredJoint readJoint(const QSqlQuery &q) {
     j.startMs = q.value(12).toLongLong();
     j.endMs = q.value(13).toLongLong();
     j.setpoint = q.value(14).toInt();
-    j.lowestTip = q.value(15).toInt();
-    j.dipDepth = q.value(16).toInt();
+    j.lowestTip = q.value(15).toDouble();
+    j.dipDepth = q.value(16).toDouble();
     if (!q.value(17).isNull())
         j.recoveryMs = q.value(17).toLongLong();
     j.durationMs = q.value(18).toLongLong();
@@ -149,6 +150,10 @@ StoredJoint readJoint(const QSqlQuery &q) {
     j.powerIntegral = q.value(20).toDouble();
     j.verdict = model::jointVerdictFromName(q.value(21).toString())
                     .value_or(model::JointVerdict::Incomplete);
+    j.startUncertaintyMs = q.value(22).toLongLong();
+    j.dipUncertaintyK = q.value(23).toDouble();
+    j.recoveryUncertaintyMs = q.value(24).toLongLong();
+    j.recoveryBounded = q.value(25).toInt() != 0;
     return s;
 }
 

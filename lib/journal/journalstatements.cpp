@@ -9,8 +9,9 @@ namespace {
 
 const char kInsertJoint[] =
     "INSERT INTO joints (uid, context_id, device_id, port, tool, start_ms, end_ms, setpoint, "
-    "lowest_tip, dip_depth, recovery_ms, duration_ms, power_peak, power_integral, verdict) "
-    "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)";
+    "lowest_tip, dip_depth, recovery_ms, duration_ms, power_peak, power_integral, verdict, "
+    "start_uncertainty_ms, dip_uncertainty_k, recovery_uncertainty_ms, recovery_bounded) "
+    "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)";
 const char kInsertEvent[] =
     "INSERT INTO events (uid, context_id, device_id, port, time_ms, kind, severity, text, "
     "details) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)";
@@ -116,7 +117,11 @@ std::optional<qint64> JournalStatements::insert(const PendingJoint &pending, QSq
                                j.durationMs,
                                j.powerPeak,
                                j.powerIntegral,
-                               model::jointVerdictName(j.verdict)};
+                               model::jointVerdictName(j.verdict),
+                               j.startUncertaintyMs,
+                               j.dipUncertaintyK,
+                               j.recoveryUncertaintyMs,
+                               j.recoveryBounded ? 1 : 0};
     for (int i = 0; i < int(std::size(values)); ++i)
         m_insertJoint.bindValue(i, values[i]);
     return run(m_insertJoint, error);

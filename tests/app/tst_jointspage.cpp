@@ -292,7 +292,7 @@ void TestJointsPage::theExportHoldsTheListedJoints() {
     const QStringList lines = QString::fromUtf8(file.readAll()).trimmed().split(QLatin1Char('\n'));
     QCOMPARE(lines.size(), 3);
     QVERIFY(lines.at(0).startsWith(QStringLiteral("time,device,port,tool,setpoint [°C]")));
-    QVERIFY2(lines.at(1).contains(kDeviceA.key() + QStringLiteral(",1,C245,350,320,30,1.200,")),
+    QVERIFY2(lines.at(1).contains(kDeviceA.key() + QStringLiteral(",1,C245,350,320.0,30.0,1.200,")),
              qPrintable(lines.at(1)));
     QVERIFY2(lines.at(1).endsWith(QStringLiteral(",ok,WO-1")), qPrintable(lines.at(1)));
     QVERIFY2(lines.at(2).endsWith(QStringLiteral(",slow recovery,WO-1")), qPrintable(lines.at(2)));

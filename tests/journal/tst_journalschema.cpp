@@ -161,8 +161,9 @@ void TestJournalSchema::aFileNotOursToChangeIsRefusedAndLeftUntouched_data() {
     QTest::addColumn<QString>("expected");
     QTest::newRow("newer schema")
         << QStringLiteral("CREATE TABLE joints (id INTEGER PRIMARY KEY, later TEXT);"
-                          "PRAGMA application_id = 1416187987; PRAGMA user_version = 4")
-        << QStringLiteral("newer TipScope (schema 4");
+                          "PRAGMA application_id = 1416187987; PRAGMA user_version = %1")
+               .arg(journal::kJournalSchemaVersion + 1)
+        << QStringLiteral("newer TipScope (schema %1").arg(journal::kJournalSchemaVersion + 1);
     QTest::newRow("another program's database")
         << QStringLiteral("CREATE TABLE accounts (id INTEGER PRIMARY KEY, name TEXT);"
                           "INSERT INTO accounts VALUES (1, 'x')")

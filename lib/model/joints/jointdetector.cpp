@@ -1,5 +1,8 @@
 #include "model/joints/jointdetector.h"
 
+#include "model/joints/jointfit.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace tipscope::model {
@@ -7,15 +10,30 @@ namespace tipscope::model {
 namespace {
 // The station reports whole degrees: a reading of setpoint − band is a tip anywhere above
 // setpoint − band − 0.5, so that is where the continuous tip crosses the band's edge, and where
-// both crossings are interpolated (see docs/protocol-notes.md).
+// both crossings are placed (see docs/protocol-notes.md).
 constexpr double kWholeDegreeHalfStep = 0.5;
+// The readings of the climb a recovery is fitted through: this many before the first reading back
+// in the band, and after it.
+constexpr int kClimbReadingsBefore = 5;
+constexpr int kClimbReadingsAfter = 1;
+// A local fit whose readings scatter more than this about it is following a wobble, not rounding
+// (whole degrees alone scatter 0.29 K).
+constexpr double kWobbleSigmaK = 0.5;
+// The wide window around a return: this many spacings of the readings around it either side, or
+// this share of the climb from the lowest point, whichever is longer.
+constexpr double kWideSpacings = 2.5;
+constexpr double kWideShare = 0.3;
 
 // When the straight line from (t0, v0) to (t1, v1) crosses `level`.
-qint64 crossing(qint64 t0, double v0, qint64 t1, double v1, double level) {
+double straightCrossing(qint64 t0, double v0, qint64 t1, double v1, double level) {
     if (v1 == v0)
-        return t1;
+        return double(t1);
     const double f = qBound(0.0, (level - v0) / (v1 - v0), 1.0);
-    return t0 + qint64(std::llround(f * double(t1 - t0)));
+    return double(t0) + f * double(t1 - t0);
+}
+
+Reading readingOf(const PortReading &r) {
+    return {r.timeMs, double(*r.tip)};
 }
 } // namespace
 
@@ -24,8 +42,12 @@ JointDetector::JointDetector(DeviceIdentity device, int port, JointLimits limits
     , m_port(port)
     , m_limits(limits) {}
 
-double JointDetector::bandEdge(int setpoint) const {
-    return double(setpoint) - m_limits.bandK - kWholeDegreeHalfStep;
+double JointDetector::bandEdge() const {
+    return double(m_joint.setpoint) - m_limits.bandK - kWholeDegreeHalfStep;
+}
+
+bool JointDetector::inBand(const PortReading &r) const {
+    return *r.tip >= r.setpoint - m_limits.bandK;
 }
 
 bool JointDetector::sameConditions(const PortReading &reading) const {
@@ -40,37 +62,57 @@ std::optional<JointRecord> JointDetector::add(const PortReading &reading) {
     if (!sameConditions(reading)) {
         // Stand, sleep, heater off, another tool or setpoint: not a joint, and not one to finish.
         if (m_state == State::InJoint)
-            ended = finish(m_last->timeMs, std::nullopt, false);
+            ended = finish(m_tailUntilMs ? End::Recovered : End::Broken, m_last->timeMs);
         m_state = State::Waiting;
+        m_justRecovered = false;
     }
-    const bool inBand = std::abs(*reading.tip - reading.setpoint) <= m_limits.bandK;
+    const bool withinBand = std::abs(*reading.tip - reading.setpoint) <= m_limits.bandK;
     switch (m_state) {
     case State::Waiting:
-        if (inBand && reading.working) {
+        if (withinBand && reading.working) {
             m_state = State::Settled;
             m_settledSinceMs = reading.timeMs;
+            m_justRecovered = false;
         }
         break;
     case State::Settled:
-        if (*reading.tip < reading.setpoint - m_limits.bandK) {
-            if (reading.timeMs - m_settledSinceMs >= kSettleMs && m_last && m_last->tip)
+        if (!inBand(reading)) {
+            const bool settled = m_justRecovered || reading.timeMs - m_settledSinceMs >= kSettleMs;
+            if (settled && m_last && m_last->tip)
                 startJoint(*m_last, reading);
             else
                 m_state = State::Waiting; // left the band before it had settled
-        } else if (!inBand) {
+        } else if (!withinBand) {
             m_state = State::Waiting; // above the band: the setpoint was lowered or it overshoots
         }
         break;
     case State::InJoint:
+        if (m_tailUntilMs) {
+            // Back for good; the readings after the return are gathered for its fit. One below
+            // the band now is the next joint, which begins at once.
+            if (!inBand(reading)) {
+                ended = finish(End::Recovered, m_last->timeMs);
+                settleAfterRecovery(m_last->timeMs);
+                startJoint(*m_last, reading);
+                break;
+            }
+            accumulate(reading);
+            if (reading.timeMs >= *m_tailUntilMs) {
+                ended = finish(End::Recovered, reading.timeMs);
+                settleAfterRecovery(reading.timeMs);
+            }
+            break;
+        }
         accumulate(reading);
-        if (*reading.tip >= reading.setpoint - m_limits.bandK) {
-            const qint64 back = crossing(m_last->timeMs, *m_last->tip, reading.timeMs, *reading.tip,
-                                         bandEdge(reading.setpoint));
-            ended = finish(back, back, true);
-            m_state = State::Settled;
-            m_settledSinceMs = back;
+        m_backInBand = inBand(reading) ? m_backInBand + 1 : 0;
+        if (m_backInBand >= kConfirmReadings) {
+            m_tailUntilMs = tailUntil();
+            if (reading.timeMs >= *m_tailUntilMs) {
+                ended = finish(End::Recovered, reading.timeMs);
+                settleAfterRecovery(reading.timeMs);
+            }
         } else if (reading.timeMs - m_joint.startMs > kGiveUpMs) {
-            ended = finish(reading.timeMs, std::nullopt, true);
+            ended = finish(End::GaveUp, reading.timeMs);
             m_state = State::Waiting;
         }
         break;
@@ -82,8 +124,10 @@ std::optional<JointRecord> JointDetector::add(const PortReading &reading) {
 std::optional<JointRecord> JointDetector::gap(qint64 timeMs) {
     std::optional<JointRecord> ended;
     if (m_state == State::InJoint)
-        ended = finish(qMax(timeMs, m_last ? m_last->timeMs : timeMs), std::nullopt, false);
+        ended = finish(m_tailUntilMs ? End::Recovered : End::Broken,
+                       qMax(timeMs, m_last ? m_last->timeMs : timeMs));
     m_state = State::Waiting;
+    m_justRecovered = false;
     m_last.reset();
     return ended;
 }
@@ -95,22 +139,21 @@ void JointDetector::startJoint(const PortReading &previous, const PortReading &r
     m_joint.port = m_port;
     m_joint.tool = reading.tool;
     m_joint.setpoint = reading.setpoint;
-    // A settled tip was flat at `previous`, and a joint draws heat at once: the drop is steep
-    // from wherever between the readings it began. A straight line from the flat reading puts
-    // the crossing too early when the drop is steep, so the crossing is no earlier than the
-    // middle of the interval (where a departure at an unknown moment is expected); a gentle
-    // slide out of the band keeps the straight line's later estimate.
-    const qint64 straight = crossing(previous.timeMs, *previous.tip, reading.timeMs, *reading.tip,
-                                     bandEdge(reading.setpoint));
-    m_joint.startMs = qMax(straight, previous.timeMs + (reading.timeMs - previous.timeMs) / 2);
     m_joint.lowestTip = *previous.tip;
     m_joint.powerPeak = int(std::lround(previous.powerPct));
+    m_readings = {previous, reading};
+    m_restingPowerPct = previous.powerPct;
+    m_backInBand = 0;
+    m_tailUntilMs.reset();
+    estimateStart(m_joint); // the give-up clock runs from it; refined at the end
+    m_readings.pop_back();
     accumulate(reading);
 }
 
-// The lowest tip, the power peak, and the power-time integral by the trapezoid rule.
+// The readings, the power peak, and the power-time integral by the trapezoid rule.
 void JointDetector::accumulate(const PortReading &reading) {
-    m_joint.lowestTip = qMin(m_joint.lowestTip, *reading.tip);
+    m_readings.push_back(reading);
+    m_joint.lowestTip = qMin(m_joint.lowestTip, double(*reading.tip));
     m_joint.powerPeak = qMax(m_joint.powerPeak, int(std::lround(reading.powerPct)));
     if (m_last) {
         const qint64 from = qMax(m_last->timeMs, m_joint.startMs);
@@ -120,24 +163,198 @@ void JointDetector::accumulate(const PortReading &reading) {
     }
 }
 
-JointRecord JointDetector::finish(qint64 endMs, std::optional<qint64> recoveredAtMs,
-                                  bool complete) {
+// The edge's crossing on the way down: a line through the first readings of the fall (while it
+// is still steep: before the lowest), extrapolated to the edge, within the interval between the
+// last reading in the band and the first below it. With fewer than three readings of the fall, no
+// line can show whether the fall was straight (the second may already be past the lowest point):
+// the crossing is then no earlier than the middle of that interval, where a departure at an
+// unknown moment is expected (a settled tip is flat, and a joint draws heat at once), and only
+// known within it.
+void JointDetector::estimateStart(JointRecord &joint) const {
+    const PortReading &before = m_readings.at(0);
+    const PortReading &first = m_readings.at(1);
+    const double lo = double(before.timeMs);
+    const double hi = double(first.timeMs);
+    const double edge = bandEdge();
+    const double straight =
+        straightCrossing(before.timeMs, *before.tip, first.timeMs, *first.tip, edge);
+    double start = qMax(straight, (lo + hi) / 2);
+    double uncertainty = (hi - lo) / 2;
+    std::vector<Reading> fall;
+    for (size_t i = 1; i < m_readings.size() && fall.size() < 4; ++i) {
+        const PortReading &r = m_readings.at(i);
+        if (!fall.empty() && *r.tip >= fall.back().value)
+            break; // the lowest is behind
+        fall.push_back(readingOf(r));
+    }
+    if (fall.size() >= 3) {
+        if (const auto line = fitPolynomial(fall, 1)) {
+            if (const auto t = crossingTime(*line, edge, lo - (hi - lo), hi, hi)) {
+                start = qBound(lo, *t, hi);
+                uncertainty = qMin((hi - lo) / 2,
+                                   qMax(std::abs(*t - start), crossingUncertaintyMs(*line, *t)));
+            }
+        }
+    }
+    joint.startMs = std::llround(start);
+    joint.startUncertaintyMs = std::llround(uncertainty);
+}
+
+// The lowest point: the vertex of a parabola through the lowest reading and its neighbours when
+// it lies between them, else the lowest reading itself (a whole degree, ± half a degree).
+void JointDetector::estimateLowest(JointRecord &joint) const {
+    size_t low = 1;
+    for (size_t i = 1; i < m_readings.size(); ++i)
+        if (*m_readings.at(i).tip < *m_readings.at(low).tip)
+            low = i;
+    const double lowest = *m_readings.at(low).tip;
+    joint.lowestTip = lowest;
+    joint.dipUncertaintyK = kWholeDegreeHalfStep;
+    if (low + 1 >= m_readings.size())
+        return;
+    std::vector<Reading> bottom;
+    for (size_t i = low - 1; i <= low + 1; ++i)
+        bottom.push_back(readingOf(m_readings.at(i)));
+    const auto parabola = fitPolynomial(bottom, 2);
+    if (!parabola || parabola->c2 <= 0)
+        return;
+    const double vertexMs = double(parabola->originMs) - parabola->c1 / (2 * parabola->c2) * 1000;
+    if (vertexMs <= double(bottom.front().timeMs) || vertexMs >= double(bottom.back().timeMs))
+        return;
+    // Never shallower than the lowest reading's whole degree allows, nor deeper than a degree
+    // and a half below it: the neighbours bend the parabola, they do not carry the tip further.
+    joint.lowestTip = qBound(lowest - 1.5, parabola->at(vertexMs), lowest + kWholeDegreeHalfStep);
+    joint.dipUncertaintyK = qMax(kWholeDegreeHalfStep, std::abs(joint.lowestTip - lowest));
+}
+
+void JointDetector::settleAfterRecovery(qint64 timeMs) {
+    m_state = State::Settled;
+    m_justRecovered = true;
+    m_settledSinceMs = timeMs;
+    m_tailUntilMs.reset();
+}
+
+// Where the tip came back: the last reading below the band and the first of the run back in it,
+// the lowest reading before, the straight crossing between the two around the return, and how
+// far either side of it the readings for a wide fit reach (a few spacings, or a share of the
+// climb when that is longer, never more than kMaxTailMs).
+JointDetector::Return JointDetector::returnOf() const {
+    Return r;
+    for (size_t i = m_readings.size(); i-- > 1;) {
+        if (!inBand(m_readings.at(i)))
+            break;
+        r.back = i;
+    }
+    if (r.back < 1)
+        return r;
+    r.low = 1;
+    for (size_t i = 1; i < r.back; ++i)
+        if (*m_readings.at(i).tip < *m_readings.at(r.low).tip)
+            r.low = i;
+    const PortReading &below = m_readings.at(r.back - 1);
+    const PortReading &in = m_readings.at(r.back);
+    r.straightMs = straightCrossing(below.timeMs, *below.tip, in.timeMs, *in.tip, bandEdge());
+    const double spacing = double(in.timeMs - below.timeMs);
+    const double climb = r.straightMs - double(m_readings.at(r.low).timeMs);
+    r.halfWindowMs = qMin(double(kMaxTailMs), qMax(kWideSpacings * spacing, kWideShare * climb));
+    return r;
+}
+
+qint64 JointDetector::tailUntil() const {
+    const Return r = returnOf();
+    return r.back < 1 ? m_readings.back().timeMs : std::llround(r.straightMs + r.halfWindowMs);
+}
+
+// The edge's crossing on the way back. Readings a degree apart on a smooth climb: a local fit
+// through the readings around the return (a parabola where there are enough of them, else a
+// line) places it within the two readings around it, finer than either. Readings that wobble
+// more than rounding explains would make that local fit chase the wobble: then a parabola
+// through the readings of a wider window on both sides places it, and its scatter says how
+// sure. Readings further apart than the measurement allows only bound it.
+void JointDetector::estimateRecovery(JointRecord &joint) const {
+    const Return r = returnOf();
+    if (r.back < 1)
+        return;
+    const PortReading &below = m_readings.at(r.back - 1);
+    const PortReading &in = m_readings.at(r.back);
+    const double edge = bandEdge();
+    double crossing = r.straightMs;
+    double uncertainty = double(in.timeMs - below.timeMs) / 2;
+    std::vector<Reading> climb;
+    const size_t from =
+        r.back > r.low + kClimbReadingsBefore ? r.back - kClimbReadingsBefore : r.low + 1;
+    for (size_t i = from; i < m_readings.size() && i <= r.back + kClimbReadingsAfter; ++i)
+        climb.push_back(readingOf(m_readings.at(i)));
+    const auto local = fitPolynomial(climb, climb.size() >= 5 ? 2 : 1);
+    if (local && local->sigma > kWobbleSigmaK) {
+        std::vector<Reading> wide;
+        for (size_t i = r.low + 1; i < m_readings.size(); ++i)
+            if (std::abs(double(m_readings.at(i).timeMs) - r.straightMs) <= r.halfWindowMs)
+                wide.push_back(readingOf(m_readings.at(i)));
+        if (const auto fit = fitPolynomial(wide, wide.size() >= 5 ? 2 : 1)) {
+            if (const auto t = crossingTime(*fit, edge, double(wide.front().timeMs),
+                                            double(wide.back().timeMs), r.straightMs)) {
+                crossing = *t;
+                uncertainty = qMax(uncertainty, crossingUncertaintyMs(*fit, *t));
+            }
+        }
+    } else if (local) {
+        if (const auto t =
+                crossingTime(*local, edge, double(below.timeMs), double(in.timeMs), r.straightMs)) {
+            crossing = *t;
+            uncertainty = qMin(uncertainty, crossingUncertaintyMs(*local, *t));
+        }
+    }
+    joint.recoveryMs = std::llround(crossing) - joint.startMs;
+    joint.recoveryUncertaintyMs = std::llround(uncertainty) + joint.startUncertaintyMs;
+    if (uncertainty > kMeasuredWithinMs) {
+        // Only bounded: somewhere between the two readings around the return.
+        const qint64 lo = below.timeMs - joint.startMs;
+        const qint64 hi = in.timeMs - joint.startMs;
+        joint.recoveryMs = (lo + hi) / 2;
+        joint.recoveryUncertaintyMs = (hi - lo) / 2 + joint.startUncertaintyMs;
+        joint.recoveryBounded = true;
+    }
+}
+
+std::optional<JointRecord> JointDetector::finish(End end, qint64 endMs) {
+    // A tip that fell and did not come back while the heater idled was not soldering.
+    const bool heaterAnswered = m_joint.powerPeak >= m_restingPowerPct + kPowerRisePct;
+    if (end != End::Recovered && !heaterAnswered)
+        return std::nullopt;
     JointRecord j = m_joint;
-    j.endMs = qMax(endMs, j.startMs);
+    estimateStart(j);
+    estimateLowest(j);
+    j.dipDepth = double(j.setpoint) - j.lowestTip;
+    if (end == End::Recovered) {
+        estimateRecovery(j);
+    } else if (end == End::Broken) {
+        // Not seen to its end: it lasted at least until the last reading below the band.
+        j.recoveryBounded = true;
+    }
+    // A recovered joint ends where the tip is back within the band, not at the readings that
+    // confirmed it.
+    j.endMs =
+        end == End::Recovered && j.recoveryMs ? j.startMs + *j.recoveryMs : qMax(endMs, j.startMs);
     j.durationMs = j.endMs - j.startMs;
-    j.dipDepth = j.setpoint - j.lowestTip;
-    if (recoveredAtMs)
-        j.recoveryMs = *recoveredAtMs - j.startMs;
-    j.verdict = complete ? judge(j, m_limits) : JointVerdict::Incomplete;
+    j.verdict = end == End::Broken ? JointVerdict::Incomplete : judge(j, m_limits);
     return j;
 }
 
 JointVerdict JointDetector::judge(const JointRecord &joint, const JointLimits &limits) {
     if (joint.dipDepth > limits.maxDipK)
         return JointVerdict::TooDeep;
-    if (!joint.recoveryMs || *joint.recoveryMs > limits.maxRecoveryMs)
+    if (!joint.recoveryMs)
         return JointVerdict::SlowRecovery;
-    return JointVerdict::Ok;
+    if (!joint.recoveryBounded)
+        return *joint.recoveryMs > limits.maxRecoveryMs ? JointVerdict::SlowRecovery
+                                                        : JointVerdict::Ok;
+    // Bounded: judged only where the whole interval lies on one side of the limit.
+    if (*joint.recoveryMs - joint.recoveryUncertaintyMs > limits.maxRecoveryMs)
+        return JointVerdict::SlowRecovery;
+    if (*joint.recoveryMs + joint.recoveryUncertaintyMs <= limits.maxRecoveryMs)
+        return JointVerdict::Ok;
+    return JointVerdict::Incomplete;
 }
 
 } // namespace tipscope::model

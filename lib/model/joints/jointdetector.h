@@ -7,17 +7,28 @@
 //   waiting  → settled   the tip has stayed within the band for kSettleMs while working at one
 //                        setpoint and with one tool (a heat-up or a wake from sleep is never a
 //                        joint: the tip has not settled yet);
-//   settled  → in joint  a reading below the band; the joint starts where the tip crossed the
-//                        band's lower edge (interpolated between the two readings around it);
-//   in joint → settled   the tip is back within the band: the recovery time runs from start to
-//                        that crossing, also interpolated, so it is finer than the poll period.
+//   settled  → in joint  a reading below the band; the next joint may begin at once after a
+//                        recovery (joints follow each other within a second on a busy port);
+//   in joint → settled   kConfirmReadings readings in a row back within the band (one may be the
+//                        wobble of a tip still on its way), then the readings after the return
+//                        that its fit needs (at most kMaxTailMs; a new dip ends them at once).
 //
-// Whatever breaks the measurement during a joint ends it as Incomplete, with what was seen so
-// far: a gap in the readings (gap(), or a reading without a tip value), the port leaving work
-// (stand, sleep, heater off), another tool, or another setpoint. A joint that has not recovered
-// after kGiveUpMs ends as SlowRecovery without a recovery time. Each end is followed by waiting
-// again. Judging: TooDeep when the dip exceeds the limit, else SlowRecovery when the recovery
-// took longer than the limit, else Ok.
+// The figures come from all the readings around each event, not from the two that bracket it
+// (jointfit.h): the start is where a line through the first readings of the fall crosses the
+// band's edge, within the last reading before it; the lowest point is the vertex of a parabola
+// through the lowest readings; the recovery is where a local fit through the readings around the
+// return crosses the edge (a wider one on both sides when the readings wobble). Each carries its
+// uncertainty; a recovery whose readings are too far apart to place it within kMeasuredWithinMs is
+// only bounded (between the readings around it).
+//
+// Whatever breaks the measurement during a joint ends it: a gap in the readings, the port
+// leaving work (stand, sleep, heater off), another tool or setpoint. If the heater had answered
+// (its power rose by kPowerRisePct), a joint was under way: it ends Incomplete, with what was seen
+// so far; if not, the tip fell because the heater was idle (a tool put in its stand and asleep,
+// an open circuit cooling down), which is an event of the port, never a joint. A joint that has
+// not recovered after kGiveUpMs ends as SlowRecovery without a recovery time. Judging: TooDeep
+// when the dip exceeds the limit, else SlowRecovery when the recovery took longer than the limit,
+// else Ok; a bounded recovery that may lie on either side of the limit is not judged (Incomplete).
 //
 // Plain computation, no timers and no Qt objects: the GUI, the CLI, the line service and the
 // bench feed it the same readings and get the same joints.
@@ -26,6 +37,7 @@
 #include "model/joints/jointrecord.h"
 
 #include <QList>
+#include <vector>
 
 namespace tipscope::model {
 
@@ -56,6 +68,11 @@ class JointDetector {
 public:
     static constexpr qint64 kSettleMs = 2000;
     static constexpr qint64 kGiveUpMs = 30'000;
+    static constexpr int kConfirmReadings = 2;
+    static constexpr double kPowerRisePct = 10;
+    static constexpr qint64 kMeasuredWithinMs = 250;
+    // The longest a recovered joint waits for readings after its return before it is reported.
+    static constexpr qint64 kMaxTailMs = 1500;
 
     JointDetector(DeviceIdentity device, int port, JointLimits limits = {});
 
@@ -73,12 +90,27 @@ public:
 
 private:
     enum class State { Waiting, Settled, InJoint };
+    // How a joint ended.
+    enum class End { Recovered, GaveUp, Broken };
 
     void startJoint(const PortReading &previous, const PortReading &reading);
     void accumulate(const PortReading &reading);
-    [[nodiscard]] JointRecord finish(qint64 endMs, std::optional<qint64> recoveredAtMs,
-                                     bool complete);
-    [[nodiscard]] double bandEdge(int setpoint) const;
+    // The joint as it ends; none when the heater never answered (not a joint, see above).
+    [[nodiscard]] std::optional<JointRecord> finish(End end, qint64 endMs);
+    void estimateStart(JointRecord &joint) const;
+    void estimateLowest(JointRecord &joint) const;
+    void estimateRecovery(JointRecord &joint) const;
+    struct Return {
+        size_t back = 0; // the first reading of the run back in the band; 0: none
+        size_t low = 0;
+        double straightMs = 0;
+        double halfWindowMs = 0;
+    };
+    [[nodiscard]] Return returnOf() const;
+    [[nodiscard]] qint64 tailUntil() const;
+    void settleAfterRecovery(qint64 timeMs);
+    [[nodiscard]] double bandEdge() const;
+    [[nodiscard]] bool inBand(const PortReading &reading) const;
     [[nodiscard]] bool sameConditions(const PortReading &reading) const;
 
     DeviceIdentity m_device;
@@ -87,7 +119,14 @@ private:
     State m_state = State::Waiting;
     std::optional<PortReading> m_last;
     qint64 m_settledSinceMs = 0;
+    bool m_justRecovered = false; // settled by a recovery: the next dip is a joint at once
     JointRecord m_joint;
+    // The joint's readings: the last one within the band before it, then every one since.
+    std::vector<PortReading> m_readings;
+    double m_restingPowerPct = 0;
+    int m_backInBand = 0; // readings in a row within the band since the last one below it
+    // Set once the return is confirmed: until then the readings after it are gathered.
+    std::optional<qint64> m_tailUntilMs;
 };
 
 } // namespace tipscope::model

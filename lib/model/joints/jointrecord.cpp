@@ -29,7 +29,22 @@ bool operator==(const JointRecord &a, const JointRecord &b) {
            a.endMs == b.endMs && a.setpoint == b.setpoint && a.lowestTip == b.lowestTip &&
            a.dipDepth == b.dipDepth && a.recoveryMs == b.recoveryMs &&
            a.durationMs == b.durationMs && a.powerPeak == b.powerPeak &&
-           a.powerIntegral == b.powerIntegral && a.verdict == b.verdict;
+           a.powerIntegral == b.powerIntegral && a.verdict == b.verdict &&
+           a.startUncertaintyMs == b.startUncertaintyMs && a.dipUncertaintyK == b.dipUncertaintyK &&
+           a.recoveryUncertaintyMs == b.recoveryUncertaintyMs &&
+           a.recoveryBounded == b.recoveryBounded;
+}
+
+QString recoveryWords(const JointRecord &joint) {
+    if (!joint.recoveryMs)
+        return QStringLiteral("-");
+    const qint64 ms = *joint.recoveryMs;
+    if (joint.recoveryBounded)
+        return QStringLiteral("%1-%2 s bounded")
+            .arg(QString::number(double(qMax<qint64>(0, ms - joint.recoveryUncertaintyMs)) / 1000,
+                                 'f', 1),
+                 QString::number(double(ms + joint.recoveryUncertaintyMs) / 1000, 'f', 1));
+    return QString::number(double(ms) / 1000, 'f', 2) + QStringLiteral(" s");
 }
 
 } // namespace tipscope::model

@@ -2,10 +2,17 @@
 //
 // Units are the wire's: times in milliseconds since the epoch (UTC), temperatures in °C, power
 // in %, durations in milliseconds, the power-time integral in %·s. The dip depth is how far the
-// tip fell below the setpoint (setpoint minus the lowest tip temperature, in K); the recovery
-// time runs from the joint's start until the tip is back within the band, and is empty when it
-// never came back. The verdict judges the joint against the limits; its name() is the stable
-// English word files and databases carry ("ok", "slow recovery", "too deep", "incomplete").
+// tip fell below the setpoint (setpoint minus the lowest tip temperature, in K, to a tenth: it
+// is estimated from the readings around the lowest, finer than the station's whole degrees);
+// the recovery time runs from the joint's start until the tip is back within the band, and is
+// empty when it never came back. The verdict judges the joint against the limits; its name() is
+// the stable English word files and databases carry ("ok", "slow recovery", "too deep",
+// "incomplete").
+//
+// Each figure says how sure it is: the true value lies within ± its uncertainty, as far as the
+// readings around it tell (docs/joints.md). A recovery the readings could only bound (they were
+// too far apart, or a gap came first) is `recoveryBounded`: it lies somewhere in recoveryMs ±
+// recoveryUncertaintyMs, and it is never judged ok unless the whole of that interval is.
 #pragma once
 
 #include "model/deviceidentity.h"
@@ -35,18 +42,26 @@ struct JointRecord {
     QString tool; // the tool's name in the family's tool table ("C245")
     qint64 startMs = 0;
     qint64 endMs = 0;
-    int setpoint = 0;  // °C
-    int lowestTip = 0; // °C
-    int dipDepth = 0;  // K below the setpoint
+    int setpoint = 0;     // °C
+    double lowestTip = 0; // °C
+    double dipDepth = 0;  // K below the setpoint
     std::optional<qint64> recoveryMs;
     qint64 durationMs = 0;
     int powerPeak = 0;        // %
     double powerIntegral = 0; // %·s
     JointVerdict verdict = JointVerdict::Incomplete;
+    qint64 startUncertaintyMs = 0;
+    double dipUncertaintyK = 0;
+    qint64 recoveryUncertaintyMs = 0;
+    bool recoveryBounded = false;
 
     friend bool operator==(const JointRecord &a, const JointRecord &b);
     friend bool operator!=(const JointRecord &a, const JointRecord &b) { return !(a == b); }
 };
+
+// The recovery as the command line prints it, in the same words in every language: "1.84 s",
+// "2.0-3.0 s bounded" for one known only between two readings, "-" for none.
+[[nodiscard]] QString recoveryWords(const JointRecord &joint);
 
 } // namespace tipscope::model
 

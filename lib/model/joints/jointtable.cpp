@@ -22,12 +22,16 @@ bool newerFirst(const JointRow &a, const JointRow &b) {
 bool fahrenheit(TemperatureUnit unit) {
     return unit == TemperatureUnit::Fahrenheit;
 }
-// A temperature, and a difference of temperatures (no 32), in the chosen unit.
+// A temperature, and a difference of temperatures (no 32), in the chosen unit; the estimated
+// lowest tip and dip to a tenth.
 int shown(int celsius, TemperatureUnit unit) {
     return fahrenheit(unit) ? qRound(celsius * 1.8 + 32) : celsius;
 }
-int shownDifference(int kelvin, TemperatureUnit unit) {
-    return fahrenheit(unit) ? qRound(kelvin * 1.8) : kelvin;
+double shownTenths(double celsius, TemperatureUnit unit) {
+    return std::round((fahrenheit(unit) ? celsius * 1.8 + 32 : celsius) * 10) / 10;
+}
+double shownDifference(double kelvin, TemperatureUnit unit) {
+    return std::round((fahrenheit(unit) ? kelvin * 1.8 : kelvin) * 10) / 10;
 }
 QString unitText(TemperatureUnit unit) {
     return fahrenheit(unit) ? QStringLiteral("°F") : QStringLiteral("°C");
@@ -131,7 +135,7 @@ QVariant JointTableModel::data(const QModelIndex &index, int role) const {
     case Qt::DisplayRole:
         return text(r, index.column(), m_unit);
     case Qt::ToolTipRole:
-        return index.column() == Device ? r.joint.device.description() : QVariant();
+        return toolTip(r, index.column());
     case Qt::TextAlignmentRole:
         return index.column() >= Port && index.column() < Verdict && index.column() != Tool
                    ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
@@ -184,13 +188,22 @@ QString JointTableModel::text(const JointRow &row, int column, TemperatureUnit u
     case Setpoint:
         return QStringLiteral("%1 %2").arg(shown(j.setpoint, unit)).arg(unitText(unit));
     case Lowest:
-        return QStringLiteral("%1 %2").arg(shown(j.lowestTip, unit)).arg(unitText(unit));
+        return QStringLiteral("%1 %2").arg(locale.toString(shownTenths(j.lowestTip, unit), 'f', 1),
+                                           unitText(unit));
     case Dip:
-        return QStringLiteral("%1 %2")
-            .arg(shownDifference(j.dipDepth, unit))
-            .arg(differenceUnitText(unit));
+        return QStringLiteral("%1 %2").arg(
+            locale.toString(shownDifference(j.dipDepth, unit), 'f', 1), differenceUnitText(unit));
     case Recovery:
-        return j.recoveryMs ? secondsText(*j.recoveryMs) : JointTableModelTr::tr("none");
+        if (!j.recoveryMs)
+            return JointTableModelTr::tr("none");
+        if (j.recoveryBounded) {
+            // Only bounded: the interval it lies in, never one figure that looks measured.
+            const qint64 lo = qMax<qint64>(0, *j.recoveryMs - j.recoveryUncertaintyMs);
+            return JointTableModelTr::tr("%1–%2 s").arg(
+                locale.toString(lo / 1000.0, 'f', 1),
+                locale.toString((*j.recoveryMs + j.recoveryUncertaintyMs) / 1000.0, 'f', 1));
+        }
+        return secondsText(*j.recoveryMs);
     case Duration:
         return secondsText(j.durationMs);
     case PowerPeak:
@@ -201,6 +214,31 @@ QString JointTableModel::text(const JointRow &row, int column, TemperatureUnit u
         return verdictText(j.verdict);
     case WorkOrder:
         return row.workOrder;
+    default:
+        return {};
+    }
+}
+
+QString JointTableModel::toolTip(const JointRow &row, int column) {
+    const JointRecord &j = row.joint;
+    const QLocale locale;
+    switch (column) {
+    case Device:
+        return j.device.description();
+    case Time:
+        return JointTableModelTr::tr("Began within ± %1 ms of this time").arg(j.startUncertaintyMs);
+    case Lowest:
+    case Dip:
+        return JointTableModelTr::tr("Measured to ± %1 K")
+            .arg(locale.toString(j.dipUncertaintyK, 'f', 1));
+    case Recovery:
+        if (!j.recoveryMs)
+            return JointTableModelTr::tr("The tip was not seen back within the band");
+        if (j.recoveryBounded)
+            return JointTableModelTr::tr(
+                "Only bounded: the readings around the tip's return were too far apart, or broke "
+                "off, to say when within the interval shown");
+        return JointTableModelTr::tr("Measured to ± %1 ms").arg(j.recoveryUncertaintyMs);
     default:
         return {};
     }
@@ -249,6 +287,8 @@ QByteArray JointTableModel::csv() const {
                                 QStringLiteral("lowest tip [%1]").arg(t),
                                 QStringLiteral("dip [%1]").arg(differenceUnitText(m_unit)),
                                 QStringLiteral("recovery [s]"),
+                                QStringLiteral("recovery uncertainty [s]"),
+                                QStringLiteral("recovery bounded"),
                                 QStringLiteral("duration [s]"),
                                 QStringLiteral("power peak [%]"),
                                 QStringLiteral("power time [%·s]"),
@@ -257,19 +297,22 @@ QByteArray JointTableModel::csv() const {
     QByteArray out = header.join(QLatin1Char(',')).toUtf8() + '\n';
     for (const JointRow &r : m_rows) {
         const JointRecord &j = r.joint;
-        const QStringList cells = {isoTimeWithOffset(QDateTime::fromMSecsSinceEpoch(j.startMs)),
-                                   csv::quoted(j.device.key()),
-                                   QString::number(j.port),
-                                   csv::quoted(j.tool),
-                                   QString::number(shown(j.setpoint, m_unit)),
-                                   QString::number(shown(j.lowestTip, m_unit)),
-                                   QString::number(shownDifference(j.dipDepth, m_unit)),
-                                   j.recoveryMs ? csvNumber(*j.recoveryMs / 1000.0, 3) : QString(),
-                                   csvNumber(j.durationMs / 1000.0, 3),
-                                   QString::number(j.powerPeak),
-                                   csvNumber(j.powerIntegral, 2),
-                                   jointVerdictName(j.verdict),
-                                   csv::quoted(r.workOrder)};
+        const QStringList cells = {
+            isoTimeWithOffset(QDateTime::fromMSecsSinceEpoch(j.startMs)),
+            csv::quoted(j.device.key()),
+            QString::number(j.port),
+            csv::quoted(j.tool),
+            QString::number(shown(j.setpoint, m_unit)),
+            QString::number(shownTenths(j.lowestTip, m_unit), 'f', 1),
+            QString::number(shownDifference(j.dipDepth, m_unit), 'f', 1),
+            j.recoveryMs ? csvNumber(*j.recoveryMs / 1000.0, 3) : QString(),
+            j.recoveryMs ? csvNumber(j.recoveryUncertaintyMs / 1000.0, 3) : QString(),
+            j.recoveryBounded ? QStringLiteral("true") : QStringLiteral("false"),
+            csvNumber(j.durationMs / 1000.0, 3),
+            QString::number(j.powerPeak),
+            csvNumber(j.powerIntegral, 2),
+            jointVerdictName(j.verdict),
+            csv::quoted(r.workOrder)};
         out += cells.join(QLatin1Char(',')).toUtf8() + '\n';
     }
     return out;

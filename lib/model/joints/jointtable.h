@@ -77,6 +77,8 @@ public:
 
     // What a cell says on screen, in the user interface language.
     [[nodiscard]] static QString text(const JointRow &row, int column, TemperatureUnit unit);
+    // What a cell's figure is worth: how sure it is, or why it is only bounded.
+    [[nodiscard]] static QString toolTip(const JointRow &row, int column);
     [[nodiscard]] static QString columnName(int column);
     // The verdict in the user interface language ("slow recovery", "langsame Erholung").
     [[nodiscard]] static QString verdictText(JointVerdict verdict);

@@ -108,7 +108,7 @@ QString JointWatcher::warningText(const JointRecord &joint, const JointLimits &l
     case JointVerdict::TooDeep:
         return JointWatcherTr::tr(
                    "joint too deep: the tip fell %1 K below the setpoint (limit %2 K)")
-            .arg(joint.dipDepth)
+            .arg(QLocale().toString(joint.dipDepth, 'f', 1))
             .arg(limits.maxDipK);
     case JointVerdict::SlowRecovery:
         return joint.recoveryMs

@@ -42,6 +42,17 @@ PortReading reading(qint64 t, double tip, double power = 10, QString tool = QStr
     return {t, int(std::lround(tip)), kSetpoint, power, working, tool};
 }
 
+// Feeds steady readings within the band every `spacingMs` after `t` until the detector reports
+// the joint whose return it has confirmed (it gathers readings after the return for its fit, for
+// no longer than JointDetector::kMaxTailMs).
+std::optional<JointRecord> afterReturn(JointDetector &d, qint64 t, qint64 spacingMs) {
+    for (const qint64 until = t + JointDetector::kMaxTailMs + spacingMs; t <= until;) {
+        if (auto j = d.add(reading(t += spacingMs, kSetpoint, 10)))
+            return j;
+    }
+    return std::nullopt;
+}
+
 // Feeds the curve from `from` to `to` every kPollMs; the joints that ended.
 QList<JointRecord> feed(JointDetector &d, const Curve &c, qint64 from, qint64 to) {
     QList<JointRecord> out;
@@ -63,6 +74,12 @@ private Q_SLOTS:
     void whatBreaksTheMeasurementEndsTheJointIncomplete();
     void aJointThatNeverRecoversEndsAfterTheGiveUpTime();
     void aSteepDropIsTimedAtTheMiddleOfItsIntervalAGentleOneByItsLine();
+    void jointsThatFollowEachOtherWithinASecondAreEachFound();
+    void aTipThatFallsWhileTheHeaterIdlesIsNoJoint();
+    void aReadingBackInTheBandByWobbleDoesNotEndTheJoint();
+    void aSlowRecoveryIsPlacedFinerThanTheSpacingAndTheWholeDegrees();
+    void aRecoveryBetweenReadingsFarApartIsBoundedAndJudgedOnlyWhereTheBoundsAllow_data();
+    void aRecoveryBetweenReadingsFarApartIsBoundedAndJudgedOnlyWhereTheBoundsAllow();
 };
 
 void TestJointDetector::aJointIsMeasuredToWithinThePollPeriod() {
@@ -202,11 +219,129 @@ void TestJointDetector::aSteepDropIsTimedAtTheMiddleOfItsIntervalAGentleOneByIts
             (void)d.add(reading(kT0 + t, kSetpoint));
         (void)d.add(reading(kT0 + 2100, kSetpoint - below, 80));
         (void)d.add(reading(kT0 + 2200, kSetpoint - below, 80));
-        const auto j = d.add(reading(kT0 + 2300, kSetpoint, 10));
+        (void)d.add(reading(kT0 + 2300, kSetpoint, 10));
+        (void)d.add(reading(kT0 + 2400, kSetpoint, 10)); // the return confirmed
+        const auto j = afterReturn(d, kT0 + 2400, kPollMs);
         return j ? j->startMs - (kT0 + 2000) : qint64(-1);
     };
     QCOMPARE(startOf(40), 50); // steep: the middle of the interval
     QCOMPARE(startOf(7), 79);  // gentle: 5.5 / 7 of the way
+}
+
+// The second joint begins 0.8 s after the first is back within the band: no settling between.
+void TestJointDetector::jointsThatFollowEachOtherWithinASecondAreEachFound() {
+    JointDetector d({}, 1);
+    const Curve first{kT0 + 5000, 40, 900};
+    const Curve second{first.returns(5) + 800, 60, 1100};
+    QList<JointRecord> joints = feed(d, first, kT0, second.startMs);
+    joints += feed(d, second, second.startMs, kT0 + 12'000);
+    QCOMPARE(joints.size(), 2);
+    QVERIFY(std::abs(joints.at(0).startMs - first.leaves(5)) <= kPollMs / 2);
+    QVERIFY(std::abs(joints.at(1).startMs - second.leaves(5)) <= kPollMs / 2);
+    QCOMPARE(joints.at(1).verdict, JointVerdict::Ok);
+}
+
+// A tool put in its stand goes to sleep: the tip leaves the band while the heater is off, and the
+// status says so only later. That is an event of the port, never a joint.
+void TestJointDetector::aTipThatFallsWhileTheHeaterIdlesIsNoJoint() {
+    JointDetector d({}, 1);
+    qint64 t = kT0;
+    for (; t < kT0 + 3000; t += kPollMs)
+        QVERIFY(!d.add(reading(t, kSetpoint, 10)));
+    double tip = kSetpoint;
+    for (int i = 0; i < 20; ++i, t += kPollMs) // cooling with the heater off, still "working"
+        QVERIFY(!d.add(reading(t, tip -= 1.5, 0)));
+    QVERIFY(d.inJoint()); // it looked like one until now
+    QVERIFY(!d.add(reading(t, tip, 0, QStringLiteral("C245"), false))); // the status: asleep
+    QVERIFY(!d.inJoint());
+}
+
+// A tip on its way back wobbles: one reading within the band, the next below it again. The joint
+// goes on until the tip is back for good, and its recovery is that last return.
+void TestJointDetector::aReadingBackInTheBandByWobbleDoesNotEndTheJoint() {
+    JointDetector d({}, 1);
+    qint64 t = kT0;
+    for (; t < kT0 + 3000; t += kPollMs)
+        QVERIFY(!d.add(reading(t, kSetpoint, 10)));
+    const qint64 start = t;
+    for (const int below : {30, 20, 12, 4, 7, 6, 2, 1, 0, 0, 1, 0, 0, 0, 0}) {
+        const auto j = d.add(reading(t, kSetpoint - below, below > 2 ? 70 : 12));
+        if (below > 1) {
+            QVERIFY2(!j, qPrintable(QString::number(below)));
+        } else if (j) {
+            QVERIFY(j->recoveryMs);
+            // Back at the edge between the readings 6 and 2 K below, not at the wobble's 4 K.
+            QVERIFY2(*j->recoveryMs > 500 && *j->recoveryMs < 700,
+                     qPrintable(QString::number(*j->recoveryMs)));
+            QVERIFY(j->startMs < start);
+            return;
+        }
+        t += kPollMs;
+    }
+    QFAIL("the joint never ended");
+}
+
+// An exponential return read every 150 ms in whole degrees: the readings sit on one value for
+// several polls near the band's edge, yet the fit places the return within half the spacing of
+// where the tip truly crossed the edge, and the recovery within that and the start's uncertainty.
+void TestJointDetector::aSlowRecoveryIsPlacedFinerThanTheSpacingAndTheWholeDegrees() {
+    for (const qint64 phase : {0, 37, 74, 111}) {
+        JointDetector d({}, 1);
+        const qint64 t0 = kT0 + 3000 + phase;
+        const double tau = 900; // ms
+        const auto below = [&](qint64 t) {
+            const double d = double(t - t0);
+            if (d <= 0)
+                return 0.0;
+            return d < 100 ? 45 * d / 100 : 45 * std::exp(-(d - 100) / tau);
+        };
+        // The true crossing of the edge, 5.5 K below, on the way down and up.
+        const double leave = t0 + 100 * 5.5 / 45;
+        const double back = t0 + 100 + tau * std::log(45 / 5.5);
+        std::optional<JointRecord> j;
+        for (qint64 t = kT0; t < kT0 + 8000 && !j; t += 150)
+            j = d.add(reading(t, kSetpoint - below(t), below(t) > 1 ? 90 : 10));
+        QVERIFY(j && j->recoveryMs);
+        const double returnError = std::abs(double(j->startMs + *j->recoveryMs) - back);
+        QVERIFY2(returnError < 75, qPrintable(QString::number(returnError)));
+        QVERIFY(std::abs(double(j->startMs) - leave) <= double(j->startUncertaintyMs));
+        const double error = std::abs(double(*j->recoveryMs) - (back - leave));
+        QVERIFY2(error <= 75 + double(j->startUncertaintyMs),
+                 qPrintable(QStringLiteral("phase %1: %2 ms vs %3 ms")
+                                .arg(phase)
+                                .arg(*j->recoveryMs)
+                                .arg(back - leave)));
+        QVERIFY(!j->recoveryBounded);
+    }
+}
+
+void TestJointDetector::
+    aRecoveryBetweenReadingsFarApartIsBoundedAndJudgedOnlyWhereTheBoundsAllow_data() {
+    QTest::addColumn<qint64>("limitMs");
+    QTest::addColumn<JointVerdict>("verdict");
+    QTest::newRow("the limit inside the bounds") << qint64(1500) << JointVerdict::Incomplete;
+    QTest::newRow("the limit above them") << qint64(5000) << JointVerdict::Ok;
+    QTest::newRow("the limit below them") << qint64(500) << JointVerdict::SlowRecovery;
+}
+
+// Readings a second apart around the return: the recovery lies between them, no finer.
+void TestJointDetector::
+    aRecoveryBetweenReadingsFarApartIsBoundedAndJudgedOnlyWhereTheBoundsAllow() {
+    QFETCH(qint64, limitMs);
+    QFETCH(JointVerdict, verdict);
+    JointDetector d({}, 1, JointLimits{5, limitMs, 80});
+    qint64 t = kT0;
+    for (; t < kT0 + 3000; t += 1000)
+        QVERIFY(!d.add(reading(t, kSetpoint, 10)));
+    QVERIFY(!d.add(reading(t, kSetpoint - 30, 90)));
+    QVERIFY(!d.add(reading(t += 1000, kSetpoint - 20, 90)));
+    QVERIFY(!d.add(reading(t += 1000, kSetpoint, 10)));
+    QVERIFY(!d.add(reading(t += 1000, kSetpoint, 10)));
+    const auto j = afterReturn(d, t, 1000);
+    QVERIFY(j && j->recoveryMs);
+    QVERIFY(j->recoveryBounded);
+    QVERIFY(j->recoveryUncertaintyMs >= 500);
+    QCOMPARE(j->verdict, verdict);
 }
 
 QTEST_GUILESS_MAIN(TestJointDetector)

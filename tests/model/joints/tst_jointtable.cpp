@@ -23,9 +23,11 @@ JointRow joint(qint64 startMs, std::optional<qint64> recoveryMs = 1500, int port
     r.joint.startMs = startMs;
     r.joint.endMs = startMs + 2000;
     r.joint.setpoint = 350;
-    r.joint.lowestTip = 310;
-    r.joint.dipDepth = 40;
+    r.joint.lowestTip = 310.4;
+    r.joint.dipDepth = 39.6;
+    r.joint.dipUncertaintyK = 0.5;
     r.joint.recoveryMs = recoveryMs;
+    r.joint.recoveryUncertaintyMs = recoveryMs ? 40 : 0;
     r.joint.durationMs = 2000;
     r.joint.powerPeak = 87;
     r.joint.powerIntegral = 95.25;
@@ -52,6 +54,7 @@ private Q_SLOTS:
     void theVerdictIsInWordsAndCarriesALevel_data();
     void theVerdictIsInWordsAndCarriesALevel();
     void theCsvHasUnitsOffsetTimesAndStableVerdictNames();
+    void aBoundedRecoveryShowsItsIntervalAndSaysSo();
     void histogramBinsAreRoundAndJointsWithoutRecoveryCountApart();
     void theTrendIsEachToolsDailyMedian();
 };
@@ -94,13 +97,13 @@ void TestJointTable::temperaturesFollowTheUnit_data() {
     QTest::addColumn<QString>("dip");
     QTest::addColumn<QString>("csvHeader");
     QTest::newRow("celsius") << TemperatureUnit::Celsius << "350 °C"
-                             << "310 °C"
-                             << "40 K"
+                             << "310.4 °C"
+                             << "39.6 K"
                              << "setpoint [°C],lowest tip [°C],dip [K]";
-    // A dip is a difference: 40 K is 72 °F, not 104 °F.
+    // A dip is a difference: 39.6 K is 71.3 °F, not 103.3 °F.
     QTest::newRow("fahrenheit") << TemperatureUnit::Fahrenheit << "662 °F"
-                                << "590 °F"
-                                << "72 °F"
+                                << "590.7 °F"
+                                << "71.3 °F"
                                 << "setpoint [°F],lowest tip [°F],dip [°F]";
 }
 
@@ -158,18 +161,41 @@ void TestJointTable::theCsvHasUnitsOffsetTimesAndStableVerdictNames() {
     QCOMPARE(lines.size(), 4); // header, two joints, the empty rest after the last '\n'
     QCOMPARE(lines.at(0),
              QStringLiteral("time,device,port,tool,setpoint [°C],lowest tip [°C],dip [K],"
-                            "recovery [s],duration [s],power peak [%],power time [%·s],verdict,"
+                            "recovery [s],recovery uncertainty [s],recovery bounded,duration [s],"
+                            "power peak [%],power time [%·s],verdict,"
                             "work order"));
     const QString time = QDateTime::fromMSecsSinceEpoch(kT0 + 1000)
                              .toOffsetFromUtc(QDateTime::fromMSecsSinceEpoch(kT0).offsetFromUtc())
                              .toString(Qt::ISODateWithMs);
-    QCOMPARE(lines.at(1), time + QStringLiteral(",/dev/ttyUSB0|00|DME-2C|9996780,1,C245,350,310,"
-                                                "40,4.200,2.000,87,95.25,slow recovery,"
+    QCOMPARE(lines.at(1), time + QStringLiteral(",/dev/ttyUSB0|00|DME-2C|9996780,1,C245,350,310.4,"
+                                                "39.6,4.200,0.040,false,2.000,87,95.25,"
+                                                "slow recovery,"
                                                 "\"WO 17, board \"\"A\"\"\""));
     // No recovery: an empty cell, never 0.
-    QVERIFY2(lines.at(2).contains(QStringLiteral(",2,T210,350,310,40,,2.000,87,95.25,incomplete,")),
+    QVERIFY2(lines.at(2).contains(
+                 QStringLiteral(",2,T210,350,310.4,39.6,,,false,2.000,87,95.25,incomplete,")),
              qPrintable(lines.at(2)));
     QVERIFY(lines.at(3).isEmpty());
+}
+
+// A recovery known only between two readings is shown as that interval, flagged in the CSV, and
+// its tooltip says why; a measured one says how sure it is.
+void TestJointTable::aBoundedRecoveryShowsItsIntervalAndSaysSo() {
+    JointRow bounded = joint(kT0, 2500);
+    bounded.joint.recoveryBounded = true;
+    bounded.joint.recoveryUncertaintyMs = 500;
+    JointTableModel m;
+    m.reset({bounded, joint(kT0 + 1000, 1480)});
+    const QModelIndex measured = m.index(0, JointTableModel::Recovery);
+    QCOMPARE(measured.data().toString(), QStringLiteral("1.5 s"));
+    QVERIFY2(measured.data(Qt::ToolTipRole).toString().contains(QStringLiteral("± 40 ms")),
+             qPrintable(measured.data(Qt::ToolTipRole).toString()));
+    const QModelIndex range = m.index(1, JointTableModel::Recovery);
+    QCOMPARE(range.data().toString(), QStringLiteral("2.0–3.0 s"));
+    QVERIFY(range.data(Qt::ToolTipRole).toString().contains(QStringLiteral("Only bounded")));
+    const QStringList lines = QString::fromUtf8(m.csv()).split(QLatin1Char('\n'));
+    QVERIFY2(lines.at(2).contains(QStringLiteral(",2.500,0.500,true,")), qPrintable(lines.at(2)));
+    QVERIFY2(lines.at(1).contains(QStringLiteral(",1.480,0.040,false,")), qPrintable(lines.at(1)));
 }
 
 void TestJointTable::histogramBinsAreRoundAndJointsWithoutRecoveryCountApart() {
