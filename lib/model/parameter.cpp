@@ -184,7 +184,16 @@ Reply *Parameter::refresh(Priority priority) {
         } else if (m_state == State::Reading) {
             setState(m_value ? State::InSync : State::Unknown);
         }
+        m_lastReadFailed = true;
         Q_EMIT readFailed();
+        // A refusal is said once, when it begins: the scheduler asks again only now and then,
+        // and the same answer each time is no news.
+        if (reply->error() == link::ReplyError::Nak) {
+            if (m_refusal == reply->errorString())
+                return;
+            m_refusal = reply->errorString();
+            Q_EMIT refusalChanged();
+        }
         m_device.logCommunication(
             ParameterTr::tr("reading %1 (%2)").arg(settingName(*this), QString::fromLatin1(code())),
             reply->errorString());
@@ -211,6 +220,11 @@ void Parameter::deviceReported(const QByteArray &data) {
             m_rateHz = m_rateHz == 0 ? 1.0 / dt : m_rateHz + kRateSmoothing * (1.0 / dt - m_rateHz);
     }
     m_lastUpdateMs = now;
+    m_lastReadFailed = false;
+    if (isRefused()) {
+        m_refusal.clear();
+        Q_EMIT refusalChanged();
+    }
     const bool changed = !m_value || !(*m_value == *v);
     m_value = v;
     m_raw = data;

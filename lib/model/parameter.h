@@ -58,6 +58,12 @@ public:
         return m_lastUpdateMs < 0 ? QDateTime() : QDateTime::fromMSecsSinceEpoch(m_lastUpdateMs);
     }
     [[nodiscard]] double achievedRateHz() const { return m_rateHz; }
+    // The device refused the last read (a NAK: a station without this reading, or one that cannot
+    // give it now): why, in words; empty once a read succeeds. The value, if any, is from before.
+    [[nodiscard]] QString refusal() const { return m_refusal; }
+    [[nodiscard]] bool isRefused() const { return !m_refusal.isEmpty(); }
+    // The last read got no usable answer (refused, unanswered, unreadable).
+    [[nodiscard]] bool lastReadFailed() const { return m_lastReadFailed; }
 
     // Effective limits in wire units, tightened by the limiting parameters' current values.
     [[nodiscard]] qint64 minimum() const;
@@ -92,8 +98,9 @@ public:
 
 Q_SIGNALS:
     void valueChanged();
-    void updated();    // every reading, changed or not (telemetry samples)
-    void readFailed(); // a reading got no usable answer (a gap in the telemetry)
+    void updated();        // every reading, changed or not (telemetry samples)
+    void readFailed();     // a reading got no usable answer (a gap in the telemetry)
+    void refusalChanged(); // isRefused() turned on or off
     void stateChanged();
     void editChanged();
     void writeFinished(bool ok, const QString &reason, quint64 writeId);
@@ -117,6 +124,8 @@ private:
     State m_state = State::Unknown;
     QString m_failure;
     bool m_failedByLine = false; // the failure is the line's, not the device's or the value's
+    QString m_refusal;
+    bool m_lastReadFailed = false;
     qint64 m_lastUpdateMs = -1;
     double m_rateHz = 0;
     QPointer<Parameter> m_lower, m_upper;

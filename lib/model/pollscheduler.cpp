@@ -11,6 +11,9 @@ using namespace tipscope::link;
 namespace {
 constexpr qint64 kNever = std::numeric_limits<qint64>::max() / 2;
 constexpr int kLineDownHoldMs = 1000;
+// A value the device refused (a station without that reading) is asked for again this rarely:
+// the answer is most likely the same, and the wire is better spent on what it can give.
+constexpr int kRefusedRetryMs = 60'000;
 } // namespace
 
 PollClass pollClassOf(const protocol::CommandSpec &spec) {
@@ -100,10 +103,14 @@ void PollScheduler::updateIntervals(const DeviceModel *device, int port) {
 }
 
 int PollScheduler::computeInterval(const Item &i) const {
-    const int iv =
-        i.pollClass == PollClass::Live && i.port > 0 && !m_visible.value(i.device).contains(i.port)
-            ? m_intervals[int(PollClass::Status)]
-            : m_intervals[int(i.pollClass)];
+    // A port nobody looks at keeps its tip and power at the live interval all the same: its
+    // joints are measured from them, and a joint's figures must not depend on the page shown.
+    const bool measuresJoints =
+        i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power;
+    const int iv = i.pollClass == PollClass::Live && i.port > 0 && !measuresJoints &&
+                           !m_visible.value(i.device).contains(i.port)
+                       ? m_intervals[int(PollClass::Status)]
+                       : m_intervals[int(i.pollClass)];
     return m_adaptive && iv > 0 ? adaptedInterval(i, iv) : iv;
 }
 
@@ -115,8 +122,8 @@ int PollScheduler::adaptedInterval(const Item &i, int iv) const {
         return iv;
     if (i.role == Role::Status)
         return iv * kRestFactor;
-    if (inJoint(i))
-        return qMax(kFastestMs, iv / kBusyFactor);
+    if (inJoint(i)) // the tip's readings place the joint; the power's only sum its heat
+        return qMax(kFastestMs, iv / (i.role == Role::TipTemperature ? kBusyFactor : kWatchFactor));
     if (i.role == Role::Power) // a resting port's: not needed to see a joint begin
         return iv * kRestFactor;
     if (i.role == Role::TipTemperature) // a resting port's: a joint's start is timed by it
@@ -161,7 +168,8 @@ PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
     Item *best = nullptr;
     double bestShare = -1;
     for (Item &i : m_items) {
-        if (i.inFlight || !i.parameter || i.pollClass != PollClass::Live || i.dueMs >= kNever)
+        if (i.inFlight || !i.parameter || i.pollClass != PollClass::Live || i.dueMs >= kNever ||
+            i.parameter->isRefused())
             continue;
         const int iv = effectiveInterval(i);
         const double share = iv > 0 ? double(now - i.polledMs) / iv : 0;
@@ -225,8 +233,16 @@ void PollScheduler::pump() {
         return;
     }
     while (m_inFlight < m_maxInFlight) {
-        // Live first by due time; every fourth slot, the most overdue of the rest first.
-        const bool othersTurn = m_slot % 4 == 3;
+        // Live first by due time; every second slot (every fourth while a port is in a joint,
+        // whose readings come first) the most overdue of the rest first, and every second of
+        // those settings, counters and identity before errors and status: a port's many status
+        // values, always due on a busy wire, must not starve a page's reads.
+        const bool othersTurn = m_busy.isEmpty() ? m_slot % 2 == 1 : m_slot % 4 == 3;
+        const bool settingsTurn = othersTurn && m_othersTurns % 2 == 1;
+        const auto rank = [settingsTurn](const Item &x) {
+            const int r = int(x.pollClass);
+            return settingsTurn && x.pollClass == PollClass::Status ? r + int(PollClass::None) : r;
+        };
         Item *best = nullptr;
         for (Item &i : m_items) {
             if (i.inFlight || !i.parameter || i.dueMs > now)
@@ -242,26 +258,28 @@ void PollScheduler::pump() {
                     best = &i;
                 continue;
             }
-            // Among the rest, errors and status come before settings, counters and identity.
+            // Among the rest, errors and status come before settings, counters and identity
+            // (on their turn, after them).
             const bool earlier =
                 iLive ? urgency(i, now) < urgency(*best, now)
-                      : i.pollClass < best->pollClass ||
-                            (i.pollClass == best->pollClass && i.dueMs < best->dueMs);
+                      : rank(i) < rank(*best) || (rank(i) == rank(*best) && i.dueMs < best->dueMs);
             if (earlier)
                 best = &i;
         }
         // An early read goes behind every poll waiting in the queue: were it a live poll, a
         // waiting setting (a background poll) would never be sent, as early reads never end.
-        const bool early = !best && m_fillWire;
+        const bool early = !best && (m_fillWire || !m_busy.isEmpty());
         if (early)
             best = furthestAlong(now);
         if (!best)
             break;
         ++m_slot;
-        const PollClass c = best->pollClass;
-        const Priority prio = !early && (c == PollClass::Live || c == PollClass::Status)
-                                  ? Priority::LivePoll
-                                  : Priority::Background;
+        if (othersTurn && best->pollClass != PollClass::Live)
+            ++m_othersTurns;
+        // The order among polls is decided here, fairly, by turns: in the queue every due poll
+        // has one priority, or a setting sent on its turn would wait behind live polls that on a
+        // full wire never stop coming.
+        const Priority prio = early ? Priority::Background : Priority::LivePoll;
         Reply *reply = best->parameter->refresh(prio);
         if (!reply) {
             best->dueMs = kNever;
@@ -286,7 +304,10 @@ void PollScheduler::pump() {
                 i.inFlight = false;
                 i.polledMs = t;
                 const int iv = effectiveInterval(i);
-                i.dueMs = lineDown ? t + qMax(iv, kLineDownHoldMs) : iv > 0 ? t + iv : kNever;
+                i.dueMs = lineDown                                  ? t + qMax(iv, kLineDownHoldMs)
+                          : i.parameter && i.parameter->isRefused() ? t + qMax(iv, kRefusedRetryMs)
+                          : iv > 0                                  ? t + iv
+                                                                    : kNever;
             }
             pump();
         });

@@ -3,35 +3,40 @@
 // Every readable parameter of the devices it is given belongs to a poll class from the catalog:
 // live (tip temperature, power, status, setpoint), status (errors, alarms, tool, delays),
 // settings, counters, identity. Each class has an interval; live values of ports nobody is
-// looking at are polled at the status interval instead. The scheduler is self-clocking: it keeps
-// at most maxInFlight polls in the request queue and sends the next only when one finishes, so it
-// never offers more load than the wire carries. Due live values go first, but every fourth poll
-// goes to another value (errors and status before settings, counters and identity), so a burst
-// of settings (a page opening) cannot freeze the live curves and live values cannot starve the
-// rest. When the wire cannot keep up, values simply update less often;
-// Parameter::achievedRateHz() says how often. Polls use the queue's polling and background
-// priorities, so user writes and reads always go first. A line that is not open pauses polling
-// for a second at a time.
+// looking at are polled at the status interval instead, except their tip temperature and power,
+// which every port's joints are measured from whatever page is shown. The scheduler is
+// self-clocking: it keeps at most maxInFlight polls in the request queue and sends the next only
+// when one finishes, so it never offers more load than the wire carries. Due live values go first,
+// but every second poll (every fourth while a port is in a joint) goes to another value (errors and
+// status before settings, counters and identity, but every second of those turns the other way
+// round), so a burst of settings (a page opening) cannot freeze the live curves, and neither live
+// values nor the many status values can starve the rest. When the wire cannot keep up, values
+// simply update less often; Parameter::achievedRateHz() says how often. Polls use the queue's
+// polling priority (an early read the background one), so user writes and reads always go first;
+// among polls the turns above decide. A line that is not open pauses polling for a second at a
+// time; a value the device refuses is asked for again only once a minute.
 //
 // Adaptive sampling (setAdaptive(), on by default) spends the wire on joints. A port is busy
 // while its last tip reading is more than kBusyBelowK below its setpoint or its power is above
-// kBusyPowerShare of full scale. A busy port's tip temperature and power are due kBusyFactor
-// times as often as the live interval says (never more often than kFastestMs), and a port
-// turning busy has them polled at once. A resting port's tip is due kWatchFactor times as often,
-// because a joint's start can be timed no finer than the last reading before it. Values that
-// rarely change are due kRestFactor times less often: a port's status among the live values, its
-// setpoint and its connected tool; so is a resting port's power, which is not needed to see a
-// joint begin. Errors and alarms keep their interval: a fault is never reported later for it. When
-// the wire is full, the due live value longest overdue for its own interval goes first, so each
-// gets the wire in proportion to its rate: a recovery is sampled finely while the resting ports
-// keep their turns. Off, every value keeps its class's interval and the earliest due goes first.
+// kBusyPowerShare of full scale. A busy port's tip temperature is due kBusyFactor times as often
+// as the live interval says, its power kWatchFactor times (never more often than kFastestMs), and
+// a port turning busy has them polled at once. While any port is busy the line fills its wire
+// (below), so a joint is read as finely as the wire allows, its tip most of all. A resting port's
+// tip is due kWatchFactor times as often, because a joint's start can be timed no finer than the
+// last reading before it. Values that rarely change are due kRestFactor times less often: a port's
+// status among the live values, its setpoint and its connected tool; so is a resting port's power,
+// which is not needed to see a joint begin. Errors and alarms keep their interval: a fault is never
+// reported later for it. When the wire is full, the due live value longest overdue for its own
+// interval goes first, so each gets the wire in proportion to its rate: a recovery is sampled
+// finely while the resting ports keep their turns. Off, every value keeps its class's interval and
+// the earliest due goes first.
 //
-// Filling the wire (setFillWire(), off by default; a Workspace turns it on) polls a line at the
-// rate its wire carries rather than at its intervals: when a slot is free and nothing is due, it
-// goes to the live value furthest along its own interval, so every live value is read as often
-// as the wire allows, each in proportion to its rate (a resting port's tip still twice as often
-// as its live interval says relative to its power, and so on). Only live values are read early:
-// errors, settings, counters and identity keep their intervals.
+// Filling the wire (setFillWire(), off by default; a Workspace turns it on; always while a port is
+// busy, adaptive) polls a line at the rate its wire carries rather than at its intervals: when a
+// slot is free and nothing is due, it goes to the live value furthest along its own interval, so
+// every live value is read as often as the wire allows, each in proportion to its rate (a resting
+// port's tip still twice as often as its live interval says relative to its power, and so on). Only
+// live values are read early: errors, settings, counters and identity keep their intervals.
 #pragma once
 
 #include "parameter.h"
@@ -60,7 +65,8 @@ public:
     // 0 means "once, then only on request".
     void setInterval(PollClass pollClass, int ms);
     [[nodiscard]] int interval(PollClass pollClass) const;
-    // Ports whose live values are polled at the live interval (the others at the status one).
+    // Ports whose live values are polled at the live interval (the others at the status one,
+    // but for their tip temperature and power).
     void setVisiblePorts(DeviceModel *device, const QSet<int> &ports);
     // Polls a class of a device once now (a page opened, a write finished).
     void requestRefresh(DeviceModel *device, PollClass pollClass);
@@ -126,6 +132,7 @@ private:
     int m_maxInFlight = 2;
     int m_inFlight = 0;
     int m_slot = 0;
+    int m_othersTurns = 0; // the turns of the rest that went to one of them
     bool m_running = false;
     bool m_adaptive = true;
     bool m_fillWire = false;

@@ -11,14 +11,20 @@ const QStringList kPortSeries = {QStringLiteral("tip"),        QStringLiteral("s
 const QStringList kFeederSeries = {QStringLiteral("fed"), QStringLiteral("speed"),
                                    QStringLiteral("feeding")};
 
-// A value the sample can carry: its reading, or 0 for one that cannot be read (a failed
-// read, or a command the family lacks); nullopt while the first reading is still to come.
-std::optional<qint32> carried(const Parameter *p) {
-    if (!p || p->state() == Parameter::State::Failed)
-        return p && p->number() ? qint32(*p->number()) : 0;
+// A value the sample can carry: its reading, or 0 for one that cannot be read (a failed write's
+// value, a command the family lacks, a read the station refuses); nullopt while the first reading
+// is still to come. An auxiliary value (the hardware temperatures) is not waited for once a read
+// of it went unanswered either: a value the station cannot give costs only itself, never the
+// samples of the tip (and so the charts and the joints).
+enum class Need { Essential, Auxiliary };
+std::optional<qint32> carried(const Parameter *p, Need need = Need::Essential) {
+    if (!p)
+        return 0;
     if (const auto v = p->number())
         return qint32(*v);
-    return std::nullopt;
+    const bool cannotBeRead = p->state() == Parameter::State::Failed || p->isRefused() ||
+                              (need == Need::Auxiliary && p->lastReadFailed());
+    return cannotBeRead ? std::optional<qint32>(0) : std::nullopt;
 }
 } // namespace
 
@@ -73,18 +79,22 @@ void TelemetryRecorder::watchStation(StationModel *station) {
         gapOnNoAnswer(tip, key);
         // A sample per tip-temperature reading; the other series carry their latest values.
         connect(tip, &Parameter::updated, this, [this, station, port, key] {
-            const auto status = station->number(Role::Status, port->number());
             // A series starting at 0 before its first reading would draw a false drop and spoil
-            // the measurements: record once the setpoint, power and temperatures are known.
-            const auto transistor = carried(port->parameter(Role::TransistorTemperature));
-            const auto transformer = carried(station->parameter(Role::TransformerTemperature));
-            if (!port->selectedTemperature() || !port->power() || !transistor || !transformer)
+            // the measurements: record once the setpoint, power, status and temperatures are
+            // known (a status of 0 is "working"). A status the station does not give is taken
+            // as working, as the joints cannot be told from rests without it.
+            const auto status = carried(port->parameter(Role::Status), Need::Auxiliary);
+            const auto setpoint = carried(port->parameter(Role::Setpoint));
+            const auto power = carried(port->parameter(Role::Power));
+            const auto transistor =
+                carried(port->parameter(Role::TransistorTemperature), Need::Auxiliary);
+            const auto transformer =
+                carried(station->parameter(Role::TransformerTemperature), Need::Auxiliary);
+            if (!status || !setpoint || !power || !transistor || !transformer)
                 return;
             m_telemetry.append(key, m_clock(),
-                               {qint32(port->tipTemperature().value_or(0)),
-                                qint32(port->selectedTemperature().value_or(0)),
-                                qint32(port->power().value_or(0)), qint32(status.value_or(0)),
-                                *transistor, *transformer});
+                               {qint32(port->tipTemperature().value_or(0)), *setpoint, *power,
+                                *status, *transistor, *transformer});
         });
     }
 }

@@ -163,6 +163,10 @@ void TestChartsPage::statusChangesInjectedInTheSimulatorGetMarkers() {
 
 void TestChartsPage::zoomAndPanKeepTheCrosshairReadoutConsistentWithTheBuffer() {
     waitForSamples(40);
+    // A heating tip is read as fast as the wire allows: wait for history to hover over, too.
+    const auto *tips =
+        m_session->telemetry().buffer(TelemetryRecorder::keyOf(*m_session->station(), 1));
+    QTRY_VERIFY_WITH_TIMEOUT(tips->lastTime() - tips->firstTime() >= 4000, kDataMs);
     m_page->redrawNow();
     ChartWidget *pane = stationPane();
     QWidget *surface = pane->plotSurface();
@@ -189,8 +193,6 @@ void TestChartsPage::zoomAndPanKeepTheCrosshairReadoutConsistentWithTheBuffer() 
     QCOMPARE(pane->timeEnd(), m_page->viewport().end());
 
     // Hover over data: the readout is the buffer's newest sample at or before that instant.
-    const auto *tips =
-        m_session->telemetry().buffer(TelemetryRecorder::keyOf(*m_session->station(), 1));
     const double x = pane->xAt(tips->lastTime() - 2000);
     QVERIFY(plot.contains(QPointF(x, plot.center().y())));
     sendMouse(surface, QEvent::MouseMove, QPointF(x, plot.center().y()), Qt::NoButton,
@@ -199,6 +201,7 @@ void TestChartsPage::zoomAndPanKeepTheCrosshairReadoutConsistentWithTheBuffer() 
     const QList<ChartTrace> traces = m_page->traces(0);
     const QList<ReadoutValue> values =
         readoutAt(m_session->telemetry(), sessionChannels(*m_session), traces, t);
+    QVERIFY(tips->valueAt(0, t));
     QCOMPARE(values.at(0).wire, tips->valueAt(0, t)->value);
     QCOMPARE(values.at(0).sampleMs, tips->valueAt(0, t)->timeMs);
     QVERIFY2(m_page->readoutText().contains(readoutText(traces, values, t)),
@@ -209,6 +212,7 @@ void TestChartsPage::zoomAndPanKeepTheCrosshairReadoutConsistentWithTheBuffer() 
 
 void TestChartsPage::exportedCsvReplaysTheSameSamples() {
     waitForSamples(20);
+    m_page->redrawNow(); // the view follows the samples that came, however fast they came
     m_page->viewport().setFollowing(false); // a fixed window to export and compare
     const qint64 t0 = m_page->viewport().start(), t1 = m_page->viewport().end();
     const QString path = m_dir.filePath(QStringLiteral("window.csv"));
