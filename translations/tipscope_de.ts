@@ -32,92 +32,92 @@
         <translation>%1 muss ein Text sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="46"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 muss eine ganze Zahl von %2 bis %3 sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="55"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="57"/>
         <source>%1 must be true or false</source>
         <translation>%1 muss true oder false sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="61"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="63"/>
         <source>%1 must be an object</source>
         <translation>%1 muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="79"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="81"/>
         <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>keine Konfiguration des TipScope-Agenten (&quot;format&quot; ist nicht &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="83"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="86"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; muss eine ganze Zahl ab 1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="85"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="89"/>
         <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
         <translation>für ein neueres TipScope geschrieben (Version %1); dieses liest Version %2 und ältere</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="113"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="117"/>
         <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
         <translation>broker.protocol muss &quot;3.1.1&quot; oder &quot;5&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="125"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="129"/>
         <source>broker.host must name the broker</source>
         <translation>broker.host muss den Broker nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="127"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="132"/>
         <source>broker.password_file and broker.password_env: give one of them</source>
         <translation>broker.password_file und broker.password_env: nur eines von beiden angeben</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="136"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="141"/>
         <source>file %1</source>
         <translation>Datei %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="142"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="147"/>
         <source>environment variable %1</source>
         <translation>Umgebungsvariable %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="166"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="171"/>
         <source>site must name the site</source>
         <translation>site muss den Standort nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="168"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="173"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace muss die Arbeitsbereichsdatei der zu betreibenden Linien nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="189"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="192"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="201"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>die Konfiguration %1 ist zu groß, um eine zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="196"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="203"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>die Konfiguration %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="205"/>
         <source>it is a list</source>
         <translation>es ist eine Liste</translation>
     </message>
@@ -125,17 +125,17 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="30"/>
+        <location filename="../app/agent/main.cpp" line="29"/>
         <source>without a user name</source>
         <translation>ohne Benutzernamen</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="32"/>
+        <location filename="../app/agent/main.cpp" line="31"/>
         <source>as %1, without a password</source>
         <translation>als %1, ohne Passwort</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="33"/>
+        <location filename="../app/agent/main.cpp" line="32"/>
         <source>as %1, password from the %2</source>
         <translation>als %1, Passwort aus %2</translation>
     </message>
@@ -148,7 +148,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="40"/>
+        <location filename="../app/agent/main.cpp" line="41"/>
         <source> with TLS</source>
         <translation> mit TLS</translation>
     </message>
@@ -158,47 +158,47 @@
         <translation>Betreibt die Linien eines Arbeitsbereichs ohne Bildschirm, hält ihre Lötstellen und Ereignisse im Journal fest und veröffentlicht sie an einen MQTT-Broker.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="59"/>
+        <location filename="../app/agent/main.cpp" line="60"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>Die Konfiguration des Agenten (Vorgabe %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="59"/>
+        <location filename="../app/agent/main.cpp" line="61"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="63"/>
+        <location filename="../app/agent/main.cpp" line="64"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Liest die Konfiguration und ihren Arbeitsbereich, meldet Fehler und beendet sich.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="68"/>
+        <location filename="../app/agent/main.cpp" line="71"/>
         <source>unexpected argument %1</source>
         <translation>unerwartetes Argument %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="83"/>
+        <location filename="../app/agent/main.cpp" line="87"/>
         <source>%1 is good: %2</source>
         <translation>%1 ist in Ordnung: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="94"/>
+        <location filename="../app/agent/main.cpp" line="99"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>Konfiguration abgelehnt, die laufende bleibt: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="98"/>
+        <location filename="../app/agent/main.cpp" line="103"/>
         <source>reloading: %1</source>
         <translation>neu laden: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="102"/>
+        <location filename="../app/agent/main.cpp" line="107"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 startet: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="106"/>
+        <location filename="../app/agent/main.cpp" line="111"/>
         <source>stopped</source>
         <translation>beendet</translation>
     </message>
@@ -227,17 +227,17 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="218"/>
+        <location filename="../lib/protocol/catalog.cpp" line="215"/>
         <source>Unknown NAK code %1</source>
         <translation>Unbekannter NAK-Code %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="223"/>
+        <location filename="../lib/protocol/catalog.cpp" line="220"/>
         <source>Unknown station error %1</source>
         <translation>Unbekannter Stationsfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="232"/>
+        <location filename="../lib/protocol/catalog.cpp" line="229"/>
         <source>Unknown port error %1</source>
         <translation>Unbekannter Portfehler %1</translation>
     </message>
@@ -1242,12 +1242,12 @@
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="224"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
         <source>unknown (%1)</source>
         <translation>unbekannt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="231"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
@@ -1272,7 +1272,7 @@
         <translation>Teilzähler vorgeschobene Länge zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="237"/>
+        <location filename="../lib/protocol/catalog.cpp" line="234"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt)</translation>
     </message>
@@ -1383,119 +1383,119 @@
         <translation>Zeile %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="118"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="142"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>die Zeile ist länger als %1 Bytes (ist das eine Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
         <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="147"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>die Datei enthält Binärdaten, keinen CSV-Text</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="153"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="157"/>
         <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>mehr als %1 Kommentarzeilen („#“); eine Aufzeichnung hat wenige, und eine je Kanal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="194"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>die Kopfzeile muss mit &quot;time&quot; beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 Spalten; die Wiedergabe liest höchstens %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="211"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>Spalte %1 &quot;%2&quot; ist weder &quot;port&lt;n&gt; &lt;Reihe&gt; [Einheit]&quot; noch &quot;feeder &lt;Reihe&gt; [Einheit]&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="225"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>Spalte %1 &quot;%2&quot;: die Einheit muss &quot;%3&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="227"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="255"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="256"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="235"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>Spalte %1 &quot;%2&quot; kommt zweimal vor</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="241"/>
         <source>the header names no series columns</source>
         <translation>die Kopfzeile nennt keine Spalten mit Datenreihen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>Spalte %1: &quot;%2&quot; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="291"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 hat nur in einem Teil seiner Spalten Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 Zellen, aber die Kopfzeile hat %2 Spalten</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="303"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; ist keine Zeitangabe nach ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>die Zeit %1 liegt vor der der vorigen Zeile (die Zeilen müssen zeitlich geordnet sein)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="318"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 hat mehr als %2 Messwerte, mehr als die Wiedergabe fasst; teilen Sie die Datei auf</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="332"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="342"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>das Ereignis &quot;%1&quot; hat nicht die Form &quot;&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="167"/>
         <source>a quoted cell is not closed</source>
         <translation>eine Zelle in Anführungszeichen ist nicht geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="364"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="375"/>
         <source>the file has a header but no rows</source>
         <translation>die Datei hat eine Kopfzeile, aber keine Zeilen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="362"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="373"/>
         <source>the file is empty or holds only comments</source>
         <translation>die Datei ist leer oder enthält nur Kommentare</translation>
     </message>
@@ -1505,17 +1505,17 @@
         <translation>die Datei ist größer als %1 MB; die Wiedergabe liest Dateien bis %1 MB</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="107"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="109"/>
         <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
         <translation>ihre Messwerte belegen nach %2 MB Gelesenem %1 MB Speicher, mehr als die Wiedergabe erlaubt (das Doppelte der Dateigröße); eine von TipScope geschriebene Aufzeichnung braucht weit weniger</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="144"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="146"/>
         <source>reading was cancelled</source>
         <translation>das Lesen wurde abgebrochen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="168"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>die Datei ist %1 MB groß; die Wiedergabe liest Dateien bis %2 MB</translation>
     </message>
@@ -1679,80 +1679,80 @@
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="114"/>
+        <location filename="../app/cli/clicommands.cpp" line="116"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="137"/>
+        <location filename="../app/cli/clicommands.cpp" line="139"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="142"/>
+        <location filename="../app/cli/clicommands.cpp" line="144"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="150"/>
+        <location filename="../app/cli/clicommands.cpp" line="152"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="155"/>
+        <location filename="../app/cli/clicommands.cpp" line="158"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="193"/>
+        <location filename="../app/cli/clicommands.cpp" line="199"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="202"/>
+        <location filename="../app/cli/clicommands.cpp" line="208"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="215"/>
-        <location filename="../app/cli/clicommands.cpp" line="217"/>
+        <location filename="../app/cli/clicommands.cpp" line="222"/>
+        <location filename="../app/cli/clicommands.cpp" line="224"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="220"/>
+        <location filename="../app/cli/clicommands.cpp" line="227"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="183"/>
-        <location filename="../app/cli/clicommands.cpp" line="237"/>
-        <location filename="../app/cli/clicommands.cpp" line="260"/>
+        <location filename="../app/cli/clicommands.cpp" line="188"/>
+        <location filename="../app/cli/clicommands.cpp" line="244"/>
+        <location filename="../app/cli/clicommands.cpp" line="270"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="253"/>
+        <location filename="../app/cli/clicommands.cpp" line="261"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="326"/>
+        <location filename="../app/cli/clicommands.cpp" line="336"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="349"/>
+        <location filename="../app/cli/clicommands.cpp" line="359"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="352"/>
+        <location filename="../app/cli/clicommands.cpp" line="362"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="353"/>
+        <location filename="../app/cli/clicommands.cpp" line="364"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
     </message>
@@ -1765,7 +1765,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="175"/>
+        <location filename="../app/cli/clicommands.cpp" line="179"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 wurde nicht gesendet: seine Grenze %2 ließ sich nicht lesen: %3</translation>
     </message>
@@ -1778,17 +1778,17 @@
         <translation>„%1“ ist keine Kontextzeile: schreiben Sie work_order=W, board_serial=S oder operator=O</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="57"/>
+        <location filename="../app/cli/clicontext.cpp" line="58"/>
         <source>cannot read standard input</source>
         <translation>die Standardeingabe kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="92"/>
+        <location filename="../app/cli/clicontext.cpp" line="93"/>
         <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
         <translation>tipscope-cli: context nimmt show, set [--work-order W] [--serial S] [--operator O] [--stdin] oder clear</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="124"/>
+        <location filename="../app/cli/clicontext.cpp" line="126"/>
         <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
         <translation>tipscope-cli: limits nimmt show, set REGEL (etwa port=1,tool=C245,recovery=3.5,dip=60) oder clear</translation>
     </message>
@@ -1801,29 +1801,29 @@
         <translation>„%1“ ist keine Zeitangabe: schreiben Sie 24h, 30m, 7d, 2026-12-01 oder 2026-12-01T08:00</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="64"/>
+        <location filename="../app/cli/clijoints.cpp" line="65"/>
         <source>the journal has no device &apos;%1&apos;</source>
         <translation>das Journal kennt kein Gerät „%1“</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <location filename="../app/cli/clijoints.cpp" line="66"/>
         <source>&apos;%1&apos; names %2 devices; give one of:
   %3</source>
         <translation>„%1“ bezeichnet %2 Geräte; geben Sie eines davon an:
   %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="93"/>
+        <location filename="../app/cli/clijoints.cpp" line="94"/>
         <source>--port takes a port number from 1 to 4</source>
         <translation>--port nimmt eine Portnummer von 1 bis 4</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="102"/>
+        <location filename="../app/cli/clijoints.cpp" line="103"/>
         <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
         <translation>--verdict nimmt ok, slow-recovery, too-deep oder incomplete</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="144"/>
+        <location filename="../app/cli/clijoints.cpp" line="143"/>
         <source>tipscope-cli: give --json or --csv, not both</source>
         <translation>tipscope-cli: geben Sie --json oder --csv an, nicht beides</translation>
     </message>
@@ -1841,7 +1841,7 @@
         <translation>tipscope-cli: die Aufbewahrungsdauer konnte nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="111"/>
+        <location filename="../app/cli/clijournal.cpp" line="112"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal erwartet show oder retention TAGE</translation>
     </message>
@@ -1857,37 +1857,58 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="116"/>
+        <location filename="../app/cli/climonitor.cpp" line="175"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="123"/>
+        <location filename="../app/cli/climonitor.cpp" line="288"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="135"/>
+        <location filename="../app/cli/climonitor.cpp" line="259"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
+        <location filename="../app/cli/climonitor.cpp" line="226"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="22"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="180"/>
+        <location filename="../app/cli/climonitor.cpp" line="74"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="159"/>
+        <location filename="../app/cli/climonitor.cpp" line="98"/>
+        <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
+        <translation>tipscope-cli: %1 zu schreiben ist fehlgeschlagen: %2; die Überwachung geht ohne die Datei weiter</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="158"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitorjoints.cpp" line="60"/>
+        <location filename="../app/cli/climonitor.cpp" line="192"/>
+        <source>tipscope-cli: the workspace %1 has no lines</source>
+        <translation>tipscope-cli: der Arbeitsbereich %1 hat keine Linien</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="227"/>
+        <source>permission denied</source>
+        <translation>keine Berechtigung</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <source>no such folder</source>
+        <translation>diesen Ordner gibt es nicht</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="371"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 Einträge konnten nicht im Journal %2 gespeichert werden: %3</translation>
     </message>
@@ -1895,37 +1916,37 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="56"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="37"/>
         <source>--mqtt takes the broker as HOST:PORT</source>
         <translation>--mqtt erwartet den Broker als HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="68"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="49"/>
         <source>--site takes the site&apos;s name</source>
         <translation>--site erwartet den Namen des Standorts</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="55"/>
         <source>--interval takes milliseconds from 100 to 3600000</source>
         <translation>--interval erwartet Millisekunden von 100 bis 3600000</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="98"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="80"/>
         <source>Broker connected.</source>
         <translation>Broker verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="100"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="82"/>
         <source>Broker disconnected.</source>
         <translation>Broker getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="101"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="84"/>
         <source>Connecting to the broker.</source>
         <translation>Verbindung zum Broker wird aufgebaut.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="103"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="86"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n Gerät, %1 Live-Nachrichten, %2 Lötstellen und Ereignisse weitergeleitet, %3 wartend. %4</numerusform>
@@ -1933,12 +1954,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="120"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="104"/>
         <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
         <translation>tipscope-cli: %1 ist nicht gesetzt: Verbindung als %2 ohne Passwort</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="127"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="112"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
@@ -2170,7 +2191,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: profile erwartet save DATEI, diff DATEI oder apply DATEI</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="105"/>
+        <location filename="../app/cli/cliprofile.cpp" line="106"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: das Anwenden dieses Profils würde abgelehnt: %1</translation>
     </message>
@@ -2183,48 +2204,48 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: abgebrochen, bevor die Aufzeichnung begann</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="71"/>
+        <location filename="../app/cli/clirecord.cpp" line="72"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="106"/>
+        <location filename="../app/cli/clirecord.cpp" line="107"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record erwartet eine DATEI, z. B. record linie3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="114"/>
+        <location filename="../app/cli/clirecord.cpp" line="116"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration erwartet Sekunden (0: bis zum Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="121"/>
-        <location filename="../app/cli/clirecord.cpp" line="149"/>
+        <location filename="../app/cli/clirecord.cpp" line="124"/>
+        <location filename="../app/cli/clirecord.cpp" line="152"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: in %1 kann nicht aufgezeichnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="123"/>
+        <location filename="../app/cli/clirecord.cpp" line="125"/>
         <source>no such folder</source>
         <translation>Ordner nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="123"/>
+        <location filename="../app/cli/clirecord.cpp" line="126"/>
         <source>not writable</source>
         <translation>nicht beschreibbar</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="170"/>
+        <location filename="../app/cli/clirecord.cpp" line="174"/>
         <source># recording %1 of %2 to %3</source>
         <translation># zeichne %1 von %2 in %3 auf</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="178"/>
+        <location filename="../app/cli/clirecord.cpp" line="182"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="182"/>
+        <location filename="../app/cli/clirecord.cpp" line="187"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n Zeile nach %1 aufgezeichnet</numerusform>
@@ -2235,42 +2256,37 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="76"/>
+        <location filename="../app/cli/clisession.cpp" line="78"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="81"/>
-        <source>connected to %1</source>
-        <translation>verbunden mit %1</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clisession.cpp" line="150"/>
+        <location filename="../app/cli/clisession.cpp" line="134"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="159"/>
+        <location filename="../app/cli/clisession.cpp" line="143"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="160"/>
+        <location filename="../app/cli/clisession.cpp" line="144"/>
         <source>without addresses</source>
         <translation>ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="154"/>
+        <location filename="../app/cli/clisession.cpp" line="138"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="182"/>
+        <location filename="../app/cli/clisession.cpp" line="166"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="187"/>
+        <location filename="../app/cli/clisession.cpp" line="171"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -2278,7 +2294,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliWorkspace</name>
     <message>
-        <location filename="../app/cli/cliworkspace.cpp" line="167"/>
+        <location filename="../app/cli/cliworkspace.cpp" line="152"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: der Arbeitsbereich %1 hat keine Leitungen</translation>
     </message>
@@ -2409,17 +2425,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1 an Adresse %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="74"/>
+        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
         <source>software unknown</source>
         <translation>Software unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="75"/>
+        <location filename="../lib/model/deviceidentity.cpp" line="77"/>
         <source>software %1</source>
         <translation>Software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
+        <location filename="../lib/model/deviceidentity.cpp" line="78"/>
         <source>%1 on %2, %3</source>
         <translation>%1 über %2, %3</translation>
     </message>
@@ -2486,7 +2502,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>&apos;%1&apos; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="85"/>
+        <location filename="../lib/model/displayunits.cpp" line="84"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 hat mehr Nachkommastellen, als %2 zulässt</translation>
     </message>
@@ -2609,7 +2625,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1 hat keinen Befehl %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="115"/>
+        <location filename="../lib/model/feedermodel.cpp" line="116"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -2632,72 +2648,72 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Auf der Leitung wird dieser Wert als %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="68"/>
+        <location filename="../lib/model/framecomposer.cpp" line="70"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Unbekannte Gerätefamilie: der Katalog kann dieses Telegramm nicht prüfen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="76"/>
+        <location filename="../lib/model/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 ist im Katalog kein Schreibbefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="77"/>
+        <location filename="../lib/model/framecomposer.cpp" line="79"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 ist im Katalog kein Lesebefehl für %2.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="80"/>
+        <location filename="../lib/model/framecomposer.cpp" line="82"/>
         <source>Did you mean %1?</source>
         <translation>Meinten Sie %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="81"/>
+        <location filename="../lib/model/framecomposer.cpp" line="83"/>
         <source>It is sent as typed.</source>
         <translation>Es wird unverändert gesendet.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="86"/>
+        <location filename="../lib/model/framecomposer.cpp" line="88"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Lesebefehle haben kein Datenfeld; das Gerät kann dieses Telegramm ablehnen.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="92"/>
+        <location filename="../lib/model/framecomposer.cpp" line="95"/>
         <source>Dangerous: %1</source>
         <translation>Gefährlich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="96"/>
+        <location filename="../lib/model/framecomposer.cpp" line="99"/>
         <source>Catalog check: %1</source>
         <translation>Katalogprüfung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="110"/>
+        <location filename="../lib/model/framecomposer.cpp" line="113"/>
         <source>%1 (no address)</source>
         <translation>%1 (ohne Adresse)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="152"/>
+        <location filename="../lib/model/framecomposer.cpp" line="156"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>An dieser Leitung ist kein Gerät bekannt: zuerst verbinden oder Roh-Hex senden.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="170"/>
+        <location filename="../lib/model/framecomposer.cpp" line="173"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>Nicht sendbar: der Befehl muss aus 3 druckbaren Zeichen bestehen, z. B. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="174"/>
+        <location filename="../lib/model/framecomposer.cpp" line="179"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>Nicht sendbar: das Datenfeld darf nur druckbare ASCII-Zeichen enthalten.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="179"/>
+        <location filename="../lib/model/framecomposer.cpp" line="184"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>Nicht sendbar: Adressen gehen von 00 bis 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="208"/>
+        <location filename="../lib/model/framecomposer.cpp" line="214"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n Byte, ein gültiges Telegramm: %1</numerusform>
@@ -2705,7 +2721,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="210"/>
+        <location filename="../lib/model/framecomposer.cpp" line="216"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n Byte, kein gültiges Telegramm (%1): wird unverändert gesendet</numerusform>
@@ -2716,77 +2732,77 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>FrameDecoder</name>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="19"/>
         <source>frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="21"/>
         <source>BCC error</source>
         <translation>BCC-Fehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="23"/>
         <source>format error</source>
         <translation>Formatfehler</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="25"/>
         <source>overflow</source>
         <translation>Überlauf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="26"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="27"/>
         <source>garbage</source>
         <translation>Datenmüll</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="49"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="47"/>
         <source>not STX…ETX BCC or too short</source>
         <translation>kein STX…ETX BCC oder zu kurz</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="52"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="50"/>
         <source>BCC is %1, expected %2</source>
         <translation>BCC ist %1, erwartet %2</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="61"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="60"/>
         <source>malformed addresses</source>
         <translation>fehlerhafte Adressen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="67"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="66"/>
         <source>too short for header and command</source>
         <translation>zu kurz für Kopf und Befehl</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="70"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="69"/>
         <source>unknown header</source>
         <translation>unbekannter Kopf</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="74"/>
         <source>command is not 3 letters or digits</source>
         <translation>Befehl besteht nicht aus 3 Buchstaben oder Ziffern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="79"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="78"/>
         <source>data field is not printable ASCII</source>
         <translation>Datenfeld ist kein druckbares ASCII</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="111"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="110"/>
         <source>frame interrupted by a new STX</source>
         <translation>Telegramm durch ein neues STX unterbrochen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="120"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="119"/>
         <source>no ETX within %1 bytes</source>
         <translation>kein ETX innerhalb von %1 Bytes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="145"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="144"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n Byte außerhalb eines Telegramms</numerusform>
@@ -2797,27 +2813,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>HexBytes</name>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="34"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="35"/>
         <source>odd number of hex digits before position %1</source>
         <translation>ungerade Anzahl von Hex-Ziffern vor Position %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="44"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="45"/>
         <source>&apos;%1&apos; at position %2 is not a hex digit</source>
         <translation>&apos;%1&apos; an Position %2 ist keine Hex-Ziffer</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="51"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="52"/>
         <source>more than %1 bytes</source>
         <translation>mehr als %1 Bytes</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="56"/>
         <source>odd number of hex digits</source>
         <translation>ungerade Anzahl von Hex-Ziffern</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="57"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="58"/>
         <source>no bytes given</source>
         <translation>keine Bytes angegeben</translation>
     </message>
@@ -2825,47 +2841,47 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointLimitRules</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="48"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="49"/>
         <source>the longest recovery must be more than 0 s and at most %1 s</source>
         <translation>die längste Erholzeit muss mehr als 0 s und höchstens %1 s betragen</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="56"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="57"/>
         <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
         <translation>der tiefste Einbruch muss eine ganze Zahl von Kelvin zwischen 1 und %1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="62"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="65"/>
         <source>the tip wear share must be more than 0 and at most 10</source>
         <translation>der Anteil für Spitzenverschleiß muss größer als 0 und höchstens 10 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="68"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="71"/>
         <source>a port is a number from 1 to 4</source>
         <translation>ein Port ist eine Zahl von 1 bis 4</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="106"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="109"/>
         <source>%1 must be a number</source>
         <translation>%1 muss eine Zahl sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="165"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="168"/>
         <source>joint limits: %1</source>
         <translation>Lötstellen-Grenzwerte: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="171"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="175"/>
         <source>joint limit rule %1: %2</source>
         <translation>Lötstellen-Grenzwertregel %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="198"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="202"/>
         <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
         <translation>„%1“ ist kein Grenzwert: schreiben Sie port=N, tool=NAME, recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL, durch Kommas getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="210"/>
         <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
         <translation>„%1“ setzt keinen Grenzwert: geben Sie recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL an</translation>
     </message>
@@ -2873,17 +2889,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointLimitsFile</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="36"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="35"/>
         <source>cannot read the joint limits %1: %2</source>
         <translation>die Lötstellen-Grenzwerte %1 können nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="38"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="39"/>
         <source>the joint limits %1 are too big</source>
         <translation>die Lötstellen-Grenzwerte %1 sind zu groß</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="41"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="42"/>
         <source>the joint limits %1 are not a JSON object: %2</source>
         <translation>die Lötstellen-Grenzwerte %1 sind kein JSON-Objekt: %2</translation>
     </message>
@@ -2891,102 +2907,132 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointTableModel</name>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="155"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="159"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
         <source>ok</source>
         <translation>in Ordnung</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="167"/>
         <source>slow recovery</source>
         <translation>langsame Erholung</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="169"/>
         <source>too deep</source>
         <translation>zu tief</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="167"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="171"/>
         <source>incomplete</source>
         <translation>unvollständig</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="193"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="198"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="199"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="202"/>
+        <source>%1–%2 s</source>
+        <translation>%1–%2 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
         <source>%1 %·s</source>
         <translation>%1 %·s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="229"/>
+        <source>Began within ± %1 ms of this time</source>
+        <translation>Begann innerhalb von ± %1 ms um diese Zeit</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <source>Measured to ± %1 K</source>
+        <translation>Gemessen auf ± %1 K</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="236"/>
+        <source>The tip was not seen back within the band</source>
+        <translation>Die Spitze kam nicht sichtbar in das Band zurück</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="238"/>
+        <source>Only bounded: the readings around the tip&apos;s return were too far apart, or broke off, to say when within the interval shown</source>
+        <translation>Nur eingegrenzt: die Messwerte um die Rückkehr der Spitze lagen zu weit auseinander oder brachen ab, um zu sagen, wann innerhalb des gezeigten Intervalls</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="241"/>
+        <source>Measured to ± %1 ms</source>
+        <translation>Gemessen auf ± %1 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="250"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="252"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="254"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="256"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="258"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="260"/>
         <source>Lowest</source>
         <translation>Tiefstwert</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="262"/>
         <source>Dip</source>
         <translation>Einbruch</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="264"/>
         <source>Recovery</source>
         <translation>Erholung</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="266"/>
         <source>Duration</source>
         <translation>Dauer</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="268"/>
         <source>Power peak</source>
         <translation>Leistungsspitze</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="270"/>
         <source>Power·time</source>
         <translation>Leistung·Zeit</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="272"/>
         <source>Verdict</source>
         <translation>Bewertung</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="236"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="274"/>
         <source>Work order</source>
         <translation>Auftrag</translation>
     </message>
@@ -2994,17 +3040,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="111"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="109"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>Lötstelle zu tief: die Lötspitze fiel %1 K unter den Sollwert (Grenze %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="115"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>Lötstelle langsam erholt: %1 s (Grenze %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="118"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="117"/>
         <source>joint did not recover within %1 s</source>
         <translation>Lötstelle hat sich in %1 s nicht erholt</translation>
     </message>
@@ -3023,27 +3069,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Unter %1 gibt es kein Journal.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="82"/>
+        <location filename="../lib/journal/journalschema.cpp" line="89"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>Das Journal %1 wurde von einem neueren TipScope geschrieben (Schema %2; dieses kennt bis %3). Es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="96"/>
+        <location filename="../lib/journal/journalschema.cpp" line="104"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>Die Datei %1 ist kein TipScope-Journal. Sie wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="173"/>
+        <location filename="../lib/journal/journalschema.cpp" line="183"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="246"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="244"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Verlorene Einträge: %1. Grund: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="336"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="333"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
     </message>
@@ -3053,27 +3099,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Das Journal %1 kann nicht wachsen: Der Datenträger ist voll oder das Journal hat seine Größengrenze erreicht.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="51"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="52"/>
         <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
         <translation>Das Journal %1 ist beschädigt oder kein Journal; es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="55"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
         <source>The journal %1 is locked by another program.</source>
         <translation>Das Journal %1 ist von einem anderen Programm gesperrt.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
         <source>The disk holding the journal %1 reported an error.</source>
         <translation>Der Datenträger des Journals %1 hat einen Fehler gemeldet.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="61"/>
         <source>The journal %1 reported an error: %2</source>
         <translation>Das Journal %1 hat einen Fehler gemeldet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="64"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="66"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>Das Journal %1 kann nicht geschrieben werden: Sein Ordner oder die Datei ist schreibgeschützt oder nicht zugänglich.</translation>
     </message>
@@ -3099,27 +3145,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1: Min. %2, Max. %3, Mittel %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="42"/>
         <source>wake</source>
         <translation>Aufwachen</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="42"/>
         <source>heat-up</source>
         <translation>Aufheizen</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 um %2 auf %3: %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="48"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 um %2 auf %3: in diesem Zeitfenster nicht erreicht</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="52"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n weiteres Aufheizen</numerusform>
@@ -3127,17 +3173,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="59"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="64"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>Erholung um %1: %2 (Einbruch auf %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="62"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>Einbruch um %1 auf %2: in diesem Zeitfenster nicht erholt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="70"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n weitere Erholung</numerusform>
@@ -3145,22 +3191,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="74"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="79"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="76"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="81"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="77"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="84"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="103"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="112"/>
         <source>%1: no samples in this window</source>
         <translation>%1: keine Messwerte in diesem Zeitfenster</translation>
     </message>
@@ -3173,48 +3219,48 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Der Broker %1 hat die Nachricht abgelehnt: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="285"/>
         <source>&apos;%1&apos; is not a topic a message can be published to.</source>
         <translation>„%1“ ist kein Topic, an das eine Nachricht veröffentlicht werden kann.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="311"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="287"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="314"/>
         <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
         <translation>QoS %1 gibt es nicht; MQTT kennt 0, 1 und 2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="288"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="290"/>
         <source>Not connected to the broker %1: the message to %2 is dropped.</source>
         <translation>Nicht mit dem Broker %1 verbunden: die Nachricht an %2 wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="291"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="294"/>
         <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
         <translation>%1 Nachrichten warten darauf, vom Broker %2 angenommen zu werden: die Nachricht an %3 wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="301"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="304"/>
         <source>The message to %1 was not sent: %2</source>
         <translation>Die Nachricht an %1 wurde nicht gesendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="312"/>
         <source>&apos;%1&apos; is not a valid subscription filter.</source>
         <translation>„%1“ ist kein gültiger Abonnement-Filter.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="323"/>
         <source>The subscription to %1 was not sent: %2</source>
         <translation>Das Abonnement von %1 wurde nicht gesendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="327"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="330"/>
         <source>There is no subscription to %1.</source>
         <translation>Es gibt kein Abonnement von %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="335"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="338"/>
         <source>The subscription to %1 was not ended: %2</source>
         <translation>Das Abonnement von %1 wurde nicht beendet: %2</translation>
     </message>
@@ -3224,109 +3270,109 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Der Broker %1 hat die Verbindung abgelehnt: falscher Benutzername oder falsches Passwort.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="32"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="33"/>
         <source>The broker %1 refused the connection: not authorised (wrong user name or password, or this user may not connect).</source>
         <translation>Der Broker %1 hat die Verbindung abgelehnt: nicht berechtigt (falscher Benutzername oder falsches Passwort, oder dieser Benutzer darf sich nicht verbinden).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="39"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="41"/>
         <source>The broker %1 refused the connection: %2.</source>
         <translation>Der Broker %1 hat die Verbindung abgelehnt: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="45"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="47"/>
         <source>it does not speak MQTT 3.1.1</source>
         <translation>er spricht kein MQTT 3.1.1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="47"/>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="69"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="49"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="71"/>
         <source>it does not accept this client id</source>
         <translation>er akzeptiert diese Client-ID nicht</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="49"/>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="72"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="51"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="74"/>
         <source>the service is unavailable</source>
         <translation>der Dienst ist nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="55"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="57"/>
         <source>return code %1</source>
         <translation>Rückgabecode %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="67"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="69"/>
         <source>it does not speak MQTT 5</source>
         <translation>er spricht kein MQTT 5</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="74"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="76"/>
         <source>reason code %1</source>
         <translation>Grundcode %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="84"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="85"/>
         <source>No MQTT broker accepts connections at %1 (connection refused).</source>
         <translation>Unter %1 nimmt kein MQTT-Broker Verbindungen an (Verbindung abgelehnt).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="88"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="90"/>
         <source>The broker %1 closed the connection (%2).</source>
         <translation>Der Broker %1 hat die Verbindung geschlossen (%2).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="91"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="93"/>
         <source>The broker %1 cannot be reached: %2.</source>
         <translation>Der Broker %1 ist nicht erreichbar: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="112"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="114"/>
         <source>The broker&apos;s address %1 cannot be resolved.</source>
         <translation>Die Adresse %1 des Brokers lässt sich nicht auflösen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="116"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="118"/>
         <source>The TLS handshake with the broker %1 failed.</source>
         <translation>Der TLS-Verbindungsaufbau mit dem Broker %1 ist fehlgeschlagen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="117"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="119"/>
         <source>The TLS handshake with the broker %1 failed: %2</source>
         <translation>Der TLS-Verbindungsaufbau mit dem Broker %1 ist fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="120"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="123"/>
         <source>The broker %1 stopped answering within the keep-alive time.</source>
         <translation>Der Broker %1 hat innerhalb der Keep-Alive-Zeit nicht mehr geantwortet.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="124"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="128"/>
         <source>The connection to the broker %1 was lost.</source>
         <translation>Die Verbindung zum Broker %1 ist abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="128"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="132"/>
         <source>The broker %1 sent data that is not valid MQTT.</source>
         <translation>Der Broker %1 hat Daten gesendet, die kein gültiges MQTT sind.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="131"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="135"/>
         <source>The connection to the broker %1 failed: %2.</source>
         <translation>Die Verbindung zum Broker %1 ist fehlgeschlagen: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="139"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="143"/>
         <source>The broker %1 cannot be reached: the connection was refused or reset.</source>
         <translation>Der Broker %1 ist nicht erreichbar: die Verbindung wurde abgelehnt oder zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="144"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="150"/>
         <source>The broker&apos;s host name %1 cannot be resolved: %2</source>
         <translation>Der Hostname %1 des Brokers lässt sich nicht auflösen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="46"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Ein Passwort ist gesetzt, aber kein Benutzername: MQTT sendet ein Passwort nur mit einem Benutzernamen.</translation>
     </message>
@@ -3341,37 +3387,37 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Der letzte Wille auf %1 wird nicht angenommen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="72"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="74"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>Die CA-Zertifikatsdatei %1 kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="76"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Ein Client-Zertifikat braucht sowohl seine Zertifikatsdatei als auch seine Schlüsseldatei.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="78"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="80"/>
         <source>The file %1 cannot be read.</source>
         <translation>Die Datei %1 kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="96"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="98"/>
         <source>TLS cannot be set up: %1</source>
         <translation>TLS kann nicht eingerichtet werden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="104"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="106"/>
         <source>The MQTT version cannot be set: %1</source>
         <translation>Die MQTT-Version kann nicht eingestellt werden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="127"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="130"/>
         <source>The client id %1 is not accepted.</source>
         <translation>Die Client-ID %1 wird nicht angenommen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="131"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Kein Speicher mehr für einen MQTT-Client.</translation>
     </message>
@@ -3384,7 +3430,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Die Passwortdatei %1 existiert nicht.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="33"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
         <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
         <translation>Die Passwortdatei %1 ist größer als %2 Bytes; ist es die richtige Datei?</translation>
     </message>
@@ -3394,12 +3440,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Die Passwortdatei %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="42"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="43"/>
         <source>The password file %1 is empty.</source>
         <translation>Die Passwortdatei %1 ist leer.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="50"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="51"/>
         <source>The environment variable %1 that should hold the password is not set or empty.</source>
         <translation>Die Umgebungsvariable %1, die das Passwort enthalten soll, ist nicht gesetzt oder leer.</translation>
     </message>
@@ -3412,7 +3458,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="77"/>
+        <location filename="../lib/model/parameter.cpp" line="76"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
@@ -3428,7 +3474,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="93"/>
-        <location filename="../lib/model/parameter.cpp" line="134"/>
+        <location filename="../lib/model/parameter.cpp" line="135"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
@@ -3438,63 +3484,63 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1 ist für %2 nicht zulässig: zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="107"/>
+        <location filename="../lib/model/parameter.cpp" line="108"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="119"/>
-        <location filename="../lib/model/parameter.cpp" line="232"/>
+        <location filename="../lib/model/parameter.cpp" line="120"/>
+        <location filename="../lib/model/parameter.cpp" line="247"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="137"/>
+        <location filename="../lib/model/parameter.cpp" line="138"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="188"/>
+        <location filename="../lib/model/parameter.cpp" line="198"/>
         <source>reading %1 (%2)</source>
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="200"/>
+        <location filename="../lib/model/parameter.cpp" line="210"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="201"/>
+        <location filename="../lib/model/parameter.cpp" line="211"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="254"/>
+        <location filename="../lib/model/parameter.cpp" line="269"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="257"/>
+        <location filename="../lib/model/parameter.cpp" line="272"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="279"/>
+        <location filename="../lib/model/parameter.cpp" line="295"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="294"/>
+        <location filename="../lib/model/parameter.cpp" line="310"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="308"/>
+        <location filename="../lib/model/parameter.cpp" line="323"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="325"/>
+        <location filename="../lib/model/parameter.cpp" line="341"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -3507,52 +3553,52 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>dieses Programm</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="38"/>
         <source>, this program</source>
         <translation>, dieses Programm</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="46"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
         <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
         <translation>führen Sie `sudo usermod -aG %1 $USER` aus und melden Sie sich danach ab und wieder an.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
         <source>You are not allowed to open %1: %2</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
         <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen, und die Schnittstelle gehört zur Gruppe root statt zu dialout; ein Gruppenbeitritt hilft daher erst, wenn eine udev-Regel ihr GROUP=&quot;dialout&quot; zuweist. Dann %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="54"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="58"/>
         <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen; die Schnittstelle gehört zur Gruppe %2 (nicht dialout): %3</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="96"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
         <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
         <translation>%1 wird bereits von %2 verwendet. Schließen Sie diese Verbindung und versuchen Sie es dann erneut.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="107"/>
         <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
         <translation>Diesen Port gibt es nicht: %1. Möglicherweise ist der Adapter abgezogen oder der Portname falsch geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="105"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
         <source>%1 is already open in TipScope; close that connection first</source>
         <translation>%1 ist in TipScope bereits geöffnet; schließen Sie zuerst diese Verbindung</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="109"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
         <source>%1 stopped working, perhaps because the adapter was unplugged</source>
         <translation>%1 funktioniert nicht mehr, vielleicht wurde der Adapter abgezogen</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="122"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
@@ -3668,54 +3714,54 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="209"/>
+        <location filename="../lib/model/profile.cpp" line="212"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="137"/>
+        <location filename="../lib/model/profile.cpp" line="136"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="148"/>
+        <location filename="../lib/model/profile.cpp" line="149"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="159"/>
+        <location filename="../lib/model/profile.cpp" line="160"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="167"/>
+        <location filename="../lib/model/profile.cpp" line="168"/>
         <source>the profile has no values</source>
         <translation>das Profil enthält keine Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="173"/>
+        <location filename="../lib/model/profile.cpp" line="175"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="187"/>
+        <location filename="../lib/model/profile.cpp" line="190"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="199"/>
+        <location filename="../lib/model/profile.cpp" line="202"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="203"/>
+        <location filename="../lib/model/profile.cpp" line="206"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="225"/>
+        <location filename="../lib/model/profile.cpp" line="228"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
@@ -3725,7 +3771,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>keine gültige JSON-Datei: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="142"/>
+        <location filename="../lib/model/profile.cpp" line="143"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>mehr als einmal angegeben, daher ist unklar, welcher Wert gemeint ist: %1; es wird nichts geschrieben</translation>
     </message>
@@ -3745,7 +3791,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Profilschema %1 wird nicht unterstützt (diese Version liest die Schemas %2 bis %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="176"/>
+        <location filename="../lib/model/profile.cpp" line="179"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;, oder ein Objekt mit einem in &quot;raw&quot; (und Text in &quot;name&quot; und &quot;value&quot;)</translation>
     </message>
@@ -3763,12 +3809,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="41"/>
+        <location filename="../lib/model/profileapplier.cpp" line="40"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>geändert %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="43"/>
+        <location filename="../lib/model/profileapplier.cpp" line="42"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FEHLER %1 %2: %3</translation>
     </message>
@@ -3783,7 +3829,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>abgebrochen: die übrigen Werte wurden nicht geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="58"/>
+        <location filename="../lib/model/profileapplier.cpp" line="60"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n Unterschied</numerusform>
@@ -3791,59 +3837,59 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="59"/>
+        <location filename="../lib/model/profileapplier.cpp" line="61"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 geändert, %2 bereits richtig, %3 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="104"/>
+        <location filename="../lib/model/profileapplier.cpp" line="109"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>das Profil ist für %1, dieses Gerät ist %2 (erzwingen, um die gemeinsamen Einstellungen anzuwenden)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="109"/>
+        <location filename="../lib/model/profileapplier.cpp" line="114"/>
         <source>monitor-only mode is on</source>
         <translation>der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="168"/>
+        <location filename="../lib/model/profileapplier.cpp" line="175"/>
         <source>reading the device</source>
         <translation>Gerät wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="230"/>
+        <location filename="../lib/model/profileapplier.cpp" line="237"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="232"/>
+        <location filename="../lib/model/profileapplier.cpp" line="240"/>
         <source>unreadable value</source>
         <translation>unlesbarer Wert</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="290"/>
+        <location filename="../lib/model/profileapplier.cpp" line="299"/>
         <source>profile %1 applied: %2 changed, %3 failed, %4 already right%5</source>
         <translation>Profil %1 angewendet: %2 geändert, %3 fehlgeschlagen, %4 schon richtig%5</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="295"/>
+        <location filename="../lib/model/profileapplier.cpp" line="304"/>
         <source> (cancelled)</source>
         <translation> (abgebrochen)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="79"/>
+        <location filename="../lib/model/profileapplier.cpp" line="81"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>das Profil würde die Grenzen seiner Einstellungen verletzen (MIT ≤ MAT, MIT ≤ ausgewählte Temperatur ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="99"/>
+        <location filename="../lib/model/profileapplier.cpp" line="102"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>keine der Einstellungen des Profils gibt es an diesem %1 (übersprungen: %2)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="52"/>
+        <location filename="../lib/model/profileapplier.cpp" line="53"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n übersprungen</numerusform>
@@ -3851,12 +3897,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="124"/>
+        <location filename="../lib/model/profileapplier.cpp" line="130"/>
         <source>this %1 has no such setting</source>
         <translation>dieses %1 hat keine solche Einstellung</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="48"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>skipped %1 %2: %3</source>
         <translation>übersprungen %1 %2: %3</translation>
     </message>
@@ -3869,22 +3915,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>im Profil</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <location filename="../lib/model/profilelimits.cpp" line="65"/>
         <source>on the device now</source>
         <translation>jetzt am Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="65"/>
+        <location filename="../lib/model/profilelimits.cpp" line="66"/>
         <source>%1 %2 (%3)</source>
         <translation>%1 %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="83"/>
+        <location filename="../lib/model/profilelimits.cpp" line="84"/>
         <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
         <translation>%1 ist unbekannt (das Gerät hat nicht geantwortet), daher lässt sich %2 nicht dagegen prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="90"/>
+        <location filename="../lib/model/profilelimits.cpp" line="92"/>
         <source>%1 is above %2</source>
         <translation>%1 liegt über %2</translation>
     </message>
@@ -3892,37 +3938,37 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>RemoteApply</name>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="75"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="76"/>
         <source>a retained command is not carried out: it would run again at every reconnect</source>
         <translation>ein gespeicherter (retained) Befehl wird nicht ausgeführt: er liefe bei jeder Wiederverbindung erneut</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="78"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="79"/>
         <source>remote profile apply is off in this agent&apos;s configuration</source>
         <translation>das Anwenden von Profilen aus der Ferne ist in der Konfiguration dieses Agenten aus</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="80"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="83"/>
         <source>publish the command under your user name: %1/%2/USER</source>
         <translation>den Befehl unter dem eigenen Benutzernamen veröffentlichen: %1/%2/BENUTZER</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="85"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="89"/>
         <source>no device of this agent is published at %1</source>
         <translation>unter %1 veröffentlicht dieser Agent kein Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="87"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="92"/>
         <source>another profile is being applied to this device</source>
         <translation>auf dieses Gerät wird gerade ein anderes Profil angewendet</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="93"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="98"/>
         <source>not a profile: %1</source>
         <translation>kein Profil: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/plant/remoteapply.cpp" line="123"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="128"/>
         <source>%n setting(s) not taken</source>
         <translation>
             <numerusform>%n Einstellung nicht übernommen</numerusform>
@@ -3930,17 +3976,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="153"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="157"/>
         <source>Profile applied through MQTT for %1</source>
         <translation>Profil über MQTT für %1 angewendet</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="154"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="158"/>
         <source>Profile through MQTT for %1 not applied: %2</source>
         <translation>Profil über MQTT für %1 nicht angewendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="155"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="159"/>
         <source>an unnamed client</source>
         <translation>einen unbenannten Client</translation>
     </message>
@@ -4014,41 +4060,41 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="48"/>
-        <location filename="../lib/model/session.cpp" line="135"/>
-        <location filename="../lib/model/session.cpp" line="138"/>
+        <location filename="../lib/model/session.cpp" line="49"/>
+        <location filename="../lib/model/session.cpp" line="136"/>
+        <location filename="../lib/model/session.cpp" line="139"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="134"/>
-        <location filename="../lib/model/session.cpp" line="147"/>
-        <location filename="../lib/model/session.cpp" line="155"/>
+        <location filename="../lib/model/session.cpp" line="135"/>
+        <location filename="../lib/model/session.cpp" line="148"/>
+        <location filename="../lib/model/session.cpp" line="156"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="171"/>
+        <location filename="../lib/model/session.cpp" line="172"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="222"/>
+        <location filename="../lib/model/session.cpp" line="223"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="223"/>
+        <location filename="../lib/model/session.cpp" line="224"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="233"/>
+        <location filename="../lib/model/session.cpp" line="234"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="241"/>
+        <location filename="../lib/model/session.cpp" line="242"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -4071,12 +4117,12 @@ Dauerhaft mit dieser udev-Regel:
         <translation>das Gerät ohne Adressen hat sich nicht identifiziert: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="31"/>
+        <location filename="../lib/model/session.cpp" line="32"/>
         <source>the device at address %1 did not identify itself: %2</source>
         <translation>das Gerät an Adresse %1 hat sich nicht identifiziert: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="231"/>
+        <location filename="../lib/model/session.cpp" line="230"/>
         <source>connected to %1, but %2</source>
         <translation>mit %1 verbunden, aber %2</translation>
     </message>
@@ -4097,28 +4143,28 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>StationModel</name>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="55"/>
+        <location filename="../lib/model/stationmodel.cpp" line="56"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="74"/>
+        <location filename="../lib/model/stationmodel.cpp" line="75"/>
         <source>%1 does not support %2</source>
         <translation>%1 unterstützt %2 nicht</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="81"/>
+        <location filename="../lib/model/stationmodel.cpp" line="82"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 kann nicht im Speicher sichern</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="117"/>
-        <location filename="../lib/model/stationmodel.cpp" line="121"/>
+        <location filename="../lib/model/stationmodel.cpp" line="118"/>
+        <location filename="../lib/model/stationmodel.cpp" line="122"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="135"/>
+        <location filename="../lib/model/stationmodel.cpp" line="136"/>
         <source>error cleared</source>
         <translation>Fehler gelöscht</translation>
     </message>
@@ -4126,157 +4172,157 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="173"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="176"/>
         <source>TipScope support report, %1</source>
         <translation>TipScope-Supportbericht, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="174"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="178"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="115"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="117"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="116"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="118"/>
         <source>State: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="117"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="119"/>
         <source>Statistics: %1</source>
         <translation>Statistik: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="166"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="168"/>
         <source>Workspace line %1</source>
         <translation>Linie %1 des Arbeitsbereichs</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="167"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="169"/>
         <source>Workspace line %1 (%2)</source>
         <translation>Linie %1 des Arbeitsbereichs (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="188"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="192"/>
         <source>Recent events of %1:</source>
         <translation>Letzte Ereignisse von %1:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="196"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="201"/>
         <source>Recent events:</source>
         <translation>Letzte Ereignisse:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="31"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="32"/>
         <source>Device %1</source>
         <translation>Gerät %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="36"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="37"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="38"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="39"/>
         <source>, software %1</source>
         <translation>, Software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="45"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="46"/>
         <source>Joints of the last 24 hours: not read: %1</source>
         <translation>Lötstellen der letzten 24 Stunden: nicht gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="47"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="48"/>
         <source>Joints from %1 to %2:</source>
         <translation>Lötstellen von %1 bis %2:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="52"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="53"/>
         <source>  none</source>
         <translation>  keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="59"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="60"/>
         <source>  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, %7 incomplete</source>
         <translation>  %1, Port %2: %3 Lötstellen: %4 in Ordnung, %5 langsame Erholung, %6 zu tief, %7 unvollständig</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="67"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="68"/>
         <source>; recovery median %1 ms, 95th percentile %2 ms</source>
         <translation>; Erholzeit Median %1 ms, 95. Perzentil %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="80"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="81"/>
         <source>Journal: %1</source>
         <translation>Journal: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="82"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="83"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="83"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="84"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="84"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="86"/>
         <source>not yet, opening</source>
         <translation>noch nicht, wird geöffnet</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="85"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="87"/>
         <source>no, closed</source>
         <translation>nein, geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="87"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="89"/>
         <source>  writing: %1</source>
         <translation>  schreibt: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="88"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="90"/>
         <source>  writing: %1: %2</source>
         <translation>  schreibt: %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="90"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="92"/>
         <source>  lost: %1 records (%2)</source>
         <translation>  verloren: %1 Einträge (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="93"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="95"/>
         <source>  not read: %1</source>
         <translation>  nicht gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="96"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="98"/>
         <source>  %1 joints and %2 events, %3 and %4 of them not yet published; %5 waiting in memory</source>
         <translation>  %1 Lötstellen und %2 Ereignisse, davon %3 und %4 noch nicht veröffentlicht; %5 warten im Speicher</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="102"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="104"/>
         <source>  from %1 to %2</source>
         <translation>  von %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="105"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="107"/>
         <source>  kept without a time limit; %1 bytes on disk</source>
         <translation>  ohne Zeitgrenze aufbewahrt; %1 Byte auf der Festplatte</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="107"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="109"/>
         <source>  kept for %1 days; %2 bytes on disk</source>
         <translation>  %1 Tage aufbewahrt; %2 Byte auf der Festplatte</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="132"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="135"/>
         <source>  What to check:</source>
         <translation>  Was zu prüfen ist:</translation>
     </message>
@@ -4284,12 +4330,12 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>TipWear</name>
     <message>
-        <location filename="../lib/model/joints/tipwear.cpp" line="65"/>
+        <location filename="../lib/model/joints/tipwear.cpp" line="63"/>
         <source>tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when it was plugged in</source>
         <translation>Spitze verschleißt: %1 erholt sich in %2 s (Median der letzten %3 Lötstellen), %4 s nach dem Einstecken</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/tipwear.cpp" line="67"/>
+        <location filename="../lib/model/joints/tipwear.cpp" line="66"/>
         <source>the tool</source>
         <translation>das Werkzeug</translation>
     </message>
@@ -4322,28 +4368,28 @@ Dauerhaft mit dieser udev-Regel:
         <translation>kein Wert (der Befehl enthält %1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="63"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="64"/>
         <source>nothing: it is read-only</source>
         <translation>nichts: schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
-        <location filename="../lib/protocol/valuecodec.cpp" line="84"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="79"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="85"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="69"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="70"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 für %2 (%3) abgelehnt: zulässig ist %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="181"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; ist keine Verzögerung in Sekunden wie 1.6 oder 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="186"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; ist keine ganze Zahl; für %2 zulässig: %3</translation>
     </message>
@@ -4351,12 +4397,12 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>WorkContextFile</name>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="41"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="40"/>
         <source>cannot read the work context %1: %2</source>
         <translation>der Arbeitskontext %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="44"/>
         <source>the work context %1 is too big to be one</source>
         <translation>der Arbeitskontext %1 ist zu groß, um einer zu sein</translation>
     </message>
@@ -4366,7 +4412,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>der Arbeitskontext %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="51"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="52"/>
         <source>the work context %1: %2</source>
         <translation>der Arbeitskontext %1: %2</translation>
     </message>
@@ -4387,63 +4433,63 @@ Dauerhaft mit dieser udev-Regel:
         <translation>kein TipScope-Arbeitsbereich (&quot;format&quot; ist nicht &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="34"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="35"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; muss eine ganze Zahl ab 1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="36"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="37"/>
         <source>written by a later TipScope (workspace version %1); this one reads version %2 and older</source>
         <translation>von einem neueren TipScope geschrieben (Arbeitsbereich-Version %1); dieses liest Version %2 und ältere</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="64"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="66"/>
         <source>&quot;lines&quot; must be a list of lines</source>
         <translation>&quot;lines&quot; muss eine Liste von Leitungen sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="70"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="73"/>
         <source>line %1</source>
         <translation>Leitung %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="71"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="74"/>
         <source>line %1 (%2)</source>
         <translation>Leitung %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="73"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="76"/>
         <source>%1: must be an object</source>
         <translation>%1: muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="78"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="81"/>
         <source>%1: the name is already another line&apos;s; each line needs its own</source>
         <translation>%1: der Name gehört schon einer anderen Leitung; jede Leitung braucht einen eigenen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="92"/>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="95"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="96"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>der Arbeitsbereich %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="93"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="97"/>
         <source>there is no such file</source>
         <translation>diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="97"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="102"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>der Arbeitsbereich %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="104"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>der Arbeitsbereich %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
         <source>it is a list</source>
         <translation>er ist eine Liste</translation>
     </message>
@@ -4453,67 +4499,67 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%1 muss Text sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="56"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="55"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 muss eine ganze Zahl von %2 bis %3 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="61"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="63"/>
         <source>%1 must be true or false</source>
         <translation>%1 muss true oder false sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="71"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="72"/>
         <source>%1 must be one of %2</source>
         <translation>%1 muss eines von %2 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="76"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="78"/>
         <source>%1 must be an object</source>
         <translation>%1 muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="101"/>
         <source>%1 must name the serial port</source>
         <translation>%1 muss den seriellen Port nennen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="111"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="114"/>
         <source>%1 must be HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>%1 muss HOST:PORT sein (zum Beispiel 192.168.1.20:4001)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="143"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="146"/>
         <source>devices must be a list</source>
         <translation>devices muss eine Liste sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="149"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="152"/>
         <source>devices[%1] must be an object</source>
         <translation>devices[%1] muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="153"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="156"/>
         <source>%1 must be an address from 0 to 99, or null for the device without addresses</source>
         <translation>%1 muss eine Adresse von 0 bis 99 sein, oder null für das Gerät ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="160"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="164"/>
         <source>%1 must not be empty</source>
         <translation>%1 darf nicht leer sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="163"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="169"/>
         <source>devices[%1] names a device named before</source>
         <translation>devices[%1] benennt ein schon benanntes Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="222"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="228"/>
         <source>every line needs a name</source>
         <translation>jede Leitung braucht einen Namen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="229"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="235"/>
         <source>connection is missing</source>
         <translation>connection fehlt</translation>
     </message>
@@ -6755,72 +6801,72 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="49"/>
+        <location filename="../app/gui/mainwindow.cpp" line="61"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="125"/>
+        <location filename="../app/gui/mainwindow.cpp" line="137"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="129"/>
+        <location filename="../app/gui/mainwindow.cpp" line="141"/>
         <source>Work &amp;context…</source>
         <translation>Arbeits&amp;kontext…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="133"/>
+        <location filename="../app/gui/mainwindow.cpp" line="145"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="135"/>
+        <location filename="../app/gui/mainwindow.cpp" line="147"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="136"/>
+        <location filename="../app/gui/mainwindow.cpp" line="148"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="137"/>
+        <location filename="../app/gui/mainwindow.cpp" line="149"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="145"/>
+        <location filename="../app/gui/mainwindow.cpp" line="157"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Lötstellen-Grenzwerte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="146"/>
+        <location filename="../app/gui/mainwindow.cpp" line="158"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="147"/>
+        <location filename="../app/gui/mainwindow.cpp" line="159"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="149"/>
+        <location filename="../app/gui/mainwindow.cpp" line="161"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="150"/>
+        <location filename="../app/gui/mainwindow.cpp" line="162"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="268"/>
+        <location filename="../app/gui/mainwindow.cpp" line="288"/>
         <source>new workspace</source>
         <translation>neuer Arbeitsbereich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="270"/>
+        <location filename="../app/gui/mainwindow.cpp" line="290"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n Linie)</numerusform>
@@ -6828,28 +6874,28 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="273"/>
+        <location filename="../app/gui/mainwindow.cpp" line="293"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="278"/>
+        <location filename="../app/gui/mainwindow.cpp" line="298"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="283"/>
+        <location filename="../app/gui/mainwindow.cpp" line="303"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="298"/>
-        <location filename="../app/gui/mainwindow.cpp" line="301"/>
+        <location filename="../app/gui/mainwindow.cpp" line="318"/>
+        <location filename="../app/gui/mainwindow.cpp" line="321"/>
         <source>Support report</source>
         <translation>Supportbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="302"/>
+        <location filename="../app/gui/mainwindow.cpp" line="322"/>
         <source>Written:
 %1
 
@@ -6860,12 +6906,12 @@ Attach both files to the support ticket.</source>
 Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="310"/>
+        <location filename="../app/gui/mainwindow.cpp" line="335"/>
         <source>joint limits</source>
         <translation>Lötstellen-Grenzwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="311"/>
+        <location filename="../app/gui/mainwindow.cpp" line="336"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
@@ -6897,17 +6943,17 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     <message>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="45"/>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="57"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="104"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="88"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="87"/>
         <source>The last workspace was not reopened: %1</source>
         <translation>Der letzte Arbeitsbereich wurde nicht wieder geöffnet: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="110"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="106"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Arbeitsbereich: %1 von %n Linie verbunden</numerusform>
@@ -6915,7 +6961,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="120"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="116"/>
         <source>the workspace&apos;s %n line(s) are in the tree</source>
         <translation>
             <numerusform>die %n Linie des Arbeitsbereichs steht im Baum</numerusform>
@@ -6923,46 +6969,46 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="122"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
         <source>the plant&apos;s devices are on the fleet overview</source>
         <translation>die Geräte der Anlage sind in der Flottenübersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="129"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="134"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="125"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
         <source>Open workspace</source>
         <translation>Arbeitsbereich öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="126"/>
         <source>TipScope workspaces (*.json);;All files (*)</source>
         <translation>TipScope-Arbeitsbereiche (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="141"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="149"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="137"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="145"/>
         <source>Save workspace</source>
         <translation>Arbeitsbereich speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="145"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="141"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>TipScope-Arbeitsbereiche (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="158"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="163"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="172"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="159"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="168"/>
         <source>Add this line to the workspace</source>
         <translation>Diese Linie zum Arbeitsbereich hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="163"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="159"/>
         <source>Name of the line (cell, station):</source>
         <translation>Name der Linie (Zelle, Station):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="164"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="160"/>
         <source>line-%1</source>
         <translation>linie-%1</translation>
     </message>
@@ -7647,13 +7693,13 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     <name>tipscope::gui::RemoteDevicePage</name>
     <message>
         <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
@@ -7679,92 +7725,92 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="83"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="105"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="104"/>
         <source>Tip, setpoint and power, last 10 minutes</source>
         <translation>Spitze, Sollwert und Leistung, letzte 10 Minuten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="86"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="85"/>
         <source>Temperature (°C)</source>
         <translation>Temperatur (°C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="87"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="86"/>
         <source>Power (%)</source>
         <translation>Leistung (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Ended</source>
         <translation>Ende</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Verdict</source>
         <translation>Bewertung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Dip (K)</source>
         <translation>Einbruch (K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Recovery (s)</source>
         <translation>Erholung (s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="95"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="94"/>
         <source>‹ Fleet overview</source>
         <translation>‹ Geräteübersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="103"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="102"/>
         <source>Live values</source>
         <translation>Live-Werte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="108"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="107"/>
         <source>Recent joints, newest first</source>
         <translation>Letzte Lötstellen, neueste zuerst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="127"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="126"/>
         <source>No such device on the plant&apos;s broker</source>
         <translation>Dieses Gerät gibt es auf dem Broker des Werks nicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="131"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="130"/>
         <source>%1 · %2 on %3 (%4)</source>
         <translation>%1 · %2 an %3 (%4)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="135"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="134"/>
         <source>Read-only: published by %1 %2 through the plant&apos;s broker; current.</source>
         <translation>Schreibgeschützt: veröffentlicht von %1 %2 über den Broker des Werks; aktuell.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="137"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="136"/>
         <source>Read-only, not current: %1. The values are the last published.</source>
         <translation>Schreibgeschützt, nicht aktuell: %1. Die Werte sind die zuletzt veröffentlichten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="150"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="149"/>
         <source>No errors or alarms in force.</source>
         <translation>Keine Fehler oder Alarme aktiv.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="151"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="150"/>
         <source>In force: %1</source>
         <translation>Aktiv: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="166"/>
         <source>never</source>
         <translation>nie</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="202"/>
         <source>No live values received yet</source>
         <translation>Noch keine Live-Werte empfangen</translation>
     </message>
@@ -8024,19 +8070,19 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="86"/>
-        <location filename="../lib/journal/journal.cpp" line="100"/>
-        <location filename="../lib/journal/journal.cpp" line="159"/>
+        <location filename="../lib/journal/journal.cpp" line="97"/>
+        <location filename="../lib/journal/journal.cpp" line="111"/>
+        <location filename="../lib/journal/journal.cpp" line="170"/>
         <source>The journal is closed.</source>
         <translation>Das Journal ist geschlossen.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="90"/>
+        <location filename="../lib/journal/journal.cpp" line="101"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>Das Journal kommt nicht nach: %1 Einträge warten darauf, geschrieben zu werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="138"/>
+        <location filename="../lib/journal/journal.cpp" line="149"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Auftrag: %1, Platine: %2, Bediener: %3</translation>
     </message>
@@ -8064,22 +8110,27 @@ Möchten Sie fortfahren?</translation>
         <translation>verbunden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="68"/>
+        <location filename="../lib/link/line.cpp" line="70"/>
+        <source>cannot open %1, retrying every %2 s: %3</source>
+        <translation>%1 lässt sich nicht öffnen, neuer Versuch alle %2 s: %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="74"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>getrennt, neuer Versuch alle %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="72"/>
+        <location filename="../lib/link/line.cpp" line="78"/>
         <source>cannot connect: %1</source>
         <translation>Verbindung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="93"/>
+        <location filename="../lib/link/line.cpp" line="99"/>
         <source>disconnected by the user</source>
         <translation>vom Benutzer getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="136"/>
+        <location filename="../lib/link/line.cpp" line="142"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>keine Antwort auf %1 Anfragen in Folge (Kabel abgezogen, Gerät aus oder falsche Adressierung?)</translation>
     </message>

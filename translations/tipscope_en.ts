@@ -26,7 +26,7 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="103"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="86"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n device, %1 live messages, %2 joints and events forwarded, %3 waiting. %4</numerusform>
@@ -37,7 +37,7 @@
 <context>
     <name>CliRecord</name>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="182"/>
+        <location filename="../app/cli/clirecord.cpp" line="187"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>recorded %n row to %1</numerusform>
@@ -59,7 +59,7 @@
 <context>
     <name>FrameComposer</name>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="208"/>
+        <location filename="../lib/model/framecomposer.cpp" line="214"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, a valid frame: %1</numerusform>
@@ -67,7 +67,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="210"/>
+        <location filename="../lib/model/framecomposer.cpp" line="216"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, not a valid frame (%1): sent as typed</numerusform>
@@ -78,7 +78,7 @@
 <context>
     <name>FrameDecoder</name>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="145"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="144"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n byte outside any frame</numerusform>
@@ -89,7 +89,7 @@
 <context>
     <name>MeasurementReport</name>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="52"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n more heat-up</numerusform>
@@ -97,7 +97,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="70"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n more recovery</numerusform>
@@ -108,7 +108,7 @@
 <context>
     <name>ProfileApplier</name>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="58"/>
+        <location filename="../lib/model/profileapplier.cpp" line="60"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -116,7 +116,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="52"/>
+        <location filename="../lib/model/profileapplier.cpp" line="53"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n skipped</numerusform>
@@ -127,7 +127,7 @@
 <context>
     <name>RemoteApply</name>
     <message numerus="yes">
-        <location filename="../lib/plant/remoteapply.cpp" line="123"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="128"/>
         <source>%n setting(s) not taken</source>
         <translation>
             <numerusform>%n setting not taken</numerusform>
@@ -138,7 +138,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="241"/>
+        <location filename="../lib/model/session.cpp" line="242"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -212,7 +212,7 @@
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="270"/>
+        <location filename="../app/gui/mainwindow.cpp" line="290"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n line)</numerusform>
@@ -220,7 +220,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="110"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="106"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Workspace: %1 of %n line connected</numerusform>
@@ -228,7 +228,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="120"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="116"/>
         <source>the workspace&apos;s %n line(s) are in the tree</source>
         <translation>
             <numerusform>the workspace&apos;s %n line is in the tree</numerusform>

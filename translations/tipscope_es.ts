@@ -32,92 +32,92 @@
         <translation>%1 debe ser un texto</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="46"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 debe ser un número entero de %2 a %3</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="55"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="57"/>
         <source>%1 must be true or false</source>
         <translation>%1 debe ser true o false</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="61"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="63"/>
         <source>%1 must be an object</source>
         <translation>%1 debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="79"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="81"/>
         <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>no es una configuración del agente de TipScope (&quot;format&quot; no es &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="83"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="86"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; debe ser un número entero desde 1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="85"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="89"/>
         <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
         <translation>escrita para un TipScope más reciente (versión %1); este lee la versión %2 y anteriores</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="113"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="117"/>
         <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
         <translation>broker.protocol debe ser &quot;3.1.1&quot; o &quot;5&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="125"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="129"/>
         <source>broker.host must name the broker</source>
         <translation>broker.host debe indicar el broker</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="127"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="132"/>
         <source>broker.password_file and broker.password_env: give one of them</source>
         <translation>broker.password_file y broker.password_env: indique solo uno de los dos</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="136"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="141"/>
         <source>file %1</source>
         <translation>archivo %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="142"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="147"/>
         <source>environment variable %1</source>
         <translation>variable de entorno %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="166"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="171"/>
         <source>site must name the site</source>
         <translation>site debe indicar la planta</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="168"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="173"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace debe indicar el archivo de espacio de trabajo de las líneas que se ejecutan</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="189"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>no se puede leer la configuración %1: no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="192"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>no se puede leer la configuración %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="201"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>la configuración %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="196"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="203"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>la configuración %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="205"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -125,17 +125,17 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="30"/>
+        <location filename="../app/agent/main.cpp" line="29"/>
         <source>without a user name</source>
         <translation>sin nombre de usuario</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="32"/>
+        <location filename="../app/agent/main.cpp" line="31"/>
         <source>as %1, without a password</source>
         <translation>como %1, sin contraseña</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="33"/>
+        <location filename="../app/agent/main.cpp" line="32"/>
         <source>as %1, password from the %2</source>
         <translation>como %1, contraseña de %2</translation>
     </message>
@@ -148,7 +148,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="40"/>
+        <location filename="../app/agent/main.cpp" line="41"/>
         <source> with TLS</source>
         <translation> con TLS</translation>
     </message>
@@ -158,47 +158,47 @@
         <translation>Ejecuta las líneas de un espacio de trabajo sin pantalla, guarda sus soldaduras y eventos en el diario y los publica en un broker MQTT.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="59"/>
+        <location filename="../app/agent/main.cpp" line="60"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>La configuración del agente (por omisión %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="59"/>
+        <location filename="../app/agent/main.cpp" line="61"/>
         <source>file</source>
         <translation>archivo</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="63"/>
+        <location filename="../app/agent/main.cpp" line="64"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Lee la configuración y su espacio de trabajo, indica lo que está mal y termina.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="68"/>
+        <location filename="../app/agent/main.cpp" line="71"/>
         <source>unexpected argument %1</source>
         <translation>argumento inesperado %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="83"/>
+        <location filename="../app/agent/main.cpp" line="87"/>
         <source>%1 is good: %2</source>
         <translation>%1 es correcta: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="94"/>
+        <location filename="../app/agent/main.cpp" line="99"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>configuración rechazada, se mantiene la actual: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="98"/>
+        <location filename="../app/agent/main.cpp" line="103"/>
         <source>reloading: %1</source>
         <translation>recargando: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="102"/>
+        <location filename="../app/agent/main.cpp" line="107"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 arrancando: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="106"/>
+        <location filename="../app/agent/main.cpp" line="111"/>
         <source>stopped</source>
         <translation>detenido</translation>
     </message>
@@ -227,17 +227,17 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="218"/>
+        <location filename="../lib/protocol/catalog.cpp" line="215"/>
         <source>Unknown NAK code %1</source>
         <translation>Código NAK desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="223"/>
+        <location filename="../lib/protocol/catalog.cpp" line="220"/>
         <source>Unknown station error %1</source>
         <translation>Error de estación desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="232"/>
+        <location filename="../lib/protocol/catalog.cpp" line="229"/>
         <source>Unknown port error %1</source>
         <translation>Error de puerto desconocido %1</translation>
     </message>
@@ -1242,12 +1242,12 @@
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="224"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
         <source>unknown (%1)</source>
         <translation>desconocido (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="231"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
         <source>none</source>
         <translation>ninguno</translation>
     </message>
@@ -1272,7 +1272,7 @@
         <translation>Poner a cero la longitud alimentada parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="237"/>
+        <location filename="../lib/protocol/catalog.cpp" line="234"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Error del alimentador %1 (no figura en la guía del SFR)</translation>
     </message>
@@ -1383,119 +1383,119 @@
         <translation>línea %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="117"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="141"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="118"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="142"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>la línea supera los %1 bytes (¿es un CSV de gráficos?)</translation>
     </message>
     <message>
         <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="146"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="147"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>el archivo contiene datos binarios, no texto CSV</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="151"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="153"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>el texto no está en UTF-8 (guarde el archivo como &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="155"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="157"/>
         <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>más de %1 líneas de comentario («#»); una grabación tiene unas pocas, y una por canal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="190"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="194"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>la fila de cabecera debe empezar por &quot;time&quot; (¿es un CSV de gráficos escrito por TipScope?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="193"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 columnas; la reproducción lee como máximo %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="206"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="211"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>la columna %1 &quot;%2&quot; no es &quot;port&lt;n&gt; &lt;serie&gt; [unidad]&quot; ni &quot;feeder &lt;serie&gt; [unidad]&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="219"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="225"/>
         <source>column %1 &quot;%2&quot;: the unit should be &quot;%3&quot;</source>
         <translation>columna %1 &quot;%2&quot;: la unidad debería ser &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="221"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="227"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="255"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="248"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="256"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="235"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>la columna %1 &quot;%2&quot; aparece dos veces</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="234"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="241"/>
         <source>the header names no series columns</source>
         <translation>la cabecera no nombra ninguna columna de serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="276"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>columna %1: &quot;%2&quot; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="283"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="291"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 tiene valores en algunas de sus columnas, pero no en todas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="290"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 celdas, pero la cabecera tiene %2 columnas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="295"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="303"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; no es una hora ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>la hora %1 es anterior a la de la fila precedente (las filas deben estar en orden cronológico)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="309"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="318"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 tiene más de %2 muestras, más de las que admite la reproducción; divida el archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="332"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="342"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>el evento &quot;%1&quot; no tiene la forma &quot;&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="164"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="167"/>
         <source>a quoted cell is not closed</source>
         <translation>una celda entre comillas no está cerrada</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="364"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="375"/>
         <source>the file has a header but no rows</source>
         <translation>el archivo tiene cabecera pero ninguna fila</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="362"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="373"/>
         <source>the file is empty or holds only comments</source>
         <translation>el archivo está vacío o solo contiene comentarios</translation>
     </message>
@@ -1505,17 +1505,17 @@
         <translation>el archivo ocupa más de %1 MB; la reproducción lee archivos de hasta %1 MB</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="107"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="109"/>
         <source>its samples take %1 MB of memory after %2 MB read, more than replay allows (twice the file&apos;s size); a recording TipScope writes takes far less</source>
         <translation>sus muestras ocupan %1 MB de memoria tras leer %2 MB, más de lo que permite la reproducción (el doble del tamaño del archivo); una grabación escrita por TipScope ocupa mucho menos</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="144"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="146"/>
         <source>reading was cancelled</source>
         <translation>se canceló la lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvreader.cpp" line="168"/>
+        <location filename="../lib/model/recording/chartcsvreader.cpp" line="170"/>
         <source>the file is %1 MB; replay reads files up to %2 MB</source>
         <translation>el archivo ocupa %1 MB; la reproducción lee archivos de hasta %2 MB</translation>
     </message>
@@ -1679,80 +1679,80 @@
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="114"/>
+        <location filename="../app/cli/clicommands.cpp" line="116"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="137"/>
+        <location filename="../app/cli/clicommands.cpp" line="139"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="142"/>
+        <location filename="../app/cli/clicommands.cpp" line="144"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="150"/>
+        <location filename="../app/cli/clicommands.cpp" line="152"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="155"/>
+        <location filename="../app/cli/clicommands.cpp" line="158"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="193"/>
+        <location filename="../app/cli/clicommands.cpp" line="199"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="202"/>
+        <location filename="../app/cli/clicommands.cpp" line="208"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="215"/>
-        <location filename="../app/cli/clicommands.cpp" line="217"/>
+        <location filename="../app/cli/clicommands.cpp" line="222"/>
+        <location filename="../app/cli/clicommands.cpp" line="224"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="220"/>
+        <location filename="../app/cli/clicommands.cpp" line="227"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="183"/>
-        <location filename="../app/cli/clicommands.cpp" line="237"/>
-        <location filename="../app/cli/clicommands.cpp" line="260"/>
+        <location filename="../app/cli/clicommands.cpp" line="188"/>
+        <location filename="../app/cli/clicommands.cpp" line="244"/>
+        <location filename="../app/cli/clicommands.cpp" line="270"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="253"/>
+        <location filename="../app/cli/clicommands.cpp" line="261"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="326"/>
+        <location filename="../app/cli/clicommands.cpp" line="336"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="349"/>
+        <location filename="../app/cli/clicommands.cpp" line="359"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="352"/>
+        <location filename="../app/cli/clicommands.cpp" line="362"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="353"/>
+        <location filename="../app/cli/clicommands.cpp" line="364"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
     </message>
@@ -1765,7 +1765,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="175"/>
+        <location filename="../app/cli/clicommands.cpp" line="179"/>
         <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
         <translation>tipscope-cli: %1 no se envió: no se pudo leer su límite %2: %3</translation>
     </message>
@@ -1778,17 +1778,17 @@
         <translation>«%1» no es una línea de contexto: escriba work_order=W, board_serial=S u operator=O</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="57"/>
+        <location filename="../app/cli/clicontext.cpp" line="58"/>
         <source>cannot read standard input</source>
         <translation>no se puede leer la entrada estándar</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="92"/>
+        <location filename="../app/cli/clicontext.cpp" line="93"/>
         <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
         <translation>tipscope-cli: context admite show, set [--work-order W] [--serial S] [--operator O] [--stdin] o clear</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="124"/>
+        <location filename="../app/cli/clicontext.cpp" line="126"/>
         <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
         <translation>tipscope-cli: limits admite show, set REGLA (por ejemplo port=1,tool=C245,recovery=3.5,dip=60) o clear</translation>
     </message>
@@ -1801,29 +1801,29 @@
         <translation>«%1» no es una hora: escriba 24h, 30m, 7d, 2026-12-01 o 2026-12-01T08:00</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="64"/>
+        <location filename="../app/cli/clijoints.cpp" line="65"/>
         <source>the journal has no device &apos;%1&apos;</source>
         <translation>el diario no tiene ningún dispositivo «%1»</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <location filename="../app/cli/clijoints.cpp" line="66"/>
         <source>&apos;%1&apos; names %2 devices; give one of:
   %3</source>
         <translation>«%1» designa %2 dispositivos; indique uno de ellos:
   %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="93"/>
+        <location filename="../app/cli/clijoints.cpp" line="94"/>
         <source>--port takes a port number from 1 to 4</source>
         <translation>--port admite un número de puerto del 1 al 4</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="102"/>
+        <location filename="../app/cli/clijoints.cpp" line="103"/>
         <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
         <translation>--verdict admite ok, slow-recovery, too-deep o incomplete</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="144"/>
+        <location filename="../app/cli/clijoints.cpp" line="143"/>
         <source>tipscope-cli: give --json or --csv, not both</source>
         <translation>tipscope-cli: indique --json o --csv, no ambos</translation>
     </message>
@@ -1841,7 +1841,7 @@
         <translation>tipscope-cli: no se pudo guardar el tiempo de conservación: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="111"/>
+        <location filename="../app/cli/clijournal.cpp" line="112"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal espera show o retention DÍAS</translation>
     </message>
@@ -1857,37 +1857,58 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="116"/>
+        <location filename="../app/cli/climonitor.cpp" line="175"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="123"/>
+        <location filename="../app/cli/climonitor.cpp" line="288"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="135"/>
+        <location filename="../app/cli/climonitor.cpp" line="259"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
+        <location filename="../app/cli/climonitor.cpp" line="226"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="22"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="180"/>
+        <location filename="../app/cli/climonitor.cpp" line="74"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="159"/>
+        <location filename="../app/cli/climonitor.cpp" line="98"/>
+        <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
+        <translation>tipscope-cli: no se pudo escribir %1: %2; la monitorización sigue sin el archivo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="158"/>
         <source>reconnected to %1</source>
         <translation>reconectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitorjoints.cpp" line="60"/>
+        <location filename="../app/cli/climonitor.cpp" line="192"/>
+        <source>tipscope-cli: the workspace %1 has no lines</source>
+        <translation>tipscope-cli: el espacio de trabajo %1 no tiene líneas</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="227"/>
+        <source>permission denied</source>
+        <translation>permiso denegado</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <source>no such folder</source>
+        <translation>no existe esa carpeta</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="371"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 registros no se pudieron guardar en el diario %2: %3</translation>
     </message>
@@ -1895,37 +1916,37 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="56"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="37"/>
         <source>--mqtt takes the broker as HOST:PORT</source>
         <translation>--mqtt espera el broker como HOST:PUERTO</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="68"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="49"/>
         <source>--site takes the site&apos;s name</source>
         <translation>--site espera el nombre de la planta</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="55"/>
         <source>--interval takes milliseconds from 100 to 3600000</source>
         <translation>--interval espera milisegundos de 100 a 3600000</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="98"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="80"/>
         <source>Broker connected.</source>
         <translation>Broker conectado.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="100"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="82"/>
         <source>Broker disconnected.</source>
         <translation>Broker desconectado.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="101"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="84"/>
         <source>Connecting to the broker.</source>
         <translation>Conectando con el broker.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="103"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="86"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n dispositivo, %1 mensajes en vivo, %2 soldaduras y eventos reenviados, %3 en espera. %4</numerusform>
@@ -1933,12 +1954,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="120"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="104"/>
         <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
         <translation>tipscope-cli: %1 no está definida: se conecta como %2 sin contraseña</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="127"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="112"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration espera segundos</translation>
     </message>
@@ -2171,7 +2192,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>tipscope-cli: profile requiere save ARCHIVO, diff ARCHIVO o apply ARCHIVO</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="105"/>
+        <location filename="../app/cli/cliprofile.cpp" line="106"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: aplicar este perfil se rechazaría: %1</translation>
     </message>
@@ -2184,48 +2205,48 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>tipscope-cli: interrumpido antes de que empezara la grabación</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="71"/>
+        <location filename="../app/cli/clirecord.cpp" line="72"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="106"/>
+        <location filename="../app/cli/clirecord.cpp" line="107"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record espera un ARCHIVO, p. ej. record linea3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="114"/>
+        <location filename="../app/cli/clirecord.cpp" line="116"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration espera segundos (0: hasta que se interrumpa)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="121"/>
-        <location filename="../app/cli/clirecord.cpp" line="149"/>
+        <location filename="../app/cli/clirecord.cpp" line="124"/>
+        <location filename="../app/cli/clirecord.cpp" line="152"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: no se puede grabar en %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="123"/>
+        <location filename="../app/cli/clirecord.cpp" line="125"/>
         <source>no such folder</source>
         <translation>la carpeta no existe</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="123"/>
+        <location filename="../app/cli/clirecord.cpp" line="126"/>
         <source>not writable</source>
         <translation>sin permiso de escritura</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="170"/>
+        <location filename="../app/cli/clirecord.cpp" line="174"/>
         <source># recording %1 of %2 to %3</source>
         <translation># grabando %1 de %2 en %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="178"/>
+        <location filename="../app/cli/clirecord.cpp" line="182"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: falló la escritura de %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="182"/>
+        <location filename="../app/cli/clirecord.cpp" line="187"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n fila grabada en %1</numerusform>
@@ -2236,42 +2257,37 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliSession</name>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="76"/>
+        <location filename="../app/cli/clisession.cpp" line="78"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="81"/>
-        <source>connected to %1</source>
-        <translation>conectado a %1</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clisession.cpp" line="150"/>
+        <location filename="../app/cli/clisession.cpp" line="134"/>
         <source>tipscope-cli: the catalog names no command that identifies a device</source>
         <translation>tipscope-cli: el catálogo no indica ningún comando que identifique un equipo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="159"/>
+        <location filename="../app/cli/clisession.cpp" line="143"/>
         <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
         <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="160"/>
+        <location filename="../app/cli/clisession.cpp" line="144"/>
         <source>without addresses</source>
         <translation>sin direcciones</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="154"/>
+        <location filename="../app/cli/clisession.cpp" line="138"/>
         <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
         <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="182"/>
+        <location filename="../app/cli/clisession.cpp" line="166"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="187"/>
+        <location filename="../app/cli/clisession.cpp" line="171"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -2279,7 +2295,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>CliWorkspace</name>
     <message>
-        <location filename="../app/cli/cliworkspace.cpp" line="167"/>
+        <location filename="../app/cli/cliworkspace.cpp" line="152"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: el espacio de trabajo %1 no tiene líneas</translation>
     </message>
@@ -2410,17 +2426,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1 en la dirección %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="74"/>
+        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
         <source>software unknown</source>
         <translation>software desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="75"/>
+        <location filename="../lib/model/deviceidentity.cpp" line="77"/>
         <source>software %1</source>
         <translation>software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/deviceidentity.cpp" line="76"/>
+        <location filename="../lib/model/deviceidentity.cpp" line="78"/>
         <source>%1 on %2, %3</source>
         <translation>%1 en %2, %3</translation>
     </message>
@@ -2487,7 +2503,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>&apos;%1&apos; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/displayunits.cpp" line="85"/>
+        <location filename="../lib/model/displayunits.cpp" line="84"/>
         <source>%1 has more decimals than %2 can take</source>
         <translation>%1 tiene más decimales de los que admite %2</translation>
     </message>
@@ -2610,7 +2626,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1 no tiene el comando %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/feedermodel.cpp" line="115"/>
+        <location filename="../lib/model/feedermodel.cpp" line="116"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -2633,72 +2649,72 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>En la línea este valor se escribe %1.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="68"/>
+        <location filename="../lib/model/framecomposer.cpp" line="70"/>
         <source>Unknown device family: the catalog cannot check this frame.</source>
         <translation>Familia de equipo desconocida: el catálogo no puede comprobar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="76"/>
+        <location filename="../lib/model/framecomposer.cpp" line="78"/>
         <source>%1 is not a %2 write command in the catalog.</source>
         <translation>%1 no es un comando de escritura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="77"/>
+        <location filename="../lib/model/framecomposer.cpp" line="79"/>
         <source>%1 is not a %2 read command in the catalog.</source>
         <translation>%1 no es un comando de lectura de %2 en el catálogo.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="80"/>
+        <location filename="../lib/model/framecomposer.cpp" line="82"/>
         <source>Did you mean %1?</source>
         <translation>¿Quería decir %1?</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="81"/>
+        <location filename="../lib/model/framecomposer.cpp" line="83"/>
         <source>It is sent as typed.</source>
         <translation>Se envía tal cual.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="86"/>
+        <location filename="../lib/model/framecomposer.cpp" line="88"/>
         <source>Reads carry no data field; the device may refuse this frame.</source>
         <translation>Las lecturas no llevan campo de datos; el equipo puede rechazar esta trama.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="92"/>
+        <location filename="../lib/model/framecomposer.cpp" line="95"/>
         <source>Dangerous: %1</source>
         <translation>Peligroso: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="96"/>
+        <location filename="../lib/model/framecomposer.cpp" line="99"/>
         <source>Catalog check: %1</source>
         <translation>Comprobación del catálogo: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="110"/>
+        <location filename="../lib/model/framecomposer.cpp" line="113"/>
         <source>%1 (no address)</source>
         <translation>%1 (sin dirección)</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="152"/>
+        <location filename="../lib/model/framecomposer.cpp" line="156"/>
         <source>No device is known on this line: connect first, or send raw hex.</source>
         <translation>No se conoce ningún equipo en esta línea: conéctese primero o envíe hex en bruto.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="170"/>
+        <location filename="../lib/model/framecomposer.cpp" line="173"/>
         <source>Not sendable: the command must be 3 printable characters, e.g. SMN.</source>
         <translation>No se puede enviar: el comando debe tener 3 caracteres imprimibles, p. ej. SMN.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="174"/>
+        <location filename="../lib/model/framecomposer.cpp" line="179"/>
         <source>Not sendable: the data field may only hold printable ASCII.</source>
         <translation>No se puede enviar: el campo de datos solo puede contener ASCII imprimible.</translation>
     </message>
     <message>
-        <location filename="../lib/model/framecomposer.cpp" line="179"/>
+        <location filename="../lib/model/framecomposer.cpp" line="184"/>
         <source>Not sendable: addresses go from 00 to 99.</source>
         <translation>No se puede enviar: las direcciones van de 00 a 99.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="208"/>
+        <location filename="../lib/model/framecomposer.cpp" line="214"/>
         <source>%n byte(s), a valid frame: %1</source>
         <translation>
             <numerusform>%n byte, una trama válida: %1</numerusform>
@@ -2706,7 +2722,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/framecomposer.cpp" line="210"/>
+        <location filename="../lib/model/framecomposer.cpp" line="216"/>
         <source>%n byte(s), not a valid frame (%1): sent as typed</source>
         <translation>
             <numerusform>%n byte, no es una trama válida (%1): se envía tal cual</numerusform>
@@ -2717,77 +2733,77 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>FrameDecoder</name>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="18"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="19"/>
         <source>frame</source>
         <translation>trama</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="20"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="21"/>
         <source>BCC error</source>
         <translation>error de BCC</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="22"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="23"/>
         <source>format error</source>
         <translation>error de formato</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="24"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="25"/>
         <source>overflow</source>
         <translation>desbordamiento</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="26"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="27"/>
         <source>garbage</source>
         <translation>basura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="49"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="47"/>
         <source>not STX…ETX BCC or too short</source>
         <translation>no es STX…ETX BCC o es demasiado corta</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="52"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="50"/>
         <source>BCC is %1, expected %2</source>
         <translation>el BCC es %1, se esperaba %2</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="61"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="60"/>
         <source>malformed addresses</source>
         <translation>direcciones mal formadas</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="67"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="66"/>
         <source>too short for header and command</source>
         <translation>demasiado corta para cabecera y comando</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="70"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="69"/>
         <source>unknown header</source>
         <translation>cabecera desconocida</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="75"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="74"/>
         <source>command is not 3 letters or digits</source>
         <translation>el comando no son 3 letras o dígitos</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="79"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="78"/>
         <source>data field is not printable ASCII</source>
         <translation>el campo de datos no es ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="111"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="110"/>
         <source>frame interrupted by a new STX</source>
         <translation>trama interrumpida por un nuevo STX</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/framedecoder.cpp" line="120"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="119"/>
         <source>no ETX within %1 bytes</source>
         <translation>ningún ETX en %1 bytes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/protocol/framedecoder.cpp" line="145"/>
+        <location filename="../lib/protocol/framedecoder.cpp" line="144"/>
         <source>%n byte(s) outside any frame</source>
         <translation>
             <numerusform>%n byte fuera de toda trama</numerusform>
@@ -2798,27 +2814,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>HexBytes</name>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="34"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="35"/>
         <source>odd number of hex digits before position %1</source>
         <translation>número impar de dígitos hexadecimales antes de la posición %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="44"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="45"/>
         <source>&apos;%1&apos; at position %2 is not a hex digit</source>
         <translation>&apos;%1&apos; en la posición %2 no es un dígito hexadecimal</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="51"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="52"/>
         <source>more than %1 bytes</source>
         <translation>más de %1 bytes</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="55"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="56"/>
         <source>odd number of hex digits</source>
         <translation>número impar de dígitos hexadecimales</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/hexbytes.cpp" line="57"/>
+        <location filename="../lib/protocol/hexbytes.cpp" line="58"/>
         <source>no bytes given</source>
         <translation>no se indicó ningún byte</translation>
     </message>
@@ -2826,47 +2842,47 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>JointLimitRules</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="48"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="49"/>
         <source>the longest recovery must be more than 0 s and at most %1 s</source>
         <translation>la recuperación más larga debe ser de más de 0 s y como máximo %1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="56"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="57"/>
         <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
         <translation>la caída más profunda debe ser un número entero de kelvin entre 1 y %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="62"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="65"/>
         <source>the tip wear share must be more than 0 and at most 10</source>
         <translation>la proporción de desgaste de la punta debe ser mayor que 0 y como máximo 10</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="68"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="71"/>
         <source>a port is a number from 1 to 4</source>
         <translation>un puerto es un número del 1 al 4</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="106"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="109"/>
         <source>%1 must be a number</source>
         <translation>%1 debe ser un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="165"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="168"/>
         <source>joint limits: %1</source>
         <translation>límites de soldadura: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="171"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="175"/>
         <source>joint limit rule %1: %2</source>
         <translation>regla de límites de soldadura %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="198"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="202"/>
         <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
         <translation>«%1» no es un límite: escriba port=N, tool=NOMBRE, recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN, separados por comas</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="210"/>
         <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
         <translation>«%1» no fija ningún límite: indique recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN</translation>
     </message>
@@ -2874,17 +2890,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>JointLimitsFile</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="36"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="35"/>
         <source>cannot read the joint limits %1: %2</source>
         <translation>no se pueden leer los límites de soldadura %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="38"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="39"/>
         <source>the joint limits %1 are too big</source>
         <translation>los límites de soldadura %1 son demasiado grandes</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="41"/>
+        <location filename="../lib/model/joints/jointlimitsfile.cpp" line="42"/>
         <source>the joint limits %1 are not a JSON object: %2</source>
         <translation>los límites de soldadura %1 no son un objeto JSON: %2</translation>
     </message>
@@ -2892,102 +2908,132 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>JointTableModel</name>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="155"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="159"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="161"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
         <source>ok</source>
         <translation>correcta</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="163"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="167"/>
         <source>slow recovery</source>
         <translation>recuperación lenta</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="165"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="169"/>
         <source>too deep</source>
         <translation>demasiado profunda</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="167"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="171"/>
         <source>incomplete</source>
         <translation>incompleta</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="193"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="198"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="199"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="202"/>
+        <source>%1–%2 s</source>
+        <translation>%1–%2 s</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
         <source>%1 %·s</source>
         <translation>%1 %·s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="212"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="229"/>
+        <source>Began within ± %1 ms of this time</source>
+        <translation>Empezó a ± %1 ms de esta hora</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <source>Measured to ± %1 K</source>
+        <translation>Medido con ± %1 K</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="236"/>
+        <source>The tip was not seen back within the band</source>
+        <translation>No se vio la punta volver a la banda</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="238"/>
+        <source>Only bounded: the readings around the tip&apos;s return were too far apart, or broke off, to say when within the interval shown</source>
+        <translation>Solo acotado: las lecturas en torno a la vuelta de la punta estaban demasiado separadas, o se interrumpieron, para decir cuándo dentro del intervalo mostrado</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="241"/>
+        <source>Measured to ± %1 ms</source>
+        <translation>Medido con ± %1 ms</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/joints/jointtable.cpp" line="250"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="214"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="252"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="216"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="254"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="218"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="256"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="220"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="258"/>
         <source>Setpoint</source>
         <translation>Consigna</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="222"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="260"/>
         <source>Lowest</source>
         <translation>Mínima</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="224"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="262"/>
         <source>Dip</source>
         <translation>Caída</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="226"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="264"/>
         <source>Recovery</source>
         <translation>Recuperación</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="228"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="266"/>
         <source>Duration</source>
         <translation>Duración</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="230"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="268"/>
         <source>Power peak</source>
         <translation>Potencia máx.</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="232"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="270"/>
         <source>Power·time</source>
         <translation>Potencia·tiempo</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="234"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="272"/>
         <source>Verdict</source>
         <translation>Veredicto</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointtable.cpp" line="236"/>
+        <location filename="../lib/model/joints/jointtable.cpp" line="274"/>
         <source>Work order</source>
         <translation>Orden de trabajo</translation>
     </message>
@@ -2995,17 +3041,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="111"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="109"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>soldadura demasiado profunda: la punta bajó %1 K por debajo de la consigna (límite %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="116"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="115"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>soldadura con recuperación lenta: %1 s (límite %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="118"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="117"/>
         <source>joint did not recover within %1 s</source>
         <translation>la soldadura no se recuperó en %1 s</translation>
     </message>
@@ -3024,27 +3070,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>No hay ningún diario en %1.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="82"/>
+        <location filename="../lib/journal/journalschema.cpp" line="89"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="96"/>
+        <location filename="../lib/journal/journalschema.cpp" line="104"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="173"/>
+        <location filename="../lib/journal/journalschema.cpp" line="183"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>No se puede crear la carpeta %1 para el diario.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="246"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="244"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Registros perdidos: %1. Motivo: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="336"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="333"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>El diario se cerró antes de poder escribirlos: %1</translation>
     </message>
@@ -3054,27 +3100,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>El diario %1 no puede crecer: el disco está lleno o el diario alcanzó su tamaño máximo.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="51"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="52"/>
         <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
         <translation>El diario %1 está dañado o no es un diario; no se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="55"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
         <source>The journal %1 is locked by another program.</source>
         <translation>Otro programa tiene bloqueado el diario %1.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
         <source>The disk holding the journal %1 reported an error.</source>
         <translation>El disco del diario %1 ha informado de un error.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="61"/>
         <source>The journal %1 reported an error: %2</source>
         <translation>El diario %1 ha informado de un error: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="64"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="66"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>No se puede escribir el diario %1: su carpeta o el archivo es de solo lectura o no es accesible.</translation>
     </message>
@@ -3100,27 +3146,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1: mín. %2, máx. %3, media %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="42"/>
         <source>wake</source>
         <translation>salida del reposo</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="41"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="42"/>
         <source>heat-up</source>
         <translation>calentamiento</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="43"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
         <source>%1 at %2 to %3: %4</source>
         <translation>%1 a las %2 hasta %3: %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="46"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="48"/>
         <source>%1 at %2 to %3: not reached in this window</source>
         <translation>%1 a las %2 hasta %3: no alcanzado en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="50"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="52"/>
         <source>… %n more heat-up(s)</source>
         <translation>
             <numerusform>… %n calentamiento más</numerusform>
@@ -3128,17 +3174,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="59"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="64"/>
         <source>recovery at %1: %2 (dip to %3)</source>
         <translation>recuperación a las %1: %2 (caída hasta %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="62"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
         <source>dip at %1 to %2: not recovered in this window</source>
         <translation>caída a las %1 hasta %2: sin recuperar en esta ventana</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="66"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="70"/>
         <source>… %n more recovery(s)</source>
         <translation>
             <numerusform>… %n recuperación más</numerusform>
@@ -3146,22 +3192,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="74"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="79"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="76"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="81"/>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="77"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="84"/>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
     <message>
-        <location filename="../lib/model/analysis/measurementreport.cpp" line="103"/>
+        <location filename="../lib/model/analysis/measurementreport.cpp" line="112"/>
         <source>%1: no samples in this window</source>
         <translation>%1: sin muestras en esta ventana</translation>
     </message>
@@ -3174,48 +3220,48 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>El broker %1 rechazó el mensaje: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="284"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="285"/>
         <source>&apos;%1&apos; is not a topic a message can be published to.</source>
         <translation>«%1» no es un tema en el que se pueda publicar un mensaje.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="286"/>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="311"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="287"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="314"/>
         <source>QoS %1 does not exist; MQTT has 0, 1 and 2.</source>
         <translation>QoS %1 no existe; MQTT tiene 0, 1 y 2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="288"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="290"/>
         <source>Not connected to the broker %1: the message to %2 is dropped.</source>
         <translation>Sin conexión con el broker %1: se descarta el mensaje a %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="291"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="294"/>
         <source>%1 messages wait to be taken by the broker %2: the message to %3 is dropped.</source>
         <translation>%1 mensajes esperan a que el broker %2 los acepte: se descarta el mensaje a %3.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="301"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="304"/>
         <source>The message to %1 was not sent: %2</source>
         <translation>No se envió el mensaje a %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="309"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="312"/>
         <source>&apos;%1&apos; is not a valid subscription filter.</source>
         <translation>«%1» no es un filtro de suscripción válido.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="320"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="323"/>
         <source>The subscription to %1 was not sent: %2</source>
         <translation>No se envió la suscripción a %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="327"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="330"/>
         <source>There is no subscription to %1.</source>
         <translation>No hay ninguna suscripción a %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="335"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="338"/>
         <source>The subscription to %1 was not ended: %2</source>
         <translation>No se terminó la suscripción a %1: %2</translation>
     </message>
@@ -3225,109 +3271,109 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>El broker %1 rechazó la conexión: nombre de usuario o contraseña incorrectos.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="32"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="33"/>
         <source>The broker %1 refused the connection: not authorised (wrong user name or password, or this user may not connect).</source>
         <translation>El broker %1 rechazó la conexión: no autorizado (nombre de usuario o contraseña incorrectos, o este usuario no puede conectarse).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="39"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="41"/>
         <source>The broker %1 refused the connection: %2.</source>
         <translation>El broker %1 rechazó la conexión: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="45"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="47"/>
         <source>it does not speak MQTT 3.1.1</source>
         <translation>no habla MQTT 3.1.1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="47"/>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="69"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="49"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="71"/>
         <source>it does not accept this client id</source>
         <translation>no acepta este identificador de cliente</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="49"/>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="72"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="51"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="74"/>
         <source>the service is unavailable</source>
         <translation>el servicio no está disponible</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="55"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="57"/>
         <source>return code %1</source>
         <translation>código de retorno %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="67"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="69"/>
         <source>it does not speak MQTT 5</source>
         <translation>no habla MQTT 5</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="74"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="76"/>
         <source>reason code %1</source>
         <translation>código de motivo %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="84"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="85"/>
         <source>No MQTT broker accepts connections at %1 (connection refused).</source>
         <translation>Ningún broker MQTT acepta conexiones en %1 (conexión rechazada).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="88"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="90"/>
         <source>The broker %1 closed the connection (%2).</source>
         <translation>El broker %1 cerró la conexión (%2).</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="91"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="93"/>
         <source>The broker %1 cannot be reached: %2.</source>
         <translation>No se puede llegar al broker %1: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="112"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="114"/>
         <source>The broker&apos;s address %1 cannot be resolved.</source>
         <translation>No se puede resolver la dirección %1 del broker.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="116"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="118"/>
         <source>The TLS handshake with the broker %1 failed.</source>
         <translation>Falló el establecimiento de TLS con el broker %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="117"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="119"/>
         <source>The TLS handshake with the broker %1 failed: %2</source>
         <translation>Falló el establecimiento de TLS con el broker %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="120"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="123"/>
         <source>The broker %1 stopped answering within the keep-alive time.</source>
         <translation>El broker %1 dejó de responder dentro del tiempo de keep-alive.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="124"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="128"/>
         <source>The connection to the broker %1 was lost.</source>
         <translation>Se perdió la conexión con el broker %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="128"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="132"/>
         <source>The broker %1 sent data that is not valid MQTT.</source>
         <translation>El broker %1 envió datos que no son MQTT válido.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="131"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="135"/>
         <source>The connection to the broker %1 failed: %2.</source>
         <translation>Falló la conexión con el broker %1: %2.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="139"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="143"/>
         <source>The broker %1 cannot be reached: the connection was refused or reset.</source>
         <translation>No se puede llegar al broker %1: la conexión fue rechazada o restablecida.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttproblem.cpp" line="144"/>
+        <location filename="../lib/mqtt/mqttproblem.cpp" line="150"/>
         <source>The broker&apos;s host name %1 cannot be resolved: %2</source>
         <translation>No se puede resolver el nombre de host %1 del broker: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="46"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Hay una contraseña pero ningún nombre de usuario: MQTT solo envía una contraseña con un nombre de usuario.</translation>
     </message>
@@ -3342,37 +3388,37 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>No se acepta la última voluntad en %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="72"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="74"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>No se puede leer el archivo de certificado de la CA %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="75"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="76"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Un certificado de cliente necesita tanto su archivo de certificado como su archivo de clave.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="78"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="80"/>
         <source>The file %1 cannot be read.</source>
         <translation>No se puede leer el archivo %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="96"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="98"/>
         <source>TLS cannot be set up: %1</source>
         <translation>No se puede configurar TLS: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="104"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="106"/>
         <source>The MQTT version cannot be set: %1</source>
         <translation>No se puede fijar la versión de MQTT: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="127"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="130"/>
         <source>The client id %1 is not accepted.</source>
         <translation>No se acepta el identificador de cliente %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="128"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="131"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Sin memoria para un cliente MQTT.</translation>
     </message>
@@ -3385,7 +3431,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>El archivo de contraseña %1 no existe.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="33"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
         <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
         <translation>El archivo de contraseña %1 tiene más de %2 bytes; ¿es el archivo correcto?</translation>
     </message>
@@ -3395,12 +3441,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>No se puede leer el archivo de contraseña %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="42"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="43"/>
         <source>The password file %1 is empty.</source>
         <translation>El archivo de contraseña %1 está vacío.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="50"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="51"/>
         <source>The environment variable %1 that should hold the password is not set or empty.</source>
         <translation>La variable de entorno %1, que debería contener la contraseña, no está definida o está vacía.</translation>
     </message>
@@ -3413,7 +3459,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="77"/>
+        <location filename="../lib/model/parameter.cpp" line="76"/>
         <source>%1 to %2</source>
         <translation>de %1 a %2</translation>
     </message>
@@ -3429,7 +3475,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="93"/>
-        <location filename="../lib/model/parameter.cpp" line="134"/>
+        <location filename="../lib/model/parameter.cpp" line="135"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
@@ -3439,63 +3485,63 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1 no está permitido para %2: se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="107"/>
+        <location filename="../lib/model/parameter.cpp" line="108"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="119"/>
-        <location filename="../lib/model/parameter.cpp" line="232"/>
+        <location filename="../lib/model/parameter.cpp" line="120"/>
+        <location filename="../lib/model/parameter.cpp" line="247"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="137"/>
+        <location filename="../lib/model/parameter.cpp" line="138"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="188"/>
+        <location filename="../lib/model/parameter.cpp" line="198"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="200"/>
+        <location filename="../lib/model/parameter.cpp" line="210"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="201"/>
+        <location filename="../lib/model/parameter.cpp" line="211"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="254"/>
+        <location filename="../lib/model/parameter.cpp" line="269"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="257"/>
+        <location filename="../lib/model/parameter.cpp" line="272"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="279"/>
+        <location filename="../lib/model/parameter.cpp" line="295"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="294"/>
+        <location filename="../lib/model/parameter.cpp" line="310"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="308"/>
+        <location filename="../lib/model/parameter.cpp" line="323"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="325"/>
+        <location filename="../lib/model/parameter.cpp" line="341"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -3508,52 +3554,52 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>este programa</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="38"/>
         <source>, this program</source>
         <translation>, este programa</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="46"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
         <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
         <translation>ejecute `sudo usermod -aG %1 $USER` y después cierre la sesión y vuelva a iniciarla.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
         <source>You are not allowed to open %1: %2</source>
         <translation>No tiene permiso para abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
         <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
         <translation>No tiene permiso para abrir %1, y pertenece al grupo root en lugar de dialout, así que unirse a un grupo no servirá hasta que una regla de udev le asigne GROUP=&quot;dialout&quot;. Después, %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="54"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="58"/>
         <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
         <translation>No tiene permiso para abrir %1, que pertenece al grupo %2 (no a dialout): %3</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="96"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
         <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
         <translation>%1 está ocupado: lo tiene abierto %2. Cierre esa conexión e inténtelo de nuevo.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="107"/>
         <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
         <translation>No existe el puerto %1. Puede que el adaptador esté desenchufado o que el nombre del puerto esté mal escrito.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="105"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
         <source>%1 is already open in TipScope; close that connection first</source>
         <translation>%1 ya está abierto en TipScope; cierre primero esa conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="109"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
         <source>%1 stopped working, perhaps because the adapter was unplugged</source>
         <translation>%1 dejó de funcionar, quizá porque se desenchufó el adaptador</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="122"/>
         <source>Could not open %1</source>
         <translation>No se pudo abrir %1</translation>
     </message>
@@ -3669,54 +3715,54 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="209"/>
+        <location filename="../lib/model/profile.cpp" line="212"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="137"/>
+        <location filename="../lib/model/profile.cpp" line="136"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="148"/>
+        <location filename="../lib/model/profile.cpp" line="149"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="159"/>
+        <location filename="../lib/model/profile.cpp" line="160"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>familia de equipo desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="167"/>
+        <location filename="../lib/model/profile.cpp" line="168"/>
         <source>the profile has no values</source>
         <translation>el perfil no tiene valores</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="173"/>
+        <location filename="../lib/model/profile.cpp" line="175"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="187"/>
+        <location filename="../lib/model/profile.cpp" line="190"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>el perfil se rechaza, no se escribirá nada:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="199"/>
+        <location filename="../lib/model/profile.cpp" line="202"/>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="203"/>
+        <location filename="../lib/model/profile.cpp" line="206"/>
         <source>%1 is %2 bytes; a profile is at most %3</source>
         <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="225"/>
+        <location filename="../lib/model/profile.cpp" line="228"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
@@ -3726,7 +3772,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>no es un archivo JSON válido: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="142"/>
+        <location filename="../lib/model/profile.cpp" line="143"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>indicado más de una vez, así que no está claro qué valor se quiere: %1; no se escribirá nada</translation>
     </message>
@@ -3746,7 +3792,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>el esquema de perfil %1 no es compatible (esta versión lee los esquemas %2 a %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="176"/>
+        <location filename="../lib/model/profile.cpp" line="179"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;, o un objeto con uno en &quot;raw&quot; (y texto en &quot;name&quot; y &quot;value&quot;)</translation>
     </message>
@@ -3764,12 +3810,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>%1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="41"/>
+        <location filename="../lib/model/profileapplier.cpp" line="40"/>
         <source>changed %1 %2: %3 → %4</source>
         <translation>cambiado %1 %2: %3 → %4</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="43"/>
+        <location filename="../lib/model/profileapplier.cpp" line="42"/>
         <source>FAILED %1 %2: %3</source>
         <translation>FALLÓ %1 %2: %3</translation>
     </message>
@@ -3784,7 +3830,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>cancelado: los valores restantes no se escribieron</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="58"/>
+        <location filename="../lib/model/profileapplier.cpp" line="60"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n diferencia</numerusform>
@@ -3792,59 +3838,59 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="59"/>
+        <location filename="../lib/model/profileapplier.cpp" line="61"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 cambiados, %2 ya correctos, %3 fallidos</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="104"/>
+        <location filename="../lib/model/profileapplier.cpp" line="109"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>el perfil es para %1 y este equipo es %2 (fuerce la aplicación para escribir los ajustes que comparten)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="109"/>
+        <location filename="../lib/model/profileapplier.cpp" line="114"/>
         <source>monitor-only mode is on</source>
         <translation>el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="168"/>
+        <location filename="../lib/model/profileapplier.cpp" line="175"/>
         <source>reading the device</source>
         <translation>leyendo el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="230"/>
+        <location filename="../lib/model/profileapplier.cpp" line="237"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="232"/>
+        <location filename="../lib/model/profileapplier.cpp" line="240"/>
         <source>unreadable value</source>
         <translation>valor ilegible</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="290"/>
+        <location filename="../lib/model/profileapplier.cpp" line="299"/>
         <source>profile %1 applied: %2 changed, %3 failed, %4 already right%5</source>
         <translation>perfil %1 aplicado: %2 cambiados, %3 fallidos, %4 ya correctos%5</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="295"/>
+        <location filename="../lib/model/profileapplier.cpp" line="304"/>
         <source> (cancelled)</source>
         <translation> (cancelado)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="79"/>
+        <location filename="../lib/model/profileapplier.cpp" line="81"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>el perfil rompería los límites de sus ajustes (MIT ≤ MAT, MIT ≤ temperatura seleccionada ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="99"/>
+        <location filename="../lib/model/profileapplier.cpp" line="102"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>ninguno de los ajustes del perfil existe en este %1 (omitidos: %2)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="52"/>
+        <location filename="../lib/model/profileapplier.cpp" line="53"/>
         <source>%n skipped</source>
         <translation>
             <numerusform>%n omitido</numerusform>
@@ -3852,12 +3898,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="124"/>
+        <location filename="../lib/model/profileapplier.cpp" line="130"/>
         <source>this %1 has no such setting</source>
         <translation>este %1 no tiene ese ajuste</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="48"/>
+        <location filename="../lib/model/profileapplier.cpp" line="47"/>
         <source>skipped %1 %2: %3</source>
         <translation>omitido %1 %2: %3</translation>
     </message>
@@ -3870,22 +3916,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>en el perfil</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="64"/>
+        <location filename="../lib/model/profilelimits.cpp" line="65"/>
         <source>on the device now</source>
         <translation>ahora en el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="65"/>
+        <location filename="../lib/model/profilelimits.cpp" line="66"/>
         <source>%1 %2 (%3)</source>
         <translation>%1 %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="83"/>
+        <location filename="../lib/model/profilelimits.cpp" line="84"/>
         <source>%1 is not known (the device did not answer), so %2 cannot be checked against it</source>
         <translation>%1 es desconocido (el equipo no respondió), así que %2 no se puede comprobar con él</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilelimits.cpp" line="90"/>
+        <location filename="../lib/model/profilelimits.cpp" line="92"/>
         <source>%1 is above %2</source>
         <translation>%1 está por encima de %2</translation>
     </message>
@@ -3893,37 +3939,37 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>RemoteApply</name>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="75"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="76"/>
         <source>a retained command is not carried out: it would run again at every reconnect</source>
         <translation>una orden retenida (retained) no se ejecuta: se repetiría en cada reconexión</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="78"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="79"/>
         <source>remote profile apply is off in this agent&apos;s configuration</source>
         <translation>la aplicación remota de perfiles está desactivada en la configuración de este agente</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="80"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="83"/>
         <source>publish the command under your user name: %1/%2/USER</source>
         <translation>publique la orden bajo su nombre de usuario: %1/%2/USUARIO</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="85"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="89"/>
         <source>no device of this agent is published at %1</source>
         <translation>este agente no publica ningún dispositivo en %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="87"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="92"/>
         <source>another profile is being applied to this device</source>
         <translation>ya se está aplicando otro perfil a este dispositivo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="93"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="98"/>
         <source>not a profile: %1</source>
         <translation>no es un perfil: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/plant/remoteapply.cpp" line="123"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="128"/>
         <source>%n setting(s) not taken</source>
         <translation>
             <numerusform>%n ajuste no aceptado</numerusform>
@@ -3931,17 +3977,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="153"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="157"/>
         <source>Profile applied through MQTT for %1</source>
         <translation>Perfil aplicado por MQTT para %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="154"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="158"/>
         <source>Profile through MQTT for %1 not applied: %2</source>
         <translation>Perfil por MQTT para %1 no aplicado: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="155"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="159"/>
         <source>an unnamed client</source>
         <translation>un cliente sin nombre</translation>
     </message>
@@ -4015,41 +4061,41 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="48"/>
-        <location filename="../lib/model/session.cpp" line="135"/>
-        <location filename="../lib/model/session.cpp" line="138"/>
+        <location filename="../lib/model/session.cpp" line="49"/>
+        <location filename="../lib/model/session.cpp" line="136"/>
+        <location filename="../lib/model/session.cpp" line="139"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="134"/>
-        <location filename="../lib/model/session.cpp" line="147"/>
-        <location filename="../lib/model/session.cpp" line="155"/>
+        <location filename="../lib/model/session.cpp" line="135"/>
+        <location filename="../lib/model/session.cpp" line="148"/>
+        <location filename="../lib/model/session.cpp" line="156"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="171"/>
+        <location filename="../lib/model/session.cpp" line="172"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="222"/>
+        <location filename="../lib/model/session.cpp" line="223"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="223"/>
+        <location filename="../lib/model/session.cpp" line="224"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="233"/>
+        <location filename="../lib/model/session.cpp" line="234"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="241"/>
+        <location filename="../lib/model/session.cpp" line="242"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -4072,12 +4118,12 @@ Hágalo permanente con esta regla de udev:
         <translation>el equipo sin direcciones no se identificó: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="31"/>
+        <location filename="../lib/model/session.cpp" line="32"/>
         <source>the device at address %1 did not identify itself: %2</source>
         <translation>el equipo en la dirección %1 no se identificó: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="231"/>
+        <location filename="../lib/model/session.cpp" line="230"/>
         <source>connected to %1, but %2</source>
         <translation>conectado a %1, pero %2</translation>
     </message>
@@ -4098,28 +4144,28 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>StationModel</name>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="55"/>
+        <location filename="../lib/model/stationmodel.cpp" line="56"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="74"/>
+        <location filename="../lib/model/stationmodel.cpp" line="75"/>
         <source>%1 does not support %2</source>
         <translation>%1 no admite %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="81"/>
+        <location filename="../lib/model/stationmodel.cpp" line="82"/>
         <source>%1 cannot save to memory</source>
         <translation>%1 no puede guardar en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="117"/>
-        <location filename="../lib/model/stationmodel.cpp" line="121"/>
+        <location filename="../lib/model/stationmodel.cpp" line="118"/>
+        <location filename="../lib/model/stationmodel.cpp" line="122"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/stationmodel.cpp" line="135"/>
+        <location filename="../lib/model/stationmodel.cpp" line="136"/>
         <source>error cleared</source>
         <translation>error borrado</translation>
     </message>
@@ -4127,157 +4173,157 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>SupportReport</name>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="173"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="176"/>
         <source>TipScope support report, %1</source>
         <translation>Informe de soporte de TipScope, %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="174"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="178"/>
         <source>TipScope %1, Qt %2, %3</source>
         <translation>TipScope %1, Qt %2, %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="115"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="117"/>
         <source>Line: %1</source>
         <translation>Línea: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="116"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="118"/>
         <source>State: %1</source>
         <translation>Estado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="117"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="119"/>
         <source>Statistics: %1</source>
         <translation>Estadísticas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="166"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="168"/>
         <source>Workspace line %1</source>
         <translation>Línea %1 del espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="167"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="169"/>
         <source>Workspace line %1 (%2)</source>
         <translation>Línea %1 del espacio de trabajo (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="188"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="192"/>
         <source>Recent events of %1:</source>
         <translation>Eventos recientes de %1:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="196"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="201"/>
         <source>Recent events:</source>
         <translation>Eventos recientes:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="31"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="32"/>
         <source>Device %1</source>
         <translation>Equipo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="36"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="37"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="38"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="39"/>
         <source>, software %1</source>
         <translation>, software %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="45"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="46"/>
         <source>Joints of the last 24 hours: not read: %1</source>
         <translation>Soldaduras de las últimas 24 horas: no leídas: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="47"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="48"/>
         <source>Joints from %1 to %2:</source>
         <translation>Soldaduras de %1 a %2:</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="52"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="53"/>
         <source>  none</source>
         <translation>  ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="59"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="60"/>
         <source>  %1, port %2: %3 joints: %4 ok, %5 slow recovery, %6 too deep, %7 incomplete</source>
         <translation>  %1, puerto %2: %3 soldaduras: %4 correctas, %5 recuperación lenta, %6 demasiado profundas, %7 incompletas</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="67"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="68"/>
         <source>; recovery median %1 ms, 95th percentile %2 ms</source>
         <translation>; recuperación mediana %1 ms, percentil 95 %2 ms</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="80"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="81"/>
         <source>Journal: %1</source>
         <translation>Diario: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="82"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="83"/>
         <source>yes</source>
         <translation>sí</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="83"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="84"/>
         <source>no</source>
         <translation>no</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="84"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="86"/>
         <source>not yet, opening</source>
         <translation>todavía no, abriéndose</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="85"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="87"/>
         <source>no, closed</source>
         <translation>no, cerrado</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="87"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="89"/>
         <source>  writing: %1</source>
         <translation>  escribe: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="88"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="90"/>
         <source>  writing: %1: %2</source>
         <translation>  escribe: %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="90"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="92"/>
         <source>  lost: %1 records (%2)</source>
         <translation>  perdidos: %1 registros (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="93"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="95"/>
         <source>  not read: %1</source>
         <translation>  no leído: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="96"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="98"/>
         <source>  %1 joints and %2 events, %3 and %4 of them not yet published; %5 waiting in memory</source>
         <translation>  %1 soldaduras y %2 eventos, de ellos %3 y %4 aún sin publicar; %5 esperando en memoria</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="102"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="104"/>
         <source>  from %1 to %2</source>
         <translation>  de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="105"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="107"/>
         <source>  kept without a time limit; %1 bytes on disk</source>
         <translation>  conservado sin límite de tiempo; %1 bytes en disco</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="107"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="109"/>
         <source>  kept for %1 days; %2 bytes on disk</source>
         <translation>  conservado %1 días; %2 bytes en disco</translation>
     </message>
     <message>
-        <location filename="../lib/model/supportreporttext.cpp" line="132"/>
+        <location filename="../lib/model/supportreporttext.cpp" line="135"/>
         <source>  What to check:</source>
         <translation>  Qué comprobar:</translation>
     </message>
@@ -4285,12 +4331,12 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>TipWear</name>
     <message>
-        <location filename="../lib/model/joints/tipwear.cpp" line="65"/>
+        <location filename="../lib/model/joints/tipwear.cpp" line="63"/>
         <source>tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when it was plugged in</source>
         <translation>punta desgastándose: %1 se recupera en %2 s (mediana de las últimas %3 soldaduras), %4 s al conectarla</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/tipwear.cpp" line="67"/>
+        <location filename="../lib/model/joints/tipwear.cpp" line="66"/>
         <source>the tool</source>
         <translation>la herramienta</translation>
     </message>
@@ -4323,28 +4369,28 @@ Hágalo permanente con esta regla de udev:
         <translation>ningún valor (el comando lleva %1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="63"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="64"/>
         <source>nothing: it is read-only</source>
         <translation>nada: es de solo lectura</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="78"/>
-        <location filename="../lib/protocol/valuecodec.cpp" line="84"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="79"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="85"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="69"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="70"/>
         <source>%1 refused for %2 (%3): allowed is %4</source>
         <translation>%1 rechazado para %2 (%3): se permite %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="181"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; no es un retardo en segundos como 1.6 o 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="186"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; no es un número entero; %2 admite %3</translation>
     </message>
@@ -4352,12 +4398,12 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>WorkContextFile</name>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="41"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="40"/>
         <source>cannot read the work context %1: %2</source>
         <translation>no se puede leer el contexto de trabajo %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="43"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="44"/>
         <source>the work context %1 is too big to be one</source>
         <translation>el contexto de trabajo %1 es demasiado grande para serlo</translation>
     </message>
@@ -4367,7 +4413,7 @@ Hágalo permanente con esta regla de udev:
         <translation>el contexto de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/workcontextfile.cpp" line="51"/>
+        <location filename="../lib/journal/workcontextfile.cpp" line="52"/>
         <source>the work context %1: %2</source>
         <translation>el contexto de trabajo %1: %2</translation>
     </message>
@@ -4388,63 +4434,63 @@ Hágalo permanente con esta regla de udev:
         <translation>no es un espacio de trabajo de TipScope (&quot;format&quot; no es &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="34"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="35"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; debe ser un número entero desde 1</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="36"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="37"/>
         <source>written by a later TipScope (workspace version %1); this one reads version %2 and older</source>
         <translation>escrito por un TipScope posterior (versión de espacio de trabajo %1); este lee la versión %2 y anteriores</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="64"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="66"/>
         <source>&quot;lines&quot; must be a list of lines</source>
         <translation>&quot;lines&quot; debe ser una lista de líneas</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="70"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="73"/>
         <source>line %1</source>
         <translation>línea %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="71"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="74"/>
         <source>line %1 (%2)</source>
         <translation>línea %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="73"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="76"/>
         <source>%1: must be an object</source>
         <translation>%1: debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="78"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="81"/>
         <source>%1: the name is already another line&apos;s; each line needs its own</source>
         <translation>%1: el nombre ya es de otra línea; cada línea necesita el suyo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="92"/>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="95"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="96"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>no se puede leer el espacio de trabajo %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="93"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="97"/>
         <source>there is no such file</source>
         <translation>no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="97"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="102"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>el espacio de trabajo %1 es demasiado grande para ser uno</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="104"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>el espacio de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -4454,67 +4500,67 @@ Hágalo permanente con esta regla de udev:
         <translation>%1 debe ser texto</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="56"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="55"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 debe ser un número entero de %2 a %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="61"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="63"/>
         <source>%1 must be true or false</source>
         <translation>%1 debe ser true o false</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="71"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="72"/>
         <source>%1 must be one of %2</source>
         <translation>%1 debe ser uno de %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="76"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="78"/>
         <source>%1 must be an object</source>
         <translation>%1 debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="101"/>
         <source>%1 must name the serial port</source>
         <translation>%1 debe nombrar el puerto serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="111"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="114"/>
         <source>%1 must be HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>%1 debe ser HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="143"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="146"/>
         <source>devices must be a list</source>
         <translation>devices debe ser una lista</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="149"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="152"/>
         <source>devices[%1] must be an object</source>
         <translation>devices[%1] debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="153"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="156"/>
         <source>%1 must be an address from 0 to 99, or null for the device without addresses</source>
         <translation>%1 debe ser una dirección de 0 a 99, o null para el dispositivo sin direcciones</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="160"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="164"/>
         <source>%1 must not be empty</source>
         <translation>%1 no debe estar vacío</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="163"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="169"/>
         <source>devices[%1] names a device named before</source>
         <translation>devices[%1] nombra un dispositivo ya nombrado</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="222"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="228"/>
         <source>every line needs a name</source>
         <translation>cada línea necesita un nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="229"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="235"/>
         <source>connection is missing</source>
         <translation>falta connection</translation>
     </message>
@@ -6756,72 +6802,72 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="49"/>
+        <location filename="../app/gui/mainwindow.cpp" line="61"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="125"/>
+        <location filename="../app/gui/mainwindow.cpp" line="137"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="129"/>
+        <location filename="../app/gui/mainwindow.cpp" line="141"/>
         <source>Work &amp;context…</source>
         <translation>&amp;Contexto de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="133"/>
+        <location filename="../app/gui/mainwindow.cpp" line="145"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="135"/>
+        <location filename="../app/gui/mainwindow.cpp" line="147"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="136"/>
+        <location filename="../app/gui/mainwindow.cpp" line="148"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="137"/>
+        <location filename="../app/gui/mainwindow.cpp" line="149"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="145"/>
+        <location filename="../app/gui/mainwindow.cpp" line="157"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Límites de soldadura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="146"/>
+        <location filename="../app/gui/mainwindow.cpp" line="158"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="147"/>
+        <location filename="../app/gui/mainwindow.cpp" line="159"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="149"/>
+        <location filename="../app/gui/mainwindow.cpp" line="161"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="150"/>
+        <location filename="../app/gui/mainwindow.cpp" line="162"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="268"/>
+        <location filename="../app/gui/mainwindow.cpp" line="288"/>
         <source>new workspace</source>
         <translation>espacio de trabajo nuevo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="270"/>
+        <location filename="../app/gui/mainwindow.cpp" line="290"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n línea)</numerusform>
@@ -6829,28 +6875,28 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="273"/>
+        <location filename="../app/gui/mainwindow.cpp" line="293"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="278"/>
+        <location filename="../app/gui/mainwindow.cpp" line="298"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="283"/>
+        <location filename="../app/gui/mainwindow.cpp" line="303"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="298"/>
-        <location filename="../app/gui/mainwindow.cpp" line="301"/>
+        <location filename="../app/gui/mainwindow.cpp" line="318"/>
+        <location filename="../app/gui/mainwindow.cpp" line="321"/>
         <source>Support report</source>
         <translation>Informe de soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="302"/>
+        <location filename="../app/gui/mainwindow.cpp" line="322"/>
         <source>Written:
 %1
 
@@ -6861,12 +6907,12 @@ Attach both files to the support ticket.</source>
 Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="310"/>
+        <location filename="../app/gui/mainwindow.cpp" line="335"/>
         <source>joint limits</source>
         <translation>límites de soldadura</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="311"/>
+        <location filename="../app/gui/mainwindow.cpp" line="336"/>
         <source>%1; the default limits judge joints</source>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
@@ -6898,17 +6944,17 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     <message>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="45"/>
         <location filename="../app/gui/mainwindowworkspace.cpp" line="57"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="108"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="104"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="88"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="87"/>
         <source>The last workspace was not reopened: %1</source>
         <translation>El último espacio de trabajo no se volvió a abrir: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="110"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="106"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Espacio de trabajo: %1 de %n línea conectada</numerusform>
@@ -6916,7 +6962,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="120"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="116"/>
         <source>the workspace&apos;s %n line(s) are in the tree</source>
         <translation>
             <numerusform>la %n línea del espacio de trabajo está en el árbol</numerusform>
@@ -6924,46 +6970,46 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="122"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
         <source>the plant&apos;s devices are on the fleet overview</source>
         <translation>los equipos de la planta están en la vista de flota</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="129"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="134"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="125"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
         <source>Open workspace</source>
         <translation>Abrir espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="126"/>
         <source>TipScope workspaces (*.json);;All files (*)</source>
         <translation>Espacios de trabajo de TipScope (*.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="141"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="149"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="137"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="145"/>
         <source>Save workspace</source>
         <translation>Guardar espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="145"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="141"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>Espacios de trabajo de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="158"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="163"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="172"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="159"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="168"/>
         <source>Add this line to the workspace</source>
         <translation>Añadir esta línea al espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="163"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="159"/>
         <source>Name of the line (cell, station):</source>
         <translation>Nombre de la línea (celda, estación):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="164"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="160"/>
         <source>line-%1</source>
         <translation>linea-%1</translation>
     </message>
@@ -7648,13 +7694,13 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     <name>tipscope::gui::RemoteDevicePage</name>
     <message>
         <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="80"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
@@ -7680,92 +7726,92 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="83"/>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="105"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="104"/>
         <source>Tip, setpoint and power, last 10 minutes</source>
         <translation>Punta, consigna y potencia, últimos 10 minutos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="86"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="85"/>
         <source>Temperature (°C)</source>
         <translation>Temperatura (°C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="87"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="86"/>
         <source>Power (%)</source>
         <translation>Potencia (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Ended</source>
         <translation>Fin</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Verdict</source>
         <translation>Veredicto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Dip (K)</source>
         <translation>Caída (K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="93"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="92"/>
         <source>Recovery (s)</source>
         <translation>Recuperación (s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="95"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="94"/>
         <source>‹ Fleet overview</source>
         <translation>‹ Vista de la flota</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="103"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="102"/>
         <source>Live values</source>
         <translation>Valores en vivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="108"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="107"/>
         <source>Recent joints, newest first</source>
         <translation>Soldaduras recientes, la más nueva primero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="127"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="126"/>
         <source>No such device on the plant&apos;s broker</source>
         <translation>Ese dispositivo no está en el broker de la planta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="131"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="130"/>
         <source>%1 · %2 on %3 (%4)</source>
         <translation>%1 · %2 en %3 (%4)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="135"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="134"/>
         <source>Read-only: published by %1 %2 through the plant&apos;s broker; current.</source>
         <translation>Solo lectura: publicado por %1 %2 a través del broker de la planta; actual.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="137"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="136"/>
         <source>Read-only, not current: %1. The values are the last published.</source>
         <translation>Solo lectura, no actual: %1. Los valores son los últimos publicados.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="150"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="149"/>
         <source>No errors or alarms in force.</source>
         <translation>Ningún error ni alarma activos.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="151"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="150"/>
         <source>In force: %1</source>
         <translation>Activos: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="166"/>
         <source>never</source>
         <translation>nunca</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/fleet/remotedevicepage.cpp" line="202"/>
         <source>No live values received yet</source>
         <translation>Aún no se han recibido valores en vivo</translation>
     </message>
@@ -8025,19 +8071,19 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::journal::Journal</name>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="86"/>
-        <location filename="../lib/journal/journal.cpp" line="100"/>
-        <location filename="../lib/journal/journal.cpp" line="159"/>
+        <location filename="../lib/journal/journal.cpp" line="97"/>
+        <location filename="../lib/journal/journal.cpp" line="111"/>
+        <location filename="../lib/journal/journal.cpp" line="170"/>
         <source>The journal is closed.</source>
         <translation>El diario está cerrado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="90"/>
+        <location filename="../lib/journal/journal.cpp" line="101"/>
         <source>The journal cannot keep up: %1 records wait to be written.</source>
         <translation>El diario no da abasto: %1 registros esperan a ser escritos.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journal.cpp" line="138"/>
+        <location filename="../lib/journal/journal.cpp" line="149"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
     </message>
@@ -8065,22 +8111,27 @@ Do you want to continue?</source>
         <translation>conectado: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="68"/>
+        <location filename="../lib/link/line.cpp" line="70"/>
+        <source>cannot open %1, retrying every %2 s: %3</source>
+        <translation>no se puede abrir %1, reintentando cada %2 s: %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/line.cpp" line="74"/>
         <source>disconnected, retrying every %1 s: %2</source>
         <translation>desconectado, reintentando cada %1 s: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="72"/>
+        <location filename="../lib/link/line.cpp" line="78"/>
         <source>cannot connect: %1</source>
         <translation>no se puede conectar: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="93"/>
+        <location filename="../lib/link/line.cpp" line="99"/>
         <source>disconnected by the user</source>
         <translation>desconectado por el usuario</translation>
     </message>
     <message>
-        <location filename="../lib/link/line.cpp" line="136"/>
+        <location filename="../lib/link/line.cpp" line="142"/>
         <source>no answer to %1 requests in a row (cable unplugged, device off, or wrong addressing?)</source>
         <translation>sin respuesta a %1 peticiones seguidas (¿cable desenchufado, equipo apagado o direccionamiento incorrecto?)</translation>
     </message>

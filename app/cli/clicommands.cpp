@@ -76,10 +76,9 @@ QString formatReading(const ResolvedCommand &cmd, const QByteArray &data, bool r
 
 int runOnLine(CliSession &s) {
     static const QMap<QString, int (*)(CliSession &)> commands = {
-        {QStringLiteral("detect"), runDetect},   {QStringLiteral("read"), runRead},
-        {QStringLiteral("write"), runWrite},     {QStringLiteral("send"), runSend},
-        {QStringLiteral("monitor"), runMonitor}, {QStringLiteral("dump"), runDump},
-        {QStringLiteral("profile"), runProfile}};
+        {QStringLiteral("detect"), runDetect}, {QStringLiteral("read"), runRead},
+        {QStringLiteral("write"), runWrite},   {QStringLiteral("send"), runSend},
+        {QStringLiteral("dump"), runDump},     {QStringLiteral("profile"), runProfile}};
     const auto run = commands.value(s.options().command);
     return run ? run(s) : kUsage;
 }

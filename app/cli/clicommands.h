@@ -5,6 +5,7 @@
 #include "clisession.h"
 
 #include "model/session.h"
+#include "model/workspace/workspacefile.h"
 
 namespace tipscope::cli {
 
@@ -15,13 +16,17 @@ int runDetect(CliSession &s);
 int runRead(CliSession &s);
 int runWrite(CliSession &s);
 int runSend(CliSession &s);
-int runMonitor(CliSession &s);
 int runDump(CliSession &s);
 int runProfile(CliSession &s);
 int runCommands(const CliOptions &o, QTextStream &out, QTextStream &err);
 // The line the options name (connection, addressing, the demo's activity), for commands that run
 // a Session of their own instead of the CliSession's line.
 [[nodiscard]] model::Session::Settings sessionSettingsOf(const CliOptions &o);
+// The same as a workspace line, named as docs/mqtt.md says: "demo" for the demo, the serial
+// device's name, or the TCP server's host and port.
+[[nodiscard]] model::WorkspaceLine workspaceLineOf(const CliOptions &o);
+// monitor: the line (or a workspace's lines) through the line service, printed and written.
+int runMonitor(const CliOptions &o, QTextStream &out, QTextStream &err);
 // monitor --mqtt: the lines (one, or a workspace's) published as tipscope-agent does.
 int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err);
 // Their own session (record) or none (measure): recordings, as the Charts page writes them.

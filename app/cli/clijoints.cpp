@@ -116,16 +116,14 @@ QString textLine(const StoredJoint &stored) {
     const QString address =
         j.device.address ? QStringLiteral("%1").arg(*j.device.address, 2, 10, QLatin1Char('0'))
                          : QStringLiteral("--");
-    QString line = QStringLiteral("%1  %2 %3 P%4 %5  %6 °C  lowest %7 °C  dip %8 K  recovery %9")
-                       .arg(utcText(j.startMs), j.device.model, address)
-                       .arg(j.port)
-                       .arg(j.tool.isEmpty() ? QStringLiteral("-") : j.tool)
-                       .arg(j.setpoint)
-                       .arg(j.lowestTip)
-                       .arg(j.dipDepth)
-                       .arg(j.recoveryMs ? QString::number(double(*j.recoveryMs) / 1000, 'f', 2) +
-                                               QStringLiteral(" s")
-                                         : QStringLiteral("-"));
+    QString line =
+        QStringLiteral("%1  %2 %3 P%4 %5  %6 °C  lowest %7 °C  dip %8 K  recovery %9")
+            .arg(utcText(j.startMs), j.device.model, address)
+            .arg(j.port)
+            .arg(j.tool.isEmpty() ? QStringLiteral("-") : j.tool)
+            .arg(j.setpoint)
+            .arg(QString::number(j.lowestTip, 'f', 1), QString::number(j.dipDepth, 'f', 1))
+            .arg(model::recoveryWords(j));
     line += QStringLiteral("  ") + model::jointVerdictName(j.verdict);
     if (!stored.context.workOrder.isEmpty())
         line += QStringLiteral("  ") + stored.context.workOrder;

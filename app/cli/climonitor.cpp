@@ -1,30 +1,31 @@
-// tipscope-cli monitor: tip temperature, setpoint, power and status of every port, polled in
-// cycles through the live-poll priority. A lost line is reported and the line reconnects by
-// itself; the monitor resumes when it is back. Each port's readings also go through the joint
-// detector the GUI uses, judged by the shared joint limits (and --limit); every joint is a line
-// of its own and is kept in the journal with the work context in force.
+// tipscope-cli monitor: the line the options name, or every line of --workspace, through the line
+// service every front end opens: the core's session polls it (adaptive sampling, the wire full
+// while a joint lasts), its joint watcher finds the joints, judged by the shared joint limits
+// (and --limit), and the journal keeps them with the work context in force. The monitor only
+// prints what the models hold: every --interval each port's latest tip temperature, setpoint,
+// power and status ("P1 --" while they are not current), a line per joint as it ends, and the
+// rows of --csv. The interval decides what is printed and written, never what is read or how
+// often. A lost line is said once and reconnects by itself.
 #include "clicommands.h"
 
 #include "climonitorcsv.h"
-#include "climonitorjoints.h"
 
-#include "model/devicemodel.h"
-#include "model/joints/jointlimitsfile.h"
+#include "model/displayunits.h"
 #include "model/portmodel.h"
-
-#include "protocol/elide.h"
+#include "model/workspace/workspacefile.h"
 #include "protocol/valuecodec.h"
+#include "service/lineservice.h"
 
 #include <QDateTime>
-#include <QElapsedTimer>
 #include <QEventLoop>
+#include <QFileInfo>
 #include <QTimer>
+#include <algorithm>
 #include <cmath>
 
 namespace tipscope::cli {
 
-using namespace tipscope::link;
-using namespace tipscope::protocol;
+using namespace tipscope::model;
 
 namespace {
 
@@ -32,181 +33,348 @@ struct CliMonitorTr {
     Q_DECLARE_TR_FUNCTIONS(CliMonitor)
 };
 
-struct PortReading {
-    QString tip, setpoint, power, status;
-    bool ok = false;
-    model::PortReading joint; // the same, for the joint detector
+constexpr int kFinishMs = 10'000;
+// How long a line may take to open and find its station before a monitor of one line gives up.
+constexpr int kFirstContactMs = 30'000;
+
+// One line as the monitor prints it.
+struct MonitoredLine {
+    QString name;
+    QString prefix; // "[cell-3] " in a workspace, nothing for one line
+    Session *session = nullptr;
+    std::shared_ptr<MonitorCsv> csv;
+    QString csvPath;         // a file of its own, created once the line has a station
+    bool csvFailed = false;  // the CSV could not be created or written: said once, then left
+    QString describedDevice; // what the CSV last named
+    bool lost = false;       // the loss was said; the return will be
+    bool everConnected = false;
+    bool lastCycleWhole = false; // every port current at the last print
 };
 
-const QList<Role> kLiveRoles = {Role::TipTemperature, Role::Setpoint, Role::Power, Role::Status};
-constexpr int kToolEveryCycles = 10; // the tool rarely changes: read it now and then
+QString valueText(const Parameter *p) {
+    const auto v = p ? p->value() : std::nullopt;
+    return v ? protocol::describeValue(p->spec(), *v, protocol::Wording::Catalog) : QString();
+}
 
-PortReading readPort(CliSession &s, const DeviceInfo &d, int port, int *worst) {
-    PortReading r;
-    QStringList fields;
-    QList<qint64> numbers;
-    r.joint.timeMs = QDateTime::currentMSecsSinceEpoch();
-    for (const Role role : kLiveRoles) {
-        const auto cmd = Catalog::builtin().resolve(d.family, role, port, Direction::Read);
-        if (!cmd)
-            return r;
-        Reply *reply = s.ask(Request::read(d.address, *cmd, Priority::LivePoll));
-        reply->deleteLater();
-        if (!reply->ok()) {
-            *worst = qMax(*worst, CliSession::exitCodeFor(*reply));
-            return r;
-        }
-        const auto value = decodeAnswer(*cmd, reply->answer().data);
-        if (!value)
-            return r;
-        numbers.append(value->number);
-        if (role == Role::Power)
-            fields.append(QString::number(value->number / 10.0, 'f', 1));
+// A value is shown while it is current (read, on a line that is up); one the station refuses or
+// has not answered is "?" and costs only itself.
+bool isShown(const Parameter *p) {
+    return p && p->isCurrent() && !p->isRefused();
+}
+
+// "P1 350/350 °C 5.0% working", or "P1 --" while the port's tip temperature is not current (the
+// line is down, or not read yet). The fields of the CSV row are set while it is current; a field
+// the station does not give is empty there.
+QString portText(const PortModel &port, QString *csvFields) {
+    const Parameter *tip = port.parameter(protocol::Role::TipTemperature);
+    const Parameter *setpoint = port.parameter(protocol::Role::Setpoint);
+    const Parameter *power = port.parameter(protocol::Role::Power);
+    const Parameter *status = port.parameter(protocol::Role::Status);
+    if (!isShown(tip))
+        return CliMonitorTr::tr("P%1 --").arg(port.number());
+    const QString setpointText = isShown(setpoint) ? valueText(setpoint) : QString();
+    const QString powerText =
+        isShown(power)
+            ? QString::number(double(power->number().value_or(0)) *
+                                  displayFormat(power->spec(), TemperatureUnit::Celsius).scale,
+                              'f', 1)
+            : QString();
+    const QString statusText = isShown(status) ? valueText(status) : QString();
+    *csvFields =
+        QStringLiteral("%1,%2,%3,\"%4\"").arg(valueText(tip), setpointText, powerText, statusText);
+    const auto orUnknown = [](const QString &text) {
+        return text.isEmpty() ? QStringLiteral("?") : text;
+    };
+    return QStringLiteral("P%1 %2/%3 °C %4% %5")
+        .arg(port.number())
+        .arg(valueText(tip), orUnknown(setpointText), orUnknown(powerText), orUnknown(statusText));
+}
+
+// The CSV failed (it could not be created, or a row could not be written whole): said once; the
+// monitor goes on printing and journaling, and ends non-zero.
+void dropCsv(MonitoredLine &line, const QString &path, const QString &why, QTextStream &err) {
+    if (!line.csvFailed)
+        err << line.prefix << "# "
+            << CliMonitorTr::tr(
+                   "tipscope-cli: writing %1 failed: %2; monitoring goes on without it")
+                   .arg(path, why)
+            << Qt::endl;
+    line.csvFailed = true;
+    line.csv.reset();
+}
+
+void printCycle(MonitoredLine &line, QTextStream &out, QTextStream &err) {
+    StationModel *station = line.session->station();
+    if (!station)
+        return;
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const QString stamp = QDateTime::fromMSecsSinceEpoch(now).toString(Qt::ISODateWithMs);
+    if (!line.csv && !line.csvPath.isEmpty() && !line.csvFailed) {
+        auto created = MonitorCsv::create(line.csvPath, false);
+        if (created)
+            line.csv = created.value();
         else
-            fields.append(describeValue(*cmd, *value, Wording::Catalog)); // data: English
+            dropCsv(line, line.csvPath, created.error(), err);
     }
-    r.tip = fields[0];
-    r.setpoint = fields[1];
-    r.power = fields[2];
-    r.status = fields[3];
-    r.ok = true;
-    r.joint.tip = int(numbers[0]);
-    r.joint.setpoint = int(numbers[1]);
-    r.joint.powerPct = double(numbers[2]) / 10;
-    r.joint.working =
-        model::PortStatus::fromNumber(numbers[3]).mode == model::PortStatus::Mode::Working;
-    return r;
+    if (line.csv && line.describedDevice != station->info().summary()) {
+        line.describedDevice = station->info().summary();
+        if (!line.csv->describe(line.name, line.describedDevice))
+            dropCsv(line, line.csv->path(), line.csv->errorText(), err);
+    }
+    QStringList parts;
+    bool whole = true;
+    for (const PortModel *port : station->ports()) {
+        QString fields;
+        parts.append(portText(*port, &fields));
+        whole = whole && !fields.isEmpty();
+        if (line.csv && !fields.isEmpty() &&
+            !line.csv->write(line.name, stamp, port->number(), fields))
+            dropCsv(line, line.csv->path(), line.csv->errorText(), err);
+    }
+    line.lastCycleWhole = whole;
+    out << line.prefix << stamp << "  " << parts.join(QLatin1String(" | ")) << Qt::endl;
 }
 
-QString readTool(CliSession &s, const DeviceInfo &d, int port) {
-    const auto cmd =
-        Catalog::builtin().resolve(d.family, Role::ConnectedTool, port, Direction::Read);
-    if (!cmd)
+// "2026-12-02T10:41:03.120  joint P1 C245 350 °C lowest 318 °C dip 32 K recovery 1.84 s ok"
+QString jointLine(const JointRecord &j) {
+    return QStringLiteral("%1  joint P%2 %3 %4 °C lowest %5 °C dip %6 K recovery %7 %8")
+        .arg(QDateTime::fromMSecsSinceEpoch(j.startMs).toString(Qt::ISODateWithMs))
+        .arg(j.port)
+        .arg(j.tool.isEmpty() ? QStringLiteral("-") : j.tool)
+        .arg(j.setpoint)
+        .arg(QString::number(j.lowestTip, 'f', 1), QString::number(j.dipDepth, 'f', 1))
+        .arg(recoveryWords(j))
+        .arg(jointVerdictName(j.verdict));
+}
+
+// The line is lost and back: each said once, not at every retry.
+void followLine(MonitoredLine &line, QTextStream &err) {
+    QObject::connect(
+        line.session, &Session::stateChanged, line.session,
+        [&line, &err](Session::State state, const QString &text) {
+            if (state == Session::State::Connected) {
+                if (line.lost)
+                    err << line.prefix << "# "
+                        << CliMonitorTr::tr("reconnected to %1")
+                               .arg(line.session->line()->transport().description())
+                        << Qt::endl;
+                line.lost = false;
+                line.everConnected = true;
+            } else if ((state == Session::State::Retrying || state == Session::State::Failed) &&
+                       !line.lost) {
+                line.lost = true;
+                err << line.prefix << "# " << text << Qt::endl;
+            }
+        });
+}
+
+protocol::Outcome<std::optional<int>> intervalOf(const CliOptions &o) {
+    bool ok = true;
+    const int ms = o.values.value(QStringLiteral("interval"), QStringLiteral("1000")).toInt(&ok);
+    if (!ok || ms < 0)
+        return protocol::failure(CliMonitorTr::tr(
+            "tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)"));
+    return std::optional<int>(ms);
+}
+
+// The lines to monitor: the workspace's, or the one the options name; demo lines at work.
+protocol::Outcome<WorkspaceFile> linesOf(const CliOptions &o) {
+    WorkspaceFile file;
+    if (o.workspace.isEmpty()) {
+        file.lines = {workspaceLineOf(o)};
+        return file;
+    }
+    auto loaded = WorkspaceFile::load(o.workspace);
+    if (!loaded)
+        return protocol::failure(QStringLiteral("tipscope-cli: ") + loaded.error());
+    if (loaded->lines.isEmpty())
+        return protocol::failure(
+            CliMonitorTr::tr("tipscope-cli: the workspace %1 has no lines").arg(o.workspace));
+    file = loaded.value();
+    for (WorkspaceLine &line : file.lines)
+        if (line.session.line.kind == link::LineSettings::Kind::Demo)
+            line.session.demoActivity = true;
+    return file;
+}
+
+// Each line's CSV file (its own, or the workspace's one file); none without --csv. One line's
+// file or the shared one is created now, so a path that cannot be written is refused before
+// anything runs; a workspace line's own file once the line has a station, so a line that never
+// comes up leaves no empty file.
+protocol::Outcome<void> openCsv(const CliOptions &o, std::vector<MonitoredLine> &lines) {
+    if (!o.values.contains(QStringLiteral("csv")))
         return {};
-    Reply *reply = s.ask(Request::read(d.address, *cmd, Priority::LivePoll));
-    reply->deleteLater();
-    const auto value = reply->ok() ? decodeAnswer(*cmd, reply->answer().data) : std::nullopt;
-    return value
-               ? model::toolName(Catalog::builtin(), d.family, int(value->number), Wording::Catalog)
-               : QString();
+    const QString path = o.values.value(QStringLiteral("csv"));
+    if (o.flags.contains(QStringLiteral("csv-one-file"))) {
+        auto shared = MonitorCsv::create(path, true);
+        if (!shared)
+            return protocol::failure(shared.error());
+        for (MonitoredLine &line : lines)
+            line.csv = shared.value();
+        return {};
+    }
+    if (o.workspace.isEmpty()) {
+        auto own = MonitorCsv::create(path, false);
+        if (!own)
+            return protocol::failure(own.error());
+        lines.front().csv = own.value();
+        return {};
+    }
+    const QFileInfo folder(QFileInfo(path).absolutePath());
+    if (!folder.isDir() || !folder.isWritable())
+        return protocol::failure(
+            CliMonitorTr::tr("tipscope-cli: cannot write %1: %2")
+                .arg(folder.filePath(), folder.isDir() ? CliMonitorTr::tr("permission denied")
+                                                       : CliMonitorTr::tr("no such folder")));
+    for (MonitoredLine &line : lines)
+        line.csvPath = MonitorCsv::fileFor(path, line.name);
+    return {};
 }
 
-// The line's limits (a workspace's) or the shared ones, with --limit's rule on top.
-protocol::Outcome<model::JointLimitRules> limitsOf(const CliOptions &o) {
-    auto rules = o.lineLimits ? protocol::Outcome<model::JointLimitRules>(*o.lineLimits)
-                              : model::loadJointLimits(model::defaultJointLimitsPath());
-    if (!rules || !o.values.contains(QStringLiteral("limit")))
-        return rules;
-    const auto rule = model::JointLimitRules::parseRule(o.values.value(QStringLiteral("limit")));
-    if (!rule)
-        return protocol::failure(QStringLiteral("--limit: %1").arg(rule.error()));
-    model::JointLimitRules out = rules.value();
-    out.add(rule.value());
-    return out;
+// A monitor of one line stops when the line cannot be opened or holds no station; a workspace's
+// lines are waited for, each as long as the monitor runs.
+int firstContact(MonitoredLine &line, QTextStream &err) {
+    Session &session = *line.session;
+    QEventLoop wait;
+    QTimer giveUp;
+    giveUp.setSingleShot(true);
+    QObject::connect(&giveUp, &QTimer::timeout, &wait, &QEventLoop::quit);
+    QObject::connect(&session, &Session::stateChanged, &wait, [&wait](Session::State state) {
+        if (state != Session::State::Connecting && state != Session::State::Detecting)
+            wait.quit();
+    });
+    giveUp.start(kFirstContactMs);
+    if (session.state() == Session::State::Connecting ||
+        session.state() == Session::State::Detecting)
+        wait.exec();
+    if (session.state() != Session::State::Connected) {
+        err << "tipscope-cli: " << session.stateText() << Qt::endl;
+        return kTransport;
+    }
+    if (session.devices().isEmpty()) {
+        err << "tipscope-cli: " << session.stateText() << Qt::endl;
+        return kNoAnswer;
+    }
+    if (!session.station()) {
+        err << CliMonitorTr::tr("tipscope-cli: monitor needs a station; none was found")
+            << Qt::endl;
+        return kUsage;
+    }
+    return kOk;
+}
+
+// At the end, per line: a line that never came up, or is down, failed; one without a station
+// was never monitored.
+int outcomeOf(const MonitoredLine &line) {
+    if (!line.everConnected || line.session->state() != Session::State::Connected)
+        return kTransport;
+    if (!line.session->station())
+        return line.session->devices().isEmpty() ? kNoAnswer : kUsage;
+    return line.lastCycleWhole ? kOk : kTransport;
 }
 
 } // namespace
 
-int runMonitor(CliSession &s) {
+int runMonitor(const CliOptions &o, QTextStream &out, QTextStream &err) {
+    const auto interval = intervalOf(o);
+    if (!interval) {
+        err << interval.error() << Qt::endl;
+        return kUsage;
+    }
     bool ok = true;
-    const int intervalMs =
-        s.options().values.value(QStringLiteral("interval"), QStringLiteral("1000")).toInt(&ok);
-    if (!ok || intervalMs < 0) {
-        s.err()
-            << CliMonitorTr::tr(
-                   "tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)")
-            << Qt::endl;
-        return kUsage;
-    }
     const double durationS =
-        s.options().values.value(QStringLiteral("duration"), QStringLiteral("0")).toDouble(&ok);
+        o.values.value(QStringLiteral("duration"), QStringLiteral("0")).toDouble(&ok);
     if (!ok || !std::isfinite(durationS) || durationS < 0 || durationS > 1e9) {
-        s.err() << CliMonitorTr::tr("tipscope-cli: --duration takes seconds") << Qt::endl;
+        err << CliMonitorTr::tr("tipscope-cli: --duration takes seconds") << Qt::endl;
         return kUsage;
     }
-    const auto limits = limitsOf(s.options());
-    if (!limits) {
-        s.err() << "tipscope-cli: " << limits.error() << Qt::endl;
+    service::LineService::Options options;
+    options.journalPath = journalPathOf(o);
+    if (o.values.contains(QStringLiteral("limit"))) {
+        const auto rule = JointLimitRules::parseRule(o.values.value(QStringLiteral("limit")));
+        if (!rule) {
+            err << "tipscope-cli: --limit: " << rule.error() << Qt::endl;
+            return kRefused;
+        }
+        options.extraRules.append(rule.value());
+    }
+    const auto file = linesOf(o);
+    if (!file) {
+        err << file.error() << Qt::endl;
+        return kUsage;
+    }
+    std::vector<MonitoredLine> lines(size_t(file->lines.size()));
+    for (size_t i = 0; i < lines.size(); ++i) {
+        lines[i].name = file->lines.at(qsizetype(i)).name;
+        if (!o.workspace.isEmpty())
+            lines[i].prefix = QStringLiteral("[%1] ").arg(lines[i].name);
+    }
+    if (const auto csv = openCsv(o, lines); !csv) {
+        err << csv.error() << Qt::endl;
+        return kUsage;
+    }
+
+    service::LineService service;
+    if (const auto started = service.start(options); !started) {
+        err << "tipscope-cli: " << started.error() << Qt::endl;
         return kRefused;
     }
-    if (const int rc = s.resolveDevices(); rc != kOk)
-        return rc;
-    const DeviceInfo *station = s.firstStation();
-    if (!station) {
-        s.err() << CliMonitorTr::tr("tipscope-cli: monitor needs a station; none was found")
-                << Qt::endl;
-        return kUsage;
+    journal::Journal &journal = service.journal();
+    QObject::connect(&journal, &journal::Journal::stateChanged, &journal,
+                     [&journal, &err](journal::JournalState state) {
+                         if (state == journal::JournalState::Failed)
+                             err << "# " << journal.errorText() << Qt::endl;
+                     });
+    if (journal::WorkContextFollower *context = service.workContext())
+        QObject::connect(context, &journal::WorkContextFollower::unreadable, &journal,
+                         [&err](const QString &why) { err << "# " << why << Qt::endl; });
+    service.openLines(file.value());
+    for (size_t i = 0; i < lines.size(); ++i) {
+        lines[i].session = service.workspace().session(int(i));
+        followLine(lines[i], err);
     }
-    const DeviceInfo d = *station;
-    const int ports = Catalog::builtin().family(d.family)->ports;
-    std::shared_ptr<MonitorCsv> csv = s.options().sharedCsv;
-    if (!csv && s.options().values.contains(QStringLiteral("csv"))) {
-        auto created = MonitorCsv::create(s.options().values.value(QStringLiteral("csv")), false);
-        if (!created) {
-            s.err() << created.error() << Qt::endl;
-            return kUsage;
-        }
-        csv = created.value();
-    }
-    if (csv)
-        csv->describe(s.options().lineName, d.summary());
-    // The line retries every second while it is down, and each attempt changes its state: the
-    // loss is said once, and so is the return.
-    QObject watching;
-    bool lost = false;
-    QObject::connect(&s.line(), &Line::stateChanged, &watching, [&s, &lost](Line::State state) {
-        if (state == Line::State::Retrying && !lost)
-            s.err() << "# " << s.line().stateText() << Qt::endl;
-        else if (state == Line::State::Open && lost)
-            s.err() << "# "
-                    << CliMonitorTr::tr("reconnected to %1").arg(s.line().transport().description())
-                    << Qt::endl;
-        if (state == Line::State::Retrying || state == Line::State::Open)
-            lost = state == Line::State::Retrying;
+    QObject::connect(&service, &service::LineService::jointEnded, &service,
+                     [&lines, &out](int line, const JointRecord &joint) {
+                         if (line >= 0 && line < int(lines.size()))
+                             out << lines[size_t(line)].prefix << jointLine(joint) << Qt::endl;
+                     });
+    if (o.workspace.isEmpty())
+        if (const int rc = firstContact(lines.front(), err); rc != kOk)
+            return rc;
+
+    QEventLoop loop;
+    QTimer cycle;
+    QObject::connect(&cycle, &QTimer::timeout, &loop, [&lines, &out, &err] {
+        for (MonitoredLine &line : lines)
+            printCycle(line, out, err);
     });
-    MonitorJoints joints(s, d, ports, limits.value());
-    QStringList tools(ports);
-    QElapsedTimer clock;
-    clock.start();
-    int lastCycle = kOk;
-    for (int cycle = 0; durationS == 0 || clock.elapsed() < qint64(durationS * 1000); ++cycle) {
-        const qint64 cycleStart = clock.elapsed();
-        int worst = kOk;
-        QStringList parts;
-        const QString stamp = QDateTime::currentDateTime().toString(Qt::ISODateWithMs);
-        for (int p = 1; p <= ports; ++p) {
-            if (cycle % kToolEveryCycles == 0)
-                tools[p - 1] = readTool(s, d, p);
-            PortReading r = readPort(s, d, p, &worst);
-            if (!r.ok) {
-                joints.gap(p, r.joint.timeMs);
-                parts.append(CliMonitorTr::tr("P%1 --").arg(p));
-                continue;
-            }
-            r.joint.tool = tools.at(p - 1);
-            joints.add(p, r.joint);
-            parts.append(QStringLiteral("P%1 %2/%3 °C %4% %5")
-                             .arg(p)
-                             .arg(r.tip, r.setpoint, r.power, r.status));
-            if (csv)
-                csv->write(
-                    s.options().lineName, stamp, p,
-                    QStringLiteral("%1,%2,%3,\"%4\"").arg(r.tip, r.setpoint, r.power, r.status));
-        }
-        s.out() << stamp << "  " << parts.join(QLatin1String(" | ")) << Qt::endl;
-        lastCycle = worst;
-        const qint64 wait = intervalMs - (clock.elapsed() - cycleStart);
-        // A lost line fails requests at once: wait a beat instead of spinning through cycles.
-        const qint64 pause = worst != kOk ? qMax<qint64>(wait, 200) : wait;
-        if (pause > 0) {
-            QEventLoop loop;
-            QTimer::singleShot(int(pause), &loop, &QEventLoop::quit);
-            loop.exec();
-        }
+    // 0: as fast as the line allows, so at every new sample of the line.
+    if (*interval.value() > 0) {
+        cycle.start(*interval.value());
+    } else {
+        for (MonitoredLine &line : lines)
+            QObject::connect(&line.session->telemetry(), &Telemetry::samplesAdded, &loop,
+                             [&line, &out, &err] { printCycle(line, out, err); });
     }
-    if (!joints.finish() && lastCycle == kOk)
-        lastCycle = kTransport;
-    return lastCycle;
+    if (durationS > 0)
+        QTimer::singleShot(qint64(durationS * 1000), &loop, &QEventLoop::quit);
+    loop.exec();
+
+    int worst = kOk;
+    for (const MonitoredLine &line : lines)
+        worst = qMax(worst, outcomeOf(line));
+    // A CSV that could not be written whole: the run did not do what was asked.
+    if (std::any_of(lines.begin(), lines.end(), [](const MonitoredLine &l) { return l.csvFailed; }))
+        worst = qMax(worst, int(kUsage));
+    if (!service.finish(kFinishMs)) {
+        err << "# "
+            << CliMonitorTr::tr("%1 records could not be kept in the journal %2: %3")
+                   .arg(journal.pendingCount() + journal.lostCount())
+                   .arg(journal.path(), journal.errorText())
+            << Qt::endl;
+        worst = qMax(worst, int(kTransport));
+    }
+    return worst;
 }
 
 } // namespace tipscope::cli

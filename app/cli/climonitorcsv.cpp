@@ -5,7 +5,6 @@
 
 #include <QCoreApplication>
 #include <QFileInfo>
-#include <QMutexLocker>
 
 namespace tipscope::cli {
 
@@ -25,22 +24,20 @@ protocol::Outcome<std::shared_ptr<MonitorCsv>> MonitorCsv::create(const QString 
     return csv;
 }
 
-void MonitorCsv::describe(const QString &line, const QString &device) {
+bool MonitorCsv::describe(const QString &line, const QString &device) {
     const QString header =
         m_lineColumn ? QStringLiteral("timestamp,line,port,tip_c,setpoint_c,power_pct,status\n")
                      : QStringLiteral("timestamp,port,tip_c,setpoint_c,power_pct,status\n");
-    QMutexLocker lock(&m_mutex);
     if (m_lineColumn) {
         // The column header once, at the top; each line's device as a comment when it starts.
-        if (m_file.pos() == 0)
-            put(header);
-        put(QStringLiteral("# %1: %2\n").arg(line, device));
-    } else {
-        put(QStringLiteral("# %1\n").arg(device) + header);
+        if (m_file.pos() == 0 && !put(header))
+            return false;
+        return put(QStringLiteral("# %1: %2\n").arg(line, device));
     }
+    return put(QStringLiteral("# %1\n").arg(device) + header);
 }
 
-void MonitorCsv::write(const QString &line, const QString &timestamp, int port,
+bool MonitorCsv::write(const QString &line, const QString &timestamp, int port,
                        const QString &fields) {
     const QString row = m_lineColumn
                             ? QStringLiteral("%1,%2,%3,%4\n")
@@ -48,13 +45,19 @@ void MonitorCsv::write(const QString &line, const QString &timestamp, int port,
                                   .arg(port)
                                   .arg(fields)
                             : QStringLiteral("%1,%2,%3\n").arg(timestamp).arg(port).arg(fields);
-    QMutexLocker lock(&m_mutex);
-    put(row);
+    return put(row);
 }
 
-void MonitorCsv::put(const QString &text) {
-    m_file.write(text.toUtf8());
-    m_file.flush();
+bool MonitorCsv::put(const QString &text) {
+    if (!m_error.isEmpty())
+        return false;
+    const QByteArray bytes = text.toUtf8();
+    if (m_file.write(bytes) != bytes.size() || !m_file.flush()) {
+        m_error = m_file.errorString();
+        m_file.close();
+        return false;
+    }
+    return true;
 }
 
 QString MonitorCsv::fileFor(const QString &path, const QString &line) {

@@ -3,14 +3,12 @@
 //
 // With a workspace, each line writes a file of its own by default (FILE with the line's name
 // before the extension: plant.csv → plant-cell-3.csv, see fileFor()); with --csv-one-file every
-// line writes into one file that has a `line` column after the timestamp. That shared file is
-// written by every line's thread: each row goes in whole under a lock, so rows never mix.
+// line writes into one file that has a `line` column after the timestamp.
 #pragma once
 
 #include "protocol/outcome.h"
 
 #include <QFile>
-#include <QMutex>
 #include <QString>
 #include <memory>
 
@@ -23,9 +21,13 @@ public:
                                                                                bool lineColumn);
 
     // A comment row naming the device a line monitors ("# cell-3: 01 DME-2C DME 9996780").
-    void describe(const QString &line, const QString &device);
-    // One port's reading; `line` is ignored without the line column.
-    void write(const QString &line, const QString &timestamp, int port, const QString &fields);
+    [[nodiscard]] bool describe(const QString &line, const QString &device);
+    // One port's reading; `line` is ignored without the line column. False when the row could
+    // not be written whole (a full disk): errorText() says why, and nothing more is written.
+    [[nodiscard]] bool write(const QString &line, const QString &timestamp, int port,
+                             const QString &fields);
+    [[nodiscard]] QString path() const { return m_file.fileName(); }
+    [[nodiscard]] QString errorText() const { return m_error; }
 
     // "plant.csv" for line "cell-3" is "plant-cell-3.csv"; a name without extension gets the
     // line's name at its end.
@@ -34,10 +36,10 @@ public:
 private:
     MonitorCsv(bool lineColumn)
         : m_lineColumn(lineColumn) {}
-    void put(const QString &text);
+    bool put(const QString &text);
 
-    QMutex m_mutex;
     QFile m_file;
+    QString m_error;
     bool m_lineColumn = false;
 };
 

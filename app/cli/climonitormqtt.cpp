@@ -29,25 +29,6 @@ struct CliMonitorMqttTr {
 
 const char kPasswordVariable[] = "TIPSCOPE_MQTT_PASSWORD";
 
-// The line the options name, called as docs/mqtt.md says: "demo" for the demo, the serial
-// device's name, or the TCP server's host and port.
-model::WorkspaceLine lineOf(const CliOptions &o) {
-    model::WorkspaceLine line;
-    line.session = sessionSettingsOf(o);
-    switch (o.line.kind) {
-    case link::LineSettings::Kind::Demo:
-        line.name = QStringLiteral("demo");
-        break;
-    case link::LineSettings::Kind::Serial:
-        line.name = QFileInfo(o.line.serial.portName).fileName();
-        break;
-    case link::LineSettings::Kind::Tcp:
-        line.name = QStringLiteral("%1-%2").arg(o.line.tcpHost).arg(o.line.tcpPort);
-        break;
-    }
-    return line;
-}
-
 protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     plant::AgentConfig c;
     QString host;
@@ -77,7 +58,7 @@ protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     c.broker.clientId = QStringLiteral("tipscope-cli-%1-%2")
                             .arg(QSysInfo::machineHostName(), mqtt::sanitizeTopicLevel(c.site));
     if (o.workspace.isEmpty()) {
-        c.workspace.lines = {lineOf(o)};
+        c.workspace.lines = {workspaceLineOf(o)};
     } else {
         auto file = model::WorkspaceFile::load(o.workspace);
         if (!file)

@@ -15,8 +15,6 @@
 
 namespace tipscope::cli {
 
-class MonitorCsv;
-
 enum ExitCode {
     kOk = 0,
     kUsage = 1,
@@ -44,11 +42,7 @@ struct CliOptions {
     QMap<QString, QString> values; // the command's options with values: interval, csv, ...
 
     QString workspace; // --workspace FILE: the command runs on every line of the workspace
-    // What a workspace says of the one line a run is for (see cliworkspace.h).
-    QString lineName;
-    std::optional<model::JointLimitRules> lineLimits;
-    std::optional<model::WorkContext> lineContext;
-    std::shared_ptr<MonitorCsv> sharedCsv; // monitor --csv-one-file: the file every line writes
+    QString lineName;  // the workspace line a run is for (see cliworkspace.h)
 };
 
 class CliParser {

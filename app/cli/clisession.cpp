@@ -1,5 +1,7 @@
 #include "clisession.h"
 
+#include <QFileInfo>
+
 #include "clicommands.h"
 
 #include "model/feedermodel.h"
@@ -69,32 +71,14 @@ QString CliSession::withPortElided(QString message) const {
     return message;
 }
 
-int CliSession::open(int maxWaitMs) {
+int CliSession::open() {
     waitForLine();
     if (m_line->state() == Line::State::Open)
         return kOk;
     m_err << withPortElided(tr("tipscope-cli: cannot open %1: %2")
                                 .arg(m_line->transport().description(), m_line->lastError()))
           << Qt::endl;
-    if (m_line->state() != Line::State::Retrying || !waitUntilOpen(maxWaitMs))
-        return kTransport;
-    m_err << "# " << tr("connected to %1").arg(m_line->transport().description()) << Qt::endl;
-    return kOk;
-}
-
-bool CliSession::waitUntilOpen(int maxWaitMs) {
-    QEventLoop loop;
-    QObject::connect(m_line.get(), &Line::stateChanged, &loop, [&loop](Line::State s) {
-        if (s == Line::State::Open)
-            loop.quit();
-    });
-    QTimer deadline;
-    if (maxWaitMs > 0) {
-        QObject::connect(&deadline, &QTimer::timeout, &loop, &QEventLoop::quit);
-        deadline.start(maxWaitMs);
-    }
-    loop.exec();
-    return m_line->state() == Line::State::Open;
+    return kTransport;
 }
 
 Reply *CliSession::ask(const Request &request) {
@@ -220,8 +204,26 @@ model::Session::Settings sessionSettingsOf(const CliOptions &o) {
                        ? model::Session::Addressing::Without
                        : model::Session::Addressing::Auto;
     s.targetAddress = o.targetAddress;
+    s.scanAllAddresses = o.flags.contains(QStringLiteral("scan"));
     s.demoActivity = o.demoActivity;
     return s;
+}
+
+model::WorkspaceLine workspaceLineOf(const CliOptions &o) {
+    model::WorkspaceLine line;
+    line.session = sessionSettingsOf(o);
+    switch (o.line.kind) {
+    case link::LineSettings::Kind::Demo:
+        line.name = QStringLiteral("demo");
+        break;
+    case link::LineSettings::Kind::Serial:
+        line.name = QFileInfo(o.line.serial.portName).fileName();
+        break;
+    case link::LineSettings::Kind::Tcp:
+        line.name = QStringLiteral("%1-%2").arg(o.line.tcpHost).arg(o.line.tcpPort);
+        break;
+    }
+    return line;
 }
 
 } // namespace tipscope::cli

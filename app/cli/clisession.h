@@ -25,9 +25,8 @@ public:
                         QIODevice *err = nullptr);
     ~CliSession();
 
-    // Opens the line; returns kOk or the exit code after printing why. A line set to retry its
-    // first opening (a workspace's monitor) is waited for until it opens, or for `maxWaitMs`.
-    int open(int maxWaitMs = 0);
+    // Opens the line; returns kOk or the exit code after printing why.
+    int open();
     // Finds the devices (or uses --addr / --no-addr); returns kOk or an exit code.
     int resolveDevices();
     [[nodiscard]] const QList<link::DeviceInfo> &devices() const { return m_devices; }
@@ -50,7 +49,6 @@ public:
 
 private:
     void waitForLine();
-    [[nodiscard]] bool waitUntilOpen(int maxWaitMs);
     [[nodiscard]] QString withPortElided(QString message) const;
     int identify(std::optional<int> address);
     static void waitFor(link::Discovery &discovery);

@@ -1,7 +1,6 @@
 #include "cliworkspace.h"
 
 #include "clicommands.h"
-#include "climonitorcsv.h"
 #include "cliprefixedoutput.h"
 
 #include "model/workspace/workspacefile.h"
@@ -33,14 +32,6 @@ CliOptions optionsFor(const CliOptions &o, const model::WorkspaceLine &line) {
     l.targetAddress = line.session.targetAddress;
     if (line.session.scanAllAddresses && !l.flags.contains(QStringLiteral("scan")))
         l.flags.append(QStringLiteral("scan"));
-    l.lineLimits = line.jointLimits;
-    if (!line.context.isEmpty())
-        l.lineContext = line.context;
-    if (o.values.contains(QStringLiteral("csv")) && !o.sharedCsv)
-        l.values.insert(QStringLiteral("csv"),
-                        MonitorCsv::fileFor(o.values.value(QStringLiteral("csv")), line.name));
-    // A monitor waits for a line that is down at the start, as it does for one lost later.
-    l.line.retryInitialOpen = o.command == QLatin1String("monitor");
     return l;
 }
 
@@ -76,7 +67,7 @@ protected:
         PrefixedOutput err(prefixOf(m_options.lineName), stderr, PrefixedOutput::Keep::Text);
         {
             CliSession s(m_options, m_keepJson ? static_cast<QIODevice *>(&json) : &out, &err);
-            m_result.exitCode = s.open(waitLimitMs());
+            m_result.exitCode = s.open();
             if (m_result.exitCode == kOk)
                 m_result.exitCode = runOnLine(s);
         } // the session's streams flush as it goes
@@ -85,12 +76,6 @@ protected:
     }
 
 private:
-    // A monitor with a duration waits for its line no longer than it would monitor.
-    [[nodiscard]] int waitLimitMs() const {
-        const double s = m_options.values.value(QStringLiteral("duration")).toDouble();
-        return s > 0 && s < 1e6 ? int(s * 1000) : 0;
-    }
-
     CliOptions m_options;
     bool m_keepJson;
     LineResult m_result;
@@ -169,18 +154,9 @@ int runWorkspace(const CliOptions &options, QTextStream &out, QTextStream &err) 
             << Qt::endl;
         return kUsage;
     }
-    CliOptions common = options;
-    if (options.flags.contains(QStringLiteral("csv-one-file"))) {
-        auto csv = MonitorCsv::create(options.values.value(QStringLiteral("csv")), true);
-        if (!csv) {
-            err << csv.error() << Qt::endl;
-            return kUsage;
-        }
-        common.sharedCsv = csv.value();
-    }
     QList<CliOptions> lines;
     for (const model::WorkspaceLine &line : file->lines)
-        lines.append(optionsFor(common, line));
+        lines.append(optionsFor(options, line));
     out.flush();
     const bool oneDocument = options.flags.contains(QStringLiteral("json"));
     QList<LineResult> results;

@@ -33,6 +33,8 @@ int main(int argc, char *argv[]) {
     if (options->command == QLatin1String("monitor") &&
         options->values.contains(QStringLiteral("mqtt")))
         return runMonitorMqtt(*options, out, err);
+    if (options->command == QLatin1String("monitor"))
+        return runMonitor(*options, out, err);
     if (!options->workspace.isEmpty())
         return runWorkspace(*options, out, err);
     if (options->command == QLatin1String("commands"))

@@ -38,10 +38,22 @@ namespace tipscope::gui {
 
 using namespace tipscope::model;
 
+namespace {
+// The service started before the window's members that show its journal are bound to it.
+service::LineService &started(service::LineService &service,
+                              std::optional<QString> *limitsProblem) {
+    if (const auto limits = service.start({}); !limits)
+        *limitsProblem = limits.error();
+    return service;
+}
+} // namespace
+
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
-    , m_kept(m_session, m_journal)
-    , m_context(m_journal, journal::workContextPathFor(m_journal.path())) {
+    , m_workspace(started(m_service, &m_limitsProblem).workspace())
+    , m_journal(m_service.journal())
+    , m_context(*m_service.workContext()) {
+    m_service.keep(m_session);
     QSettings store;
     m_settings = AppSettings::load(store);
     m_connection = new ConnectionBar(this);
@@ -88,7 +100,7 @@ MainWindow::MainWindow(QWidget *parent)
     statusBar()->addPermanentWidget(new JournalStatusButton(m_journal, m_context, this));
     statusBar()->addPermanentWidget(m_linkStatus);
     buildMenus();
-    loadJointLimits();
+    sayLimitsProblem();
 
     connect(m_connection, &ConnectionBar::connectRequested, this, &MainWindow::connectLine);
     connect(m_connection, &ConnectionBar::disconnectRequested, &m_session,
@@ -312,15 +324,16 @@ void MainWindow::writeSupportReport() {
 }
 
 void MainWindow::loadJointLimits() {
-    const auto rules = model::loadJointLimits(model::defaultJointLimitsPath());
-    if (!rules) {
-        // Said where the problems are read, and the defaults judge meanwhile.
+    if (const auto limits = m_service.reloadLimits(); !limits)
+        m_limitsProblem = limits.error();
+    sayLimitsProblem();
+}
+
+// Said where the problems are read, and the defaults judge meanwhile.
+void MainWindow::sayLimitsProblem() {
+    if (const auto problem = std::exchange(m_limitsProblem, std::nullopt))
         m_session.eventLog().add(Event::Kind::Joint, Event::Severity::Warning, tr("joint limits"),
-                                 tr("%1; the default limits judge joints").arg(rules.error()));
-        return;
-    }
-    m_session.joints().setRules(rules.value());
-    m_workspace.setSharedLimits(rules.value());
+                                 tr("%1; the default limits judge joints").arg(*problem));
 }
 
 void MainWindow::editJointLimits() {

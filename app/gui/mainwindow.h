@@ -12,13 +12,10 @@
 
 #include "model/appsettings.h"
 
-#include "journal/journal.h"
-#include "journal/sessionjournal.h"
-#include "journal/workcontextfile.h"
 #include "model/session.h"
-#include "model/workspace/workspace.h"
 #include "mqtt/mqttsettings.h"
 #include "plant/plantwatch.h"
+#include "service/lineservice.h"
 
 #include <QMainWindow>
 #include <map>
@@ -101,19 +98,24 @@ private:
     void updateBarNote();
     [[nodiscard]] QString workOrderOf(int line) const;
     void loadJointLimits();
+    void sayLimitsProblem();
     void onWorkspaceLines();
     void dropWorkspace();
     void askToOpenWorkspace();
     void askToSaveWorkspace(bool choosePath);
     void addBarLineToWorkspace();
 
-    model::Session m_session;
-    model::Workspace m_workspace;
-    journal::Journal m_journal;
-    journal::SessionJournal m_kept;
-    std::vector<std::unique_ptr<journal::SessionJournal>> m_keptLines;
+    model::Session m_session; // the connection bar's line
+    // The joint limits file could not be read (said once, in the bar line's events); set while
+    // the service starts, so declared before it.
+    std::optional<QString> m_limitsProblem;
+    // The journal, the shared joint limits, the work context and the workspace's lines: the one
+    // path from the wire to the journal that every front end opens. It keeps m_session too.
+    service::LineService m_service;
+    model::Workspace &m_workspace;
+    journal::Journal &m_journal;
+    journal::WorkContextFollower &m_context;
     QString m_workspacePath;
-    journal::WorkContextFollower m_context;
     model::AppSettings m_settings;
     ConnectionBar *m_connection;
     DeviceTree *m_tree;

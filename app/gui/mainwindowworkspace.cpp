@@ -76,8 +76,7 @@ void MainWindow::dropWorkspace() {
         delete pages;
     }
     m_linePages.clear();
-    m_keptLines.clear();
-    m_workspace.close();
+    m_service.closeLines();
 }
 
 void MainWindow::reopenLastWorkspace() {
@@ -88,17 +87,11 @@ void MainWindow::reopenLastWorkspace() {
         m_stateLabel->setText(tr("The last workspace was not reopened: %1").arg(refused));
 }
 
-// Every line of the workspace, as soon as its session exists and before it connects: its joints
-// and events go to the journal (with the line's own work context, when it has one) and it polls
-// at the intervals of the preferences.
+// Every line of the workspace, as soon as its session exists and before it connects, polls at the
+// intervals of the preferences (the line service already keeps it in the journal).
 void MainWindow::onWorkspaceLines() {
-    while (int(m_keptLines.size()) < m_workspace.count()) {
-        const int line = int(m_keptLines.size());
-        Session &session = *m_workspace.session(line);
-        m_keptLines.push_back(std::make_unique<journal::SessionJournal>(
-            session, m_journal, m_workspace.line(line).ownContext()));
-        applyPreferencesTo(session);
-    }
+    for (int line = 0; line < m_workspace.count(); ++line)
+        applyPreferencesTo(*m_workspace.session(line));
     updateWorkspaceStatus();
 }
 

@@ -1,7 +1,8 @@
-// SessionJournal: keeps what one session sees in a journal, for every front end alike (the GUI,
-// the CLI's monitor, the line service): each joint the session's watcher ends, and each entry of
-// its event log (station, port and feeder errors, alarms, status and tool changes, writes with
-// their read-back, communication errors, connects and disconnects, joint warnings and tip wear).
+// SessionJournal: keeps what one session sees in a journal, for every front end alike (the line
+// service holds one per line: lib/service/lineservice.h): each joint the session's watcher ends,
+// and each entry of its event log (station, port and feeder errors, alarms, status and tool
+// changes, writes with their read-back, communication errors, connects and disconnects, joint
+// warnings and tip wear).
 //
 // A flood the event log collapses into one entry is journaled once, as the log shows it. The
 // journal may be shared by several sessions (one per line of a workspace). A line with a work

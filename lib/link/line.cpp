@@ -65,6 +65,12 @@ QString Line::stateText() const {
     case State::Open:
         return tr("connected: %1").arg(m_transport->description());
     case State::Retrying:
+        // A line that never opened was not disconnected: the port or server is not there yet.
+        if (!m_everOpened)
+            return tr("cannot open %1, retrying every %2 s: %3")
+                .arg(m_transport->description())
+                .arg(m_settings.reconnectIntervalMs / 1000.0)
+                .arg(m_lastError);
         return tr("disconnected, retrying every %1 s: %2")
             .arg(m_settings.reconnectIntervalMs / 1000.0)
             .arg(m_lastError);

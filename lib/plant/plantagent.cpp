@@ -21,37 +21,39 @@ model::WorkspaceFile withDemoActivity(model::WorkspaceFile file) {
 PlantAgent::PlantAgent(Publisher who, QObject *parent)
     : QObject(parent)
     , m_who(std::move(who)) {
-    connect(&m_workspace, &model::Workspace::linesChanged, this, &PlantAgent::keepLines);
-    connect(&m_workspace, &model::Workspace::lineStateChanged, this, &PlantAgent::onLineState);
+    connect(&m_lines.workspace(), &model::Workspace::lineStateChanged, this,
+            &PlantAgent::onLineState);
 }
 
 PlantAgent::~PlantAgent() {
     m_publisher.reset();
-    m_kept.clear();
-    m_workspace.close();
+    m_lines.closeLines();
 }
 
 void PlantAgent::start(const AgentConfig &config) {
     m_config = config;
-    m_journal = std::make_unique<journal::Journal>(config.journalPath);
-    qCInfo(lcAgent, "journal %s", qPrintable(m_journal->path()));
-    connect(m_journal.get(), &journal::Journal::stateChanged, this,
-            [this](journal::JournalState state) {
-                if (state == journal::JournalState::Failed)
-                    qCCritical(lcAgent, "the journal cannot be written: %s",
-                               qPrintable(m_journal->errorText()));
-                else if (state == journal::JournalState::Ready)
-                    qCInfo(lcAgent, "the journal is written");
-            });
-    connect(m_journal.get(), &journal::Journal::recordsLost, this,
+    service::LineService::Options options;
+    options.journalPath = config.journalPath;
+    if (const auto limits = m_lines.start(options); !limits)
+        qCWarning(lcAgent, "%s; the default limits judge joints", qPrintable(limits.error()));
+    journal::Journal &journal = m_lines.journal();
+    qCInfo(lcAgent, "journal %s", qPrintable(journal.path()));
+    connect(&journal, &journal::Journal::stateChanged, this, [this](journal::JournalState state) {
+        if (state == journal::JournalState::Failed)
+            qCCritical(lcAgent, "the journal cannot be written: %s",
+                       qPrintable(m_lines.journal().errorText()));
+        else if (state == journal::JournalState::Ready)
+            qCInfo(lcAgent, "the journal is written");
+    });
+    connect(&journal, &journal::Journal::recordsLost, this,
             [](qint64 total, const QString &reason) {
                 qCCritical(lcAgent, "%lld records lost: %s", total, qPrintable(reason));
             });
-    m_publisher = std::make_unique<PlantPublisher>(m_workspace, *m_journal);
+    m_publisher = std::make_unique<PlantPublisher>(m_lines.workspace(), journal);
     connect(m_publisher.get(), &PlantPublisher::stopped, this, [this] {
         if (!m_stopping)
             return;
-        if (!m_journal->flush(10000))
+        if (!m_lines.finish(10000))
             qCCritical(lcAgent, "the journal could not write everything before stopping");
         Q_EMIT finished();
     });
@@ -63,7 +65,7 @@ void PlantAgent::start(const AgentConfig &config) {
 void PlantAgent::reload(const AgentConfig &config) {
     if (config.journalPath != m_config.journalPath)
         qCWarning(lcAgent, "the journal stays %s until the agent restarts",
-                  qPrintable(m_journal->path()));
+                  qPrintable(m_lines.journal().path()));
     const bool linesChanged =
         config.workspace.toJson() != m_config.workspace.toJson() || config.site != m_config.site;
     const QString journalPath = m_config.journalPath;
@@ -86,16 +88,7 @@ void PlantAgent::stop() {
 }
 
 void PlantAgent::openLines() {
-    m_kept.clear();
-    m_workspace.open(withDemoActivity(m_config.workspace));
-}
-
-// Every line of the workspace keeps its joints and events in the journal from its first moment.
-void PlantAgent::keepLines() {
-    m_kept.clear();
-    for (int i = 0; i < m_workspace.count(); ++i)
-        m_kept.push_back(std::make_unique<journal::SessionJournal>(
-            *m_workspace.session(i), *m_journal, m_workspace.line(i).ownContext()));
+    m_lines.openLines(withDemoActivity(m_config.workspace));
 }
 
 void PlantAgent::watchClient() {
@@ -120,7 +113,7 @@ void PlantAgent::watchClient() {
 }
 
 void PlantAgent::onLineState(int index, model::Session::State state, const QString &text) {
-    const QString line = m_workspace.line(index).name;
+    const QString line = m_lines.workspace().line(index).name;
     if (state == model::Session::State::Connected)
         qCInfo(lcAgent, "line %s: %s", qPrintable(line), qPrintable(text));
     else if (state == model::Session::State::Retrying || state == model::Session::State::Failed)

@@ -1,7 +1,8 @@
-// PlantAgent: a line service without a screen, shared by tipscope-agent and `tipscope-cli monitor
-// --mqtt`. It opens the configuration's workspace (every line polled live, each with its own
-// request queue and reconnection), keeps each line's joints and events in the journal, and
-// publishes the lines to the broker (PlantPublisher) with store and forward from the journal.
+// PlantAgent: the line service without a screen, shared by tipscope-agent and `tipscope-cli
+// monitor --mqtt`. It opens the configuration's workspace through the LineService (every line
+// polled live, each with its own request queue and reconnection, its joints and events kept in
+// the journal and judged by the shared joint limits, as in every front end) and publishes the
+// lines to the broker (PlantPublisher) with store and forward from the journal.
 // The demo line of a workspace solders and rests, so the agent can be tried without a station.
 //
 // reload() applies a new configuration: the lines are opened again only when the workspace
@@ -15,9 +16,7 @@
 #include "agentconfig.h"
 #include "plantpublisher.h"
 
-#include "journal/journal.h"
-#include "journal/sessionjournal.h"
-#include "model/workspace/workspace.h"
+#include "service/lineservice.h"
 
 #include <QObject>
 #include <memory>
@@ -38,8 +37,10 @@ public:
     void reload(const AgentConfig &config);
     void stop();
 
-    [[nodiscard]] model::Workspace &workspace() { return m_workspace; }
-    [[nodiscard]] journal::Journal *journal() const { return m_journal.get(); }
+    [[nodiscard]] model::Workspace &workspace() { return m_lines.workspace(); }
+    [[nodiscard]] journal::Journal *journal() {
+        return m_lines.isStarted() ? &m_lines.journal() : nullptr;
+    }
     [[nodiscard]] PlantPublisher *publisher() const { return m_publisher.get(); }
     [[nodiscard]] const AgentConfig &config() const { return m_config; }
 
@@ -48,15 +49,12 @@ Q_SIGNALS:
 
 private:
     void openLines();
-    void keepLines();
     void watchClient();
     void onLineState(int index, model::Session::State state, const QString &text);
 
     Publisher m_who;
     AgentConfig m_config;
-    std::unique_ptr<journal::Journal> m_journal;
-    model::Workspace m_workspace;
-    std::vector<std::unique_ptr<journal::SessionJournal>> m_kept;
+    service::LineService m_lines;
     std::unique_ptr<PlantPublisher> m_publisher;
     bool m_stopping = false;
     bool m_brokerTrouble = false;

@@ -41,6 +41,10 @@ void TestConnectionBar::theStateLineNamesTheStateOnce_data() {
         QTest::addRow("%s retrying", language) << language << Session::State::Retrying << line
                                                << "disconnected, retrying every %1 s: %2"
                                                << "/dev/ttyUSB0";
+        QTest::addRow("%s never opened, retrying", language)
+            << language << Session::State::Retrying << line
+            << "cannot open %1, retrying every %2 s: %3"
+            << "/dev/ttyUSB0";
         QTest::addRow("%s cannot connect", language)
             << language << Session::State::Failed << line << "cannot connect: %1"
             << "/dev/ttyUSB0";
@@ -58,7 +62,9 @@ void TestConnectionBar::theStateLineNamesTheStateOnce() {
     QFETCH(QString, argument);
     QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), language), language);
     QString text = QCoreApplication::translate(qPrintable(context), qPrintable(source));
-    if (source.contains(QLatin1String("%2")))
+    if (source.contains(QLatin1String("%3")))
+        text = text.arg(argument).arg(5).arg(QStringLiteral("no such file"));
+    else if (source.contains(QLatin1String("%2")))
         text = text.arg(5).arg(argument);
     else if (source.contains(QLatin1String("%1")))
         text = text.arg(argument);

@@ -109,7 +109,7 @@ void TestOverviewPage::aLineWithoutAStationSaysWhatItIsDoing() {
     m_session->connectTo(settings);
     QTRY_VERIFY_WITH_TIMEOUT(m_session->state() == Session::State::Retrying, kConnectMs);
     QTRY_VERIFY2_WITH_TIMEOUT(m_page->stationText().startsWith(QStringLiteral(
-                                  "<i>No station on this line.</i>Disconnected, retrying")) &&
+                                  "<i>No station on this line.</i>Cannot open tcp")) &&
                                   m_page->stationText().endsWith(QStringLiteral("refused")),
                               qPrintable(m_page->stationText()), kConnectMs);
 }
@@ -270,7 +270,8 @@ void TestOverviewPage::thePowerIsWrittenBesideItsBarNotOnTheFill() {
     QVERIFY(!bar->isTextVisible());
     QTRY_VERIFY(text->isVisible());
     QVERIFY(!bar->geometry().intersects(text->geometry()));
-    QVERIFY(text->width() >= text->fontMetrics().horizontalAdvance(text->text()));
+    // (Once the layout has taken the latest value in: it changes several times a second.)
+    QTRY_VERIFY(text->width() >= text->fontMetrics().horizontalAdvance(text->text()));
 }
 
 QTEST_MAIN(TestOverviewPage)
