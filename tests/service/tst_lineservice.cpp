@@ -6,6 +6,7 @@
 
 #include "journal/journalreader.h"
 #include "model/joints/jointlimitsfile.h"
+#include "model/telemetryrecorder.h"
 #include "sim/simline.h"
 
 #include "demosession.h"
@@ -56,6 +57,8 @@ private Q_SLOTS:
     void aKeptSessionIsJournaledUntilReleased();
     void aJointUnderWayWhenTheServiceFinishesIsKeptIncomplete();
     void aLimitsFileThatCannotBeReadIsSaidAndTheDefaultsJudge();
+    void aReadingTheStationRefusesCostsOnlyItself_data();
+    void aReadingTheStationRefusesCostsOnlyItself();
 
 private:
     QString path(const QString &name) const { return m_dir.filePath(name); }
@@ -163,6 +166,44 @@ void TestLineService::aLimitsFileThatCannotBeReadIsSaidAndTheDefaultsJudge() {
     QVERIFY2(started.error().contains(QStringLiteral("broken.json")), qPrintable(started.error()));
     QVERIFY(service.isStarted()); // the journal is open all the same
     QCOMPARE(service.sharedLimits().defaults(), JointLimits{});
+}
+
+void TestLineService::aReadingTheStationRefusesCostsOnlyItself_data() {
+    QTest::addColumn<QByteArray>("command");
+    QTest::newRow("transformer temperature") << QByteArray("TT0");
+    QTest::newRow("transistor temperature") << QByteArray("QT1");
+    QTest::newRow("connected tool") << QByteArray("CT1");
+    QTest::newRow("port status") << QByteArray("PS1");
+}
+
+// A station without one of the optional readings answers it with NAK 00004 from the start: the
+// value is shown as refused, and the samples, the charts' history and the joints of the port go
+// on all the same.
+void TestLineService::aReadingTheStationRefusesCostsOnlyItself() {
+    QFETCH(QByteArray, command);
+    service::LineService service;
+    QVERIFY(service.start(
+        withoutLimitsFile(QStringLiteral("refused-%1.sqlite").arg(QString::fromLatin1(command)))));
+    QSignalSpy ended(&service, &service::LineService::jointEnded);
+    service.openLines({{demoLine(QStringLiteral("refusing"))}});
+    Session &session = *service.workspace().session(0);
+    QVERIFY(session.demoLine());
+    sim::SimFaults faults;
+    faults.nakCode = 4;
+    faults.nakFor = sim::NakScope::Command;
+    faults.nakCommand = command;
+    session.demoLine()->setFaults(faults);
+    QTRY_VERIFY_WITH_TIMEOUT(session.station(), 20000);
+    Parameter *refused = session.station()->parameter(command);
+    QVERIFY(refused);
+    QTRY_VERIFY_WITH_TIMEOUT(refused->isRefused(), 20000);
+    QVERIFY(makeJoint(session, 40, 800));
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 10000);
+    QCOMPARE(ended.first().at(1).value<JointRecord>().port, 1);
+    const TelemetryBuffer *samples =
+        session.telemetry().buffer(TelemetryRecorder::keyOf(*session.station(), 1));
+    QVERIFY(samples && samples->size() > 10);
+    QVERIFY(refused->isRefused());
 }
 
 QTEST_GUILESS_MAIN(TestLineService)
