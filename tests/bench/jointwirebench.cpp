@@ -151,6 +151,20 @@ QList<Figure> WireRun::figures() const {
             break;
         }
     }
+    // What was missed, on standard error, for whoever looks into the recall.
+    for (qsizetype k = 0; k < truth.size(); ++k) {
+        if (used.at(k))
+            continue;
+        const sim::SimJoint &t = truth.at(k);
+        QString near;
+        for (const JointRecord &j : std::as_const(found))
+            if (j.port == t.port && qAbs(j.startMs - t.startMs) < 10'000)
+                near += QStringLiteral(" [found %1 ms %2]")
+                            .arg(j.startMs - t.startMs)
+                            .arg(jointVerdictName(j.verdict));
+        qWarning("missed: port %d, %lld ms into the run, %d K, recovery %lld ms;%s", t.port,
+                 t.startMs - m_startMs, t.depthK, t.recoveryMs, qPrintable(near));
+    }
     const double seconds = double(m_endMs - m_startMs) / 1000;
     const QList<double> periods = tipPeriods();
     const QString ms = QStringLiteral("ms");

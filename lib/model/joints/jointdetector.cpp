@@ -82,9 +82,14 @@ std::optional<JointRecord> JointDetector::add(const PortReading &reading) {
                 startJoint(*m_last, reading);
             else
                 m_state = State::Waiting; // left the band before it had settled
-        } else if (!withinBand) {
-            m_state = State::Waiting; // above the band: the setpoint was lowered or it overshoots
+        } else if (!withinBand && !m_justRecovered) {
+            // Above the band while still settling (a heat-up ringing): settled only once it has
+            // stayed within the band for kSettleMs.
+            m_settledSinceMs = reading.timeMs;
         }
+        // Above the band after a joint, at the same setpoint and tool, is the heater overshooting
+        // its return: the next dip is a joint at once (reading the tip often catches more of
+        // these overshoots; they must not cost the joint that follows).
         break;
     case State::InJoint:
         if (m_tailUntilMs) {

@@ -75,6 +75,7 @@ private Q_SLOTS:
     void aJointThatNeverRecoversEndsAfterTheGiveUpTime();
     void aSteepDropIsTimedAtTheMiddleOfItsIntervalAGentleOneByItsLine();
     void jointsThatFollowEachOtherWithinASecondAreEachFound();
+    void aJointRightAfterAnOvershootIsFound();
     void aTipThatFallsWhileTheHeaterIdlesIsNoJoint();
     void aReadingBackInTheBandByWobbleDoesNotEndTheJoint();
     void aSlowRecoveryIsPlacedFinerThanTheSpacingAndTheWholeDegrees();
@@ -239,6 +240,21 @@ void TestJointDetector::jointsThatFollowEachOtherWithinASecondAreEachFound() {
     QVERIFY(std::abs(joints.at(0).startMs - first.leaves(5)) <= kPollMs / 2);
     QVERIFY(std::abs(joints.at(1).startMs - second.leaves(5)) <= kPollMs / 2);
     QCOMPARE(joints.at(1).verdict, JointVerdict::Ok);
+}
+
+// The heater overshoots its return, a reading above the band, and the next joint begins half a
+// second later: it is found, as the tip is as settled as before the overshoot.
+void TestJointDetector::aJointRightAfterAnOvershootIsFound() {
+    JointDetector d({}, 1);
+    const Curve first{kT0 + 5000, 40, 900};
+    QList<JointRecord> joints = feed(d, first, kT0, first.returns(5) + 1000);
+    QCOMPARE(joints.size(), 1);
+    qint64 t = first.returns(5) + 1000;
+    QVERIFY(!d.add(reading(t, kSetpoint + 8, 0))); // the overshoot
+    const Curve second{t + 500, 40, 900};
+    joints += feed(d, second, t + kPollMs, kT0 + 15'000);
+    QCOMPARE(joints.size(), 2);
+    QVERIFY(std::abs(joints.at(1).startMs - second.leaves(5)) <= kPollMs / 2);
 }
 
 // A tool put in its stand goes to sleep: the tip leaves the band while the heater is off, and the
