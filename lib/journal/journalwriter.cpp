@@ -119,6 +119,8 @@ void JournalWriter::takeQueue() {
     m_taken += m_shared->queue.size();
     std::move(m_shared->queue.begin(), m_shared->queue.end(), std::back_inserter(m_backlog));
     m_shared->queue.clear();
+    // Counted as held at once: the backlog limit must see these while a write of them is tried.
+    m_shared->held = qint64(m_backlog.size());
 }
 
 void JournalWriter::writeBacklog() {
