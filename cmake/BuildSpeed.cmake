@@ -55,6 +55,13 @@ endif()
 # all targets exist). TIPSCOPE_PRECOMPILE_HEADERS=OFF builds without them.
 option(TIPSCOPE_PRECOMPILE_HEADERS "Parse the common Qt headers once per configuration" ON)
 
+# The tests' own code (what links Qt Test: the tests, their support and their precompiled
+# headers) is compiled without optimisation in every configuration. The code under test keeps its
+# configuration's options (-O2 as shipped, -O1 under the sanitizers); a test's own code runs
+# for microseconds, and optimising it was a third of its compile (docs/development.md, "test
+# code"). Appended after the configuration's flags, so it wins; empty keeps them.
+set(TIPSCOPE_TEST_CODE_OPTIONS "-O0" CACHE STRING "Compile options for the tests' own code")
+
 set(TIPSCOPE_CORE_PCH ${CMAKE_CURRENT_LIST_DIR}/precompiled.h)
 set(TIPSCOPE_PCH_SOURCE ${CMAKE_CURRENT_LIST_DIR}/precompiled.cpp)
 
@@ -68,6 +75,9 @@ function(tipscope_add_pch name)
     set_target_properties(${name} PROPERTIES AUTOMOC OFF AUTOUIC OFF AUTORCC OFF)
     target_link_libraries(${name} PRIVATE ${P_LIBS})
     target_precompile_headers(${name} PRIVATE ${P_HEADERS})
+    if("Qt6::Test" IN_LIST P_LIBS) # compiled as the tests that reuse it
+        target_compile_options(${name} PRIVATE ${TIPSCOPE_TEST_CODE_OPTIONS})
+    endif()
     set_property(GLOBAL APPEND PROPERTY TIPSCOPE_PCH_TARGETS ${name})
 endfunction()
 
@@ -118,6 +128,10 @@ function(tipscope_speed_up_targets dir)
             set_target_properties(${target} PROPERTIES
                 AUTOMOC_EXECUTABLE ${PROJECT_BINARY_DIR}/moc-without-system-includes)
         endif()
+        tipscope_link_closure(${target} closure)
+        if("Qt6::Test" IN_LIST closure)
+            target_compile_options(${target} PRIVATE ${TIPSCOPE_TEST_CODE_OPTIONS})
+        endif()
         if(NOT TIPSCOPE_PRECOMPILE_HEADERS)
             continue()
         endif()
@@ -126,7 +140,6 @@ function(tipscope_speed_up_targets dir)
         if(NOT sources)
             continue()
         endif()
-        tipscope_link_closure(${target} closure)
         set(flavour tipscope_pch_core)
         if("Qt6::Test" IN_LIST closure)
             set(flavour tipscope_pch_test)
