@@ -33,6 +33,7 @@ struct Options {
     bool robotModeOff = false;
     bool activity = false;
     int jointsPerMinute = 0;
+    JointShapeSet jointShapes = *JointShapeSet::named(QStringLiteral("demo"));
 };
 
 QTextStream &out() {
@@ -96,7 +97,7 @@ std::unique_ptr<SimLine> buildLine(const Options &o) {
     line->setBaud(o.pace);
     line->setChunkMs(o.chunkMs);
     line->setDemoActivity(o.activity);
-    line->setRandomJoints(o.jointsPerMinute, o.faults.seed);
+    line->setRandomJoints(o.jointsPerMinute, o.faults.seed, o.jointShapes);
     line->setClockRunning(true);
     return line;
 }
@@ -167,10 +168,16 @@ int main(int argc, char *argv[]) {
          QStringLiteral("Seed of the fault generator and of the random joints."),
          QStringLiteral("N")},
         {QStringLiteral("joints-per-minute"),
-         QStringLiteral("Make about N joints a minute on every port of the station, of random "
-                        "depth (15-100 K) and recovery (0.4-3 s); each is logged on standard "
-                        "error with its true values."),
+         QStringLiteral("Make about N joints a minute on every port of the station, drawn "
+                        "from --joint-shapes; each is logged on standard error with its true "
+                        "values."),
          QStringLiteral("N")},
+        {QStringLiteral("joint-shapes"),
+         QStringLiteral("The joints --joints-per-minute makes: demo (15-100 K, back within "
+                        "0.4-3 s; the default), varied (25-90 K in 50-400 ms, back within "
+                        "0.6-3.5 s, exponential or straight, overshoot, ±2 K of noise, 1.2 s "
+                        "apart) or slow (10-25 K, back within 3-6 s, ±1 K of noise)."),
+         QStringLiteral("SET")},
         {QStringLiteral("robot-mode-off"),
          QStringLiteral("Start with robot mode off (stations answer NAK 00005).")},
         {QStringLiteral("activity"),
@@ -206,11 +213,27 @@ int main(int argc, char *argv[]) {
     o.faults.seed = quint32(intOption(p, QStringLiteral("seed"), 1, 0, 1 << 30));
     o.robotModeOff = p.isSet(QStringLiteral("robot-mode-off"));
     o.jointsPerMinute = intOption(p, QStringLiteral("joints-per-minute"), 0, 0, 60);
+    if (p.isSet(QStringLiteral("joint-shapes"))) {
+        const QString name = p.value(QStringLiteral("joint-shapes"));
+        const auto shapes = JointShapeSet::named(name);
+        if (!shapes)
+            die(QStringLiteral("--joint-shapes takes %1, not %2")
+                    .arg(JointShapeSet::names().join(QStringLiteral(", ")), name));
+        o.jointShapes = *shapes;
+    }
     auto line = buildLine(o);
     // The ground truth of every joint, one line each, for whoever measures them.
     QObject::connect(line.get(), &SimLine::jointMade, &app, [](const SimJoint &j) {
         QTextStream(stderr) << "tipscope-sim: joint port=" << j.port << " start_ms=" << j.startMs
                             << " depth_k=" << j.depthK << " recovery_ms=" << j.recoveryMs
+                            << " drop_ms=" << qRound(j.dropMs)
+                            << " form=" << recoveryFormName(j.form)
+                            << " overshoot_k=" << QString::number(j.overshootK, 'f', 1) << Qt::endl;
+    });
+    QObject::connect(line.get(), &SimLine::jointEnded, &app, [](const SimJoint &j) {
+        QTextStream(stderr) << "tipscope-sim: joint-end port=" << j.port
+                            << " start_ms=" << j.startMs << " reads=" << j.reads
+                            << " read_depth_k=" << QString::number(j.readDepthK, 'f', 2)
                             << Qt::endl;
     });
 

@@ -115,10 +115,10 @@ void SimLine::advance(int ms) {
     reportJoints();
 }
 
-void SimLine::setRandomJoints(double perMinute, quint32 seed) {
+void SimLine::setRandomJoints(double perMinute, quint32 seed, const JointShapeSet &shapes) {
     SimStation *st = station();
     m_randomJoints =
-        st && perMinute > 0 ? std::make_unique<RandomJoints>(st, perMinute, seed) : nullptr;
+        st && perMinute > 0 ? std::make_unique<RandomJoints>(st, perMinute, seed, shapes) : nullptr;
 }
 
 std::optional<SimJoint> SimLine::startJoint(int port, int depthK, qint64 recoveryMs) {
@@ -143,6 +143,10 @@ void SimLine::reportJoints() {
     for (SimJoint j : st->takeMadeJoints()) {
         j.startMs += m_epochAtZeroMs;
         Q_EMIT jointMade(j);
+    }
+    for (SimJoint j : st->takeEndedJoints()) {
+        j.startMs += m_epochAtZeroMs;
+        Q_EMIT jointEnded(j);
     }
 }
 

@@ -98,9 +98,11 @@ public:
     // devices that change only when told to.
     void setDemoActivity(bool on);
     [[nodiscard]] bool hasDemoActivity() const { return m_activity != nullptr; }
-    // Joints of varied depth and recovery on every port of the station, about `perMinute` a
-    // minute on each (RandomJoints), seeded; 0 stops them.
-    void setRandomJoints(double perMinute, quint32 seed);
+    // Joints drawn from `shapes` on every port of the station, about `perMinute` a minute on
+    // each (RandomJoints), seeded; 0 stops them.
+    void
+    setRandomJoints(double perMinute, quint32 seed,
+                    const JointShapeSet &shapes = *JointShapeSet::named(QStringLiteral("demo")));
     // A joint on the station's port now (the clock caught up first): nullopt when there is no
     // such port or it cannot make one (SimStation::canMakeJoint()).
     std::optional<SimJoint> startJoint(int port, int depthK, qint64 recoveryMs);
@@ -121,6 +123,8 @@ Q_SIGNALS:
     // values; startMs is in milliseconds since the epoch: the wall clock while the line's clock
     // runs, and the time the line was made plus the simulated time when advance() drives it.
     void jointMade(const tipscope::sim::SimJoint &joint);
+    // The same joint once it is over, with how its tip was read (SimJoint::reads).
+    void jointEnded(const tipscope::sim::SimJoint &joint);
 
 private:
     struct Outgoing {

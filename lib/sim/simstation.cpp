@@ -79,19 +79,32 @@ bool SimStation::canMakeJoint(int port) const {
 }
 
 std::optional<SimJoint> SimStation::startJoint(int port, int depthK, qint64 recoveryMs) {
+    return startJoint(port, JointSpec{depthK, recoveryMs});
+}
+
+std::optional<SimJoint> SimStation::startJoint(int port, JointSpec spec) {
     if (!canMakeJoint(port))
         return std::nullopt;
     SimPort &p = m_ports[port - 1];
-    const JointShape shape(depthK, qRound64(double(recoveryMs) * (1 + p.wear)));
-    p.joint = ActiveJoint{shape, 0};
-    const SimJoint made{port, m_nowMs + qRound64(shape.leaveMs()), shape.depthK(),
-                        shape.recoveryMs()};
+    spec.recoveryMs = qRound64(double(spec.recoveryMs) * (1 + p.wear));
+    const JointShape shape(spec);
+    const SimJoint made = shape.made(port, m_nowMs);
+    p.joint = ActiveJoint{shape, 0, made};
     m_madeJoints.append(made);
     return made;
 }
 
+void SimStation::setReadingNoise(double amplitudeK, bool duringJoints) {
+    m_noiseK = qBound(0.0, amplitudeK, 10.0);
+    m_noiseDuringJoints = duringJoints;
+}
+
 QList<SimJoint> SimStation::takeMadeJoints() {
     return std::exchange(m_madeJoints, {});
+}
+
+QList<SimJoint> SimStation::takeEndedJoints() {
+    return std::exchange(m_endedJoints, {});
 }
 
 QByteArray SimStation::toolCode(char letter, int port, int tool) const {
@@ -163,6 +176,7 @@ void SimStation::stepJoint(SimPort &p, double target, double dt) {
     p.joint->elapsedMs += dt * 1000;
     if (p.tool == 0 || p.status != 0 || p.cooling || heaterBlocked(p.error) ||
         p.joint->shape.isOver(p.joint->elapsedMs)) {
+        m_endedJoints.append(p.joint->made);
         p.joint.reset();
         return;
     }
@@ -251,12 +265,23 @@ std::optional<Value> SimStation::readLive(const ResolvedCommand &cmd) {
     if (cmd.port == 0)
         return std::nullopt;
     SimPort &p = m_ports[cmd.port - 1];
-    // A small deterministic wobble keeps the curves alive without making tests flaky; a joint's
-    // fall and rise are left as the shape made them, the ground truth a client is measured by.
-    const double noise =
-        p.tip > kAmbient + 5 && !p.joint ? 0.6 * qSin(m_noisePhase * 3.1 + cmd.port) : 0;
-    if (pattern == "TTx")
+    // A deterministic wobble keeps the curves alive without making tests flaky. By default a
+    // joint's fall and rise are left as the shape made them; a noisier station (a shape set's)
+    // wobbles through its joints too, a slow swing with a faster ripple on it.
+    const bool wobbles = p.tip > kAmbient + 5 && (!p.joint || m_noiseDuringJoints);
+    const double noise = !wobbles ? 0
+                         : m_noiseDuringJoints
+                             ? m_noiseK * (0.6 * qSin(m_noisePhase * 3.1 + cmd.port) +
+                                           0.4 * qSin(m_noisePhase * 23.7 + 2.0 * cmd.port))
+                             : m_noiseK * qSin(m_noisePhase * 3.1 + cmd.port);
+    if (pattern == "TTx") {
+        if (p.joint) {
+            ++p.joint->made.reads;
+            p.joint->made.readDepthK =
+                qMax(p.joint->made.readDepthK, p.joint->shape.belowTargetK(p.joint->elapsedMs));
+        }
         return Value::ofNumber(qRound(p.tip + noise));
+    }
     if (pattern == "PPx")
         return Value::ofNumber(p.power);
     if (pattern == "QTx")

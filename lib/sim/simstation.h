@@ -21,6 +21,7 @@ namespace tipscope::sim {
 struct ActiveJoint {
     JointShape shape;
     double elapsedMs = 0;
+    SimJoint made; // its reads filled in as the tip is read
 };
 
 struct SimPort {
@@ -60,10 +61,18 @@ public:
     // within the band after `recoveryMs`, lengthened by the port's wear. A port that cannot make
     // one (canMakeJoint()) makes none: nullopt. What was made is also kept for takeMadeJoints().
     std::optional<SimJoint> startJoint(int port, int depthK, qint64 recoveryMs);
+    // The same for a joint of any shape; the wear lengthens its recovery.
+    std::optional<SimJoint> startJoint(int port, JointSpec spec);
+    // How far the tip readings wobble around the true tip (±K), and whether they wobble during a
+    // joint too. By default a small wobble between joints only, so that a joint's readings are
+    // the shape's own (what the tests of exact figures need); a shape set asks for more.
+    void setReadingNoise(double amplitudeK, bool duringJoints);
     // At work with a tool, its tip settled at the target, no joint in progress.
     [[nodiscard]] bool canMakeJoint(int port) const;
     // The joints made since the last call, with their start in this station's time (nowMs()).
     [[nodiscard]] QList<SimJoint> takeMadeJoints();
+    // The same for the joints that ended, with how their tip was read (SimJoint::reads).
+    [[nodiscard]] QList<SimJoint> takeEndedJoints();
     // A worn tip: its recoveries take `share` longer (0.3: 30 % slower).
     void setWear(int port, double share) { m_ports[port - 1].wear = qMax(0.0, share); }
     // Simulated milliseconds since the station was made.
@@ -95,8 +104,11 @@ private:
     bool m_fusePresent = true;
     bool m_fuseIgnored = false;
     double m_noisePhase = 0;
+    double m_noiseK = 0.6;
+    bool m_noiseDuringJoints = false;
     qint64 m_nowMs = 0;
     QList<SimJoint> m_madeJoints;
+    QList<SimJoint> m_endedJoints;
     QMap<QByteArray, qint64> m_savedSelected; // W-NVS snapshot of STx
 };
 

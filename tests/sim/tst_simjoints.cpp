@@ -253,7 +253,7 @@ void TestSimJoints::theSimulatorLogsEachJointWithItsTrueValues() {
     const qint64 after = QDateTime::currentMSecsSinceEpoch();
     static const QRegularExpression logged(
         QStringLiteral("^tipscope-sim: joint port=(\\d+) start_ms=(\\d+) depth_k=(\\d+) "
-                       "recovery_ms=(\\d+)$"),
+                       "recovery_ms=(\\d+) drop_ms=(\\d+) form=exponential overshoot_k=0\\.0$"),
         QRegularExpression::MultilineOption);
     QRegularExpressionMatch m;
     QString log;
@@ -268,6 +268,16 @@ void TestSimJoints::theSimulatorLogsEachJointWithItsTrueValues() {
     const qint64 start = m.captured(2).toLongLong();
     QVERIFY2(start >= before && start <= after + 200,
              qPrintable(QStringLiteral("%1 not in [%2, %3]").arg(start).arg(before).arg(after)));
+    QCOMPARE(m.captured(5), QStringLiteral("200")); // a quarter of the recovery
+
+    // Once over, the same joint again: nobody read its tip, so no read depth either.
+    const QRegularExpression ended(
+        QStringLiteral("^tipscope-sim: joint-end port=3 start_ms=%1 reads=0 read_depth_k=0\\.00$")
+            .arg(start),
+        QRegularExpression::MultilineOption);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        ended.match(log += QString::fromLocal8Bit(sim.process().readAllStandardError())).hasMatch(),
+        5000);
 }
 
 QTEST_GUILESS_MAIN(TestSimJoints)
