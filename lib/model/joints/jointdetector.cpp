@@ -327,6 +327,10 @@ std::optional<JointRecord> JointDetector::finish(End end, qint64 endMs) {
     const bool heaterAnswered = m_joint.powerPeak >= m_restingPowerPct + kPowerRisePct;
     if (end != End::Recovered && !heaterAnswered)
         return std::nullopt;
+    // Readings that wobble around the band's edge (a noisy tip settling after a slow return)
+    // leave it by a degree or two: no solder joint is that shallow.
+    if (double(m_joint.setpoint) - m_joint.lowestTip < m_limits.bandK + kMinExcessK)
+        return std::nullopt;
     JointRecord j = m_joint;
     estimateStart(j);
     estimateLowest(j);

@@ -73,6 +73,9 @@ public:
     static constexpr qint64 kMeasuredWithinMs = 250;
     // The longest a recovered joint waits for readings after its return before it is reported.
     static constexpr qint64 kMaxTailMs = 1500;
+    // A dip whose deepest reading lies less than this beyond the band is the readings'
+    // wobble, not a joint (the shallowest joints measured are 10 K deep).
+    static constexpr double kMinExcessK = 3;
 
     JointDetector(DeviceIdentity device, int port, JointLimits limits = {});
 

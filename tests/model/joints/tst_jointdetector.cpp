@@ -75,6 +75,7 @@ private Q_SLOTS:
     void aJointThatNeverRecoversEndsAfterTheGiveUpTime();
     void aSteepDropIsTimedAtTheMiddleOfItsIntervalAGentleOneByItsLine();
     void jointsThatFollowEachOtherWithinASecondAreEachFound();
+    void aWobbleJustBeyondTheBandIsNoJoint();
     void aJointRightAfterAnOvershootIsFound();
     void aTipThatFallsWhileTheHeaterIdlesIsNoJoint();
     void aReadingBackInTheBandByWobbleDoesNotEndTheJoint();
@@ -211,8 +212,8 @@ void TestJointDetector::aJointThatNeverRecoversEndsAfterTheGiveUpTime() {
 
 // A settled tip read at 0 and then far below at 100 left the band at an unknown moment between:
 // a straight line from the flat reading would say 13 ms, too early for a drop that is steep
-// from wherever it began, so the middle (50 ms) is taken. A tip 7 K below at 100 slid out
-// gently, and the straight line's 79 ms stands.
+// from wherever it began, so the middle (50 ms) is taken. A tip 9 K below at 100 slid out
+// gently, and the straight line's 61 ms stands.
 void TestJointDetector::aSteepDropIsTimedAtTheMiddleOfItsIntervalAGentleOneByItsLine() {
     const auto startOf = [](int below) {
         JointDetector d(DeviceIdentity{}, 1);
@@ -226,7 +227,29 @@ void TestJointDetector::aSteepDropIsTimedAtTheMiddleOfItsIntervalAGentleOneByIts
         return j ? j->startMs - (kT0 + 2000) : qint64(-1);
     };
     QCOMPARE(startOf(40), 50); // steep: the middle of the interval
-    QCOMPARE(startOf(7), 79);  // gentle: 5.5 / 7 of the way
+    QCOMPARE(startOf(9), 61);  // gentle: 5.5 / 9 of the way
+}
+
+// A noisy tip at the band's edge reads a degree or two beyond it now and then, settled or just
+// back from a joint: not a joint. One reading 3 K beyond the band is the shallowest joint.
+void TestJointDetector::aWobbleJustBeyondTheBandIsNoJoint() {
+    JointDetector d({}, 1);
+    qint64 t = kT0;
+    QList<JointRecord> found;
+    const auto add = [&](int below, double power) {
+        if (const auto j = d.add(reading(t, kSetpoint - below, power)))
+            found.append(*j);
+        t += kPollMs;
+    };
+    for (; t < kT0 + 3000;)
+        add(0, 10);
+    for (const int below : {4, 7, 5, 4, 3, 2, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0})
+        add(below, 30);
+    QCOMPARE(found.size(), 0);
+    for (const int below : {8, 6, 4, 3, 2, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0})
+        add(below, 60);
+    QCOMPARE(found.size(), 1);
+    QVERIFY(found.first().dipDepth >= 8);
 }
 
 // The second joint begins 0.8 s after the first is back within the band: no settling between.
