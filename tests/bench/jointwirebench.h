@@ -1,23 +1,23 @@
-// runJointWireBench: how well joints are found and measured through the wire, for
-// `tipscope-bench joints --wire`. A simulated DME station (four ports) on a SimLine paced at
-// 19200 baud, handed over in 8 ms chunks like the demo's USB adapter, is polled through the real
-// request queue by the real PollScheduler with all four ports on screen (the application's
-// default intervals, or --live-ms and --status-ms), its readings recorded as telemetry and fed
-// to the session's JointWatcher. The simulator makes joints of varied depth (15-100 K) and
-// recovery (0.4-3 s) on every port, about --per-minute N a minute on each (default 12, seeded by
-// --seed S), for --minutes M (default 10), and reports each with its true values
-// (SimLine::jointMade). Two such lines run side by side in the same process and time, the same
-// seed: one with adaptive sampling, one without. For each it prints:
-//   joints.wire[.adaptive_off].true / .found   joints made (ended before the run did) and found
-//   joints.wire[.adaptive_off].precision       found joints that match a true one (same port,
-//                                              start within 1 s)
-//   joints.wire[.adaptive_off].recall          true joints found
-//   joints.wire[.adaptive_off].recovery_error_p50 / _p95 / _max   |measured − true recovery|
-//   joints.wire[.adaptive_off].recovery_bias   mean of measured − true recovery
-//   joints.wire[.adaptive_off].start_error_p95 |measured − true start|
-//   joints.wire[.adaptive_off].tip_period_p50 / _p95   time between tip readings of a port
-//   joints.wire[.adaptive_off].polls_per_s
-// A benchmark: it asserts nothing.
+// runJointWireBench: how well joints are found and measured through the wire, in every front
+// end, for `tipscope-bench joints --wire`.
+//
+// For each shape set (--sets, default demo,varied,slow: sim::JointShapeSet) a simulated DME
+// station (four ports) makes random joints on every port, about --per-minute N a minute on each
+// (default 12, seeded by --seed S), on a line paced at 19200 baud and handed over in 8 ms chunks
+// like the demo's USB adapter. Each set is measured, side by side in one run and for --minutes M
+// (default 10), through each front end (--frontends, default all):
+//   core        the session's own classes in this process: the real request queue and
+//               PollScheduler with the four ports on screen, telemetry and the JointWatcher
+//   core_fixed  the same with adaptive sampling off, for comparison
+//   cli         a `tipscope-cli monitor --journal J` process with the default options, on its
+//               own simulator (tipscope-sim over TCP), its joints read back from the journal
+//   cli_5000    the same with `--interval 5000`
+//   agent       a `tipscope-agent` process (and a Mosquitto broker) on its own simulator
+// and prints, per set and front end, `joints.<set>.<frontend>.<figure>` (jointscore.h): true and
+// found joints, precision, recall, recovery error p50/p95/max and bias, bounded recoveries, start
+// error p95, dip error p95, and beside it the dip error of an oracle that knew the true tip at the
+// same sample instants (from the simulator's truth); for core also the spacing of tip readings
+// and the polls a second. A benchmark: it asserts nothing.
 #pragma once
 
 #include <QStringList>

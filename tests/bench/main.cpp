@@ -42,8 +42,8 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runJournalBench},
     {"joints",
      "joint detection: precision, recall, recovery error at two poll periods (--joints N, --noise "
-     "K), or through the wire from the simulator, adaptive sampling on and off (--wire --minutes "
-     "M)",
+     "K), or through the wire from the simulator, per shape set and front end (--wire --minutes "
+     "M --sets demo,varied,slow --frontends core,core_fixed,cli,cli_5000,agent)",
      tipscope::bench::runJointBench},
     {"mqtt", "MQTT client: idle CPU and wake-ups, QoS 1 messages a second (--seconds N)",
      tipscope::bench::runMqttBench},

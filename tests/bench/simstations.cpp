@@ -42,6 +42,11 @@ QString DetachedSim::start(const QStringList &args, QString *error) {
     return {};
 }
 
+QString DetachedSim::errorText() const {
+    QFile file(m_dir.filePath(QStringLiteral("err")));
+    return file.open(QIODevice::ReadOnly) ? QString::fromLocal8Bit(file.readAll()) : QString();
+}
+
 std::vector<SimStation> startSimStations(int stations,
                                          const std::function<QStringList(int)> &argsOf) {
     std::vector<SimStation> started;

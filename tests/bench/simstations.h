@@ -28,6 +28,8 @@ public:
     [[nodiscard]] QString start(const QStringList &args, QString *error);
     [[nodiscard]] const QString &name() const { return m_name; }
     [[nodiscard]] qint64 pid() const { return m_pid; }
+    // What the simulator wrote on standard error so far (the joints it made, among others).
+    [[nodiscard]] QString errorText() const;
 
 private:
     QString m_name;
