@@ -1,0 +1,150 @@
+// A reading the station refuses costs only itself, in the programs too: tipscope-cli monitor and
+// tipscope-agent, each on a simulated DME that answers one reading with NAK 00004 from the start
+// (as a station without that reading would), still read the tips, find the joint made on port 1
+// and keep it in their journal with its figures, and journal the refusal once.
+#include "../mqtt/mqtttesting.h"
+#include "agentprocess.h"
+#include "journal/journalreader.h"
+#include "mosquittobroker.h"
+#include "ptyfixtures.h"
+
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+#include <csignal>
+
+using namespace tipscope;
+using namespace tipscope::testing;
+using journal::JournalEvent;
+using journal::JournalReader;
+
+namespace {
+
+// The joints of the journal at `path`; empty while it cannot be read yet.
+QList<journal::StoredJoint> jointsIn(const QString &path) {
+    JournalReader reader;
+    if (!reader.open(path))
+        return {};
+    const auto joints = reader.joints({});
+    return joints ? joints.value() : QList<journal::StoredJoint>();
+}
+
+// What the journal says about reading `command`.
+QStringList refusalsIn(const QString &path, const QByteArray &command) {
+    JournalReader reader;
+    if (!reader.open(path))
+        return {};
+    journal::EventFilter filter;
+    filter.kinds = {JournalEvent::Kind::Communication};
+    const auto events = reader.events(filter);
+    QStringList said;
+    for (const auto &e : events ? events.value() : QList<journal::StoredEvent>())
+        if (e.record.text.contains(QString::fromLatin1(command)))
+            said.append(e.record.text);
+    return said;
+}
+
+} // namespace
+
+class TestRefusedReadings : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { TIPSCOPE_START_BROKER(m_broker); }
+    void aRefusedReadingCostsOnlyItself_data();
+    void aRefusedReadingCostsOnlyItself();
+
+private:
+    MosquittoBroker m_broker;
+};
+
+void TestRefusedReadings::aRefusedReadingCostsOnlyItself_data() {
+    QTest::addColumn<bool>("agent");
+    QTest::addColumn<QByteArray>("command");
+    QTest::newRow("monitor, transformer temperature") << false << QByteArray("TT0");
+    QTest::newRow("monitor, port status") << false << QByteArray("PS1");
+    QTest::newRow("agent, transformer temperature") << true << QByteArray("TT0");
+    QTest::newRow("agent, transistor temperature") << true << QByteArray("QT1");
+}
+
+void TestRefusedReadings::aRefusedReadingCostsOnlyItself() {
+    QFETCH(bool, agent);
+    QFETCH(QByteArray, command);
+    SimProcess sim;
+    QString error;
+    const QString line =
+        sim.start({QStringLiteral("--model"), QStringLiteral("DME"), QStringLiteral("--tcp"),
+                   QStringLiteral("127.0.0.1:0"), QStringLiteral("--nak"), QStringLiteral("4"),
+                   QStringLiteral("--nak-for"), QString::fromLatin1(command)},
+                  &error);
+    QVERIFY2(!line.isEmpty(), qPrintable(error));
+
+    QTemporaryDir dir;
+    QString journalPath = dir.filePath(QStringLiteral("journal.sqlite"));
+    QProcess monitor;
+    AgentProcess agentProcess;
+    if (agent) {
+        agentProcess.configure(line, m_broker.port());
+        QVERIFY2(agentProcess.start(&error), qPrintable(error));
+        journalPath = agentProcess.journalPath();
+    } else {
+        monitor.start(binaryPath(QStringLiteral("tipscope-cli")),
+                      {QStringLiteral("--tcp"), line, QStringLiteral("monitor"),
+                       QStringLiteral("--journal"), journalPath});
+        QVERIFY2(monitor.waitForStarted(5000), qPrintable(monitor.errorString()));
+    }
+
+    // A joint on port 1 once the port is at work at its temperature and the program saw it
+    // settle (no joint without a baseline: the first one, made as soon as the port is hot, may
+    // come too early), so asked for again, further apart than a settling takes, until the
+    // journal holds one.
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            if (sim.command(QStringLiteral("joint 1 40 800")) == QLatin1String("ok"))
+                return true;
+            QTest::qWait(300);
+            return false;
+        },
+        20000));
+    QVERIFY2(QTest::qWaitFor(
+                 [&] {
+                     if (QTest::qWaitFor([&] { return !jointsIn(journalPath).isEmpty(); }, 6000))
+                         return true;
+                     (void)sim.command(QStringLiteral("joint 1 40 800"));
+                     return false;
+                 },
+                 30000),
+             qPrintable(agent ? agentProcess.log()
+                              : QString::fromLocal8Bit(monitor.readAllStandardError())));
+    const QList<journal::StoredJoint> joints = jointsIn(journalPath);
+    const model::JointRecord &j = joints.first().record;
+    QCOMPARE(j.port, 1);
+    QVERIFY2(qAbs(j.dipDepth - 40) <= 3, qPrintable(QString::number(j.dipDepth)));
+    QVERIFY(j.recoveryMs);
+    QVERIFY2(qAbs(*j.recoveryMs - 800) <= 250, qPrintable(QString::number(*j.recoveryMs)));
+    QVERIFY(j.verdict != model::JointVerdict::Incomplete);
+    // The refusal is journaled once, with the station's reason.
+    QVERIFY(QTest::qWaitFor([&] { return !refusalsIn(journalPath, command).isEmpty(); }, 10000));
+    const QStringList refusals = refusalsIn(journalPath, command);
+    QVERIFY2(refusals.size() == 1, qPrintable(refusals.join(QLatin1Char('\n'))));
+    QVERIFY2(refusals.first().contains(QStringLiteral("00004")) ||
+                 refusals.first().contains(QStringLiteral("NAK")),
+             qPrintable(refusals.first()));
+
+    if (agent) {
+        QCOMPARE(agentProcess.stop(), 0);
+        return;
+    }
+    ::kill(pid_t(monitor.processId()), SIGINT);
+    QVERIFY(monitor.waitForFinished(15000));
+    const QString out = QString::fromUtf8(monitor.readAllStandardOutput());
+    // The tips were printed all along: every cycle after the first reads "P1 <tip>/<setpoint>".
+    static const QRegularExpression tipShown(QStringLiteral("P1 \\d+/\\d+ °C"));
+    const QStringList cycles = out.split(QLatin1Char('\n')).filter(QStringLiteral(" P1 "));
+    QVERIFY2(cycles.size() >= 5, qPrintable(out));
+    QVERIFY2(cycles.filter(tipShown).size() >= cycles.size() - 2, qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral("joint P1 ")), qPrintable(out));
+}
+
+QTEST_GUILESS_MAIN(TestRefusedReadings)
+#include "tst_refusedreadings.moc"
