@@ -177,7 +177,7 @@ int main(int argc, char *argv[]) {
                         "0.4-3 s; the default), varied (25-90 K in 50-400 ms, back within "
                         "0.6-3.5 s, exponential or straight, overshoot, ±2 K of noise, 1.2 s "
                         "apart) or slow (10-25 K, back within 3-6 s, ±1 K of noise)."),
-         QStringLiteral("SET")},
+         QStringLiteral("NAME")},
         {QStringLiteral("robot-mode-off"),
          QStringLiteral("Start with robot mode off (stations answer NAK 00005).")},
         {QStringLiteral("activity"),
