@@ -20,16 +20,17 @@
 // while its last tip reading is more than kBusyBelowK below its setpoint or its power is above
 // kBusyPowerShare of full scale. A busy port's tip temperature is due kBusyFactor times as often
 // as the live interval says, its power kWatchFactor times (never more often than kFastestMs), and
-// a port turning busy has them polled at once. While any port is busy the line fills its wire
-// (below), so a joint is read as finely as the wire allows, its tip most of all. A resting port's
-// tip is due kWatchFactor times as often, because a joint's start can be timed no finer than the
-// last reading before it. Values that rarely change are due kRestFactor times less often: a port's
-// status among the live values, its setpoint and its connected tool; so is a resting port's power,
-// which is not needed to see a joint begin. Errors and alarms keep their interval: a fault is never
-// reported later for it. When the wire is full, the due live value longest overdue for its own
-// interval goes first, so each gets the wire in proportion to its rate: a recovery is sampled
-// finely while the resting ports keep their turns. Off, every value keeps its class's interval and
-// the earliest due goes first.
+// a port turning busy has them polled at once, and its status too (a tip leaving its band may be
+// a tool put in its stand or asleep, an event to stamp when the tip shows it). While any port is
+// busy the line fills its wire (below), so a joint is read as finely as the wire allows, its tip
+// most of all. A resting port's tip is due kWatchFactor times as often, because a joint's start can
+// be timed no finer than the last reading before it. Values that rarely change are due kRestFactor
+// times less often: a port's status among the live values, its setpoint and its connected tool; so
+// is a resting port's power, which is not needed to see a joint begin. Errors and alarms keep their
+// interval: a fault is never reported later for it. When the wire is full, the due live value
+// longest overdue for its own interval goes first, so each gets the wire in proportion to its rate:
+// a recovery is sampled finely while the resting ports keep their turns. Off, every value keeps its
+// class's interval and the earliest due goes first.
 //
 // Filling the wire (setFillWire(), off by default; a Workspace turns it on; always while a port is
 // busy, adaptive) polls a line at the rate its wire carries rather than at its intervals: when a

@@ -33,6 +33,7 @@ private Q_SLOTS:
     void aClosedLinePausesPollingInsteadOfSpinning();
     void aPortInAJointHasItsLiveValuesPolledMoreOften_data();
     void aPortInAJointHasItsLiveValuesPolledMoreOften();
+    void aPortLeavingItsBandHasItsStatusReadAtOnce();
     void fillingTheWireKeepsItBusyWithLiveValuesOnly_data();
     void fillingTheWireKeepsItBusyWithLiveValuesOnly();
 };
@@ -154,6 +155,34 @@ void TestScheduler::aPortInAJointHasItsLiveValuesPolledMoreOften() {
         QVERIFY2(2 * busyTip.size() < 3 * restingTip.size(), qPrintable(counts));
         QVERIFY2(2 * busyPower.size() < 3 * restingPower.size(), qPrintable(counts));
     }
+}
+
+// A port's status is due only every 8 s here (live values every 2 s, the status four times
+// less often); when the port's tip leaves its band, its status is among the next few polls, so
+// a tool put in its stand or asleep is seen as such when the tip shows it (counted in polls, not
+// in time: about 60 polls go by in the half second the wire would otherwise take).
+void TestScheduler::aPortLeavingItsBandHasItsStatusReadAtOnce() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    PollScheduler s;
+    auto st = pacedStation(f, s, {1, 2, 3, 4});
+    s.setInterval(PollClass::Live, 2000);
+    s.start();
+    QTRY_VERIFY_WITH_TIMEOUT(f.simLine->station()->canMakeJoint(2), 15000);
+    QTRY_VERIFY_WITH_TIMEOUT(!s.isBusy(st.get(), 2), 5000);
+    QSignalSpy status(st->parameter("PS2"), &Parameter::updated);
+    QVERIFY(status.isValid());
+    QVERIFY(status.wait(12000)); // just read: the next is due 8 s from now
+    status.clear();
+    std::optional<int> turnedBusyAt; // polls done when the tip reading made the port busy
+    connect(st->parameter("TT2"), &Parameter::updated, this, [&] {
+        if (!turnedBusyAt && s.isBusy(st.get(), 2))
+            turnedBusyAt = s.pollsDone();
+    });
+    QVERIFY(f.simLine->startJoint(2, 60, 3000));
+    QTRY_VERIFY_WITH_TIMEOUT(turnedBusyAt.has_value(), 3000);
+    QVERIFY(status.wait(3000));
+    const int after = s.pollsDone() - *turnedBusyAt;
+    QVERIFY2(after <= 6, qPrintable(QString::number(after)));
 }
 
 void TestScheduler::fillingTheWireKeepsItBusyWithLiveValuesOnly_data() {
