@@ -64,7 +64,7 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
     QList<bool> used(all.size(), false);
     QList<double> recoveryErrors, startErrors, dipErrors, oracleDipErrors;
     double signedSum = 0; // measured minus true: a bias shows here
-    int matched = 0, bounded = 0, seen = 0;
+    int matched = 0, bounded = 0, holding = 0, seen = 0;
     QList<model::JointRecord> seenJoints;
     for (const model::JointRecord &j : found) {
         qsizetype match = -1;
@@ -90,9 +90,12 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
         dipErrors.append(qAbs(j.dipDepth - t.depthK));
         if (t.reads > 0)
             oracleDipErrors.append(qMax(0.0, t.depthK - t.readDepthK));
-        if (j.recoveryBounded)
+        // A bounded recovery is judged by whether its interval holds the truth; the errors are
+        // those of the recoveries given as measured.
+        if (j.recoveryMs && j.recoveryBounded) {
             ++bounded;
-        if (j.recoveryMs) {
+            holding += qAbs(*j.recoveryMs - t.recoveryMs) <= j.recoveryUncertaintyMs;
+        } else if (j.recoveryMs) {
             recoveryErrors.append(double(qAbs(*j.recoveryMs - t.recoveryMs)));
             signedSum += double(*j.recoveryMs - t.recoveryMs);
         }
@@ -157,6 +160,8 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
         {QStringLiteral("recovery_bias_ms"),
          recoveryErrors.isEmpty() ? 0 : signedSum / double(recoveryErrors.size()), ms, 0},
         {QStringLiteral("recovery_bounded"), double(bounded), QStringLiteral("joints"), 0},
+        {QStringLiteral("recovery_bounds_holding"),
+         bounded == 0 ? 1.0 : double(holding) / double(bounded), QString(), 3},
         {QStringLiteral("start_error_p95_ms"), quantile(startErrors, 0.95), ms, 0},
         {QStringLiteral("dip_error_p95_k"), quantile(dipErrors, 0.95), k, 1},
         {QStringLiteral("dip_error_oracle_p95_k"), quantile(oracleDipErrors, 0.95), k, 1},

@@ -31,9 +31,10 @@ private:
     QList<sim::SimJoint> m_joints;
 };
 
-// precision, recall, the errors of recovery, start and dip (p50, p95, max), the recovery's bias,
-// the dip error of an oracle that knew the true tip at the same sample instants, and how many
-// recoveries were only bounded. Joints outside [fromMs, untilMs) are left out; each one missed
+// precision, recall, the errors of recovery (of those given as measured), start and dip (p50, p95,
+// max), the recovery's bias, the dip error of an oracle that knew the true tip at the same sample
+// instants, how many recoveries were only bounded and the share of those bounds that hold the
+// true recovery. Joints outside [fromMs, untilMs) are left out; each one missed
 // is named on standard error with `label`.
 [[nodiscard]] QList<JointFigure> scoreJoints(const JointTruth &truth,
                                              const QList<model::JointRecord> &found, qint64 fromMs,

@@ -19,6 +19,24 @@ constexpr int kClimbReadingsAfter = 1;
 // A local fit whose readings scatter more than this about it is following a wobble, not rounding
 // (whole degrees alone scatter 0.29 K).
 constexpr double kWobbleSigmaK = 0.5;
+// How many of the settled tip's readings say how much it wobbles: two to three seconds of them.
+constexpr size_t kRestingReadings = 24;
+
+// The last two readings before a joint may already be on its fall, within the band still: they
+// are left out.
+double restingSigma(const std::deque<int> &tips) {
+    const size_t n = tips.size() > 2 ? tips.size() - 2 : 0;
+    if (n < 4)
+        return kRoundingSigmaK;
+    double mean = 0;
+    for (size_t i = 0; i < n; ++i)
+        mean += tips[i];
+    mean /= double(n);
+    double sum = 0;
+    for (size_t i = 0; i < n; ++i)
+        sum += (tips[i] - mean) * (tips[i] - mean);
+    return std::max(kRoundingSigmaK, std::sqrt(sum / double(n - 1)));
+}
 // The wide window around a return: this many spacings of the readings around it either side, or
 // this share of the climb from the lowest point, whichever is longer.
 constexpr double kWideSpacings = 2.5;
@@ -67,6 +85,13 @@ std::optional<JointRecord> JointDetector::add(const PortReading &reading) {
         m_justRecovered = false;
     }
     const bool withinBand = std::abs(*reading.tip - reading.setpoint) <= m_limits.bandK;
+    if (m_state != State::InJoint && withinBand) {
+        m_restingTips.push_back(*reading.tip);
+        if (m_restingTips.size() > kRestingReadings)
+            m_restingTips.pop_front();
+    } else if (m_state == State::Waiting) {
+        m_restingTips.clear();
+    }
     switch (m_state) {
     case State::Waiting:
         if (withinBand && reading.working) {
@@ -148,6 +173,7 @@ void JointDetector::startJoint(const PortReading &previous, const PortReading &r
     m_joint.powerPeak = int(std::lround(previous.powerPct));
     m_readings = {previous, reading};
     m_restingPowerPct = previous.powerPct;
+    m_restingSigmaK = restingSigma(m_restingTips);
     m_backInBand = 0;
     m_tailUntilMs.reset();
     estimateStart(m_joint); // the give-up clock runs from it; refined at the end
@@ -291,7 +317,8 @@ void JointDetector::estimateRecovery(JointRecord &joint) const {
     for (size_t i = from; i < m_readings.size() && i <= r.back + kClimbReadingsAfter; ++i)
         climb.push_back(readingOf(m_readings.at(i)));
     const auto local = fitPolynomial(climb, climb.size() >= 5 ? 2 : 1);
-    if (local && local->sigma > kWobbleSigmaK) {
+    const bool wobbles = local && local->sigma > kWobbleSigmaK;
+    if (wobbles) {
         std::vector<Reading> wide;
         for (size_t i = r.low + 1; i < m_readings.size(); ++i)
             if (std::abs(double(m_readings.at(i).timeMs) - r.straightMs) <= r.halfWindowMs)
@@ -300,7 +327,12 @@ void JointDetector::estimateRecovery(JointRecord &joint) const {
             if (const auto t = crossingTime(*fit, edge, double(wide.front().timeMs),
                                             double(wide.back().timeMs), r.straightMs)) {
                 crossing = *t;
-                uncertainty = qMax(uncertainty, crossingUncertaintyMs(*fit, *t));
+                // A wobble is as often slow as fast: its readings do not average out as
+                // independent errors would, so the crossing is no surer than the wobble over the
+                // slope (a slow shallow return wobbling ±1 K is known to within a second or so).
+                const double slope = std::abs(fit->slopePerMs(*t));
+                uncertainty = std::max({uncertainty, crossingUncertaintyMs(*fit, *t),
+                                        slope > 1e-9 ? fit->sigma / slope : 1e9});
             }
         }
     } else if (local) {
@@ -310,14 +342,33 @@ void JointDetector::estimateRecovery(JointRecord &joint) const {
             uncertainty = qMin(uncertainty, crossingUncertaintyMs(*local, *t));
         }
     }
+    // Whatever the fit, a reading may be off by as much as the settled tip wobbled, and a slow
+    // wobble looks like the curve itself to a fit across a few readings: over the slope at the
+    // return, that is how far the crossing may be off.
+    if (const auto fit = fitPolynomial(climb, 1)) {
+        // The slope at the return, or the climb's average from its lowest reading if less: a
+        // wobble steepens a fit across a few readings, and an exponential return is never
+        // flatter than at its end.
+        const PortReading &lowest = m_readings.at(r.low);
+        const double average = crossing > double(lowest.timeMs)
+                                   ? (edge - *lowest.tip) / (crossing - double(lowest.timeMs))
+                                   : 1e9;
+        const double slope = std::min(std::abs(fit->slopePerMs(crossing)), std::abs(average));
+        // Two standard deviations of the wobble beyond rounding (the fit's own share).
+        const double wobble = 2 * std::sqrt(std::max(0.0, m_restingSigmaK * m_restingSigmaK -
+                                                              kRoundingSigmaK * kRoundingSigmaK));
+        if (wobble > 0)
+            uncertainty = std::max(uncertainty, slope > 1e-9 ? wobble / slope : 1e9);
+    }
     joint.recoveryMs = std::llround(crossing) - joint.startMs;
     joint.recoveryUncertaintyMs = std::llround(uncertainty) + joint.startUncertaintyMs;
     if (uncertainty > kMeasuredWithinMs) {
-        // Only bounded: somewhere between the two readings around the return.
-        const qint64 lo = below.timeMs - joint.startMs;
-        const qint64 hi = in.timeMs - joint.startMs;
-        joint.recoveryMs = (lo + hi) / 2;
-        joint.recoveryUncertaintyMs = (hi - lo) / 2 + joint.startUncertaintyMs;
+        // Only bounded: somewhere between the two readings around the return, or within the
+        // wobble's reach of the crossing, whichever reaches further.
+        const double lo = std::min(double(below.timeMs), crossing - uncertainty);
+        const double hi = std::max(double(in.timeMs), crossing + uncertainty);
+        joint.recoveryMs = std::llround((lo + hi) / 2) - joint.startMs;
+        joint.recoveryUncertaintyMs = std::llround((hi - lo) / 2) + joint.startUncertaintyMs;
         joint.recoveryBounded = true;
     }
 }

@@ -37,6 +37,7 @@
 #include "model/joints/jointrecord.h"
 
 #include <QList>
+#include <deque>
 #include <vector>
 
 namespace tipscope::model {
@@ -127,6 +128,10 @@ private:
     // The joint's readings: the last one within the band before it, then every one since.
     std::vector<PortReading> m_readings;
     double m_restingPowerPct = 0;
+    // The settled tip's last readings before a joint, and their scatter about their mean when the
+    // joint began (K, never below rounding's): how far any reading of this port may be off.
+    std::deque<int> m_restingTips;
+    double m_restingSigmaK = 0;
     int m_backInBand = 0; // readings in a row within the band since the last one below it
     // Set once the return is confirmed: until then the readings after it are gathered.
     std::optional<qint64> m_tailUntilMs;

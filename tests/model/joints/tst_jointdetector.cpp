@@ -76,6 +76,8 @@ private Q_SLOTS:
     void aSteepDropIsTimedAtTheMiddleOfItsIntervalAGentleOneByItsLine();
     void jointsThatFollowEachOtherWithinASecondAreEachFound();
     void aWobbleJustBeyondTheBandIsNoJoint();
+    void aSlowReturnOnAWobblingTipIsBoundedAndTheBoundHolds_data();
+    void aSlowReturnOnAWobblingTipIsBoundedAndTheBoundHolds();
     void aJointRightAfterAnOvershootIsFound();
     void aTipThatFallsWhileTheHeaterIdlesIsNoJoint();
     void aReadingBackInTheBandByWobbleDoesNotEndTheJoint();
@@ -250,6 +252,51 @@ void TestJointDetector::aWobbleJustBeyondTheBandIsNoJoint() {
         add(below, 60);
     QCOMPARE(found.size(), 1);
     QVERIFY(found.first().dipDepth >= 8);
+}
+
+void TestJointDetector::aSlowReturnOnAWobblingTipIsBoundedAndTheBoundHolds_data() {
+    QTest::addColumn<double>("wobbleK");
+    QTest::addColumn<bool>("bounded");
+    QTest::newRow("quiet tip: measured") << 0.0 << false;
+    QTest::newRow("tip wobbling ±1 K: bounded") << 1.0 << true;
+}
+
+// A shallow joint (15 K) that comes back along a straight line at 2 K/s: on a quiet tip its
+// return is measured to within the stated uncertainty; on a tip that wobbles ±1 K with a 2 s
+// swing (as slow as the return itself, which no fit across a few readings can tell from the
+// curve) it can only be bounded, and the interval holds the true return. The settled tip's
+// wobble before the joint says how far any reading may be off.
+void TestJointDetector::aSlowReturnOnAWobblingTipIsBoundedAndTheBoundHolds() {
+    QFETCH(double, wobbleK);
+    QFETCH(bool, bounded);
+    for (const double phase : {0.0, 1.1, 2.3, 3.9, 5.0}) {
+        JointDetector d({}, 1);
+        const qint64 begin = kT0 + 5000;
+        const auto below = [&](qint64 t) {
+            const double ms = double(t - begin);
+            if (ms <= 0)
+                return 0.0;
+            if (ms < 300)
+                return 15 * ms / 300;
+            return qMax(0.0, 15 - 2 * (ms - 300) / 1000);
+        };
+        std::optional<JointRecord> j;
+        for (qint64 t = kT0; t < begin + 12'000 && !j; t += 120) {
+            const double wobble = wobbleK * std::sin(double(t) / 1000 * 3.1 + phase);
+            j = d.add(reading(t, kSetpoint - below(t) + wobble, below(t) > 0 ? 60 : 10));
+        }
+        QVERIFY(j && j->recoveryMs);
+        const double trueRecovery = (300 + (15 - 5.5) / 2 * 1000) - 15.0 * 5.5 / 15 / 15 * 300;
+        const QString got = QStringLiteral("%1 ± %2 ms%3, true %4")
+                                .arg(*j->recoveryMs)
+                                .arg(j->recoveryUncertaintyMs)
+                                .arg(j->recoveryBounded ? QStringLiteral(" bounded") : QString())
+                                .arg(trueRecovery);
+        QVERIFY2(j->recoveryBounded == bounded, qPrintable(got));
+        QVERIFY2(std::abs(double(*j->recoveryMs) - trueRecovery) <=
+                     double(j->recoveryUncertaintyMs) + 1,
+                 qPrintable(got));
+    }
 }
 
 // The second joint begins 0.8 s after the first is back within the band: no settling between.
