@@ -216,8 +216,10 @@ void PollScheduler::followBusy(DeviceModel *device, int port, qint64 now) {
             (i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power))
             i.dueMs = qMin(i.dueMs, now + effectiveInterval(i));
         else if (i.device == device && i.port == port && !i.inFlight &&
-                 i.role == protocol::Role::Status)
+                 i.role == protocol::Role::Status) {
             i.dueMs = qMin(i.dueMs, now);
+            i.first = true; // before the tips that a full wire always has overdue
+        }
 }
 
 void PollScheduler::start() {
@@ -267,7 +269,7 @@ void PollScheduler::pump() {
             // Among the rest, errors and status come before settings, counters and identity
             // (on their turn, after them).
             const bool earlier =
-                iLive ? urgency(i, now) < urgency(*best, now)
+                iLive ? (i.first != best->first ? i.first : urgency(i, now) < urgency(*best, now))
                       : rank(i) < rank(*best) || (rank(i) == rank(*best) && i.dueMs < best->dueMs);
             if (earlier)
                 best = &i;
@@ -292,6 +294,7 @@ void PollScheduler::pump() {
             continue;
         }
         best->inFlight = true;
+        best->first = false;
         ++m_inFlight;
         Parameter *param = best->raw;
         connect(reply, &Reply::finished, this, [this, reply, param] {

@@ -103,6 +103,7 @@ private:
         bool inFlight = false;
         qint64 polledMs = 0; // when its last poll finished
         int interval = 0;    // effectiveInterval(), kept current by updateIntervals()
+        bool first = false;  // ahead of every other live value until sent (followBusy())
     };
 
     void pump();

@@ -172,16 +172,22 @@ void TestScheduler::aPortLeavingItsBandHasItsStatusReadAtOnce() {
     QSignalSpy status(st->parameter("PS2"), &Parameter::updated);
     QVERIFY(status.isValid());
     QVERIFY(status.wait(12000)); // just read: the next is due 8 s from now
-    status.clear();
-    std::optional<int> turnedBusyAt; // polls done when the tip reading made the port busy
-    connect(st->parameter("TT2"), &Parameter::updated, this, [&] {
+    // The polls done when a reading (the tip's or the power's) made the port busy, and when its
+    // status came next.
+    std::optional<qint64> turnedBusyAt, statusAt;
+    const auto noteBusy = [&] {
         if (!turnedBusyAt && s.isBusy(st.get(), 2))
             turnedBusyAt = s.pollsDone();
+    };
+    connect(st->parameter("TT2"), &Parameter::updated, this, noteBusy);
+    connect(st->parameter("PP2"), &Parameter::updated, this, noteBusy);
+    connect(st->parameter("PS2"), &Parameter::updated, this, [&] {
+        if (turnedBusyAt && !statusAt)
+            statusAt = s.pollsDone();
     });
     QVERIFY(f.simLine->startJoint(2, 60, 3000));
-    QTRY_VERIFY_WITH_TIMEOUT(turnedBusyAt.has_value(), 3000);
-    QVERIFY(status.wait(3000));
-    const int after = s.pollsDone() - *turnedBusyAt;
+    QTRY_VERIFY_WITH_TIMEOUT(statusAt.has_value(), 5000);
+    const qint64 after = *statusAt - *turnedBusyAt;
     QVERIFY2(after <= 6, qPrintable(QString::number(after)));
 }
 
