@@ -1,7 +1,9 @@
 // A reading the station refuses costs only itself, in the programs too: tipscope-cli monitor and
 // tipscope-agent, each on a simulated DME that answers one reading with NAK 00004 from the start
 // (as a station without that reading would), still read the tips, find the joint made on port 1
-// and keep it in their journal with its figures, and journal the refusal once.
+// and keep it in their journal with its figures, and journal the refusal once. The simulator is
+// paced at 19200 baud like a station's line: unpaced, a program that fills its wire would spin
+// both processes at full speed and starve the tests running beside this one.
 #include "../mqtt/mqtttesting.h"
 #include "agentprocess.h"
 #include "journal/journalreader.h"
@@ -74,8 +76,9 @@ void TestRefusedReadings::aRefusedReadingCostsOnlyItself() {
     QString error;
     const QString line =
         sim.start({QStringLiteral("--model"), QStringLiteral("DME"), QStringLiteral("--tcp"),
-                   QStringLiteral("127.0.0.1:0"), QStringLiteral("--nak"), QStringLiteral("4"),
-                   QStringLiteral("--nak-for"), QString::fromLatin1(command)},
+                   QStringLiteral("127.0.0.1:0"), QStringLiteral("--pace"), QStringLiteral("19200"),
+                   QStringLiteral("--nak"), QStringLiteral("4"), QStringLiteral("--nak-for"),
+                   QString::fromLatin1(command)},
                   &error);
     QVERIFY2(!line.isEmpty(), qPrintable(error));
 
@@ -119,7 +122,9 @@ void TestRefusedReadings::aRefusedReadingCostsOnlyItself() {
     const QList<journal::StoredJoint> joints = jointsIn(journalPath);
     const model::JointRecord &j = joints.first().record;
     QCOMPARE(j.port, 1);
-    QVERIFY2(qAbs(j.dipDepth - 40) <= 3, qPrintable(QString::number(j.dipDepth)));
+    // Read on a 19200-baud line, a 200 ms drop is seen by a reading every 100-160 ms: the
+    // lowest reading may miss the bottom by a few kelvin (docs/joints.md, the oracle's error).
+    QVERIFY2(qAbs(j.dipDepth - 40) <= 6, qPrintable(QString::number(j.dipDepth)));
     QVERIFY(j.recoveryMs);
     QVERIFY2(qAbs(*j.recoveryMs - 800) <= 250, qPrintable(QString::number(*j.recoveryMs)));
     QVERIFY(j.verdict != model::JointVerdict::Incomplete);
