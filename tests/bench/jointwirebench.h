@@ -14,10 +14,12 @@
 //   cli_5000    the same with `--interval 5000`
 //   agent       a `tipscope-agent` process (and a Mosquitto broker) on its own simulator
 // and prints, per set and front end, `joints.<set>.<frontend>.<figure>` (jointscore.h): true and
-// found joints, precision, recall, recovery error p50/p95/max and bias, bounded recoveries, start
+// found joints, precision, recall, the error p50/p95/max and bias of the recoveries given as
+// measured, how many were only bounded and the share of those bounds that hold the truth, start
 // error p95, dip error p95, and beside it the dip error of an oracle that knew the true tip at the
 // same sample instants (from the simulator's truth); for core also the spacing of tip readings
-// and the polls a second. A benchmark: it asserts nothing.
+// and the polls a second. Each front end is scored from 15 s after it started (the tips heat up
+// and settle first). A benchmark: it asserts nothing.
 #pragma once
 
 #include <QStringList>
