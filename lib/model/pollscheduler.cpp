@@ -211,15 +211,16 @@ void PollScheduler::followBusy(DeviceModel *device, int port, qint64 now) {
     // A tip leaving its band is a joint, or the tool put in its stand, asleep or taken out: the
     // status is read at once, so the event is stamped when the tip shows it and a rest is never
     // measured as a joint for want of the status.
-    for (Item &i : m_items)
-        if (i.device == device && i.port == port && !i.inFlight &&
-            (i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power))
+    for (Item &i : m_items) {
+        if (i.device != device || i.port != port || i.inFlight)
+            continue;
+        if (i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power) {
             i.dueMs = qMin(i.dueMs, now + effectiveInterval(i));
-        else if (i.device == device && i.port == port && !i.inFlight &&
-                 i.role == protocol::Role::Status) {
+        } else if (i.role == protocol::Role::Status) {
             i.dueMs = qMin(i.dueMs, now);
             i.first = true; // before the tips that a full wire always has overdue
         }
+    }
 }
 
 void PollScheduler::start() {

@@ -24,6 +24,9 @@ namespace tipscope::sim {
 
 enum class RecoveryForm { Exponential, Linear };
 
+// How far a settled tip's readings wobble on the demo's station (±K, between joints only).
+inline constexpr double kDemoWobbleK = 0.6;
+
 // What a joint is asked to be. Values outside JointShape's limits are clamped into them.
 struct JointSpec {
     int depthK = 0;

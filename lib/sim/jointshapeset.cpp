@@ -58,6 +58,11 @@ JointShapeSet slowSet() {
     return s;
 }
 
+const QList<JointShapeSet> &allSets() {
+    static const QList<JointShapeSet> sets{demoSet(), variedSet(), slowSet()};
+    return sets;
+}
+
 } // namespace
 
 JointSpec JointShapeSet::draw(QRandomGenerator &random) const {
@@ -76,14 +81,17 @@ JointSpec JointShapeSet::draw(QRandomGenerator &random) const {
 }
 
 std::optional<JointShapeSet> JointShapeSet::named(const QString &name) {
-    for (const JointShapeSet &s : {demoSet(), variedSet(), slowSet()})
+    for (const JointShapeSet &s : allSets())
         if (s.name == name)
             return s;
     return std::nullopt;
 }
 
 QStringList JointShapeSet::names() {
-    return {QStringLiteral("demo"), QStringLiteral("varied"), QStringLiteral("slow")};
+    QStringList names;
+    for (const JointShapeSet &s : allSets())
+        names.append(s.name);
+    return names;
 }
 
 } // namespace tipscope::sim

@@ -33,7 +33,7 @@ struct JointShapeSet {
     int maxRecoveryMs = 3000;
     double linearShare = 0; // of the recoveries, straight rather than exponential
     double maxOvershootK = 0;
-    double noiseK = 0.6;
+    double noiseK = kDemoWobbleK;
     bool noiseDuringJoints = false;
     int restMs = 3000; // settled at the target before the next joint
 

@@ -104,7 +104,7 @@ private:
     bool m_fusePresent = true;
     bool m_fuseIgnored = false;
     double m_noisePhase = 0;
-    double m_noiseK = 0.6;
+    double m_noiseK = kDemoWobbleK;
     bool m_noiseDuringJoints = false;
     qint64 m_nowMs = 0;
     QList<SimJoint> m_madeJoints;

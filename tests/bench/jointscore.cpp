@@ -65,7 +65,7 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
     QList<double> recoveryErrors, startErrors, dipErrors, oracleDipErrors;
     double signedSum = 0; // measured minus true: a bias shows here
     int matched = 0, bounded = 0, holding = 0, seen = 0;
-    QList<model::JointRecord> seenJoints;
+    QList<model::JointRecord> unmade; // found, but matching no joint made
     for (const model::JointRecord &j : found) {
         qsizetype match = -1;
         for (qsizetype k = 0; k < all.size() && match < 0; ++k)
@@ -74,8 +74,8 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
                 match = k;
         if (match < 0) {
             if (j.startMs >= fromMs && j.startMs + j.recoveryMs.value_or(j.durationMs) < cutoff) {
-                ++seen; // a joint nobody made
-                seenJoints.append(j);
+                ++seen;
+                unmade.append(j);
             }
             continue;
         }
@@ -85,7 +85,6 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
             continue;
         ++seen;
         ++matched;
-        seenJoints.append(j);
         startErrors.append(double(qAbs(j.startMs - t.startMs)));
         dipErrors.append(qAbs(j.dipDepth - t.depthK));
         if (t.reads > 0)
@@ -125,12 +124,7 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
                       .arg(qRound(t.dropMs))
                       .arg(sim::recoveryFormName(t.form), near));
     }
-    for (const model::JointRecord &j : std::as_const(seenJoints)) {
-        bool isTrue = false;
-        for (const sim::SimJoint &t : all)
-            isTrue = isTrue || (t.port == j.port && qAbs(t.startMs - j.startMs) <= kMatchMs);
-        if (isTrue)
-            continue;
+    for (const model::JointRecord &j : std::as_const(unmade)) {
         QString near;
         for (const sim::SimJoint &t : all)
             if (t.port == j.port && qAbs(j.startMs - t.startMs) < 10'000)

@@ -83,6 +83,7 @@ std::optional<JointRecord> JointDetector::add(const PortReading &reading) {
             ended = finish(m_tailUntilMs ? End::Recovered : End::Broken, m_last->timeMs);
         m_state = State::Waiting;
         m_justRecovered = false;
+        m_restingTips.clear(); // another setpoint or tool wobbles about another mean
     }
     const bool withinBand = std::abs(*reading.tip - reading.setpoint) <= m_limits.bandK;
     if (m_state != State::InJoint && withinBand) {
@@ -158,6 +159,7 @@ std::optional<JointRecord> JointDetector::gap(qint64 timeMs) {
                        qMax(timeMs, m_last ? m_last->timeMs : timeMs));
     m_state = State::Waiting;
     m_justRecovered = false;
+    m_restingTips.clear();
     m_last.reset();
     return ended;
 }
@@ -317,8 +319,7 @@ void JointDetector::estimateRecovery(JointRecord &joint) const {
     for (size_t i = from; i < m_readings.size() && i <= r.back + kClimbReadingsAfter; ++i)
         climb.push_back(readingOf(m_readings.at(i)));
     const auto local = fitPolynomial(climb, climb.size() >= 5 ? 2 : 1);
-    const bool wobbles = local && local->sigma > kWobbleSigmaK;
-    if (wobbles) {
+    if (local && local->sigma > kWobbleSigmaK) {
         std::vector<Reading> wide;
         for (size_t i = r.low + 1; i < m_readings.size(); ++i)
             if (std::abs(double(m_readings.at(i).timeMs) - r.straightMs) <= r.halfWindowMs)
@@ -327,12 +328,7 @@ void JointDetector::estimateRecovery(JointRecord &joint) const {
             if (const auto t = crossingTime(*fit, edge, double(wide.front().timeMs),
                                             double(wide.back().timeMs), r.straightMs)) {
                 crossing = *t;
-                // A wobble is as often slow as fast: its readings do not average out as
-                // independent errors would, so the crossing is no surer than the wobble over the
-                // slope (a slow shallow return wobbling ±1 K is known to within a second or so).
-                const double slope = std::abs(fit->slopePerMs(*t));
-                uncertainty = std::max({uncertainty, crossingUncertaintyMs(*fit, *t),
-                                        slope > 1e-9 ? fit->sigma / slope : 1e9});
+                uncertainty = qMax(uncertainty, crossingUncertaintyMs(*fit, *t));
             }
         }
     } else if (local) {
