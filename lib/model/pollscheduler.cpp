@@ -116,14 +116,21 @@ int PollScheduler::computeInterval(const Item &i) const {
 
 int PollScheduler::adaptedInterval(const Item &i, int iv) const {
     using protocol::Role;
-    if (i.pollClass == PollClass::Status)
-        return i.role == Role::Setpoint || i.role == Role::ConnectedTool ? iv * kRestFactor : iv;
+    if (i.pollClass == PollClass::Status) {
+        // While a joint is under way the wire is the joint's: a countdown to sleep (which the
+        // joint restarts anyway) and a transistor's temperature can wait; faults cannot.
+        const bool aside = i.role == Role::TimeToNextMode || i.role == Role::TransistorTemperature;
+        return i.role == Role::Setpoint || i.role == Role::ConnectedTool ||
+                       (aside && !m_busy.isEmpty())
+                   ? iv * kRestFactor
+                   : iv;
+    }
     if (i.pollClass != PollClass::Live || i.port == 0)
         return iv;
     if (i.role == Role::Status)
         return iv * kRestFactor;
     if (inJoint(i)) // the tip's readings place the joint; the power's only sum its heat
-        return qMax(kFastestMs, iv / (i.role == Role::TipTemperature ? kBusyFactor : kWatchFactor));
+        return i.role == Role::TipTemperature ? qMax(kFastestMs, iv / kBusyFactor) : iv;
     if (i.role == Role::Power) // a resting port's: not needed to see a joint begin
         return iv * kRestFactor;
     if (i.role == Role::TipTemperature) // a resting port's: a joint's start is timed by it
@@ -166,7 +173,8 @@ void PollScheduler::setFillWire(bool on) {
 
 PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
     Item *best = nullptr;
-    double bestShare = -1;
+    Item *bestTip = nullptr; // of a port in a joint
+    double bestShare = -1, bestTipShare = -1;
     for (Item &i : m_items) {
         if (i.inFlight || !i.parameter || i.pollClass != PollClass::Live || i.dueMs >= kNever ||
             i.parameter->isRefused())
@@ -177,8 +185,15 @@ PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
             best = &i;
             bestShare = share;
         }
+        if (iv > 0 && share > bestTipShare && i.role == protocol::Role::TipTemperature &&
+            inJoint(i)) {
+            bestTip = &i;
+            bestTipShare = share;
+        }
     }
-    return best;
+    // What the wire has to spare while a joint is under way goes to its tip: the joint is
+    // measured from those readings, while every other value is still read at its own rate.
+    return bestTip ? bestTip : best;
 }
 
 bool PollScheduler::isBusy(DeviceModel *device, int port) const {
@@ -203,11 +218,12 @@ void PollScheduler::followBusy(DeviceModel *device, int port, qint64 now) {
         return;
     if (!busy) {
         m_busy.remove(key);
-        updateIntervals(device, port);
+        updateIntervals(m_busy.isEmpty() ? nullptr : device, m_busy.isEmpty() ? -1 : port);
         return;
     }
+    const bool first = m_busy.isEmpty();
     m_busy.insert(key);
-    updateIntervals(device, port);
+    updateIntervals(first ? nullptr : device, first ? -1 : port);
     // A tip leaving its band is a joint, or the tool put in its stand, asleep or taken out: the
     // status is read at once, so the event is stamped when the tip shows it and a rest is never
     // measured as a joint for want of the status.

@@ -19,11 +19,13 @@
 // Adaptive sampling (setAdaptive(), on by default) spends the wire on joints. A port is busy
 // while its last tip reading is more than kBusyBelowK below its setpoint or its power is above
 // kBusyPowerShare of full scale. A busy port's tip temperature is due kBusyFactor times as often
-// as the live interval says, its power kWatchFactor times (never more often than kFastestMs), and
-// a port turning busy has them polled at once, and its status too (a tip leaving its band may be
-// a tool put in its stand or asleep, an event to stamp when the tip shows it). While any port is
-// busy the line fills its wire (below), so a joint is read as finely as the wire allows, its tip
-// most of all. A resting port's tip is due kWatchFactor times as often, because a joint's start can
+// as the live interval says (never more often than kFastestMs), its power at the live interval,
+// and a port turning busy has them polled at once, and its status too (a tip leaving its band may
+// be a tool put in its stand or asleep, an event to stamp when the tip shows it). While any port is
+// busy the line fills its wire (below) and what it has to spare goes to the busy tips, so a joint
+// is read as finely as the wire allows; the values that can wait a joint out (the countdown to
+// sleep, the transistor's temperature) are due kRestFactor times less often meanwhile. A resting
+// port's tip is due kWatchFactor times as often as the live interval, because a joint's start can
 // be timed no finer than the last reading before it. Values that rarely change are due kRestFactor
 // times less often: a port's status among the live values, its setpoint and its connected tool; so
 // is a resting port's power, which is not needed to see a joint begin. Errors and alarms keep their
@@ -36,8 +38,9 @@
 // busy, adaptive) polls a line at the rate its wire carries rather than at its intervals: when a
 // slot is free and nothing is due, it goes to the live value furthest along its own interval, so
 // every live value is read as often as the wire allows, each in proportion to its rate (a resting
-// port's tip still twice as often as its live interval says relative to its power, and so on). Only
-// live values are read early: errors, settings, counters and identity keep their intervals.
+// port's tip still twice as often as its live interval says relative to its power, and so on),
+// but for a busy port's tip, which takes every such slot while a joint is under way. Only live
+// values are read early: errors, settings, counters and identity keep their intervals.
 #pragma once
 
 #include "parameter.h"

@@ -16,6 +16,7 @@
 #include "ptyfixtures.h"
 #include "sim/simline.h"
 #include "simstations.h"
+#include "wireuse.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -95,18 +96,21 @@ public:
         m_scheduler.setInterval(PollClass::Live, AppSettings{}.liveMs);
         m_scheduler.setInterval(PollClass::Status, AppSettings{}.statusMs);
         m_scheduler.setAdaptive(adaptive);
+        m_wire = std::make_unique<WireUse>(*m_line, *station, m_scheduler, kBaud / 10.0);
     }
 
     bool start(QString *) override {
         m_line->open();
         m_sim.setClockRunning(true);
         m_scheduler.start();
+        m_wire->start();
         m_startMs = QDateTime::currentMSecsSinceEpoch();
         return true;
     }
 
     void stop() override {
         m_scheduler.stop();
+        m_wire->stop();
         m_endMs = QDateTime::currentMSecsSinceEpoch();
     }
 
@@ -122,6 +126,9 @@ public:
         f.append({QStringLiteral("polls_per_s"),
                   seconds > 0 ? double(m_scheduler.pollsDone()) / seconds : 0,
                   QStringLiteral("polls/s"), 1});
+        f.append(m_wire->figures());
+        printNote(QStringLiteral("%1: the wire while a port is busy: %2")
+                      .arg(m_label, m_wire->breakdown()));
         return f;
     }
 
@@ -149,6 +156,7 @@ private:
     TelemetryRecorder m_recorder;
     JointWatcher m_watcher;
     PollScheduler m_scheduler;
+    std::unique_ptr<WireUse> m_wire;
     JointTruth m_truth;
     QList<JointRecord> m_found;
     qint64 m_startMs = 0;

@@ -34,6 +34,7 @@ private Q_SLOTS:
     void aPortInAJointHasItsLiveValuesPolledMoreOften_data();
     void aPortInAJointHasItsLiveValuesPolledMoreOften();
     void aPortLeavingItsBandHasItsStatusReadAtOnce();
+    void theWireASpareDuringAJointGoesToTheBusyTip();
     void fillingTheWireKeepsItBusyWithLiveValuesOnly_data();
     void fillingTheWireKeepsItBusyWithLiveValuesOnly();
 };
@@ -189,6 +190,60 @@ void TestScheduler::aPortLeavingItsBandHasItsStatusReadAtOnce() {
     QTRY_VERIFY_WITH_TIMEOUT(statusAt.has_value(), 5000);
     const qint64 after = *statusAt - *turnedBusyAt;
     QVERIFY2(after <= 6, qPrintable(QString::number(after)));
+}
+
+// Port 2 makes a long joint while the other three rest, at the live and status intervals a
+// session uses, on a paced wire. The busy tip is read at least at its own fast rate and gets
+// what the wire has to spare besides; the busy port's power and the values that can wait
+// (transistor temperature, time to sleep) keep to slower rates, and the resting tips keep
+// theirs, from which the next joint's start is timed.
+void TestScheduler::theWireASpareDuringAJointGoesToTheBusyTip() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    PollScheduler s;
+    auto st = pacedStation(f, s, {1, 2, 3, 4});
+    s.setInterval(PollClass::Live, 250);
+    s.setInterval(PollClass::Status, 2000);
+    s.start();
+    // Settings are read once at the start, on the turns of the rest: those reads done first.
+    const auto allRead = [&st] {
+        const QList<Parameter *> &all = st->parameters();
+        return std::all_of(all.begin(), all.end(), [](const Parameter *p) {
+            return !p->isReadable() || pollClassOf(p->meta()) == PollClass::None ||
+                   p->value().has_value() || p->isRefused();
+        });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(allRead(), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(f.simLine->station()->canMakeJoint(2), 15000);
+    QTRY_VERIFY_WITH_TIMEOUT(!s.isBusy(st.get(), 1) && !s.isBusy(st.get(), 2) &&
+                                 !s.isBusy(st.get(), 3) && !s.isBusy(st.get(), 4),
+                             5000);
+    QVERIFY(f.simLine->startJoint(2, 80, 8000));
+    QTRY_VERIFY_WITH_TIMEOUT(s.isBusy(st.get(), 2), 2000);
+    int all = 0;
+    QMap<QString, int> reads;
+    for (Parameter *p : st->parameters())
+        connect(p, &Parameter::updated, this, [&all, &reads, p] {
+            ++all;
+            ++reads[QString::fromLatin1(p->code())];
+        });
+    // Well inside the joint's recovery. An event loop of its own: QTest::qWait() sleeps between
+    // its rounds of events and would leave the wire idle.
+    QEventLoop window;
+    QTimer::singleShot(3000, &window, &QEventLoop::quit);
+    window.exec();
+    QVERIFY(s.isBusy(st.get(), 2));
+    QStringList counts;
+    for (auto it = reads.begin(); it != reads.end(); ++it)
+        counts << QStringLiteral("%1 %2").arg(it.key()).arg(it.value());
+    const QString seen = QStringLiteral("of %1 reads: %2").arg(all).arg(counts.join(", "));
+    qInfo().noquote() << seen;
+    QVERIFY2(all > 0, qPrintable(seen));
+    QVERIFY2(reads.value("TT2") > 0.35 * all, qPrintable(seen));
+    // Its power no more often than the live interval says (a margin for the read at the turn).
+    QVERIFY2(reads.value("PP2") <= 3 * 4 + 2, qPrintable(seen));
+    QVERIFY2(reads.value("QT2") <= 1 && reads.value("ED2") <= 1, qPrintable(seen));
+    for (const char *tip : {"TT1", "TT3", "TT4"}) // every 125 ms; a margin for the wire's turns
+        QVERIFY2(reads.value(QLatin1String(tip)) >= 18, qPrintable(seen));
 }
 
 void TestScheduler::fillingTheWireKeepsItBusyWithLiveValuesOnly_data() {
