@@ -1,6 +1,7 @@
 #include "pollscheduler.h"
 
 #include "devicemodel.h"
+#include "portmodel.h"
 
 #include <limits>
 
@@ -59,6 +60,8 @@ void PollScheduler::removeDevice(DeviceModel *device) {
     m_visible.remove(device);
     for (auto it = m_busy.begin(); it != m_busy.end();)
         it = it->first == device ? m_busy.erase(it) : std::next(it);
+    for (auto it = m_restLow.begin(); it != m_restLow.end();)
+        it = it.key().first == device ? m_restLow.erase(it) : std::next(it);
 }
 
 void PollScheduler::setInterval(PollClass c, int ms) {
@@ -196,22 +199,54 @@ PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
     return bestTip ? bestTip : best;
 }
 
+namespace {
+// Stand, sleep, hibernation and cooling: the tip is away from its setpoint by design.
+bool rests(const DeviceModel &device, int port) {
+    const Parameter *status = device.parameter(protocol::Role::Status, port);
+    const auto value = status ? status->number() : std::nullopt;
+    if (!value)
+        return false;
+    const PortStatus s = PortStatus::fromNumber(*value);
+    return s.mode != PortStatus::Mode::Working || s.cooling;
+}
+} // namespace
+
 bool PollScheduler::isBusy(DeviceModel *device, int port) const {
     using protocol::Role;
     const Parameter *tip = device->parameter(Role::TipTemperature, port);
     const Parameter *setpoint = device->parameter(Role::Setpoint, port);
     const Parameter *power = device->parameter(Role::Power, port);
-    const auto tipNow = tip ? tip->number() : std::nullopt;
-    const auto setNow = setpoint ? setpoint->number() : std::nullopt;
-    if (tipNow && setNow && *tipNow < *setNow - kBusyBelowK)
+    const std::optional<qint64> tipNow = tip ? tip->number() : std::nullopt;
+    const qint64 t = tipNow.value_or(0);
+    if (rests(*device, port)) {
+        const auto low = m_restLow.constFind({device, port});
+        return tipNow && low != m_restLow.cend() && t > *low + kWakeRiseK;
+    }
+    const std::optional<qint64> setNow = setpoint ? setpoint->number() : std::nullopt;
+    const qint64 set = setNow.value_or(0);
+    // Below: a joint, or the tool put down; above: a new, higher setpoint not read yet.
+    if (tipNow && setNow && (t < set - kBusyBelowK || t > set + kBusyBelowK))
         return true;
     const auto powerNow = power ? power->number() : std::nullopt;
     const int full = power && power->spec().max > 0 ? power->spec().max : 1000;
     return powerNow && double(*powerNow) > kBusyPowerShare * full;
 }
 
-void PollScheduler::followBusy(DeviceModel *device, int port, qint64 now) {
+void PollScheduler::followBusy(DeviceModel *device, int port, protocol::Role read, qint64 now) {
     const QPair<DeviceModel *, int> key{device, port};
+    const Parameter *tip = device->parameter(protocol::Role::TipTemperature, port);
+    const auto tipNow = tip ? tip->number() : std::nullopt;
+    if (rests(*device, port) && tipNow) {
+        // A status just read that still says "resting" explains the tip as it is (a tip heating
+        // to its sleep temperature is no wake): the climb is measured from here on.
+        const auto low = m_restLow.find(key);
+        if (low == m_restLow.end() || read == protocol::Role::Status)
+            m_restLow.insert(key, *tipNow);
+        else
+            *low = qMin(*low, *tipNow);
+    } else {
+        m_restLow.remove(key);
+    }
     const bool was = m_busy.contains(key);
     const bool busy = isBusy(device, port);
     if (busy == was)
@@ -224,15 +259,16 @@ void PollScheduler::followBusy(DeviceModel *device, int port, qint64 now) {
     const bool first = m_busy.isEmpty();
     m_busy.insert(key);
     updateIntervals(first ? nullptr : device, first ? -1 : port);
-    // A tip leaving its band is a joint, or the tool put in its stand, asleep or taken out: the
-    // status is read at once, so the event is stamped when the tip shows it and a rest is never
-    // measured as a joint for want of the status.
+    // A tip leaving its band is a joint, the tool put in its stand, asleep or taken out, or a new
+    // setpoint; a resting tip climbing is a wake. The status and the setpoint are read at once,
+    // so the event is stamped when the tip shows it, a rest is never measured as a joint for want
+    // of the status, and a heat-up is timed from when it began.
     for (Item &i : m_items) {
         if (i.device != device || i.port != port || i.inFlight)
             continue;
         if (i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power) {
             i.dueMs = qMin(i.dueMs, now + effectiveInterval(i));
-        } else if (i.role == protocol::Role::Status) {
+        } else if (i.role == protocol::Role::Status || i.role == protocol::Role::Setpoint) {
             i.dueMs = qMin(i.dueMs, now);
             i.first = true; // before the tips that a full wire always has overdue
         }
@@ -326,7 +362,7 @@ void PollScheduler::pump() {
                 if (i.raw != param)
                     continue;
                 if (m_adaptive && i.port > 0 && !lineDown)
-                    followBusy(i.device, i.port, t);
+                    followBusy(i.device, i.port, i.role, t);
                 i.inFlight = false;
                 i.polledMs = t;
                 const int iv = effectiveInterval(i);

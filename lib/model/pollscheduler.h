@@ -16,9 +16,11 @@
 // among polls the turns above decide. A line that is not open pauses polling for a second at a
 // time; a value the device refuses is asked for again only once a minute.
 //
-// Adaptive sampling (setAdaptive(), on by default) spends the wire on joints. A port is busy
-// while its last tip reading is more than kBusyBelowK below its setpoint or its power is above
-// kBusyPowerShare of full scale. A busy port's tip temperature is due kBusyFactor times as often
+// Adaptive sampling (setAdaptive(), on by default) spends the wire on joints. A working port is
+// busy while its last tip reading is more than kBusyBelowK from its setpoint or its power is
+// above kBusyPowerShare of full scale; a resting one (stand, sleep, hibernation, cooling) only
+// while its tip climbs kWakeRiseK above its lowest reading since it rested, a wake the status
+// has not told yet. A busy port's tip temperature is due kBusyFactor times as often
 // as the live interval says (never more often than kFastestMs), its power at the live interval,
 // and a port turning busy has them polled at once, and its status too (a tip leaving its band may
 // be a tool put in its stand or asleep, an event to stamp when the tip shows it). While any port is
@@ -46,6 +48,7 @@
 #include "parameter.h"
 
 #include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
 #include <QPointer>
 #include <QSet>
@@ -83,6 +86,9 @@ public:
     [[nodiscard]] bool isBusy(DeviceModel *device, int port) const;
 
     static constexpr int kBusyBelowK = 5;
+    // A resting port (stand, sleep, ...) is busy once its tip is this far above its lowest
+    // reading since it rested: a wake, before the status says so.
+    static constexpr int kWakeRiseK = 8;
     static constexpr double kBusyPowerShare = 0.6;
     static constexpr int kBusyFactor = 4;
     static constexpr int kWatchFactor = 2;
@@ -126,8 +132,9 @@ private:
     [[nodiscard]] double urgency(const Item &item, qint64 now) const;
     // Filling the wire: the live value furthest along its interval, not yet due; null if none.
     [[nodiscard]] Item *furthestAlong(qint64 now);
-    // After a reading: a port that has just turned busy gets its tip and power due now.
-    void followBusy(DeviceModel *device, int port, qint64 now);
+    // After a reading of a value with role `read`: a port that has just turned busy gets its tip
+    // and power due now, its status and setpoint at once.
+    void followBusy(DeviceModel *device, int port, protocol::Role read, qint64 now);
     [[nodiscard]] qint64 nowMs() const { return m_clock.elapsed(); }
     void armWake();
 
@@ -142,6 +149,7 @@ private:
     bool m_adaptive = true;
     bool m_fillWire = false;
     QSet<QPair<DeviceModel *, int>> m_busy;
+    QHash<QPair<DeviceModel *, int>, qint64> m_restLow; // a resting port's lowest tip
     qint64 m_holdUntilMs = 0;
     qint64 m_done = 0;
     QElapsedTimer m_clock;

@@ -2,6 +2,7 @@
 #include "simfixture.h"
 
 #include "model/pollscheduler.h"
+#include "model/portmodel.h"
 
 #include <algorithm>
 
@@ -35,6 +36,7 @@ private Q_SLOTS:
     void aPortInAJointHasItsLiveValuesPolledMoreOften();
     void aPortLeavingItsBandHasItsStatusReadAtOnce();
     void theWireASpareDuringAJointGoesToTheBusyTip();
+    void aWakeHasItsStatusReadAsTheTipClimbs();
     void fillingTheWireKeepsItBusyWithLiveValuesOnly_data();
     void fillingTheWireKeepsItBusyWithLiveValuesOnly();
 };
@@ -244,6 +246,50 @@ void TestScheduler::theWireASpareDuringAJointGoesToTheBusyTip() {
     QVERIFY2(reads.value("QT2") <= 1 && reads.value("ED2") <= 1, qPrintable(seen));
     for (const char *tip : {"TT1", "TT3", "TT4"}) // every 125 ms; a margin for the wire's turns
         QVERIFY2(reads.value(QLatin1String(tip)) >= 18, qPrintable(seen));
+}
+
+// Port 2 sleeps at 150 °C, its status due only every 8 s (live values every 2 s, as in the test
+// above); while it sleeps it is no joint, so its tip is read at a resting port's rate. When the
+// tool is picked up the tip climbs toward 350 °C, and the status that says "working" is read
+// within a few polls of the climb being seen, not on its slow interval: a wake and its heat-up
+// are timed from the curve.
+void TestScheduler::aWakeHasItsStatusReadAsTheTipClimbs() {
+    SimFixture f(singleDevice(QStringLiteral("DME")));
+    f.simLine->station()->setStatus(2, 2);
+    PollScheduler s;
+    auto st = pacedStation(f, s, {1, 2, 3, 4});
+    s.setInterval(PollClass::Live, 2000);
+    s.start();
+    const auto tip = [&st] { return st->parameter("TT2")->number().value_or(0); };
+    const auto mode = [&st] {
+        return PortStatus::fromNumber(st->parameter("PS2")->number().value_or(0)).mode;
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(mode(), PortStatus::Mode::Sleep, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(tip() >= 147, 15000); // at its sleep temperature
+    // Heating up to it under the sleep status was no wake either, once the status was read.
+    QTRY_VERIFY_WITH_TIMEOUT(!s.isBusy(st.get(), 2), 10000);
+    std::optional<qint64> climbSeenAt, workingAt;
+    qint64 tipWhenWorking = 0;
+    connect(st->parameter("TT2"), &Parameter::updated, this, [&] {
+        if (!climbSeenAt && s.isBusy(st.get(), 2))
+            climbSeenAt = s.pollsDone();
+    });
+    connect(st->parameter("PS2"), &Parameter::updated, this, [&] {
+        if (climbSeenAt && !workingAt && mode() == PortStatus::Mode::Working) {
+            workingAt = s.pollsDone();
+            tipWhenWorking = tip();
+        }
+    });
+    f.simLine->station()->setStatus(2, 0);
+    QTRY_VERIFY_WITH_TIMEOUT(workingAt.has_value(), 8000);
+    const QString seen = QStringLiteral("status %1 polls after the climb was seen, the tip at %2")
+                             .arg(*workingAt - *climbSeenAt)
+                             .arg(tipWhenWorking);
+    qInfo().noquote() << seen;
+    QVERIFY2(*workingAt - *climbSeenAt <= 6, qPrintable(seen));
+    // Before the heat-up was over (the resting tip is read once a second here, so the climb is
+    // seen up to a second after it began, and the simulated heater climbs fast).
+    QVERIFY2(tipWhenWorking < 345, qPrintable(seen));
 }
 
 void TestScheduler::fillingTheWireKeepsItBusyWithLiveValuesOnly_data() {
