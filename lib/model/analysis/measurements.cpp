@@ -3,6 +3,7 @@
 #include "model/portmodel.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <limits>
 
 namespace tipscope::model {
@@ -39,6 +40,41 @@ bool isWorking(const TelemetryBuffer &buffer, int status, qint64 timeMs) {
         return false;
     const PortStatus p = PortStatus::fromNumber(s->value);
     return p.mode == PortStatus::Mode::Working && !p.cooling;
+}
+
+// The status and the setpoint are read less often than the tip (the scheduler reads them at
+// once only when the tip turns), so the flag of a wake or a new setpoint may come after the tip
+// began to move. The heat-up starts where the tip's climb (or fall) toward the target began: the
+// last sample at or before the flag from which the tip moved that way all along, but for a
+// reading's wobble, looked for no further back than kLookBackMs nor before `from`. A move smaller
+// than the band is no climb: the flag's time stands.
+constexpr qint64 kLookBackMs = 30'000;
+constexpr qint32 kWobble = 1;
+
+qint64 climbStart(const TelemetryBuffer &buffer, int tip, qint64 from, qint64 flagMs, bool up,
+                  qint32 tolerance) {
+    const QList<TelemetryBuffer::Sample> s =
+        buffer.samples(tip, qMax(from, flagMs - kLookBackMs), flagMs + 1);
+    if (s.isEmpty())
+        return flagMs;
+    const qint32 atFlag = s.last().value;
+    qint32 extreme = atFlag;
+    qsizetype first = s.size() - 1; // the earliest sample of the climb and its plateau's wobble
+    for (qsizetype i = s.size() - 1; i >= 0; --i) {
+        const qint32 v = s.at(i).value;
+        if (up ? v > extreme + kWobble : v < extreme - kWobble)
+            break;
+        extreme = up ? qMin(extreme, v) : qMax(extreme, v);
+        first = i;
+    }
+    if (std::abs(atFlag - extreme) < tolerance)
+        return flagMs;
+    // The plateau's last reading: the climb left it right after.
+    qint64 foot = s.at(first).timeMs;
+    for (qsizetype i = first; i < s.size(); ++i)
+        if (std::abs(s.at(i).value - extreme) <= kWobble)
+            foot = s.at(i).timeMs;
+    return qMin(foot, flagMs);
 }
 
 bool wasResting(const TelemetryBuffer &buffer, int status, qint64 timeMs) {
@@ -161,10 +197,14 @@ PortMeasurements Measurements::measureStretch(const TelemetryBuffer &buffer, qin
         const auto before = buffer.valueAt(setpoint, start - 1);
         const bool newSetpoint = setpointChanges.contains(start) && before && before->value > 0;
         const bool wake = !newSetpoint && start != t0 && wasResting(buffer, status, start);
-        const auto settled = firstWithin(buffer, tip, start, end, low, high);
+        const qint64 climb = newSetpoint || wake
+                                 ? climbStart(buffer, tip, i > 0 ? edges.at(i - 1) : t0, start,
+                                              wake || target->value > before->value, tolerance)
+                                 : start;
+        const auto settled = firstWithin(buffer, tip, climb, end, low, high);
         if (newSetpoint || wake) {
             if (out.heatUps.size() < maxResults)
-                out.heatUps.append(HeatUp{start, target->value, wake, settled});
+                out.heatUps.append(HeatUp{climb, target->value, wake, settled});
             else
                 out.truncated = true;
         }

@@ -2,7 +2,8 @@
 // "setpoint", "status" series, wire units):
 //
 // - heat-up: from a setpoint change, or from waking out of sleep or hibernation into working,
-//   until the tip is first within ±tolerance of the setpoint;
+//   until the tip is first within ±tolerance of the setpoint; it starts where the tip began to
+//   move toward the new target, which may be before the status or setpoint was read;
 // - recovery: while working at a steady setpoint and after the tip had settled, from the first
 //   sample under setpoint − tolerance (a joint drew heat) until it is back within the band, with
 //   the lowest temperature of the dip. A dip with no power where the tip is lowest and none at
@@ -25,7 +26,7 @@
 namespace tipscope::model {
 
 struct HeatUp {
-    qint64 startMs = 0; // the setpoint change or the wake
+    qint64 startMs = 0; // where the tip began to move after a setpoint change or a wake
     qint32 target = 0;  // the setpoint, wire units
     bool wake = false;
     std::optional<qint64> reachedMs;

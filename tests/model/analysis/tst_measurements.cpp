@@ -19,6 +19,8 @@ class TestMeasurements : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void heatUpRunsFromTheSetpointChangeUntilWithinTheBand();
+    void aHeatUpFlaggedLateRunsFromWhereTheTipBeganToClimb_data();
+    void aHeatUpFlaggedLateRunsFromWhereTheTipBeganToClimb();
     void recoveryRunsFromLeavingTheBandUntilBackInIt();
     void noMeasurementSpansAGap();
     void restsAndAnUnheatedTipAreNoDips();
@@ -41,6 +43,44 @@ void TestMeasurements::heatUpRunsFromTheSetpointChangeUntilWithinTheBand() {
     QCOMPARE(m.heatUps.first().target, 350);
     QVERIFY(m.heatUps.first().reachedMs);
     QCOMPARE(*m.heatUps.first().reachedMs - m.heatUps.first().startMs, 4400); // 345 at tick 144
+    QVERIFY(m.recoveries.isEmpty());
+}
+
+void TestMeasurements::aHeatUpFlaggedLateRunsFromWhereTheTipBeganToClimb_data() {
+    QTest::addColumn<bool>("wake");
+    QTest::addColumn<qint64>("flagMs"); // when the new status or setpoint was read
+    QTest::newRow("a wake read 6 s late") << true << qint64(16'000);
+    QTest::newRow("a wake read at once") << true << qint64(10'100);
+    QTest::newRow("a new setpoint read 7 s late") << false << qint64(17'000);
+}
+
+// A tip waking from sleep at 150 °C (or asked for 350 instead of 300) starts to climb at 10 s, at
+// 50 °C a second, with a ±1 °C wobble before; the status (or setpoint) that says so is read
+// later, as a station's slow values are. The heat-up runs from the climb's first step all the
+// same, and reaches the band (345 °C) when the tip does, whenever the flag came.
+void TestMeasurements::aHeatUpFlaggedLateRunsFromWhereTheTipBeganToClimb() {
+    QFETCH(bool, wake);
+    QFETCH(qint64, flagMs);
+    const qint32 from = wake ? 150 : 300;
+    const qint32 sleep = 2;
+    TelemetryBuffer b(kPortSeries);
+    for (qint64 t = 0; t < 30'000; t += 100) {
+        const qint32 wobble = t % 300 == 0 ? 1 : t % 300 == 100 ? -1 : 0;
+        const qint32 tip =
+            t < 10'000 ? from + wobble : qMin<qint32>(350, from + qint32((t - 10'000) / 20));
+        const bool flagged = t >= flagMs;
+        b.append(kT0 + t, {tip, !wake && !flagged ? 300 : 350, tip < 345 ? 1000 : 300,
+                           wake && !flagged ? sleep : 0});
+    }
+    const PortMeasurements m = Measurements::measurePort(b, kT0, kT0 + 30'000, 5);
+    QCOMPARE(m.heatUps.size(), 1);
+    const HeatUp &h = m.heatUps.first();
+    QCOMPARE(h.wake, wake);
+    // The climb's foot is the last sample before it: 10 s, or a wobble's low sample just before.
+    QVERIFY2(h.startMs >= kT0 + 9'800 && h.startMs <= kT0 + 10'000,
+             qPrintable(QString::number(h.startMs - kT0)));
+    QVERIFY(h.reachedMs);
+    QCOMPARE(*h.reachedMs, kT0 + 10'000 + (345 - from) * 20);
     QVERIFY(m.recoveries.isEmpty());
 }
 
