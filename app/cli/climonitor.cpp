@@ -9,6 +9,7 @@
 #include "clicommands.h"
 
 #include "climonitorcsv.h"
+#include "clistop.h"
 
 #include "model/displayunits.h"
 #include "model/portmodel.h"
@@ -358,6 +359,8 @@ int runMonitor(const CliOptions &o, QTextStream &out, QTextStream &err) {
     }
     if (durationS > 0)
         QTimer::singleShot(qint64(durationS * 1000), &loop, &QEventLoop::quit);
+    catchStopSignals();
+    quitLoopOnStop(loop);
     loop.exec();
 
     int worst = kOk;

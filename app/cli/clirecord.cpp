@@ -5,6 +5,7 @@
 // limits are read (so the header names the tools and limits, as the page's would), and ends
 // after S seconds, or on Ctrl-C or SIGTERM, with the file complete.
 #include "clicommands.h"
+#include "clistop.h"
 
 #include "model/chart/chartseries.h"
 #include "model/recording/chartrecorder.h"
@@ -14,9 +15,7 @@
 #include <QEventLoop>
 #include <QFileInfo>
 #include <QTimer>
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <limits>
 
 namespace tipscope::cli {
@@ -33,19 +32,13 @@ constexpr int kFirstSamplesMs = 30'000;
 constexpr int kLimitsMs = 10'000;
 constexpr int kStopCheckMs = 100;
 
-std::atomic<bool> g_stop{false};
-
-extern "C" void requestStop(int) {
-    g_stop = true;
-}
-
 // Runs the event loop until `done` holds, `timeoutMs` passed, or a stop was asked for.
 template <class Done> bool waitFor(Done done, int timeoutMs) {
     QDeadlineTimer deadline(timeoutMs);
     QEventLoop loop;
     QTimer check;
     QObject::connect(&check, &QTimer::timeout, &loop, [&] {
-        if (done() || deadline.hasExpired() || g_stop)
+        if (done() || deadline.hasExpired() || stopRequested())
             loop.quit();
     });
     check.start(kStopCheckMs / 4);
@@ -62,7 +55,7 @@ int connect(Session &session, QTextStream &err) {
                s == Session::State::Failed;
     };
     waitFor(settled, std::numeric_limits<int>::max());
-    if (g_stop) {
+    if (stopRequested()) {
         err << CliRecordTr::tr("tipscope-cli: interrupted before the recording started")
             << Qt::endl;
         return kUsage;
@@ -127,8 +120,7 @@ int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err) {
             << Qt::endl;
         return kUsage;
     }
-    std::signal(SIGINT, requestStop);
-    std::signal(SIGTERM, requestStop);
+    catchStopSignals();
 
     Session session;
     session.connectTo(sessionSettingsOf(o));
