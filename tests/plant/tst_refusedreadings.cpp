@@ -5,43 +5,23 @@
 // paced at 19200 baud like a station's line: unpaced, a program that fills its wire would spin
 // both processes at full speed and starve the tests running beside this one.
 #include "../mqtt/mqtttesting.h"
-#include "agentprocess.h"
-#include "journal/journalreader.h"
+#include "journaledfrontend.h"
 #include "mosquittobroker.h"
 #include "ptyfixtures.h"
 
-#include <QProcess>
 #include <QRegularExpression>
-#include <QTemporaryDir>
 #include <QTest>
-#include <csignal>
 
 using namespace tipscope;
 using namespace tipscope::testing;
 using journal::JournalEvent;
-using journal::JournalReader;
 
 namespace {
 
-// The joints of the journal at `path`; empty while it cannot be read yet.
-QList<journal::StoredJoint> jointsIn(const QString &path) {
-    JournalReader reader;
-    if (!reader.open(path))
-        return {};
-    const auto joints = reader.joints({});
-    return joints ? joints.value() : QList<journal::StoredJoint>();
-}
-
 // What the journal says about reading `command`.
-QStringList refusalsIn(const QString &path, const QByteArray &command) {
-    JournalReader reader;
-    if (!reader.open(path))
-        return {};
-    journal::EventFilter filter;
-    filter.kinds = {JournalEvent::Kind::Communication};
-    const auto events = reader.events(filter);
+QStringList refusalsIn(const JournaledFrontEnd &frontEnd, const QByteArray &command) {
     QStringList said;
-    for (const auto &e : events ? events.value() : QList<journal::StoredEvent>())
+    for (const auto &e : frontEnd.events(JournalEvent::Kind::Communication))
         if (e.record.text.contains(QString::fromLatin1(command)))
             said.append(e.record.text);
     return said;
@@ -82,20 +62,9 @@ void TestRefusedReadings::aRefusedReadingCostsOnlyItself() {
                   &error);
     QVERIFY2(!line.isEmpty(), qPrintable(error));
 
-    QTemporaryDir dir;
-    QString journalPath = dir.filePath(QStringLiteral("journal.sqlite"));
-    QProcess monitor;
-    AgentProcess agentProcess;
-    if (agent) {
-        agentProcess.configure(line, m_broker.port());
-        QVERIFY2(agentProcess.start(&error), qPrintable(error));
-        journalPath = agentProcess.journalPath();
-    } else {
-        monitor.start(binaryPath(QStringLiteral("tipscope-cli")),
-                      {QStringLiteral("--tcp"), line, QStringLiteral("monitor"),
-                       QStringLiteral("--journal"), journalPath});
-        QVERIFY2(monitor.waitForStarted(5000), qPrintable(monitor.errorString()));
-    }
+    JournaledFrontEnd frontEnd(agent ? JournaledFrontEnd::Kind::Agent
+                                     : JournaledFrontEnd::Kind::Monitor);
+    QVERIFY2(frontEnd.start(line, m_broker.port(), &error), qPrintable(error));
 
     // A joint on port 1 once the port is at work at its temperature and the program saw it
     // settle (no joint without a baseline: the first one, made as soon as the port is hot, may
@@ -111,15 +80,14 @@ void TestRefusedReadings::aRefusedReadingCostsOnlyItself() {
         20000));
     QVERIFY2(QTest::qWaitFor(
                  [&] {
-                     if (QTest::qWaitFor([&] { return !jointsIn(journalPath).isEmpty(); }, 6000))
+                     if (QTest::qWaitFor([&] { return !frontEnd.joints().isEmpty(); }, 6000))
                          return true;
                      (void)sim.command(QStringLiteral("joint 1 40 800"));
                      return false;
                  },
                  30000),
-             qPrintable(agent ? agentProcess.log()
-                              : QString::fromLocal8Bit(monitor.readAllStandardError())));
-    const QList<journal::StoredJoint> joints = jointsIn(journalPath);
+             qPrintable(frontEnd.log()));
+    const QList<journal::StoredJoint> joints = frontEnd.joints();
     const model::JointRecord &j = joints.first().record;
     QCOMPARE(j.port, 1);
     // Read on a 19200-baud line, a 200 ms drop is seen by a reading every 100-160 ms: the
@@ -129,20 +97,18 @@ void TestRefusedReadings::aRefusedReadingCostsOnlyItself() {
     QVERIFY2(qAbs(*j.recoveryMs - 800) <= 250, qPrintable(QString::number(*j.recoveryMs)));
     QVERIFY(j.verdict != model::JointVerdict::Incomplete);
     // The refusal is journaled once, with the station's reason.
-    QVERIFY(QTest::qWaitFor([&] { return !refusalsIn(journalPath, command).isEmpty(); }, 10000));
-    const QStringList refusals = refusalsIn(journalPath, command);
+    QVERIFY(QTest::qWaitFor([&] { return !refusalsIn(frontEnd, command).isEmpty(); }, 10000));
+    const QStringList refusals = refusalsIn(frontEnd, command);
     QVERIFY2(refusals.size() == 1, qPrintable(refusals.join(QLatin1Char('\n'))));
     QVERIFY2(refusals.first().contains(QStringLiteral("00004")) ||
                  refusals.first().contains(QStringLiteral("NAK")),
              qPrintable(refusals.first()));
 
-    if (agent) {
-        QCOMPARE(agentProcess.stop(), 0);
+    const int exitStatus = frontEnd.stop();
+    QVERIFY2(exitStatus == 0, qPrintable(QString::number(exitStatus) + frontEnd.log()));
+    if (agent)
         return;
-    }
-    ::kill(pid_t(monitor.processId()), SIGINT);
-    QVERIFY(monitor.waitForFinished(15000));
-    const QString out = QString::fromUtf8(monitor.readAllStandardOutput());
+    const QString out = frontEnd.output();
     // The tips were printed all along: every cycle after the first reads "P1 <tip>/<setpoint>".
     static const QRegularExpression tipShown(QStringLiteral("P1 \\d+/\\d+ °C"));
     const QStringList cycles = out.split(QLatin1Char('\n')).filter(QStringLiteral(" P1 "));
