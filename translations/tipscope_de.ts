@@ -3084,12 +3084,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="244"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="246"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Verlorene Einträge: %1. Grund: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="333"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="335"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
     </message>
@@ -3714,84 +3714,89 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="212"/>
+        <location filename="../lib/model/profile.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="131"/>
+        <source>%1 bytes; a profile is at most %2</source>
+        <translation>%1 Bytes; ein Profil hat höchstens %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="145"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="149"/>
+        <location filename="../lib/model/profile.cpp" line="158"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="160"/>
+        <location filename="../lib/model/profile.cpp" line="169"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="168"/>
+        <location filename="../lib/model/profile.cpp" line="177"/>
         <source>the profile has no values</source>
         <translation>das Profil enthält keine Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="175"/>
+        <location filename="../lib/model/profile.cpp" line="184"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="190"/>
+        <location filename="../lib/model/profile.cpp" line="199"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="202"/>
+        <location filename="../lib/model/profile.cpp" line="211"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="206"/>
-        <source>%1 is %2 bytes; a profile is at most %3</source>
-        <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
+        <location filename="../lib/model/profile.cpp" line="216"/>
+        <source>%1 is %2</source>
+        <translation>%1 hat %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="228"/>
+        <location filename="../lib/model/profile.cpp" line="236"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="132"/>
+        <location filename="../lib/model/profile.cpp" line="141"/>
         <source>not a valid JSON file: %1</source>
         <translation>keine gültige JSON-Datei: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="143"/>
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>mehr als einmal angegeben, daher ist unklar, welcher Wert gemeint ist: %1; es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="101"/>
+        <location filename="../lib/model/profilejson.cpp" line="129"/>
         <source>a NUL byte at byte %1</source>
         <translation>ein NUL-Byte bei Byte %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="102"/>
+        <location filename="../lib/model/profilejson.cpp" line="130"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>Steuerzeichen 0x%1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152"/>
+        <location filename="../lib/model/profile.cpp" line="161"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>Profilschema %1 wird nicht unterstützt (diese Version liest die Schemas %2 bis %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="179"/>
+        <location filename="../lib/model/profile.cpp" line="188"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;, oder ein Objekt mit einem in &quot;raw&quot; (und Text in &quot;name&quot; und &quot;value&quot;)</translation>
     </message>
@@ -3936,6 +3941,29 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>ProfileRequest</name>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="37"/>
+        <source>&quot;request_id&quot; must be text of at most %1 characters, without control characters</source>
+        <translation>&quot;request_id&quot; muss Text mit höchstens %1 Zeichen sein, ohne Steuerzeichen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="53"/>
+        <source>the request is %1; nothing will be written</source>
+        <translation>die Anfrage hat %1; nichts wird geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="72"/>
+        <source>given more than once, so which one is meant is unclear: %1; nothing will be written</source>
+        <translation>mehr als einmal angegeben, daher ist unklar, welches gemeint ist: %1; nichts wird geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="79"/>
+        <source>&quot;profile&quot; must be a profile: an object as tipscope-cli profile save writes it</source>
+        <translation>&quot;profile&quot; muss ein Profil sein: ein Objekt, wie tipscope-cli profile save es schreibt</translation>
+    </message>
+</context>
+<context>
     <name>RemoteApply</name>
     <message>
         <location filename="../lib/plant/remoteapply.cpp" line="76"/>
@@ -3963,12 +3991,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>auf dieses Gerät wird gerade ein anderes Profil angewendet</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="98"/>
-        <source>not a profile: %1</source>
-        <translation>kein Profil: %1</translation>
+        <location filename="../lib/plant/remoteapply.cpp" line="95"/>
+        <source>profile refused: %1</source>
+        <translation>Profil abgelehnt: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/plant/remoteapply.cpp" line="128"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="125"/>
         <source>%n setting(s) not taken</source>
         <translation>
             <numerusform>%n Einstellung nicht übernommen</numerusform>
@@ -3976,17 +4004,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="157"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="154"/>
         <source>Profile applied through MQTT for %1</source>
         <translation>Profil über MQTT für %1 angewendet</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="158"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="155"/>
         <source>Profile through MQTT for %1 not applied: %2</source>
         <translation>Profil über MQTT für %1 nicht angewendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="159"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="156"/>
         <source>an unnamed client</source>
         <translation>einen unbenannten Client</translation>
     </message>

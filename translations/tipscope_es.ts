@@ -3085,12 +3085,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>No se puede crear la carpeta %1 para el diario.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="244"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="246"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Registros perdidos: %1. Motivo: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="333"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="335"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>El diario se cerró antes de poder escribirlos: %1</translation>
     </message>
@@ -3715,84 +3715,89 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="212"/>
+        <location filename="../lib/model/profile.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="131"/>
+        <source>%1 bytes; a profile is at most %2</source>
+        <translation>%1 bytes; un perfil tiene como máximo %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="145"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="149"/>
+        <location filename="../lib/model/profile.cpp" line="158"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="160"/>
+        <location filename="../lib/model/profile.cpp" line="169"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>familia de equipo desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="168"/>
+        <location filename="../lib/model/profile.cpp" line="177"/>
         <source>the profile has no values</source>
         <translation>el perfil no tiene valores</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="175"/>
+        <location filename="../lib/model/profile.cpp" line="184"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="190"/>
+        <location filename="../lib/model/profile.cpp" line="199"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>el perfil se rechaza, no se escribirá nada:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="202"/>
+        <location filename="../lib/model/profile.cpp" line="211"/>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="206"/>
-        <source>%1 is %2 bytes; a profile is at most %3</source>
-        <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
+        <location filename="../lib/model/profile.cpp" line="216"/>
+        <source>%1 is %2</source>
+        <translation>%1 tiene %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="228"/>
+        <location filename="../lib/model/profile.cpp" line="236"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="132"/>
+        <location filename="../lib/model/profile.cpp" line="141"/>
         <source>not a valid JSON file: %1</source>
         <translation>no es un archivo JSON válido: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="143"/>
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>indicado más de una vez, así que no está claro qué valor se quiere: %1; no se escribirá nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="101"/>
+        <location filename="../lib/model/profilejson.cpp" line="129"/>
         <source>a NUL byte at byte %1</source>
         <translation>un byte NUL en el byte %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="102"/>
+        <location filename="../lib/model/profilejson.cpp" line="130"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>carácter de control 0x%1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152"/>
+        <location filename="../lib/model/profile.cpp" line="161"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>el esquema de perfil %1 no es compatible (esta versión lee los esquemas %2 a %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="179"/>
+        <location filename="../lib/model/profile.cpp" line="188"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;, o un objeto con uno en &quot;raw&quot; (y texto en &quot;name&quot; y &quot;value&quot;)</translation>
     </message>
@@ -3937,6 +3942,29 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>ProfileRequest</name>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="37"/>
+        <source>&quot;request_id&quot; must be text of at most %1 characters, without control characters</source>
+        <translation>&quot;request_id&quot; debe ser un texto de como máximo %1 caracteres, sin caracteres de control</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="53"/>
+        <source>the request is %1; nothing will be written</source>
+        <translation>la solicitud tiene %1; no se escribirá nada</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="72"/>
+        <source>given more than once, so which one is meant is unclear: %1; nothing will be written</source>
+        <translation>indicado más de una vez, así que no está claro cuál se quiere decir: %1; no se escribirá nada</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="79"/>
+        <source>&quot;profile&quot; must be a profile: an object as tipscope-cli profile save writes it</source>
+        <translation>&quot;profile&quot; debe ser un perfil: un objeto como lo escribe tipscope-cli profile save</translation>
+    </message>
+</context>
+<context>
     <name>RemoteApply</name>
     <message>
         <location filename="../lib/plant/remoteapply.cpp" line="76"/>
@@ -3964,12 +3992,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>ya se está aplicando otro perfil a este dispositivo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="98"/>
-        <source>not a profile: %1</source>
-        <translation>no es un perfil: %1</translation>
+        <location filename="../lib/plant/remoteapply.cpp" line="95"/>
+        <source>profile refused: %1</source>
+        <translation>perfil rechazado: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/plant/remoteapply.cpp" line="128"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="125"/>
         <source>%n setting(s) not taken</source>
         <translation>
             <numerusform>%n ajuste no aceptado</numerusform>
@@ -3977,17 +4005,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="157"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="154"/>
         <source>Profile applied through MQTT for %1</source>
         <translation>Perfil aplicado por MQTT para %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="158"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="155"/>
         <source>Profile through MQTT for %1 not applied: %2</source>
         <translation>Perfil por MQTT para %1 no aplicado: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="159"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="156"/>
         <source>an unnamed client</source>
         <translation>un cliente sin nombre</translation>
     </message>

@@ -17,6 +17,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLoggingCategory>
+#include <QTemporaryFile>
 #include <QTest>
 #include <csignal>
 
@@ -100,6 +101,25 @@ private:
                 return false;
             },
             20000);
+    }
+
+    // Publishes a command of client tech1 (mosquitto_pub's `payload` options: -m TEXT or -f
+    // FILE) and waits for the agent's result.
+    std::optional<Message> commandResult(const QStringList &payload) {
+        // The agent hears commands once its device is online.
+        if (!m_subscriber->waitFor(kRoot + QStringLiteral("/status"), isOnline, 20000))
+            return std::nullopt;
+        const qsizetype from = m_subscriber->count();
+        QProcess pub;
+        startTool(pub, QStringLiteral("mosquitto_pub"), m_broker,
+                  QStringList{QStringLiteral("-q"), QStringLiteral("1"), QStringLiteral("-t"),
+                              kRoot + QStringLiteral("/cmd/apply-profile/tech1")} +
+                      payload);
+        if (!pub.waitForFinished(10000))
+            return std::nullopt;
+        return m_subscriber->waitFor(
+            kRoot + QStringLiteral("/cmd/result"), [](const QJsonObject &) { return true; }, 20000,
+            from);
     }
 
     static BrokerOptions persistent() {
@@ -225,16 +245,7 @@ private Q_SLOTS:
         const QString profile = QStringLiteral(
             R"({"request_id": "r-1", "profile": {"format": "tipscope-profile", "schema": 1,
                 "family": "DME", "values": {"S21": "00200"}}})");
-        const qsizetype from = m_subscriber->count();
-        QProcess pub;
-        startTool(pub, QStringLiteral("mosquitto_pub"), m_broker,
-                  {QStringLiteral("-q"), QStringLiteral("1"), QStringLiteral("-t"),
-                   kRoot + QStringLiteral("/cmd/apply-profile/tech1"), QStringLiteral("-m"),
-                   profile});
-        QVERIFY(pub.waitForFinished(10000));
-        const auto result = m_subscriber->waitFor(
-            kRoot + QStringLiteral("/cmd/result"), [](const QJsonObject &) { return true; }, 20000,
-            from);
+        const auto result = commandResult({QStringLiteral("-m"), profile});
         QVERIFY2(result, qPrintable(m_agent->log()));
         const QJsonObject r = result->payload;
         QVERIFY2(r.value(QStringLiteral("ok")).toBool(), qPrintable(QJsonDocument(r).toJson()));
@@ -260,6 +271,48 @@ private Q_SLOTS:
                 return false;
             },
             10000));
+    }
+
+    // Issue 38: the wrapper was read by QJsonDocument, which kept the last of two keys, and the
+    // profile re-serialised before the file's checks saw it: 450 went out where a file is refused.
+    void aRemoteProfileThatMeansTwoThingsIsRefusedWithNothingWritten_data() {
+        QTest::addColumn<QByteArray>("request");
+        QTest::addColumn<QString>("reason");
+        const QByteArray profile300 =
+            R"({"format": "tipscope-profile", "schema": 1, "family": "DME", )"
+            R"("values": {"S21": "00300"}})";
+        QTest::newRow("a code twice")
+            << QByteArray(R"({"request_id": "r-2", "profile": {"format": "tipscope-profile",
+                "schema": 1, "family": "DME", "values": {"S21": "00300", "S21": "00450"}}})")
+            << QStringLiteral("more than once, so which value is meant is unclear: S21");
+        QTest::newRow("two profiles")
+            << QByteArray(R"({"request_id": "r-2", "profile": )" + profile300 + R"(, "profile": )" +
+                          QByteArray(profile300).replace("300", "450") + "}")
+            << QStringLiteral("more than once, so which one is meant is unclear: profile");
+        QTest::newRow("2 MB")
+            << QByteArray(R"({"request_id": "r-2", "profile": )" +
+                          QByteArray(profile300)
+                              .replace("\"values\"", "\"comment\": \"" + QByteArray(2 << 20, 'c') +
+                                                         "\", \"values\"") +
+                          "}")
+            << QStringLiteral("a profile is at most 1048576");
+    }
+
+    void aRemoteProfileThatMeansTwoThingsIsRefusedWithNothingWritten() {
+        QFETCH(QByteArray, request);
+        QFETCH(QString, reason);
+        const QString before = m_sim.command(QStringLiteral("get S21"));
+        QVERIFY2(before.startsWith(QLatin1String("S21=")), qPrintable(before));
+        QTemporaryFile file; // mosquitto_pub -m cannot carry 2 MB in one argument
+        QVERIFY(file.open() && file.write(request) == request.size() && file.flush());
+        const auto result = commandResult({QStringLiteral("-f"), file.fileName()});
+        QVERIFY2(result, qPrintable(m_agent->log()));
+        const QJsonObject r = result->payload;
+        const QString json = QString::fromUtf8(QJsonDocument(r).toJson());
+        QVERIFY2(!r.value(QStringLiteral("ok")).toBool(), qPrintable(json));
+        QVERIFY2(r.value(QStringLiteral("error")).toString().contains(reason), qPrintable(json));
+        QVERIFY(!r.contains(QStringLiteral("changed")));
+        QCOMPARE(m_sim.command(QStringLiteral("get S21")), before);
     }
 
     void aCommandWithoutAClientNameIsRefused() {
