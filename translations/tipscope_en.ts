@@ -15,7 +15,7 @@
 <context>
     <name>CliCommands</name>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="52"/>
+        <location filename="../app/cli/clicommands.cpp" line="53"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n raw byte, not a frame (%1)</numerusform>

@@ -35,7 +35,7 @@ bool takesValue(const QString &command, const QString &option) {
 const QMap<QString, QStringList> kCommandOptions = {
     {QStringLiteral("detect"), {QStringLiteral("json"), QStringLiteral("scan")}},
     {QStringLiteral("read"), {QStringLiteral("raw")}},
-    {QStringLiteral("write"), {QStringLiteral("raw")}},
+    {QStringLiteral("write"), {QStringLiteral("raw"), QStringLiteral("force")}},
     {QStringLiteral("send"), {}},
     {QStringLiteral("monitor"),
      {QStringLiteral("interval"), QStringLiteral("duration"), QStringLiteral("csv"),
@@ -85,7 +85,11 @@ QString CliParser::usage() {
         "  detect [--json] [--scan]  one line per device: \"<address or --> <model> <family> "
         "<version>\"\n"
         "  read CODE... [--raw]      one line per code: \"<CODE> <value> <unit>\"\n"
-        "  write CODE VALUE [--raw]  validate, send, and read back\n"
+        "  write CODE VALUE [--raw [--force]]\n"
+        "                            validate against the catalog and the device's limits (MIT,\n"
+        "                            MAT: refused while unknown), send, and read back; --raw\n"
+        "                            sends VALUE as the data field, refused outside the catalog's\n"
+        "                            range unless --force\n"
         "  send HEX                  send a raw frame; print the answer in hex and decoded\n"
         "  monitor [--interval MS] [--duration S] [--csv FILE [--csv-one-file]]\n"
         "          [--limit RULE] [--journal FILE]\n"

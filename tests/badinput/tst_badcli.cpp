@@ -87,6 +87,8 @@ private Q_SLOTS:
     void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite();
     void profilesThatMeanTwoThingsAreRefusedByName_data();
     void profilesThatMeanTwoThingsAreRefusedByName();
+    void aWriteWhoseLimitsStayUnknownIsRefused();
+    void aRawWriteOutsideTheCatalogGoesOutOnlyWithForce();
 
 private:
     [[nodiscard]] WireCount wire();
@@ -248,6 +250,13 @@ void TestBadCli::refusedValuesWriteNothing_data() {
                                                                        "50"}
                                       << "printable";
     QTest::newRow("raw too long") << st1 + QByteArrayList{"--raw", big('0')} << "longer";
+    // Issue 38: a field made by hand went out whatever the catalog allows.
+    QTest::newRow("raw above the catalog")
+        << st1 + QByteArrayList{"--raw", "00600"} << "(--force sends it anyway)";
+    QTest::newRow("raw off step") << st1 + QByteArrayList{"--raw", "00352"}
+                                  << "allowed is 90 to 500 °C in steps of 5";
+    QTest::newRow("raw no number")
+        << st1 + QByteArrayList{"--raw", "ABCDE"} << "'ABCDE' is no data field of ST1";
     QTest::newRow("send empty hex") << QByteArrayList{"--port", "@PORT", "send", ""} << nothing;
     QTest::newRow("send bad digit")
         << QByteArrayList{"--port", "@PORT", "send", "02 3G"} << nothing;
@@ -405,6 +414,10 @@ void TestBadCli::whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite_data() {
     QTest::newRow("write: ST1 below the device's MIT")
         << QByteArrayList{"MIT 300", "ST1 350"} << QByteArray()
         << QByteArrayList{"write", "ST1", "250"} << "allowed is 300 °C to 500 °C";
+    QTest::newRow("write: a raw field above the device's MAT")
+        << QByteArrayList{"MAT 400"} << QByteArray()
+        << QByteArrayList{"write", "ST1", "--raw", "00450"}
+        << "450 °C is not allowed for Selected temperature: allowed is 90 °C to 400 °C";
     QTest::newRow("write: MIT above the device's MAT")
         << QByteArrayList{"MAT 400"} << QByteArray() << QByteArrayList{"write", "MIT", "450"}
         << "450 °C is not allowed for Minimum temperature";
@@ -441,6 +454,27 @@ void TestBadCli::profilesThatMeanTwoThingsAreRefusedByName() {
     QFETCH(QByteArray, profile);
     QFETCH(QString, needle);
     checkRefusedWithoutAWrite(profile, {"profile", "apply", "@FILE"}, needle);
+}
+
+void TestBadCli::aWriteWhoseLimitsStayUnknownIsRefused() {
+    // Issue 38: an answer whose data field is no value left MAT unknown, and ST1 480 went out
+    // unchecked. Every value the station gives is garbled here, each read tried three times.
+    QVERIFY(m_sim.command(QStringLiteral("bad-data 1")).startsWith(QLatin1String("ok")));
+    check({"--port", "@PORT", "--addr", "00:01", "write", "ST1", "480"}, 2,
+          QStringLiteral("ST1 is bounded by MIT, which could not be read: the device answered"));
+    QVERIFY(m_sim.command(QStringLiteral("bad-data 0")).startsWith(QLatin1String("ok")));
+}
+
+void TestBadCli::aRawWriteOutsideTheCatalogGoesOutOnlyWithForce() {
+    const WireCount before = wire();
+    const Run r = runCli(withPort(
+        {"--port", "@PORT", "--addr", "00:01", "write", "ST1", "--raw", "00600", "--force"}));
+    QVERIFY2(!sanitizerReported(r), qPrintable(r.err));
+    QCOMPARE(wire().writes, before.writes + 1);
+    // The station's own value again, for the tests after this one.
+    QCOMPARE(
+        runCli(withPort({"--port", "@PORT", "--addr", "00:01", "write", "ST1", "350"})).exitCode,
+        0);
 }
 
 void TestBadCli::checkRefusedWithoutAWrite(const QByteArray &profile, QByteArrayList args,
