@@ -1866,58 +1866,63 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="175"/>
+        <location filename="../app/cli/climonitor.cpp" line="177"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="288"/>
+        <location filename="../app/cli/climonitor.cpp" line="299"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="259"/>
+        <location filename="../app/cli/climonitor.cpp" line="270"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="226"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="22"/>
+        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74"/>
+        <location filename="../app/cli/climonitor.cpp" line="76"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="98"/>
+        <location filename="../app/cli/climonitor.cpp" line="100"/>
         <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
         <translation>tipscope-cli: %1 zu schreiben ist fehlgeschlagen: %2; die Überwachung geht ohne die Datei weiter</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="158"/>
+        <location filename="../app/cli/climonitor.cpp" line="160"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="192"/>
+        <location filename="../app/cli/climonitor.cpp" line="194"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: der Arbeitsbereich %1 hat keine Linien</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="227"/>
+        <location filename="../app/cli/climonitor.cpp" line="229"/>
         <source>permission denied</source>
         <translation>keine Berechtigung</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <location filename="../app/cli/climonitor.cpp" line="230"/>
         <source>no such folder</source>
         <translation>diesen Ordner gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="371"/>
+        <location filename="../app/cli/climonitor.cpp" line="237"/>
+        <source>tipscope-cli: lines %1 and %2 would both write %3; rename one</source>
+        <translation>tipscope-cli: die Leitungen %1 und %2 würden beide %3 schreiben; benennen Sie eine um</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="382"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 Einträge konnten nicht im Journal %2 gespeichert werden: %3</translation>
     </message>

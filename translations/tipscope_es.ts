@@ -1866,58 +1866,63 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="175"/>
+        <location filename="../app/cli/climonitor.cpp" line="177"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="288"/>
+        <location filename="../app/cli/climonitor.cpp" line="299"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="259"/>
+        <location filename="../app/cli/climonitor.cpp" line="270"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="226"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="22"/>
+        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74"/>
+        <location filename="../app/cli/climonitor.cpp" line="76"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="98"/>
+        <location filename="../app/cli/climonitor.cpp" line="100"/>
         <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
         <translation>tipscope-cli: no se pudo escribir %1: %2; la monitorización sigue sin el archivo</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="158"/>
+        <location filename="../app/cli/climonitor.cpp" line="160"/>
         <source>reconnected to %1</source>
         <translation>reconectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="192"/>
+        <location filename="../app/cli/climonitor.cpp" line="194"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: el espacio de trabajo %1 no tiene líneas</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="227"/>
+        <location filename="../app/cli/climonitor.cpp" line="229"/>
         <source>permission denied</source>
         <translation>permiso denegado</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <location filename="../app/cli/climonitor.cpp" line="230"/>
         <source>no such folder</source>
         <translation>no existe esa carpeta</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="371"/>
+        <location filename="../app/cli/climonitor.cpp" line="237"/>
+        <source>tipscope-cli: lines %1 and %2 would both write %3; rename one</source>
+        <translation>tipscope-cli: las líneas %1 y %2 escribirían ambas %3; cambie el nombre de una</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="382"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 registros no se pudieron guardar en el diario %2: %3</translation>
     </message>
