@@ -1378,44 +1378,44 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="99"/>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="118"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="142"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="119"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="143"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>die Zeile ist länger als %1 Bytes (ist das eine Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="147"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="107"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="148"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>die Datei enthält Binärdaten, keinen CSV-Text</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="153"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="154"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="157"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="158"/>
         <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>mehr als %1 Kommentarzeilen („#“); eine Aufzeichnung hat wenige, und eine je Kanal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="194"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="195"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>die Kopfzeile muss mit &quot;time&quot; beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="198"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 Spalten; die Wiedergabe liest höchstens %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="211"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="212"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>Spalte %1 &quot;%2&quot; ist weder &quot;port&lt;n&gt; &lt;Reihe&gt; [Einheit]&quot; noch &quot;feeder &lt;Reihe&gt; [Einheit]&quot;</translation>
     </message>
@@ -1425,77 +1425,77 @@
         <translation>Spalte %1 &quot;%2&quot;: die Einheit muss &quot;%3&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="227"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="255"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="258"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="256"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="259"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="235"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="236"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>Spalte %1 &quot;%2&quot; kommt zweimal vor</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="241"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="244"/>
         <source>the header names no series columns</source>
         <translation>die Kopfzeile nennt keine Spalten mit Datenreihen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="287"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>Spalte %1: &quot;%2&quot; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="291"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="294"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 hat nur in einem Teil seiner Spalten Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="301"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 Zellen, aber die Kopfzeile hat %2 Spalten</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="303"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; ist keine Zeitangabe nach ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="310"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>die Zeit %1 liegt vor der der vorigen Zeile (die Zeilen müssen zeitlich geordnet sein)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="318"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="322"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 hat mehr als %2 Messwerte, mehr als die Wiedergabe fasst; teilen Sie die Datei auf</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="342"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="346"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>das Ereignis &quot;%1&quot; hat nicht die Form &quot;&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="167"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="168"/>
         <source>a quoted cell is not closed</source>
         <translation>eine Zelle in Anführungszeichen ist nicht geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="375"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="379"/>
         <source>the file has a header but no rows</source>
         <translation>die Datei hat eine Kopfzeile, aber keine Zeilen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="373"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="377"/>
         <source>the file is empty or holds only comments</source>
         <translation>die Datei ist leer oder enthält nur Kommentare</translation>
     </message>
@@ -1782,22 +1782,27 @@
 <context>
     <name>CliContext</name>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="42"/>
+        <location filename="../app/cli/clicontext.cpp" line="44"/>
         <source>&apos;%1&apos; is not a context line: write work_order=W, board_serial=S or operator=O</source>
         <translation>„%1“ ist keine Kontextzeile: schreiben Sie work_order=W, board_serial=S oder operator=O</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="58"/>
+        <location filename="../app/cli/clicontext.cpp" line="60"/>
         <source>cannot read standard input</source>
         <translation>die Standardeingabe kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="93"/>
+        <location filename="../app/cli/clicontext.cpp" line="95"/>
+        <source>tipscope-cli: refused, nothing was changed: %1</source>
+        <translation>tipscope-cli: abgelehnt, nichts wurde geändert: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="100"/>
         <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
         <translation>tipscope-cli: context nimmt show, set [--work-order W] [--serial S] [--operator O] [--stdin] oder clear</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="126"/>
+        <location filename="../app/cli/clicontext.cpp" line="133"/>
         <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
         <translation>tipscope-cli: limits nimmt show, set REGEL (etwa port=1,tool=C245,recovery=3.5,dip=60) oder clear</translation>
     </message>
@@ -1805,34 +1810,34 @@
 <context>
     <name>CliJoints</name>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="41"/>
+        <location filename="../app/cli/clijoints.cpp" line="42"/>
         <source>&apos;%1&apos; is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00</source>
         <translation>„%1“ ist keine Zeitangabe: schreiben Sie 24h, 30m, 7d, 2026-12-01 oder 2026-12-01T08:00</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <location filename="../app/cli/clijoints.cpp" line="67"/>
         <source>the journal has no device &apos;%1&apos;</source>
         <translation>das Journal kennt kein Gerät „%1“</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="66"/>
+        <location filename="../app/cli/clijoints.cpp" line="68"/>
         <source>&apos;%1&apos; names %2 devices; give one of:
   %3</source>
         <translation>„%1“ bezeichnet %2 Geräte; geben Sie eines davon an:
   %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="94"/>
+        <location filename="../app/cli/clijoints.cpp" line="96"/>
         <source>--port takes a port number from 1 to 4</source>
         <translation>--port nimmt eine Portnummer von 1 bis 4</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="103"/>
+        <location filename="../app/cli/clijoints.cpp" line="105"/>
         <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
         <translation>--verdict nimmt ok, slow-recovery, too-deep oder incomplete</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="143"/>
+        <location filename="../app/cli/clijoints.cpp" line="145"/>
         <source>tipscope-cli: give --json or --csv, not both</source>
         <translation>tipscope-cli: geben Sie --json oder --csv an, nicht beides</translation>
     </message>
@@ -2863,47 +2868,47 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointLimitRules</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="49"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="51"/>
         <source>the longest recovery must be more than 0 s and at most %1 s</source>
         <translation>die längste Erholzeit muss mehr als 0 s und höchstens %1 s betragen</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="57"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="59"/>
         <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
         <translation>der tiefste Einbruch muss eine ganze Zahl von Kelvin zwischen 1 und %1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="65"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="67"/>
         <source>the tip wear share must be more than 0 and at most 10</source>
         <translation>der Anteil für Spitzenverschleiß muss größer als 0 und höchstens 10 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="71"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="73"/>
         <source>a port is a number from 1 to 4</source>
         <translation>ein Port ist eine Zahl von 1 bis 4</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="109"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="111"/>
         <source>%1 must be a number</source>
         <translation>%1 muss eine Zahl sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="168"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="170"/>
         <source>joint limits: %1</source>
         <translation>Lötstellen-Grenzwerte: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="175"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="177"/>
         <source>joint limit rule %1: %2</source>
         <translation>Lötstellen-Grenzwertregel %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="202"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
         <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
         <translation>„%1“ ist kein Grenzwert: schreiben Sie port=N, tool=NAME, recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL, durch Kommas getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="210"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="212"/>
         <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
         <translation>„%1“ setzt keinen Grenzwert: geben Sie recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL an</translation>
     </message>
@@ -4475,7 +4480,17 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>WorkContextJson</name>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="26"/>
+        <location filename="../lib/model/workcontextjson.cpp" line="20"/>
+        <source>%1 has %2 characters; at most %3 are kept</source>
+        <translation>%1 hat %2 Zeichen; höchstens %3 werden gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="27"/>
+        <source>%1 holds a control character (%2) at character %3</source>
+        <translation>%1 enthält ein Steuerzeichen (%2) an Zeichen %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="53"/>
         <source>%1 must be text</source>
         <translation>%1 muss Text sein</translation>
     </message>
@@ -8092,32 +8107,32 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::gui::WorkContextDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="24"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="27"/>
         <source>Work context</source>
         <translation>Arbeitskontext</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="34"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="37"/>
         <source>Stamped on every joint and event from now on, by every TipScope program on this computer, until it is changed.</source>
         <translation>Wird ab jetzt jeder Lötstelle und jedem Ereignis mitgegeben, von jedem TipScope-Programm auf diesem Rechner, bis er geändert wird.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="40"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="43"/>
         <source>Work order:</source>
         <translation>Auftrag:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="41"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="44"/>
         <source>Board serial:</source>
         <translation>Seriennummer der Platine:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="42"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
         <source>Operator:</source>
         <translation>Bediener:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="48"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>

@@ -1378,44 +1378,44 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="99"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="118"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="142"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="119"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="143"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>la línea supera los %1 bytes (¿es un CSV de gráficos?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="147"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="107"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="148"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>el archivo contiene datos binarios, no texto CSV</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="153"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="154"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>el texto no está en UTF-8 (guarde el archivo como &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="157"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="158"/>
         <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>más de %1 líneas de comentario («#»); una grabación tiene unas pocas, y una por canal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="194"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="195"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>la fila de cabecera debe empezar por &quot;time&quot; (¿es un CSV de gráficos escrito por TipScope?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="198"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 columnas; la reproducción lee como máximo %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="211"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="212"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>la columna %1 &quot;%2&quot; no es &quot;port&lt;n&gt; &lt;serie&gt; [unidad]&quot; ni &quot;feeder &lt;serie&gt; [unidad]&quot;</translation>
     </message>
@@ -1425,77 +1425,77 @@
         <translation>columna %1 &quot;%2&quot;: la unidad debería ser &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="227"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="255"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="258"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="256"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="259"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="235"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="236"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>la columna %1 &quot;%2&quot; aparece dos veces</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="241"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="244"/>
         <source>the header names no series columns</source>
         <translation>la cabecera no nombra ninguna columna de serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="287"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>columna %1: &quot;%2&quot; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="291"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="294"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 tiene valores en algunas de sus columnas, pero no en todas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="301"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 celdas, pero la cabecera tiene %2 columnas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="303"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; no es una hora ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="310"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>la hora %1 es anterior a la de la fila precedente (las filas deben estar en orden cronológico)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="318"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="322"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 tiene más de %2 muestras, más de las que admite la reproducción; divida el archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="342"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="346"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>el evento &quot;%1&quot; no tiene la forma &quot;&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="167"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="168"/>
         <source>a quoted cell is not closed</source>
         <translation>una celda entre comillas no está cerrada</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="375"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="379"/>
         <source>the file has a header but no rows</source>
         <translation>el archivo tiene cabecera pero ninguna fila</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="373"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="377"/>
         <source>the file is empty or holds only comments</source>
         <translation>el archivo está vacío o solo contiene comentarios</translation>
     </message>
@@ -1782,22 +1782,27 @@
 <context>
     <name>CliContext</name>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="42"/>
+        <location filename="../app/cli/clicontext.cpp" line="44"/>
         <source>&apos;%1&apos; is not a context line: write work_order=W, board_serial=S or operator=O</source>
         <translation>«%1» no es una línea de contexto: escriba work_order=W, board_serial=S u operator=O</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="58"/>
+        <location filename="../app/cli/clicontext.cpp" line="60"/>
         <source>cannot read standard input</source>
         <translation>no se puede leer la entrada estándar</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="93"/>
+        <location filename="../app/cli/clicontext.cpp" line="95"/>
+        <source>tipscope-cli: refused, nothing was changed: %1</source>
+        <translation>tipscope-cli: rechazado, no se cambió nada: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="100"/>
         <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
         <translation>tipscope-cli: context admite show, set [--work-order W] [--serial S] [--operator O] [--stdin] o clear</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="126"/>
+        <location filename="../app/cli/clicontext.cpp" line="133"/>
         <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
         <translation>tipscope-cli: limits admite show, set REGLA (por ejemplo port=1,tool=C245,recovery=3.5,dip=60) o clear</translation>
     </message>
@@ -1805,34 +1810,34 @@
 <context>
     <name>CliJoints</name>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="41"/>
+        <location filename="../app/cli/clijoints.cpp" line="42"/>
         <source>&apos;%1&apos; is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00</source>
         <translation>«%1» no es una hora: escriba 24h, 30m, 7d, 2026-12-01 o 2026-12-01T08:00</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <location filename="../app/cli/clijoints.cpp" line="67"/>
         <source>the journal has no device &apos;%1&apos;</source>
         <translation>el diario no tiene ningún dispositivo «%1»</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="66"/>
+        <location filename="../app/cli/clijoints.cpp" line="68"/>
         <source>&apos;%1&apos; names %2 devices; give one of:
   %3</source>
         <translation>«%1» designa %2 dispositivos; indique uno de ellos:
   %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="94"/>
+        <location filename="../app/cli/clijoints.cpp" line="96"/>
         <source>--port takes a port number from 1 to 4</source>
         <translation>--port admite un número de puerto del 1 al 4</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="103"/>
+        <location filename="../app/cli/clijoints.cpp" line="105"/>
         <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
         <translation>--verdict admite ok, slow-recovery, too-deep o incomplete</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="143"/>
+        <location filename="../app/cli/clijoints.cpp" line="145"/>
         <source>tipscope-cli: give --json or --csv, not both</source>
         <translation>tipscope-cli: indique --json o --csv, no ambos</translation>
     </message>
@@ -2863,47 +2868,47 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>JointLimitRules</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="49"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="51"/>
         <source>the longest recovery must be more than 0 s and at most %1 s</source>
         <translation>la recuperación más larga debe ser de más de 0 s y como máximo %1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="57"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="59"/>
         <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
         <translation>la caída más profunda debe ser un número entero de kelvin entre 1 y %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="65"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="67"/>
         <source>the tip wear share must be more than 0 and at most 10</source>
         <translation>la proporción de desgaste de la punta debe ser mayor que 0 y como máximo 10</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="71"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="73"/>
         <source>a port is a number from 1 to 4</source>
         <translation>un puerto es un número del 1 al 4</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="109"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="111"/>
         <source>%1 must be a number</source>
         <translation>%1 debe ser un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="168"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="170"/>
         <source>joint limits: %1</source>
         <translation>límites de soldadura: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="175"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="177"/>
         <source>joint limit rule %1: %2</source>
         <translation>regla de límites de soldadura %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="202"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
         <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
         <translation>«%1» no es un límite: escriba port=N, tool=NOMBRE, recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN, separados por comas</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="210"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="212"/>
         <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
         <translation>«%1» no fija ningún límite: indique recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN</translation>
     </message>
@@ -4475,7 +4480,17 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>WorkContextJson</name>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="26"/>
+        <location filename="../lib/model/workcontextjson.cpp" line="20"/>
+        <source>%1 has %2 characters; at most %3 are kept</source>
+        <translation>%1 tiene %2 caracteres; se guardan como máximo %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="27"/>
+        <source>%1 holds a control character (%2) at character %3</source>
+        <translation>%1 contiene un carácter de control (%2) en el carácter %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="53"/>
         <source>%1 must be text</source>
         <translation>%1 debe ser texto</translation>
     </message>
@@ -8092,32 +8107,32 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::gui::WorkContextDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="24"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="27"/>
         <source>Work context</source>
         <translation>Contexto de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="34"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="37"/>
         <source>Stamped on every joint and event from now on, by every TipScope program on this computer, until it is changed.</source>
         <translation>A partir de ahora se registra con cada soldadura y cada evento, en todos los programas TipScope de este equipo, hasta que se cambie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="40"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="43"/>
         <source>Work order:</source>
         <translation>Orden de trabajo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="41"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="44"/>
         <source>Board serial:</source>
         <translation>Número de serie de la placa:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="42"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
         <source>Operator:</source>
         <translation>Operario:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="48"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>

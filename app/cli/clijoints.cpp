@@ -6,6 +6,7 @@
 #include "journal/jointexport.h"
 #include "journal/journal.h"
 #include "journal/journalreader.h"
+#include "protocol/elide.h"
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -40,7 +41,7 @@ protocol::Outcome<qint64> timeOf(const QString &text, qint64 nowMs) {
         return protocol::failure(
             CliJointsTr::tr(
                 "'%1' is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00")
-                .arg(text));
+                .arg(protocol::elided(text)));
     return t.toMSecsSinceEpoch();
 }
 
@@ -62,9 +63,10 @@ protocol::Outcome<QString> deviceKeyOf(const JournalReader &reader, const QStrin
     if (keys.size() == 1)
         return keys.first();
     if (keys.isEmpty())
-        return protocol::failure(CliJointsTr::tr("the journal has no device '%1'").arg(text));
+        return protocol::failure(
+            CliJointsTr::tr("the journal has no device '%1'").arg(protocol::elided(text)));
     return protocol::failure(CliJointsTr::tr("'%1' names %2 devices; give one of:\n  %3")
-                                 .arg(text)
+                                 .arg(protocol::elided(text))
                                  .arg(keys.size())
                                  .arg(keys.join(QStringLiteral("\n  "))));
 }

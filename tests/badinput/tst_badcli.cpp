@@ -88,6 +88,10 @@ private Q_SLOTS:
     void profilesThatMeanTwoThingsAreRefusedByName_data();
     void profilesThatMeanTwoThingsAreRefusedByName();
     void aWriteWhoseLimitsStayUnknownIsRefused();
+    void quotedInputIsCutWhereverItComesFrom_data();
+    void quotedInputIsCutWhereverItComesFrom();
+    void contextFieldsAreBoundedAndPrintable_data();
+    void contextFieldsAreBoundedAndPrintable();
     void aRawWriteOutsideTheCatalogGoesOutOnlyWithForce();
 
 private:
@@ -102,6 +106,9 @@ private:
     SocatPair m_pair;
     SimProcess m_sim;
     QByteArray m_port;
+    QTemporaryDir m_dir;
+    QByteArray m_journal; // a journal with nothing in it
+    QByteArray m_badCell; // a recording whose first value is 60 kB of text
 };
 
 void TestBadCli::initTestCase() {
@@ -112,6 +119,13 @@ void TestBadCli::initTestCase() {
                   .isEmpty(),
              qPrintable(error));
     m_port = m_pair.hostEnd().toLocal8Bit();
+    m_journal = m_dir.filePath(QStringLiteral("journal.sqlite")).toLocal8Bit();
+    QCOMPARE(runCli({"journal", "retention", "30", "--journal", m_journal}).exitCode, 0);
+    m_badCell = m_dir.filePath(QStringLiteral("bad-cell.csv")).toLocal8Bit();
+    QFile csv(QString::fromLocal8Bit(m_badCell));
+    QVERIFY(csv.open(QIODevice::WriteOnly));
+    csv.write("time,port1 tip [°C],events\n2026-12-06T08:00:00.000Z," + QByteArray(60 * 1024, 'x') +
+              ",\n");
 }
 
 WireCount TestBadCli::wire() {
@@ -124,7 +138,7 @@ WireCount TestBadCli::wire() {
 
 QByteArrayList TestBadCli::withPort(QByteArrayList args) const {
     for (QByteArray &a : args)
-        a.replace("@PORT", m_port);
+        a.replace("@PORT", m_port).replace("@JOURNAL", m_journal).replace("@BADCELL", m_badCell);
     return args;
 }
 
@@ -353,6 +367,74 @@ void TestBadCli::hugeArgumentsAreEchoedCutWithTheirLength() {
     static const QRegularExpression length(QStringLiteral("… \\(1024\\d\\d characters\\)"));
     QVERIFY2(first.contains(length), qPrintable(first));
     QCOMPARE(wire().writes, before.writes);
+}
+
+void TestBadCli::quotedInputIsCutWhereverItComesFrom_data() {
+    // Issue 38: these still echoed 60 to 100 kB.
+    QTest::addColumn<QByteArrayList>("args");
+    QTest::addColumn<int>("exitCode");
+    const QByteArray h = big('x');
+    QTest::newRow("limits set") << QByteArrayList{"limits", "set", h} << 2;
+    QTest::newRow("limits set, a rule without a limit")
+        << QByteArrayList{"limits", "set", "tool=" + h} << 2;
+    QTest::newRow("joints --device")
+        << QByteArrayList{"joints", "--device", h, "--journal", "@JOURNAL"} << 1;
+    QTest::newRow("joints --since")
+        << QByteArrayList{"joints", "--since", h, "--journal", "@JOURNAL"} << 1;
+    QTest::newRow("a bad CSV cell") << QByteArrayList{"measure", "@BADCELL"} << 2;
+    QTest::newRow("a context field")
+        << QByteArrayList{"context", "set", "--journal", "@JOURNAL", "--operator", h} << 2;
+}
+
+void TestBadCli::quotedInputIsCutWhereverItComesFrom() {
+    QFETCH(QByteArrayList, args);
+    QFETCH(int, exitCode);
+    const Run r = runCli(withPort(args));
+    QVERIFY2(!sanitizerReported(r), qPrintable(r.err.left(400)));
+    QVERIFY2(r.exitCode == exitCode,
+             qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err.left(400))));
+    QVERIFY2(r.err.startsWith(QStringLiteral("tipscope-cli: ")), qPrintable(r.err.left(400)));
+    QVERIFY2(r.err.size() < 500, qPrintable(r.err.left(400)));
+    static const QRegularExpression length(
+        QStringLiteral("(… \\(\\d+ characters\\))|(\\d+ characters; at most)"));
+    QVERIFY2(r.err.contains(length), qPrintable(r.err));
+}
+
+void TestBadCli::contextFieldsAreBoundedAndPrintable_data() {
+    // Each field is stamped on every joint, event and MQTT payload, and printed by `context`.
+    QTest::addColumn<QByteArrayList>("set");
+    QTest::addColumn<QString>("needle");
+    QTest::newRow("65 characters") << QByteArrayList{"--operator", QByteArray(65, 'o')}
+                                   << "operator has 65 characters; at most 64 are kept";
+    QTest::newRow("an ANSI escape") << QByteArrayList{"--work-order", "WO\x1b[2J1"}
+                                    << "work_order holds a control character (<1B>) at character 3";
+    QTest::newRow("a line break") << QByteArrayList{"--serial", "SN\n1"}
+                                  << "board_serial holds a control character (<0A>)";
+}
+
+void TestBadCli::contextFieldsAreBoundedAndPrintable() {
+    QFETCH(QByteArrayList, set);
+    QFETCH(QString, needle);
+    const QByteArrayList journal = {"--journal", m_journal};
+    QCOMPARE(runCli(QByteArrayList{"context", "set", "--operator", "ana"} + journal).exitCode, 0);
+    const Run r = runCli(QByteArrayList{"context", "set"} + set + journal);
+    QVERIFY2(r.exitCode == 2, qPrintable(r.err));
+    QVERIFY2(r.err.contains(needle), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QStringLiteral("nothing was changed")), qPrintable(r.err));
+    QVERIFY(!r.err.contains(QChar(0x1b)));
+    const Run shown = runCli(QByteArrayList{"context", "show"} + journal);
+    QVERIFY2(shown.out.contains(QStringLiteral("operator=ana\n")), qPrintable(shown.out));
+    // A file written by hand is held to the same bounds by every program that reads it.
+    QFile file(m_dir.filePath(QStringLiteral("context.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"operator": ")" + QByteArray(10 * 1024, 'o') + R"("})");
+    file.close();
+    const Run hand = runCli(QByteArrayList{"context", "show"} + journal);
+    QVERIFY2(hand.exitCode == 1, qPrintable(hand.err));
+    QVERIFY2(hand.err.contains(QStringLiteral("operator has 10240 characters")),
+             qPrintable(hand.err.left(400)));
+    QVERIFY(hand.err.size() < 500);
+    QVERIFY(file.remove());
 }
 
 void TestBadCli::sendOfBytesThatAreNoFrameSaysSoWhenUnanswered_data() {
