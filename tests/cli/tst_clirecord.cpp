@@ -39,6 +39,7 @@ private Q_SLOTS:
     void aStationOnASerialLineIsRecorded();
     void anInterruptedRecordingIsComplete();
     void aHeaderThatCannotBeWrittenWholeLeavesNoFile();
+    void aMonitorCsvOnAFullDiskSaysSoOnceMonitorsOnAndFails();
     void badArgumentsAndFilesAreRefused_data();
     void badArgumentsAndFilesAreRefused();
 
@@ -146,6 +147,20 @@ void TestCliRecord::aHeaderThatCannotBeWrittenWholeLeavesNoFile() {
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("cannot record to")), qPrintable(r.err));
     QVERIFY2(!QFile::exists(path), "half a header was left behind");
+}
+
+void TestCliRecord::aMonitorCsvOnAFullDiskSaysSoOnceMonitorsOnAndFails() {
+    // Issue 38: the CSV's rows on a full disk were lost without a word and the run exited 0.
+    if (!QFile::exists(QStringLiteral("/dev/full")))
+        QSKIP("no /dev/full on this system to simulate a full disk");
+    const Run r = cli({"--demo", "monitor", "--interval", "200", "--duration", "2", "--csv",
+                       "/dev/full", "--journal", m_dir.filePath(QStringLiteral("full.sqlite"))});
+    QVERIFY2(r.exitCode != 0, qPrintable(r.err));
+    const QStringList said = r.err.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(said.size(), 1);
+    QVERIFY2(said.first().contains(QStringLiteral("No space left on device")), qPrintable(r.err));
+    // The journal still works, so the monitor goes on printing every cycle.
+    QVERIFY2(r.out.count(QStringLiteral(" P1 ")) >= 5, qPrintable(r.out));
 }
 
 void TestCliRecord::badArgumentsAndFilesAreRefused_data() {
