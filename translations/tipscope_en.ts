@@ -87,6 +87,17 @@
     </message>
 </context>
 <context>
+    <name>Journal</name>
+    <message numerus="yes">
+        <location filename="../lib/journal/journalreader.cpp" line="116"/>
+        <source>The journal %1 is damaged (%n finding(s), the first: %2).</source>
+        <translation>
+            <numerusform>The journal %1 is damaged (%n finding, the first: %2).</numerusform>
+            <numerusform>The journal %1 is damaged (%n findings, the first: %2).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>MeasurementReport</name>
     <message numerus="yes">
         <location filename="../lib/model/analysis/measurementreport.cpp" line="52"/>

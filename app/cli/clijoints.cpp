@@ -138,6 +138,38 @@ QString journalPathOf(const CliOptions &o) {
     return o.values.value(QStringLiteral("journal"), Journal::defaultPath());
 }
 
+static int exitCodeFor(JournalProblem problem) {
+    switch (problem) {
+    case JournalProblem::Missing:
+        return kJournalMissing;
+    case JournalProblem::Damaged:
+    case JournalProblem::Foreign:
+        return kJournalDamaged;
+    case JournalProblem::Newer:
+        return kJournalNewer;
+    case JournalProblem::Locked:
+        return kJournalLocked;
+    case JournalProblem::Full:
+    case JournalProblem::DiskError:
+        return kJournalDisk;
+    case JournalProblem::ReadOnly:
+    case JournalProblem::Other:
+    case JournalProblem::None:
+        break;
+    }
+    return kJournalInaccessible;
+}
+
+int openJournalToReport(const CliOptions &o, JournalReader &reader, QTextStream &err) {
+    auto ready = reader.open(journalPathOf(o));
+    if (ready)
+        ready = reader.check();
+    if (ready)
+        return kOk;
+    err << "tipscope-cli: " << ready.error() << Qt::endl;
+    return exitCodeFor(reader.problem());
+}
+
 int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const bool json = o.flags.contains(QStringLiteral("json"));
     const bool csv = o.flags.contains(QStringLiteral("csv"));
@@ -146,10 +178,8 @@ int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err) {
         return kUsage;
     }
     JournalReader reader;
-    if (const auto opened = reader.open(journalPathOf(o)); !opened) {
-        err << "tipscope-cli: " << opened.error() << Qt::endl;
-        return kUsage;
-    }
+    if (const int rc = openJournalToReport(o, reader, err); rc != kOk)
+        return rc;
     const auto filter = filterOf(o, reader);
     if (!filter) {
         err << "tipscope-cli: " << filter.error() << Qt::endl;

@@ -86,10 +86,8 @@ QString CliParser::usage() {
         "<version>\"\n"
         "  read CODE... [--raw]      one line per code: \"<CODE> <value> <unit>\"\n"
         "  write CODE VALUE [--raw [--force]]\n"
-        "                            validate against the catalog and the device's limits (MIT,\n"
-        "                            MAT: refused while unknown), send, and read back; --raw\n"
-        "                            sends VALUE as the data field, refused outside the catalog's\n"
-        "                            range unless --force\n"
+        "                            validate (MIT and MAT read first), send, and read back;\n"
+        "                            --raw sends the data field, checked unless --force\n"
         "  send HEX                  send a raw frame; print the answer in hex and decoded\n"
         "  monitor [--interval MS] [--duration S] [--csv FILE [--csv-one-file]]\n"
         "          [--limit RULE] [--journal FILE]\n"
@@ -132,7 +130,8 @@ QString CliParser::usage() {
         "\n"
         "Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);\n"
         "3 the device answered NAK, or a read-back or profile check failed;\n"
-        "4 no valid answer; 5 transport error.\n");
+        "4 no valid answer; 5 transport error; the journal (joints, journal show): 6 missing,\n"
+        "7 damaged, 8 newer, 9 locked, 10 not accessible, 11 disk full or failing.\n");
 }
 
 protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {
