@@ -125,22 +125,22 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="29"/>
+        <location filename="../app/agent/main.cpp" line="31"/>
         <source>without a user name</source>
         <translation>ohne Benutzernamen</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="31"/>
+        <location filename="../app/agent/main.cpp" line="33"/>
         <source>as %1, without a password</source>
         <translation>als %1, ohne Passwort</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="32"/>
+        <location filename="../app/agent/main.cpp" line="34"/>
         <source>as %1, password from the %2</source>
         <translation>als %1, Passwort aus %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="37"/>
+        <location filename="../app/agent/main.cpp" line="39"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>Standort %1, %n Linie (%2), Broker %3:%4%5 %6</numerusform>
@@ -148,57 +148,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="41"/>
+        <location filename="../app/agent/main.cpp" line="43"/>
         <source> with TLS</source>
         <translation> mit TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="53"/>
+        <location filename="../app/agent/main.cpp" line="55"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Betreibt die Linien eines Arbeitsbereichs ohne Bildschirm, hält ihre Lötstellen und Ereignisse im Journal fest und veröffentlicht sie an einen MQTT-Broker.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="60"/>
+        <location filename="../app/agent/main.cpp" line="62"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>Die Konfiguration des Agenten (Vorgabe %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="61"/>
+        <location filename="../app/agent/main.cpp" line="63"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="64"/>
+        <location filename="../app/agent/main.cpp" line="66"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Liest die Konfiguration und ihren Arbeitsbereich, meldet Fehler und beendet sich.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="71"/>
+        <location filename="../app/agent/main.cpp" line="73"/>
         <source>unexpected argument %1</source>
         <translation>unerwartetes Argument %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="87"/>
+        <location filename="../app/agent/main.cpp" line="89"/>
         <source>%1 is good: %2</source>
         <translation>%1 ist in Ordnung: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="99"/>
+        <location filename="../app/agent/main.cpp" line="101"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>Konfiguration abgelehnt, die laufende bleibt: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="103"/>
+        <location filename="../app/agent/main.cpp" line="105"/>
         <source>reloading: %1</source>
         <translation>neu laden: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="107"/>
+        <location filename="../app/agent/main.cpp" line="109"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 startet: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="111"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
+        <source>stopped: %1</source>
+        <translation>beendet: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="117"/>
         <source>stopped</source>
         <translation>beendet</translation>
     </message>
@@ -3117,12 +3122,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="246"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="252"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Verlorene Einträge: %1. Grund: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="335"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="341"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
     </message>

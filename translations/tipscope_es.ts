@@ -125,22 +125,22 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="29"/>
+        <location filename="../app/agent/main.cpp" line="31"/>
         <source>without a user name</source>
         <translation>sin nombre de usuario</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="31"/>
+        <location filename="../app/agent/main.cpp" line="33"/>
         <source>as %1, without a password</source>
         <translation>como %1, sin contraseña</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="32"/>
+        <location filename="../app/agent/main.cpp" line="34"/>
         <source>as %1, password from the %2</source>
         <translation>como %1, contraseña de %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="37"/>
+        <location filename="../app/agent/main.cpp" line="39"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>planta %1, %n línea (%2), broker %3:%4%5 %6</numerusform>
@@ -148,57 +148,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="41"/>
+        <location filename="../app/agent/main.cpp" line="43"/>
         <source> with TLS</source>
         <translation> con TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="53"/>
+        <location filename="../app/agent/main.cpp" line="55"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Ejecuta las líneas de un espacio de trabajo sin pantalla, guarda sus soldaduras y eventos en el diario y los publica en un broker MQTT.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="60"/>
+        <location filename="../app/agent/main.cpp" line="62"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>La configuración del agente (por omisión %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="61"/>
+        <location filename="../app/agent/main.cpp" line="63"/>
         <source>file</source>
         <translation>archivo</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="64"/>
+        <location filename="../app/agent/main.cpp" line="66"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Lee la configuración y su espacio de trabajo, indica lo que está mal y termina.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="71"/>
+        <location filename="../app/agent/main.cpp" line="73"/>
         <source>unexpected argument %1</source>
         <translation>argumento inesperado %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="87"/>
+        <location filename="../app/agent/main.cpp" line="89"/>
         <source>%1 is good: %2</source>
         <translation>%1 es correcta: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="99"/>
+        <location filename="../app/agent/main.cpp" line="101"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>configuración rechazada, se mantiene la actual: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="103"/>
+        <location filename="../app/agent/main.cpp" line="105"/>
         <source>reloading: %1</source>
         <translation>recargando: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="107"/>
+        <location filename="../app/agent/main.cpp" line="109"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 arrancando: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="111"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
+        <source>stopped: %1</source>
+        <translation>detenido: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="117"/>
         <source>stopped</source>
         <translation>detenido</translation>
     </message>
@@ -3117,12 +3122,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>No se puede crear la carpeta %1 para el diario.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="246"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="252"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Registros perdidos: %1. Motivo: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="335"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="341"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>El diario se cerró antes de poder escribirlos: %1</translation>
     </message>

@@ -23,6 +23,8 @@ struct AgentMainTr {
 };
 
 constexpr int kExitUsage = 2;
+// The journal cannot be used (PlantAgent::failure()): systemd shows the service failed.
+constexpr int kExitJournal = 3;
 const QString kDefaultConfig = QStringLiteral("/etc/tipscope/agent.json");
 
 QString summary(const plant::AgentConfig &c) {
@@ -108,6 +110,10 @@ int main(int argc, char *argv[]) {
                                .arg(app.applicationVersion(), summary(config.value()))));
     agent.start(config.value());
     const int rc = app.exec();
+    if (!agent.failure().isEmpty()) {
+        qCritical("%s", qPrintable(AgentMainTr::tr("stopped: %1").arg(agent.failure())));
+        return kExitJournal;
+    }
     qInfo("%s", qPrintable(AgentMainTr::tr("stopped")));
     return rc;
 }

@@ -12,11 +12,15 @@
 #include "model/joints/jointdetector.h"
 
 #include <QDateTime>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLoggingCategory>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
 #include <QTemporaryFile>
 #include <QTest>
 #include <csignal>
@@ -508,6 +512,50 @@ private Q_SLOTS:
         QVERIFY2(journaled(), qPrintable(agent.log()));
         QVERIFY(!agent.log().contains(QLatin1String("wrong-secret")));
         QCOMPARE(agent.stop(), 0);
+    }
+
+    // Issue 38: such an agent published live values, lost every joint and exited 0 on SIGTERM.
+    void anAgentWhoseJournalCannotBeUsedStopsSayingWhy_data() {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("not SQLite")
+            << QStringLiteral("text") << QStringLiteral("is damaged or is not a journal");
+        QTest::newRow("a newer schema")
+            << QStringLiteral("newer") << QStringLiteral("written by a newer TipScope");
+        QTest::newRow("a folder where the file should be")
+            << QStringLiteral("folder") << QStringLiteral("cannot be written");
+    }
+
+    void anAgentWhoseJournalCannotBeUsedStopsSayingWhy() {
+        QFETCH(QString, kind);
+        QFETCH(QString, reason);
+        AgentProcess agent;
+        agent.configure(QStringLiteral("demo"), m_broker.port());
+        const QString path = agent.journalPath();
+        if (kind == QLatin1String("folder")) {
+            QVERIFY(QDir().mkpath(path));
+        } else if (kind == QLatin1String("text")) {
+            QFile text(path);
+            QVERIFY(text.open(QIODevice::WriteOnly) && text.write(QByteArray(4096, 'j')) == 4096);
+        } else {
+            {
+                QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), kind);
+                db.setDatabaseName(path);
+                QVERIFY(db.open());
+                QVERIFY(db.exec(QStringLiteral("PRAGMA user_version = 99")).lastError().type() ==
+                        QSqlError::NoError);
+                db.close();
+            }
+            QSqlDatabase::removeDatabase(kind);
+        }
+        QString error;
+        QVERIFY2(agent.start(&error), qPrintable(error));
+        QVERIFY2(agent.process().waitForFinished(30000), qPrintable(agent.log()));
+        QCOMPARE(agent.process().exitStatus(), QProcess::NormalExit);
+        QVERIFY2(agent.process().exitCode() == 3, qPrintable(agent.log()));
+        QVERIFY2(agent.log().contains(reason), qPrintable(agent.log()));
+        QVERIFY2(agent.log().contains(QLatin1String("<3>")), qPrintable(agent.log())); // critical
+        QVERIFY2(agent.log().contains(QLatin1String("the agent stops")), qPrintable(agent.log()));
     }
 
     void cleanupTestCase() {
