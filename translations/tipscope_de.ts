@@ -125,22 +125,22 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="31"/>
+        <location filename="../app/agent/main.cpp" line="32"/>
         <source>without a user name</source>
         <translation>ohne Benutzernamen</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="33"/>
+        <location filename="../app/agent/main.cpp" line="34"/>
         <source>as %1, without a password</source>
         <translation>als %1, ohne Passwort</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="34"/>
+        <location filename="../app/agent/main.cpp" line="35"/>
         <source>as %1, password from the %2</source>
         <translation>als %1, Passwort aus %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="39"/>
+        <location filename="../app/agent/main.cpp" line="40"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>Standort %1, %n Linie (%2), Broker %3:%4%5 %6</numerusform>
@@ -148,62 +148,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="43"/>
+        <location filename="../app/agent/main.cpp" line="44"/>
         <source> with TLS</source>
         <translation> mit TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="55"/>
+        <location filename="../app/agent/main.cpp" line="56"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Betreibt die Linien eines Arbeitsbereichs ohne Bildschirm, hält ihre Lötstellen und Ereignisse im Journal fest und veröffentlicht sie an einen MQTT-Broker.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="62"/>
+        <location filename="../app/agent/main.cpp" line="63"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>Die Konfiguration des Agenten (Vorgabe %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="63"/>
+        <location filename="../app/agent/main.cpp" line="64"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="66"/>
+        <location filename="../app/agent/main.cpp" line="67"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Liest die Konfiguration und ihren Arbeitsbereich, meldet Fehler und beendet sich.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="73"/>
+        <location filename="../app/agent/main.cpp" line="74"/>
         <source>unexpected argument %1</source>
         <translation>unerwartetes Argument %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="89"/>
+        <location filename="../app/agent/main.cpp" line="90"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="94"/>
         <source>%1 is good: %2</source>
         <translation>%1 ist in Ordnung: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="101"/>
+        <location filename="../app/agent/main.cpp" line="106"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>Konfiguration abgelehnt, die laufende bleibt: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="105"/>
+        <location filename="../app/agent/main.cpp" line="110"/>
         <source>reloading: %1</source>
         <translation>neu laden: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="109"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 startet: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="114"/>
+        <location filename="../app/agent/main.cpp" line="119"/>
         <source>stopped: %1</source>
         <translation>beendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="117"/>
+        <location filename="../app/agent/main.cpp" line="122"/>
         <source>stopped</source>
         <translation>beendet</translation>
     </message>
@@ -3410,52 +3415,57 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Der Hostname %1 des Brokers lässt sich nicht auflösen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Ein Passwort ist gesetzt, aber kein Benutzername: MQTT sendet ein Passwort nur mit einem Benutzernamen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="54"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
         <source>The user name %1 is not accepted: %2</source>
         <translation>Der Benutzername %1 wird nicht angenommen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="78"/>
         <source>The last will on %1 is not accepted: %2</source>
         <translation>Der letzte Wille auf %1 wird nicht angenommen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="74"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="116"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>Die CA-Zertifikatsdatei %1 kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="76"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="122"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Ein Client-Zertifikat braucht sowohl seine Zertifikatsdatei als auch seine Schlüsseldatei.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="80"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="126"/>
         <source>The file %1 cannot be read.</source>
         <translation>Die Datei %1 kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="98"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="97"/>
         <source>TLS cannot be set up: %1</source>
         <translation>TLS kann nicht eingerichtet werden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="106"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="105"/>
         <source>The MQTT version cannot be set: %1</source>
         <translation>Die MQTT-Version kann nicht eingestellt werden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="130"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="118"/>
+        <source>The CA certificate file %1 holds no PEM certificate (-----BEGIN CERTIFICATE-----).</source>
+        <translation>Die CA-Zertifikatsdatei %1 enthält kein PEM-Zertifikat (-----BEGIN CERTIFICATE-----).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="148"/>
         <source>The client id %1 is not accepted.</source>
         <translation>Die Client-ID %1 wird nicht angenommen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="131"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="149"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Kein Speicher mehr für einen MQTT-Client.</translation>
     </message>

@@ -4,7 +4,7 @@
 <context>
     <name>AgentMain</name>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="39"/>
+        <location filename="../app/agent/main.cpp" line="40"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>site %1, %n line (%2), broker %3:%4%5 %6</numerusform>

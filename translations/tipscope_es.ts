@@ -125,22 +125,22 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="31"/>
+        <location filename="../app/agent/main.cpp" line="32"/>
         <source>without a user name</source>
         <translation>sin nombre de usuario</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="33"/>
+        <location filename="../app/agent/main.cpp" line="34"/>
         <source>as %1, without a password</source>
         <translation>como %1, sin contraseña</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="34"/>
+        <location filename="../app/agent/main.cpp" line="35"/>
         <source>as %1, password from the %2</source>
         <translation>como %1, contraseña de %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="39"/>
+        <location filename="../app/agent/main.cpp" line="40"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>planta %1, %n línea (%2), broker %3:%4%5 %6</numerusform>
@@ -148,62 +148,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="43"/>
+        <location filename="../app/agent/main.cpp" line="44"/>
         <source> with TLS</source>
         <translation> con TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="55"/>
+        <location filename="../app/agent/main.cpp" line="56"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Ejecuta las líneas de un espacio de trabajo sin pantalla, guarda sus soldaduras y eventos en el diario y los publica en un broker MQTT.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="62"/>
+        <location filename="../app/agent/main.cpp" line="63"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>La configuración del agente (por omisión %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="63"/>
+        <location filename="../app/agent/main.cpp" line="64"/>
         <source>file</source>
         <translation>archivo</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="66"/>
+        <location filename="../app/agent/main.cpp" line="67"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Lee la configuración y su espacio de trabajo, indica lo que está mal y termina.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="73"/>
+        <location filename="../app/agent/main.cpp" line="74"/>
         <source>unexpected argument %1</source>
         <translation>argumento inesperado %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="89"/>
+        <location filename="../app/agent/main.cpp" line="90"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="94"/>
         <source>%1 is good: %2</source>
         <translation>%1 es correcta: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="101"/>
+        <location filename="../app/agent/main.cpp" line="106"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>configuración rechazada, se mantiene la actual: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="105"/>
+        <location filename="../app/agent/main.cpp" line="110"/>
         <source>reloading: %1</source>
         <translation>recargando: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="109"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 arrancando: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="114"/>
+        <location filename="../app/agent/main.cpp" line="119"/>
         <source>stopped: %1</source>
         <translation>detenido: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="117"/>
+        <location filename="../app/agent/main.cpp" line="122"/>
         <source>stopped</source>
         <translation>detenido</translation>
     </message>
@@ -3410,52 +3415,57 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>No se puede resolver el nombre de host %1 del broker: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Hay una contraseña pero ningún nombre de usuario: MQTT solo envía una contraseña con un nombre de usuario.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="54"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
         <source>The user name %1 is not accepted: %2</source>
         <translation>No se acepta el nombre de usuario %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="78"/>
         <source>The last will on %1 is not accepted: %2</source>
         <translation>No se acepta la última voluntad en %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="74"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="116"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>No se puede leer el archivo de certificado de la CA %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="76"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="122"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Un certificado de cliente necesita tanto su archivo de certificado como su archivo de clave.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="80"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="126"/>
         <source>The file %1 cannot be read.</source>
         <translation>No se puede leer el archivo %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="98"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="97"/>
         <source>TLS cannot be set up: %1</source>
         <translation>No se puede configurar TLS: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="106"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="105"/>
         <source>The MQTT version cannot be set: %1</source>
         <translation>No se puede fijar la versión de MQTT: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="130"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="118"/>
+        <source>The CA certificate file %1 holds no PEM certificate (-----BEGIN CERTIFICATE-----).</source>
+        <translation>El archivo de certificado de CA %1 no contiene ningún certificado PEM (-----BEGIN CERTIFICATE-----).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="148"/>
         <source>The client id %1 is not accepted.</source>
         <translation>No se acepta el identificador de cliente %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="131"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="149"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Sin memoria para un cliente MQTT.</translation>
     </message>

@@ -7,6 +7,7 @@
 #include "unixsignals.h"
 
 #include "i18n/translations.h"
+#include "mqtt/mqttsetup.h"
 #include "plant/plantagent.h"
 
 #include <QCommandLineParser>
@@ -85,6 +86,10 @@ int main(int argc, char *argv[]) {
         return kExitUsage;
     }
     if (parser.isSet(checkOption)) {
+        if (const auto tls = mqtt::checkTlsFiles(config->broker.tls); !tls) {
+            qCritical("%s", qPrintable(AgentMainTr::tr("%1: %2").arg(path, tls.error())));
+            return kExitUsage;
+        }
         qInfo("%s",
               qPrintable(AgentMainTr::tr("%1 is good: %2").arg(path, summary(config.value()))));
         return 0;
