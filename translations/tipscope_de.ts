@@ -2226,9 +2226,14 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: profile erwartet save DATEI, diff DATEI oder apply DATEI</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <location filename="../app/cli/cliprofile.cpp" line="113"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: das Anwenden dieses Profils würde abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="119"/>
+        <source>tipscope-cli: the line was dropped during the apply: %1. A slow station may need a longer --timeout (now %2 ms) or more --retries (now %3); apply the profile again once the line answers: what is already right is left alone</source>
+        <translation>tipscope-cli: die Leitung wurde während des Anwendens getrennt: %1. Eine langsame Station braucht vielleicht ein längeres --timeout (jetzt %2 ms) oder mehr --retries (jetzt %3); wenden Sie das Profil erneut an, sobald die Leitung antwortet: was schon stimmt, bleibt unberührt</translation>
     </message>
 </context>
 <context>

@@ -2226,9 +2226,14 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>tipscope-cli: profile requiere save ARCHIVO, diff ARCHIVO o apply ARCHIVO</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <location filename="../app/cli/cliprofile.cpp" line="113"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: aplicar este perfil se rechazaría: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="119"/>
+        <source>tipscope-cli: the line was dropped during the apply: %1. A slow station may need a longer --timeout (now %2 ms) or more --retries (now %3); apply the profile again once the line answers: what is already right is left alone</source>
+        <translation>tipscope-cli: la línea se cortó durante la aplicación: %1. Una estación lenta puede necesitar un --timeout más largo (ahora %2 ms) o más --retries (ahora %3); vuelva a aplicar el perfil cuando la línea responda: lo que ya es correcto no se toca</translation>
     </message>
 </context>
 <context>

@@ -93,6 +93,7 @@ private Q_SLOTS:
     void contextFieldsAreBoundedAndPrintable_data();
     void contextFieldsAreBoundedAndPrintable();
     void aRawWriteOutsideTheCatalogGoesOutOnlyWithForce();
+    void aLineDroppedDuringAnApplySaysWhyOnce();
 
 private:
     [[nodiscard]] WireCount wire();
@@ -557,6 +558,40 @@ void TestBadCli::aRawWriteOutsideTheCatalogGoesOutOnlyWithForce() {
     QCOMPARE(
         runCli(withPort({"--port", "@PORT", "--addr", "00:01", "write", "ST1", "350"})).exitCode,
         0);
+}
+
+void TestBadCli::aLineDroppedDuringAnApplySaysWhyOnce() {
+    // Issue 38: a station that stops answering part way through an apply failed it with exit 5
+    // and a "not sent: the line is not connected" per setting; why only with --verbose.
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("p.json"));
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format":"tipscope-profile","schema":1,"family":"DME","values":{)"
+            R"("A11":"00011","A21":"00012","A31":"00013","A41":"00014","A12":"00015",)"
+            R"("A22":"00016","ST2":"00300","ST3":"00310"}})");
+    f.close();
+    // A station that takes its time, so that the apply is still writing when it goes quiet.
+    QVERIFY(m_sim.command(QStringLiteral("latency 100")).startsWith(QLatin1String("ok")));
+    const WireCount before = wire();
+    QProcess cli;
+    cli.start(binaryPath(QStringLiteral("tipscope-cli")),
+              {QStringLiteral("--port"), QString::fromLocal8Bit(m_port), QStringLiteral("--addr"),
+               QStringLiteral("00:01"), QStringLiteral("--timeout"), QStringLiteral("300"),
+               QStringLiteral("--retries"), QStringLiteral("0"), QStringLiteral("profile"),
+               QStringLiteral("apply"), file});
+    // The station stops answering once the first write went through.
+    QVERIFY(QTest::qWaitFor([&] { return wire().writes > before.writes; }, 20000));
+    QVERIFY(m_sim.command(QStringLiteral("drop 1")).startsWith(QLatin1String("ok")));
+    const Run r = finishProcess(cli, 60000);
+    QVERIFY(m_sim.command(QStringLiteral("drop 0")).startsWith(QLatin1String("ok")));
+    QVERIFY(m_sim.command(QStringLiteral("latency 0")).startsWith(QLatin1String("ok")));
+    QVERIFY2(r.exitCode == 5, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+    const QStringList said = r.err.split(QLatin1Char('\n')).filter(QStringLiteral("dropped"));
+    QCOMPARE(said.size(), 1);
+    QVERIFY2(said.first().contains(QStringLiteral("no answer to")) &&
+                 said.first().contains(QStringLiteral("--timeout")),
+             qPrintable(r.err));
 }
 
 void TestBadCli::checkRefusedWithoutAWrite(const QByteArray &profile, QByteArrayList args,
