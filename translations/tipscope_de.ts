@@ -2326,7 +2326,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="171"/>
+        <location filename="../app/cli/clisession.cpp" line="172"/>
+        <source>tipscope-cli: no device could be identified on %1 (checked addresses 01, 10, 20 and frames without addresses); what came back: %2. Check the baud rate, the addressing, and that robot mode is on.</source>
+        <translation>tipscope-cli: an %1 ließ sich kein Gerät erkennen (geprüft: Adressen 01, 10, 20 und Rahmen ohne Adressen); zurück kam: %2. Prüfen Sie die Baudrate, die Adressierung und ob der Robotermodus eingeschaltet ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="181"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -4170,12 +4175,17 @@ Dauerhaft mit dieser udev-Regel:
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="234"/>
+        <location filename="../lib/model/session.cpp" line="235"/>
+        <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
+        <translation>mit %1 verbunden, aber kein Gerät ließ sich erkennen; zurück kam: %2 (Robotermodus aus? falsche Adressierung oder Baudrate?)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="240"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="242"/>
+        <location filename="../lib/model/session.cpp" line="248"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -8181,6 +8191,41 @@ Möchten Sie fortfahren?</translation>
         <location filename="../lib/journal/journal.cpp" line="149"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Auftrag: %1, Platine: %2, Bediener: %3</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Discovery</name>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="78"/>
+        <source>%n NAK(s) %1 (%2)</source>
+        <translation>
+            <numerusform>%n NAK %1 (%2)</numerusform>
+            <numerusform>%n NAKs %1 (%2)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="82"/>
+        <source>%n answer(s) with a bad block check or format</source>
+        <translation>
+            <numerusform>%n Antwort mit falscher Prüfsumme oder falschem Format</numerusform>
+            <numerusform>%n Antworten mit falscher Prüfsumme oder falschem Format</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="84"/>
+        <source>%n frame(s) from an address not asked</source>
+        <translation>
+            <numerusform>%n Rahmen von einer nicht gefragten Adresse</numerusform>
+            <numerusform>%n Rahmen von nicht gefragten Adressen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="86"/>
+        <source>%n byte(s) that were no frame</source>
+        <translation>
+            <numerusform>%n Byte, das kein Rahmen war</numerusform>
+            <numerusform>%n Bytes, die kein Rahmen waren</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -149,7 +149,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="242"/>
+        <location filename="../lib/model/session.cpp" line="248"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -301,6 +301,41 @@
         <translation>
             <numerusform>✓ Profile saved: %n setting of %1 in %2</numerusform>
             <numerusform>✓ Profile saved: %n settings of %1 in %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Discovery</name>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="78"/>
+        <source>%n NAK(s) %1 (%2)</source>
+        <translation>
+            <numerusform>%n NAK %1 (%2)</numerusform>
+            <numerusform>%n NAKs %1 (%2)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="82"/>
+        <source>%n answer(s) with a bad block check or format</source>
+        <translation>
+            <numerusform>%n answer with a bad block check or format</numerusform>
+            <numerusform>%n answers with a bad block check or format</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="84"/>
+        <source>%n frame(s) from an address not asked</source>
+        <translation>
+            <numerusform>%n frame from an address not asked</numerusform>
+            <numerusform>%n frames from an address not asked</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="86"/>
+        <source>%n byte(s) that were no frame</source>
+        <translation>
+            <numerusform>%n byte that was no frame</numerusform>
+            <numerusform>%n bytes that were no frame</numerusform>
         </translation>
     </message>
 </context>

@@ -2326,7 +2326,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="171"/>
+        <location filename="../app/cli/clisession.cpp" line="172"/>
+        <source>tipscope-cli: no device could be identified on %1 (checked addresses 01, 10, 20 and frames without addresses); what came back: %2. Check the baud rate, the addressing, and that robot mode is on.</source>
+        <translation>tipscope-cli: no se pudo identificar ningún equipo en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones); lo que volvió: %2. Compruebe la velocidad en baudios, el direccionamiento y que el modo robot esté activado.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="181"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -4170,12 +4175,17 @@ Hágalo permanente con esta regla de udev:
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="234"/>
+        <location filename="../lib/model/session.cpp" line="235"/>
+        <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
+        <translation>conectado a %1, pero no se pudo identificar ningún equipo; lo que volvió: %2 (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="240"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="242"/>
+        <location filename="../lib/model/session.cpp" line="248"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -8181,6 +8191,41 @@ Do you want to continue?</source>
         <location filename="../lib/journal/journal.cpp" line="149"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Discovery</name>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="78"/>
+        <source>%n NAK(s) %1 (%2)</source>
+        <translation>
+            <numerusform>%n NAK %1 (%2)</numerusform>
+            <numerusform>%n NAK %1 (%2)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="82"/>
+        <source>%n answer(s) with a bad block check or format</source>
+        <translation>
+            <numerusform>%n respuesta con una suma de control o un formato incorrectos</numerusform>
+            <numerusform>%n respuestas con una suma de control o un formato incorrectos</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="84"/>
+        <source>%n frame(s) from an address not asked</source>
+        <translation>
+            <numerusform>%n trama de una dirección no consultada</numerusform>
+            <numerusform>%n tramas de direcciones no consultadas</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="86"/>
+        <source>%n byte(s) that were no frame</source>
+        <translation>
+            <numerusform>%n byte que no era una trama</numerusform>
+            <numerusform>%n bytes que no eran una trama</numerusform>
+        </translation>
     </message>
 </context>
 <context>

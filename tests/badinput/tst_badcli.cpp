@@ -94,6 +94,8 @@ private Q_SLOTS:
     void contextFieldsAreBoundedAndPrintable();
     void aRawWriteOutsideTheCatalogGoesOutOnlyWithForce();
     void aLineDroppedDuringAnApplySaysWhyOnce();
+    void detectionSaysWhatCameBack_data();
+    void detectionSaysWhatCameBack();
 
 private:
     [[nodiscard]] WireCount wire();
@@ -592,6 +594,38 @@ void TestBadCli::aLineDroppedDuringAnApplySaysWhyOnce() {
     QVERIFY2(said.first().contains(QStringLiteral("no answer to")) &&
                  said.first().contains(QStringLiteral("--timeout")),
              qPrintable(r.err));
+}
+
+void TestBadCli::detectionSaysWhatCameBack_data() {
+    // Issue 38: a NAK, a flipped block check and silence all said "check the cable".
+    QTest::addColumn<QString>("fault");
+    QTest::addColumn<QString>("undo");
+    QTest::addColumn<QString>("said");
+    QTest::addColumn<QString>("notSaid");
+    QTest::newRow("NAKs") << QStringLiteral("nak 5") << QStringLiteral("nak 0")
+                          << QStringLiteral("what came back: ") << QStringLiteral("cable");
+    QTest::newRow("corrupted answers")
+        << QStringLiteral("corrupt 1") << QStringLiteral("corrupt 0")
+        << QStringLiteral("what came back: ") << QStringLiteral("cable");
+    QTest::newRow("silence") << QStringLiteral("drop 1") << QStringLiteral("drop 0")
+                             << QStringLiteral("Check the cable")
+                             << QStringLiteral("what came back");
+}
+
+void TestBadCli::detectionSaysWhatCameBack() {
+    QFETCH(QString, fault);
+    QFETCH(QString, undo);
+    QFETCH(QString, said);
+    QFETCH(QString, notSaid);
+    QVERIFY(m_sim.command(fault).startsWith(QLatin1String("ok")));
+    const Run r = runCli(withPort({"--port", "@PORT", "--retries", "0", "detect"}));
+    QVERIFY(m_sim.command(undo).startsWith(QLatin1String("ok")));
+    QVERIFY2(r.exitCode == 4, qPrintable(r.err));
+    QVERIFY2(r.err.contains(said), qPrintable(r.err));
+    QVERIFY2(!r.err.contains(notSaid), qPrintable(r.err));
+    if (fault.startsWith(QLatin1String("nak")))
+        QVERIFY2(r.err.contains(QRegularExpression(QStringLiteral("NAKs? 00005 \\(Robot mode"))),
+                 qPrintable(r.err));
 }
 
 void TestBadCli::checkRefusedWithoutAWrite(const QByteArray &profile, QByteArrayList args,
