@@ -1873,9 +1873,14 @@
 <context>
     <name>CliMeasure</name>
     <message>
-        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <location filename="../app/cli/climeasure.cpp" line="70"/>
         <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
         <translation>tipscope-cli: measure erwartet eine DATEI, eine Aufzeichnung (von record oder von „Aufzeichnen“ bzw. dem CSV-Export der Diagrammseite)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climeasure.cpp" line="81"/>
+        <source>%1 is a FIFO: waiting for what is written into it (Ctrl-C stops)</source>
+        <translation>%1 ist ein FIFO: es wird gewartet, bis etwas hineingeschrieben wird (Strg+C beendet)</translation>
     </message>
 </context>
 <context>
@@ -3606,57 +3611,62 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>PortDiagnostics</name>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="40"/>
         <source>this program</source>
         <translation>dieses Programm</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="38"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="41"/>
         <source>, this program</source>
         <translation>, dieses Programm</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="51"/>
         <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
         <translation>führen Sie `sudo usermod -aG %1 $USER` aus und melden Sie sich danach ab und wieder an.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
         <source>You are not allowed to open %1: %2</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="56"/>
         <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen, und die Schnittstelle gehört zur Gruppe root statt zu dialout; ein Gruppenbeitritt hilft daher erst, wenn eine udev-Regel ihr GROUP=&quot;dialout&quot; zuweist. Dann %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="58"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="61"/>
         <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen; die Schnittstelle gehört zur Gruppe %2 (nicht dialout): %3</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="102"/>
+        <source>There is no such port in %1: a port&apos;s name is never %2 characters long. The port name may be mistyped.</source>
+        <translation>In %1 gibt es diesen Port nicht: der Name eines Ports ist nie %2 Zeichen lang. Der Portname ist vielleicht falsch geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="112"/>
         <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
         <translation>%1 wird bereits von %2 verwendet. Schließen Sie diese Verbindung und versuchen Sie es dann erneut.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="107"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
         <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
         <translation>Diesen Port gibt es nicht: %1. Möglicherweise ist der Adapter abgezogen oder der Portname falsch geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="124"/>
         <source>%1 is already open in TipScope; close that connection first</source>
         <translation>%1 ist in TipScope bereits geöffnet; schließen Sie zuerst diese Verbindung</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="129"/>
         <source>%1 stopped working, perhaps because the adapter was unplugged</source>
         <translation>%1 funktioniert nicht mehr, vielleicht wurde der Adapter abgezogen</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="122"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="133"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>

@@ -1873,9 +1873,14 @@
 <context>
     <name>CliMeasure</name>
     <message>
-        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <location filename="../app/cli/climeasure.cpp" line="70"/>
         <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
         <translation>tipscope-cli: measure espera un ARCHIVO, una grabación (de record, o de «Grabar» o la exportación CSV de la página de gráficos)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climeasure.cpp" line="81"/>
+        <source>%1 is a FIFO: waiting for what is written into it (Ctrl-C stops)</source>
+        <translation>%1 es un FIFO: se espera a lo que se escriba en él (Ctrl-C detiene)</translation>
     </message>
 </context>
 <context>
@@ -3606,57 +3611,62 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
 <context>
     <name>PortDiagnostics</name>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="40"/>
         <source>this program</source>
         <translation>este programa</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="38"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="41"/>
         <source>, this program</source>
         <translation>, este programa</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="51"/>
         <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
         <translation>ejecute `sudo usermod -aG %1 $USER` y después cierre la sesión y vuelva a iniciarla.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
         <source>You are not allowed to open %1: %2</source>
         <translation>No tiene permiso para abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="56"/>
         <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
         <translation>No tiene permiso para abrir %1, y pertenece al grupo root en lugar de dialout, así que unirse a un grupo no servirá hasta que una regla de udev le asigne GROUP=&quot;dialout&quot;. Después, %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="58"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="61"/>
         <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
         <translation>No tiene permiso para abrir %1, que pertenece al grupo %2 (no a dialout): %3</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="102"/>
+        <source>There is no such port in %1: a port&apos;s name is never %2 characters long. The port name may be mistyped.</source>
+        <translation>No existe ese puerto en %1: el nombre de un puerto nunca tiene %2 caracteres. Puede que el nombre del puerto esté mal escrito.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="112"/>
         <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
         <translation>%1 está ocupado: lo tiene abierto %2. Cierre esa conexión e inténtelo de nuevo.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="107"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
         <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
         <translation>No existe el puerto %1. Puede que el adaptador esté desenchufado o que el nombre del puerto esté mal escrito.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="124"/>
         <source>%1 is already open in TipScope; close that connection first</source>
         <translation>%1 ya está abierto en TipScope; cierre primero esa conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="129"/>
         <source>%1 stopped working, perhaps because the adapter was unplugged</source>
         <translation>%1 dejó de funcionar, quizá porque se desenchufó el adaptador</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="122"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="133"/>
         <source>Could not open %1</source>
         <translation>No se pudo abrir %1</translation>
     </message>
