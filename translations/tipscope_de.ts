@@ -125,22 +125,22 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="29"/>
+        <location filename="../app/agent/main.cpp" line="32"/>
         <source>without a user name</source>
         <translation>ohne Benutzernamen</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="31"/>
+        <location filename="../app/agent/main.cpp" line="34"/>
         <source>as %1, without a password</source>
         <translation>als %1, ohne Passwort</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="32"/>
+        <location filename="../app/agent/main.cpp" line="35"/>
         <source>as %1, password from the %2</source>
         <translation>als %1, Passwort aus %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="37"/>
+        <location filename="../app/agent/main.cpp" line="40"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>Standort %1, %n Linie (%2), Broker %3:%4%5 %6</numerusform>
@@ -148,57 +148,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="41"/>
+        <location filename="../app/agent/main.cpp" line="44"/>
         <source> with TLS</source>
         <translation> mit TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="53"/>
+        <location filename="../app/agent/main.cpp" line="56"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Betreibt die Linien eines Arbeitsbereichs ohne Bildschirm, hält ihre Lötstellen und Ereignisse im Journal fest und veröffentlicht sie an einen MQTT-Broker.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="60"/>
+        <location filename="../app/agent/main.cpp" line="63"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>Die Konfiguration des Agenten (Vorgabe %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="61"/>
+        <location filename="../app/agent/main.cpp" line="64"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="64"/>
+        <location filename="../app/agent/main.cpp" line="67"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Liest die Konfiguration und ihren Arbeitsbereich, meldet Fehler und beendet sich.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="71"/>
+        <location filename="../app/agent/main.cpp" line="74"/>
         <source>unexpected argument %1</source>
         <translation>unerwartetes Argument %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="87"/>
+        <location filename="../app/agent/main.cpp" line="90"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="94"/>
         <source>%1 is good: %2</source>
         <translation>%1 ist in Ordnung: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="99"/>
+        <location filename="../app/agent/main.cpp" line="106"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>Konfiguration abgelehnt, die laufende bleibt: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="103"/>
+        <location filename="../app/agent/main.cpp" line="110"/>
         <source>reloading: %1</source>
         <translation>neu laden: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="107"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 startet: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="111"/>
+        <location filename="../app/agent/main.cpp" line="119"/>
+        <source>stopped: %1</source>
+        <translation>beendet: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="122"/>
         <source>stopped</source>
         <translation>beendet</translation>
     </message>
@@ -1242,12 +1252,12 @@
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="236"/>
         <source>unknown (%1)</source>
         <translation>unbekannt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="243"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
@@ -1378,44 +1388,44 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="99"/>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="118"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="142"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="119"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="143"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>die Zeile ist länger als %1 Bytes (ist das eine Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="147"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="107"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="148"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>die Datei enthält Binärdaten, keinen CSV-Text</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="153"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="154"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>der Text ist nicht UTF-8-kodiert (speichern Sie die Datei als &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="157"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="158"/>
         <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>mehr als %1 Kommentarzeilen („#“); eine Aufzeichnung hat wenige, und eine je Kanal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="194"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="195"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>die Kopfzeile muss mit &quot;time&quot; beginnen (ist das eine von TipScope geschriebene Diagramm-CSV-Datei?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="198"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 Spalten; die Wiedergabe liest höchstens %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="211"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="212"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>Spalte %1 &quot;%2&quot; ist weder &quot;port&lt;n&gt; &lt;Reihe&gt; [Einheit]&quot; noch &quot;feeder &lt;Reihe&gt; [Einheit]&quot;</translation>
     </message>
@@ -1425,77 +1435,77 @@
         <translation>Spalte %1 &quot;%2&quot;: die Einheit muss &quot;%3&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="227"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="255"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="258"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="256"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="259"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="235"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="236"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>Spalte %1 &quot;%2&quot; kommt zweimal vor</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="241"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="244"/>
         <source>the header names no series columns</source>
         <translation>die Kopfzeile nennt keine Spalten mit Datenreihen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="287"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>Spalte %1: &quot;%2&quot; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="291"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="294"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 hat nur in einem Teil seiner Spalten Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="301"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 Zellen, aber die Kopfzeile hat %2 Spalten</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="303"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; ist keine Zeitangabe nach ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="310"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>die Zeit %1 liegt vor der der vorigen Zeile (die Zeilen müssen zeitlich geordnet sein)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="318"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="322"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 hat mehr als %2 Messwerte, mehr als die Wiedergabe fasst; teilen Sie die Datei auf</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="342"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="346"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>das Ereignis &quot;%1&quot; hat nicht die Form &quot;&lt;Kanal&gt; &lt;Art&gt;: &lt;Text&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="167"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="168"/>
         <source>a quoted cell is not closed</source>
         <translation>eine Zelle in Anführungszeichen ist nicht geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="375"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="379"/>
         <source>the file has a header but no rows</source>
         <translation>die Datei hat eine Kopfzeile, aber keine Zeilen</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="373"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="377"/>
         <source>the file is empty or holds only comments</source>
         <translation>die Datei ist leer oder enthält nur Kommentare</translation>
     </message>
@@ -1664,131 +1674,145 @@
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="40"/>
+        <location filename="../app/cli/clicommands.cpp" line="41"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="64"/>
+        <location filename="../app/cli/clicommands.cpp" line="65"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 unlesbares Datenfeld &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="103"/>
+        <location filename="../app/cli/clicommands.cpp" line="104"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read braucht mindestens einen Befehlscode, z. B. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="116"/>
+        <location filename="../app/cli/clicommands.cpp" line="117"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung kann &apos;%1&apos; lesen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="139"/>
+        <location filename="../app/cli/clicommands.cpp" line="140"/>
         <source>%1 written</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="144"/>
+        <location filename="../app/cli/clicommands.cpp" line="145"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 wurde angenommen, konnte aber nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="152"/>
+        <location filename="../app/cli/clicommands.cpp" line="153"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: Prüfung fehlgeschlagen: %1 geschrieben, das Gerät meldet %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="158"/>
+        <location filename="../app/cli/clicommands.cpp" line="159"/>
         <source>%1 (verified)</source>
         <translation>%1 (geprüft)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="199"/>
+        <location filename="../app/cli/clicommands.cpp" line="176"/>
+        <source>the device answered &apos;%1&apos;, which is no value</source>
+        <translation>das Gerät antwortete &apos;%1&apos;, was kein Wert ist</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="197"/>
+        <source>tipscope-cli: refused, nothing was sent: %1 is bounded by %2, which could not be read: %3</source>
+        <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1 ist durch %2 begrenzt, das nicht gelesen werden konnte: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="228"/>
+        <source>%1 (--force sends it anyway)</source>
+        <translation>%1 (--force sendet es trotzdem)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="239"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write erwartet CODE WERT, z. B. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="208"/>
+        <location filename="../app/cli/clicommands.cpp" line="248"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: kein Gerät an dieser Leitung nimmt Schreibzugriffe auf &apos;%1&apos; an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="222"/>
-        <location filename="../app/cli/clicommands.cpp" line="224"/>
+        <location filename="../app/cli/clicommands.cpp" line="221"/>
         <source>the data field must be printable ASCII</source>
         <translation>das Datenfeld darf nur druckbare ASCII-Zeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="227"/>
+        <location filename="../app/cli/clicommands.cpp" line="224"/>
         <source>the data field is longer than 32 characters</source>
         <translation>das Datenfeld ist länger als 32 Zeichen</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="188"/>
-        <location filename="../app/cli/clicommands.cpp" line="244"/>
-        <location filename="../app/cli/clicommands.cpp" line="270"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
+        <location filename="../app/cli/clicommands.cpp" line="278"/>
+        <location filename="../app/cli/clicommands.cpp" line="304"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: abgelehnt, nichts wurde gesendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="261"/>
+        <location filename="../app/cli/clicommands.cpp" line="295"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send erwartet das Telegramm hexadezimal, z. B. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="336"/>
+        <location filename="../app/cli/clicommands.cpp" line="370"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: unbekannte Familie &apos;%1&apos;; bekannt sind: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="359"/>
+        <location filename="../app/cli/clicommands.cpp" line="393"/>
         <source> [dangerous]</source>
         <translation> [gefährlich]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="362"/>
+        <location filename="../app/cli/clicommands.cpp" line="396"/>
         <source>values: %1</source>
         <translation>Werte: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="364"/>
+        <location filename="../app/cli/clicommands.cpp" line="398"/>
         <source>families: %1</source>
         <translation>Familien: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="52"/>
+        <location filename="../app/cli/clicommands.cpp" line="53"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n Rohbyte, kein Telegramm (%1)</numerusform>
             <numerusform>%n Rohbytes, kein Telegramm (%1)</numerusform>
         </translation>
     </message>
-    <message>
-        <location filename="../app/cli/clicommands.cpp" line="179"/>
-        <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
-        <translation>tipscope-cli: %1 wurde nicht gesendet: seine Grenze %2 ließ sich nicht lesen: %3</translation>
-    </message>
 </context>
 <context>
     <name>CliContext</name>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="42"/>
+        <location filename="../app/cli/clicontext.cpp" line="44"/>
         <source>&apos;%1&apos; is not a context line: write work_order=W, board_serial=S or operator=O</source>
         <translation>„%1“ ist keine Kontextzeile: schreiben Sie work_order=W, board_serial=S oder operator=O</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="58"/>
+        <location filename="../app/cli/clicontext.cpp" line="60"/>
         <source>cannot read standard input</source>
         <translation>die Standardeingabe kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="93"/>
+        <location filename="../app/cli/clicontext.cpp" line="95"/>
+        <source>tipscope-cli: refused, nothing was changed: %1</source>
+        <translation>tipscope-cli: abgelehnt, nichts wurde geändert: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="100"/>
         <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
         <translation>tipscope-cli: context nimmt show, set [--work-order W] [--serial S] [--operator O] [--stdin] oder clear</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="126"/>
+        <location filename="../app/cli/clicontext.cpp" line="133"/>
         <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
         <translation>tipscope-cli: limits nimmt show, set REGEL (etwa port=1,tool=C245,recovery=3.5,dip=60) oder clear</translation>
     </message>
@@ -1796,34 +1820,34 @@
 <context>
     <name>CliJoints</name>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="41"/>
+        <location filename="../app/cli/clijoints.cpp" line="42"/>
         <source>&apos;%1&apos; is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00</source>
         <translation>„%1“ ist keine Zeitangabe: schreiben Sie 24h, 30m, 7d, 2026-12-01 oder 2026-12-01T08:00</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <location filename="../app/cli/clijoints.cpp" line="67"/>
         <source>the journal has no device &apos;%1&apos;</source>
         <translation>das Journal kennt kein Gerät „%1“</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="66"/>
+        <location filename="../app/cli/clijoints.cpp" line="68"/>
         <source>&apos;%1&apos; names %2 devices; give one of:
   %3</source>
         <translation>„%1“ bezeichnet %2 Geräte; geben Sie eines davon an:
   %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="94"/>
+        <location filename="../app/cli/clijoints.cpp" line="96"/>
         <source>--port takes a port number from 1 to 4</source>
         <translation>--port nimmt eine Portnummer von 1 bis 4</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="103"/>
+        <location filename="../app/cli/clijoints.cpp" line="105"/>
         <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
         <translation>--verdict nimmt ok, slow-recovery, too-deep oder incomplete</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="143"/>
+        <location filename="../app/cli/clijoints.cpp" line="177"/>
         <source>tipscope-cli: give --json or --csv, not both</source>
         <translation>tipscope-cli: geben Sie --json oder --csv an, nicht beides</translation>
     </message>
@@ -1831,17 +1855,17 @@
 <context>
     <name>CliJournal</name>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="77"/>
+        <location filename="../app/cli/clijournal.cpp" line="75"/>
         <source>tipscope-cli: journal retention takes a number of days (0 keeps everything), for example: journal retention 90</source>
         <translation>tipscope-cli: journal retention erwartet eine Anzahl Tage (0 behält alles), zum Beispiel: journal retention 90</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="96"/>
+        <location filename="../app/cli/clijournal.cpp" line="94"/>
         <source>tipscope-cli: the retention could not be stored: %1</source>
         <translation>tipscope-cli: die Aufbewahrungsdauer konnte nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="112"/>
+        <location filename="../app/cli/clijournal.cpp" line="110"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal erwartet show oder retention TAGE</translation>
     </message>
@@ -1849,66 +1873,76 @@
 <context>
     <name>CliMeasure</name>
     <message>
-        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <location filename="../app/cli/climeasure.cpp" line="70"/>
         <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
         <translation>tipscope-cli: measure erwartet eine DATEI, eine Aufzeichnung (von record oder von „Aufzeichnen“ bzw. dem CSV-Export der Diagrammseite)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climeasure.cpp" line="81"/>
+        <source>%1 is a FIFO: waiting for what is written into it (Ctrl-C stops)</source>
+        <translation>%1 ist ein FIFO: es wird gewartet, bis etwas hineingeschrieben wird (Strg+C beendet)</translation>
     </message>
 </context>
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="175"/>
+        <location filename="../app/cli/climonitor.cpp" line="177"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="288"/>
+        <location filename="../app/cli/climonitor.cpp" line="299"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="259"/>
+        <location filename="../app/cli/climonitor.cpp" line="270"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="226"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="22"/>
+        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74"/>
+        <location filename="../app/cli/climonitor.cpp" line="76"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="98"/>
+        <location filename="../app/cli/climonitor.cpp" line="100"/>
         <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
         <translation>tipscope-cli: %1 zu schreiben ist fehlgeschlagen: %2; die Überwachung geht ohne die Datei weiter</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="158"/>
+        <location filename="../app/cli/climonitor.cpp" line="160"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="192"/>
+        <location filename="../app/cli/climonitor.cpp" line="194"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: der Arbeitsbereich %1 hat keine Linien</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="227"/>
+        <location filename="../app/cli/climonitor.cpp" line="229"/>
         <source>permission denied</source>
         <translation>keine Berechtigung</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <location filename="../app/cli/climonitor.cpp" line="230"/>
         <source>no such folder</source>
         <translation>diesen Ordner gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="371"/>
+        <location filename="../app/cli/climonitor.cpp" line="237"/>
+        <source>tipscope-cli: lines %1 and %2 would both write %3; rename one</source>
+        <translation>tipscope-cli: die Leitungen %1 und %2 würden beide %3 schreiben; benennen Sie eine um</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="382"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 Einträge konnten nicht im Journal %2 gespeichert werden: %3</translation>
     </message>
@@ -1976,7 +2010,9 @@
 Commands:
   detect [--json] [--scan]  one line per device: &quot;&lt;address or --&gt; &lt;model&gt; &lt;family&gt; &lt;version&gt;&quot;
   read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
-  write CODE VALUE [--raw]  validate, send, and read back
+  write CODE VALUE [--raw [--force]]
+                            validate (MIT and MAT read first), send, and read back;
+                            --raw sends the data field, checked unless --force
   send HEX                  send a raw frame; print the answer in hex and decoded
   monitor [--interval MS] [--duration S] [--csv FILE [--csv-one-file]]
           [--limit RULE] [--journal FILE]
@@ -2019,7 +2055,8 @@ line prefixed with the line&apos;s name; monitor --csv writes a file per line.
 
 Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 3 the device answered NAK, or a read-back or profile check failed;
-4 no valid answer; 5 transport error.
+4 no valid answer; 5 transport error; the journal (joints, journal show): 6 missing,
+7 damaged, 8 newer, 9 locked, 10 not accessible, 11 disk full or failing.
 </source>
         <translation>Aufruf: tipscope-cli [--port GERÄT | --tcp HOST:PORT | --demo | --demo-activity |
                       --workspace DATEI] [--baud N]
@@ -2029,7 +2066,9 @@ Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 Befehle:
   detect [--json] [--scan]  eine Zeile pro Gerät: &quot;&lt;Adresse oder --&gt; &lt;Modell&gt; &lt;Familie&gt; &lt;Version&gt;&quot;
   read CODE... [--raw]      eine Zeile pro Code: &quot;&lt;CODE&gt; &lt;Wert&gt; &lt;Einheit&gt;&quot;
-  write CODE WERT [--raw]   prüfen, senden und zurücklesen
+  write CODE WERT [--raw [--force]]
+                            prüfen (MIT und MAT zuerst gelesen), senden und zurücklesen;
+                            --raw sendet das Datenfeld, geprüft außer mit --force
   send HEX                  ein Roh-Telegramm senden; die Antwort hexadezimal und dekodiert ausgeben
   monitor [--interval MS] [--duration S] [--csv DATEI [--csv-one-file]]
           [--limit REGEL] [--journal DATEI]
@@ -2074,101 +2113,102 @@ jede Ausgabezeile mit dem Namen der Leitung davor; monitor --csv schreibt eine D
 
 Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschrieben);
 3 das Gerät hat mit NAK geantwortet, oder Zurücklesen oder Profilprüfung fehlgeschlagen;
-4 keine gültige Antwort; 5 Übertragungsfehler.
+4 keine gültige Antwort; 5 Übertragungsfehler; das Journal (joints, journal show): 6 fehlt,
+7 beschädigt, 8 neuer, 9 gesperrt, 10 nicht zugänglich, 11 Datenträger voll oder fehlerhaft.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="144"/>
+        <location filename="../app/cli/clioptions.cpp" line="147"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="188"/>
+        <location filename="../app/cli/clioptions.cpp" line="191"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="194"/>
+        <location filename="../app/cli/clioptions.cpp" line="197"/>
         <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
         <translation>--workspace erwartet eine Datei, und nur eines von --port, --tcp, --demo, --workspace</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="201"/>
+        <location filename="../app/cli/clioptions.cpp" line="204"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="209"/>
+        <location filename="../app/cli/clioptions.cpp" line="212"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="214"/>
+        <location filename="../app/cli/clioptions.cpp" line="217"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud erwartet eine Baudrate wie 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="221"/>
+        <location filename="../app/cli/clioptions.cpp" line="224"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity erwartet none, even oder odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="225"/>
+        <location filename="../app/cli/clioptions.cpp" line="228"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits erwartet 1 oder 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="234"/>
+        <location filename="../app/cli/clioptions.cpp" line="237"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="242"/>
+        <location filename="../app/cli/clioptions.cpp" line="245"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="245"/>
+        <location filename="../app/cli/clioptions.cpp" line="248"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="173"/>
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
         <source>--%1 needs a value</source>
         <translation>--%1 braucht einen Wert</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <location filename="../app/cli/clioptions.cpp" line="180"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="249"/>
+        <location filename="../app/cli/clioptions.cpp" line="252"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="250"/>
+        <location filename="../app/cli/clioptions.cpp" line="253"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="256"/>
+        <location filename="../app/cli/clioptions.cpp" line="259"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="259"/>
+        <location filename="../app/cli/clioptions.cpp" line="262"/>
         <source>--workspace runs detect, monitor, dump or joints, not %1</source>
         <translation>--workspace führt detect, monitor, dump oder joints aus, nicht %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="262"/>
+        <location filename="../app/cli/clioptions.cpp" line="265"/>
         <source>--csv-one-file goes with --workspace and --csv FILE</source>
         <translation>--csv-one-file gehört zu --workspace und --csv DATEI</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="265"/>
+        <location filename="../app/cli/clioptions.cpp" line="268"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -2191,9 +2231,14 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: profile erwartet save DATEI, diff DATEI oder apply DATEI</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <location filename="../app/cli/cliprofile.cpp" line="113"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: das Anwenden dieses Profils würde abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="119"/>
+        <source>tipscope-cli: the line was dropped during the apply: %1. A slow station may need a longer --timeout (now %2 ms) or more --retries (now %3); apply the profile again once the line answers: what is already right is left alone</source>
+        <translation>tipscope-cli: die Leitung wurde während des Anwendens getrennt: %1. Eine langsame Station braucht vielleicht ein längeres --timeout (jetzt %2 ms) oder mehr --retries (jetzt %3); wenden Sie das Profil erneut an, sobald die Leitung antwortet: was schon stimmt, bleibt unberührt</translation>
     </message>
 </context>
 <context>
@@ -2286,7 +2331,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="171"/>
+        <location filename="../app/cli/clisession.cpp" line="172"/>
+        <source>tipscope-cli: no device could be identified on %1 (checked addresses 01, 10, 20 and frames without addresses); what came back: %2. Check the baud rate, the addressing, and that robot mode is on.</source>
+        <translation>tipscope-cli: an %1 ließ sich kein Gerät erkennen (geprüft: Adressen 01, 10, 20 und Rahmen ohne Adressen); zurück kam: %2. Prüfen Sie die Baudrate, die Adressierung und ob der Robotermodus eingeschaltet ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="181"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -2841,47 +2891,47 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointLimitRules</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="49"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="51"/>
         <source>the longest recovery must be more than 0 s and at most %1 s</source>
         <translation>die längste Erholzeit muss mehr als 0 s und höchstens %1 s betragen</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="57"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="59"/>
         <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
         <translation>der tiefste Einbruch muss eine ganze Zahl von Kelvin zwischen 1 und %1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="65"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="67"/>
         <source>the tip wear share must be more than 0 and at most 10</source>
         <translation>der Anteil für Spitzenverschleiß muss größer als 0 und höchstens 10 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="71"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="73"/>
         <source>a port is a number from 1 to 4</source>
         <translation>ein Port ist eine Zahl von 1 bis 4</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="109"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="111"/>
         <source>%1 must be a number</source>
         <translation>%1 muss eine Zahl sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="168"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="170"/>
         <source>joint limits: %1</source>
         <translation>Lötstellen-Grenzwerte: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="175"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="177"/>
         <source>joint limit rule %1: %2</source>
         <translation>Lötstellen-Grenzwertregel %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="202"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
         <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
         <translation>„%1“ ist kein Grenzwert: schreiben Sie port=N, tool=NAME, recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL, durch Kommas getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="210"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="212"/>
         <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
         <translation>„%1“ setzt keinen Grenzwert: geben Sie recovery=SEKUNDEN, dip=KELVIN oder wear=ANTEIL an</translation>
     </message>
@@ -3059,37 +3109,45 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="32"/>
-        <location filename="../lib/journal/journalreader.cpp" line="213"/>
+        <location filename="../lib/journal/journalreader.cpp" line="241"/>
         <source>No journal is open.</source>
         <translation>Kein Journal ist geöffnet.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="84"/>
+        <location filename="../lib/journal/journalreader.cpp" line="85"/>
         <source>There is no journal at %1.</source>
         <translation>Unter %1 gibt es kein Journal.</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../lib/journal/journalreader.cpp" line="116"/>
+        <source>The journal %1 is damaged (%n finding(s), the first: %2).</source>
+        <translation>
+            <numerusform>Das Journal %1 ist beschädigt (%n Befund, der erste: %2).</numerusform>
+            <numerusform>Das Journal %1 ist beschädigt (%n Befunde, der erste: %2).</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="89"/>
+        <location filename="../lib/journal/journalschema.cpp" line="102"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>Das Journal %1 wurde von einem neueren TipScope geschrieben (Schema %2; dieses kennt bis %3). Es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="104"/>
+        <location filename="../lib/journal/journalschema.cpp" line="117"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>Die Datei %1 ist kein TipScope-Journal. Sie wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="183"/>
+        <location filename="../lib/journal/journalschema.cpp" line="226"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="244"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="252"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Verlorene Einträge: %1. Grund: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="333"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="341"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
     </message>
@@ -3119,7 +3177,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Das Journal %1 hat einen Fehler gemeldet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="66"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="88"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>Das Journal %1 kann nicht geschrieben werden: Sein Ordner oder die Datei ist schreibgeschützt oder nicht zugänglich.</translation>
     </message>
@@ -3372,52 +3430,57 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Der Hostname %1 des Brokers lässt sich nicht auflösen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Ein Passwort ist gesetzt, aber kein Benutzername: MQTT sendet ein Passwort nur mit einem Benutzernamen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="54"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
         <source>The user name %1 is not accepted: %2</source>
         <translation>Der Benutzername %1 wird nicht angenommen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="78"/>
         <source>The last will on %1 is not accepted: %2</source>
         <translation>Der letzte Wille auf %1 wird nicht angenommen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="74"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="116"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>Die CA-Zertifikatsdatei %1 kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="76"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="122"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Ein Client-Zertifikat braucht sowohl seine Zertifikatsdatei als auch seine Schlüsseldatei.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="80"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="126"/>
         <source>The file %1 cannot be read.</source>
         <translation>Die Datei %1 kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="98"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="97"/>
         <source>TLS cannot be set up: %1</source>
         <translation>TLS kann nicht eingerichtet werden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="106"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="105"/>
         <source>The MQTT version cannot be set: %1</source>
         <translation>Die MQTT-Version kann nicht eingestellt werden: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="130"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="118"/>
+        <source>The CA certificate file %1 holds no PEM certificate (-----BEGIN CERTIFICATE-----).</source>
+        <translation>Die CA-Zertifikatsdatei %1 enthält kein PEM-Zertifikat (-----BEGIN CERTIFICATE-----).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="148"/>
         <source>The client id %1 is not accepted.</source>
         <translation>Die Client-ID %1 wird nicht angenommen.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="131"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="149"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Kein Speicher mehr für einen MQTT-Client.</translation>
     </message>
@@ -3548,57 +3611,62 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>PortDiagnostics</name>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="40"/>
         <source>this program</source>
         <translation>dieses Programm</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="38"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="41"/>
         <source>, this program</source>
         <translation>, dieses Programm</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="51"/>
         <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
         <translation>führen Sie `sudo usermod -aG %1 $USER` aus und melden Sie sich danach ab und wieder an.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
         <source>You are not allowed to open %1: %2</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="56"/>
         <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen, und die Schnittstelle gehört zur Gruppe root statt zu dialout; ein Gruppenbeitritt hilft daher erst, wenn eine udev-Regel ihr GROUP=&quot;dialout&quot; zuweist. Dann %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="58"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="61"/>
         <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
         <translation>Sie haben keine Berechtigung, %1 zu öffnen; die Schnittstelle gehört zur Gruppe %2 (nicht dialout): %3</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="102"/>
+        <source>There is no such port in %1: a port&apos;s name is never %2 characters long. The port name may be mistyped.</source>
+        <translation>In %1 gibt es diesen Port nicht: der Name eines Ports ist nie %2 Zeichen lang. Der Portname ist vielleicht falsch geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="112"/>
         <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
         <translation>%1 wird bereits von %2 verwendet. Schließen Sie diese Verbindung und versuchen Sie es dann erneut.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="107"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
         <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
         <translation>Diesen Port gibt es nicht: %1. Möglicherweise ist der Adapter abgezogen oder der Portname falsch geschrieben.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="124"/>
         <source>%1 is already open in TipScope; close that connection first</source>
         <translation>%1 ist in TipScope bereits geöffnet; schließen Sie zuerst diese Verbindung</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="129"/>
         <source>%1 stopped working, perhaps because the adapter was unplugged</source>
         <translation>%1 funktioniert nicht mehr, vielleicht wurde der Adapter abgezogen</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="122"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="133"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
@@ -3714,84 +3782,89 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="212"/>
+        <location filename="../lib/model/profile.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="131"/>
+        <source>%1 bytes; a profile is at most %2</source>
+        <translation>%1 Bytes; ein Profil hat höchstens %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="145"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>keine gültige JSON-Datei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="149"/>
+        <location filename="../lib/model/profile.cpp" line="158"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>kein TipScope-Profil (&quot;format&quot;: &quot;tipscope-profile&quot; fehlt)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="160"/>
+        <location filename="../lib/model/profile.cpp" line="169"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="168"/>
+        <location filename="../lib/model/profile.cpp" line="177"/>
         <source>the profile has no values</source>
         <translation>das Profil enthält keine Werte</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="175"/>
+        <location filename="../lib/model/profile.cpp" line="184"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="190"/>
+        <location filename="../lib/model/profile.cpp" line="199"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>das Profil wird abgelehnt, es wird nichts geschrieben:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="202"/>
+        <location filename="../lib/model/profile.cpp" line="211"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="206"/>
-        <source>%1 is %2 bytes; a profile is at most %3</source>
-        <translation>%1 ist %2 Bytes groß; ein Profil hat höchstens %3</translation>
+        <location filename="../lib/model/profile.cpp" line="216"/>
+        <source>%1 is %2</source>
+        <translation>%1 hat %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="228"/>
+        <location filename="../lib/model/profile.cpp" line="236"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="132"/>
+        <location filename="../lib/model/profile.cpp" line="141"/>
         <source>not a valid JSON file: %1</source>
         <translation>keine gültige JSON-Datei: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="143"/>
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>mehr als einmal angegeben, daher ist unklar, welcher Wert gemeint ist: %1; es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="101"/>
+        <location filename="../lib/model/profilejson.cpp" line="129"/>
         <source>a NUL byte at byte %1</source>
         <translation>ein NUL-Byte bei Byte %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="102"/>
+        <location filename="../lib/model/profilejson.cpp" line="130"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>Steuerzeichen 0x%1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152"/>
+        <location filename="../lib/model/profile.cpp" line="161"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>Profilschema %1 wird nicht unterstützt (diese Version liest die Schemas %2 bis %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="179"/>
+        <location filename="../lib/model/profile.cpp" line="188"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: der Wert muss ein Datenfeld in Anführungszeichen sein, z. B. &quot;00350&quot;, oder ein Objekt mit einem in &quot;raw&quot; (und Text in &quot;name&quot; und &quot;value&quot;)</translation>
     </message>
@@ -3936,6 +4009,29 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>ProfileRequest</name>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="37"/>
+        <source>&quot;request_id&quot; must be text of at most %1 characters, without control characters</source>
+        <translation>&quot;request_id&quot; muss Text mit höchstens %1 Zeichen sein, ohne Steuerzeichen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="53"/>
+        <source>the request is %1; nothing will be written</source>
+        <translation>die Anfrage hat %1; nichts wird geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="72"/>
+        <source>given more than once, so which one is meant is unclear: %1; nothing will be written</source>
+        <translation>mehr als einmal angegeben, daher ist unklar, welches gemeint ist: %1; nichts wird geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="79"/>
+        <source>&quot;profile&quot; must be a profile: an object as tipscope-cli profile save writes it</source>
+        <translation>&quot;profile&quot; muss ein Profil sein: ein Objekt, wie tipscope-cli profile save es schreibt</translation>
+    </message>
+</context>
+<context>
     <name>RemoteApply</name>
     <message>
         <location filename="../lib/plant/remoteapply.cpp" line="76"/>
@@ -3963,12 +4059,12 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>auf dieses Gerät wird gerade ein anderes Profil angewendet</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="98"/>
-        <source>not a profile: %1</source>
-        <translation>kein Profil: %1</translation>
+        <location filename="../lib/plant/remoteapply.cpp" line="95"/>
+        <source>profile refused: %1</source>
+        <translation>Profil abgelehnt: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/plant/remoteapply.cpp" line="128"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="125"/>
         <source>%n setting(s) not taken</source>
         <translation>
             <numerusform>%n Einstellung nicht übernommen</numerusform>
@@ -3976,17 +4072,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="157"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="154"/>
         <source>Profile applied through MQTT for %1</source>
         <translation>Profil über MQTT für %1 angewendet</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="158"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="155"/>
         <source>Profile through MQTT for %1 not applied: %2</source>
         <translation>Profil über MQTT für %1 nicht angewendet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="159"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="156"/>
         <source>an unnamed client</source>
         <translation>einen unbenannten Client</translation>
     </message>
@@ -4089,12 +4185,17 @@ Dauerhaft mit dieser udev-Regel:
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="234"/>
+        <location filename="../lib/model/session.cpp" line="235"/>
+        <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
+        <translation>mit %1 verbunden, aber kein Gerät ließ sich erkennen; zurück kam: %2 (Robotermodus aus? falsche Adressierung oder Baudrate?)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="240"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="242"/>
+        <location filename="../lib/model/session.cpp" line="248"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -4384,12 +4485,17 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%1 für %2 (%3) abgelehnt: zulässig ist %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="108"/>
+        <source>&apos;%1&apos; is no data field of %2 (%3): allowed is %4</source>
+        <translation>&apos;%1&apos; ist kein Datenfeld von %2 (%3): erlaubt ist %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="193"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; ist keine Verzögerung in Sekunden wie 1.6 oder 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="198"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; ist keine ganze Zahl; für %2 zulässig: %3</translation>
     </message>
@@ -4420,7 +4526,17 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>WorkContextJson</name>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="26"/>
+        <location filename="../lib/model/workcontextjson.cpp" line="20"/>
+        <source>%1 has %2 characters; at most %3 are kept</source>
+        <translation>%1 hat %2 Zeichen; höchstens %3 werden gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="27"/>
+        <source>%1 holds a control character (%2) at character %3</source>
+        <translation>%1 enthält ein Steuerzeichen (%2) an Zeichen %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="53"/>
         <source>%1 must be text</source>
         <translation>%1 muss Text sein</translation>
     </message>
@@ -8037,32 +8153,32 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::gui::WorkContextDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="24"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="27"/>
         <source>Work context</source>
         <translation>Arbeitskontext</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="34"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="37"/>
         <source>Stamped on every joint and event from now on, by every TipScope program on this computer, until it is changed.</source>
         <translation>Wird ab jetzt jeder Lötstelle und jedem Ereignis mitgegeben, von jedem TipScope-Programm auf diesem Rechner, bis er geändert wird.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="40"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="43"/>
         <source>Work order:</source>
         <translation>Auftrag:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="41"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="44"/>
         <source>Board serial:</source>
         <translation>Seriennummer der Platine:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="42"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
         <source>Operator:</source>
         <translation>Bediener:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="48"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
@@ -8085,6 +8201,41 @@ Möchten Sie fortfahren?</translation>
         <location filename="../lib/journal/journal.cpp" line="149"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Auftrag: %1, Platine: %2, Bediener: %3</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Discovery</name>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="78"/>
+        <source>%n NAK(s) %1 (%2)</source>
+        <translation>
+            <numerusform>%n NAK %1 (%2)</numerusform>
+            <numerusform>%n NAKs %1 (%2)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="82"/>
+        <source>%n answer(s) with a bad block check or format</source>
+        <translation>
+            <numerusform>%n Antwort mit falscher Prüfsumme oder falschem Format</numerusform>
+            <numerusform>%n Antworten mit falscher Prüfsumme oder falschem Format</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="84"/>
+        <source>%n frame(s) from an address not asked</source>
+        <translation>
+            <numerusform>%n Rahmen von einer nicht gefragten Adresse</numerusform>
+            <numerusform>%n Rahmen von nicht gefragten Adressen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="86"/>
+        <source>%n byte(s) that were no frame</source>
+        <translation>
+            <numerusform>%n Byte, das kein Rahmen war</numerusform>
+            <numerusform>%n Bytes, die kein Rahmen waren</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -4,7 +4,7 @@
 <context>
     <name>AgentMain</name>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="37"/>
+        <location filename="../app/agent/main.cpp" line="40"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>site %1, %n line (%2), broker %3:%4%5 %6</numerusform>
@@ -15,7 +15,7 @@
 <context>
     <name>CliCommands</name>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="52"/>
+        <location filename="../app/cli/clicommands.cpp" line="53"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n raw byte, not a frame (%1)</numerusform>
@@ -87,6 +87,17 @@
     </message>
 </context>
 <context>
+    <name>Journal</name>
+    <message numerus="yes">
+        <location filename="../lib/journal/journalreader.cpp" line="116"/>
+        <source>The journal %1 is damaged (%n finding(s), the first: %2).</source>
+        <translation>
+            <numerusform>The journal %1 is damaged (%n finding, the first: %2).</numerusform>
+            <numerusform>The journal %1 is damaged (%n findings, the first: %2).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>MeasurementReport</name>
     <message numerus="yes">
         <location filename="../lib/model/analysis/measurementreport.cpp" line="52"/>
@@ -127,7 +138,7 @@
 <context>
     <name>RemoteApply</name>
     <message numerus="yes">
-        <location filename="../lib/plant/remoteapply.cpp" line="128"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="125"/>
         <source>%n setting(s) not taken</source>
         <translation>
             <numerusform>%n setting not taken</numerusform>
@@ -138,7 +149,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="242"/>
+        <location filename="../lib/model/session.cpp" line="248"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -290,6 +301,41 @@
         <translation>
             <numerusform>✓ Profile saved: %n setting of %1 in %2</numerusform>
             <numerusform>✓ Profile saved: %n settings of %1 in %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Discovery</name>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="78"/>
+        <source>%n NAK(s) %1 (%2)</source>
+        <translation>
+            <numerusform>%n NAK %1 (%2)</numerusform>
+            <numerusform>%n NAKs %1 (%2)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="82"/>
+        <source>%n answer(s) with a bad block check or format</source>
+        <translation>
+            <numerusform>%n answer with a bad block check or format</numerusform>
+            <numerusform>%n answers with a bad block check or format</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="84"/>
+        <source>%n frame(s) from an address not asked</source>
+        <translation>
+            <numerusform>%n frame from an address not asked</numerusform>
+            <numerusform>%n frames from an address not asked</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="86"/>
+        <source>%n byte(s) that were no frame</source>
+        <translation>
+            <numerusform>%n byte that was no frame</numerusform>
+            <numerusform>%n bytes that were no frame</numerusform>
         </translation>
     </message>
 </context>

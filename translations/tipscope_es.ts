@@ -125,22 +125,22 @@
 <context>
     <name>AgentMain</name>
     <message>
-        <location filename="../app/agent/main.cpp" line="29"/>
+        <location filename="../app/agent/main.cpp" line="32"/>
         <source>without a user name</source>
         <translation>sin nombre de usuario</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="31"/>
+        <location filename="../app/agent/main.cpp" line="34"/>
         <source>as %1, without a password</source>
         <translation>como %1, sin contraseña</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="32"/>
+        <location filename="../app/agent/main.cpp" line="35"/>
         <source>as %1, password from the %2</source>
         <translation>como %1, contraseña de %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="37"/>
+        <location filename="../app/agent/main.cpp" line="40"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>planta %1, %n línea (%2), broker %3:%4%5 %6</numerusform>
@@ -148,57 +148,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="41"/>
+        <location filename="../app/agent/main.cpp" line="44"/>
         <source> with TLS</source>
         <translation> con TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="53"/>
+        <location filename="../app/agent/main.cpp" line="56"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Ejecuta las líneas de un espacio de trabajo sin pantalla, guarda sus soldaduras y eventos en el diario y los publica en un broker MQTT.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="60"/>
+        <location filename="../app/agent/main.cpp" line="63"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>La configuración del agente (por omisión %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="61"/>
+        <location filename="../app/agent/main.cpp" line="64"/>
         <source>file</source>
         <translation>archivo</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="64"/>
+        <location filename="../app/agent/main.cpp" line="67"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Lee la configuración y su espacio de trabajo, indica lo que está mal y termina.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="71"/>
+        <location filename="../app/agent/main.cpp" line="74"/>
         <source>unexpected argument %1</source>
         <translation>argumento inesperado %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="87"/>
+        <location filename="../app/agent/main.cpp" line="90"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="94"/>
         <source>%1 is good: %2</source>
         <translation>%1 es correcta: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="99"/>
+        <location filename="../app/agent/main.cpp" line="106"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>configuración rechazada, se mantiene la actual: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="103"/>
+        <location filename="../app/agent/main.cpp" line="110"/>
         <source>reloading: %1</source>
         <translation>recargando: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="107"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 arrancando: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="111"/>
+        <location filename="../app/agent/main.cpp" line="119"/>
+        <source>stopped: %1</source>
+        <translation>detenido: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/agent/main.cpp" line="122"/>
         <source>stopped</source>
         <translation>detenido</translation>
     </message>
@@ -1242,12 +1252,12 @@
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="225"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="236"/>
         <source>unknown (%1)</source>
         <translation>desconocido (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="232"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="243"/>
         <source>none</source>
         <translation>ninguno</translation>
     </message>
@@ -1378,44 +1388,44 @@
 <context>
     <name>ChartCsvReader</name>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="98"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="99"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="118"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="142"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="119"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="143"/>
         <source>the line is longer than %1 bytes (is this a chart CSV?)</source>
         <translation>la línea supera los %1 bytes (¿es un CSV de gráficos?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="106"/>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="147"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="107"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="148"/>
         <source>the file holds binary data, not CSV text</source>
         <translation>el archivo contiene datos binarios, no texto CSV</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="153"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="154"/>
         <source>the text is not UTF-8 (save the file as &quot;CSV UTF-8&quot;)</source>
         <translation>el texto no está en UTF-8 (guarde el archivo como &quot;CSV UTF-8&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="157"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="158"/>
         <source>more than %1 comment lines (&quot;#&quot;); a recording has a few, and one per channel</source>
         <translation>más de %1 líneas de comentario («#»); una grabación tiene unas pocas, y una por canal</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="194"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="195"/>
         <source>the header row should start with &quot;time&quot; (is this a chart CSV written by TipScope?)</source>
         <translation>la fila de cabecera debe empezar por &quot;time&quot; (¿es un CSV de gráficos escrito por TipScope?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="197"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="198"/>
         <source>%1 columns; replay reads at most %2</source>
         <translation>%1 columnas; la reproducción lee como máximo %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="211"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="212"/>
         <source>column %1 &quot;%2&quot; is not &quot;port&lt;n&gt; &lt;series&gt; [unit]&quot; or &quot;feeder &lt;series&gt; [unit]&quot;</source>
         <translation>la columna %1 &quot;%2&quot; no es &quot;port&lt;n&gt; &lt;serie&gt; [unidad]&quot; ni &quot;feeder &lt;serie&gt; [unidad]&quot;</translation>
     </message>
@@ -1425,77 +1435,77 @@
         <translation>columna %1 &quot;%2&quot;: la unidad debería ser &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="227"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="228"/>
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="255"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="258"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="256"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="259"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="235"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="236"/>
         <source>column %1 &quot;%2&quot; appears twice</source>
         <translation>la columna %1 &quot;%2&quot; aparece dos veces</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="241"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="244"/>
         <source>the header names no series columns</source>
         <translation>la cabecera no nombra ninguna columna de serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="284"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="287"/>
         <source>column %1: &quot;%2&quot; is not a number</source>
         <translation>columna %1: &quot;%2&quot; no es un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="291"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="294"/>
         <source>%1 has values in some of its columns but not all</source>
         <translation>%1 tiene valores en algunas de sus columnas, pero no en todas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="298"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="301"/>
         <source>%1 cells, but the header has %2 columns</source>
         <translation>%1 celdas, pero la cabecera tiene %2 columnas</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="303"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
         <source>&quot;%1&quot; is not an ISO 8601 time</source>
         <translation>&quot;%1&quot; no es una hora ISO 8601</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="306"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="310"/>
         <source>the time %1 is earlier than the row before it (rows must be in time order)</source>
         <translation>la hora %1 es anterior a la de la fila precedente (las filas deben estar en orden cronológico)</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="318"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="322"/>
         <source>%1 has more than %2 samples, more than replay holds; split the file</source>
         <translation>%1 tiene más de %2 muestras, más de las que admite la reproducción; divida el archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="342"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="346"/>
         <source>the event &quot;%1&quot; is not &quot;&lt;channel&gt; &lt;kind&gt;: &lt;text&gt;&quot;</source>
         <translation>el evento &quot;%1&quot; no tiene la forma &quot;&lt;canal&gt; &lt;tipo&gt;: &lt;texto&gt;&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="167"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="168"/>
         <source>a quoted cell is not closed</source>
         <translation>una celda entre comillas no está cerrada</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="375"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="379"/>
         <source>the file has a header but no rows</source>
         <translation>el archivo tiene cabecera pero ninguna fila</translation>
     </message>
     <message>
-        <location filename="../lib/model/recording/chartcsvparser.cpp" line="373"/>
+        <location filename="../lib/model/recording/chartcsvparser.cpp" line="377"/>
         <source>the file is empty or holds only comments</source>
         <translation>el archivo está vacío o solo contiene comentarios</translation>
     </message>
@@ -1664,131 +1674,145 @@
 <context>
     <name>CliCommands</name>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="40"/>
+        <location filename="../app/cli/clicommands.cpp" line="41"/>
         <source>tipscope-cli: %1: %2</source>
         <translation>tipscope-cli: %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="64"/>
+        <location filename="../app/cli/clicommands.cpp" line="65"/>
         <source>%1 unreadable data field &apos;%2&apos;</source>
         <translation>%1 campo de datos ilegible &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="103"/>
+        <location filename="../app/cli/clicommands.cpp" line="104"/>
         <source>tipscope-cli: read needs at least one command code, e.g. read ST1</source>
         <translation>tipscope-cli: read necesita al menos un código de comando, p. ej. read ST1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="116"/>
+        <location filename="../app/cli/clicommands.cpp" line="117"/>
         <source>tipscope-cli: no device here can read &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea puede leer &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="139"/>
+        <location filename="../app/cli/clicommands.cpp" line="140"/>
         <source>%1 written</source>
         <translation>%1 escrito</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="144"/>
+        <location filename="../app/cli/clicommands.cpp" line="145"/>
         <source>tipscope-cli: %1 was accepted but could not be read back: %2</source>
         <translation>tipscope-cli: %1 se aceptó, pero no se pudo volver a leer: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="152"/>
+        <location filename="../app/cli/clicommands.cpp" line="153"/>
         <source>tipscope-cli: verification failed: wrote %1, the device reports %2</source>
         <translation>tipscope-cli: la verificación falló: se escribió %1 y el equipo indica %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="158"/>
+        <location filename="../app/cli/clicommands.cpp" line="159"/>
         <source>%1 (verified)</source>
         <translation>%1 (verificado)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="199"/>
+        <location filename="../app/cli/clicommands.cpp" line="176"/>
+        <source>the device answered &apos;%1&apos;, which is no value</source>
+        <translation>el equipo respondió &apos;%1&apos;, que no es un valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="197"/>
+        <source>tipscope-cli: refused, nothing was sent: %1 is bounded by %2, which could not be read: %3</source>
+        <translation>tipscope-cli: rechazado, no se envió nada: %1 está limitado por %2, que no se pudo leer: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="228"/>
+        <source>%1 (--force sends it anyway)</source>
+        <translation>%1 (--force lo envía de todos modos)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicommands.cpp" line="239"/>
         <source>tipscope-cli: write takes CODE VALUE, e.g. write ST1 350</source>
         <translation>tipscope-cli: write requiere CÓDIGO VALOR, p. ej. write ST1 350</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="208"/>
+        <location filename="../app/cli/clicommands.cpp" line="248"/>
         <source>tipscope-cli: no device here accepts writes of &apos;%1&apos;</source>
         <translation>tipscope-cli: ningún equipo de esta línea admite escrituras de &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="222"/>
-        <location filename="../app/cli/clicommands.cpp" line="224"/>
+        <location filename="../app/cli/clicommands.cpp" line="221"/>
         <source>the data field must be printable ASCII</source>
         <translation>el campo de datos debe ser ASCII imprimible</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="227"/>
+        <location filename="../app/cli/clicommands.cpp" line="224"/>
         <source>the data field is longer than 32 characters</source>
         <translation>el campo de datos tiene más de 32 caracteres</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="188"/>
-        <location filename="../app/cli/clicommands.cpp" line="244"/>
-        <location filename="../app/cli/clicommands.cpp" line="270"/>
+        <location filename="../app/cli/clicommands.cpp" line="205"/>
+        <location filename="../app/cli/clicommands.cpp" line="278"/>
+        <location filename="../app/cli/clicommands.cpp" line="304"/>
         <source>tipscope-cli: refused, nothing was sent: %1</source>
         <translation>tipscope-cli: rechazado, no se envió nada: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="261"/>
+        <location filename="../app/cli/clicommands.cpp" line="295"/>
         <source>tipscope-cli: send takes the frame in hex, e.g. send 02 30 30 30 31 52 53 4D 4E 03 02</source>
         <translation>tipscope-cli: send requiere la trama en hexadecimal, p. ej. send 02 30 30 30 31 52 53 4D 4E 03 02</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="336"/>
+        <location filename="../app/cli/clicommands.cpp" line="370"/>
         <source>tipscope-cli: unknown family &apos;%1&apos;; known: %2</source>
         <translation>tipscope-cli: familia desconocida &apos;%1&apos;; conocidas: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="359"/>
+        <location filename="../app/cli/clicommands.cpp" line="393"/>
         <source> [dangerous]</source>
         <translation> [peligroso]</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="362"/>
+        <location filename="../app/cli/clicommands.cpp" line="396"/>
         <source>values: %1</source>
         <translation>valores: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicommands.cpp" line="364"/>
+        <location filename="../app/cli/clicommands.cpp" line="398"/>
         <source>families: %1</source>
         <translation>familias: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clicommands.cpp" line="52"/>
+        <location filename="../app/cli/clicommands.cpp" line="53"/>
         <source>%n raw byte(s), not a frame (%1)</source>
         <translation>
             <numerusform>%n byte en bruto, no es una trama (%1)</numerusform>
             <numerusform>%n bytes en bruto, no es una trama (%1)</numerusform>
         </translation>
     </message>
-    <message>
-        <location filename="../app/cli/clicommands.cpp" line="179"/>
-        <source>tipscope-cli: %1 was not sent: its limit %2 could not be read: %3</source>
-        <translation>tipscope-cli: %1 no se envió: no se pudo leer su límite %2: %3</translation>
-    </message>
 </context>
 <context>
     <name>CliContext</name>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="42"/>
+        <location filename="../app/cli/clicontext.cpp" line="44"/>
         <source>&apos;%1&apos; is not a context line: write work_order=W, board_serial=S or operator=O</source>
         <translation>«%1» no es una línea de contexto: escriba work_order=W, board_serial=S u operator=O</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="58"/>
+        <location filename="../app/cli/clicontext.cpp" line="60"/>
         <source>cannot read standard input</source>
         <translation>no se puede leer la entrada estándar</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="93"/>
+        <location filename="../app/cli/clicontext.cpp" line="95"/>
+        <source>tipscope-cli: refused, nothing was changed: %1</source>
+        <translation>tipscope-cli: rechazado, no se cambió nada: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clicontext.cpp" line="100"/>
         <source>tipscope-cli: context takes show, set [--work-order W] [--serial S] [--operator O] [--stdin], or clear</source>
         <translation>tipscope-cli: context admite show, set [--work-order W] [--serial S] [--operator O] [--stdin] o clear</translation>
     </message>
     <message>
-        <location filename="../app/cli/clicontext.cpp" line="126"/>
+        <location filename="../app/cli/clicontext.cpp" line="133"/>
         <source>tipscope-cli: limits takes show, set RULE (such as port=1,tool=C245,recovery=3.5,dip=60) or clear</source>
         <translation>tipscope-cli: limits admite show, set REGLA (por ejemplo port=1,tool=C245,recovery=3.5,dip=60) o clear</translation>
     </message>
@@ -1796,34 +1820,34 @@
 <context>
     <name>CliJoints</name>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="41"/>
+        <location filename="../app/cli/clijoints.cpp" line="42"/>
         <source>&apos;%1&apos; is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00</source>
         <translation>«%1» no es una hora: escriba 24h, 30m, 7d, 2026-12-01 o 2026-12-01T08:00</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="65"/>
+        <location filename="../app/cli/clijoints.cpp" line="67"/>
         <source>the journal has no device &apos;%1&apos;</source>
         <translation>el diario no tiene ningún dispositivo «%1»</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="66"/>
+        <location filename="../app/cli/clijoints.cpp" line="68"/>
         <source>&apos;%1&apos; names %2 devices; give one of:
   %3</source>
         <translation>«%1» designa %2 dispositivos; indique uno de ellos:
   %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="94"/>
+        <location filename="../app/cli/clijoints.cpp" line="96"/>
         <source>--port takes a port number from 1 to 4</source>
         <translation>--port admite un número de puerto del 1 al 4</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="103"/>
+        <location filename="../app/cli/clijoints.cpp" line="105"/>
         <source>--verdict takes ok, slow-recovery, too-deep or incomplete</source>
         <translation>--verdict admite ok, slow-recovery, too-deep o incomplete</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijoints.cpp" line="143"/>
+        <location filename="../app/cli/clijoints.cpp" line="177"/>
         <source>tipscope-cli: give --json or --csv, not both</source>
         <translation>tipscope-cli: indique --json o --csv, no ambos</translation>
     </message>
@@ -1831,17 +1855,17 @@
 <context>
     <name>CliJournal</name>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="77"/>
+        <location filename="../app/cli/clijournal.cpp" line="75"/>
         <source>tipscope-cli: journal retention takes a number of days (0 keeps everything), for example: journal retention 90</source>
         <translation>tipscope-cli: journal retention espera un número de días (0 lo conserva todo), por ejemplo: journal retention 90</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="96"/>
+        <location filename="../app/cli/clijournal.cpp" line="94"/>
         <source>tipscope-cli: the retention could not be stored: %1</source>
         <translation>tipscope-cli: no se pudo guardar el tiempo de conservación: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clijournal.cpp" line="112"/>
+        <location filename="../app/cli/clijournal.cpp" line="110"/>
         <source>tipscope-cli: journal takes show or retention DAYS</source>
         <translation>tipscope-cli: journal espera show o retention DÍAS</translation>
     </message>
@@ -1849,66 +1873,76 @@
 <context>
     <name>CliMeasure</name>
     <message>
-        <location filename="../app/cli/climeasure.cpp" line="66"/>
+        <location filename="../app/cli/climeasure.cpp" line="70"/>
         <source>tipscope-cli: measure takes one FILE, a recording (record, or the Charts page&apos;s Record or CSV export)</source>
         <translation>tipscope-cli: measure espera un ARCHIVO, una grabación (de record, o de «Grabar» o la exportación CSV de la página de gráficos)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climeasure.cpp" line="81"/>
+        <source>%1 is a FIFO: waiting for what is written into it (Ctrl-C stops)</source>
+        <translation>%1 es un FIFO: se espera a lo que se escriba en él (Ctrl-C detiene)</translation>
     </message>
 </context>
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="175"/>
+        <location filename="../app/cli/climonitor.cpp" line="177"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="288"/>
+        <location filename="../app/cli/climonitor.cpp" line="299"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="259"/>
+        <location filename="../app/cli/climonitor.cpp" line="270"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="226"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="22"/>
+        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="74"/>
+        <location filename="../app/cli/climonitor.cpp" line="76"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="98"/>
+        <location filename="../app/cli/climonitor.cpp" line="100"/>
         <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
         <translation>tipscope-cli: no se pudo escribir %1: %2; la monitorización sigue sin el archivo</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="158"/>
+        <location filename="../app/cli/climonitor.cpp" line="160"/>
         <source>reconnected to %1</source>
         <translation>reconectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="192"/>
+        <location filename="../app/cli/climonitor.cpp" line="194"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: el espacio de trabajo %1 no tiene líneas</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="227"/>
+        <location filename="../app/cli/climonitor.cpp" line="229"/>
         <source>permission denied</source>
         <translation>permiso denegado</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="228"/>
+        <location filename="../app/cli/climonitor.cpp" line="230"/>
         <source>no such folder</source>
         <translation>no existe esa carpeta</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="371"/>
+        <location filename="../app/cli/climonitor.cpp" line="237"/>
+        <source>tipscope-cli: lines %1 and %2 would both write %3; rename one</source>
+        <translation>tipscope-cli: las líneas %1 y %2 escribirían ambas %3; cambie el nombre de una</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitor.cpp" line="382"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 registros no se pudieron guardar en el diario %2: %3</translation>
     </message>
@@ -1976,7 +2010,9 @@
 Commands:
   detect [--json] [--scan]  one line per device: &quot;&lt;address or --&gt; &lt;model&gt; &lt;family&gt; &lt;version&gt;&quot;
   read CODE... [--raw]      one line per code: &quot;&lt;CODE&gt; &lt;value&gt; &lt;unit&gt;&quot;
-  write CODE VALUE [--raw]  validate, send, and read back
+  write CODE VALUE [--raw [--force]]
+                            validate (MIT and MAT read first), send, and read back;
+                            --raw sends the data field, checked unless --force
   send HEX                  send a raw frame; print the answer in hex and decoded
   monitor [--interval MS] [--duration S] [--csv FILE [--csv-one-file]]
           [--limit RULE] [--journal FILE]
@@ -2019,7 +2055,8 @@ line prefixed with the line&apos;s name; monitor --csv writes a file per line.
 
 Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 3 the device answered NAK, or a read-back or profile check failed;
-4 no valid answer; 5 transport error.
+4 no valid answer; 5 transport error; the journal (joints, journal show): 6 missing,
+7 damaged, 8 newer, 9 locked, 10 not accessible, 11 disk full or failing.
 </source>
         <translation>Uso: tipscope-cli [--port DISPOSITIVO | --tcp HOST:PUERTO | --demo | --demo-activity |
                    --workspace ARCHIVO] [--baud N]
@@ -2029,8 +2066,9 @@ Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);
 Comandos:
   detect [--json] [--scan]  una línea por equipo: &quot;&lt;dirección o --&gt; &lt;modelo&gt; &lt;familia&gt; &lt;versión&gt;&quot;
   read CÓDIGO... [--raw]    una línea por código: &quot;&lt;CÓDIGO&gt; &lt;valor&gt; &lt;unidad&gt;&quot;
-  write CÓDIGO VALOR [--raw]
-                            valida, envía y vuelve a leer
+  write CÓDIGO VALOR [--raw [--force]]
+                            valida (MIT y MAT leídos antes), envía y vuelve a leer;
+                            --raw envía el campo de datos, comprobado salvo con --force
   send HEX                  envía una trama en bruto; muestra la respuesta en hex y decodificada
   monitor [--interval MS] [--duration S] [--csv ARCHIVO [--csv-one-file]]
           [--limit REGLA] [--journal ARCHIVO]
@@ -2075,101 +2113,102 @@ cada línea de salida precedida del nombre de la línea; monitor --csv escribe u
 
 Códigos de salida: 0 correcto; 1 error de uso; 2 valor rechazado antes de enviar (no se
 escribió nada); 3 el equipo respondió NAK, o falló una relectura o la comprobación del
-perfil; 4 ninguna respuesta válida; 5 error de transporte.
+perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, journal show):
+6 no existe, 7 dañado, 8 más nuevo, 9 bloqueado, 10 no accesible, 11 disco lleno o con fallos.
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="144"/>
+        <location filename="../app/cli/clioptions.cpp" line="147"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>comando desconocido &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="188"/>
+        <location filename="../app/cli/clioptions.cpp" line="191"/>
         <source>give only one of --port, --tcp and --demo</source>
         <translation>indique solo una de --port, --tcp y --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="194"/>
+        <location filename="../app/cli/clioptions.cpp" line="197"/>
         <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
         <translation>--workspace requiere un archivo, y solo uno de --port, --tcp, --demo, --workspace</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="201"/>
+        <location filename="../app/cli/clioptions.cpp" line="204"/>
         <source>--port takes a device, and only one of --port, --tcp, --demo</source>
         <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="209"/>
+        <location filename="../app/cli/clioptions.cpp" line="212"/>
         <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
         <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="214"/>
+        <location filename="../app/cli/clioptions.cpp" line="217"/>
         <source>--baud takes a rate such as 19200</source>
         <translation>--baud requiere una velocidad como 19200</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="221"/>
+        <location filename="../app/cli/clioptions.cpp" line="224"/>
         <source>--parity takes none, even or odd</source>
         <translation>--parity admite none, even u odd</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="225"/>
+        <location filename="../app/cli/clioptions.cpp" line="228"/>
         <source>--stop-bits takes 1 or 2</source>
         <translation>--stop-bits admite 1 o 2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="234"/>
+        <location filename="../app/cli/clioptions.cpp" line="237"/>
         <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
         <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="242"/>
+        <location filename="../app/cli/clioptions.cpp" line="245"/>
         <source>--timeout takes milliseconds from 1 to 60000</source>
         <translation>--timeout requiere milisegundos de 1 a 60000</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="245"/>
+        <location filename="../app/cli/clioptions.cpp" line="248"/>
         <source>--retries takes a number from 0 to 10</source>
         <translation>--retries requiere un número de 0 a 10</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="173"/>
+        <location filename="../app/cli/clioptions.cpp" line="176"/>
         <source>--%1 needs a value</source>
         <translation>--%1 necesita un valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="177"/>
+        <location filename="../app/cli/clioptions.cpp" line="180"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="249"/>
+        <location filename="../app/cli/clioptions.cpp" line="252"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="250"/>
+        <location filename="../app/cli/clioptions.cpp" line="253"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="256"/>
+        <location filename="../app/cli/clioptions.cpp" line="259"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="259"/>
+        <location filename="../app/cli/clioptions.cpp" line="262"/>
         <source>--workspace runs detect, monitor, dump or joints, not %1</source>
         <translation>--workspace ejecuta detect, monitor, dump o joints, no %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="262"/>
+        <location filename="../app/cli/clioptions.cpp" line="265"/>
         <source>--csv-one-file goes with --workspace and --csv FILE</source>
         <translation>--csv-one-file va con --workspace y --csv ARCHIVO</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="265"/>
+        <location filename="../app/cli/clioptions.cpp" line="268"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -2192,9 +2231,14 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>tipscope-cli: profile requiere save ARCHIVO, diff ARCHIVO o apply ARCHIVO</translation>
     </message>
     <message>
-        <location filename="../app/cli/cliprofile.cpp" line="106"/>
+        <location filename="../app/cli/cliprofile.cpp" line="113"/>
         <source>tipscope-cli: applying this profile would be refused: %1</source>
         <translation>tipscope-cli: aplicar este perfil se rechazaría: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cliprofile.cpp" line="119"/>
+        <source>tipscope-cli: the line was dropped during the apply: %1. A slow station may need a longer --timeout (now %2 ms) or more --retries (now %3); apply the profile again once the line answers: what is already right is left alone</source>
+        <translation>tipscope-cli: la línea se cortó durante la aplicación: %1. Una estación lenta puede necesitar un --timeout más largo (ahora %2 ms) o más --retries (ahora %3); vuelva a aplicar el perfil cuando la línea responda: lo que ya es correcto no se toca</translation>
     </message>
 </context>
 <context>
@@ -2287,7 +2331,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="171"/>
+        <location filename="../app/cli/clisession.cpp" line="172"/>
+        <source>tipscope-cli: no device could be identified on %1 (checked addresses 01, 10, 20 and frames without addresses); what came back: %2. Check the baud rate, the addressing, and that robot mode is on.</source>
+        <translation>tipscope-cli: no se pudo identificar ningún equipo en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones); lo que volvió: %2. Compruebe la velocidad en baudios, el direccionamiento y que el modo robot esté activado.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clisession.cpp" line="181"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -2842,47 +2891,47 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>JointLimitRules</name>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="49"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="51"/>
         <source>the longest recovery must be more than 0 s and at most %1 s</source>
         <translation>la recuperación más larga debe ser de más de 0 s y como máximo %1 s</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="57"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="59"/>
         <source>the deepest dip must be a whole number of kelvin from 1 to %1</source>
         <translation>la caída más profunda debe ser un número entero de kelvin entre 1 y %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="65"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="67"/>
         <source>the tip wear share must be more than 0 and at most 10</source>
         <translation>la proporción de desgaste de la punta debe ser mayor que 0 y como máximo 10</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="71"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="73"/>
         <source>a port is a number from 1 to 4</source>
         <translation>un puerto es un número del 1 al 4</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="109"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="111"/>
         <source>%1 must be a number</source>
         <translation>%1 debe ser un número</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="168"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="170"/>
         <source>joint limits: %1</source>
         <translation>límites de soldadura: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="175"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="177"/>
         <source>joint limit rule %1: %2</source>
         <translation>regla de límites de soldadura %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="202"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="204"/>
         <source>“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, dip=KELVIN or wear=SHARE, joined by commas</source>
         <translation>«%1» no es un límite: escriba port=N, tool=NOMBRE, recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN, separados por comas</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointlimitrules.cpp" line="210"/>
+        <location filename="../lib/model/joints/jointlimitrules.cpp" line="212"/>
         <source>“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or wear=SHARE</source>
         <translation>«%1» no fija ningún límite: indique recovery=SEGUNDOS, dip=KELVIN o wear=PROPORCIÓN</translation>
     </message>
@@ -3060,37 +3109,45 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="32"/>
-        <location filename="../lib/journal/journalreader.cpp" line="213"/>
+        <location filename="../lib/journal/journalreader.cpp" line="241"/>
         <source>No journal is open.</source>
         <translation>No hay ningún diario abierto.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="84"/>
+        <location filename="../lib/journal/journalreader.cpp" line="85"/>
         <source>There is no journal at %1.</source>
         <translation>No hay ningún diario en %1.</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../lib/journal/journalreader.cpp" line="116"/>
+        <source>The journal %1 is damaged (%n finding(s), the first: %2).</source>
+        <translation>
+            <numerusform>El diario %1 está dañado (%n hallazgo, el primero: %2).</numerusform>
+            <numerusform>El diario %1 está dañado (%n hallazgos, el primero: %2).</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="89"/>
+        <location filename="../lib/journal/journalschema.cpp" line="102"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="104"/>
+        <location filename="../lib/journal/journalschema.cpp" line="117"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="183"/>
+        <location filename="../lib/journal/journalschema.cpp" line="226"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>No se puede crear la carpeta %1 para el diario.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="244"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="252"/>
         <source>Records lost: %1. Reason: %2</source>
         <translation>Registros perdidos: %1. Motivo: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalwriter.cpp" line="333"/>
+        <location filename="../lib/journal/journalwriter.cpp" line="341"/>
         <source>The journal was closed before it could write them: %1</source>
         <translation>El diario se cerró antes de poder escribirlos: %1</translation>
     </message>
@@ -3120,7 +3177,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>El diario %1 ha informado de un error: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="66"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="88"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>No se puede escribir el diario %1: su carpeta o el archivo es de solo lectura o no es accesible.</translation>
     </message>
@@ -3373,52 +3430,57 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>No se puede resolver el nombre de host %1 del broker: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="47"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="59"/>
         <source>A password is set but no user name: MQTT sends a password only with a user name.</source>
         <translation>Hay una contraseña pero ningún nombre de usuario: MQTT solo envía una contraseña con un nombre de usuario.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="54"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
         <source>The user name %1 is not accepted: %2</source>
         <translation>No se acepta el nombre de usuario %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="66"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="78"/>
         <source>The last will on %1 is not accepted: %2</source>
         <translation>No se acepta la última voluntad en %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="74"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="116"/>
         <source>The CA certificate file %1 cannot be read.</source>
         <translation>No se puede leer el archivo de certificado de la CA %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="76"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="122"/>
         <source>A client certificate needs both its certificate file and its key file.</source>
         <translation>Un certificado de cliente necesita tanto su archivo de certificado como su archivo de clave.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="80"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="126"/>
         <source>The file %1 cannot be read.</source>
         <translation>No se puede leer el archivo %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="98"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="97"/>
         <source>TLS cannot be set up: %1</source>
         <translation>No se puede configurar TLS: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="106"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="105"/>
         <source>The MQTT version cannot be set: %1</source>
         <translation>No se puede fijar la versión de MQTT: %1</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="130"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="118"/>
+        <source>The CA certificate file %1 holds no PEM certificate (-----BEGIN CERTIFICATE-----).</source>
+        <translation>El archivo de certificado de CA %1 no contiene ningún certificado PEM (-----BEGIN CERTIFICATE-----).</translation>
+    </message>
+    <message>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="148"/>
         <source>The client id %1 is not accepted.</source>
         <translation>No se acepta el identificador de cliente %1.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsetup.cpp" line="131"/>
+        <location filename="../lib/mqtt/mqttsetup.cpp" line="149"/>
         <source>Out of memory for an MQTT client.</source>
         <translation>Sin memoria para un cliente MQTT.</translation>
     </message>
@@ -3549,57 +3611,62 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
 <context>
     <name>PortDiagnostics</name>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="37"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="40"/>
         <source>this program</source>
         <translation>este programa</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="38"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="41"/>
         <source>, this program</source>
         <translation>, este programa</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="48"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="51"/>
         <source>run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
         <translation>ejecute `sudo usermod -aG %1 $USER` y después cierre la sesión y vuelva a iniciarla.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="50"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
         <source>You are not allowed to open %1: %2</source>
         <translation>No tiene permiso para abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="53"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="56"/>
         <source>You are not allowed to open %1, and it belongs to group root rather than dialout, so joining a group will not help until a udev rule gives it GROUP=&quot;dialout&quot;. Then %2</source>
         <translation>No tiene permiso para abrir %1, y pertenece al grupo root en lugar de dialout, así que unirse a un grupo no servirá hasta que una regla de udev le asigne GROUP=&quot;dialout&quot;. Después, %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="58"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="61"/>
         <source>You are not allowed to open %1, which belongs to group %2 (not dialout): %3</source>
         <translation>No tiene permiso para abrir %1, que pertenece al grupo %2 (no a dialout): %3</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="101"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="102"/>
+        <source>There is no such port in %1: a port&apos;s name is never %2 characters long. The port name may be mistyped.</source>
+        <translation>No existe ese puerto en %1: el nombre de un puerto nunca tiene %2 caracteres. Puede que el nombre del puerto esté mal escrito.</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="112"/>
         <source>%1 is busy: it is held by %2. Close that connection, then try again.</source>
         <translation>%1 está ocupado: lo tiene abierto %2. Cierre esa conexión e inténtelo de nuevo.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="107"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
         <source>There is no such port: %1. The adapter may be unplugged, or the port name may be mistyped.</source>
         <translation>No existe el puerto %1. Puede que el adaptador esté desenchufado o que el nombre del puerto esté mal escrito.</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="113"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="124"/>
         <source>%1 is already open in TipScope; close that connection first</source>
         <translation>%1 ya está abierto en TipScope; cierre primero esa conexión</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="118"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="129"/>
         <source>%1 stopped working, perhaps because the adapter was unplugged</source>
         <translation>%1 dejó de funcionar, quizá porque se desenchufó el adaptador</translation>
     </message>
     <message>
-        <location filename="../lib/link/ports/portdiagnostics.cpp" line="122"/>
+        <location filename="../lib/link/ports/portdiagnostics.cpp" line="133"/>
         <source>Could not open %1</source>
         <translation>No se pudo abrir %1</translation>
     </message>
@@ -3715,84 +3782,89 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
     <message>
         <location filename="../lib/model/profile.cpp" line="123"/>
-        <location filename="../lib/model/profile.cpp" line="212"/>
+        <location filename="../lib/model/profile.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="136"/>
+        <location filename="../lib/model/profile.cpp" line="131"/>
+        <source>%1 bytes; a profile is at most %2</source>
+        <translation>%1 bytes; un perfil tiene como máximo %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profile.cpp" line="145"/>
         <source>not a valid JSON file: %1 at byte %2</source>
         <translation>no es un archivo JSON válido: %1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="149"/>
+        <location filename="../lib/model/profile.cpp" line="158"/>
         <source>not a TipScope profile (no &quot;format&quot;: &quot;tipscope-profile&quot;)</source>
         <translation>no es un perfil de TipScope (falta &quot;format&quot;: &quot;tipscope-profile&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="160"/>
+        <location filename="../lib/model/profile.cpp" line="169"/>
         <source>unknown device family &apos;%1&apos;</source>
         <translation>familia de equipo desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="168"/>
+        <location filename="../lib/model/profile.cpp" line="177"/>
         <source>the profile has no values</source>
         <translation>el perfil no tiene valores</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="175"/>
+        <location filename="../lib/model/profile.cpp" line="184"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="190"/>
+        <location filename="../lib/model/profile.cpp" line="199"/>
         <source>the profile is refused, nothing will be written:
 %1</source>
         <translation>el perfil se rechaza, no se escribirá nada:
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="202"/>
+        <location filename="../lib/model/profile.cpp" line="211"/>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="206"/>
-        <source>%1 is %2 bytes; a profile is at most %3</source>
-        <translation>%1 ocupa %2 bytes; un perfil ocupa como máximo %3</translation>
+        <location filename="../lib/model/profile.cpp" line="216"/>
+        <source>%1 is %2</source>
+        <translation>%1 tiene %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="228"/>
+        <location filename="../lib/model/profile.cpp" line="236"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="132"/>
+        <location filename="../lib/model/profile.cpp" line="141"/>
         <source>not a valid JSON file: %1</source>
         <translation>no es un archivo JSON válido: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="143"/>
+        <location filename="../lib/model/profile.cpp" line="152"/>
         <source>given more than once, so which value is meant is unclear: %1; nothing will be written</source>
         <translation>indicado más de una vez, así que no está claro qué valor se quiere: %1; no se escribirá nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="101"/>
+        <location filename="../lib/model/profilejson.cpp" line="129"/>
         <source>a NUL byte at byte %1</source>
         <translation>un byte NUL en el byte %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profilejson.cpp" line="102"/>
+        <location filename="../lib/model/profilejson.cpp" line="130"/>
         <source>control character 0x%1 at byte %2</source>
         <translation>carácter de control 0x%1 en el byte %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="152"/>
+        <location filename="../lib/model/profile.cpp" line="161"/>
         <source>profile schema %1 is not supported (this version reads schemas %2 to %3)</source>
         <translation>el esquema de perfil %1 no es compatible (esta versión lee los esquemas %2 a %3)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profile.cpp" line="179"/>
+        <location filename="../lib/model/profile.cpp" line="188"/>
         <source>%1: the value must be a data field in quotes, e.g. &quot;00350&quot;, or an object with one in &quot;raw&quot; (and text in &quot;name&quot; and &quot;value&quot;)</source>
         <translation>%1: el valor debe ser un campo de datos entre comillas, p. ej. &quot;00350&quot;, o un objeto con uno en &quot;raw&quot; (y texto en &quot;name&quot; y &quot;value&quot;)</translation>
     </message>
@@ -3937,6 +4009,29 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
     </message>
 </context>
 <context>
+    <name>ProfileRequest</name>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="37"/>
+        <source>&quot;request_id&quot; must be text of at most %1 characters, without control characters</source>
+        <translation>&quot;request_id&quot; debe ser un texto de como máximo %1 caracteres, sin caracteres de control</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="53"/>
+        <source>the request is %1; nothing will be written</source>
+        <translation>la solicitud tiene %1; no se escribirá nada</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="72"/>
+        <source>given more than once, so which one is meant is unclear: %1; nothing will be written</source>
+        <translation>indicado más de una vez, así que no está claro cuál se quiere decir: %1; no se escribirá nada</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profilerequest.cpp" line="79"/>
+        <source>&quot;profile&quot; must be a profile: an object as tipscope-cli profile save writes it</source>
+        <translation>&quot;profile&quot; debe ser un perfil: un objeto como lo escribe tipscope-cli profile save</translation>
+    </message>
+</context>
+<context>
     <name>RemoteApply</name>
     <message>
         <location filename="../lib/plant/remoteapply.cpp" line="76"/>
@@ -3964,12 +4059,12 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         <translation>ya se está aplicando otro perfil a este dispositivo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="98"/>
-        <source>not a profile: %1</source>
-        <translation>no es un perfil: %1</translation>
+        <location filename="../lib/plant/remoteapply.cpp" line="95"/>
+        <source>profile refused: %1</source>
+        <translation>perfil rechazado: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/plant/remoteapply.cpp" line="128"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="125"/>
         <source>%n setting(s) not taken</source>
         <translation>
             <numerusform>%n ajuste no aceptado</numerusform>
@@ -3977,17 +4072,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte.
         </translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="157"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="154"/>
         <source>Profile applied through MQTT for %1</source>
         <translation>Perfil aplicado por MQTT para %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="158"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="155"/>
         <source>Profile through MQTT for %1 not applied: %2</source>
         <translation>Perfil por MQTT para %1 no aplicado: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/remoteapply.cpp" line="159"/>
+        <location filename="../lib/plant/remoteapply.cpp" line="156"/>
         <source>an unnamed client</source>
         <translation>un cliente sin nombre</translation>
     </message>
@@ -4090,12 +4185,17 @@ Hágalo permanente con esta regla de udev:
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="234"/>
+        <location filename="../lib/model/session.cpp" line="235"/>
+        <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
+        <translation>conectado a %1, pero no se pudo identificar ningún equipo; lo que volvió: %2 (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="240"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="242"/>
+        <location filename="../lib/model/session.cpp" line="248"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -4385,12 +4485,17 @@ Hágalo permanente con esta regla de udev:
         <translation>%1 rechazado para %2 (%3): se permite %4</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="182"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="108"/>
+        <source>&apos;%1&apos; is no data field of %2 (%3): allowed is %4</source>
+        <translation>&apos;%1&apos; no es un campo de datos de %2 (%3): se permite %4</translation>
+    </message>
+    <message>
+        <location filename="../lib/protocol/valuecodec.cpp" line="193"/>
         <source>&apos;%1&apos; is not a delay in seconds such as 1.6 or 01.60</source>
         <translation>&apos;%1&apos; no es un retardo en segundos como 1.6 o 01.60</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="187"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="198"/>
         <source>&apos;%1&apos; is not a whole number; %2 takes %3</source>
         <translation>&apos;%1&apos; no es un número entero; %2 admite %3</translation>
     </message>
@@ -4421,7 +4526,17 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>WorkContextJson</name>
     <message>
-        <location filename="../lib/model/workcontextjson.cpp" line="26"/>
+        <location filename="../lib/model/workcontextjson.cpp" line="20"/>
+        <source>%1 has %2 characters; at most %3 are kept</source>
+        <translation>%1 tiene %2 caracteres; se guardan como máximo %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="27"/>
+        <source>%1 holds a control character (%2) at character %3</source>
+        <translation>%1 contiene un carácter de control (%2) en el carácter %3</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workcontextjson.cpp" line="53"/>
         <source>%1 must be text</source>
         <translation>%1 debe ser texto</translation>
     </message>
@@ -8038,32 +8153,32 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::gui::WorkContextDialog</name>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="24"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="27"/>
         <source>Work context</source>
         <translation>Contexto de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="34"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="37"/>
         <source>Stamped on every joint and event from now on, by every TipScope program on this computer, until it is changed.</source>
         <translation>A partir de ahora se registra con cada soldadura y cada evento, en todos los programas TipScope de este equipo, hasta que se cambie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="40"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="43"/>
         <source>Work order:</source>
         <translation>Orden de trabajo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="41"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="44"/>
         <source>Board serial:</source>
         <translation>Número de serie de la placa:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="42"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
         <source>Operator:</source>
         <translation>Operario:</translation>
     </message>
     <message>
-        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="45"/>
+        <location filename="../app/gui/dialogs/workcontextdialog.cpp" line="48"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
@@ -8086,6 +8201,41 @@ Do you want to continue?</source>
         <location filename="../lib/journal/journal.cpp" line="149"/>
         <source>Work order: %1, board: %2, operator: %3</source>
         <translation>Orden de trabajo: %1, placa: %2, operario: %3</translation>
+    </message>
+</context>
+<context>
+    <name>tipscope::link::Discovery</name>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="78"/>
+        <source>%n NAK(s) %1 (%2)</source>
+        <translation>
+            <numerusform>%n NAK %1 (%2)</numerusform>
+            <numerusform>%n NAK %1 (%2)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="82"/>
+        <source>%n answer(s) with a bad block check or format</source>
+        <translation>
+            <numerusform>%n respuesta con una suma de control o un formato incorrectos</numerusform>
+            <numerusform>%n respuestas con una suma de control o un formato incorrectos</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="84"/>
+        <source>%n frame(s) from an address not asked</source>
+        <translation>
+            <numerusform>%n trama de una dirección no consultada</numerusform>
+            <numerusform>%n tramas de direcciones no consultadas</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/link/discovery.cpp" line="86"/>
+        <source>%n byte(s) that were no frame</source>
+        <translation>
+            <numerusform>%n byte que no era una trama</numerusform>
+            <numerusform>%n bytes que no eran una trama</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,7 @@
 #include "unixsignals.h"
 
 #include "i18n/translations.h"
+#include "mqtt/mqttsetup.h"
 #include "plant/plantagent.h"
 
 #include <QCommandLineParser>
@@ -23,6 +24,8 @@ struct AgentMainTr {
 };
 
 constexpr int kExitUsage = 2;
+// The journal cannot be used (PlantAgent::failure()): systemd shows the service failed.
+constexpr int kExitJournal = 3;
 const QString kDefaultConfig = QStringLiteral("/etc/tipscope/agent.json");
 
 QString summary(const plant::AgentConfig &c) {
@@ -83,6 +86,10 @@ int main(int argc, char *argv[]) {
         return kExitUsage;
     }
     if (parser.isSet(checkOption)) {
+        if (const auto tls = mqtt::checkTlsFiles(config->broker.tls); !tls) {
+            qCritical("%s", qPrintable(AgentMainTr::tr("%1: %2").arg(path, tls.error())));
+            return kExitUsage;
+        }
         qInfo("%s",
               qPrintable(AgentMainTr::tr("%1 is good: %2").arg(path, summary(config.value()))));
         return 0;
@@ -108,6 +115,10 @@ int main(int argc, char *argv[]) {
                                .arg(app.applicationVersion(), summary(config.value()))));
     agent.start(config.value());
     const int rc = app.exec();
+    if (!agent.failure().isEmpty()) {
+        qCritical("%s", qPrintable(AgentMainTr::tr("stopped: %1").arg(agent.failure())));
+        return kExitJournal;
+    }
     qInfo("%s", qPrintable(AgentMainTr::tr("stopped")));
     return rc;
 }

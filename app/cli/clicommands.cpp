@@ -10,6 +10,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
 
 namespace tipscope::cli {
 
@@ -161,9 +162,27 @@ static int verifyWrite(CliSession &s, const DeviceInfo &d, const ResolvedCommand
     return kOk;
 }
 
+// Reads `limit` until it holds a value, as many times as any read is tried: an answer whose data
+// is no value (a garbled field) says no more than no answer. Empty, or why it stays unknown.
+static QString readLimit(CliSession &s, const DeviceInfo &d, model::Parameter &limit) {
+    QString why;
+    for (int attempt = 0; attempt <= s.options().line.queue.retries; ++attempt) {
+        Reply *r = s.ask(Request::read(d.address, limit.code()));
+        if (!r->ok())
+            return r->errorString(); // the queue has already tried it again
+        limit.deviceReported(r->answer().data);
+        if (limit.value())
+            return {};
+        why = CliCommandsTr::tr("the device answered '%1', which is no value")
+                  .arg(elided(QString::fromLatin1(r->answer().data)));
+    }
+    return why;
+}
+
 // The device's own limits (MIT and MAT for a selected temperature) are read now and the value
-// is checked with the Parameter logic the GUI's editors use. kOk, or the exit code after saying
-// why nothing was sent.
+// is checked with the Parameter logic the GUI's editors use. A limit that stays unknown refuses
+// the write, as it refuses a profile: the value cannot be proved inside it. kOk, or the exit code
+// after saying why nothing was sent.
 static int checkDeviceLimits(CliSession &s, const DeviceInfo &d, const QByteArray &code,
                              qint64 wire) {
     const auto device = s.model(d);
@@ -174,15 +193,13 @@ static int checkDeviceLimits(CliSession &s, const DeviceInfo &d, const QByteArra
         model::Parameter *l = limit.isEmpty() ? nullptr : device->parameter(limit.toLatin1());
         if (!l)
             continue;
-        Reply *r = s.ask(Request::read(d.address, l->code()));
-        if (!r->ok()) {
-            s.err() << CliCommandsTr::tr(
-                           "tipscope-cli: %1 was not sent: its limit %2 could not be read: %3")
-                           .arg(QString::fromLatin1(code), limit, r->errorString())
+        if (const QString why = readLimit(s, d, *l); !why.isEmpty()) {
+            s.err() << CliCommandsTr::tr("tipscope-cli: refused, nothing was sent: %1 is bounded "
+                                         "by %2, which could not be read: %3")
+                           .arg(QString::fromLatin1(code), limit, why)
                     << Qt::endl;
-            return CliSession::exitCodeFor(*r);
+            return kRefused;
         }
-        l->deviceReported(r->answer().data);
     }
     if (const QString why = p->validate(wire); !why.isEmpty()) {
         s.err() << CliCommandsTr::tr("tipscope-cli: refused, nothing was sent: %1").arg(why)
@@ -190,6 +207,29 @@ static int checkDeviceLimits(CliSession &s, const DeviceInfo &d, const QByteArra
         return kRefused;
     }
     return kOk;
+}
+
+// The data field of `write --raw`, held to the catalog like a typed value unless `force`; `wire`
+// gets its value, so that the device's limits are checked too.
+static Outcome<QByteArray> rawField(const ResolvedCommand &cmd, const QString &typed, bool force,
+                                    std::optional<qint64> *wire) {
+    // Checked before toLatin1(), which would turn anything outside Latin-1 into '?'.
+    const bool printable = std::all_of(typed.begin(), typed.end(), [](QChar c) {
+        return c.unicode() >= 0x20 && c.unicode() <= 0x7e;
+    });
+    if (typed.isEmpty() || !printable)
+        return failure(CliCommandsTr::tr("the data field must be printable ASCII"));
+    const QByteArray data = typed.toLatin1();
+    if (data.size() > 32)
+        return failure(CliCommandsTr::tr("the data field is longer than 32 characters"));
+    if (force)
+        return data;
+    if (const QString why = validateData(cmd, data); !why.isEmpty())
+        return failure(CliCommandsTr::tr("%1 (--force sends it anyway)").arg(why));
+    if (const auto value = decodeAnswer(cmd, data);
+        value && !value->isText && cmd.spec->kind != ValueKind::Action)
+        *wire = value->number;
+    return data;
 }
 
 int runWrite(CliSession &s) {
@@ -215,16 +255,10 @@ int runWrite(CliSession &s) {
     std::optional<qint64> wire;
     QString error;
     if (raw) {
-        // Checked before toLatin1(), which would turn anything outside Latin-1 into '?'.
-        const QString typed = args.at(1);
-        for (QChar c : typed)
-            if (c.unicode() < 0x20 || c.unicode() > 0x7e)
-                error = CliCommandsTr::tr("the data field must be printable ASCII");
-        if (typed.isEmpty())
-            error = CliCommandsTr::tr("the data field must be printable ASCII");
-        data = typed.toLatin1();
-        if (data.size() > 32)
-            error = CliCommandsTr::tr("the data field is longer than 32 characters");
+        const auto field =
+            rawField(cmd, args.at(1), s.options().flags.contains(QStringLiteral("force")), &wire);
+        data = field ? *field : QByteArray();
+        error = field.error();
     } else if (cmd.spec->kind == ValueKind::Action && args.size() == 1) {
         data = cmd.spec->fixedData;
     } else if (const auto typed =

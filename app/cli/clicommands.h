@@ -7,6 +7,10 @@
 #include "model/session.h"
 #include "model/workspace/workspacefile.h"
 
+namespace tipscope::journal {
+class JournalReader;
+}
+
 namespace tipscope::cli {
 
 // The command of s.options() that talks to the devices on the open line (detect, read, write,
@@ -39,6 +43,11 @@ int runLimits(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runJournal(const CliOptions &o, QTextStream &out, QTextStream &err);
 // --journal FILE, or the journal every TipScope program keeps by default.
 [[nodiscard]] QString journalPathOf(const CliOptions &o);
+// Opens the journal of `o` to report on it (`joints`, `journal show`: read only, unless an older
+// schema needs migrating) and runs the one integrity check; kOk, or, after saying why, the exit
+// status of the problem's kind.
+[[nodiscard]] int openJournalToReport(const CliOptions &o, journal::JournalReader &reader,
+                                      QTextStream &err);
 
 // "ST1 350 °C", "HD1 1.60 s", "D12 disabled", "CT1 2 T245", "SMN DME-2C".
 [[nodiscard]] QString formatReading(const protocol::ResolvedCommand &cmd, const QByteArray &data,

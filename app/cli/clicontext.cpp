@@ -6,6 +6,8 @@
 
 #include "journal/workcontextfile.h"
 #include "model/joints/jointlimitsfile.h"
+#include "model/workcontextjson.h"
+#include "protocol/elide.h"
 
 #include <QFile>
 
@@ -41,7 +43,7 @@ protocol::Outcome<void> applyLine(const QString &line, model::WorkContext &c) {
         return protocol::failure(
             CliContextTr::tr(
                 "'%1' is not a context line: write work_order=W, board_serial=S or operator=O")
-                .arg(line));
+                .arg(protocol::elided(line)));
     return {};
 }
 
@@ -89,6 +91,11 @@ int runContext(const CliOptions &o, QTextStream &out, QTextStream &err) {
             return kUsage;
         }
         next = c.value();
+        if (const QString why = model::workContextProblem(next); !why.isEmpty()) {
+            err << CliContextTr::tr("tipscope-cli: refused, nothing was changed: %1").arg(why)
+                << Qt::endl;
+            return kRefused;
+        }
     } else if (action != QLatin1String("clear") || o.args.size() > 1) {
         err << CliContextTr::tr(
                    "tipscope-cli: context takes show, set [--work-order W] [--serial S] "

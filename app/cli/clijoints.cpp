@@ -6,6 +6,7 @@
 #include "journal/jointexport.h"
 #include "journal/journal.h"
 #include "journal/journalreader.h"
+#include "protocol/elide.h"
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -40,7 +41,7 @@ protocol::Outcome<qint64> timeOf(const QString &text, qint64 nowMs) {
         return protocol::failure(
             CliJointsTr::tr(
                 "'%1' is not a time: write 24h, 30m, 7d, 2026-12-01 or 2026-12-01T08:00")
-                .arg(text));
+                .arg(protocol::elided(text)));
     return t.toMSecsSinceEpoch();
 }
 
@@ -62,9 +63,10 @@ protocol::Outcome<QString> deviceKeyOf(const JournalReader &reader, const QStrin
     if (keys.size() == 1)
         return keys.first();
     if (keys.isEmpty())
-        return protocol::failure(CliJointsTr::tr("the journal has no device '%1'").arg(text));
+        return protocol::failure(
+            CliJointsTr::tr("the journal has no device '%1'").arg(protocol::elided(text)));
     return protocol::failure(CliJointsTr::tr("'%1' names %2 devices; give one of:\n  %3")
-                                 .arg(text)
+                                 .arg(protocol::elided(text))
                                  .arg(keys.size())
                                  .arg(keys.join(QStringLiteral("\n  "))));
 }
@@ -136,6 +138,38 @@ QString journalPathOf(const CliOptions &o) {
     return o.values.value(QStringLiteral("journal"), Journal::defaultPath());
 }
 
+static int exitCodeFor(JournalProblem problem) {
+    switch (problem) {
+    case JournalProblem::Missing:
+        return kJournalMissing;
+    case JournalProblem::Damaged:
+    case JournalProblem::Foreign:
+        return kJournalDamaged;
+    case JournalProblem::Newer:
+        return kJournalNewer;
+    case JournalProblem::Locked:
+        return kJournalLocked;
+    case JournalProblem::Full:
+    case JournalProblem::DiskError:
+        return kJournalDisk;
+    case JournalProblem::ReadOnly:
+    case JournalProblem::Other:
+    case JournalProblem::None:
+        break;
+    }
+    return kJournalInaccessible;
+}
+
+int openJournalToReport(const CliOptions &o, JournalReader &reader, QTextStream &err) {
+    auto ready = reader.open(journalPathOf(o));
+    if (ready)
+        ready = reader.check();
+    if (ready)
+        return kOk;
+    err << "tipscope-cli: " << ready.error() << Qt::endl;
+    return exitCodeFor(reader.problem());
+}
+
 int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err) {
     const bool json = o.flags.contains(QStringLiteral("json"));
     const bool csv = o.flags.contains(QStringLiteral("csv"));
@@ -144,10 +178,8 @@ int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err) {
         return kUsage;
     }
     JournalReader reader;
-    if (const auto opened = reader.open(journalPathOf(o)); !opened) {
-        err << "tipscope-cli: " << opened.error() << Qt::endl;
-        return kUsage;
-    }
+    if (const int rc = openJournalToReport(o, reader, err); rc != kOk)
+        return rc;
     const auto filter = filterOf(o, reader);
     if (!filter) {
         err << "tipscope-cli: " << filter.error() << Qt::endl;

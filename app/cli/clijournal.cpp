@@ -33,10 +33,8 @@ QJsonValue timeJson(const std::optional<qint64> &ms) {
 
 int show(const CliOptions &o, QTextStream &out, QTextStream &err) {
     JournalReader reader;
-    if (const auto opened = reader.open(journalPathOf(o)); !opened) {
-        err << "tipscope-cli: " << opened.error() << Qt::endl;
-        return kUsage;
-    }
+    if (const int rc = openJournalToReport(o, reader, err); rc != kOk)
+        return rc;
     const auto summary = reader.summary();
     if (!summary) {
         err << "tipscope-cli: " << summary.error() << Qt::endl;

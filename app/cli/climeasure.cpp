@@ -7,9 +7,13 @@
 #include "model/recording/chartcsv.h"
 #include "model/recording/chartcsvreader.h"
 
+#include "protocol/elide.h"
+
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <sys/stat.h>
 
 namespace tipscope::cli {
 
@@ -69,6 +73,14 @@ int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err) {
             << Qt::endl;
         return kUsage;
     }
+    // A FIFO is read as long as its writer writes, and waited for until one comes: said, so
+    // that a measure with nobody writing is not taken for a hang.
+    struct stat st {};
+    if (::stat(QFile::encodeName(o.args.first()).constData(), &st) == 0 && S_ISFIFO(st.st_mode))
+        err << "# "
+            << CliMeasureTr::tr("%1 is a FIFO: waiting for what is written into it (Ctrl-C stops)")
+                   .arg(protocol::elidedPath(o.args.first()))
+            << Qt::endl;
     const auto read = ChartCsvReader::readFile(o.args.first());
     if (!read) {
         err << "tipscope-cli: " << read.error() << Qt::endl;

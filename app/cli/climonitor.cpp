@@ -14,12 +14,14 @@
 #include "model/displayunits.h"
 #include "model/portmodel.h"
 #include "model/workspace/workspacefile.h"
+#include "protocol/elide.h"
 #include "protocol/valuecodec.h"
 #include "service/lineservice.h"
 
 #include <QDateTime>
 #include <QEventLoop>
 #include <QFileInfo>
+#include <QHash>
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
@@ -227,8 +229,17 @@ protocol::Outcome<void> openCsv(const CliOptions &o, std::vector<MonitoredLine> 
             CliMonitorTr::tr("tipscope-cli: cannot write %1: %2")
                 .arg(folder.filePath(), folder.isDir() ? CliMonitorTr::tr("permission denied")
                                                        : CliMonitorTr::tr("no such folder")));
-    for (MonitoredLine &line : lines)
+    QHash<QString, QString> lineOfFile;
+    for (MonitoredLine &line : lines) {
         line.csvPath = MonitorCsv::fileFor(path, line.name);
+        // Names made safe may meet: two lines must not write, and truncate, one file.
+        if (const auto other = lineOfFile.constFind(line.csvPath); other != lineOfFile.cend())
+            return protocol::failure(
+                CliMonitorTr::tr("tipscope-cli: lines %1 and %2 would both write %3; rename one")
+                    .arg(protocol::elided(*other), protocol::elided(line.name),
+                         protocol::elidedPath(line.csvPath)));
+        lineOfFile.insert(line.csvPath, line.name);
+    }
     return {};
 }
 

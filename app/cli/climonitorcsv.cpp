@@ -1,6 +1,7 @@
 #include "climonitorcsv.h"
 
 #include "model/io/csv.h"
+#include "model/io/filenamepart.h"
 #include "protocol/elide.h"
 
 #include <QCoreApplication>
@@ -64,7 +65,7 @@ QString MonitorCsv::fileFor(const QString &path, const QString &line) {
     const QFileInfo info(path);
     const QString suffix = info.suffix();
     const QString base = suffix.isEmpty() ? path : path.left(path.size() - suffix.size() - 1);
-    return base + QLatin1Char('-') + line +
+    return base + QLatin1Char('-') + model::io::fileNamePart(line) +
            (suffix.isEmpty() ? QString() : QLatin1Char('.') + suffix);
 }
 

@@ -30,7 +30,8 @@ public:
     [[nodiscard]] QString errorText() const { return m_error; }
 
     // "plant.csv" for line "cell-3" is "plant-cell-3.csv"; a name without extension gets the
-    // line's name at its end.
+    // line's name at its end. The line's name is made safe first (io::fileNamePart()): the file
+    // is in the folder of `path`, whatever the workspace names the line.
     [[nodiscard]] static QString fileFor(const QString &path, const QString &line);
 
 private:

@@ -132,6 +132,10 @@ int runMonitorMqtt(const CliOptions &o, QTextStream &out, QTextStream &err) {
         QTimer::singleShot(qint64(durationS * 1000), &agent, &plant::PlantAgent::stop);
     loop.exec();
     out << standing(agent) << Qt::endl;
+    if (!agent.failure().isEmpty()) {
+        err << "tipscope-cli: " << agent.failure() << Qt::endl;
+        return kTransport;
+    }
     return connected ? kOk : kTransport; // never reached the broker: a transport error
 }
 

@@ -35,7 +35,7 @@ bool takesValue(const QString &command, const QString &option) {
 const QMap<QString, QStringList> kCommandOptions = {
     {QStringLiteral("detect"), {QStringLiteral("json"), QStringLiteral("scan")}},
     {QStringLiteral("read"), {QStringLiteral("raw")}},
-    {QStringLiteral("write"), {QStringLiteral("raw")}},
+    {QStringLiteral("write"), {QStringLiteral("raw"), QStringLiteral("force")}},
     {QStringLiteral("send"), {}},
     {QStringLiteral("monitor"),
      {QStringLiteral("interval"), QStringLiteral("duration"), QStringLiteral("csv"),
@@ -85,7 +85,9 @@ QString CliParser::usage() {
         "  detect [--json] [--scan]  one line per device: \"<address or --> <model> <family> "
         "<version>\"\n"
         "  read CODE... [--raw]      one line per code: \"<CODE> <value> <unit>\"\n"
-        "  write CODE VALUE [--raw]  validate, send, and read back\n"
+        "  write CODE VALUE [--raw [--force]]\n"
+        "                            validate (MIT and MAT read first), send, and read back;\n"
+        "                            --raw sends the data field, checked unless --force\n"
         "  send HEX                  send a raw frame; print the answer in hex and decoded\n"
         "  monitor [--interval MS] [--duration S] [--csv FILE [--csv-one-file]]\n"
         "          [--limit RULE] [--journal FILE]\n"
@@ -128,7 +130,8 @@ QString CliParser::usage() {
         "\n"
         "Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);\n"
         "3 the device answered NAK, or a read-back or profile check failed;\n"
-        "4 no valid answer; 5 transport error.\n");
+        "4 no valid answer; 5 transport error; the journal (joints, journal show): 6 missing,\n"
+        "7 damaged, 8 newer, 9 locked, 10 not accessible, 11 disk full or failing.\n");
 }
 
 protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {

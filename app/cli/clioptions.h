@@ -22,6 +22,13 @@ enum ExitCode {
     kNak = 3,
     kNoAnswer = 4,
     kTransport = 5,
+    // The journal, by kind of problem (journal::JournalProblem; docs/user-guide.md).
+    kJournalMissing = 6,
+    kJournalDamaged = 7, // damaged inside, or not a TipScope journal
+    kJournalNewer = 8,
+    kJournalLocked = 9,
+    kJournalInaccessible = 10, // the file or its folder cannot be read or written
+    kJournalDisk = 11,         // the disk is full or reported an error
 };
 
 struct CliOptions {

@@ -94,6 +94,13 @@ int runProfile(CliSession &s) {
                            s.options().flags.contains(QStringLiteral("force")));
     QEventLoop loop;
     QObject::connect(&applier, &ProfileApplier::finished, &loop, &QEventLoop::quit);
+    // Each write the dropped line fails only says "not connected"; why it dropped is said once.
+    QString dropped;
+    QObject::connect(&s.line(), &Line::stateChanged, &loop,
+                     [&dropped](Line::State state, const QString &detail) {
+                         if (state == Line::State::Retrying && dropped.isEmpty())
+                             dropped = detail;
+                     });
     applier.start();
     loop.exec();
     const ApplyReport &r = applier.report();
@@ -108,7 +115,17 @@ int runProfile(CliSession &s) {
                 << Qt::endl;
         return kRefused;
     }
-    if (s.line().state() != Line::State::Open)
+    if (!dropped.isEmpty())
+        s.err() << CliProfileTr::tr(
+                       "tipscope-cli: the line was dropped during the apply: %1. A slow station "
+                       "may need a longer --timeout (now %2 ms) or more --retries (now %3); "
+                       "apply the profile again once the line answers: what is already right "
+                       "is left alone")
+                       .arg(dropped)
+                       .arg(s.options().line.queue.turnaroundMs)
+                       .arg(s.options().line.queue.retries)
+                << Qt::endl;
+    if (s.line().state() != Line::State::Open || !dropped.isEmpty())
         return kTransport;
     return r.failedCount() > 0 ? kNak : kOk;
 }

@@ -167,6 +167,16 @@ int CliSession::resolveDevices() {
               << Qt::endl;
         return kTransport;
     }
+    // Something that came back is not the cable's silence: say what it was.
+    if (const QString heard = discovery.whatCameBack(); !heard.isEmpty()) {
+        m_err << withPortElided(tr("tipscope-cli: no device could be identified on %1 (checked "
+                                   "addresses 01, 10, 20 and frames without addresses); what "
+                                   "came back: %2. Check the baud rate, the addressing, and "
+                                   "that robot mode is on.")
+                                    .arg(m_line->transport().description(), heard))
+              << Qt::endl;
+        return kNoAnswer;
+    }
     m_err << withPortElided(
                  tr("tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and "
                     "frames without addresses). Check the cable, the baud rate, and that robot "

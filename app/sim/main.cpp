@@ -16,11 +16,15 @@
 #include <functional>
 #include <memory>
 #include <unistd.h>
+#include <utility>
 
 using namespace tipscope::sim;
 using tipscope::protocol::Catalog;
 
 namespace {
+
+// A control command is a few words; a longer line is a mistake or an attack.
+constexpr qsizetype kMaxCommandBytes = 1024;
 
 struct Options {
     QString model = QStringLiteral("DME");
@@ -307,18 +311,39 @@ int main(int argc, char *argv[]) {
         return simCommandUsage(verbs);
     };
 
+    const auto run = [&](const QByteArray &cmd) {
+        const QString c = QString::fromLocal8Bit(cmd).trimmed();
+        if (!c.isEmpty())
+            out() << reply(c) << Qt::endl;
+    };
+    // Whole lines only: a read ends anywhere, and the part of a long line after it must not run
+    // as a command of its own. A line beyond the bound is dropped to its end, and said.
+    QByteArray pending;
+    bool overlong = false;
     QSocketNotifier input(STDIN_FILENO, QSocketNotifier::Read);
     QObject::connect(&input, &QSocketNotifier::activated, &app, [&] {
-        char buf[1024];
-        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf - 1);
+        char buf[4096];
+        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
         if (n <= 0) {
             input.setEnabled(false); // end of input: keep serving until killed
+            if (!overlong)
+                run(pending);
             return;
         }
-        for (const QByteArray &cmd : QByteArray(buf, int(n)).split('\n')) {
-            const QString c = QString::fromLocal8Bit(cmd).trimmed();
-            if (!c.isEmpty())
-                out() << reply(c) << Qt::endl;
+        pending.append(buf, qsizetype(n));
+        for (qsizetype end = pending.indexOf('\n'); end >= 0; end = pending.indexOf('\n')) {
+            const QByteArray cmd = pending.left(end);
+            pending.remove(0, end + 1);
+            if (std::exchange(overlong, false) || cmd.size() > kMaxCommandBytes)
+                out() << QStringLiteral("error: a command line longer than %1 bytes is ignored")
+                             .arg(kMaxCommandBytes)
+                      << Qt::endl;
+            else
+                run(cmd);
+        }
+        if (pending.size() > kMaxCommandBytes) {
+            overlong = true;
+            pending.clear();
         }
     });
     return app.exec();

@@ -188,6 +188,11 @@ QString Journal::errorText() const {
     return m_shared->errorText;
 }
 
+JournalProblem Journal::problem() const {
+    QMutexLocker lock(&m_shared->mutex);
+    return m_shared->problem;
+}
+
 qint64 Journal::lostCount() const {
     QMutexLocker lock(&m_shared->mutex);
     return m_shared->lost;

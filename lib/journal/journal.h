@@ -71,6 +71,8 @@ public:
 
     [[nodiscard]] JournalState state() const;
     [[nodiscard]] QString errorText() const;
+    // The kind of errorText(): None unless state() is Failed.
+    [[nodiscard]] JournalProblem problem() const;
     [[nodiscard]] qint64 lostCount() const;
     [[nodiscard]] QString lossReason() const;
     // Records queued or held in memory, not yet written.

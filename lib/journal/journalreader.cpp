@@ -80,14 +80,42 @@ void JournalReader::close() {
 Outcome<void> JournalReader::open(const QString &path) {
     close();
     m_path = path;
+    m_problem = JournalProblem::Missing;
     if (!QFileInfo(path).isFile())
         return failure(JournalReaderTr::tr("There is no journal at %1.").arg(path));
-    if (const auto opened = openJournalDatabase(path, m_connection, 0); !opened)
+    qint64 version = 0;
+    if (const auto opened = openJournalForReading(path, m_connection, &version, &m_problem);
+        !opened)
         return opened;
+    // An older file is migrated as the writer would, which needs write access once; a current
+    // one is only read, so a read-only mount or another user's journal opens.
+    if (version < kJournalSchemaVersion) {
+        QSqlDatabase::database(m_connection, false).close();
+        QSqlDatabase::removeDatabase(m_connection);
+        if (const auto opened = openJournalDatabase(path, m_connection, 0, &m_problem); !opened)
+            return opened;
+    }
     m_open = true;
     // The reader never writes, whatever a caller's SQL might try.
     return run(m_connection, {QStringLiteral("PRAGMA query_only = 1"), {}},
                [](const QSqlQuery &) {});
+}
+
+Outcome<void> JournalReader::check() {
+    QStringList findings;
+    const auto ran =
+        run(m_connection, {QStringLiteral("PRAGMA quick_check"), {}},
+            [&findings](const QSqlQuery &q) { findings.append(q.value(0).toString()); });
+    if (!ran) {
+        m_problem = JournalProblem::Damaged;
+        return ran;
+    }
+    if (findings == QStringList{QStringLiteral("ok")})
+        return {};
+    m_problem = JournalProblem::Damaged;
+    return failure(JournalReaderTr::tr("The journal %1 is damaged (%n finding(s), the first: %2).",
+                                       nullptr, int(findings.size()))
+                       .arg(m_path, findings.value(0)));
 }
 
 Outcome<QList<StoredJoint>> JournalReader::joints(const JointFilter &filter) const {

@@ -4,10 +4,13 @@
 // the writer). Use one reader on one thread: Qt SQL connections belong to their thread.
 //
 // open() refuses a missing file (it never creates one), a damaged or foreign file and a newer
-// schema; an older schema is migrated as the writer would. Every query that fails says why, in
-// the user's language.
+// schema, and only reads a current one, so a journal on a read-only mount or another user's
+// opens; an older schema is migrated as the writer would. check() is the one integrity check
+// every command that reports on a journal runs. Every query that fails says why, in the user's
+// language, and problem() says its kind.
 #pragma once
 
+#include "journalstate.h"
 #include "journaltypes.h"
 
 #include "protocol/outcome.h"
@@ -26,6 +29,11 @@ public:
 
     [[nodiscard]] protocol::Outcome<void> open(const QString &path);
     [[nodiscard]] bool isOpen() const { return m_open; }
+    // SQLite's quick_check over the whole file: a journal that opens may still be damaged inside.
+    // It reads every page, so it is for commands that report on the journal, not the poll path.
+    [[nodiscard]] protocol::Outcome<void> check();
+    // Why the last open() or check() failed, by kind; None after good ones.
+    [[nodiscard]] JournalProblem problem() const { return m_problem; }
     [[nodiscard]] QString path() const { return m_path; }
 
     [[nodiscard]] protocol::Outcome<QList<StoredJoint>> joints(const JointFilter &filter) const;
@@ -56,6 +64,7 @@ private:
     QString m_connection;
     QString m_path;
     bool m_open = false;
+    JournalProblem m_problem = JournalProblem::None;
 };
 
 } // namespace tipscope::journal

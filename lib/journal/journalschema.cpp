@@ -63,35 +63,47 @@ const Migration kMigrations[] = {
       "ALTER TABLE joints ADD COLUMN recovery_bounded INTEGER NOT NULL DEFAULT 0"}},
 };
 
-Outcome<void> run(QSqlDatabase &db, const QString &sql) {
+// A failure with its kind, so that a front end can tell waiting from a person's work.
+struct Failed {
+    JournalProblem problem = JournalProblem::Other;
+    QString text;
+};
+template <typename T> using Result = Outcome<T, Failed>;
+
+Failed sqlFailed(const QSqlError &error, const QString &path) {
+    return {problemOf(error), describeSqlError(error, path)};
+}
+
+Result<void> run(QSqlDatabase &db, const QString &sql) {
     QSqlQuery query(db);
     if (query.exec(sql))
         return {};
-    return failure(describeSqlError(query.lastError(), db.databaseName()));
+    return failure(sqlFailed(query.lastError(), db.databaseName()));
 }
 
 // The integer a pragma or a one-value query answers, or why the query failed.
-Outcome<qint64> readInteger(QSqlDatabase &db, const QString &sql) {
+Result<qint64> readInteger(QSqlDatabase &db, const QString &sql) {
     QSqlQuery query(db);
     if (query.exec(sql) && query.next())
         return query.value(0).toLongLong();
-    return failure(describeSqlError(query.lastError(), db.databaseName()));
+    return failure(sqlFailed(query.lastError(), db.databaseName()));
 }
 
 // The file's schema version, if the file is ours to migrate: not another program's database,
 // not a newer journal. Reads only, so a refused file is left as it was.
-Outcome<qint64> ownedVersion(QSqlDatabase &db) {
+Result<qint64> ownedVersion(QSqlDatabase &db) {
     const QString path = db.databaseName();
     const auto version = readInteger(db, QStringLiteral("PRAGMA user_version"));
     if (!version)
         return version;
     if (*version > kJournalSchemaVersion)
-        return failure(JournalSchemaTr::tr(
-                           "The journal %1 was written by a newer TipScope (schema %2; this one "
-                           "knows up to %3). It was left untouched.")
-                           .arg(path)
-                           .arg(*version)
-                           .arg(kJournalSchemaVersion));
+        return failure(Failed{
+            JournalProblem::Newer,
+            JournalSchemaTr::tr("The journal %1 was written by a newer TipScope (schema %2; this "
+                                "one knows up to %3). It was left untouched.")
+                .arg(path)
+                .arg(*version)
+                .arg(kJournalSchemaVersion)});
     const auto applicationId = readInteger(db, QStringLiteral("PRAGMA application_id"));
     if (!applicationId)
         return applicationId;
@@ -100,13 +112,14 @@ Outcome<qint64> ownedVersion(QSqlDatabase &db) {
         return tables;
     const bool foreignId = *applicationId != 0 && *applicationId != kJournalApplicationId;
     if (foreignId || (*version == 0 && *tables > 0))
-        return failure(
+        return failure(Failed{
+            JournalProblem::Foreign,
             JournalSchemaTr::tr("The file %1 is not a TipScope journal. It was left untouched.")
-                .arg(path));
+                .arg(path)});
     return version;
 }
 
-Outcome<void> runMigrations(QSqlDatabase &db, qint64 from) {
+Result<void> runMigrations(QSqlDatabase &db, qint64 from) {
     for (const Migration &migration : kMigrations) {
         if (migration.version <= from)
             continue;
@@ -121,12 +134,12 @@ Outcome<void> runMigrations(QSqlDatabase &db, qint64 from) {
     return run(db, QStringLiteral("PRAGMA user_version = %1").arg(kJournalSchemaVersion));
 }
 
-Outcome<void> configure(QSqlDatabase &db, qint64 maxSizeBytes) {
+Result<void> configure(QSqlDatabase &db, qint64 maxSizeBytes) {
     QSqlQuery mode(db);
     if (!mode.exec(QStringLiteral("PRAGMA journal_mode = WAL")) || !mode.next())
-        return failure(describeSqlError(mode.lastError(), db.databaseName()));
+        return failure(sqlFailed(mode.lastError(), db.databaseName()));
     if (mode.value(0).toString().compare(QLatin1String("wal"), Qt::CaseInsensitive) != 0)
-        return failure(readOnlyJournalText(db.databaseName()));
+        return failure(Failed{JournalProblem::ReadOnly, readOnlyJournalText(db.databaseName())});
     // FULL: a commit is on the disk, not only in the system's cache, when durable() is said.
     if (const auto ran = run(db, QStringLiteral("PRAGMA synchronous = FULL")); !ran)
         return ran;
@@ -142,9 +155,7 @@ Outcome<void> configure(QSqlDatabase &db, qint64 maxSizeBytes) {
     return {};
 }
 
-} // namespace
-
-Outcome<void> migrateJournal(QSqlDatabase &db) {
+Result<void> migrate(QSqlDatabase &db) {
     const auto version = ownedVersion(db);
     if (!version)
         return failure(version.error());
@@ -153,7 +164,7 @@ Outcome<void> migrateJournal(QSqlDatabase &db) {
     if (const auto ran = run(db, QStringLiteral("BEGIN IMMEDIATE")); !ran)
         return ran;
     // Another program may have migrated the file while this one waited for the lock.
-    const auto done = [&db]() -> Outcome<void> {
+    const auto done = [&db]() -> Result<void> {
         const auto locked = ownedVersion(db);
         if (!locked)
             return failure(locked.error());
@@ -167,33 +178,68 @@ Outcome<void> migrateJournal(QSqlDatabase &db) {
 }
 
 // Checks the file is ours, sets the connection up and migrates it.
-static Outcome<void> prepare(QSqlDatabase &db, qint64 maxSizeBytes) {
+Result<void> prepare(QSqlDatabase &db, qint64 maxSizeBytes) {
     if (const auto owned = ownedVersion(db); !owned)
         return failure(owned.error());
     if (const auto configured = configure(db, maxSizeBytes); !configured)
         return configured;
-    return migrateJournal(db);
+    return migrate(db);
+}
+
+} // namespace
+
+Outcome<void> migrateJournal(QSqlDatabase &db) {
+    if (const auto migrated = migrate(db); !migrated)
+        return failure(migrated.error().text);
+    return {};
+}
+
+Outcome<void> openJournalForReading(const QString &path, const QString &connectionName,
+                                    qint64 *version, JournalProblem *problem) {
+    Result<qint64> owned = qint64(0);
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), connectionName);
+        db.setDatabaseName(path);
+        db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_READONLY;QSQLITE_BUSY_TIMEOUT=5000"));
+        owned =
+            db.open() ? ownedVersion(db) : Result<qint64>(failure(sqlFailed(db.lastError(), path)));
+        if (!owned)
+            db.close();
+    }
+    if (problem)
+        *problem = owned ? JournalProblem::None : owned.error().problem;
+    if (owned) {
+        *version = *owned;
+        return {};
+    }
+    QSqlDatabase::removeDatabase(connectionName);
+    return failure(owned.error().text);
 }
 
 Outcome<void> openJournalDatabase(const QString &path, const QString &connectionName,
-                                  qint64 maxSizeBytes) {
+                                  qint64 maxSizeBytes, JournalProblem *problem) {
     const QString folder = QFileInfo(path).absolutePath();
-    if (!QDir().mkpath(folder))
-        return failure(
-            JournalSchemaTr::tr("Cannot create the folder %1 for the journal.").arg(folder));
-    Outcome<void> opened;
-    {
+    Result<void> opened;
+    if (!QDir().mkpath(folder)) {
+        opened = failure(Failed{
+            JournalProblem::ReadOnly,
+            JournalSchemaTr::tr("Cannot create the folder %1 for the journal.").arg(folder)});
+    } else {
         QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), connectionName);
         db.setDatabaseName(path);
         db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=5000"));
         opened = db.open() ? prepare(db, maxSizeBytes)
-                           : Outcome<void>(failure(describeSqlError(db.lastError(), path)));
+                           : Result<void>(failure(sqlFailed(db.lastError(), path)));
         if (!opened)
             db.close();
     }
-    if (!opened)
+    if (problem)
+        *problem = opened ? JournalProblem::None : opened.error().problem;
+    if (opened)
+        return {};
+    if (QSqlDatabase::contains(connectionName))
         QSqlDatabase::removeDatabase(connectionName);
-    return opened;
+    return failure(opened.error().text);
 }
 
 } // namespace tipscope::journal

@@ -10,6 +10,8 @@
 // program (tables but no version, or another application id) is refused and left untouched.
 #pragma once
 
+#include "journalstate.h"
+
 #include "protocol/outcome.h"
 
 #include <QSqlDatabase>
@@ -22,9 +24,20 @@ inline constexpr int kJournalApplicationId = 0x54695053; // "TiPS"
 
 // A fresh connection to the file at `path` named `connectionName`, open, in WAL mode with full
 // synchronous commits, and migrated. `maxSizeBytes` > 0 caps the file. On failure the
-// connection is removed again and the reason is in the user's language.
-[[nodiscard]] protocol::Outcome<void>
-openJournalDatabase(const QString &path, const QString &connectionName, qint64 maxSizeBytes);
+// connection is removed again, the reason is in the user's language and `problem`, when given,
+// says its kind.
+[[nodiscard]] protocol::Outcome<void> openJournalDatabase(const QString &path,
+                                                          const QString &connectionName,
+                                                          qint64 maxSizeBytes,
+                                                          JournalProblem *problem = nullptr);
+// A connection that only reads (SQLite's read-only open): nothing is configured or migrated,
+// so a journal on a read-only mount, or another user's, can be read. A foreign or newer file is
+// refused as by openJournalDatabase(); `version` gets the file's schema, which an older file
+// must be migrated from before the reader's queries fit it.
+[[nodiscard]] protocol::Outcome<void> openJournalForReading(const QString &path,
+                                                            const QString &connectionName,
+                                                            qint64 *version,
+                                                            JournalProblem *problem = nullptr);
 // Brings an open database to kJournalSchemaVersion.
 [[nodiscard]] protocol::Outcome<void> migrateJournal(QSqlDatabase &db);
 

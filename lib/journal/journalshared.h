@@ -46,6 +46,7 @@ struct JournalShared {
     QString lossReason;
     JournalState state = JournalState::Opening;
     QString errorText;
+    JournalProblem problem = JournalProblem::None;
     model::WorkContext context;
     int retentionDays = kDefaultRetentionDays; // in force
 };

@@ -13,6 +13,29 @@ enum class JournalState {
     Closed   // close() was called
 };
 
+// Why a journal cannot be used, by what would help: waiting (Locked, Full, DiskError), or a
+// person (ReadOnly: the folder or file; Damaged; Foreign: another program's file; Newer: a newer
+// TipScope's schema; Missing: no file where one is read). tipscope-cli gives each its own exit
+// status and tipscope-agent stops on the kinds that waiting cannot mend (docs/user-guide.md).
+enum class JournalProblem {
+    None,
+    Missing,
+    Locked,
+    Full,
+    DiskError,
+    ReadOnly,
+    Damaged,
+    Foreign,
+    Newer,
+    Other
+};
+
+// Whether waiting may mend `problem` (another program's lock, a full disk, a disk's error).
+[[nodiscard]] constexpr bool isPassing(JournalProblem problem) {
+    return problem == JournalProblem::Locked || problem == JournalProblem::Full ||
+           problem == JournalProblem::DiskError;
+}
+
 struct JournalOptions {
     // Unset: the retention stored in the file (journalsettings.h), a year when none is. Set: this
     // program's own until setRetentionDays() stores one (tests and benchmarks keep everything).

@@ -58,17 +58,18 @@ void JournalWriter::start() {
 }
 
 bool JournalWriter::openDatabase() {
-    if (const auto opened = openJournalDatabase(m_path, m_connection, m_options.maxSizeBytes);
+    JournalProblem problem = JournalProblem::None;
+    if (const auto opened =
+            openJournalDatabase(m_path, m_connection, m_options.maxSizeBytes, &problem);
         !opened) {
-        fail(opened.error());
+        fail(opened.error(), problem);
         return false;
     }
     m_statements = std::make_unique<JournalStatements>(QSqlDatabase::database(m_connection));
     QSqlError prepareError;
     if (!m_statements->prepare(&prepareError)) {
-        const QString text = describeSqlError(prepareError, m_path);
         closeDatabase();
-        fail(text);
+        fail(prepareError);
         return false;
     }
     syncRetention();
@@ -142,7 +143,7 @@ void JournalWriter::writeBacklog() {
 bool JournalWriter::writeBatch(std::size_t count) {
     QSqlError error;
     if (!m_statements->exec(QStringLiteral("BEGIN IMMEDIATE"), &error)) {
-        fail(describeSqlError(error, m_path));
+        fail(error);
         return false;
     }
     Committed ids;
@@ -152,14 +153,14 @@ bool JournalWriter::writeBatch(std::size_t count) {
             continue;
         if (!isRecordError(error)) {
             rollBack();
-            fail(describeSqlError(error, m_path));
+            fail(error);
             return false;
         }
         refused.append(describeSqlError(error, m_path));
     }
     if (!m_statements->exec(QStringLiteral("COMMIT"), &error)) {
         rollBack();
-        fail(describeSqlError(error, m_path));
+        fail(error);
         return false;
     }
     m_backlog.erase(m_backlog.begin(), m_backlog.begin() + qsizetype(count));
@@ -192,8 +193,12 @@ void JournalWriter::rollBack() {
     m_statements->forgetIds();
 }
 
-void JournalWriter::fail(const QString &text) {
-    if (setState(JournalState::Failed, text))
+void JournalWriter::fail(const QSqlError &error) {
+    fail(describeSqlError(error, m_path), problemOf(error));
+}
+
+void JournalWriter::fail(const QString &text, JournalProblem problem) {
+    if (setState(JournalState::Failed, text, problem))
         qCWarning(lcJournal).noquote() << text;
     if (m_retryTimer && !m_retryTimer->isActive())
         m_retryTimer->start();
@@ -206,13 +211,14 @@ void JournalWriter::retry() {
     writeBacklog();
 }
 
-bool JournalWriter::setState(JournalState state, const QString &errorText) {
+bool JournalWriter::setState(JournalState state, const QString &errorText, JournalProblem problem) {
     {
         QMutexLocker lock(&m_shared->mutex);
         if (m_shared->state == state && m_shared->errorText == errorText)
             return false;
         m_shared->state = state;
         m_shared->errorText = errorText;
+        m_shared->problem = problem;
     }
     Q_EMIT stateChanged(state);
     return true;
@@ -291,7 +297,7 @@ void JournalWriter::pruneBatch() {
                       m_statements->exec(QStringLiteral("COMMIT"), &error);
     if (!done) {
         rollBack();
-        fail(describeSqlError(error, m_path));
+        fail(error);
         return;
     }
     m_prunedJoints += *joints;

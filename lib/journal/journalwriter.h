@@ -13,6 +13,7 @@
 #include "journalshared.h"
 
 #include <QObject>
+#include <QSqlError>
 #include <memory>
 #include <optional>
 
@@ -52,10 +53,12 @@ private:
     bool writeRequest(const Request &request, Committed &ids, QSqlError *error);
     void rollBack();
     void syncRetention();
-    void fail(const QString &text);
+    void fail(const QString &text, JournalProblem problem);
+    void fail(const QSqlError &error);
     void retry();
     // False when nothing changed.
-    bool setState(JournalState state, const QString &errorText = QString());
+    bool setState(JournalState state, const QString &errorText = QString(),
+                  JournalProblem problem = JournalProblem::None);
     void countLost(qint64 count, const QString &reason);
     void reportLosses();
     void pruneBatch();

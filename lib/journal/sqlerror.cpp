@@ -62,6 +62,28 @@ QString describeSqlError(const QSqlError &error, const QString &path) {
     }
 }
 
+JournalProblem problemOf(const QSqlError &error) {
+    switch (primaryCode(error)) {
+    case kFull:
+        return JournalProblem::Full;
+    case kPerm:
+    case kReadOnly:
+    case kCantOpen:
+    case kAuth:
+        return JournalProblem::ReadOnly;
+    case kCorrupt:
+    case kNotADatabase:
+        return JournalProblem::Damaged;
+    case kBusy:
+    case kLocked:
+        return JournalProblem::Locked;
+    case kIoError:
+        return JournalProblem::DiskError;
+    default:
+        return JournalProblem::Other;
+    }
+}
+
 QString readOnlyJournalText(const QString &path) {
     return SqlErrorTr::tr(
                "The journal %1 cannot be written: its folder or the file is read-only or not "

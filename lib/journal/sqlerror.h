@@ -3,6 +3,8 @@
 // or the record's own (a constraint it breaks: retrying cannot help, so it is counted lost).
 #pragma once
 
+#include "journalstate.h"
+
 #include <QSqlError>
 #include <QString>
 
@@ -11,6 +13,8 @@ namespace tipscope::journal {
 // A sentence naming the journal file and what is wrong, in the user's language.
 [[nodiscard]] QString describeSqlError(const QSqlError &error, const QString &path);
 [[nodiscard]] bool isRecordError(const QSqlError &error);
+// The kind of problem describeSqlError() tells.
+[[nodiscard]] JournalProblem problemOf(const QSqlError &error);
 [[nodiscard]] QString readOnlyJournalText(const QString &path);
 
 } // namespace tipscope::journal

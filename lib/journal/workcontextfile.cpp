@@ -54,6 +54,9 @@ Outcome<model::WorkContext> readWorkContext(const QString &path) {
 }
 
 Outcome<void> writeWorkContext(const QString &path, const model::WorkContext &context) {
+    // What every reader would refuse is never written.
+    if (const QString why = model::workContextProblem(context); !why.isEmpty())
+        return failure(why);
     QDir().mkpath(QFileInfo(path).absolutePath());
     return model::io::saveAtomically(
         path, QJsonDocument(model::workContextToJson(context)).toJson(QJsonDocument::Indented));

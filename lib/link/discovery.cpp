@@ -5,6 +5,8 @@
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"
 
+#include <climits>
+
 namespace tipscope::link {
 
 using namespace tipscope::protocol;
@@ -65,6 +67,24 @@ void Discovery::begin(int probes) {
     m_outstanding = 0;
     m_failure.reset();
     m_identification.reset();
+    m_statsAtBegin = m_queue.stats();
+}
+
+QString Discovery::whatCameBack() const {
+    const LinkStats &now = m_queue.stats();
+    QStringList heard;
+    for (auto it = now.naks.cbegin(); it != now.naks.cend(); ++it)
+        if (const qint64 n = it.value() - m_statsAtBegin.naks.value(it.key()); n > 0)
+            heard << tr("%n NAK(s) %1 (%2)", nullptr, int(n))
+                         .arg(it.key(), 5, 10, QLatin1Char('0'))
+                         .arg(Catalog::builtin().nakText(it.key(), Wording::Translated));
+    if (const qint64 n = now.corrupted - m_statsAtBegin.corrupted; n > 0)
+        heard << tr("%n answer(s) with a bad block check or format", nullptr, int(n));
+    if (const qint64 n = now.stray - m_statsAtBegin.stray; n > 0)
+        heard << tr("%n frame(s) from an address not asked", nullptr, int(n));
+    if (const qint64 n = now.discardedBytes - m_statsAtBegin.discardedBytes; n > 0)
+        heard << tr("%n byte(s) that were no frame", nullptr, int(qMin<qint64>(n, INT_MAX)));
+    return heard.join(QLatin1String("; "));
 }
 
 void Discovery::probe(std::optional<int> address, int slot) {

@@ -12,6 +12,7 @@
 // deleting it. finished() is emitted once per start() or identify().
 #pragma once
 
+#include "linkstats.h"
 #include "reply.h"
 
 #include "protocol/outcome.h"
@@ -69,6 +70,11 @@ public:
     void identify(std::optional<int> address);
     [[nodiscard]] bool isRunning() const { return m_outstanding > 0; }
     [[nodiscard]] QList<DeviceInfo> devices() const;
+    // What the line brought back since the last start() or identify() that named no device, in
+    // words: NAKs by code, answers with a bad block check or format, frames from an address not
+    // asked, bytes that were no frame. Empty when the line stayed silent, which is the one case
+    // where the cable is the first thing to check.
+    [[nodiscard]] QString whatCameBack() const;
     // The result of the last identify(); unset while it runs or after start().
     [[nodiscard]] const std::optional<Identification> &identification() const {
         return m_identification;
@@ -97,6 +103,7 @@ private:
     bool m_named = false; // identify(): one device was named, its failure is reported
     std::optional<IdentifyFailure> m_failure;
     std::optional<Identification> m_identification;
+    LinkStats m_statsAtBegin; // the queue's, to tell what this search brought back
 };
 
 } // namespace tipscope::link

@@ -125,8 +125,17 @@ QStringList Profile::problemsFor(const QString &fam) const {
     return problems;
 }
 
+QString Profile::sizeProblem(qint64 bytes) {
+    if (bytes <= kMaxProfileBytes)
+        return {};
+    return ProfileTr::tr("%1 bytes; a profile is at most %2").arg(bytes).arg(kMaxProfileBytes);
+}
+
 Outcome<Profile> Profile::fromJson(const QByteArray &json) {
     const auto fail = [](const QString &why) { return failure(why); };
+    // Every way in (a file, a FIFO, a broker's message) meets the same bound.
+    if (const QString why = sizeProblem(json.size()); !why.isEmpty())
+        return fail(why);
     // Qt takes a NUL inside a string, and keeps the last of two equal keys: both are refused.
     if (const QString why = profilejson::controlCharacterProblem(json); !why.isEmpty())
         return fail(ProfileTr::tr("not a valid JSON file: %1").arg(why));
@@ -203,10 +212,9 @@ Outcome<Profile> Profile::load(const QString &path) {
     // Read at most one byte more than allowed: size() is 0 for a FIFO or standard input.
     const QByteArray bytes = f.read(kMaxProfileBytes + 1);
     if (bytes.size() > kMaxProfileBytes)
-        return failure(ProfileTr::tr("%1 is %2 bytes; a profile is at most %3")
-                           .arg(elidedPath(path))
-                           .arg(qMax<qint64>(f.size(), bytes.size()))
-                           .arg(kMaxProfileBytes));
+        return failure(
+            ProfileTr::tr("%1 is %2")
+                .arg(elidedPath(path), sizeProblem(qMax<qint64>(f.size(), bytes.size()))));
     auto p = fromJson(bytes);
     if (!p.ok())
         return failure(ProfileTr::tr("%1: %2").arg(elidedPath(path), p.error()));

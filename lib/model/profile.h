@@ -49,6 +49,9 @@ struct Profile {
     // Takes every profile parameter whose value is known. Unknown values are listed in `missing`.
     [[nodiscard]] static Profile capture(const DeviceModel &device, QStringList *missing = nullptr);
     [[nodiscard]] QByteArray toJson() const;
+    // Empty, or why `bytes` is too large for a profile ("2097152 bytes; a profile is at most
+    // 1048576"): the one bound of files, standard input and remote requests.
+    [[nodiscard]] static QString sizeProblem(qint64 bytes);
     // The reason a file is refused names the first problem; load() adds the file's name.
     [[nodiscard]] static protocol::Outcome<Profile> fromJson(const QByteArray &json);
     [[nodiscard]] protocol::Outcome<void> save(const QString &path) const; // atomic

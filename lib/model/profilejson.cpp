@@ -90,6 +90,34 @@ private:
     QStringList m_duplicates;
 };
 
+bool isJsonSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
+// The index just past the value that starts at `i` in valid JSON.
+qsizetype valueEnd(const QByteArray &json, qsizetype i) {
+    const char first = json.at(i);
+    if (first == '"')
+        return stringEnd(json, i) + 1;
+    if (first != '{' && first != '[') { // a number, true, false or null
+        while (i < json.size() && !isJsonSpace(json.at(i)) &&
+               !QByteArray(",}]").contains(json.at(i)))
+            ++i;
+        return i;
+    }
+    int depth = 0;
+    for (; i < json.size(); ++i) {
+        const char c = json.at(i);
+        if (c == '"')
+            i = stringEnd(json, i);
+        else if (c == '{' || c == '[')
+            ++depth;
+        else if ((c == '}' || c == ']') && --depth == 0)
+            return i + 1;
+    }
+    return i;
+}
+
 } // namespace
 
 QString controlCharacterProblem(const QByteArray &json) {
@@ -108,6 +136,28 @@ QString controlCharacterProblem(const QByteArray &json) {
 
 QStringList duplicateKeys(const QByteArray &json) {
     return KeyScan().run(json);
+}
+
+QList<Member> topLevelMembers(const QByteArray &json) {
+    QList<Member> members;
+    qsizetype i = json.indexOf('{');
+    if (i < 0)
+        return members;
+    for (++i; i < json.size(); ++i) {
+        if (json.at(i) != '"')
+            continue; // spaces and commas between members
+        const qsizetype keyEnd = stringEnd(json, i);
+        const QString key = decodeString(json.mid(i, keyEnd - i + 1));
+        i = json.indexOf(':', keyEnd) + 1;
+        while (i > 0 && i < json.size() && isJsonSpace(json.at(i)))
+            ++i;
+        if (i <= 0 || i >= json.size())
+            break;
+        const qsizetype end = valueEnd(json, i);
+        members.append({key, json.mid(i, end - i)});
+        i = end - 1;
+    }
+    return members;
 }
 
 } // namespace tipscope::model::profilejson

@@ -21,4 +21,16 @@ namespace tipscope::model::profilejson {
 // accepted: "ST1" for a code of "values", "values" at the top level, "a.b" deeper. Each once.
 [[nodiscard]] QStringList duplicateKeys(const QByteArray &json);
 
+// A member of the top-level object of `json`: its key and its value's exact bytes, so a nested
+// document (a profile inside a request) can be checked as the text that was sent, not as what
+// QJsonDocument kept of it.
+struct Member {
+    QString key;
+    QByteArray value;
+};
+
+// The members of `json`'s top-level object in the order given, repeated keys included. `json`
+// must be an object QJsonDocument has already accepted.
+[[nodiscard]] QList<Member> topLevelMembers(const QByteArray &json);
+
 } // namespace tipscope::model::profilejson

@@ -229,6 +229,12 @@ void Session::adoptDevices(const QList<DeviceInfo> &found, const QString &uniden
     if (m_devices.isEmpty() && !unidentified.isEmpty())
         setState(State::Connected, SessionTr::tr("connected to %1, but %2")
                                        .arg(m_line->transport().description(), unidentified));
+    else if (const QString heard = m_discovery ? m_discovery->whatCameBack() : QString();
+             m_devices.isEmpty() && !heard.isEmpty())
+        setState(State::Connected,
+                 SessionTr::tr("connected to %1, but no device could be identified; what came "
+                               "back: %2 (robot mode off? wrong addressing or baud rate?)")
+                     .arg(m_line->transport().description(), heard));
     else if (m_devices.isEmpty())
         setState(State::Connected,
                  SessionTr::tr("connected to %1, but no device answered (robot mode "

@@ -1,6 +1,9 @@
 #include "model/workcontextjson.h"
 
+#include "protocol/elide.h"
+
 #include <QCoreApplication>
+#include <utility>
 
 namespace tipscope::model {
 
@@ -12,7 +15,31 @@ struct WorkContextJsonTr {
 const QString kWorkOrder = QStringLiteral("work_order");
 const QString kSerial = QStringLiteral("board_serial");
 const QString kOperator = QStringLiteral("operator");
+QString fieldProblem(const QString &key, const QString &text) {
+    if (text.size() > kMaxWorkContextChars)
+        return WorkContextJsonTr::tr("%1 has %2 characters; at most %3 are kept")
+            .arg(key)
+            .arg(text.size())
+            .arg(kMaxWorkContextChars);
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        const QChar c = text.at(i);
+        if (c.category() == QChar::Other_Control || c.category() == QChar::Other_Format)
+            return WorkContextJsonTr::tr("%1 holds a control character (%2) at character %3")
+                .arg(key, protocol::elided(QString(c)))
+                .arg(i + 1);
+    }
+    return {};
+}
 } // namespace
+
+QString workContextProblem(const WorkContext &context) {
+    for (const auto &[key, text] :
+         {std::pair{kWorkOrder, context.workOrder}, std::pair{kSerial, context.boardSerial},
+          std::pair{kOperator, context.operatorName}})
+        if (const QString why = fieldProblem(key, text); !why.isEmpty())
+            return why;
+    return {};
+}
 
 QJsonObject workContextToJson(const WorkContext &context) {
     return {{kWorkOrder, context.workOrder},
@@ -24,9 +51,12 @@ protocol::Outcome<WorkContext> workContextFromJson(const QJsonObject &json) {
     for (const QString &key : {kWorkOrder, kSerial, kOperator})
         if (json.contains(key) && !json.value(key).isString())
             return protocol::failure(WorkContextJsonTr::tr("%1 must be text").arg(key));
-    return WorkContext{json.value(kWorkOrder).toString().trimmed(),
-                       json.value(kSerial).toString().trimmed(),
-                       json.value(kOperator).toString().trimmed()};
+    const WorkContext context{json.value(kWorkOrder).toString().trimmed(),
+                              json.value(kSerial).toString().trimmed(),
+                              json.value(kOperator).toString().trimmed()};
+    if (const QString why = workContextProblem(context); !why.isEmpty())
+        return protocol::failure(why);
+    return context;
 }
 
 } // namespace tipscope::model

@@ -2,6 +2,9 @@
 // the journal, each line of a workspace):
 //     {"work_order": "WO-1234", "board_serial": "SN-0042", "operator": "ana"}
 // A missing field is empty; a field that is not text is refused with its name. Text is trimmed.
+// Each field is stamped on every joint, event and MQTT payload until it changes, so its length is
+// bounded and a control character (an ANSI escape that would rewrite a terminal) is refused, in
+// a file as in a command.
 #pragma once
 
 #include "model/workcontext.h"
@@ -11,6 +14,11 @@
 #include <QJsonObject>
 
 namespace tipscope::model {
+
+inline constexpr int kMaxWorkContextChars = 64;
+
+// Empty, or why `context` cannot be kept: the field, and its length or the character refused.
+[[nodiscard]] QString workContextProblem(const WorkContext &context);
 
 [[nodiscard]] QJsonObject workContextToJson(const WorkContext &context);
 [[nodiscard]] protocol::Outcome<WorkContext> workContextFromJson(const QJsonObject &json);

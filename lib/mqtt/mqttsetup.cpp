@@ -1,6 +1,7 @@
 #include "mqttsetup.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QFileInfo>
 #include <QRandomGenerator>
 #include <cerrno>
@@ -33,6 +34,17 @@ int refusePassphrase(char *, int, int, void *) {
 bool readable(const QString &path) {
     const QFileInfo info(path);
     return info.isFile() && info.isReadable();
+}
+
+// What libmosquitto reads as a CA file: PEM text. A DER file or anything else fails only at
+// the first connection, deep in the TLS handshake.
+bool holdsPem(const QString &path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return false;
+    const QByteArray text = f.read(1 << 20);
+    const qsizetype begin = text.indexOf("-----BEGIN ");
+    return begin >= 0 && text.indexOf("CERTIFICATE-----", begin) > begin;
 }
 
 QString libraryText(int rc) {
@@ -68,19 +80,6 @@ Outcome<void> applyWill(mosquitto *client, const MqttWill &will) {
     return {};
 }
 
-Outcome<void> checkTlsFiles(const MqttTls &tls) {
-    if (!readable(tls.caFile))
-        return failure(
-            MqttSetupTr::tr("The CA certificate file %1 cannot be read.").arg(tls.caFile));
-    if (tls.certFile.isEmpty() != tls.keyFile.isEmpty())
-        return failure(MqttSetupTr::tr(
-            "A client certificate needs both its certificate file and its key file."));
-    for (const QString &path : {tls.certFile, tls.keyFile})
-        if (!path.isEmpty() && !readable(path))
-            return failure(MqttSetupTr::tr("The file %1 cannot be read.").arg(path));
-    return {};
-}
-
 Outcome<void> applyTls(mosquitto *client, const MqttTls &tls) {
     if (tls.caFile.isEmpty())
         return {};
@@ -108,6 +107,25 @@ Outcome<void> applyProtocol(mosquitto *client, MqttProtocol protocol) {
 }
 
 } // namespace
+
+Outcome<void> checkTlsFiles(const MqttTls &tls) {
+    if (tls.caFile.isEmpty())
+        return {};
+    if (!readable(tls.caFile))
+        return failure(
+            MqttSetupTr::tr("The CA certificate file %1 cannot be read.").arg(tls.caFile));
+    if (!holdsPem(tls.caFile))
+        return failure(MqttSetupTr::tr("The CA certificate file %1 holds no PEM certificate "
+                                       "(-----BEGIN CERTIFICATE-----).")
+                           .arg(tls.caFile));
+    if (tls.certFile.isEmpty() != tls.keyFile.isEmpty())
+        return failure(MqttSetupTr::tr(
+            "A client certificate needs both its certificate file and its key file."));
+    for (const QString &path : {tls.certFile, tls.keyFile})
+        if (!path.isEmpty() && !readable(path))
+            return failure(MqttSetupTr::tr("The file %1 cannot be read.").arg(path));
+    return {};
+}
 
 void MosquittoDeleter::operator()(mosquitto *client) const {
     mosquitto_destroy(client);

@@ -39,9 +39,12 @@ void PlantAgent::start(const AgentConfig &config) {
     journal::Journal &journal = m_lines.journal();
     qCInfo(lcAgent, "journal %s", qPrintable(journal.path()));
     connect(&journal, &journal::Journal::stateChanged, this, [this](journal::JournalState state) {
+        const journal::Journal &j = m_lines.journal();
+        if (state == journal::JournalState::Failed && !journal::isPassing(j.problem()))
+            return failJournal(j.errorText());
         if (state == journal::JournalState::Failed)
-            qCCritical(lcAgent, "the journal cannot be written: %s",
-                       qPrintable(m_lines.journal().errorText()));
+            qCCritical(lcAgent, "the journal cannot be written: %s; its records wait in memory",
+                       qPrintable(j.errorText()));
         else if (state == journal::JournalState::Ready)
             qCInfo(lcAgent, "the journal is written");
     });
@@ -77,6 +80,17 @@ void PlantAgent::reload(const AgentConfig &config) {
     watchClient();
     qCInfo(lcAgent, "configuration %s applied%s", qPrintable(config.path),
            linesChanged ? ", lines opened again" : "");
+}
+
+void PlantAgent::failJournal(const QString &why) {
+    if (!m_failure.isEmpty())
+        return;
+    m_failure = why;
+    qCCritical(lcAgent,
+               "the journal cannot be used: %s; the agent stops, since no joint or event "
+               "it measures could be kept",
+               qPrintable(why));
+    stop();
 }
 
 void PlantAgent::stop() {

@@ -11,6 +11,11 @@
 // for the journal to write what it holds, and emits finished(). What happens is said through the
 // logging category tipscope.agent (lines up and down, the broker connected or why not, the
 // backlog forwarded), for the program to print; the password never appears in it.
+//
+// A journal that waiting cannot mend (damaged, another program's file, a newer schema, a folder
+// or file that cannot be written) stops the agent, offline first, with failure() saying why:
+// running on would publish live values while every joint is lost, and look healthy. A journal
+// that is locked or full holds its records in memory and is tried again (journal.h).
 #pragma once
 
 #include "agentconfig.h"
@@ -31,8 +36,7 @@ public:
     explicit PlantAgent(Publisher who, QObject *parent = nullptr);
     ~PlantAgent() override;
 
-    // Opens the journal and the lines and starts publishing. A journal that cannot be written
-    // is said, and holds its records in memory until it can (journal.h).
+    // Opens the journal and the lines and starts publishing.
     void start(const AgentConfig &config);
     void reload(const AgentConfig &config);
     void stop();
@@ -43,6 +47,8 @@ public:
     }
     [[nodiscard]] PlantPublisher *publisher() const { return m_publisher.get(); }
     [[nodiscard]] const AgentConfig &config() const { return m_config; }
+    // Why the agent stopped by itself (its journal cannot be used); empty otherwise.
+    [[nodiscard]] QString failure() const { return m_failure; }
 
 Q_SIGNALS:
     void finished();
@@ -51,6 +57,7 @@ private:
     void openLines();
     void watchClient();
     void onLineState(int index, model::Session::State state, const QString &text);
+    void failJournal(const QString &why);
 
     Publisher m_who;
     AgentConfig m_config;
@@ -58,6 +65,7 @@ private:
     std::unique_ptr<PlantPublisher> m_publisher;
     bool m_stopping = false;
     bool m_brokerTrouble = false;
+    QString m_failure;
 };
 
 } // namespace tipscope::plant

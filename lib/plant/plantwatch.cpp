@@ -1,11 +1,18 @@
 #include "plantwatch.h"
 
 #include "planttopics.h"
+#include "plantwatchlimits.h"
 
 #include "mqtt/mqtttopic.h"
 
+#include "protocol/elide.h"
+
 #include <QDateTime>
 #include <QJsonDocument>
+#include <QLoggingCategory>
+#include <utility>
+
+Q_LOGGING_CATEGORY(lcWatch, "tipscope.plant.watch")
 
 namespace tipscope::plant {
 
@@ -31,6 +38,8 @@ void PlantWatch::start(const mqtt::MqttSettings &broker, const QString &site) {
 
 void PlantWatch::stop() {
     m_client->stop();
+    m_said.clear();
+    m_saidEnough = false;
     if (!m_devices.isEmpty()) {
         m_devices.clear();
         Q_EMIT cleared();
@@ -42,13 +51,66 @@ const RemoteDevice *PlantWatch::device(const QString &root) const {
     return it == m_devices.cend() ? nullptr : &*it;
 }
 
+// Logged once per publisher (device root), line or site; the set of those said is bounded too, so
+// a broker of endless hostile roots cannot grow it.
+void PlantWatch::refuse(const QString &publisher, const QString &why) {
+    const QString who = publisher.left(256);
+    if (m_said.contains(who))
+        return;
+    if (m_said.size() >= PlantWatchLimits::kMaxDevices * 2) {
+        if (!std::exchange(m_saidEnough, true))
+            qCWarning(lcWatch, "more publishers refused; no more are logged");
+        return;
+    }
+    m_said.insert(who);
+    qCWarning(lcWatch, "%s refused: %s", qPrintable(protocol::elided(who, 160)), qPrintable(why));
+}
+
+// Empty when a device at `where` may be added, else why not (and who is told).
+QString PlantWatch::countProblem(const DeviceTopic &where, QString *who) const {
+    using L = PlantWatchLimits;
+    for (const QString &level : {where.site, where.line, where.device})
+        if (level.size() > L::kMaxLevelChars) {
+            *who = QStringLiteral("a topic");
+            return QStringLiteral("a topic level of %1 characters (at most %2)")
+                .arg(level.size())
+                .arg(L::kMaxLevelChars);
+        }
+    if (m_devices.size() >= L::kMaxDevices) {
+        *who = QStringLiteral("the plant");
+        return QStringLiteral("more than %1 devices").arg(L::kMaxDevices);
+    }
+    QSet<QString> lines;
+    int onLine = 0;
+    for (const RemoteDevice &d : m_devices) {
+        if (d.site != where.site)
+            continue;
+        lines.insert(d.line);
+        onLine += d.line == where.line ? 1 : 0;
+    }
+    if (onLine >= L::kMaxDevicesPerLine) {
+        *who = QStringLiteral("line %1/%2").arg(where.site, where.line);
+        return QStringLiteral("more than %1 devices on the line").arg(L::kMaxDevicesPerLine);
+    }
+    if (!lines.contains(where.line) && lines.size() >= L::kMaxLinesPerSite) {
+        *who = QStringLiteral("site %1").arg(where.site);
+        return QStringLiteral("more than %1 lines").arg(L::kMaxLinesPerSite);
+    }
+    return {};
+}
+
 void PlantWatch::onMessage(const QString &topic, const QByteArray &payload, bool) {
     const auto where = parseDeviceTopic(topic);
     if (!where || where->leaf.startsWith(QLatin1String("cmd/")))
         return;
-    const QJsonObject json = QJsonDocument::fromJson(payload).object();
     const QString root = deviceRoot(where->site, where->line, where->device);
+    QJsonObject json;
+    if (const QString why = watchedMessageProblem(where->leaf, payload, &json); !why.isEmpty())
+        return refuse(root, why);
     const bool added = !m_devices.contains(root);
+    QString who;
+    if (const QString why = added ? countProblem(*where, &who) : QString(); !why.isEmpty())
+        return refuse(who, why);
     RemoteDevice &d = m_devices[root];
     if (added) {
         d.root = root;

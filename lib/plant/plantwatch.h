@@ -5,9 +5,14 @@
 // Nothing is published: a watcher only reads.
 //
 // A device is known from its first message on; deviceChanged() comes for every message about it
-// (its root), sampleArrived() for each live message. A device whose agent went offline keeps what
-// it published, marked by `online` false and since when, so a view shows it as not current.
+// (its root), sampleArrived() for each live message. What a publisher may declare is bounded
+// (plantwatchlimits.h): a message beyond it is refused whole and logged once per publisher, so
+// that what the watcher keeps stays within a bound whatever the broker holds. A device whose agent
+// went offline keeps what it published, marked by `online` false and since when, so a view shows it
+// as not current.
 #pragma once
+
+#include "planttopics.h"
 
 #include "mqtt/mqttclient.h"
 
@@ -15,6 +20,7 @@
 #include <QJsonObject>
 #include <QMap>
 #include <QObject>
+#include <QSet>
 #include <memory>
 #include <optional>
 
@@ -65,10 +71,14 @@ Q_SIGNALS:
 
 private:
     void onMessage(const QString &topic, const QByteArray &payload, bool retained);
+    void refuse(const QString &who, const QString &why);
+    [[nodiscard]] QString countProblem(const DeviceTopic &where, QString *who) const;
 
     std::unique_ptr<mqtt::MqttClient> m_client;
     QString m_filter;
     QMap<QString, RemoteDevice> m_devices;
+    QSet<QString> m_said; // publishers, lines and sites whose refusal was logged
+    bool m_saidEnough = false;
 };
 
 } // namespace tipscope::plant

@@ -6,6 +6,7 @@
 #include "journal/journal.h"
 #include "model/devicemodel.h"
 #include "model/profileapplier.h"
+#include "model/profilerequest.h"
 #include "mqtt/mqttclient.h"
 #include "mqtt/mqtttopic.h"
 
@@ -65,10 +66,9 @@ void RemoteApply::onMessage(const QString &topic, const QByteArray &payload, boo
     Command command;
     command.root = deviceRoot(where->site, where->line, where->device);
     command.client = where->leaf.mid(kLeaf.size() + 1);
-    const QJsonObject wrapper = QJsonDocument::fromJson(payload).object();
-    const bool wrapped = wrapper.value(QStringLiteral("profile")).isObject();
-    command.requestId =
-        wrapped ? wrapper.value(QStringLiteral("request_id")).toString() : QString();
+    // Read first, so that every answer, a refusal too, carries the request's id when it has one.
+    const model::ProfileRequest request = model::ProfileRequest::parse(payload);
+    command.requestId = request.requestId;
     if (command.requestId.isEmpty())
         command.requestId = QUuid::createUuid().toString(QUuid::WithoutBraces);
     if (retained)
@@ -90,12 +90,9 @@ void RemoteApply::onMessage(const QString &topic, const QByteArray &payload, boo
     if (m_running.value(command.root))
         return refuse(command,
                       RemoteApplyTr::tr("another profile is being applied to this device"));
-    const QByteArray json =
-        wrapped ? QJsonDocument(wrapper.value(QStringLiteral("profile")).toObject()).toJson()
-                : payload;
-    const auto profile = model::Profile::fromJson(json);
+    const auto &profile = request.profile;
     if (!profile)
-        return refuse(command, RemoteApplyTr::tr("not a profile: %1").arg(profile.error()));
+        return refuse(command, RemoteApplyTr::tr("profile refused: %1").arg(profile.error()));
     command.profileSha256 =
         QCryptographicHash::hash(profile->toJson(), QCryptographicHash::Sha256).toHex();
     auto *applier = new model::ProfileApplier(*command.device, profile.value(),

@@ -99,6 +99,17 @@ QString validate(const ResolvedCommand &cmd, qint64 value) {
     return refused(cmd, value);
 }
 
+QString validateData(const ResolvedCommand &cmd, const QByteArray &data) {
+    const ValueKind k = cmd.spec->kind;
+    if (k == ValueKind::Action || k == ValueKind::Hex || k == ValueKind::Text)
+        return {};
+    if (const auto v = decodeAnswer(cmd, data))
+        return validate(cmd, v->number);
+    return ValueCodecTr::tr("'%1' is no data field of %2 (%3): allowed is %4")
+        .arg(elided(QString::fromLatin1(data)), QString::fromLatin1(cmd.code),
+             catalogText(cmd.spec->name), allowedText(cmd));
+}
+
 Outcome<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value) {
     if (const QString why = validate(cmd, value); !why.isEmpty())
         return failure(why);

@@ -30,6 +30,10 @@ struct Value {
 
 // Empty when `value` may be written with `cmd`; otherwise a sentence saying what is allowed.
 [[nodiscard]] QString validate(const ResolvedCommand &cmd, qint64 value);
+// Empty when `data`, a data field made by hand (`tipscope-cli write --raw`), carries a value
+// validate() allows; otherwise why not. Kinds the catalog gives no range (actions, text, hex) are
+// not checked: their field is the caller's to make.
+[[nodiscard]] QString validateData(const ResolvedCommand &cmd, const QByteArray &data);
 // The data field for a write of `value` (validated first), or validate()'s reason if refused.
 [[nodiscard]] Outcome<QByteArray> encodeWrite(const ResolvedCommand &cmd, qint64 value);
 // Decodes the data field of an answer to a read.

@@ -87,6 +87,15 @@ private Q_SLOTS:
     void whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite();
     void profilesThatMeanTwoThingsAreRefusedByName_data();
     void profilesThatMeanTwoThingsAreRefusedByName();
+    void aWriteWhoseLimitsStayUnknownIsRefused();
+    void quotedInputIsCutWhereverItComesFrom_data();
+    void quotedInputIsCutWhereverItComesFrom();
+    void contextFieldsAreBoundedAndPrintable_data();
+    void contextFieldsAreBoundedAndPrintable();
+    void aRawWriteOutsideTheCatalogGoesOutOnlyWithForce();
+    void aLineDroppedDuringAnApplySaysWhyOnce();
+    void detectionSaysWhatCameBack_data();
+    void detectionSaysWhatCameBack();
 
 private:
     [[nodiscard]] WireCount wire();
@@ -100,6 +109,9 @@ private:
     SocatPair m_pair;
     SimProcess m_sim;
     QByteArray m_port;
+    QTemporaryDir m_dir;
+    QByteArray m_journal; // a journal with nothing in it
+    QByteArray m_badCell; // a recording whose first value is 60 kB of text
 };
 
 void TestBadCli::initTestCase() {
@@ -110,6 +122,13 @@ void TestBadCli::initTestCase() {
                   .isEmpty(),
              qPrintable(error));
     m_port = m_pair.hostEnd().toLocal8Bit();
+    m_journal = m_dir.filePath(QStringLiteral("journal.sqlite")).toLocal8Bit();
+    QCOMPARE(runCli({"journal", "retention", "30", "--journal", m_journal}).exitCode, 0);
+    m_badCell = m_dir.filePath(QStringLiteral("bad-cell.csv")).toLocal8Bit();
+    QFile csv(QString::fromLocal8Bit(m_badCell));
+    QVERIFY(csv.open(QIODevice::WriteOnly));
+    csv.write("time,port1 tip [°C],events\n2026-12-06T08:00:00.000Z," + QByteArray(60 * 1024, 'x') +
+              ",\n");
 }
 
 WireCount TestBadCli::wire() {
@@ -122,7 +141,7 @@ WireCount TestBadCli::wire() {
 
 QByteArrayList TestBadCli::withPort(QByteArrayList args) const {
     for (QByteArray &a : args)
-        a.replace("@PORT", m_port);
+        a.replace("@PORT", m_port).replace("@JOURNAL", m_journal).replace("@BADCELL", m_badCell);
     return args;
 }
 
@@ -248,6 +267,13 @@ void TestBadCli::refusedValuesWriteNothing_data() {
                                                                        "50"}
                                       << "printable";
     QTest::newRow("raw too long") << st1 + QByteArrayList{"--raw", big('0')} << "longer";
+    // Issue 38: a field made by hand went out whatever the catalog allows.
+    QTest::newRow("raw above the catalog")
+        << st1 + QByteArrayList{"--raw", "00600"} << "(--force sends it anyway)";
+    QTest::newRow("raw off step") << st1 + QByteArrayList{"--raw", "00352"}
+                                  << "allowed is 90 to 500 °C in steps of 5";
+    QTest::newRow("raw no number")
+        << st1 + QByteArrayList{"--raw", "ABCDE"} << "'ABCDE' is no data field of ST1";
     QTest::newRow("send empty hex") << QByteArrayList{"--port", "@PORT", "send", ""} << nothing;
     QTest::newRow("send bad digit")
         << QByteArrayList{"--port", "@PORT", "send", "02 3G"} << nothing;
@@ -346,6 +372,74 @@ void TestBadCli::hugeArgumentsAreEchoedCutWithTheirLength() {
     QCOMPARE(wire().writes, before.writes);
 }
 
+void TestBadCli::quotedInputIsCutWhereverItComesFrom_data() {
+    // Issue 38: these still echoed 60 to 100 kB.
+    QTest::addColumn<QByteArrayList>("args");
+    QTest::addColumn<int>("exitCode");
+    const QByteArray h = big('x');
+    QTest::newRow("limits set") << QByteArrayList{"limits", "set", h} << 2;
+    QTest::newRow("limits set, a rule without a limit")
+        << QByteArrayList{"limits", "set", "tool=" + h} << 2;
+    QTest::newRow("joints --device")
+        << QByteArrayList{"joints", "--device", h, "--journal", "@JOURNAL"} << 1;
+    QTest::newRow("joints --since")
+        << QByteArrayList{"joints", "--since", h, "--journal", "@JOURNAL"} << 1;
+    QTest::newRow("a bad CSV cell") << QByteArrayList{"measure", "@BADCELL"} << 2;
+    QTest::newRow("a context field")
+        << QByteArrayList{"context", "set", "--journal", "@JOURNAL", "--operator", h} << 2;
+}
+
+void TestBadCli::quotedInputIsCutWhereverItComesFrom() {
+    QFETCH(QByteArrayList, args);
+    QFETCH(int, exitCode);
+    const Run r = runCli(withPort(args));
+    QVERIFY2(!sanitizerReported(r), qPrintable(r.err.left(400)));
+    QVERIFY2(r.exitCode == exitCode,
+             qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err.left(400))));
+    QVERIFY2(r.err.startsWith(QStringLiteral("tipscope-cli: ")), qPrintable(r.err.left(400)));
+    QVERIFY2(r.err.size() < 500, qPrintable(r.err.left(400)));
+    static const QRegularExpression length(
+        QStringLiteral("(… \\(\\d+ characters\\))|(\\d+ characters; at most)"));
+    QVERIFY2(r.err.contains(length), qPrintable(r.err));
+}
+
+void TestBadCli::contextFieldsAreBoundedAndPrintable_data() {
+    // Each field is stamped on every joint, event and MQTT payload, and printed by `context`.
+    QTest::addColumn<QByteArrayList>("set");
+    QTest::addColumn<QString>("needle");
+    QTest::newRow("65 characters") << QByteArrayList{"--operator", QByteArray(65, 'o')}
+                                   << "operator has 65 characters; at most 64 are kept";
+    QTest::newRow("an ANSI escape") << QByteArrayList{"--work-order", "WO\x1b[2J1"}
+                                    << "work_order holds a control character (<1B>) at character 3";
+    QTest::newRow("a line break") << QByteArrayList{"--serial", "SN\n1"}
+                                  << "board_serial holds a control character (<0A>)";
+}
+
+void TestBadCli::contextFieldsAreBoundedAndPrintable() {
+    QFETCH(QByteArrayList, set);
+    QFETCH(QString, needle);
+    const QByteArrayList journal = {"--journal", m_journal};
+    QCOMPARE(runCli(QByteArrayList{"context", "set", "--operator", "ana"} + journal).exitCode, 0);
+    const Run r = runCli(QByteArrayList{"context", "set"} + set + journal);
+    QVERIFY2(r.exitCode == 2, qPrintable(r.err));
+    QVERIFY2(r.err.contains(needle), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QStringLiteral("nothing was changed")), qPrintable(r.err));
+    QVERIFY(!r.err.contains(QChar(0x1b)));
+    const Run shown = runCli(QByteArrayList{"context", "show"} + journal);
+    QVERIFY2(shown.out.contains(QStringLiteral("operator=ana\n")), qPrintable(shown.out));
+    // A file written by hand is held to the same bounds by every program that reads it.
+    QFile file(m_dir.filePath(QStringLiteral("context.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"operator": ")" + QByteArray(10 * 1024, 'o') + R"("})");
+    file.close();
+    const Run hand = runCli(QByteArrayList{"context", "show"} + journal);
+    QVERIFY2(hand.exitCode == 1, qPrintable(hand.err));
+    QVERIFY2(hand.err.contains(QStringLiteral("operator has 10240 characters")),
+             qPrintable(hand.err.left(400)));
+    QVERIFY(hand.err.size() < 500);
+    QVERIFY(file.remove());
+}
+
 void TestBadCli::sendOfBytesThatAreNoFrameSaysSoWhenUnanswered_data() {
     QTest::addColumn<QByteArray>("hex");
     QTest::addColumn<QString>("described");
@@ -405,6 +499,10 @@ void TestBadCli::whatBreaksTheDevicesLimitsIsRefusedBeforeAnyWrite_data() {
     QTest::newRow("write: ST1 below the device's MIT")
         << QByteArrayList{"MIT 300", "ST1 350"} << QByteArray()
         << QByteArrayList{"write", "ST1", "250"} << "allowed is 300 °C to 500 °C";
+    QTest::newRow("write: a raw field above the device's MAT")
+        << QByteArrayList{"MAT 400"} << QByteArray()
+        << QByteArrayList{"write", "ST1", "--raw", "00450"}
+        << "450 °C is not allowed for Selected temperature: allowed is 90 °C to 400 °C";
     QTest::newRow("write: MIT above the device's MAT")
         << QByteArrayList{"MAT 400"} << QByteArray() << QByteArrayList{"write", "MIT", "450"}
         << "450 °C is not allowed for Minimum temperature";
@@ -441,6 +539,93 @@ void TestBadCli::profilesThatMeanTwoThingsAreRefusedByName() {
     QFETCH(QByteArray, profile);
     QFETCH(QString, needle);
     checkRefusedWithoutAWrite(profile, {"profile", "apply", "@FILE"}, needle);
+}
+
+void TestBadCli::aWriteWhoseLimitsStayUnknownIsRefused() {
+    // Issue 38: an answer whose data field is no value left MAT unknown, and ST1 480 went out
+    // unchecked. Every value the station gives is garbled here, each read tried three times.
+    QVERIFY(m_sim.command(QStringLiteral("bad-data 1")).startsWith(QLatin1String("ok")));
+    check({"--port", "@PORT", "--addr", "00:01", "write", "ST1", "480"}, 2,
+          QStringLiteral("ST1 is bounded by MIT, which could not be read: the device answered"));
+    QVERIFY(m_sim.command(QStringLiteral("bad-data 0")).startsWith(QLatin1String("ok")));
+}
+
+void TestBadCli::aRawWriteOutsideTheCatalogGoesOutOnlyWithForce() {
+    const WireCount before = wire();
+    const Run r = runCli(withPort(
+        {"--port", "@PORT", "--addr", "00:01", "write", "ST1", "--raw", "00600", "--force"}));
+    QVERIFY2(!sanitizerReported(r), qPrintable(r.err));
+    QCOMPARE(wire().writes, before.writes + 1);
+    // The station's own value again, for the tests after this one.
+    QCOMPARE(
+        runCli(withPort({"--port", "@PORT", "--addr", "00:01", "write", "ST1", "350"})).exitCode,
+        0);
+}
+
+void TestBadCli::aLineDroppedDuringAnApplySaysWhyOnce() {
+    // Issue 38: a station that stops answering part way through an apply failed it with exit 5
+    // and a "not sent: the line is not connected" per setting; why only with --verbose.
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("p.json"));
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format":"tipscope-profile","schema":1,"family":"DME","values":{)"
+            R"("A11":"00011","A21":"00012","A31":"00013","A41":"00014","A12":"00015",)"
+            R"("A22":"00016","ST2":"00300","ST3":"00310"}})");
+    f.close();
+    // A station that takes its time, so that the apply is still writing when it goes quiet.
+    QVERIFY(m_sim.command(QStringLiteral("latency 100")).startsWith(QLatin1String("ok")));
+    const WireCount before = wire();
+    QProcess cli;
+    cli.start(binaryPath(QStringLiteral("tipscope-cli")),
+              {QStringLiteral("--port"), QString::fromLocal8Bit(m_port), QStringLiteral("--addr"),
+               QStringLiteral("00:01"), QStringLiteral("--timeout"), QStringLiteral("300"),
+               QStringLiteral("--retries"), QStringLiteral("0"), QStringLiteral("profile"),
+               QStringLiteral("apply"), file});
+    // The station stops answering once the first write went through.
+    QVERIFY(QTest::qWaitFor([&] { return wire().writes > before.writes; }, 20000));
+    QVERIFY(m_sim.command(QStringLiteral("drop 1")).startsWith(QLatin1String("ok")));
+    const Run r = finishProcess(cli, 60000);
+    QVERIFY(m_sim.command(QStringLiteral("drop 0")).startsWith(QLatin1String("ok")));
+    QVERIFY(m_sim.command(QStringLiteral("latency 0")).startsWith(QLatin1String("ok")));
+    QVERIFY2(r.exitCode == 5, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+    const QStringList said = r.err.split(QLatin1Char('\n')).filter(QStringLiteral("dropped"));
+    QCOMPARE(said.size(), 1);
+    QVERIFY2(said.first().contains(QStringLiteral("no answer to")) &&
+                 said.first().contains(QStringLiteral("--timeout")),
+             qPrintable(r.err));
+}
+
+void TestBadCli::detectionSaysWhatCameBack_data() {
+    // Issue 38: a NAK, a flipped block check and silence all said "check the cable".
+    QTest::addColumn<QString>("fault");
+    QTest::addColumn<QString>("undo");
+    QTest::addColumn<QString>("said");
+    QTest::addColumn<QString>("notSaid");
+    QTest::newRow("NAKs") << QStringLiteral("nak 5") << QStringLiteral("nak 0")
+                          << QStringLiteral("what came back: ") << QStringLiteral("cable");
+    QTest::newRow("corrupted answers")
+        << QStringLiteral("corrupt 1") << QStringLiteral("corrupt 0")
+        << QStringLiteral("what came back: ") << QStringLiteral("cable");
+    QTest::newRow("silence") << QStringLiteral("drop 1") << QStringLiteral("drop 0")
+                             << QStringLiteral("Check the cable")
+                             << QStringLiteral("what came back");
+}
+
+void TestBadCli::detectionSaysWhatCameBack() {
+    QFETCH(QString, fault);
+    QFETCH(QString, undo);
+    QFETCH(QString, said);
+    QFETCH(QString, notSaid);
+    QVERIFY(m_sim.command(fault).startsWith(QLatin1String("ok")));
+    const Run r = runCli(withPort({"--port", "@PORT", "--retries", "0", "detect"}));
+    QVERIFY(m_sim.command(undo).startsWith(QLatin1String("ok")));
+    QVERIFY2(r.exitCode == 4, qPrintable(r.err));
+    QVERIFY2(r.err.contains(said), qPrintable(r.err));
+    QVERIFY2(!r.err.contains(notSaid), qPrintable(r.err));
+    if (fault.startsWith(QLatin1String("nak")))
+        QVERIFY2(r.err.contains(QRegularExpression(QStringLiteral("NAKs? 00005 \\(Robot mode"))),
+                 qPrintable(r.err));
 }
 
 void TestBadCli::checkRefusedWithoutAWrite(const QByteArray &profile, QByteArrayList args,

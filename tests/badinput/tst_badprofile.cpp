@@ -4,6 +4,7 @@
 // applied (tst_badcli checks `tipscope-cli profile apply` on a real wire, tests/model/tst_profile
 // the applier). Known bugs are pinned with QEXPECT_FAIL and reported in docs/reliability.md.
 #include "model/profile.h"
+#include "model/profilerequest.h"
 
 #include <QtTest>
 #include <csignal>
@@ -56,6 +57,12 @@ private Q_SLOTS:
     void aNulInsideAStringIsInvalidJsonAtItsByte();
     void hugeCodesAndValuesAreEchoedCut_data();
     void hugeCodesAndValuesAreEchoedCut();
+    void remoteRequestsMeetTheChecksOfAFile_data();
+    void remoteRequestsMeetTheChecksOfAFile();
+    void aRemoteRequestOverTheLimitIsRefused();
+    void aGoodRemoteRequestGivesItsIdAndProfile_data();
+    void aGoodRemoteRequestGivesItsIdAndProfile();
+    void theRequestCorpusIsRefusedOrAcceptedAsNamed();
 };
 
 void TestBadProfile::theGoodProfileLoads() {
@@ -345,6 +352,121 @@ void TestBadProfile::hugeCodesAndValuesAreEchoedCut() {
     QVERIFY(!p.ok());
     QVERIFY2(error.size() < 400, qPrintable(error.left(400)));
     QVERIFY2(error.contains(QStringLiteral("… (102400 characters)")), qPrintable(error));
+}
+
+void TestBadProfile::remoteRequestsMeetTheChecksOfAFile_data() {
+    // What remote apply used to take (issue 38): QJsonDocument kept the last of two keys, and the
+    // profile was re-serialised before the file's checks saw it.
+    QTest::addColumn<QByteArray>("request");
+    QTest::addColumn<QString>("reason");
+    QTest::addColumn<QString>("requestId"); // still given back, so the answer carries it
+    const auto wrapped = [](const QByteArray &profile, const QByteArray &extra = {}) {
+        return R"({"request_id": "r-7", )" + extra + R"("profile": )" + profile + "}";
+    };
+    QTest::newRow("a code twice in the wrapped profile")
+        << wrapped(profileWith(R"({"ST1": "00300", "ST1": "00450"})"))
+        << QStringLiteral("more than once, so which value is meant is unclear: ST1")
+        << QStringLiteral("r-7");
+    QTest::newRow("codes differing in case in the wrapped profile")
+        << wrapped(profileWith(R"({"st1": "00300", "ST1": "00450"})"))
+        << QStringLiteral("more than once, so which value is meant is unclear: ST1")
+        << QStringLiteral("r-7");
+    QTest::newRow("two values objects in the wrapped profile")
+        << wrapped(R"({"format": "tipscope-profile", "schema": 1, "family": "DME",
+                      "values": {"ST1": "00300"}, "values": {"ST1": "00450"}})")
+        << QStringLiteral("unclear: values") << QStringLiteral("r-7");
+    QTest::newRow("two profile objects")
+        << wrapped(profileWith(R"({"ST1": "00300"})"),
+                   R"("profile": )" + profileWith(R"({"ST1": "00450"})") + ", ")
+        << QStringLiteral("more than once, so which one is meant is unclear: profile") << QString();
+    QTest::newRow("two request ids")
+        << wrapped(kGood, R"("request_id": "r-8", )") << QStringLiteral("request_id") << QString();
+    QTest::newRow("the profile is text")
+        << wrapped(R"("{\"format\": \"tipscope-profile\"}")")
+        << QStringLiteral("\"profile\" must be a profile") << QStringLiteral("r-7");
+    QTest::newRow("an out-of-range value") << wrapped(profileWith(R"({"ST1": "09999"})"))
+                                           << QStringLiteral("ST1") << QStringLiteral("r-7");
+    QTest::newRow("a NUL in the request id")
+        << QByteArray(wrapped(kGood)).replace("r-7", QByteArray("r\0-7", 4))
+        << QStringLiteral("a NUL byte at byte 18") << QString();
+    QTest::newRow("an escape in the request id")
+        << QByteArray(wrapped(kGood)).replace("r-7", "\\u001b[2J")
+        << QStringLiteral("\"request_id\" must be text") << QString();
+    QTest::newRow("a request id of 129 characters")
+        << QByteArray(wrapped(kGood)).replace("r-7", QByteArray(129, 'r'))
+        << QStringLiteral("at most 128 characters") << QString();
+    QTest::newRow("a number as request id")
+        << QByteArray(wrapped(kGood)).replace("\"r-7\"", "7")
+        << QStringLiteral("\"request_id\" must be text") << QString();
+    QTest::newRow("invalid JSON") << wrapped(kGood).chopped(1)
+                                  << QStringLiteral("not a valid JSON file") << QString();
+}
+
+void TestBadProfile::remoteRequestsMeetTheChecksOfAFile() {
+    QFETCH(QByteArray, request);
+    QFETCH(QString, reason);
+    QFETCH(QString, requestId);
+    const auto parsed = ProfileRequest::parse(request);
+    const QString error = parsed.profile.error();
+    QVERIFY2(!parsed.profile.ok(), "a request that means two things was accepted");
+    QVERIFY2(error.contains(reason), qPrintable(error));
+    QCOMPARE(parsed.requestId, requestId);
+}
+
+void TestBadProfile::aRemoteRequestOverTheLimitIsRefused() {
+    // 2 MB through the broker, refused before it is parsed, as a file is before it is read.
+    const QByteArray big =
+        R"({"request_id": "r-9", "profile": )" +
+        profileWith(R"({"ST1": "00350"})", "\"comment\": \"" + QByteArray(2 << 20, 'c') + "\", ") +
+        "}";
+    const auto parsed = ProfileRequest::parse(big);
+    const QString error = parsed.profile.error();
+    QVERIFY2(!parsed.profile.ok(), "a 2 MB request was accepted");
+    QVERIFY2(error.contains(QStringLiteral("a profile is at most 1048576")), qPrintable(error));
+    QVERIFY(error.size() < 200);
+}
+
+void TestBadProfile::aGoodRemoteRequestGivesItsIdAndProfile_data() {
+    QTest::addColumn<QByteArray>("request");
+    QTest::addColumn<QString>("requestId");
+    QTest::newRow("a profile as it is") << kGood << QString();
+    QTest::newRow("wrapped with an id")
+        << QByteArray(R"({"request_id": "r-1", "profile": )" + kGood + "}")
+        << QStringLiteral("r-1");
+    QTest::newRow("wrapped, profile first, spaces")
+        << QByteArray("{ \"profile\" :\n" + kGood + " ,\"request_id\":\"r-2\" }")
+        << QStringLiteral("r-2");
+    QTest::newRow("wrapped without an id")
+        << QByteArray(R"({"profile": )" + kGood + "}") << QString();
+    QTest::newRow("an unknown extra key")
+        << QByteArray(R"({"note": [1, {"a": "}"}], "profile": )" + kGood + "}") << QString();
+}
+
+void TestBadProfile::aGoodRemoteRequestGivesItsIdAndProfile() {
+    QFETCH(QByteArray, request);
+    QFETCH(QString, requestId);
+    const auto parsed = ProfileRequest::parse(request);
+    QVERIFY2(parsed.profile.ok(), qPrintable(parsed.profile.error()));
+    QCOMPARE(parsed.profile->values.size(), 3);
+    QCOMPARE(parsed.requestId, requestId);
+}
+
+void TestBadProfile::theRequestCorpusIsRefusedOrAcceptedAsNamed() {
+    // The hostile requests kept for the fuzzer (tests/fuzz/corpus/profilerequest): each says by
+    // its name whether it must be refused.
+    const QDir corpus(QStringLiteral(TIPSCOPE_REQUEST_CORPUS));
+    const QStringList files = corpus.entryList(QDir::Files);
+    QVERIFY(files.size() >= 10);
+    for (const QString &name : files) {
+        QFile f(corpus.filePath(name));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const auto parsed = ProfileRequest::parse(f.readAll());
+        if (name.startsWith(QLatin1String("refused-")))
+            QVERIFY2(!parsed.profile.ok(), qPrintable(name));
+        else
+            QVERIFY2(parsed.profile.ok(),
+                     qPrintable(name + QLatin1String(": ") + parsed.profile.error()));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestBadProfile)

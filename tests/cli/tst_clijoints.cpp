@@ -4,9 +4,13 @@
 // shows what the journal holds and keeps its retention in the file.
 #include "programrun.h"
 
+#include <QCryptographicHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -25,6 +29,28 @@ ProgramRun runCli(const QStringList &args, const QByteArray &input = {}) {
 QStringList dataLines(const QString &out) {
     return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
 }
+
+// Runs `statements` on the SQLite file at `path` past TipScope, as another program would.
+bool sqlOn(const QString &path, const QStringList &statements) {
+    bool ok = true;
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), path);
+        db.setDatabaseName(path);
+        ok = db.open();
+        for (const QString &statement : statements)
+            ok = ok && db.exec(statement).lastError().type() == QSqlError::NoError;
+        db.close();
+    }
+    QSqlDatabase::removeDatabase(path);
+    return ok;
+}
+
+QByteArray sha256Of(const QString &path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly)
+               ? QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256)
+               : QByteArray();
+}
 } // namespace
 
 class TestCliJoints : public QObject {
@@ -36,6 +62,9 @@ private Q_SLOTS:
     void theContextIsReadFromStandardInputAndABadLineChangesNothing();
     void limitsAreSetAndShownAndABadRuleIsRefused();
     void aMissingJournalIsAClearError();
+    void reportsOpenACurrentJournalOnlyToReadIt();
+    void eachKindOfJournalProblemHasItsOwnExitStatus_data();
+    void eachKindOfJournalProblemHasItsOwnExitStatus();
 
 private:
     QTemporaryDir m_dir;
@@ -170,8 +199,76 @@ void TestCliJoints::limitsAreSetAndShownAndABadRuleIsRefused() {
 void TestCliJoints::aMissingJournalIsAClearError() {
     const QString missing = m_dir.filePath(QStringLiteral("none/journal.sqlite"));
     const ProgramRun r = runCli({"joints", "--journal", missing});
-    QCOMPARE(r.exitCode, 1);
+    QCOMPARE(r.exitCode, 6);
     QVERIFY2(r.err.contains(missing), qPrintable(r.err));
+}
+
+void TestCliJoints::reportsOpenACurrentJournalOnlyToReadIt() {
+    // Issue 38: a journal that can be read but not written (a read-only mount, the service's
+    // journal read by a technician) could not be read at all, as the reader set it up to write.
+    // A file in rollback mode shows it: setting it up for writing turns it to WAL.
+    const QString path = m_dir.filePath(QStringLiteral("read-only/journal.sqlite"));
+    QCOMPARE(runCli({"journal", "retention", "30", "--journal", path}).exitCode, 0);
+    QVERIFY(sqlOn(path, {QStringLiteral("PRAGMA journal_mode = DELETE")}));
+    const QByteArray before = sha256Of(path);
+    QVERIFY(!before.isEmpty());
+    const ProgramRun show = runCli({"journal", "show", "--journal", path});
+    QVERIFY2(show.exitCode == 0, qPrintable(show.err));
+    QVERIFY2(show.out.contains(QStringLiteral("retention: 30 days")), qPrintable(show.out));
+    const ProgramRun joints = runCli({"joints", "--journal", path});
+    QVERIFY2(joints.exitCode == 0, qPrintable(joints.err));
+    QCOMPARE(sha256Of(path), before);
+    QVERIFY(!QFile::exists(path + QStringLiteral("-wal")));
+}
+
+void TestCliJoints::eachKindOfJournalProblemHasItsOwnExitStatus_data() {
+    // `joints` and `journal show` run the same open and integrity check, so they agree.
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("missing") << QStringLiteral("missing") << 6
+                             << QStringLiteral("There is no journal");
+    QTest::newRow("damaged inside") << QStringLiteral("damaged") << 7 << QStringLiteral("damaged");
+    QTest::newRow("not a journal")
+        << QStringLiteral("text") << 7 << QStringLiteral("is damaged or is not a journal");
+    QTest::newRow("another program's database")
+        << QStringLiteral("foreign") << 7 << QStringLiteral("is not a TipScope journal");
+    QTest::newRow("from a newer TipScope")
+        << QStringLiteral("newer") << 8 << QStringLiteral("written by a newer TipScope");
+}
+
+void TestCliJoints::eachKindOfJournalProblemHasItsOwnExitStatus() {
+    QFETCH(QString, kind);
+    QFETCH(int, exitCode);
+    QFETCH(QString, message);
+    const QString path = m_dir.filePath(kind + QStringLiteral("/journal.sqlite"));
+    QVERIFY(QDir().mkpath(QFileInfo(path).absolutePath()));
+    if (kind == QLatin1String("text")) {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly) && f.write(QByteArray(8192, 'j')) == 8192);
+    } else if (kind == QLatin1String("foreign")) {
+        QVERIFY(sqlOn(path, {QStringLiteral("CREATE TABLE recipes (name TEXT)")}));
+    } else if (kind != QLatin1String("missing")) {
+        QCOMPARE(runCli({"journal", "retention", "30", "--journal", path}).exitCode, 0);
+        if (kind == QLatin1String("newer"))
+            QVERIFY(sqlOn(path, {QStringLiteral("PRAGMA user_version = 99")}));
+    }
+    if (kind == QLatin1String("damaged")) {
+        // Every page but the first (the header and the list of tables) overwritten.
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadWrite) && f.size() > 8192);
+        QVERIFY(f.seek(4096));
+        QVERIFY(f.write(QByteArray(int(f.size()) - 4096, '\xa5')) > 0);
+    }
+    for (const QStringList &command : {QStringList{"joints"}, QStringList{"journal", "show"}}) {
+        const ProgramRun r = runCli(command + QStringList{"--journal", path});
+        QVERIFY2(r.exitCode == exitCode, qPrintable(QStringLiteral("%1: exit %2: %3")
+                                                        .arg(command.join(QLatin1Char(' ')))
+                                                        .arg(r.exitCode)
+                                                        .arg(r.err)));
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
 }
 
 QTEST_GUILESS_MAIN(TestCliJoints)

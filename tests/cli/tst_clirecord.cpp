@@ -11,6 +11,7 @@
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QtTest>
+#include <sys/stat.h>
 
 using namespace tipscope::testing;
 using tipscope::model::ChartCsvReader;
@@ -39,6 +40,8 @@ private Q_SLOTS:
     void aStationOnASerialLineIsRecorded();
     void anInterruptedRecordingIsComplete();
     void aHeaderThatCannotBeWrittenWholeLeavesNoFile();
+    void aMonitorCsvOnAFullDiskSaysSoOnceMonitorsOnAndFails();
+    void measureOfAFifoSaysItWaitsForAWriter();
     void badArgumentsAndFilesAreRefused_data();
     void badArgumentsAndFilesAreRefused();
 
@@ -146,6 +149,44 @@ void TestCliRecord::aHeaderThatCannotBeWrittenWholeLeavesNoFile() {
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("cannot record to")), qPrintable(r.err));
     QVERIFY2(!QFile::exists(path), "half a header was left behind");
+}
+
+void TestCliRecord::aMonitorCsvOnAFullDiskSaysSoOnceMonitorsOnAndFails() {
+    // Issue 38: the CSV's rows on a full disk were lost without a word and the run exited 0.
+    if (!QFile::exists(QStringLiteral("/dev/full")))
+        QSKIP("no /dev/full on this system to simulate a full disk");
+    const Run r = cli({"--demo", "monitor", "--interval", "200", "--duration", "2", "--csv",
+                       "/dev/full", "--journal", m_dir.filePath(QStringLiteral("full.sqlite"))});
+    QVERIFY2(r.exitCode != 0, qPrintable(r.err));
+    const QStringList said = r.err.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(said.size(), 1);
+    QVERIFY2(said.first().contains(QStringLiteral("No space left on device")), qPrintable(r.err));
+    // The journal still works, so the monitor goes on printing every cycle.
+    QVERIFY2(r.out.count(QStringLiteral(" P1 ")) >= 5, qPrintable(r.out));
+}
+
+void TestCliRecord::measureOfAFifoSaysItWaitsForAWriter() {
+    // Issue 38: `measure` of a FIFO that nobody writes to waited without a word.
+    const QString fifo = m_dir.filePath(QStringLiteral("measure.fifo"));
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    QProcess p;
+    p.start(binaryPath(QStringLiteral("tipscope-cli")), {QStringLiteral("measure"), fifo});
+    QString err;
+    QVERIFY2(QTest::qWaitFor(
+                 [&] {
+                     err += QString::fromUtf8(p.readAllStandardError());
+                     return err.contains(QStringLiteral("is a FIFO: waiting"));
+                 },
+                 10000),
+             qPrintable(err));
+    // A writer comes: the recording is measured, and the run ends as with a file.
+    QFile writer(fifo);
+    QVERIFY(writer.open(QIODevice::WriteOnly));
+    writer.write("time,port1 tip [\xc2\xb0"
+                 "C],events\n2026-01-01T00:00:00.000Z,350,\n");
+    writer.close();
+    QVERIFY(p.waitForFinished(10000));
+    QVERIFY2(p.exitCode() == 0, qPrintable(err + QString::fromUtf8(p.readAllStandardError())));
 }
 
 void TestCliRecord::badArgumentsAndFilesAreRefused_data() {

@@ -66,6 +66,8 @@ private Q_SLOTS:
     void monitorWritesOneCsvFileWithALineColumnWhenAsked();
     void aBadWorkspaceIsRefusedNamingTheLineAndTheField();
     void aCommandThatIsNotForEveryLineIsRefused();
+    void aLineNameCannotTakeItsCsvOutOfTheFolder();
+    void twoLinesWhoseFilesWouldMeetAreRefused();
 
 private:
     QString writeWorkspace(const QJsonArray &lines);
@@ -237,6 +239,33 @@ void TestCliWorkspace::aCommandThatIsNotForEveryLineIsRefused() {
     QCOMPARE(oneFile.exitCode, 1);
     QVERIFY2(oneFile.err.contains(QStringLiteral("--csv-one-file goes with --workspace")),
              qPrintable(oneFile.err));
+}
+
+void TestCliWorkspace::aLineNameCannotTakeItsCsvOutOfTheFolder() {
+    // Issue 38: "out-/../../ESCAPED.csv" is two folders up once "out-" exists.
+    QTemporaryDir top;
+    const QDir folder(top.filePath(QStringLiteral("a/b")));
+    QVERIFY(folder.mkpath(QStringLiteral("out-")));
+    const QString workspace = writeWorkspace({line(QStringLiteral("/../../ESCAPED"), demo())});
+    const ProgramRun r =
+        runCli({"--workspace", workspace, "monitor", "--interval", "200", "--duration", "2",
+                "--csv", folder.filePath(QStringLiteral("out.csv")), "--journal",
+                top.filePath(QStringLiteral("journal.sqlite"))});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY(!QFile::exists(top.filePath(QStringLiteral("a/ESCAPED.csv"))));
+    const QStringList rows =
+        readAll(folder.filePath(QStringLiteral("out-_.._.._ESCAPED.csv"))).split(QLatin1Char('\n'));
+    QVERIFY2(rows.size() > 3, qPrintable(folder.entryList().join(QLatin1Char(' '))));
+}
+
+void TestCliWorkspace::twoLinesWhoseFilesWouldMeetAreRefused() {
+    const QString workspace =
+        writeWorkspace({line(QStringLiteral("a/b"), demo()), line(QStringLiteral("a\\b"), demo())});
+    const ProgramRun r = runCli({"--workspace", workspace, "monitor", "--duration", "1", "--csv",
+                                 m_dir.filePath(QStringLiteral("meet.csv"))});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("lines a/b and a\\b would both write")),
+             qPrintable(r.err));
 }
 
 QTEST_GUILESS_MAIN(TestCliWorkspace)

@@ -12,11 +12,16 @@
 #include "model/joints/jointdetector.h"
 
 #include <QDateTime>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLoggingCategory>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QTemporaryFile>
 #include <QTest>
 #include <csignal>
 
@@ -100,6 +105,25 @@ private:
                 return false;
             },
             20000);
+    }
+
+    // Publishes a command of client tech1 (mosquitto_pub's `payload` options: -m TEXT or -f
+    // FILE) and waits for the agent's result.
+    std::optional<Message> commandResult(const QStringList &payload) {
+        // The agent hears commands once its device is online.
+        if (!m_subscriber->waitFor(kRoot + QStringLiteral("/status"), isOnline, 20000))
+            return std::nullopt;
+        const qsizetype from = m_subscriber->count();
+        QProcess pub;
+        startTool(pub, QStringLiteral("mosquitto_pub"), m_broker,
+                  QStringList{QStringLiteral("-q"), QStringLiteral("1"), QStringLiteral("-t"),
+                              kRoot + QStringLiteral("/cmd/apply-profile/tech1")} +
+                      payload);
+        if (!pub.waitForFinished(10000))
+            return std::nullopt;
+        return m_subscriber->waitFor(
+            kRoot + QStringLiteral("/cmd/result"), [](const QJsonObject &) { return true; }, 20000,
+            from);
     }
 
     static BrokerOptions persistent() {
@@ -225,16 +249,7 @@ private Q_SLOTS:
         const QString profile = QStringLiteral(
             R"({"request_id": "r-1", "profile": {"format": "tipscope-profile", "schema": 1,
                 "family": "DME", "values": {"S21": "00200"}}})");
-        const qsizetype from = m_subscriber->count();
-        QProcess pub;
-        startTool(pub, QStringLiteral("mosquitto_pub"), m_broker,
-                  {QStringLiteral("-q"), QStringLiteral("1"), QStringLiteral("-t"),
-                   kRoot + QStringLiteral("/cmd/apply-profile/tech1"), QStringLiteral("-m"),
-                   profile});
-        QVERIFY(pub.waitForFinished(10000));
-        const auto result = m_subscriber->waitFor(
-            kRoot + QStringLiteral("/cmd/result"), [](const QJsonObject &) { return true; }, 20000,
-            from);
+        const auto result = commandResult({QStringLiteral("-m"), profile});
         QVERIFY2(result, qPrintable(m_agent->log()));
         const QJsonObject r = result->payload;
         QVERIFY2(r.value(QStringLiteral("ok")).toBool(), qPrintable(QJsonDocument(r).toJson()));
@@ -260,6 +275,48 @@ private Q_SLOTS:
                 return false;
             },
             10000));
+    }
+
+    // Issue 38: the wrapper was read by QJsonDocument, which kept the last of two keys, and the
+    // profile re-serialised before the file's checks saw it: 450 went out where a file is refused.
+    void aRemoteProfileThatMeansTwoThingsIsRefusedWithNothingWritten_data() {
+        QTest::addColumn<QByteArray>("request");
+        QTest::addColumn<QString>("reason");
+        const QByteArray profile300 =
+            R"({"format": "tipscope-profile", "schema": 1, "family": "DME", )"
+            R"("values": {"S21": "00300"}})";
+        QTest::newRow("a code twice")
+            << QByteArray(R"({"request_id": "r-2", "profile": {"format": "tipscope-profile",
+                "schema": 1, "family": "DME", "values": {"S21": "00300", "S21": "00450"}}})")
+            << QStringLiteral("more than once, so which value is meant is unclear: S21");
+        QTest::newRow("two profiles")
+            << QByteArray(R"({"request_id": "r-2", "profile": )" + profile300 + R"(, "profile": )" +
+                          QByteArray(profile300).replace("300", "450") + "}")
+            << QStringLiteral("more than once, so which one is meant is unclear: profile");
+        QTest::newRow("2 MB")
+            << QByteArray(R"({"request_id": "r-2", "profile": )" +
+                          QByteArray(profile300)
+                              .replace("\"values\"", "\"comment\": \"" + QByteArray(2 << 20, 'c') +
+                                                         "\", \"values\"") +
+                          "}")
+            << QStringLiteral("a profile is at most 1048576");
+    }
+
+    void aRemoteProfileThatMeansTwoThingsIsRefusedWithNothingWritten() {
+        QFETCH(QByteArray, request);
+        QFETCH(QString, reason);
+        const QString before = m_sim.command(QStringLiteral("get S21"));
+        QVERIFY2(before.startsWith(QLatin1String("S21=")), qPrintable(before));
+        QTemporaryFile file; // mosquitto_pub -m cannot carry 2 MB in one argument
+        QVERIFY(file.open() && file.write(request) == request.size() && file.flush());
+        const auto result = commandResult({QStringLiteral("-f"), file.fileName()});
+        QVERIFY2(result, qPrintable(m_agent->log()));
+        const QJsonObject r = result->payload;
+        const QString json = QString::fromUtf8(QJsonDocument(r).toJson());
+        QVERIFY2(!r.value(QStringLiteral("ok")).toBool(), qPrintable(json));
+        QVERIFY2(r.value(QStringLiteral("error")).toString().contains(reason), qPrintable(json));
+        QVERIFY(!r.contains(QStringLiteral("changed")));
+        QCOMPARE(m_sim.command(QStringLiteral("get S21")), before);
     }
 
     void aCommandWithoutAClientNameIsRefused() {
@@ -455,6 +512,50 @@ private Q_SLOTS:
         QVERIFY2(journaled(), qPrintable(agent.log()));
         QVERIFY(!agent.log().contains(QLatin1String("wrong-secret")));
         QCOMPARE(agent.stop(), 0);
+    }
+
+    // Issue 38: such an agent published live values, lost every joint and exited 0 on SIGTERM.
+    void anAgentWhoseJournalCannotBeUsedStopsSayingWhy_data() {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("not SQLite")
+            << QStringLiteral("text") << QStringLiteral("is damaged or is not a journal");
+        QTest::newRow("a newer schema")
+            << QStringLiteral("newer") << QStringLiteral("written by a newer TipScope");
+        QTest::newRow("a folder where the file should be")
+            << QStringLiteral("folder") << QStringLiteral("cannot be written");
+    }
+
+    void anAgentWhoseJournalCannotBeUsedStopsSayingWhy() {
+        QFETCH(QString, kind);
+        QFETCH(QString, reason);
+        AgentProcess agent;
+        agent.configure(QStringLiteral("demo"), m_broker.port());
+        const QString path = agent.journalPath();
+        if (kind == QLatin1String("folder")) {
+            QVERIFY(QDir().mkpath(path));
+        } else if (kind == QLatin1String("text")) {
+            QFile text(path);
+            QVERIFY(text.open(QIODevice::WriteOnly) && text.write(QByteArray(4096, 'j')) == 4096);
+        } else {
+            {
+                QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), kind);
+                db.setDatabaseName(path);
+                QVERIFY(db.open());
+                QVERIFY(db.exec(QStringLiteral("PRAGMA user_version = 99")).lastError().type() ==
+                        QSqlError::NoError);
+                db.close();
+            }
+            QSqlDatabase::removeDatabase(kind);
+        }
+        QString error;
+        QVERIFY2(agent.start(&error), qPrintable(error));
+        QVERIFY2(agent.process().waitForFinished(30000), qPrintable(agent.log()));
+        QCOMPARE(agent.process().exitStatus(), QProcess::NormalExit);
+        QVERIFY2(agent.process().exitCode() == 3, qPrintable(agent.log()));
+        QVERIFY2(agent.log().contains(reason), qPrintable(agent.log()));
+        QVERIFY2(agent.log().contains(QLatin1String("<3>")), qPrintable(agent.log())); // critical
+        QVERIFY2(agent.log().contains(QLatin1String("the agent stops")), qPrintable(agent.log()));
     }
 
     void cleanupTestCase() {

@@ -129,6 +129,40 @@ private Q_SLOTS:
         QVERIFY(!agent.log().contains(kSecret));
         QCOMPARE(agent.stop(), 0);
     }
+
+    // Issue 38: --check passed a CA file that was missing or not PEM; the service then failed
+    // at every connection instead.
+    void checkRefusesACaFileThatIsMissingOrNotPem_data() {
+        QTest::addColumn<QString>("ca");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("said");
+        QTest::newRow("missing") << QStringLiteral("missing.crt") << 2
+                                 << QStringLiteral("cannot be read");
+        QTest::newRow("not PEM") << QStringLiteral("not-pem.crt") << 2
+                                 << QStringLiteral("holds no PEM certificate");
+        QTest::newRow("the right one") << m_certificates.caFile() << 0 << QStringLiteral("is good");
+    }
+
+    void checkRefusesACaFileThatIsMissingOrNotPem() {
+        QFETCH(QString, ca);
+        QFETCH(int, exitCode);
+        QFETCH(QString, said);
+        AgentProcess agent;
+        QFile notPem(agent.folder() + QStringLiteral("/not-pem.crt"));
+        QVERIFY(notPem.open(QIODevice::WriteOnly) && notPem.write(QByteArray(2048, '\x30')) > 0);
+        notPem.close();
+        agent.configure(m_line, m_broker->port(),
+                        {{QStringLiteral("tls"), QJsonObject{{QStringLiteral("ca_file"), ca}}}});
+        QProcess check;
+        check.setProcessChannelMode(QProcess::MergedChannels);
+        check.start(binaryPath(QStringLiteral("tipscope-agent")),
+                    {QStringLiteral("--check"), QStringLiteral("--config"),
+                     agent.folder() + QStringLiteral("/agent.json")});
+        QVERIFY(check.waitForFinished(10000));
+        const QString out = QString::fromUtf8(check.readAll());
+        QVERIFY2(check.exitCode() == exitCode, qPrintable(out));
+        QVERIFY2(out.contains(said), qPrintable(out));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestAgentTls)

@@ -86,6 +86,7 @@ private Q_SLOTS:
     void tcpClientThatNeverReadsCostsABoundedBuffer();
     void pacedJunkDoesNotSilenceTheSimulator();
     void helpListsEveryCommandThePtySimulatorAccepts();
+    void aLongCommandLineIsRefusedWholeNotSplit();
 
 private:
     void withSocatSim(const QStringList &simArgs, const QList<Step> &script);
@@ -192,6 +193,23 @@ void TestSimSerial::helpListsEveryCommandThePtySimulatorAccepts() {
         const QString reply = sim.command(verb);
         QVERIFY2(!reply.startsWith(QStringLiteral("error: unknown command")),
                  qPrintable(verb + QStringLiteral(": ") + reply));
+    }
+}
+
+void TestSimSerial::aLongCommandLineIsRefusedWholeNotSplit() {
+    // Issue 38: a line past 1,023 bytes was cut at the read, and its rest ran as a command.
+    SimProcess sim;
+    QString error;
+    QVERIFY2(!sim.start({QStringLiteral("--model"), QStringLiteral("DME")}, &error).isEmpty(),
+             qPrintable(error));
+    for (const int padding : {1023, 5000}) {
+        const QString reply =
+            sim.command(QString(padding, QLatin1Char('#')) + QStringLiteral("stats"));
+        QVERIFY2(reply.startsWith(QStringLiteral("error: a command line longer than 1024 bytes")),
+                 qPrintable(reply.left(200)));
+        // The next reply is the next command's, not one of the long line's rest.
+        const QString next = sim.command(QStringLiteral("get ST1"));
+        QVERIFY2(next.startsWith(QStringLiteral("ST1=")), qPrintable(next.left(200)));
     }
 }
 

@@ -1,5 +1,7 @@
 #include "workcontextdialog.h"
 
+#include "model/workcontextjson.h"
+
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -12,6 +14,7 @@ namespace {
 QLineEdit *field(const QString &value, const QString &name, QWidget *parent) {
     auto *edit = new QLineEdit(value, parent);
     edit->setObjectName(name);
+    edit->setMaxLength(model::kMaxWorkContextChars); // the bound every program reads it with
     edit->setClearButtonEnabled(true);
     edit->setMinimumWidth(260);
     return edit;

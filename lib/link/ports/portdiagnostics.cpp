@@ -17,6 +17,9 @@ struct PortDiagnosticsTr {
 };
 
 const QString kDialout = QStringLiteral("dialout");
+// What a file name and a path may hold (NAME_MAX, PATH_MAX); a lock file adds a few bytes.
+constexpr qsizetype kMaxPortNameBytes = 240;
+constexpr qsizetype kMaxPortPathChars = 4000;
 
 bool processHolds(const QString &fdDir, const QString &target) {
     // /proc/<pid>/fd/* are symbolic links; sockets and pipes point nowhere and are listed only
@@ -92,6 +95,14 @@ QString processName(qint64 pid, const QString &procRoot) {
 
 QString explainOpenFailure(const QString &systemLocation, QSerialPort::SerialPortError error,
                            const QString &qtErrorString, const QString &procRoot) {
+    // No port has such a name, and its lock file cannot have one either, which QSerialPort
+    // reports as a PermissionError: said as what it is, not as a group to join.
+    if (const qsizetype bytes = QFile::encodeName(QFileInfo(systemLocation).fileName()).size();
+        bytes > kMaxPortNameBytes || systemLocation.size() > kMaxPortPathChars)
+        return PortDiagnosticsTr::tr("There is no such port in %1: a port's name is never %2 "
+                                     "characters long. The port name may be mistyped.")
+            .arg(QFileInfo(systemLocation).path().left(160))
+            .arg(bytes > kMaxPortNameBytes ? bytes : systemLocation.size());
     switch (error) {
     case QSerialPort::PermissionError: {
         // QSerialPort locks the port, so a port held elsewhere also reports PermissionError;

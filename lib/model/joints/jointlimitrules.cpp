@@ -1,5 +1,7 @@
 #include "model/joints/jointlimitrules.h"
 
+#include "protocol/elide.h"
+
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QLocale>
@@ -202,14 +204,14 @@ Outcome<JointLimitRule> JointLimitRules::parseRule(const QString &text) {
             return failure(JointLimitRulesTr::tr(
                                "“%1” is not a limit: write port=N, tool=NAME, recovery=SECONDS, "
                                "dip=KELVIN or wear=SHARE, joined by commas")
-                               .arg(part.trimmed()));
+                               .arg(protocol::elided(part.trimmed())));
         }
     }
     if (!rule.maxRecoveryMs && !rule.maxDipK && !rule.wearShare)
         return failure(
             JointLimitRulesTr::tr("“%1” sets no limit: give recovery=SECONDS, dip=KELVIN or "
                                   "wear=SHARE")
-                .arg(text));
+                .arg(protocol::elided(text)));
     return rule;
 }
 

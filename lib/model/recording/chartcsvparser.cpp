@@ -2,6 +2,7 @@
 
 #include "model/io/csv.h"
 #include "model/recording/chartcsv.h"
+#include "protocol/elide.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -211,7 +212,7 @@ bool ChartCsvParser::header(const csv::Cells &cells) {
                 ChartCsvParserTr::tr("column %1 \"%2\" is not \"port<n> <series> [unit]\" or "
                                      "\"feeder <series> [unit]\"")
                     .arg(i + 1)
-                    .arg(cell));
+                    .arg(protocol::elided(cell)));
         const QString id = m.captured(1);
         const QString series = m.captured(3);
         const QString unit = m.captured(4);
@@ -221,18 +222,20 @@ bool ChartCsvParser::header(const csv::Cells &cells) {
             m_data.recording->temperatureUnit = TemperatureUnit::Fahrenheit;
         }
         if (unit != format.unit)
-            return fail(
-                ChartCsvParserTr::tr("column %1 \"%2\": the unit should be \"%3\"")
-                    .arg(i + 1)
-                    .arg(cell, format.unit.isEmpty() ? ChartCsvParserTr::tr("none") : format.unit));
+            return fail(ChartCsvParserTr::tr("column %1 \"%2\": the unit should be \"%3\"")
+                            .arg(i + 1)
+                            .arg(protocol::elided(cell), format.unit.isEmpty()
+                                                             ? ChartCsvParserTr::tr("none")
+                                                             : format.unit));
         qsizetype c = 0;
         while (c < channels.size() && channels.at(c).id != id)
             ++c;
         if (c == channels.size())
             addChannel(id, m.captured(2).toInt());
         if (channels[c].series.contains(series))
-            return fail(
-                ChartCsvParserTr::tr("column %1 \"%2\" appears twice").arg(i + 1).arg(cell));
+            return fail(ChartCsvParserTr::tr("column %1 \"%2\" appears twice")
+                            .arg(i + 1)
+                            .arg(protocol::elided(cell)));
         channels[c].series.append(series);
         m_channelColumns[c].append(int(m_columns.size()));
         m_columns.append(Column{int(c), format});
@@ -283,7 +286,7 @@ bool ChartCsvParser::channelValues(int channel, const csv::Cells &cells, QList<q
         if (!wire)
             return fail(ChartCsvParserTr::tr("column %1: \"%2\" is not a number")
                             .arg(i + 2)
-                            .arg(QString::fromUtf8(cell)));
+                            .arg(protocol::elided(QString::fromUtf8(cell))));
         out.append(*wire);
     }
     present = filled > 0;
@@ -300,7 +303,8 @@ bool ChartCsvParser::row(const csv::Cells &cells) {
                         .arg(m_columns.size() + 1));
     const auto ms = timeOf(cells.at(0));
     if (!ms)
-        return fail(ChartCsvParserTr::tr("\"%1\" is not an ISO 8601 time").arg(cells.text(0)));
+        return fail(ChartCsvParserTr::tr("\"%1\" is not an ISO 8601 time")
+                        .arg(protocol::elided(cells.text(0))));
     ChartRecording &out = *m_data.recording;
     if (out.rows > 0 && *ms < out.lastMs)
         return fail(ChartCsvParserTr::tr(
@@ -340,7 +344,7 @@ bool ChartCsvParser::events(qint64 ms, const csv::Cells &cells) {
         const auto event = ChartEvent::fromCsvCell(ms, cell);
         if (!event)
             return fail(ChartCsvParserTr::tr("the event \"%1\" is not \"<channel> <kind>: <text>\"")
-                            .arg(cell));
+                            .arg(protocol::elided(cell)));
         m_data.recording->events.add(*event);
     }
     return true;

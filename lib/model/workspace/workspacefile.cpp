@@ -2,6 +2,7 @@
 
 #include "model/io/atomicsave.h"
 #include "model/io/jsonfile.h"
+#include "protocol/elide.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -69,9 +70,10 @@ Outcome<WorkspaceFile> WorkspaceFile::fromJson(const QJsonObject &json) {
     QSet<QString> names;
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString name = list.at(i).toObject().value(QStringLiteral("name")).toString();
-        const QString which = name.isEmpty()
-                                  ? WorkspaceFileTr::tr("line %1").arg(i + 1)
-                                  : WorkspaceFileTr::tr("line %1 (%2)").arg(i + 1).arg(name);
+        const QString which =
+            name.isEmpty()
+                ? WorkspaceFileTr::tr("line %1").arg(i + 1)
+                : WorkspaceFileTr::tr("line %1 (%2)").arg(i + 1).arg(protocol::elided(name));
         if (!list.at(i).isObject())
             return failure(WorkspaceFileTr::tr("%1: must be an object").arg(which));
         const auto line = workspaceLineFromJson(list.at(i).toObject());

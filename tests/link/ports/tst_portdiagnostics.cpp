@@ -28,6 +28,7 @@ private Q_SLOTS:
     void permissionErrorWithoutHolderGivesTheGroupFix_data();
     void permissionErrorWithoutHolderGivesTheGroupFix();
     void missingPortSaysNoSuchPort();
+    void anOverLongPortNameIsNoPortNotAGroupProblem();
     void otherErrorsQuoteQtsReason_data();
     void otherErrorsQuoteQtsReason();
 };
@@ -180,6 +181,18 @@ void TestPortDiagnostics::permissionErrorWithoutHolderGivesTheGroupFix() {
         QVERIFY2(!message.contains(QStringLiteral("belongs to group")), qPrintable(message));
     else
         QVERIFY2(message.contains(mention), qPrintable(message));
+}
+
+void TestPortDiagnostics::anOverLongPortNameIsNoPortNotAGroupProblem() {
+    // Issue 38: Qt cannot make the port's lock file for such a name and reports a
+    // PermissionError, which was explained as a dialout group to join.
+    QTemporaryDir dir;
+    QSerialPort port(dir.filePath(QString(300, QLatin1Char('t'))));
+    QVERIFY(!port.open(QIODevice::ReadWrite));
+    const QString message = explainOpenFailure(port.portName(), port.error(), port.errorString());
+    QVERIFY2(message.startsWith(QStringLiteral("There is no such port in ")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("is never 300 characters long")), qPrintable(message));
+    QVERIFY2(!message.contains(QStringLiteral("dialout")), qPrintable(message));
 }
 
 void TestPortDiagnostics::missingPortSaysNoSuchPort() {
