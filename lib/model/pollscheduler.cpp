@@ -15,6 +15,10 @@ constexpr int kLineDownHoldMs = 1000;
 // A value the device refused (a station without that reading) is asked for again this rarely:
 // the answer is most likely the same, and the wire is better spent on what it can give.
 constexpr int kRefusedRetryMs = 60'000;
+// A busy tip read early is sent no more often than this: a 19200-baud transaction takes about
+// 14 ms, so a station's line never meets it, while a line with no wire time (the demo's unpaced
+// one) would otherwise read one tip thousands of times a second and flood its history.
+constexpr qint64 kSpareGapMs = 10;
 } // namespace
 
 PollClass pollClassOf(const protocol::CommandSpec &spec) {
@@ -189,13 +193,15 @@ PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
             bestShare = share;
         }
         if (iv > 0 && share > bestTipShare && i.role == protocol::Role::TipTemperature &&
-            inJoint(i)) {
+            inJoint(i) && now - i.sentMs >= kSpareGapMs) {
             bestTip = &i;
             bestTipShare = share;
         }
     }
-    // What the wire has to spare while a joint is under way goes to its tip: the joint is
-    // measured from those readings, while every other value is still read at its own rate.
+    // What the wire has to spare while a joint is under way goes to its tip, up to a reading
+    // every kSpareGapMs: the joint is measured from those readings, while every other value is
+    // still read at its own rate. Beyond that (a line faster than any station's, the demo's
+    // unpaced one) the spare goes round the live values as when no port is busy.
     return bestTip ? bestTip : best;
 }
 
@@ -348,6 +354,7 @@ void PollScheduler::pump() {
         }
         best->inFlight = true;
         best->first = false;
+        best->sentMs = now;
         ++m_inFlight;
         Parameter *param = best->raw;
         connect(reply, &Reply::finished, this, [this, reply, param] {

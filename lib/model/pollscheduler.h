@@ -111,6 +111,7 @@ private:
         qint64 dueMs = 0;
         bool inFlight = false;
         qint64 polledMs = 0; // when its last poll finished
+        qint64 sentMs = 0;   // when its last poll was sent
         int interval = 0;    // effectiveInterval(), kept current by updateIntervals()
         bool first = false;  // ahead of every other live value until sent (followBusy())
     };
