@@ -30,7 +30,6 @@ struct CliRecordTr {
 
 constexpr int kFirstSamplesMs = 30'000;
 constexpr int kLimitsMs = 10'000;
-constexpr int kStopCheckMs = 100;
 
 // Runs the event loop until `done` holds, `timeoutMs` passed, or a stop was asked for.
 template <class Done> bool waitFor(Done done, int timeoutMs) {
@@ -41,7 +40,7 @@ template <class Done> bool waitFor(Done done, int timeoutMs) {
         if (done() || deadline.hasExpired() || stopRequested())
             loop.quit();
     });
-    check.start(kStopCheckMs / 4);
+    check.start(kStopCheckMs);
     if (!done())
         loop.exec();
     return done();

@@ -8,9 +8,6 @@
 namespace tipscope::cli {
 
 namespace {
-// A signal handler may only set a lock-free flag; the loop looks at it this often.
-constexpr int kStopCheckMs = 25;
-
 std::atomic<bool> g_stop{false};
 
 extern "C" void requestStop(int) {

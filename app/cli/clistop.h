@@ -7,6 +7,9 @@ class QEventLoop;
 
 namespace tipscope::cli {
 
+// A signal handler may only set a lock-free flag; a loop looks at it this often.
+inline constexpr int kStopCheckMs = 25;
+
 // From now on SIGINT and SIGTERM only set the flag below.
 void catchStopSignals();
 [[nodiscard]] bool stopRequested();
