@@ -95,7 +95,9 @@ void Discovery::probe(std::optional<int> address, int slot) {
         return;
     }
     Request r = Request::read(address, modelName->pattern.toLatin1(), Priority::UserRead);
-    if (!m_named) {
+    if (m_named) {
+        r.minTurnaroundMs = kNamedDeviceTurnaroundMs;
+    } else {
         r.retries = 1; // an absent device costs one timeout more, a noisy line still finds it
         r.probe = true;
     }
@@ -132,7 +134,10 @@ void Discovery::take(const Reply &reply, std::optional<int> address, int slot) {
 }
 
 void Discovery::askVersion(int slot, const protocol::ResolvedCommand &version) {
-    Reply *reply = m_queue.enqueue(Request::read(m_found[slot]->address, version), this);
+    Request r = Request::read(m_found[slot]->address, version);
+    if (m_named)
+        r.minTurnaroundMs = kNamedDeviceTurnaroundMs;
+    Reply *reply = m_queue.enqueue(r, this);
     ++m_outstanding;
     connect(reply, &Reply::finished, this, [this, reply, slot] {
         reply->deleteLater();

@@ -7,9 +7,11 @@
 // probe asks the catalog's model-name command (R-SMN); a device that answers is identified by the
 // family its model name starts with, and asked for its software version (R-SVR) where its family
 // has that command. A search probe is tried twice and its silence is normal; identify() asks as
-// firmly as any read (the queue's retries), since the device was named. Requests go through the
-// request queue like everything else, so discovery runs beside other traffic and is cancelled by
-// deleting it. finished() is emitted once per start() or identify().
+// firmly as any read (the queue's retries), since the device was named, and gives each attempt
+// at least kNamedDeviceTurnaroundMs: a device that answers late (a loaded PC, a converter that
+// wakes up with the line) is still found, an absent one costs a second more. Requests go through
+// the request queue like everything else, so discovery runs beside other traffic and is cancelled
+// by deleting it. finished() is emitted once per start() or identify().
 #pragma once
 
 #include "linkstats.h"
@@ -59,6 +61,7 @@ class Discovery : public QObject {
     Q_OBJECT
 public:
     enum class Mode { Auto, Addressed, Unaddressed };
+    static constexpr int kNamedDeviceTurnaroundMs = 500;
 
     explicit Discovery(RequestQueue &queue, QObject *parent = nullptr);
 

@@ -90,9 +90,9 @@ double RequestQueue::wireMs(int bytes) const {
     return bytes * 10.0 * 1000.0 / baud;
 }
 
-int RequestQueue::answerBudgetMs(int requestBytes) const {
+int RequestQueue::answerBudgetMs(int requestBytes, int minTurnaroundMs) const {
     return int(qCeil(wireMs(requestBytes) + wireMs(requestBytes + kLongestAnswerExtra))) +
-           m_settings.turnaroundMs;
+           qMax(m_settings.turnaroundMs, minTurnaroundMs);
 }
 
 void RequestQueue::finishLater(Reply *reply, ReplyError error, const QString &why) {
@@ -170,7 +170,7 @@ void RequestQueue::onBytesWritten(qint64 count) {
     m_state = State::Waiting;
     const int requestBytes = int(m_current->request.raw.isEmpty() ? m_current->frame.encode().size()
                                                                   : m_current->request.raw.size());
-    m_timer.start(answerBudgetMs(requestBytes));
+    m_timer.start(answerBudgetMs(requestBytes, m_current->request.minTurnaroundMs));
 }
 
 bool RequestQueue::matches(const Entry &e, const Frame &a) const {

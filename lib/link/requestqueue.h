@@ -64,6 +64,10 @@ struct Request {
     bool repeatable = true;     // a write that may be sent again when its answer was lost
     QByteArray raw;             // when set, sent verbatim (the console's raw frames)
     std::optional<int> retries; // overrides QueueSettings::retries (discovery probes use fewer)
+    // The device turnaround is at least this (QueueSettings::turnaroundMs when that is longer):
+    // a named device's identification is often the first request on a line just opened, where
+    // a late answer fails the whole command while an absent device only costs the wait.
+    int minTurnaroundMs = 0;
     bool probe = false; // silence is a normal answer (discovery): not counted towards a lost line
     // The catalog's view of a read's command: an answer whose data field does not decode for it
     // is corrupted. Unset (raw frames, identification before the family is known): any data.
@@ -116,7 +120,7 @@ public:
     [[nodiscard]] qint64 nowMs() const { return m_clock.elapsed(); }
     [[nodiscard]] FrameTap &tap() { return m_tap; }
     // The answer budget for a frame of `requestBytes`, in ms (exposed for tests and docs).
-    [[nodiscard]] int answerBudgetMs(int requestBytes) const;
+    [[nodiscard]] int answerBudgetMs(int requestBytes, int minTurnaroundMs = 0) const;
 
 Q_SIGNALS:
     // Consecutive requests that got no answer at all: a hint that the cable is gone.
@@ -140,7 +144,8 @@ private:
     void sendNext();
     [[nodiscard]] std::optional<Entry> takeSendable(std::deque<Entry> &queue, bool keepOrder);
     [[nodiscard]] bool isHeld(const Entry &e) const;
-    void hold(const QByteArray &command, std::optional<int> target, int requestBytes);
+    void hold(const QByteArray &command, std::optional<int> target, int requestBytes,
+              int minTurnaroundMs = 0);
     void holdAfterTimeout(const Entry &e);
     void armHoldTimer();
     void transmit();

@@ -89,15 +89,18 @@ bool RequestQueue::isHeld(const Entry &e) const {
            m_late.holds(e.frame.command, e.frame.target, nowMs());
 }
 
-void RequestQueue::hold(const QByteArray &command, std::optional<int> target, int requestBytes) {
-    const int window = qMax(m_settings.lateAnswerWindowMs, answerBudgetMs(requestBytes));
+void RequestQueue::hold(const QByteArray &command, std::optional<int> target, int requestBytes,
+                        int minTurnaroundMs) {
+    const int window =
+        qMax(m_settings.lateAnswerWindowMs, answerBudgetMs(requestBytes, minTurnaroundMs));
     m_late.expect(command, target, nowMs() + window);
 }
 
 void RequestQueue::holdAfterTimeout(const Entry &e) {
     if (!e.matchAnything)
         hold(e.frame.command, e.frame.target,
-             int(e.request.raw.isEmpty() ? e.frame.encode().size() : e.request.raw.size()));
+             int(e.request.raw.isEmpty() ? e.frame.encode().size() : e.request.raw.size()),
+             e.request.minTurnaroundMs);
 }
 
 void RequestQueue::holdForLateAnswer(std::optional<int> target, const QByteArray &command) {
