@@ -19,7 +19,9 @@ protocol::Outcome<std::shared_ptr<MonitorCsv>> MonitorCsv::create(const QString 
                                                                   bool lineColumn) {
     std::shared_ptr<MonitorCsv> csv(new MonitorCsv(lineColumn));
     csv->m_file.setFileName(path);
-    if (!csv->m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
+    // Unbuffered: each row reaches the file when it is written, so a row that a full disk cuts
+    // part way can be taken back whole (put()).
+    if (!csv->m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered))
         return protocol::failure(MonitorCsvTr::tr("tipscope-cli: cannot write %1: %2")
                                      .arg(protocol::elidedPath(path), csv->m_file.errorString()));
     return csv;
@@ -53,8 +55,17 @@ bool MonitorCsv::put(const QString &text) {
     if (!m_error.isEmpty())
         return false;
     const QByteArray bytes = text.toUtf8();
-    if (m_file.write(bytes) != bytes.size() || !m_file.flush()) {
+    const qint64 before = m_file.pos();
+    const qint64 first = m_file.write(bytes);
+    // Qt reports a write cut short without its reason; writing the rest again gives it.
+    const bool whole = first == bytes.size() ||
+                       (first >= 0 && m_file.write(bytes.mid(first)) == bytes.size() - first);
+    if (!whole) {
         m_error = m_file.errorString();
+        // The file ends with the last row written whole, as a reader expects; a device that
+        // cannot be cut (a pipe, /dev/full) has nothing to take back.
+        if (m_file.size() > before)
+            m_file.resize(before);
         m_file.close();
         return false;
     }

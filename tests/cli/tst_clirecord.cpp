@@ -41,6 +41,7 @@ private Q_SLOTS:
     void anInterruptedRecordingIsComplete();
     void aHeaderThatCannotBeWrittenWholeLeavesNoFile();
     void aMonitorCsvOnAFullDiskSaysSoOnceMonitorsOnAndFails();
+    void aMonitorCsvRowCutPartWayIsTakenBack();
     void measureOfAFifoSaysItWaitsForAWriter();
     void badArgumentsAndFilesAreRefused_data();
     void badArgumentsAndFilesAreRefused();
@@ -163,6 +164,29 @@ void TestCliRecord::aMonitorCsvOnAFullDiskSaysSoOnceMonitorsOnAndFails() {
     QVERIFY2(said.first().contains(QStringLiteral("No space left on device")), qPrintable(r.err));
     // The journal still works, so the monitor goes on printing every cycle.
     QVERIFY2(r.out.count(QStringLiteral(" P1 ")) >= 5, qPrintable(r.out));
+}
+
+// A file size limit cuts a write part way, as a full disk does. The shell ignores the limit's
+// signal (a full disk sends none) and sets 2048 bytes (dash counts 512-byte blocks).
+void TestCliRecord::aMonitorCsvRowCutPartWayIsTakenBack() {
+    const QString path = m_dir.filePath(QStringLiteral("cut.csv"));
+    const Run r = run(QStringLiteral("/bin/sh"),
+                      {"-c", "trap '' XFSZ; ulimit -f 4; exec \"$0\" \"$@\"",
+                       binaryPath(QStringLiteral("tipscope-cli")), "--demo", "monitor",
+                       "--interval", "100", "--duration", "4", "--csv", path});
+    QVERIFY2(r.exitCode != 0 && r.exitCode != -2, qPrintable(r.err));
+    QVERIFY2(r.err.contains(QStringLiteral("File too large")), qPrintable(r.err));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray written = file.readAll();
+    QVERIFY2(written.size() > 1000 && written.size() <= 2048, QByteArray::number(written.size()));
+    QVERIFY2(written.endsWith('\n'), written.right(80).constData());
+    const QList<QByteArray> rows = written.split('\n');
+    const QByteArray header = "timestamp,port,tip_c,setpoint_c,power_pct,status";
+    QVERIFY(rows.contains(header));
+    for (const QByteArray &row : rows)
+        if (!row.isEmpty() && !row.startsWith('#'))
+            QVERIFY2(row.count(',') == header.count(','), row.constData());
 }
 
 void TestCliRecord::measureOfAFifoSaysItWaitsForAWriter() {

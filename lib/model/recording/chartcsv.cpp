@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QFileDevice>
 #include <QIODevice>
 #include <cmath>
 
@@ -202,6 +203,12 @@ void ChartCsvWriter::writeRow(qint64 timeMs, const QList<const QList<qint32> *> 
 QString ChartCsvWriter::errorString() const {
     if (m_out.status() == QTextStream::Ok)
         return {};
+    // A write the file system cut short (a full disk, a file size limit) leaves Qt no reason.
+    const auto *file = qobject_cast<const QFileDevice *>(&m_device);
+    if (file && file->error() == QFileDevice::NoError)
+        return ChartCsvTr::tr(
+            "the file could not be written whole: the disk is full or the file reached its size "
+            "limit");
     const QString why = m_device.errorString();
     return why.isEmpty() ? ChartCsvTr::tr("the file could not be written") : why;
 }

@@ -31,7 +31,9 @@ QString ChartRecorder::start(const QString &path, const QList<ChartChannel> &cha
     if (channels.isEmpty())
         return ChartRecorderTr::tr("nothing to record: no station or feeder is connected");
     m_file.setFileName(path);
-    if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
+    // Unbuffered: a batch reaches the file when the writer flushes it, so a batch that a full
+    // disk cuts part way can be taken back to the last row written whole (flush()).
+    if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered))
         return m_file.errorString();
     m_channels = channels;
     m_writer = std::make_unique<ChartCsvWriter>(m_file, channels, unit);
@@ -56,6 +58,8 @@ QString ChartRecorder::start(const QString &path, const QList<ChartChannel> &cha
             QFile::remove(path);
         return why;
     }
+    m_wholeBytes = m_file.size();
+    m_wholeRows = 0;
     return {};
 }
 
@@ -120,13 +124,19 @@ void ChartRecorder::flush() {
     if (!m_pendingEvents.isEmpty())
         m_lastWrittenMs = qMax(m_lastWrittenMs, m_pendingEvents.last().timeMs);
     m_pendingEvents.clear();
-    if (!ok) {
-        const QString why = m_writer->errorString();
-        m_rows = m_writer->rowsWritten();
-        m_writer.reset();
-        m_file.close();
-        Q_EMIT failed(why);
+    if (ok) {
+        m_wholeBytes = m_file.size();
+        m_wholeRows = m_writer->rowsWritten();
+        return;
     }
+    const QString why = m_writer->errorString();
+    m_writer.reset();
+    // The file ends with the last batch written whole: a reader never meets half a row.
+    if (m_file.size() > m_wholeBytes)
+        m_file.resize(m_wholeBytes);
+    m_rows = m_wholeRows;
+    m_file.close();
+    Q_EMIT failed(why);
 }
 
 } // namespace tipscope::model

@@ -9,9 +9,10 @@
 // event reaches the recorder after a batch holding samples stamped later than it.
 //
 // A header that cannot be written whole (a full disk, a file size limit) leaves no file. A failed
-// write later stops the recording and reports why through failed(); the file keeps what was
-// written. The recorder reads the telemetry; it does not own it, and stops writing if the
-// telemetry is destroyed first (the main window destroys the session before its pages).
+// write later stops the recording and reports why through failed(); the file keeps every batch
+// written whole and ends with the last of them. The recorder reads the telemetry; it does not own
+// it, and stops writing if the telemetry is destroyed first (the main window destroys the session
+// before its pages).
 #pragma once
 
 #include "model/recording/chartcsv.h"
@@ -59,6 +60,8 @@ private:
     QList<ChartEvent> m_pendingEvents;
     qint64 m_lastWrittenMs = 0;
     qint64 m_rows = 0;
+    qint64 m_wholeBytes = 0; // the file's size after the last batch written whole
+    qint64 m_wholeRows = 0;  // and the rows in it
 };
 
 } // namespace tipscope::model

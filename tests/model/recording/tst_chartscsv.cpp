@@ -7,9 +7,12 @@
 #include "model/recording/chartrecorder.h"
 
 #include <QBuffer>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <csignal>
+#include <sys/resource.h>
 
 using namespace tipscope;
 using namespace tipscope::model;
@@ -93,6 +96,7 @@ private Q_SLOTS:
     void anExportReachingIntoSummariesSaysWhereItsSamplesStart();
     void recorderWritesEachNewSampleOnceInTimeOrder();
     void aFullDiskStopsTheRecordingWithTheReason();
+    void aBatchCutPartWayIsTakenBackToTheLastWholeRow();
 };
 
 void TestChartsCsv::exportReadsBackExactlyForReplay_data() {
@@ -269,6 +273,53 @@ void TestChartsCsv::aFullDiskStopsTheRecordingWithTheReason() {
                  .start(QStringLiteral("/no/such/folder/rec.csv"), {c}, TemperatureUnit::Celsius,
                         QString())
                  .isEmpty());
+}
+
+// A file size limit cuts a write part way, as a full disk does: the kernel takes what fits and
+// refuses the rest. The file must still end with a whole row that replay reads, and the
+// recorder must count only the rows that are in it.
+void TestChartsCsv::aBatchCutPartWayIsTakenBackToTheLastWholeRow() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("rec.csv"));
+    Telemetry live;
+    const ChartChannel c = channel(QStringLiteral("port1"), 1, kPortSeries);
+    live.ensureBuffer(c.key, c.series);
+    ChartRecorder recorder(live);
+    QSignalSpy failed(&recorder, &ChartRecorder::failed);
+    QVERIFY(failed.isValid());
+    QCOMPARE(recorder.start(path, {c}, TemperatureUnit::Celsius, QString()), QString());
+    const qint64 headerBytes = QFileInfo(path).size();
+
+    rlimit before{};
+    QVERIFY(::getrlimit(RLIMIT_FSIZE, &before) == 0);
+    rlimit limited = before;
+    limited.rlim_cur = rlim_t(headerBytes + 1000);         // about 25 rows, then a row cut part way
+    const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN); // the limit's signal; a disk sends none
+    QVERIFY(::setrlimit(RLIMIT_FSIZE, &limited) == 0);
+    for (int batch = 0; batch < 20 && failed.isEmpty(); ++batch) {
+        for (int i = 0; i < 10; ++i)
+            live.append(c.key, kT0 + (batch * 10 + i) * 100, {300 + i, 350, 50, 0});
+        recorder.flush();
+    }
+    QVERIFY(::setrlimit(RLIMIT_FSIZE, &before) == 0);
+    std::signal(SIGXFSZ, oldHandler);
+
+    QCOMPARE(failed.size(), 1);
+    QVERIFY2(failed.first().first().toString().contains(QStringLiteral("size limit")),
+             qPrintable(failed.first().first().toString()));
+    QVERIFY(!recorder.isRecording());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray written = file.readAll();
+    QVERIFY(written.size() > headerBytes);
+    QVERIFY2(written.endsWith('\n'), written.right(80).constData());
+    const auto read = ChartCsvReader::readFile(path);
+    QVERIFY2(read, qPrintable(read.error()));
+    const auto tips =
+        read->get()->telemetry->buffer(QStringLiteral("port1"))->samples(0, 0, kT0 + 100'000);
+    QCOMPARE(tips.size(), recorder.rowsWritten());
+    QCOMPARE(qint64(written.count('\n') - QByteArray(written.left(headerBytes)).count('\n')),
+             recorder.rowsWritten());
 }
 
 void TestChartsCsv::anExportReachingIntoSummariesSaysWhereItsSamplesStart() {
