@@ -71,7 +71,7 @@ struct Failed {
 template <typename T> using Result = Outcome<T, Failed>;
 
 Failed sqlFailed(const QSqlError &error, const QString &path) {
-    return {problemOf(error), describeSqlError(error, path)};
+    return {problemOf(error, path), describeSqlError(error, path)};
 }
 
 Result<void> run(QSqlDatabase &db, const QString &sql) {

@@ -194,7 +194,7 @@ void JournalWriter::rollBack() {
 }
 
 void JournalWriter::fail(const QSqlError &error) {
-    fail(describeSqlError(error, m_path), problemOf(error));
+    fail(describeSqlError(error, m_path), problemOf(error, m_path));
 }
 
 void JournalWriter::fail(const QString &text, JournalProblem problem) {

@@ -1,6 +1,9 @@
 #include "sqlerror.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
+#include <QStorageInfo>
+#include <sys/resource.h>
 
 namespace tipscope::journal {
 
@@ -33,10 +36,37 @@ int primaryCode(const QSqlError &error) {
     return ok ? code & 0xff : -1;
 }
 
+// SQLite says "disk full" only when the file system said ENOSPC to a write it could tell apart;
+// many a full disk, and every write past the process's file size limit (EFBIG), come back as a
+// plain I/O error. Below this, a disk that errs is taken for a full one.
+constexpr qint64 kNearlyFullBytes = 1024 * 1024;
+
+bool noRoomFor(const QString &path) {
+    if (path.isEmpty())
+        return false;
+    const QStorageInfo disk(QFileInfo(path).absolutePath());
+    if (disk.isValid() && disk.bytesAvailable() < kNearlyFullBytes)
+        return true;
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_FSIZE, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+        return false;
+    // A write that would pass the limit is refused whole or in part: the file (or SQLite's
+    // write-ahead log beside it) stands within a page or so of it.
+    constexpr qint64 kLargestPage = 65536;
+    const qint64 largest =
+        qMax(QFileInfo(path).size(), QFileInfo(path + QLatin1String("-wal")).size());
+    return largest + kLargestPage >= qint64(limit.rlim_cur);
+}
+
+int codeFor(const QSqlError &error, const QString &path) {
+    const int code = primaryCode(error);
+    return code == kIoError && noRoomFor(path) ? int(kFull) : code;
+}
+
 } // namespace
 
 QString describeSqlError(const QSqlError &error, const QString &path) {
-    switch (primaryCode(error)) {
+    switch (codeFor(error, path)) {
     case kFull:
         return SqlErrorTr::tr(
                    "The journal %1 cannot grow: the disk is full or the journal reached its "
@@ -62,8 +92,8 @@ QString describeSqlError(const QSqlError &error, const QString &path) {
     }
 }
 
-JournalProblem problemOf(const QSqlError &error) {
-    switch (primaryCode(error)) {
+JournalProblem problemOf(const QSqlError &error, const QString &path) {
+    switch (codeFor(error, path)) {
     case kFull:
         return JournalProblem::Full;
     case kPerm:

@@ -13,8 +13,9 @@ namespace tipscope::journal {
 // A sentence naming the journal file and what is wrong, in the user's language.
 [[nodiscard]] QString describeSqlError(const QSqlError &error, const QString &path);
 [[nodiscard]] bool isRecordError(const QSqlError &error);
-// The kind of problem describeSqlError() tells.
-[[nodiscard]] JournalProblem problemOf(const QSqlError &error);
+// The kind of problem describeSqlError() tells. An I/O error on a disk with next to no room, or
+// on a journal at the process's file size limit, is told as full: waiting for space is the cure.
+[[nodiscard]] JournalProblem problemOf(const QSqlError &error, const QString &path);
 [[nodiscard]] QString readOnlyJournalText(const QString &path);
 
 } // namespace tipscope::journal

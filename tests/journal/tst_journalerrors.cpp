@@ -9,9 +9,12 @@
 
 #include <QCryptographicHash>
 #include <QFile>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <csignal>
+#include <sys/resource.h>
 
 using namespace tipscope;
 using namespace tipscope::testing;
@@ -45,6 +48,7 @@ private Q_SLOTS:
     void aDamagedFileIsReportedAndLeftUntouched();
     void aFullJournalHoldsRecordsAndCatchesUpWhenPruningFreesSpace();
     void aJournalLockedByAnotherProgramCatchesUpWhenReleased();
+    void aFileSizeLimitIsToldAsFullAndCaughtUpOnceLifted();
 };
 
 void TestJournalErrors::aLocationThatCannotBeWrittenSaysSoAndAppendsWaitThenCountLost_data() {
@@ -218,6 +222,51 @@ void TestJournalErrors::aJournalLockedByAnotherProgramCatchesUpWhenReleased() {
     QCOMPARE(stored.size(), 1001);
     for (const QUuid &uid : uids)
         QVERIFY(stored.contains(uid));
+}
+
+// SQLite reports a write past the file size limit (as many a full disk) as a plain I/O error.
+// The journal must still say that it cannot grow, hold its records as for a full disk, and
+// write them once there is room again.
+void TestJournalErrors::aFileSizeLimitIsToldAsFullAndCaughtUpOnceLifted() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+    journal::JournalOptions options = quickOptions();
+    options.maxBatch = 100;
+    Journal journal(path, options);
+    QVERIFY(waitOpened(journal));
+    QCOMPARE(journal.state(), JournalState::Ready);
+
+    rlimit before{};
+    QVERIFY(::getrlimit(RLIMIT_FSIZE, &before) == 0);
+    rlimit limited = before;
+    limited.rlim_cur = rlim_t(QFileInfo(path).size() + 512 * 1024);
+    const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN); // the limit's signal; a disk sends none
+    QVERIFY(::setrlimit(RLIMIT_FSIZE, &limited) == 0);
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    QList<QUuid> appended;
+    while (journal.state() == JournalState::Ready && appended.size() < 100'000) {
+        for (int i = 0; i < 50; ++i)
+            appended.append(
+                journal.append(sampleJoint(int(appended.size()), now + appended.size())));
+        (void)journal.flush();
+    }
+    const JournalState whileLimited = journal.state();
+    const journal::JournalProblem problem = journal.problem();
+    const QString said = journal.errorText();
+    QVERIFY(::setrlimit(RLIMIT_FSIZE, &before) == 0);
+    std::signal(SIGXFSZ, oldHandler);
+
+    QCOMPARE(whileLimited, JournalState::Failed);
+    QVERIFY2(said.contains(QStringLiteral("cannot grow")), qPrintable(said));
+    QCOMPARE(problem, journal::JournalProblem::Full);
+    QVERIFY(QTest::qWaitFor(
+        [&] { return journal.state() == JournalState::Ready && journal.pendingCount() == 0; },
+        20000));
+    QCOMPARE(journal.lostCount(), 0);
+    journal.close();
+    const QSet<QUuid> stored = storedUids(path);
+    for (const QUuid &uid : std::as_const(appended))
+        QVERIFY2(stored.contains(uid), qPrintable(uid.toString()));
 }
 
 QTEST_GUILESS_MAIN(TestJournalErrors)
