@@ -103,6 +103,51 @@ QString optionValue(const QStringList &args, const char *name, const QString &fa
     return i >= 0 ? args.value(i + 1, fallback) : fallback;
 }
 
+namespace {
+
+// The value of `--name` if it is given and within [min, max]; otherwise nullopt, with one error
+// line when it was given.
+template <typename T>
+std::optional<T> checkedOption(const QStringList &args, const char *name, T fallback, T min, T max,
+                               const char *what, std::optional<T> (*parse)(const QString &)) {
+    const qsizetype i = args.indexOf(QLatin1String(name));
+    if (i < 0)
+        return fallback;
+    const QString text = args.value(i + 1);
+    if (const std::optional<T> v = parse(text); v && *v >= min && *v <= max)
+        return v;
+    printError(QStringLiteral("%1 takes %2 from %3 to %4, not '%5'")
+                   .arg(QLatin1String(name), QLatin1String(what))
+                   .arg(min)
+                   .arg(max)
+                   .arg(text.left(40)));
+    return std::nullopt;
+}
+
+std::optional<double> parseFinite(const QString &text) {
+    bool ok = false;
+    const double v = text.toDouble(&ok);
+    return ok && std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+std::optional<qint64> parseWhole(const QString &text) {
+    bool ok = false;
+    const qint64 v = text.toLongLong(&ok);
+    return ok ? std::optional<qint64>(v) : std::nullopt;
+}
+
+} // namespace
+
+std::optional<double> numberOption(const QStringList &args, const char *name, double fallback,
+                                   double min, double max) {
+    return checkedOption(args, name, fallback, min, max, "a number", parseFinite);
+}
+
+std::optional<qint64> wholeOption(const QStringList &args, const char *name, qint64 fallback,
+                                  qint64 min, qint64 max) {
+    return checkedOption(args, name, fallback, min, max, "a whole number", parseWhole);
+}
+
 qint64 selfStatusBytes(const char *field) {
     QFile f(QStringLiteral("/proc/self/status"));
     if (!f.open(QIODevice::ReadOnly | QIODevice::Text))

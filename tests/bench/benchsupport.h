@@ -30,6 +30,16 @@ void printMachineContext();
 [[nodiscard]] QString optionValue(const QStringList &args, const char *name,
                                   const QString &fallback);
 
+// The number after `--name`, or `fallback` when the option is not given. A value that is
+// missing, not a finite number, or outside [min, max] is refused: nullopt, after one error line
+// naming the option and its range. Nothing is clamped: a figure measured with another value
+// than the one asked for would be read as that one's.
+[[nodiscard]] std::optional<double> numberOption(const QStringList &args, const char *name,
+                                                 double fallback, double min, double max);
+// The same for a whole number.
+[[nodiscard]] std::optional<qint64> wholeOption(const QStringList &args, const char *name,
+                                                qint64 fallback, qint64 min, qint64 max);
+
 // A field of /proc/self/status in bytes ("VmRSS:", "VmHWM:"); -1 when unreadable.
 [[nodiscard]] qint64 selfStatusBytes(const char *field);
 // Runs the event loop for `ms`.

@@ -306,7 +306,10 @@ int runChartBench(const QStringList &args) {
     const auto option = [&args](const char *name, const QString &fallback) {
         return optionValue(args, name, fallback);
     };
-    const int seconds = qMax(1, option("--seconds", QStringLiteral("60")).toInt());
+    const std::optional<qint64> secondsOption = wholeOption(args, "--seconds", 60, 1, 86'400);
+    if (!secondsOption)
+        return 2;
+    const int seconds = int(*secondsOption);
     const bool baseline = !args.contains(QStringLiteral("--no-baseline"));
     if (args.contains(QStringLiteral("--session-only"))) {
         printFigure(QStringLiteral("gui.session_cpu_percent"), sessionCpuPercent(seconds),

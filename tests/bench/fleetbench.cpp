@@ -59,13 +59,16 @@ int runFleetBench(const QStringList &args) {
                "takes R for every channel): tiered memory, single-tier memory, decimation.\n";
         return 0;
     }
-    const auto option = [&args](const char *name, const QString &fallback) {
-        return optionValue(args, name, fallback);
-    };
-    const int seconds = qMax(1, option("--seconds", QStringLiteral("30")).toInt());
-    const double hz = option("--hz", QStringLiteral("0")).toDouble();
-    const int stations = qMax(1, option("--stations", QStringLiteral("32")).toInt());
-    const qint64 hours = qMax(1, option("--hours", QStringLiteral("24")).toInt());
+    const std::optional<qint64> secondsOption = wholeOption(args, "--seconds", 30, 1, 86'400);
+    const std::optional<double> hzOption = numberOption(args, "--hz", 0, 0, 1000);
+    const std::optional<qint64> stationsOption = wholeOption(args, "--stations", 32, 1, 1000);
+    const std::optional<qint64> hoursOption = wholeOption(args, "--hours", 24, 1, 24 * 366);
+    if (!secondsOption || !hzOption || !stationsOption || !hoursOption)
+        return 2;
+    const int seconds = int(*secondsOption);
+    const double hz = *hzOption;
+    const int stations = int(*stationsOption);
+    const qint64 hours = *hoursOption;
 
     ChannelRates rates{};
     if (hz > 0)

@@ -158,14 +158,14 @@ int runFleetLiveBench(const QStringList &args) {
                "spends on these wires.\n";
         return 0;
     }
-    const int stations = qMax(1, optionValue(args, "--stations", QStringLiteral("32")).toInt());
-    const double minutes = optionValue(args, "--minutes", QStringLiteral("10")).toDouble();
-    if (minutes <= 0) {
-        printError(QStringLiteral("--minutes takes a positive number"));
-        return 1;
-    }
-
-    const int chunkMs = qMax(0, optionValue(args, "--chunk-ms", QStringLiteral("0")).toInt());
+    const std::optional<qint64> stationsOption = wholeOption(args, "--stations", 32, 1, 256);
+    const std::optional<double> minutesOption = numberOption(args, "--minutes", 10, 0.1, 24 * 60);
+    const std::optional<qint64> chunkOption = wholeOption(args, "--chunk-ms", 0, 0, 1000);
+    if (!stationsOption || !minutesOption || !chunkOption)
+        return 2;
+    const int stations = int(*stationsOption);
+    const double minutes = *minutesOption;
+    const int chunkMs = int(*chunkOption);
     std::vector<SimStation> sims;
     const model::WorkspaceFile file = startSimulators(sims, stations, chunkMs);
     if (file.lines.isEmpty())

@@ -146,17 +146,14 @@ Result measure(int joints, quint32 seed, qint64 periodMs, double noiseK) {
 int runJointBench(const QStringList &args) {
     if (args.contains(QStringLiteral("--wire")))
         return runJointWireBench(args);
-    int joints = 500;
-    quint32 seed = 1;
-    double noiseK = 0.5;
-    for (qsizetype i = 0; i + 1 < args.size(); ++i) {
-        if (args.at(i) == QLatin1String("--joints"))
-            joints = qMax(1, args.at(i + 1).toInt());
-        else if (args.at(i) == QLatin1String("--seed"))
-            seed = args.at(i + 1).toUInt();
-        else if (args.at(i) == QLatin1String("--noise"))
-            noiseK = qMax(0.0, args.at(i + 1).toDouble());
-    }
+    const std::optional<qint64> jointsOption = wholeOption(args, "--joints", 500, 1, 1'000'000);
+    const std::optional<qint64> seedOption = wholeOption(args, "--seed", 1, 0, UINT32_MAX);
+    const std::optional<double> noiseOption = numberOption(args, "--noise", 0.5, 0, 50);
+    if (!jointsOption || !seedOption || !noiseOption)
+        return 2;
+    const int joints = int(*jointsOption);
+    const auto seed = quint32(*seedOption);
+    const double noiseK = *noiseOption;
     printFigure(QStringLiteral("joints.count"), joints, QStringLiteral("joints"), 0);
     printFigure(QStringLiteral("joints.noise"), noiseK, QStringLiteral("K"), 1);
     for (const qint64 period : {100, 300}) {

@@ -258,22 +258,20 @@ private:
     qint64 m_endMs = 0;
 };
 
-Options parse(const QStringList &args) {
+std::optional<Options> parse(const QStringList &args) {
     Options o;
-    for (qsizetype i = 0; i + 1 < args.size(); ++i) {
-        const QString &a = args.at(i);
-        const QString &v = args.at(i + 1);
-        if (a == QLatin1String("--minutes"))
-            o.minutes = qMax(0.1, v.toDouble());
-        else if (a == QLatin1String("--per-minute"))
-            o.perMinute = qBound(1.0, v.toDouble(), 60.0);
-        else if (a == QLatin1String("--seed"))
-            o.seed = v.toUInt();
-        else if (a == QLatin1String("--sets"))
-            o.sets = v.split(QLatin1Char(','), Qt::SkipEmptyParts);
-        else if (a == QLatin1String("--frontends"))
-            o.frontEnds = v.split(QLatin1Char(','), Qt::SkipEmptyParts);
-    }
+    const std::optional<double> minutes = numberOption(args, "--minutes", o.minutes, 0.1, 24 * 60);
+    const std::optional<double> perMinute = numberOption(args, "--per-minute", o.perMinute, 1, 60);
+    const std::optional<qint64> seed = wholeOption(args, "--seed", o.seed, 0, UINT32_MAX);
+    if (!minutes || !perMinute || !seed)
+        return std::nullopt;
+    o.minutes = *minutes;
+    o.perMinute = *perMinute;
+    o.seed = quint32(*seed);
+    if (const qsizetype i = args.indexOf(QStringLiteral("--sets")); i >= 0)
+        o.sets = args.value(i + 1).split(QLatin1Char(','), Qt::SkipEmptyParts);
+    if (const qsizetype i = args.indexOf(QStringLiteral("--frontends")); i >= 0)
+        o.frontEnds = args.value(i + 1).split(QLatin1Char(','), Qt::SkipEmptyParts);
     return o;
 }
 
@@ -294,7 +292,10 @@ std::unique_ptr<Run> makeRun(const Options &o, const sim::JointShapeSet &shapes,
 } // namespace
 
 int runJointWireBench(const QStringList &args) {
-    const Options o = parse(args);
+    const std::optional<Options> parsed = parse(args);
+    if (!parsed)
+        return 2;
+    const Options &o = *parsed;
     for (const QString &set : o.sets)
         if (!sim::JointShapeSet::named(set)) {
             printError(QStringLiteral("--sets takes %1, not %2")

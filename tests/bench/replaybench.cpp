@@ -200,9 +200,10 @@ int runReplayBench(const QStringList &args) {
         printNote(QStringLiteral("replay [--mb MB] [--no-fifo]: read speed and memory of replay"));
         return 0;
     }
-    qint64 mb = 200;
-    if (const qsizetype at = args.indexOf(QStringLiteral("--mb")); at >= 0)
-        mb = qBound(qint64(1), qint64(args.value(at + 1).toLongLong()), qint64(1000));
+    const std::optional<qint64> mbOption = wholeOption(args, "--mb", 200, 1, 1000);
+    if (!mbOption)
+        return 2;
+    const qint64 mb = *mbOption;
     QTemporaryDir dir;
     if (!dir.isValid()) {
         printError(QStringLiteral("no temporary folder"));
