@@ -1,5 +1,7 @@
 #include "mqttsecret.h"
 
+#include "protocol/elide.h"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
@@ -27,20 +29,21 @@ QByteArray withoutLineEnd(QByteArray value) {
 protocol::Outcome<QByteArray> readSecretFile(const QString &path) {
     using protocol::failure;
     const QFileInfo info(path);
+    const QString shown = protocol::elidedPath(path); // named by a file: quoted cut
     if (!info.exists())
-        return failure(MqttSecretTr::tr("The password file %1 does not exist.").arg(path));
+        return failure(MqttSecretTr::tr("The password file %1 does not exist.").arg(shown));
     if (info.size() > kMaxSecretBytes)
         return failure(
             MqttSecretTr::tr("The password file %1 is larger than %2 bytes; is it the right file?")
-                .arg(path)
+                .arg(shown)
                 .arg(kMaxSecretBytes));
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return failure(MqttSecretTr::tr("The password file %1 cannot be read: %2")
-                           .arg(path, file.errorString()));
+                           .arg(shown, file.errorString()));
     const QByteArray line = withoutLineEnd(file.readLine(kMaxSecretBytes + 1));
     if (line.isEmpty())
-        return failure(MqttSecretTr::tr("The password file %1 is empty.").arg(path));
+        return failure(MqttSecretTr::tr("The password file %1 is empty.").arg(shown));
     return line;
 }
 
@@ -50,7 +53,7 @@ protocol::Outcome<QByteArray> readSecretEnvironment(const QString &name) {
         return protocol::failure(
             MqttSecretTr::tr("The environment variable %1 that should hold the password is not set "
                              "or empty.")
-                .arg(name));
+                .arg(protocol::elided(name)));
     return value;
 }
 

@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <algorithm>
 
 namespace tipscope::plant {
 
@@ -169,6 +170,13 @@ Outcome<AgentConfig> AgentConfig::fromJson(const QJsonObject &json, const QStrin
     readBroker(top, c, folder, &problem, passwordFile, passwordEnv);
     if (c.site.trimmed().isEmpty())
         top.fail(AgentConfigTr::tr("site must name the site"));
+    else if (c.site.size() > AgentConfig::kMaxSiteChars)
+        top.fail(AgentConfigTr::tr("site must be at most %1 characters long, not %2")
+                     .arg(AgentConfig::kMaxSiteChars)
+                     .arg(c.site.size()));
+    else if (std::any_of(c.site.cbegin(), c.site.cend(),
+                         [](QChar ch) { return ch.category() == QChar::Other_Control; }))
+        top.fail(AgentConfigTr::tr("site must not hold control characters"));
     if (c.workspacePath.isEmpty())
         top.fail(AgentConfigTr::tr("workspace must name the workspace file of the lines to run"));
     if (!problem.isEmpty())

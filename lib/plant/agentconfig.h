@@ -26,6 +26,9 @@ struct LiveSettings {
 
 struct AgentConfig {
     static constexpr int kVersion = 1;
+    // The site is the first level of every topic and a field of every payload: a name people
+    // read, not a document.
+    static constexpr int kMaxSiteChars = 64;
 
     QString path; // the file read, for messages
     QString site = QStringLiteral("site");

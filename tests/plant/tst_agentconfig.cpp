@@ -138,6 +138,13 @@ private Q_SLOTS:
                               "remote_apply": "yes"})")
             << "remote_apply";
         QTest::newRow("a list") << QByteArray("[1, 2]") << "list";
+        const QByteArray head =
+            R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json", "site": )";
+        QTest::newRow("a site of 100,000 characters")
+            << head + '"' + QByteArray(100000, 'x') + "\"}"
+            << "site must be at most 64 characters long, not 100000";
+        QTest::newRow("a site with an escape sequence") << head + "\"plant\\u001b[2J\"}"
+                                                        << "site must not hold control characters";
     }
     void refusals() {
         QFETCH(QByteArray, json);

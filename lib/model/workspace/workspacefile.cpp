@@ -91,27 +91,29 @@ Outcome<WorkspaceFile> WorkspaceFile::fromJson(const QJsonObject &json) {
 
 Outcome<WorkspaceFile> WorkspaceFile::load(const QString &path) {
     const auto read = io::readJsonObject(path, kMaxBytes);
+    // The path may come from another file (an agent's configuration): quoted cut, as any echo.
+    const QString shown = protocol::elidedPath(path);
     if (const auto *problem = std::get_if<io::JsonFileProblem>(&read)) {
         using Kind = io::JsonFileProblem::Kind;
         switch (problem->kind) {
         case Kind::Missing:
             return failure(WorkspaceFileTr::tr("cannot read the workspace %1: %2")
-                               .arg(path, WorkspaceFileTr::tr("there is no such file")));
+                               .arg(shown, WorkspaceFileTr::tr("there is no such file")));
         case Kind::Unreadable:
-            return failure(
-                WorkspaceFileTr::tr("cannot read the workspace %1: %2").arg(path, problem->detail));
+            return failure(WorkspaceFileTr::tr("cannot read the workspace %1: %2")
+                               .arg(shown, problem->detail));
         case Kind::TooBig:
-            return failure(WorkspaceFileTr::tr("the workspace %1 is too big to be one").arg(path));
+            return failure(WorkspaceFileTr::tr("the workspace %1 is too big to be one").arg(shown));
         case Kind::NotAnObject:
             return failure(WorkspaceFileTr::tr("the workspace %1 is not a JSON object: %2")
-                               .arg(path, problem->detail.isEmpty()
-                                              ? WorkspaceFileTr::tr("it is a list")
-                                              : problem->detail));
+                               .arg(shown, problem->detail.isEmpty()
+                                               ? WorkspaceFileTr::tr("it is a list")
+                                               : problem->detail));
         }
     }
     const auto file = fromJson(std::get<QJsonObject>(read));
     if (!file)
-        return failure(QStringLiteral("%1: %2").arg(path, file.error()));
+        return failure(QStringLiteral("%1: %2").arg(shown, file.error()));
     return file;
 }
 
