@@ -27,97 +27,107 @@
 <context>
     <name>AgentConfig</name>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="37"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="38"/>
         <source>%1 must be text</source>
         <translation>%1 muss ein Text sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="46"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 muss eine ganze Zahl von %2 bis %3 sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="57"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="58"/>
         <source>%1 must be true or false</source>
         <translation>%1 muss true oder false sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="63"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="64"/>
         <source>%1 must be an object</source>
         <translation>%1 muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="81"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="82"/>
         <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>keine Konfiguration des TipScope-Agenten (&quot;format&quot; ist nicht &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="86"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="87"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; muss eine ganze Zahl ab 1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="89"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="90"/>
         <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
         <translation>für ein neueres TipScope geschrieben (Version %1); dieses liest Version %2 und ältere</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="117"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="118"/>
         <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
         <translation>broker.protocol muss &quot;3.1.1&quot; oder &quot;5&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="129"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="130"/>
         <source>broker.host must name the broker</source>
         <translation>broker.host muss den Broker nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="132"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="133"/>
         <source>broker.password_file and broker.password_env: give one of them</source>
         <translation>broker.password_file und broker.password_env: nur eines von beiden angeben</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="141"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="142"/>
         <source>file %1</source>
         <translation>Datei %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="147"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="148"/>
         <source>environment variable %1</source>
         <translation>Umgebungsvariable %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="171"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="172"/>
         <source>site must name the site</source>
         <translation>site muss den Standort nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="173"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="174"/>
+        <source>site must be at most %1 characters long, not %2</source>
+        <translation>site darf höchstens %1 Zeichen lang sein, nicht %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="179"/>
+        <source>site must not hold control characters</source>
+        <translation>site darf keine Steuerzeichen enthalten</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="181"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace muss die Arbeitsbereichsdatei der zu betreibenden Linien nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="202"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="205"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="201"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="209"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>die Konfiguration %1 ist zu groß, um eine zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="203"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="211"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>die Konfiguration %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="205"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="213"/>
         <source>it is a list</source>
         <translation>es ist eine Liste</translation>
     </message>
@@ -1380,7 +1390,12 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="206"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="209"/>
+        <source>the file could not be written whole: the disk is full or the file reached its size limit</source>
+        <translation>die Datei konnte nicht vollständig geschrieben werden: der Datenträger ist voll oder die Datei hat ihre Größengrenze erreicht</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="213"/>
         <source>the file could not be written</source>
         <translation>die Datei konnte nicht geschrieben werden</translation>
     </message>
@@ -1886,63 +1901,63 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="177"/>
+        <location filename="../app/cli/climonitor.cpp" line="178"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="299"/>
+        <location filename="../app/cli/climonitor.cpp" line="300"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="270"/>
+        <location filename="../app/cli/climonitor.cpp" line="271"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="228"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
+        <location filename="../app/cli/climonitor.cpp" line="229"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="25"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="76"/>
+        <location filename="../app/cli/climonitor.cpp" line="77"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="100"/>
+        <location filename="../app/cli/climonitor.cpp" line="101"/>
         <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
         <translation>tipscope-cli: %1 zu schreiben ist fehlgeschlagen: %2; die Überwachung geht ohne die Datei weiter</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="160"/>
+        <location filename="../app/cli/climonitor.cpp" line="161"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="194"/>
+        <location filename="../app/cli/climonitor.cpp" line="195"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: der Arbeitsbereich %1 hat keine Linien</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="229"/>
+        <location filename="../app/cli/climonitor.cpp" line="230"/>
         <source>permission denied</source>
         <translation>keine Berechtigung</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="230"/>
+        <location filename="../app/cli/climonitor.cpp" line="231"/>
         <source>no such folder</source>
         <translation>diesen Ordner gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="237"/>
+        <location filename="../app/cli/climonitor.cpp" line="238"/>
         <source>tipscope-cli: lines %1 and %2 would both write %3; rename one</source>
         <translation>tipscope-cli: die Leitungen %1 und %2 würden beide %3 schreiben; benennen Sie eine um</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="382"/>
+        <location filename="../app/cli/climonitor.cpp" line="385"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 Einträge konnten nicht im Journal %2 gespeichert werden: %3</translation>
     </message>
@@ -2244,53 +2259,53 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="66"/>
+        <location filename="../app/cli/clirecord.cpp" line="58"/>
         <source>tipscope-cli: interrupted before the recording started</source>
         <translation>tipscope-cli: abgebrochen, bevor die Aufzeichnung begann</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="72"/>
+        <location filename="../app/cli/clirecord.cpp" line="64"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="107"/>
+        <location filename="../app/cli/clirecord.cpp" line="99"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record erwartet eine DATEI, z. B. record linie3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="116"/>
+        <location filename="../app/cli/clirecord.cpp" line="108"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration erwartet Sekunden (0: bis zum Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="124"/>
-        <location filename="../app/cli/clirecord.cpp" line="152"/>
+        <location filename="../app/cli/clirecord.cpp" line="116"/>
+        <location filename="../app/cli/clirecord.cpp" line="143"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: in %1 kann nicht aufgezeichnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="125"/>
+        <location filename="../app/cli/clirecord.cpp" line="117"/>
         <source>no such folder</source>
         <translation>Ordner nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="126"/>
+        <location filename="../app/cli/clirecord.cpp" line="118"/>
         <source>not writable</source>
         <translation>nicht beschreibbar</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="174"/>
+        <location filename="../app/cli/clirecord.cpp" line="165"/>
         <source># recording %1 of %2 to %3</source>
         <translation># zeichne %1 von %2 in %3 auf</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="182"/>
+        <location filename="../app/cli/clirecord.cpp" line="173"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="187"/>
+        <location filename="../app/cli/clirecord.cpp" line="178"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n Zeile nach %1 aufgezeichnet</numerusform>
@@ -3152,32 +3167,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Das Journal wurde geschlossen, bevor es sie schreiben konnte: %1</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="41"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="71"/>
         <source>The journal %1 cannot grow: the disk is full or the journal reached its size limit.</source>
         <translation>Das Journal %1 kann nicht wachsen: Der Datenträger ist voll oder das Journal hat seine Größengrenze erreicht.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="52"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="82"/>
         <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
         <translation>Das Journal %1 ist beschädigt oder kein Journal; es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="87"/>
         <source>The journal %1 is locked by another program.</source>
         <translation>Das Journal %1 ist von einem anderen Programm gesperrt.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="89"/>
         <source>The disk holding the journal %1 reported an error.</source>
         <translation>Der Datenträger des Journals %1 hat einen Fehler gemeldet.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="61"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="91"/>
         <source>The journal %1 reported an error: %2</source>
         <translation>Das Journal %1 hat einen Fehler gemeldet: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="88"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="118"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>Das Journal %1 kann nicht geschrieben werden: Sein Ordner oder die Datei ist schreibgeschützt oder nicht zugänglich.</translation>
     </message>
@@ -3488,27 +3503,27 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>MqttSecret</name>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="31"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
         <source>The password file %1 does not exist.</source>
         <translation>Die Passwortdatei %1 existiert nicht.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="37"/>
         <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
         <translation>Die Passwortdatei %1 ist größer als %2 Bytes; ist es die richtige Datei?</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="39"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="42"/>
         <source>The password file %1 cannot be read: %2</source>
         <translation>Die Passwortdatei %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="43"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="46"/>
         <source>The password file %1 is empty.</source>
         <translation>Die Passwortdatei %1 ist leer.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="51"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="54"/>
         <source>The environment variable %1 that should hold the password is not set or empty.</source>
         <translation>Die Umgebungsvariable %1, die das Passwort enthalten soll, ist nicht gesetzt oder leer.</translation>
     </message>
@@ -4544,68 +4559,68 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>WorkspaceFile</name>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="30"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="31"/>
         <source>not a TipScope workspace (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>kein TipScope-Arbeitsbereich (&quot;format&quot; ist nicht &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="35"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="36"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; muss eine ganze Zahl ab 1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="37"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="38"/>
         <source>written by a later TipScope (workspace version %1); this one reads version %2 and older</source>
         <translation>von einem neueren TipScope geschrieben (Arbeitsbereich-Version %1); dieses liest Version %2 und ältere</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="66"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="67"/>
         <source>&quot;lines&quot; must be a list of lines</source>
         <translation>&quot;lines&quot; muss eine Liste von Leitungen sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="73"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="75"/>
         <source>line %1</source>
         <translation>Leitung %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="74"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="76"/>
         <source>line %1 (%2)</source>
         <translation>Leitung %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="76"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="78"/>
         <source>%1: must be an object</source>
         <translation>%1: muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="81"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="83"/>
         <source>%1: the name is already another line&apos;s; each line needs its own</source>
         <translation>%1: der Name gehört schon einer anderen Leitung; jede Leitung braucht einen eigenen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="96"/>
         <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="103"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>der Arbeitsbereich %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="97"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
         <source>there is no such file</source>
         <translation>diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="102"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>der Arbeitsbereich %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="104"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>der Arbeitsbereich %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="110"/>
         <source>it is a list</source>
         <translation>er ist eine Liste</translation>
     </message>

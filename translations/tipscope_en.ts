@@ -37,7 +37,7 @@
 <context>
     <name>CliRecord</name>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="187"/>
+        <location filename="../app/cli/clirecord.cpp" line="178"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>recorded %n row to %1</numerusform>

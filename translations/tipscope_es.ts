@@ -27,97 +27,107 @@
 <context>
     <name>AgentConfig</name>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="37"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="38"/>
         <source>%1 must be text</source>
         <translation>%1 debe ser un texto</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="46"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 debe ser un número entero de %2 a %3</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="57"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="58"/>
         <source>%1 must be true or false</source>
         <translation>%1 debe ser true o false</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="63"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="64"/>
         <source>%1 must be an object</source>
         <translation>%1 debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="81"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="82"/>
         <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>no es una configuración del agente de TipScope (&quot;format&quot; no es &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="86"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="87"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; debe ser un número entero desde 1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="89"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="90"/>
         <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
         <translation>escrita para un TipScope más reciente (versión %1); este lee la versión %2 y anteriores</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="117"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="118"/>
         <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
         <translation>broker.protocol debe ser &quot;3.1.1&quot; o &quot;5&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="129"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="130"/>
         <source>broker.host must name the broker</source>
         <translation>broker.host debe indicar el broker</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="132"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="133"/>
         <source>broker.password_file and broker.password_env: give one of them</source>
         <translation>broker.password_file y broker.password_env: indique solo uno de los dos</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="141"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="142"/>
         <source>file %1</source>
         <translation>archivo %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="147"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="148"/>
         <source>environment variable %1</source>
         <translation>variable de entorno %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="171"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="172"/>
         <source>site must name the site</source>
         <translation>site debe indicar la planta</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="173"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="174"/>
+        <source>site must be at most %1 characters long, not %2</source>
+        <translation>site admite como máximo %1 caracteres, no %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="179"/>
+        <source>site must not hold control characters</source>
+        <translation>site no puede contener caracteres de control</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="181"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace debe indicar el archivo de espacio de trabajo de las líneas que se ejecutan</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="194"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="202"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>no se puede leer la configuración %1: no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="205"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>no se puede leer la configuración %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="201"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="209"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>la configuración %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="203"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="211"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>la configuración %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="205"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="213"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -1380,7 +1390,12 @@
 <context>
     <name>ChartCsv</name>
     <message>
-        <location filename="../lib/model/recording/chartcsv.cpp" line="206"/>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="209"/>
+        <source>the file could not be written whole: the disk is full or the file reached its size limit</source>
+        <translation>no se pudo escribir el archivo completo: el disco está lleno o el archivo alcanzó su límite de tamaño</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/chartcsv.cpp" line="213"/>
         <source>the file could not be written</source>
         <translation>no se pudo escribir el archivo</translation>
     </message>
@@ -1886,63 +1901,63 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="177"/>
+        <location filename="../app/cli/climonitor.cpp" line="178"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="299"/>
+        <location filename="../app/cli/climonitor.cpp" line="300"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="270"/>
+        <location filename="../app/cli/climonitor.cpp" line="271"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="228"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
+        <location filename="../app/cli/climonitor.cpp" line="229"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="25"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="76"/>
+        <location filename="../app/cli/climonitor.cpp" line="77"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="100"/>
+        <location filename="../app/cli/climonitor.cpp" line="101"/>
         <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
         <translation>tipscope-cli: no se pudo escribir %1: %2; la monitorización sigue sin el archivo</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="160"/>
+        <location filename="../app/cli/climonitor.cpp" line="161"/>
         <source>reconnected to %1</source>
         <translation>reconectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="194"/>
+        <location filename="../app/cli/climonitor.cpp" line="195"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: el espacio de trabajo %1 no tiene líneas</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="229"/>
+        <location filename="../app/cli/climonitor.cpp" line="230"/>
         <source>permission denied</source>
         <translation>permiso denegado</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="230"/>
+        <location filename="../app/cli/climonitor.cpp" line="231"/>
         <source>no such folder</source>
         <translation>no existe esa carpeta</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="237"/>
+        <location filename="../app/cli/climonitor.cpp" line="238"/>
         <source>tipscope-cli: lines %1 and %2 would both write %3; rename one</source>
         <translation>tipscope-cli: las líneas %1 y %2 escribirían ambas %3; cambie el nombre de una</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="382"/>
+        <location filename="../app/cli/climonitor.cpp" line="385"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 registros no se pudieron guardar en el diario %2: %3</translation>
     </message>
@@ -2244,53 +2259,53 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
 <context>
     <name>CliRecord</name>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="66"/>
+        <location filename="../app/cli/clirecord.cpp" line="58"/>
         <source>tipscope-cli: interrupted before the recording started</source>
         <translation>tipscope-cli: interrumpido antes de que empezara la grabación</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="72"/>
+        <location filename="../app/cli/clirecord.cpp" line="64"/>
         <source>tipscope-cli: cannot open %1: %2</source>
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="107"/>
+        <location filename="../app/cli/clirecord.cpp" line="99"/>
         <source>tipscope-cli: record takes one FILE, e.g. record line3.csv --duration 60</source>
         <translation>tipscope-cli: record espera un ARCHIVO, p. ej. record linea3.csv --duration 60</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="116"/>
+        <location filename="../app/cli/clirecord.cpp" line="108"/>
         <source>tipscope-cli: --duration takes seconds (0: until interrupted)</source>
         <translation>tipscope-cli: --duration espera segundos (0: hasta que se interrumpa)</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="124"/>
-        <location filename="../app/cli/clirecord.cpp" line="152"/>
+        <location filename="../app/cli/clirecord.cpp" line="116"/>
+        <location filename="../app/cli/clirecord.cpp" line="143"/>
         <source>tipscope-cli: cannot record to %1: %2</source>
         <translation>tipscope-cli: no se puede grabar en %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="125"/>
+        <location filename="../app/cli/clirecord.cpp" line="117"/>
         <source>no such folder</source>
         <translation>la carpeta no existe</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="126"/>
+        <location filename="../app/cli/clirecord.cpp" line="118"/>
         <source>not writable</source>
         <translation>sin permiso de escritura</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="174"/>
+        <location filename="../app/cli/clirecord.cpp" line="165"/>
         <source># recording %1 of %2 to %3</source>
         <translation># grabando %1 de %2 en %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/clirecord.cpp" line="182"/>
+        <location filename="../app/cli/clirecord.cpp" line="173"/>
         <source>tipscope-cli: writing %1 failed: %2</source>
         <translation>tipscope-cli: falló la escritura de %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/clirecord.cpp" line="187"/>
+        <location filename="../app/cli/clirecord.cpp" line="178"/>
         <source>recorded %n row(s) to %1</source>
         <translation>
             <numerusform>%n fila grabada en %1</numerusform>
@@ -3152,32 +3167,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>El diario se cerró antes de poder escribirlos: %1</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="41"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="71"/>
         <source>The journal %1 cannot grow: the disk is full or the journal reached its size limit.</source>
         <translation>El diario %1 no puede crecer: el disco está lleno o el diario alcanzó su tamaño máximo.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="52"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="82"/>
         <source>The journal %1 is damaged or is not a journal; it was left untouched.</source>
         <translation>El diario %1 está dañado o no es un diario; no se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="57"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="87"/>
         <source>The journal %1 is locked by another program.</source>
         <translation>Otro programa tiene bloqueado el diario %1.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="59"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="89"/>
         <source>The disk holding the journal %1 reported an error.</source>
         <translation>El disco del diario %1 ha informado de un error.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="61"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="91"/>
         <source>The journal %1 reported an error: %2</source>
         <translation>El diario %1 ha informado de un error: %2</translation>
     </message>
     <message>
-        <location filename="../lib/journal/sqlerror.cpp" line="88"/>
+        <location filename="../lib/journal/sqlerror.cpp" line="118"/>
         <source>The journal %1 cannot be written: its folder or the file is read-only or not accessible.</source>
         <translation>No se puede escribir el diario %1: su carpeta o el archivo es de solo lectura o no es accesible.</translation>
     </message>
@@ -3488,27 +3503,27 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
 <context>
     <name>MqttSecret</name>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="31"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
         <source>The password file %1 does not exist.</source>
         <translation>El archivo de contraseña %1 no existe.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="34"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="37"/>
         <source>The password file %1 is larger than %2 bytes; is it the right file?</source>
         <translation>El archivo de contraseña %1 tiene más de %2 bytes; ¿es el archivo correcto?</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="39"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="42"/>
         <source>The password file %1 cannot be read: %2</source>
         <translation>No se puede leer el archivo de contraseña %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="43"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="46"/>
         <source>The password file %1 is empty.</source>
         <translation>El archivo de contraseña %1 está vacío.</translation>
     </message>
     <message>
-        <location filename="../lib/mqtt/mqttsecret.cpp" line="51"/>
+        <location filename="../lib/mqtt/mqttsecret.cpp" line="54"/>
         <source>The environment variable %1 that should hold the password is not set or empty.</source>
         <translation>La variable de entorno %1, que debería contener la contraseña, no está definida o está vacía.</translation>
     </message>
@@ -4544,68 +4559,68 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>WorkspaceFile</name>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="30"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="31"/>
         <source>not a TipScope workspace (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>no es un espacio de trabajo de TipScope (&quot;format&quot; no es &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="35"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="36"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; debe ser un número entero desde 1</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="37"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="38"/>
         <source>written by a later TipScope (workspace version %1); this one reads version %2 and older</source>
         <translation>escrito por un TipScope posterior (versión de espacio de trabajo %1); este lee la versión %2 y anteriores</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="66"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="67"/>
         <source>&quot;lines&quot; must be a list of lines</source>
         <translation>&quot;lines&quot; debe ser una lista de líneas</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="73"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="75"/>
         <source>line %1</source>
         <translation>línea %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="74"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="76"/>
         <source>line %1 (%2)</source>
         <translation>línea %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="76"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="78"/>
         <source>%1: must be an object</source>
         <translation>%1: debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="81"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="83"/>
         <source>%1: the name is already another line&apos;s; each line needs its own</source>
         <translation>%1: el nombre ya es de otra línea; cada línea necesita el suyo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="96"/>
         <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="103"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>no se puede leer el espacio de trabajo %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="97"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
         <source>there is no such file</source>
         <translation>no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="102"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>el espacio de trabajo %1 es demasiado grande para ser uno</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="104"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>el espacio de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="110"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
