@@ -66,6 +66,8 @@ void PollScheduler::removeDevice(DeviceModel *device) {
         it = it->first == device ? m_busy.erase(it) : std::next(it);
     for (auto it = m_restLow.begin(); it != m_restLow.end();)
         it = it.key().first == device ? m_restLow.erase(it) : std::next(it);
+    for (auto it = m_resting.begin(); it != m_resting.end();)
+        it = it->first == device ? m_resting.erase(it) : std::next(it);
 }
 
 void PollScheduler::setInterval(PollClass c, int ms) {
@@ -206,14 +208,30 @@ PollScheduler::Item *PollScheduler::furthestAlong(qint64 now) {
 }
 
 namespace {
-// Stand, sleep, hibernation and cooling: the tip is away from its setpoint by design.
+// Stand, sleep, hibernation and cooling, no tool, a port error: the tip is away from its
+// setpoint by design or by a fault, not by a joint.
 bool rests(const DeviceModel &device, int port) {
-    const Parameter *status = device.parameter(protocol::Role::Status, port);
-    const auto value = status ? status->number() : std::nullopt;
+    using protocol::Role;
+    const auto numberOf = [&](Role role) {
+        const Parameter *p = device.parameter(role, port);
+        return p ? p->number() : std::nullopt;
+    };
+    if (const auto tool = numberOf(Role::ConnectedTool); tool && *tool == 0)
+        return true;
+    if (const auto error = numberOf(Role::Error); error && *error != 0)
+        return true;
+    const auto value = numberOf(Role::Status);
     if (!value)
         return false;
     const PortStatus s = PortStatus::fromNumber(*value);
     return s.mode != PortStatus::Mode::Working || s.cooling;
+}
+
+// The readings that tell why a port's tip left its band, or why it rests.
+bool explainsTip(protocol::Role role) {
+    using protocol::Role;
+    return role == Role::Status || role == Role::Setpoint || role == Role::ConnectedTool ||
+           role == Role::Error;
 }
 } // namespace
 
@@ -242,16 +260,27 @@ void PollScheduler::followBusy(DeviceModel *device, int port, protocol::Role rea
     const QPair<DeviceModel *, int> key{device, port};
     const Parameter *tip = device->parameter(protocol::Role::TipTemperature, port);
     const auto tipNow = tip ? tip->number() : std::nullopt;
-    if (rests(*device, port) && tipNow) {
-        // A status just read that still says "resting" explains the tip as it is (a tip heating
-        // to its sleep temperature is no wake): the climb is measured from here on.
+    const bool resting = rests(*device, port);
+    if (resting && tipNow) {
+        // A status, tool or error just read that still says "resting" explains the tip as it is
+        // (a tip heating to its sleep temperature is no wake): the climb is measured from here.
         const auto low = m_restLow.find(key);
-        if (low == m_restLow.end() || read == protocol::Role::Status)
+        if (low == m_restLow.end() || (explainsTip(read) && read != protocol::Role::Setpoint))
             m_restLow.insert(key, *tipNow);
         else
             *low = qMin(*low, *tipNow);
     } else {
         m_restLow.remove(key);
+    }
+    // One reading that tells why the tip is where it is may come before the tip shows it (an
+    // error read on its own interval just after the tool was taken out): the others are read at
+    // once too, or a tool taken out and put back between two of its slow readings is never seen.
+    if (resting != m_resting.contains(key)) {
+        if (resting)
+            m_resting.insert(key);
+        else
+            m_resting.remove(key);
+        askWhy(device, port, now);
     }
     const bool was = m_busy.contains(key);
     const bool busy = isBusy(device, port);
@@ -265,19 +294,24 @@ void PollScheduler::followBusy(DeviceModel *device, int port, protocol::Role rea
     const bool first = m_busy.isEmpty();
     m_busy.insert(key);
     updateIntervals(first ? nullptr : device, first ? -1 : port);
-    // A tip leaving its band is a joint, the tool put in its stand, asleep or taken out, or a new
-    // setpoint; a resting tip climbing is a wake. The status and the setpoint are read at once,
-    // so the event is stamped when the tip shows it, a rest is never measured as a joint for want
-    // of the status, and a heat-up is timed from when it began.
-    for (Item &i : m_items) {
-        if (i.device != device || i.port != port || i.inFlight)
-            continue;
-        if (i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power) {
+    for (Item &i : m_items)
+        if (i.device == device && i.port == port && !i.inFlight &&
+            (i.role == protocol::Role::TipTemperature || i.role == protocol::Role::Power))
             i.dueMs = qMin(i.dueMs, now + effectiveInterval(i));
-        } else if (i.role == protocol::Role::Status || i.role == protocol::Role::Setpoint) {
-            i.dueMs = qMin(i.dueMs, now);
-            i.first = true; // before the tips that a full wire always has overdue
-        }
+    askWhy(device, port, now);
+}
+
+// A tip leaving its band is a joint, the tool put in its stand, asleep or taken out, a fault, or
+// a new setpoint; a resting tip climbing is a wake, a tool put back or a fault cleared. The
+// status, the setpoint, the tool and the port's error are read at once, so the event is stamped
+// when the tip shows it, a rest is never measured as a joint for want of them, and a heat-up is
+// timed from when it began.
+void PollScheduler::askWhy(DeviceModel *device, int port, qint64 now) {
+    for (Item &i : m_items) {
+        if (i.device != device || i.port != port || i.inFlight || !explainsTip(i.role))
+            continue;
+        i.dueMs = qMin(i.dueMs, now);
+        i.first = true; // before the tips that a full wire always has overdue
     }
 }
 
@@ -327,9 +361,10 @@ void PollScheduler::pump() {
             }
             // Among the rest, errors and status come before settings, counters and identity
             // (on their turn, after them).
-            const bool earlier =
-                iLive ? (i.first != best->first ? i.first : urgency(i, now) < urgency(*best, now))
-                      : rank(i) < rank(*best) || (rank(i) == rank(*best) && i.dueMs < best->dueMs);
+            const bool earlier = i.first != best->first ? i.first
+                                 : iLive                ? urgency(i, now) < urgency(*best, now)
+                                                        : rank(i) < rank(*best) ||
+                                               (rank(i) == rank(*best) && i.dueMs < best->dueMs);
             if (earlier)
                 best = &i;
         }

@@ -18,15 +18,16 @@
 //
 // Adaptive sampling (setAdaptive(), on by default) spends the wire on joints. A working port is
 // busy while its last tip reading is more than kBusyBelowK from its setpoint or its power is
-// above kBusyPowerShare of full scale; a resting one (stand, sleep, hibernation, cooling) only
-// while its tip climbs kWakeRiseK above its lowest reading since it rested, a wake the status
-// has not told yet. A busy port's tip temperature is due kBusyFactor times as often
-// as the live interval says (never more often than kFastestMs), its power at the live interval,
-// and a port turning busy has them polled at once, and its status too (a tip leaving its band may
-// be a tool put in its stand or asleep, an event to stamp when the tip shows it). While any port is
-// busy the line fills its wire (below) and what it has to spare goes to the busy tips, so a joint
-// is read as finely as the wire allows; the values that can wait a joint out (the countdown to
-// sleep, the transistor's temperature) are due kRestFactor times less often meanwhile. A resting
+// above kBusyPowerShare of full scale; a resting one (stand, sleep, hibernation, cooling, no tool,
+// a port error) only while its tip climbs kWakeRiseK above its lowest reading since it rested, a
+// wake, a tool put back or a fault cleared that its readings have not told yet. A busy port's tip
+// temperature is due kBusyFactor times as often as the live interval says (never more often than
+// kFastestMs), its power at the live interval, and a port turning busy has them polled at once,
+// and its status, setpoint, tool and error too (a tip leaving its band may be a tool put in its
+// stand, asleep or taken out, or a fault: an event to stamp when the tip shows it). While any port
+// is busy the line fills its wire (below) and what it has to spare goes to the busy tips, so a
+// joint is read as finely as the wire allows; the values that can wait a joint out (the countdown
+// to sleep, the transistor's temperature) are due kRestFactor times less often meanwhile. A resting
 // port's tip is due kWatchFactor times as often as the live interval, because a joint's start can
 // be timed no finer than the last reading before it. Values that rarely change are due kRestFactor
 // times less often: a port's status among the live values, its setpoint and its connected tool; so
@@ -113,7 +114,7 @@ private:
         qint64 polledMs = 0; // when its last poll finished
         qint64 sentMs = 0;   // when its last poll was sent
         int interval = 0;    // effectiveInterval(), kept current by updateIntervals()
-        bool first = false;  // ahead of every other live value until sent (followBusy())
+        bool first = false;  // ahead of the others of its kind until sent (askWhy())
     };
 
     void pump();
@@ -136,6 +137,7 @@ private:
     // After a reading of a value with role `read`: a port that has just turned busy gets its tip
     // and power due now, its status and setpoint at once.
     void followBusy(DeviceModel *device, int port, protocol::Role read, qint64 now);
+    void askWhy(DeviceModel *device, int port, qint64 now);
     [[nodiscard]] qint64 nowMs() const { return m_clock.elapsed(); }
     void armWake();
 
@@ -151,6 +153,7 @@ private:
     bool m_fillWire = false;
     QSet<QPair<DeviceModel *, int>> m_busy;
     QHash<QPair<DeviceModel *, int>, qint64> m_restLow; // a resting port's lowest tip
+    QSet<QPair<DeviceModel *, int>> m_resting;          // ports that rest (stand, no tool, ...)
     qint64 m_holdUntilMs = 0;
     qint64 m_done = 0;
     QElapsedTimer m_clock;
