@@ -85,7 +85,8 @@ void FeederPage::rebuild() {
 
     auto *settings = new QGroupBox(tr("Feeding settings"), m_body);
     auto *form = new QFormLayout(settings);
-    form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
+    // The editors take the width: the reason under a refused value wraps at the width shown.
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     for (Parameter *p : f->settings()) {
         auto *e = new ParameterEditor(p, settings);
         m_editors.append(e);

@@ -109,7 +109,8 @@ void SettingsPage::addGroup(const QString &title, const QList<Parameter *> &para
         return;
     auto *box = new QGroupBox(title, m_form);
     auto *form = new QFormLayout(box);
-    form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
+    // The editors take the width: the reason under a refused value wraps at the width shown.
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     for (Parameter *p : params) {
         auto *editor = new ParameterEditor(p, box);
         m_editors.append(editor);

@@ -87,7 +87,7 @@ void ParameterEditor::build() {
         m_spin->setKeyboardTracking(false);
         m_spin->setMinimumWidth(120);
         connect(m_spin, &QDoubleSpinBox::valueChanged, this, &ParameterEditor::commitSpin);
-        row->addWidget(m_spin, 1);
+        row->addWidget(m_spin);
         if (p.meta().special.contains(kDisabledKey)) {
             m_disabled =
                 new QCheckBox(protocol::catalogText(p.meta().special.value(kDisabledKey)), this);
@@ -101,16 +101,21 @@ void ParameterEditor::build() {
         for (auto it = p.spec().values.begin(); it != p.spec().values.end(); ++it)
             m_combo->addItem(protocol::catalogText(it.value()), it.key());
         connect(m_combo, &QComboBox::activated, this, &ParameterEditor::commitCombo);
-        row->addWidget(m_combo, 1);
+        row->addWidget(m_combo);
     }
     m_state = new QLabel(this);
     m_state->setMinimumWidth(90);
     row->addWidget(m_state);
+    // The field keeps its size; the editor takes the form's width so that the reason under it
+    // is laid out at the width it is shown at (a form sizing the field to its hint measured
+    // the wrapped reason at another width, and cut it to its first line).
+    row->addStretch(1);
     // Why a value was refused or a write failed, where the eye is: not only in a tooltip.
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_message->setStyleSheet(kRefusedStyle);
+
     m_message->setVisible(false);
     column->addWidget(m_message);
     refreshFromParameter();
