@@ -14,6 +14,7 @@
 #include <QDoubleSpinBox>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLineEdit>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -37,6 +38,8 @@ private Q_SLOTS:
     void revertAndRefreshDiscardARefusedValue();
     void aSavedProfileSaysWhereItWentAndCarriesTheComment();
     void thePortBoxShowsItsWholeText();
+    void anEditCountsWhileItIsTyped();
+
 
 private:
     void connectDemo();
@@ -187,6 +190,35 @@ void TestSettingsPage::thePortBoxShowsItsWholeText() {
         QVERIFY2(box->sizeHint().width() > box->fontMetrics().horizontalAdvance(box->itemText(i)),
                  qPrintable(box->itemText(i)));
     QVERIFY(box->width() >= box->sizeHint().width());
+}
+
+// Typing a value is an edit before the field is left: the field is highlighted and Apply is on
+// at once; a value on its way through numbers not allowed ("4", "43") neither counts nor is
+// refused until the typing ends.
+void TestSettingsPage::anEditCountsWhileItIsTyped() {
+    connectDemo();
+    ParameterEditor *mat = readEditor("MAT");
+    QVERIFY(mat);
+    auto *spin = mat->findChild<QDoubleSpinBox *>();
+    QTRY_VERIFY(spin->isVisible()); // a box shown later takes its value again
+    testing::typeInto(*spin, QStringLiteral("4"), false);
+    QVERIFY(!mat->hasRefusal());
+    QCOMPARE(m_page->editedCount(), 0);
+    QTest::keyClicks(spin->findChild<QLineEdit *>(), QStringLiteral("35"));
+    QVERIFY(spin->hasFocus()); // still typing
+    QTRY_COMPARE(mat->stateText(), QStringLiteral("edited"));
+    QCOMPARE(m_page->editedCount(), 1);
+    QTRY_VERIFY(m_page->button(QStringLiteral("apply"))->isEnabled());
+    QVERIFY(spin->findChild<QLineEdit *>()->styleSheet().contains(QStringLiteral("background")));
+    QCOMPARE(spin->findChild<QLineEdit *>()->text(), QStringLiteral("435 °C")); // as typed
+
+    // Back through a number not allowed: the earlier edit is not left to be applied instead.
+    QTest::keyClick(spin->findChild<QLineEdit *>(), Qt::Key_Backspace);
+    QTRY_COMPARE(m_page->editedCount(), 0);
+    QVERIFY(!mat->hasRefusal());
+    QTRY_VERIFY(!m_page->button(QStringLiteral("apply"))->isEnabled());
+    QTest::keyClick(spin->findChild<QLineEdit *>(), Qt::Key_Return);
+    QVERIFY(mat->hasRefusal()); // said once the typing ends
 }
 
 QTEST_MAIN(TestSettingsPage)

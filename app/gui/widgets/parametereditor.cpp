@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -87,6 +88,9 @@ void ParameterEditor::build() {
         m_spin->setKeyboardTracking(false);
         m_spin->setMinimumWidth(120);
         connect(m_spin, &QDoubleSpinBox::valueChanged, this, &ParameterEditor::commitSpin);
+        if (auto *line = m_spin->findChild<QLineEdit *>())
+            connect(line, &QLineEdit::textEdited, this, &ParameterEditor::followTyping);
+        connect(m_spin, &QAbstractSpinBox::editingFinished, this, [this] { m_typing = false; });
         row->addWidget(m_spin);
         if (p.meta().special.contains(kDisabledKey)) {
             m_disabled =
@@ -115,7 +119,6 @@ void ParameterEditor::build() {
     m_message->setWordWrap(true);
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_message->setStyleSheet(kRefusedStyle);
-
     m_message->setVisible(false);
     column->addWidget(m_message);
     refreshFromParameter();
@@ -133,8 +136,9 @@ void ParameterEditor::refreshFromParameter() {
     if (m_spin)
         m_spin->setAllowedRange(toDisplay(p.spec(), p.minimum(), t),
                                 toDisplay(p.spec(), p.maximum(), t));
-    // A refused value stays in the box beside its reason until it is replaced or discarded.
-    const bool keepTyped = !m_refusal.isEmpty();
+    // A refused value stays in the box beside its reason until it is replaced or discarded;
+    // what is being typed stays as typed.
+    const bool keepTyped = !m_refusal.isEmpty() || m_typing;
     const bool special = shown && p.meta().special.contains(int(*shown));
     if (m_spin && shown && !keepTyped) {
         if (m_disabled)
@@ -211,11 +215,14 @@ void ParameterEditor::refreshState() {
                         : p.state() == Parameter::State::Failed ? p.failure()
                                                                 : QString();
     m_state->setToolTip(why);
+
     m_message->setText(why);
     m_message->setVisible(!why.isEmpty());
     const QString sheet = editorStyle();
-    for (QWidget *w : {static_cast<QWidget *>(m_spin), static_cast<QWidget *>(m_combo),
-                       static_cast<QWidget *>(m_value)})
+    // A number box's look goes on its text field: restyling the box itself puts its last value
+    // back in the field, over what is being typed.
+    QWidget *spinField = m_spin ? m_spin->findChild<QLineEdit *>() : nullptr;
+    for (QWidget *w : {spinField, static_cast<QWidget *>(m_combo), static_cast<QWidget *>(m_value)})
         if (w)
             setStyleSheetIfChanged(w, sheet);
 }
@@ -229,6 +236,7 @@ QString ParameterEditor::messageText() const {
 }
 
 void ParameterEditor::discardRefusal() {
+    m_typing = false; // what was typed goes with the refusal (Revert, Refresh)
     if (m_refusal.isEmpty())
         return;
     m_refusal.clear();
@@ -239,6 +247,7 @@ void ParameterEditor::discardRefusal() {
 void ParameterEditor::commitSpin() {
     if (m_updating || !m_parameter)
         return;
+    m_typing = false;
     qint64 wire = 0;
     if (m_disabled && m_disabled->isChecked()) {
         wire = kDisabledKey;
@@ -253,6 +262,28 @@ void ParameterEditor::commitSpin() {
     }
     m_spin->setEnabled(!(m_disabled && m_disabled->isChecked()));
     setRefusal(m_parameter->setEdit(wire));
+}
+
+// An edit counts while it is typed: a keystroke that makes an allowed value makes it the edit
+// (highlighted, Apply on). A value not allowed is said when the typing ends (Enter, or leaving
+// the field), not at each keystroke of "350" on its way through "3" and "35"; meanwhile no
+// earlier edit stays behind to be applied in its place.
+void ParameterEditor::followTyping() {
+    if (m_updating || !m_parameter || (m_disabled && m_disabled->isChecked()))
+        return;
+    m_typing = true;
+    bool isNumber = false;
+    const double typed = m_spin->locale().toDouble(m_spin->cleanText(), &isNumber);
+    const qint64 wire =
+        isNumber ? fromDisplay(m_parameter->spec(), typed, m_parameter->device().temperatureUnit())
+                 : 0;
+    const bool allowed =
+        isNumber && !m_parameter->device().writesBlocked() && m_parameter->validate(wire).isEmpty();
+    setRefusal({});
+    if (allowed)
+        (void)m_parameter->setEdit(wire);
+    else
+        m_parameter->revert();
 }
 
 void ParameterEditor::commitCombo() {
