@@ -14,6 +14,7 @@
 #include <QDoubleSpinBox>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLabel>
 #include <QLineEdit>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -39,6 +40,7 @@ private Q_SLOTS:
     void aSavedProfileSaysWhereItWentAndCarriesTheComment();
     void thePortBoxShowsItsWholeText();
     void anEditCountsWhileItIsTyped();
+    void aVerifiedWriteNotSavedToMemorySaysItIsInSync();
 
 
 private:
@@ -219,6 +221,29 @@ void TestSettingsPage::anEditCountsWhileItIsTyped() {
     QTRY_VERIFY(!m_page->button(QStringLiteral("apply"))->isEnabled());
     QTest::keyClick(spin->findChild<QLineEdit *>(), Qt::Key_Return);
     QVERIFY(mat->hasRefusal()); // said once the typing ends
+}
+
+// The selected temperature is volatile: written and read back, it is in sync, and not yet in
+// the station's memory. A grey "not saved" alone read as a failed write.
+void TestSettingsPage::aVerifiedWriteNotSavedToMemorySaysItIsInSync() {
+    connectDemo();
+    Parameter *st1 = m_session->station()->parameter("ST1");
+    ParameterEditor *editor = readEditor("ST1");
+    QVERIFY(editor);
+    const qint64 next = st1->number().value_or(350) == 300 ? 310 : 300;
+    QCOMPARE(editor->enterText(QString::number(next)), QString());
+    m_page->applyEdits();
+    QTRY_COMPARE_WITH_TIMEOUT(st1->state(), Parameter::State::InSync, kConnectMs);
+    QVERIFY(!st1->isSavedToMemory());
+    QTRY_COMPARE(editor->stateText(), QStringLiteral("✓ in sync, not yet saved"));
+    auto *state = editor->findChild<QLabel *>();
+    for (QLabel *label : editor->findChildren<QLabel *>())
+        if (label->text() == editor->stateText())
+            state = label;
+    QVERIFY2(state->toolTip().contains(QStringLiteral("station memory")),
+             qPrintable(state->toolTip()));
+    QVERIFY(!state->styleSheet().contains(QStringLiteral("palette(mid)"))); // not greyed
+    QVERIFY(state->width() >= state->fontMetrics().horizontalAdvance(state->text()));
 }
 
 QTEST_MAIN(TestSettingsPage)

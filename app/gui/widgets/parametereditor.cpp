@@ -178,7 +178,7 @@ void ParameterEditor::refreshState() {
     if (!m_parameter || !m_state)
         return;
     const Parameter &p = *m_parameter;
-    QString text, style;
+    QString text, style, tip;
     switch (p.state()) {
     case Parameter::State::Unknown:
         text = tr("not read");
@@ -187,8 +187,15 @@ void ParameterEditor::refreshState() {
         text = tr("reading…");
         break;
     case Parameter::State::InSync:
-        text = p.meta().isVolatile && !p.isSavedToMemory() ? tr("not saved") : tr("✓ in sync");
+        text = tr("✓ in sync");
         style = QStringLiteral("color: palette(mid);");
+        // Written and proved, but volatile: a grey "not saved" alone read as a failed write.
+        if (p.meta().isVolatile && !p.isSavedToMemory()) {
+            text = tr("✓ in sync, not yet saved");
+            style.clear();
+            tip = tr("Written and read back. The station forgets it when it restarts, unless "
+                     "it is saved to station memory.");
+        }
         if (!p.isCurrent())
             text = tr("last read %1")
                        .arg(QLocale().toString(p.lastUpdate().time(), QStringLiteral("HH:mm:ss")));
@@ -214,8 +221,7 @@ void ParameterEditor::refreshState() {
     const QString why = !m_refusal.isEmpty()                    ? m_refusal
                         : p.state() == Parameter::State::Failed ? p.failure()
                                                                 : QString();
-    m_state->setToolTip(why);
-
+    m_state->setToolTip(why.isEmpty() ? tip : why);
     m_message->setText(why);
     m_message->setVisible(!why.isEmpty());
     const QString sheet = editorStyle();
