@@ -41,7 +41,7 @@ private Q_SLOTS:
     void thePortBoxShowsItsWholeText();
     void anEditCountsWhileItIsTyped();
     void aVerifiedWriteNotSavedToMemorySaysItIsInSync();
-
+    void theSavedProfileMessageGoesWithTheNextAction();
 
 private:
     void connectDemo();
@@ -244,6 +244,26 @@ void TestSettingsPage::aVerifiedWriteNotSavedToMemorySaysItIsInSync() {
              qPrintable(state->toolTip()));
     QVERIFY(!state->styleSheet().contains(QStringLiteral("palette(mid)"))); // not greyed
     QVERIFY(state->width() >= state->fontMetrics().horizontalAdvance(state->text()));
+}
+
+// "✓ Profile saved" is about that save: the next action has its own result, and the old
+// message stays on screen no longer.
+void TestSettingsPage::theSavedProfileMessageGoesWithTheNextAction() {
+    connectDemo();
+    m_session->station()->refreshAll(link::Priority::UserRead);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->line()->queue().pendingCount() == 0, kConnectMs);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("line.json"));
+    QVERIFY(m_page->saveProfileTo(path, {}));
+    QVERIFY(m_page->noticeText().contains(path));
+    QTest::mouseClick(m_page->button(QStringLiteral("refresh")), Qt::LeftButton);
+    QVERIFY2(!m_page->noticeText().contains(path), qPrintable(m_page->noticeText()));
+
+    QVERIFY(m_page->saveProfileTo(path, {}));
+    ParameterEditor *mat = readEditor("MAT");
+    QVERIFY(mat);
+    testing::typeInto(*mat->findChild<QDoubleSpinBox *>(), QStringLiteral("420"));
+    QTRY_VERIFY2(!m_page->noticeText().contains(path), qPrintable(m_page->noticeText()));
 }
 
 QTEST_MAIN(TestSettingsPage)
