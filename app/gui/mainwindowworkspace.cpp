@@ -29,14 +29,29 @@ const QString kLastWorkspaceKey = QStringLiteral("workspace/last");
 void MainWindow::buildWorkspaceMenu(QMenu &file) {
     file.addAction(tr("&Open workspace…"), QKeySequence::Open, this,
                    &MainWindow::askToOpenWorkspace);
-    file.addAction(tr("&Save workspace"), QKeySequence::Save, this,
-                   [this] { askToSaveWorkspace(false); });
-    file.addAction(tr("Save workspace &as…"), QKeySequence::SaveAs, this,
-                   [this] { askToSaveWorkspace(true); });
+    m_workspaceOnlyActions = {file.addAction(tr("&Save workspace"), QKeySequence::Save, this,
+                                             [this] { askToSaveWorkspace(false); }),
+                              file.addAction(tr("Save workspace &as…"), QKeySequence::SaveAs, this,
+                                             [this] { askToSaveWorkspace(true); })};
     file.addAction(tr("&Add this line to the workspace…"), this,
                    &MainWindow::addBarLineToWorkspace);
-    file.addAction(tr("C&lose workspace"), this, &MainWindow::closeWorkspace);
+    m_workspaceOnlyActions.append(
+        file.addAction(tr("C&lose workspace"), this, &MainWindow::closeWorkspace));
     file.addSeparator();
+    updateWorkspaceActions();
+}
+
+// Saving or closing no workspace would write an empty file or do nothing at all.
+void MainWindow::updateWorkspaceActions() {
+    for (QAction *a : std::as_const(m_workspaceOnlyActions))
+        a->setEnabled(m_workspace.count() > 0);
+}
+
+QAction *MainWindow::workspaceAction(const QString &name) const {
+    for (QAction *a : m_workspaceOnlyActions)
+        if (QString(a->text()).remove(QLatin1Char('&')) == name)
+            return a;
+    return nullptr;
 }
 
 QString MainWindow::openWorkspace(const QString &path) {
@@ -96,6 +111,7 @@ void MainWindow::onWorkspaceLines() {
 }
 
 void MainWindow::updateWorkspaceStatus() {
+    updateWorkspaceActions();
     const int lines = m_workspace.count();
     m_workspaceLabel->setVisible(lines > 0);
     QStringList down;
@@ -138,6 +154,7 @@ void MainWindow::askToSaveWorkspace(bool choosePath) {
             path.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) +
                                  QStringLiteral("/workspace.json")
                            : path,
+
             tr("TipScope workspaces (*.json)"));
     if (path.isEmpty())
         return;
