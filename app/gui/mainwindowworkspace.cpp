@@ -6,6 +6,8 @@
 #include "devicetree.h"
 #include "linepages.h"
 
+#include "widgets/startfolder.h"
+
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -16,7 +18,6 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStackedWidget>
-#include <QStandardPaths>
 
 namespace tipscope::gui {
 
@@ -151,10 +152,7 @@ void MainWindow::askToSaveWorkspace(bool choosePath) {
     if (choosePath || path.isEmpty())
         path = QFileDialog::getSaveFileName(
             this, tr("Save workspace"),
-            path.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) +
-                                 QStringLiteral("/workspace.json")
-                           : path,
-
+            path.isEmpty() ? startFolder() + QStringLiteral("/workspace.json") : path,
             tr("TipScope workspaces (*.json)"));
     if (path.isEmpty())
         return;

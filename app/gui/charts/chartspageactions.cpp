@@ -10,6 +10,8 @@
 #include "widgets/elidedlabel.h"
 #include "widgets/flowlayout.h"
 
+#include "widgets/startfolder.h"
+
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDateTime>
@@ -20,7 +22,6 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
-#include <QStandardPaths>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -34,7 +35,7 @@ QString ChartsPage::softwareVersion() {
 }
 
 QString ChartsPage::suggestedPath(const QString &suffix) {
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString folder = startFolder();
     return folder + QStringLiteral("/tipscope-") +
            QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")) + suffix;
 }

@@ -4,6 +4,8 @@
 
 #include "model/io/atomicsave.h"
 
+#include "widgets/startfolder.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QClipboard>
@@ -18,7 +20,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollBar>
-#include <QStandardPaths>
 #include <QStyle>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -320,8 +321,7 @@ void EventHistoryPanel::chooseExportFile() {
     const QString name =
         QStringLiteral("tipscope-events-%1.txt")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmm")));
-    const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-
+    const QString dir = startFolder();
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Export events"), QDir(dir).filePath(name), tr("Text files (*.txt *.tsv)"));
     if (path.isEmpty())
