@@ -175,8 +175,14 @@ void TestErrorsPage::latchedAlarmShowsAsWarningOnItsPort() {
         stateText(state(), portName(3), Alarm).contains(QLatin1String("High temperature")),
         kReadMs);
     QCOMPARE(stateText(state(), portName(3), Severity), QStringLiteral("Warning"));
-    // The station row
- has no alarm column of its own.
+    // An alarm has what to check in words too, as an error has.
+    auto *advice = m_page->findChild<QLabel *>(QStringLiteral("errorAdvice"));
+    QVERIFY(advice);
+    QTRY_VERIFY(advice->isVisibleTo(m_page.get()));
+    QVERIFY2(advice->text().contains(portName(3) + QStringLiteral(", High temperature alarm: ")) &&
+                 advice->text().contains(QStringLiteral("high alarm limit")),
+             qPrintable(advice->text()));
+    // The station row has no alarm column of its own.
     QCOMPARE(stateText(state(), m_session->station()->displayName(), Alarm), QString());
 }
 

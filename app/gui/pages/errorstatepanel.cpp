@@ -197,8 +197,13 @@ void ErrorStatePanel::updateRow(int row) {
     // "No tool" on an empty port is information, not a fault to chase.
     const QString advice =
         s.errorLevel >= Level::Warning ? device->errorAdvice(m_rows.at(row).port) : QString();
-    const QString said =
-        advice.isEmpty() ? QString() : tr("%1, %2: %3").arg(s.where, s.explanation, advice);
+    QStringList saidParts;
+    if (!advice.isEmpty())
+        saidParts.append(tr("%1, %2: %3").arg(s.where, s.explanation, advice));
+    // An alarm is no error code, but the technician has as much to look at.
+    if (s.alarm && s.alarm->any())
+        saidParts.append(tr("%1, %2 alarm: %3").arg(s.where, s.alarm->text(), s.alarm->advice()));
+    const QString said = saidParts.join(QStringLiteral("\n• "));
     if (said != m_rowAdvice.value(row)) {
         if (said.isEmpty())
             m_rowAdvice.remove(row);
