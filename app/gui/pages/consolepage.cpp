@@ -16,6 +16,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QMessageBox>
 #include <QRegularExpression>
 #include <QScrollBar>
@@ -93,7 +94,8 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     // the page folds its last items away, and the count of held rows must stay in sight.
     m_count = new QLabel(this);
     m_count->setObjectName(QStringLiteral("rowCountLabel"));
-    m_count->setToolTip(tr("While paused, new rows are held; they appear on resume."));
+    m_count->setToolTip(tr("Older rows go as new ones come; Save… writes the rows kept to a "
+                           "file. While paused, new rows are held; they appear on resume."));
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(bar);
     layout->addWidget(m_table, 1);
@@ -370,7 +372,11 @@ void ConsolePage::copySelection() {
 }
 
 void ConsolePage::updateCount() {
-    QString text = tr("%1 of %2 rows shown").arg(m_proxy->rowCount()).arg(m_model->rowCount());
+    // A busy line fills the console in minutes: people should know the oldest rows go.
+    QString text = tr("%1 of %2 rows shown; the newest %3 are kept")
+                       .arg(m_proxy->rowCount())
+                       .arg(m_model->rowCount())
+                       .arg(QLocale().toString(m_model->capacity()));
     if (m_model->isPaused())
         text += QStringLiteral(" · ") + tr("paused: %n held", "", m_model->heldCount());
     m_count->setText(text);
