@@ -74,6 +74,7 @@ private Q_SLOTS:
     void copyPutsTheSelectedRowsOnTheClipboard();
     void exportTextWritesTheShownRowsTabSeparated();
     void aFloodOfOneWarningIsOneRowWithItsCountAndSpan();
+    void aLongSourceIsShownWhole();
 
 private:
     void connectDemo();
@@ -388,6 +389,23 @@ void TestErrorsPage::aFloodOfOneWarningIsOneRowWithItsCountAndSpan() {
     QVERIFY2(
         text.startsWith(QStringLiteral("not sent: the line is not connected (75 times, until ")),
         qPrintable(text));
+}
+
+// A device named by its workspace line, in German: "DME-2C, Adresse 01, Port 4" was cut before
+// its port in a column sized for the English "DME-2C at 01, port 4".
+void TestErrorsPage::aLongSourceIsShownWhole() {
+    const QString source = QStringLiteral("Rework station B, Adresse 01, Port 4");
+    m_session->eventLog().add(Event::Kind::PortError, Event::Severity::Error, source,
+                              QStringLiteral("Short circuit"));
+    QTableView *view = history();
+    QTRY_COMPARE(view->model()->rowCount(), 1);
+    QCOMPARE(view->model()->index(0, Source).data().toString(), source);
+    const QRect cell = view->visualRect(view->model()->index(0, Source));
+    QVERIFY2(cell.width() > view->fontMetrics().horizontalAdvance(source) + 8,
+             qPrintable(QStringLiteral("%1 px for %2 px of text")
+                            .arg(cell.width())
+                            .arg(view->fontMetrics().horizontalAdvance(source))));
+    QVERIFY(cell.right() < view->viewport()->width()); // what happened still has its room
 }
 
 QTEST_MAIN(TestErrorsPage)

@@ -79,6 +79,7 @@ EventHistoryPanel::EventHistoryPanel(Session &session, QWidget *parent)
     m_events->reset(m_session.eventLog().events());
     addDevices(m_session.eventLog().events());
     fitTimeColumn();
+    fitSourceColumn(m_session.eventLog().events());
     updateCount();
 }
 
@@ -230,6 +231,7 @@ void EventHistoryPanel::flushEvents() {
     const int before = m_filter->rowCount();
     m_events->append(m_pending);
     addDevices(m_pending);
+    fitSourceColumn(m_pending);
     m_pending.clear();
     fitTimeColumn();
     if (follow)
@@ -248,6 +250,23 @@ void EventHistoryPanel::fitTimeColumn() {
     const int pad = 24 + style()->pixelMetric(QStyle::PM_SmallIconSize);
     m_history->horizontalHeader()->resizeSection(EventHistoryModel::Time,
                                                  fontMetrics().horizontalAdvance(widest) + pad);
+}
+
+// A source names its device and port in the interface language ("DME-2C, Adresse 01, Port 4"),
+// and a workspace line may give the device a long name: the column grows to the widest source
+// shown, never narrower than it was, and leaves the text of what happened at least half.
+void EventHistoryPanel::fitSourceColumn(const QList<Event> &events) {
+    constexpr int kPad = 24;
+    for (const Event &e : events)
+        m_widestSource =
+            qMax(m_widestSource, fontMetrics().horizontalAdvance(
+                                     EventHistoryModel::text(e, EventHistoryModel::Source, false)) +
+                                     kPad);
+    QHeaderView *header = m_history->horizontalHeader();
+    const int shown = header->sectionSize(EventHistoryModel::Source);
+    const int wanted = qMin(m_widestSource, qMax(shown, m_history->viewport()->width() / 3));
+    if (wanted > shown)
+        header->resizeSection(EventHistoryModel::Source, wanted);
 }
 
 void EventHistoryPanel::addDevices(const QList<Event> &events) {

@@ -42,6 +42,7 @@ private:
     void buildView(QVBoxLayout &layout);
     void flushEvents();
     void fitTimeColumn();
+    void fitSourceColumn(const QList<model::Event> &events);
     void applyFilters();
     void updateCount();
     void updateButtons();
@@ -65,6 +66,7 @@ private:
     QList<model::Event> m_pending;
     QHash<quint64, model::Event> m_repeats; // by id: rows whose count grew since the last flush
     QTimer m_flush;
+    int m_widestSource = 0; // the room the widest source seen needs
 };
 
 } // namespace tipscope::gui
