@@ -19,11 +19,13 @@
 #include <QDoubleSpinBox>
 #include <QGroupBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStyleOptionComboBox>
 #include <QTabBar>
 #include <QTabWidget>
+#include <QToolButton>
 #include <QTranslator>
 #include <QtTest>
 
@@ -83,6 +85,31 @@ QString clipped(QWidget *w) {
                                                         .arg(hint.width())
                                                         .arg(button->width())
                                                   : QString();
+    }
+    if (auto *edit = qobject_cast<QLineEdit *>(w)) {
+        // The example in an empty field says what to type: cut, it says nothing. Its room ends
+        // where the field's own buttons (clear, or a combo box's arrow outside it) begin.
+        if (!edit->text().isEmpty() || edit->placeholderText().isEmpty())
+            return {};
+        QStyleOptionFrame option;
+        option.initFrom(edit);
+        option.rect = edit->rect();
+        option.lineWidth =
+            edit->hasFrame()
+                ? edit->style()->pixelMetric(QStyle::PM_DefaultFrameWidth, &option, edit)
+                : 0;
+        QRect room = edit->style()
+                         ->subElementRect(QStyle::SE_LineEditContents, &option, edit)
+                         .marginsRemoved(edit->textMargins());
+        for (const QToolButton *b : edit->findChildren<QToolButton *>())
+            if (b->isVisibleTo(edit))
+                room.setRight(qMin(room.right(), b->x() - 1));
+        const int width = edit->fontMetrics().horizontalAdvance(edit->placeholderText());
+        return width > room.width() - 4 ? QStringLiteral("placeholder \"%1\" needs %2 px, has %3")
+                                              .arg(edit->placeholderText())
+                                              .arg(width)
+                                              .arg(room.width() - 4)
+                                        : QString();
     }
     if (auto *combo = qobject_cast<QComboBox *>(w)) {
         if (combo->currentText().isEmpty())

@@ -4,6 +4,7 @@
 
 #include "protocol/catalogtext.h"
 #include "protocol/hexbytes.h"
+#include "widgets/placeholderfit.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -196,6 +197,7 @@ void ConsolePage::buildToolBar(QToolBar *bar) {
     m_command->setPlaceholderText(tr("e.g. ST1"));
     m_command->setClearButtonEnabled(true);
     m_command->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('W')) * 10);
+    fitPlaceholders(*m_command, {m_command->placeholderText()});
     commandLabel->setBuddy(m_command);
     bar->addWidget(commandLabel);
     bar->addWidget(m_command);
