@@ -67,6 +67,9 @@ void ChartsPage::buildToolbar(QVBoxLayout *layout) {
     pairLayout->addWidget(m_window);
     m_window->setObjectName(QStringLiteral("windowCombo"));
     m_window->setAccessibleName(tr("Time window"));
+    // A zoom adds its own length ("1 min 36 s"), longer than the lengths offered: sized once,
+    // the box cut it to "1 min 3".
+    m_window->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     windowLabel->setBuddy(m_window);
     const std::pair<QString, qint64> windows[] = {
         {tr("30 s"), 30'000},        {tr("1 min"), 60'000},        {tr("5 min"), 300'000},
