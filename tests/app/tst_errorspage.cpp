@@ -4,10 +4,12 @@
 
 #include "demosession.h"
 #include "sim/simline.h"
+#include "sim/simstation.h"
 
 #include <QApplication>
 #include <QClipboard>
 #include <QComboBox>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -75,6 +77,7 @@ private Q_SLOTS:
     void exportTextWritesTheShownRowsTabSeparated();
     void aFloodOfOneWarningIsOneRowWithItsCountAndSpan();
     void aLongSourceIsShownWhole();
+    void whatToCheckLeavesTheHistoryItsRows();
 
 private:
     void connectDemo();
@@ -406,6 +409,27 @@ void TestErrorsPage::aLongSourceIsShownWhole() {
                             .arg(cell.width())
                             .arg(view->fontMetrics().horizontalAdvance(source))));
     QVERIFY(cell.right() < view->viewport()->width()); // what happened still has its room
+}
+
+// At 1280x720 the page is about 1040x590. Three ports in error and one in alarm have much to
+// check; the history still shows five rows, not two or three.
+void TestErrorsPage::whatToCheckLeavesTheHistoryItsRows() {
+    m_page->resize(1040, 590);
+    connectDemo();
+    sim::SimStation *station = m_session->demoLine()->station();
+    station->setPortError(1, 1);
+    station->setPortError(2, 1);
+    station->setPortError(4, 1);
+    station->latchAlarm(3, 1);
+    auto *advice = m_page->findChild<QLabel *>(QStringLiteral("errorAdvice"));
+    QVERIFY(advice);
+    QTRY_VERIFY_WITH_TIMEOUT(advice->text().count(QStringLiteral("• ")) == 4, kReadMs);
+    QTRY_VERIFY(advice->isVisibleTo(m_page.get()));
+    QTableView *view = history();
+    const int rowHeight = view->verticalHeader()->defaultSectionSize();
+    QTRY_VERIFY2(view->viewport()->height() >= 5 * rowHeight,
+                 qPrintable(QStringLiteral("%1 rows of history shown")
+                                .arg(view->viewport()->height() / rowHeight)));
 }
 
 QTEST_MAIN(TestErrorsPage)
