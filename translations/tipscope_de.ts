@@ -6610,7 +6610,7 @@ Zurücksetzen?</translation>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
         <source>none for reads</source>
-        <translation>keins bei Lesebefehlen</translation>
+        <translation>keine (Lesen)</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>

@@ -6610,7 +6610,7 @@ Reset it?</source>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
         <source>none for reads</source>
-        <translation>ninguno en lecturas</translation>
+        <translation>nada al leer</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
