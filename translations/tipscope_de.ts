@@ -4887,132 +4887,132 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>1 h</source>
         <translation>1 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>4 h</source>
         <translation>4 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="74"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
         <source>12 h</source>
         <translation>12 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="74"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
         <source>24 h</source>
         <translation>24 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="81"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="84"/>
         <source>&amp;Follow</source>
         <translation>&amp;Mitlaufen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="84"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
         <source>Keep the newest data at the right edge; uncheck to pause</source>
         <translation>Die neuesten Daten am rechten Rand halten; zum Anhalten abwählen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="90"/>
         <source>&amp;Reset view</source>
         <translation>Ansicht zu&amp;rücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="94"/>
         <source>Pane layout</source>
         <translation>Anordnung der Bereiche</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
         <source>Ports overlaid</source>
         <translation>Ports überlagert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="96"/>
         <source>One pane per port</source>
         <translation>Ein Bereich pro Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="97"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="100"/>
         <source>Trans&amp;istor, transformer</source>
         <translation>Trans&amp;istor, Transformator</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="99"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
         <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
         <translation>Auch die Transistortemperatur jedes Ports und die Transformatortemperatur der Station zeichnen (alle paar Sekunden gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="103"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Sichtbares Zeitfenster als &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="107"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Sichtbares Zeitfenster als &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="112"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Aufzeichnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="111"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="114"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Jeden neuen Messwert und jedes Ereignis in eine CSV-Datei schreiben, bis abgewählt</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="113"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="116"/>
         <source>&amp;Open recording…</source>
         <translation>Aufzeichnung ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="115"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="118"/>
         <source>Back to &amp;live</source>
         <translation>Zurück zu &amp;Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="120"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
         <source>Data shown</source>
         <translation>Angezeigte Daten</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="126"/>
         <source>Recording stopped</source>
         <translation>Aufzeichnung beendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="124"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="127"/>
         <source>Writing %1 failed: %2</source>
         <translation>Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
@@ -5032,7 +5032,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Alarm tief</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="158"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Wiedergabe: %1 (%Ln Zeile)</numerusform>
@@ -5040,12 +5040,12 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="173"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
         <source> · recording to %1</source>
         <translation> · Aufzeichnung in %1</translation>
     </message>
@@ -5101,7 +5101,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Die Datei enthält jeden Messwert ab %1. Der ältere Verlauf des Diagramms wird nur als Minimum und Maximum je einige Sekunden aufbewahrt, und das kann eine Datei von Messwerten nicht enthalten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="204"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="207"/>
         <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
@@ -5118,17 +5118,17 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Record to CSV file</source>
         <translation>In CSV-Datei aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="207"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Record</source>
         <translation>Aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="207"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Cannot record: %1</source>
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>
@@ -5342,186 +5342,186 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="88"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="89"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="97"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="98"/>
         <source>Older rows go as new ones come; Save… writes the rows kept to a file. While paused, new rows are held; they appear on resume.</source>
         <translation>Ältere Zeilen weichen den neuen; Speichern… schreibt die behaltenen Zeilen in eine Datei. Während der Pause werden neue Zeilen zurückgehalten; sie erscheinen beim Fortsetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="138"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="339"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="139"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="341"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="147"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Relative time</source>
         <translation>Relative Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="150"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>Show bytes sent</source>
         <translation>Gesendete Bytes anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>RX chunks</source>
         <translation>RX-Blöcke</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Frames</source>
         <translation>Telegramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show received frames, decoded</source>
         <translation>Empfangene Telegramme dekodiert anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Notes</source>
         <translation>Hinweise</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="179"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>De&amp;vice:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="182"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
         <source>Device address filter</source>
         <translation>Filter für Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="184"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="192"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Co&amp;mmand:</source>
         <translation>Be&amp;fehl:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="195"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
         <source>Command filter</source>
         <translation>Befehlsfilter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="197"/>
         <source>e.g. ST1</source>
         <translation>z. B. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="207"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="207"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="209"/>
         <source>Remove every row, held ones included</source>
         <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="210"/>
         <source>Save…</source>
         <translation>Speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="210"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="212"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="216"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="218"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="262"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="264"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="276"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="278"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="290"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="300"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="318"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="292"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="302"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="320"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="339"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="341"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="357"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
         <source>%1 of %2 rows shown; the newest %3 are kept</source>
         <translation>%1 von %2 Zeilen angezeigt; die neuesten %3 werden behalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="381"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>angehalten: %n zurückgehalten</numerusform>
@@ -5534,7 +5534,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Konsole</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
         <source>The console could not be saved:
 %1</source>
         <translation>Die Konsole konnte nicht gespeichert werden:
@@ -5865,133 +5865,133 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="62"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="80"/>
         <source>Current state</source>
         <translation>Aktueller Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Current errors and alarms</source>
         <translation>Aktuelle Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Where</source>
         <translation>Ort</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Temperature alarm</source>
         <translation>Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
         <source>&amp;Reset feeder error</source>
         <translation>Vorschubfehler &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
         <source>Reset feeder error</source>
         <translation>Vorschubfehler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="101"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="160"/>
         <source>No device is connected.</source>
         <translation>Kein Gerät verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180"/>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="193"/>
         <source>Error code %1: %2</source>
         <translation>Fehlercode %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="207"/>
         <source>This device has no temperature alarm</source>
         <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="205"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
         <source>%1, %2 alarm: %3</source>
         <translation>%1, Alarm %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="232"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="243"/>
         <source>Not reset: %1</source>
         <translation>Nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="235"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="246"/>
         <source>Resetting the feeder error…</source>
         <translation>Vorschubfehler wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="242"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="253"/>
         <source>Feeder error reset.</source>
         <translation>Vorschubfehler zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="243"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
         <source>The feeder error was not reset: %1</source>
         <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="256"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="267"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="259"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="270"/>
         <source>No feeder is connected</source>
         <translation>Kein Lotdrahtvorschub verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="262"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="273"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="108"/>
         <source>What to check</source>
         <translation>Was zu prüfen ist</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="202"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="213"/>
         <source>%1, %2: %3</source>
         <translation>%1, %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="221"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="232"/>
         <source>What to check:</source>
         <translation>Was zu prüfen ist:</translation>
     </message>
@@ -6012,194 +6012,194 @@ Fortfahren?</translation>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
         <source>Show events of kind</source>
         <translation>Ereignisse dieser Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Errors and alarms</source>
         <translation>Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Station errors</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Port errors</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Feeder errors</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Status changes</source>
         <translation>Statuswechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
         <source>Writes</source>
         <translation>Schreibzugriffe</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
         <source>Tool changes</source>
         <translation>Werkzeugwechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
         <source>Joints</source>
         <translation>Lötstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Profile applies</source>
         <translation>Profilanwendungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
         <source>Show events of device</source>
         <translation>Ereignisse des Geräts anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="109"/>
         <source>Every device</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="120"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
         <source>&amp;Device:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="126"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="127"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="129"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="130"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="164"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="196"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="199"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="200"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="201"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="201"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="326"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="332"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="202"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="345"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="351"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="203"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="204"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="277"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="279"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="298"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -6207,17 +6207,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="326"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="345"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="330"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="349"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="333"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="352"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>
@@ -6478,152 +6478,154 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="35"/>
         <source>Send a frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="62"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>R (read)</source>
         <translation>R (lesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="69"/>
         <source>W (write)</source>
         <translation>W (schreiben)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="70"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="71"/>
         <source>Command</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="80"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="81"/>
         <source>Data field</source>
         <translation>Datenfeld</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="84"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
         <source>&amp;Send frame</source>
         <translation>Telegramm &amp;senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
         <source>Send frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
         <source>Frame to be sent</source>
         <translation>Zu sendendes Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="91"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
         <source>Catalog check</source>
         <translation>Katalogprüfung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
         <source>Raw bytes in hex</source>
         <translation>Rohbytes hexadezimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Send ra&amp;w hex</source>
         <translation>Roh-He&amp;x senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
         <source>Send raw hex</source>
         <translation>Roh-Hex senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="104"/>
         <source>Raw bytes check</source>
         <translation>Prüfung der Rohbytes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="105"/>
         <source>Nothing sent yet.</source>
         <translation>Noch nichts gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="103"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
         <source>Outcome of the last send</source>
         <translation>Ergebnis des letzten Sendens</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="115"/>
         <source>&amp;Device</source>
         <translation>Ger&amp;ät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="117"/>
         <source>&amp;Header</source>
         <translation>&amp;Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>C&amp;ommand</source>
         <translation>Befeh&amp;l</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="118"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>D&amp;ata</source>
         <translation>Date&amp;n</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
         <source>Frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="127"/>
         <source>&amp;Raw hex</source>
         <translation>&amp;Roh-Hex</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="128"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="131"/>
         <source>Last send</source>
         <translation>Letztes Senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="237"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="240"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Diese Bytes genau wie eingegeben senden; die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="208"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
         <source>(nothing to send)</source>
         <translation>(nichts zu senden)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
         <source>none for reads</source>
         <translation>keine (Lesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
         <source>e.g. 00350</source>
         <translation>z. B. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="224"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Dieses Telegramm einmal wie angezeigt senden (ohne Wiederholungen; Katalogwarnungen halten es nicht auf). Die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="259"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
         <source>Not sent: %1</source>
         <translation>Nicht gesendet: %1</translation>
     </message>

@@ -171,7 +171,7 @@
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="158"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Replay: %1 (%Ln row)</numerusform>
@@ -182,7 +182,7 @@
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="381"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>paused: %n held</numerusform>
@@ -193,7 +193,7 @@
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="279"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="298"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>

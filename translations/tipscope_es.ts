@@ -4887,132 +4887,132 @@ Hágalo permanente con esta regla de udev:
         <translation>Ventana de tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>1 h</source>
         <translation>1 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>4 h</source>
         <translation>4 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="74"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
         <source>12 h</source>
         <translation>12 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="74"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
         <source>24 h</source>
         <translation>24 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="81"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="84"/>
         <source>&amp;Follow</source>
         <translation>Segu&amp;ir</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="84"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
         <source>Keep the newest data at the right edge; uncheck to pause</source>
         <translation>Mantener los datos más recientes en el borde derecho; desmarque para pausar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="90"/>
         <source>&amp;Reset view</source>
         <translation>&amp;Restablecer vista</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="94"/>
         <source>Pane layout</source>
         <translation>Disposición de los paneles</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
         <source>Ports overlaid</source>
         <translation>Puertos superpuestos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="93"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="96"/>
         <source>One pane per port</source>
         <translation>Un panel por puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="97"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="100"/>
         <source>Trans&amp;istor, transformer</source>
         <translation>Trans&amp;istor, transformador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="99"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
         <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
         <translation>Dibujar también la temperatura del transistor de cada puerto y la del transformador de la estación (leídas cada pocos segundos)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="103"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Ventana visible como &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="107"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Ventana visible como &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="112"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Grabar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="111"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="114"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Escribir cada nueva muestra y evento en un archivo CSV hasta desmarcarlo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="113"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="116"/>
         <source>&amp;Open recording…</source>
         <translation>Abrir grabació&amp;n…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="115"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="118"/>
         <source>Back to &amp;live</source>
         <translation>Volver a &amp;tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="120"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
         <source>Data shown</source>
         <translation>Datos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="126"/>
         <source>Recording stopped</source>
         <translation>Grabación detenida</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="124"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="127"/>
         <source>Writing %1 failed: %2</source>
         <translation>Falló la escritura de %1: %2</translation>
     </message>
@@ -5032,7 +5032,7 @@ Hágalo permanente con esta regla de udev:
         <translation>Alarma baja</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="155"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="158"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Reproducción: %1 (%Ln fila)</numerusform>
@@ -5040,12 +5040,12 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="157"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
         <source>Live</source>
         <translation>Tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="173"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
         <source> · recording to %1</source>
         <translation> · grabando en %1</translation>
     </message>
@@ -5101,7 +5101,7 @@ Hágalo permanente con esta regla de udev:
         <translation>El archivo contiene cada muestra a partir de %1. El historial más antiguo del gráfico solo se guarda como mínimo y máximo cada pocos segundos, y eso no cabe en un archivo de muestras.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="204"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="207"/>
         <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
@@ -5118,17 +5118,17 @@ Hágalo permanente con esta regla de udev:
         <translation>Falló la exportación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Record to CSV file</source>
         <translation>Grabar en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="207"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Record</source>
         <translation>Grabar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="207"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Cannot record: %1</source>
         <translation>No se puede grabar: %1</translation>
     </message>
@@ -5342,186 +5342,186 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="88"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="89"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="97"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="98"/>
         <source>Older rows go as new ones come; Save… writes the rows kept to a file. While paused, new rows are held; they appear on resume.</source>
         <translation>Las filas antiguas se descartan a medida que llegan otras nuevas; Guardar… escribe en un archivo las filas conservadas. En pausa, las filas nuevas se retienen; aparecen al reanudar.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="138"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="339"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="139"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="341"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="143"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="147"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Relative time</source>
         <translation>Tiempo relativo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="150"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="165"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
         <source>Show:</source>
         <translation>Mostrar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>Show bytes sent</source>
         <translation>Mostrar los bytes enviados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="169"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>RX chunks</source>
         <translation>Bloques RX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Frames</source>
         <translation>Tramas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show received frames, decoded</source>
         <translation>Mostrar las tramas recibidas, decodificadas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="175"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="179"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>De&amp;vice:</source>
         <translation>Equi&amp;po:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="182"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
         <source>Device address filter</source>
         <translation>Filtro de dirección de equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="184"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="192"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Co&amp;mmand:</source>
         <translation>Co&amp;mando:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="195"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
         <source>Command filter</source>
         <translation>Filtro de comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="197"/>
         <source>e.g. ST1</source>
         <translation>p. ej. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="207"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="207"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="209"/>
         <source>Remove every row, held ones included</source>
         <translation>Quitar todas las filas, incluidas las retenidas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="210"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="210"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="212"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="216"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="218"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="262"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="264"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="276"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="278"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="290"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="300"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="318"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="292"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="302"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="320"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="339"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="341"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="352"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="357"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="353"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="376"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
         <source>%1 of %2 rows shown; the newest %3 are kept</source>
         <translation>%1 de %2 filas mostradas; se conservan las %3 más recientes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="381"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>en pausa: %n retenida</numerusform>
@@ -5534,7 +5534,7 @@ Hágalo permanente con esta regla de udev:
         <translation>Consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="358"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
         <source>The console could not be saved:
 %1</source>
         <translation>No se pudo guardar la consola:
@@ -5865,133 +5865,133 @@ Continue?</source>
 <context>
     <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="62"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="80"/>
         <source>Current state</source>
         <translation>Estado actual</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Current errors and alarms</source>
         <translation>Errores y alarmas actuales</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Where</source>
         <translation>Dónde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Temperature alarm</source>
         <translation>Alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
         <source>&amp;Reset feeder error</source>
         <translation>&amp;Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
         <source>Reset feeder error</source>
         <translation>Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="101"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="160"/>
         <source>No device is connected.</source>
         <translation>No hay ningún equipo conectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180"/>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="193"/>
         <source>Error code %1: %2</source>
         <translation>Código de error %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="207"/>
         <source>This device has no temperature alarm</source>
         <translation>Este equipo no tiene alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="205"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
         <source>%1, %2 alarm: %3</source>
         <translation>%1, alarma «%2»: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="232"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="243"/>
         <source>Not reset: %1</source>
         <translation>No se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="235"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="246"/>
         <source>Resetting the feeder error…</source>
         <translation>Borrando el error del alimentador…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="242"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="253"/>
         <source>Feeder error reset.</source>
         <translation>Error del alimentador borrado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="243"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
         <source>The feeder error was not reset: %1</source>
         <translation>El error del alimentador no se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="256"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="267"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="259"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="270"/>
         <source>No feeder is connected</source>
         <translation>No hay ningún alimentador conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="262"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="273"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="108"/>
         <source>What to check</source>
         <translation>Qué comprobar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="202"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="213"/>
         <source>%1, %2: %3</source>
         <translation>%1, %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="221"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="232"/>
         <source>What to check:</source>
         <translation>Qué comprobar:</translation>
     </message>
@@ -6012,194 +6012,194 @@ Continue?</source>
         <translation>Historial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
         <source>Show events of kind</source>
         <translation>Mostrar eventos del tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>All kinds</source>
         <translation>Todos los tipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Errors and alarms</source>
         <translation>Errores y alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Station errors</source>
         <translation>Errores de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Port errors</source>
         <translation>Errores de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Feeder errors</source>
         <translation>Errores del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Alarms</source>
         <translation>Alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Status changes</source>
         <translation>Cambios de estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
         <source>Writes</source>
         <translation>Escrituras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
         <source>Tool changes</source>
         <translation>Cambios de herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
         <source>Joints</source>
         <translation>Soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Profile applies</source>
         <translation>Aplicaciones de perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
         <source>Show events of device</source>
         <translation>Mostrar eventos del equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="109"/>
         <source>Every device</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="120"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="123"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
         <source>&amp;Device:</source>
         <translation>&amp;Equipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="125"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="126"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="127"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="129"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="130"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="163"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="164"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="187"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="196"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="199"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="200"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="201"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="201"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="326"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="332"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="202"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="345"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="351"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="203"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="204"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="277"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="279"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="298"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -6207,17 +6207,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="326"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="345"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="330"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="349"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="333"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="352"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
@@ -6478,152 +6478,154 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="35"/>
         <source>Send a frame</source>
         <translation>Enviar una trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="62"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>R (read)</source>
         <translation>R (lectura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="69"/>
         <source>W (write)</source>
         <translation>W (escritura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="70"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="71"/>
         <source>Command</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="80"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="81"/>
         <source>Data field</source>
         <translation>Campo de datos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="84"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
         <source>&amp;Send frame</source>
         <translation>&amp;Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
         <source>Send frame</source>
         <translation>Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
         <source>Frame to be sent</source>
         <translation>Trama que se enviará</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="91"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
         <source>Catalog check</source>
         <translation>Comprobación del catálogo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
         <source>Raw bytes in hex</source>
         <translation>Bytes en bruto en hexadecimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Send ra&amp;w hex</source>
         <translation>Enviar he&amp;x en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
         <source>Send raw hex</source>
         <translation>Enviar hex en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="104"/>
         <source>Raw bytes check</source>
         <translation>Comprobación de los bytes en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="105"/>
         <source>Nothing sent yet.</source>
         <translation>Aún no se ha enviado nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="103"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
         <source>Outcome of the last send</source>
         <translation>Resultado del último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="115"/>
         <source>&amp;Device</source>
         <translation>E&amp;quipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="117"/>
         <source>&amp;Header</source>
         <translation>Ca&amp;becera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>C&amp;ommand</source>
         <translation>C&amp;omando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="118"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>D&amp;ata</source>
         <translation>Da&amp;tos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
         <source>Frame</source>
         <translation>Trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="127"/>
         <source>&amp;Raw hex</source>
         <translation>Hex en b&amp;ruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="128"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="131"/>
         <source>Last send</source>
         <translation>Último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="237"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="240"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Enviar estos bytes exactamente como se han escrito; la respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="208"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
         <source>(nothing to send)</source>
         <translation>(nada que enviar)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
         <source>none for reads</source>
         <translation>nada al leer</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
         <source>e.g. 00350</source>
         <translation>p. ej. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="224"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Enviar esta trama una vez, tal como se muestra (sin reintentos; los avisos del catálogo no la detienen). Su respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="259"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
         <source>Not sent: %1</source>
         <translation>No enviado: %1</translation>
     </message>
