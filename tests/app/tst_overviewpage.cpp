@@ -169,6 +169,11 @@ void TestOverviewPage::noSideScrollingAtTheWindowsDefaultSizeWithAJointAndAnErro
     auto *scroll = page->findChild<QScrollArea *>();
     QVERIFY(scroll);
     QTRY_COMPARE(scroll->horizontalScrollBar()->maximum(), 0);
+    // The joint is read at a glance: on one line, the title wrapping if one must.
+    auto *jointLine = page->card(2)->findChild<QLabel *>(QStringLiteral("lastJoint"));
+    QVERIFY(jointLine);
+    QVERIFY2(jointLine->height() < 2 * jointLine->fontMetrics().lineSpacing(),
+             qPrintable(QString::number(jointLine->height())));
     for (int port : {2, 4}) {
         PortCard *card = page->card(port);
         const QRect shown(card->mapTo(scroll->viewport(), QPoint(0, 0)), card->size());

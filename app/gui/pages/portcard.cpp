@@ -50,12 +50,12 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
     m_values = new QWidget(this);
     m_title = new QLabel(m_values);
     m_title->setFont(scaled(m_title->font(), 1.2, true));
-    // The title and the last joint share a line and wrap, rather than widen the card: a long
-    // tool name beside a joint pushed the right-hand cards under a side scroll bar.
+    // The title and the last joint share a line; the title wraps rather than widen the card (a
+    // long tool name beside a joint pushed the right-hand cards under a side scroll bar). The
+    // joint keeps one line: wrapping too, it took two where the title had room to give.
     m_title->setWordWrap(true);
     m_joint = new QLabel(m_values);
     m_joint->setObjectName(QStringLiteral("lastJoint"));
-    m_joint->setWordWrap(true);
     m_joint->setAlignment(Qt::AlignRight | Qt::AlignBottom);
     m_joint->hide();
     m_tip = new QLabel(m_values);
