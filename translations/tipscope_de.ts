@@ -1917,7 +1917,7 @@
     </message>
     <message>
         <location filename="../app/cli/climonitor.cpp" line="229"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="25"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -3729,8 +3729,18 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Motor rückwärts</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="105"/>
-        <location filename="../lib/model/portmodel.cpp" line="120"/>
+        <location filename="../lib/model/portmodel.cpp" line="71"/>
+        <source>the tip went above the high alarm limit: if the selected temperature was just lowered, wait for the tip to cool; check that the tip suits the tool and the high alarm limit (Settings, Alarms)</source>
+        <translation>die Lötspitze lag über der oberen Alarmgrenze: wurde die gewählte Temperatur gerade gesenkt, abwarten, bis die Spitze abgekühlt ist; prüfen, ob die Spitze zum Werkzeug passt, und die obere Alarmgrenze (Einstellungen, Alarme)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="76"/>
+        <source>the tip fell below the low alarm limit: the joint may draw more heat than the tip gives (a larger tip), the tip may be worn or not tinned; check the low alarm limit (Settings, Alarms)</source>
+        <translation>die Lötspitze fiel unter die untere Alarmgrenze: die Lötstelle braucht vielleicht mehr Wärme, als die Spitze liefert (eine größere Spitze), oder die Spitze ist verschlissen oder nicht verzinnt; die untere Alarmgrenze prüfen (Einstellungen, Alarme)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="122"/>
+        <location filename="../lib/model/portmodel.cpp" line="137"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -3750,7 +3760,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>Keiner</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="181"/>
+        <location filename="../lib/model/portmodel.cpp" line="198"/>
         <source>this port has no %1 command</source>
         <translation>dieser Port hat keinen Befehl %1</translation>
     </message>
@@ -3917,7 +3927,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>abgebrochen: die übrigen Werte wurden nicht geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="60"/>
+        <location filename="../lib/model/profileapplier.cpp" line="61"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n Unterschied</numerusform>
@@ -3925,54 +3935,59 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="61"/>
+        <location filename="../lib/model/profileapplier.cpp" line="62"/>
+        <source>%1 would change, %2 already right</source>
+        <translation>%1 würden geändert, %2 bereits richtig</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="65"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 geändert, %2 bereits richtig, %3 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="109"/>
+        <location filename="../lib/model/profileapplier.cpp" line="113"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>das Profil ist für %1, dieses Gerät ist %2 (erzwingen, um die gemeinsamen Einstellungen anzuwenden)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="114"/>
+        <location filename="../lib/model/profileapplier.cpp" line="118"/>
         <source>monitor-only mode is on</source>
         <translation>der Modus „Nur beobachten“ ist aktiv</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="175"/>
+        <location filename="../lib/model/profileapplier.cpp" line="179"/>
         <source>reading the device</source>
         <translation>Gerät wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="237"/>
+        <location filename="../lib/model/profileapplier.cpp" line="241"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="240"/>
+        <location filename="../lib/model/profileapplier.cpp" line="244"/>
         <source>unreadable value</source>
         <translation>unlesbarer Wert</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="299"/>
+        <location filename="../lib/model/profileapplier.cpp" line="303"/>
         <source>profile %1 applied: %2 changed, %3 failed, %4 already right%5</source>
         <translation>Profil %1 angewendet: %2 geändert, %3 fehlgeschlagen, %4 schon richtig%5</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="304"/>
+        <location filename="../lib/model/profileapplier.cpp" line="308"/>
         <source> (cancelled)</source>
         <translation> (abgebrochen)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="81"/>
+        <location filename="../lib/model/profileapplier.cpp" line="85"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>das Profil würde die Grenzen seiner Einstellungen verletzen (MIT ≤ MAT, MIT ≤ ausgewählte Temperatur ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="102"/>
+        <location filename="../lib/model/profileapplier.cpp" line="106"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>keine der Einstellungen des Profils gibt es an diesem %1 (übersprungen: %2)</translation>
     </message>
@@ -3985,7 +4000,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="130"/>
+        <location filename="../lib/model/profileapplier.cpp" line="134"/>
         <source>this %1 has no such setting</source>
         <translation>dieses %1 hat keine solche Einstellung</translation>
     </message>
@@ -4599,28 +4614,28 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%1: der Name gehört schon einer anderen Leitung; jede Leitung braucht einen eigenen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="103"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="98"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="102"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>der Arbeitsbereich %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
         <source>there is no such file</source>
         <translation>diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="104"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>der Arbeitsbereich %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>der Arbeitsbereich %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="110"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
         <source>it is a list</source>
         <translation>er ist eine Liste</translation>
     </message>
@@ -4877,142 +4892,142 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%1 · %2 · %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="63"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="64"/>
         <source>&amp;Window</source>
         <translation>&amp;Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="69"/>
         <source>Time window</source>
         <translation>Zeitfenster</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>1 h</source>
         <translation>1 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>4 h</source>
         <translation>4 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
         <source>12 h</source>
         <translation>12 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
         <source>24 h</source>
         <translation>24 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="80"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="84"/>
         <source>&amp;Follow</source>
         <translation>&amp;Mitlaufen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
         <source>Keep the newest data at the right edge; uncheck to pause</source>
         <translation>Die neuesten Daten am rechten Rand halten; zum Anhalten abwählen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="90"/>
         <source>&amp;Reset view</source>
         <translation>Ansicht zu&amp;rücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="90"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="94"/>
         <source>Pane layout</source>
         <translation>Anordnung der Bereiche</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
         <source>Ports overlaid</source>
         <translation>Ports überlagert</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="96"/>
         <source>One pane per port</source>
         <translation>Ein Bereich pro Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="96"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="100"/>
         <source>Trans&amp;istor, transformer</source>
         <translation>Trans&amp;istor, Transformator</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="98"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
         <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
         <translation>Auch die Transistortemperatur jedes Ports und die Transformatortemperatur der Station zeichnen (alle paar Sekunden gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="105"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Sichtbares Zeitfenster als &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Sichtbares Zeitfenster als &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="108"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="112"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Aufzeichnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="114"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Jeden neuen Messwert und jedes Ereignis in eine CSV-Datei schreiben, bis abgewählt</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="112"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="116"/>
         <source>&amp;Open recording…</source>
         <translation>Aufzeichnung ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="118"/>
         <source>Back to &amp;live</source>
         <translation>Zurück zu &amp;Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
         <source>Data shown</source>
         <translation>Angezeigte Daten</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="122"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="126"/>
         <source>Recording stopped</source>
         <translation>Aufzeichnung beendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="127"/>
         <source>Writing %1 failed: %2</source>
         <translation>Schreiben von %1 fehlgeschlagen: %2</translation>
     </message>
@@ -5032,7 +5047,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Alarm tief</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="154"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="158"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Wiedergabe: %1 (%Ln Zeile)</numerusform>
@@ -5040,12 +5055,12 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="156"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="172"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
         <source> · recording to %1</source>
         <translation> · Aufzeichnung in %1</translation>
     </message>
@@ -5101,7 +5116,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Die Datei enthält jeden Messwert ab %1. Der ältere Verlauf des Diagramms wird nur als Minimum und Maximum je einige Sekunden aufbewahrt, und das kann eine Datei von Messwerten nicht enthalten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="207"/>
         <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
@@ -5118,57 +5133,57 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="202"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Record to CSV file</source>
         <translation>In CSV-Datei aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Record</source>
         <translation>Aufzeichnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Cannot record: %1</source>
         <translation>Aufzeichnung nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="53"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="54"/>
         <source>Open recording</source>
         <translation>Aufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="63"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="64"/>
         <source>Reading %1: %2 MB</source>
         <translation>Lese %1: %2 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="70"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="71"/>
         <source>Reading %1…</source>
         <translation>Lese %1 …</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="117"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="118"/>
         <source>The charts hold no readings of %1 at %2: only this session&apos;s readings are kept.</source>
         <translation>Die Diagramme enthalten keine Messwerte von %1 um %2: nur die Messwerte dieser Sitzung werden behalten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="127"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="128"/>
         <source>Open a chart recording</source>
         <translation>Diagrammaufzeichnung öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="129"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="128"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>CSV-Datei (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="135"/>
         <source>Replay</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="135"/>
         <source>Cannot replay %1</source>
         <translation>%1 kann nicht wiedergegeben werden</translation>
     </message>
@@ -5342,186 +5357,186 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="89"/>
         <source>Console tools</source>
         <translation>Konsolenwerkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="96"/>
-        <source>While paused, new rows are held; they appear on resume.</source>
-        <translation>Solange angehalten ist, werden neue Zeilen zurückgehalten; sie erscheinen beim Fortsetzen.</translation>
+        <location filename="../app/gui/pages/consolepage.cpp" line="98"/>
+        <source>Older rows go as new ones come; Save… writes the rows kept to a file. While paused, new rows are held; they appear on resume.</source>
+        <translation>Ältere Zeilen weichen den neuen; Speichern… schreibt die behaltenen Zeilen in eine Datei. Während der Pause werden neue Zeilen zurückgehalten; sie erscheinen beim Fortsetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="139"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="341"/>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Neue Zeilen zurückhalten (Strg+P); nichts geht verloren, sie erscheinen beim Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Relative time</source>
         <translation>Relative Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Sekunden seit der ersten Zeile statt der Uhrzeit anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>Show bytes sent</source>
         <translation>Gesendete Bytes anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>RX chunks</source>
         <translation>RX-Blöcke</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Bytes so anzeigen, wie der Treiber sie geliefert hat, Block für Block (jedes empfangene Byte steht auch in einer Telegramm- oder Fehlerzeile)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Frames</source>
         <translation>Telegramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show received frames, decoded</source>
         <translation>Empfangene Telegramme dekodiert anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Dekodierfehler anzeigen (BCC, Format, Datenmüll)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Notes</source>
         <translation>Hinweise</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Leitungshinweise anzeigen (Zeitüberschreitungen, Leitungszustand)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>De&amp;vice:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
         <source>Device address filter</source>
         <translation>Filter für Geräteadresse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="184"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Nur Telegramme von oder an diese Adresse; beliebige Adresse 00-99 eingeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Co&amp;mmand:</source>
         <translation>Be&amp;fehl:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
         <source>Command filter</source>
         <translation>Befehlsfilter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="197"/>
         <source>e.g. ST1</source>
         <translation>z. B. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="207"/>
         <source>Clear</source>
         <translation>Leeren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="209"/>
         <source>Remove every row, held ones included</source>
         <translation>Alle Zeilen entfernen, auch die zurückgehaltenen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="210"/>
         <source>Save…</source>
         <translation>Speichern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="212"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Alle Zeilen (nicht nur die angezeigten) in einer Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="214"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="218"/>
         <source>Traffic on the line</source>
         <translation>Verkehr auf der Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="260"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="264"/>
         <source>bad</source>
         <translation>falsch</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="278"/>
         <source>Copy rows</source>
         <translation>Zeilen kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="288"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="316"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="292"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="302"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="320"/>
         <source>All</source>
         <translation>Alle</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="341"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
         <source>Save console</source>
         <translation>Konsole speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="351"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Textdateien (*.txt);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
-        <source>%1 of %2 rows shown</source>
-        <translation>%1 von %2 Zeilen angezeigt</translation>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <source>%1 of %2 rows shown; the newest %3 are kept</source>
+        <translation>%1 von %2 Zeilen angezeigt; die neuesten %3 werden behalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>angehalten: %n zurückgehalten</numerusform>
@@ -5534,7 +5549,7 @@ Dauerhaft mit dieser udev-Regel:
         <translation>Konsole</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
         <source>The console could not be saved:
 %1</source>
         <translation>Die Konsole konnte nicht gespeichert werden:
@@ -5544,194 +5559,194 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="72"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="73"/>
         <source>When the counters were read</source>
         <translation>Zeitpunkt der Zählerabfrage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="74"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="75"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="76"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Re&amp;fresh</source>
         <translation>A&amp;ktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="78"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Alle Zähler aller Geräte jetzt lesen (sonst werden sie einmal pro Minute gelesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="80"/>
         <source>Refresh counters</source>
         <translation>Zähler aktualisieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>&amp;Export CSV…</source>
         <translation>CSV e&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Alle Zähler aller Geräte als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
         <source>Export counters as CSV</source>
         <translation>Zähler als CSV exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>Kein Gerät verbunden. Verbinden Sie sich mit einer Leitung, um die Zähler ihrer Geräte zu lesen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="146"/>
         <source>Reading the counters…</source>
         <translation>Zähler werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="149"/>
         <source>Last reading at %1</source>
         <translation>Letzte Abfrage um %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="151"/>
         <source>Waiting for the first reading…</source>
         <translation>Warte auf die erste Abfrage…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="211"/>
         <source>Station %1</source>
         <translation>Station %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="213"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="244"/>
         <source>Counters of %1</source>
         <translation>Zähler von %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="228"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="229"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="241"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
         <source>Solder feeder %1</source>
         <translation>Lotdrahtvorschub %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="248"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="248"/>
         <source>Partial</source>
         <translation>Teilzähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="291"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="292"/>
         <source>Last read failed: %1</source>
         <translation>Letzte Abfrage fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="295"/>
         <source>Read at %1</source>
         <translation>Gelesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="297"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="298"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="324"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 Der Modus „Nur beobachten“ ist aktiv: es wird nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="326"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>Reset partial counter</source>
         <translation>Teilzähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
         <source>Reset “%1” on %2?</source>
         <translation>„%1“ an %2 zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="329"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="330"/>
         <source>It now reads %1.</source>
         <translation>Er steht jetzt auf %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>The total counter is not affected.</source>
         <translation>Der Gesamtzähler bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
         <source>Reset counter</source>
         <translation>Zähler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="338"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 Es wurde nichts zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="344"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 Nicht zurückgesetzt: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="347"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 %2 wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="354"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 wurde nicht zurückgesetzt: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="367"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um Zähler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="392"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>Export counters</source>
         <translation>Zähler exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Zähler in %2 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="394"/>
         <source>The counters could not be saved: %1</source>
         <translation>Die Zähler konnten nicht gespeichert werden: %1</translation>
     </message>
@@ -5865,128 +5880,133 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="62"/>
         <source>%1, port %2</source>
         <translation>%1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="80"/>
         <source>Current state</source>
         <translation>Aktueller Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Current errors and alarms</source>
         <translation>Aktuelle Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Where</source>
         <translation>Ort</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Severity</source>
         <translation>Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Temperature alarm</source>
         <translation>Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
         <source>&amp;Reset feeder error</source>
         <translation>Vorschubfehler &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
         <source>Reset feeder error</source>
         <translation>Vorschubfehler zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="101"/>
         <source>Result of the last action</source>
         <translation>Ergebnis der letzten Aktion</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="160"/>
         <source>No device is connected.</source>
         <translation>Kein Gerät verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180"/>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="193"/>
         <source>Error code %1: %2</source>
         <translation>Fehlercode %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="207"/>
         <source>This device has no temperature alarm</source>
         <translation>Dieses Gerät hat keinen Temperaturalarm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="227"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
+        <source>%1, %2 alarm: %3</source>
+        <translation>%1, Alarm %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="243"/>
         <source>Not reset: %1</source>
         <translation>Nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="230"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="246"/>
         <source>Resetting the feeder error…</source>
         <translation>Vorschubfehler wird zurückgesetzt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="237"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="253"/>
         <source>Feeder error reset.</source>
         <translation>Vorschubfehler zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="238"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
         <source>The feeder error was not reset: %1</source>
         <translation>Der Vorschubfehler wurde nicht zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="251"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="267"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: TipScope schreibt nichts auf die Geräte. Schalten Sie ihn aus, um den Vorschubfehler zurückzusetzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="270"/>
         <source>No feeder is connected</source>
         <translation>Kein Lotdrahtvorschub verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="257"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="273"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Löscht den Fehlercode des Lotdrahtvorschubs (W-ECV); solange ein Fehler ansteht, fördert er keinen Draht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="108"/>
         <source>What to check</source>
         <translation>Was zu prüfen ist</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="201"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="213"/>
         <source>%1, %2: %3</source>
         <translation>%1, %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="232"/>
         <source>What to check:</source>
         <translation>Was zu prüfen ist:</translation>
     </message>
@@ -6002,199 +6022,199 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="46"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="48"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
         <source>Show events of kind</source>
         <translation>Ereignisse dieser Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Errors and alarms</source>
         <translation>Fehler und Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Station errors</source>
         <translation>Stationsfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Port errors</source>
         <translation>Portfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Feeder errors</source>
         <translation>Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Status changes</source>
         <translation>Statuswechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
         <source>Writes</source>
         <translation>Schreibzugriffe</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
         <source>Communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
         <source>Tool changes</source>
         <translation>Werkzeugwechsel</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
         <source>Joints</source>
         <translation>Lötstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Profile applies</source>
         <translation>Profilanwendungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
         <source>Show events of device</source>
         <translation>Ereignisse des Geräts anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="109"/>
         <source>Every device</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Show events of severity</source>
         <translation>Ereignisse dieses Schweregrads anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Any severity</source>
         <translation>Jeder Schweregrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
         <source>Warnings and errors</source>
         <translation>Warnungen und Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
         <source>Errors only</source>
         <translation>Nur Fehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>Show events containing</source>
         <translation>Ereignisse mit diesem Text anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="120"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
         <source>Text in any column</source>
         <translation>Text in beliebiger Spalte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
         <source>&amp;Device:</source>
         <translation>&amp;Gerät:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="126"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="126"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Schweregrad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="130"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="160"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="164"/>
         <source>Event history</source>
         <translation>Ereignisverlauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="182"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>Copy</source>
         <translation>Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
         <source>Events shown</source>
         <translation>Angezeigte Ereignisse</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Die ausgewählten Ereignisse in die Zwischenablage kopieren (Strg+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
         <source>Copy selected events</source>
         <translation>Ausgewählte Ereignisse kopieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="199"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="201"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Die angezeigten Ereignisse als tabulatorgetrennte Textdatei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="196"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="316"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="202"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="345"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="351"/>
         <source>Export events</source>
         <translation>Ereignisse exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="204"/>
         <source>Result of the last export</source>
         <translation>Ergebnis des letzten Exports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 von %2 Ereignissen angezeigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="270"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="298"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n älteres Ereignis wurde verworfen</numerusform>
@@ -6202,17 +6222,17 @@ Fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="316"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="345"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Textdateien (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="349"/>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="323"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="352"/>
         <source>The events could not be saved: %1</source>
         <translation>Die Ereignisse konnten nicht gespeichert werden: %1</translation>
     </message>
@@ -6220,145 +6240,167 @@ Fortfahren?</translation>
 <context>
     <name>tipscope::gui::FeederPage</name>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="45"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="47"/>
         <source>No feeder on this line.</source>
         <translation>Kein Lotdrahtvorschub an dieser Leitung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
         <source>Feed &amp;forward</source>
         <translation>Draht vor&amp;wärts</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
         <source>W-SFD 00001</source>
         <translation>W-SFD 00001</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
         <source>Feed &amp;backward</source>
         <translation>Draht &amp;rückwärts</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
         <source>W-SFD 00000</source>
         <translation>W-SFD 00000</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="73"/>
         <source>&amp;Stop</source>
         <translation>&amp;Stopp</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="73"/>
         <source>W-SSD</source>
         <translation>W-SSD</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
         <source>Start &amp;loading</source>
         <translation>Ein&amp;fädeln starten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
         <source>W-SLD 00001: feed ignoring errors, for a new spool</source>
         <translation>W-SLD 00001: Vorschub ohne Fehlerprüfung, für eine neue Spule</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="76"/>
         <source>End loading</source>
         <translation>Einfädeln beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="76"/>
         <source>W-SLD 00000</source>
         <translation>W-SLD 00000</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="80"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="82"/>
         <source>&amp;Reset error</source>
         <translation>Fehler &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="86"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="88"/>
         <source>Feeding settings</source>
         <translation>Vorschubeinstellungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="94"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="99"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="176"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="95"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="100"/>
+        <source>Re&amp;vert</source>
+        <translation>Zurück&amp;nehmen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="101"/>
+        <source>Discard the values typed here and show the feeder&apos;s own</source>
+        <translation>Die hier eingegebenen Werte verwerfen und wieder die des Lotdrahtvorschubs zeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="102"/>
         <source>Save to feeder memory</source>
         <translation>Im Speicher des Lotdrahtvorschubs sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="96"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="103"/>
         <source>W-NVS: mode, speed and length survive a restart</source>
         <translation>W-NVS: Modus, Geschwindigkeit und Länge bleiben nach einem Neustart erhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="108"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="117"/>
         <source>Counters</source>
         <translation>Zähler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="116"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="125"/>
         <source>Reset</source>
         <translation>Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="150"/>
         <source>Feeding</source>
         <translation>Vorschub läuft</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="150"/>
         <source>Idle</source>
         <translation>Bereit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="150"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="142"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="151"/>
         <source>%1 · fed %2</source>
         <translation>%1 · vorgeschoben %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="153"/>
         <source>⚠ %1</source>
         <translation>⚠ %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="153"/>
         <source>No feeder error</source>
         <translation>Kein Vorschubfehler</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="154"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="163"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="178"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>Der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="167"/>
-        <location filename="../app/gui/pages/feederpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="176"/>
+        <source>&amp;Apply (%1)</source>
+        <translation>&amp;Anwenden (%1)</translation>
+    </message>
+    <message>
         <location filename="../app/gui/pages/feederpage.cpp" line="179"/>
-        <location filename="../app/gui/pages/feederpage.cpp" line="185"/>
+        <source>A value typed is not allowed: correct it or Revert</source>
+        <translation>Ein eingegebener Wert ist nicht zulässig: korrigieren oder zurücknehmen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="202"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="208"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="214"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="220"/>
         <source>no feeder</source>
         <translation>kein Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="194"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="229"/>
         <source>no such counter</source>
         <translation>diesen Zähler gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="197"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="232"/>
         <source>
 
 Reset it?</source>
@@ -6367,12 +6409,12 @@ Reset it?</source>
 Zurücksetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="200"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="235"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.h" line="23"/>
+        <location filename="../app/gui/pages/feederpage.h" line="25"/>
         <source>Feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
@@ -6451,152 +6493,154 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="35"/>
         <source>Send a frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="62"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
         <source>Header</source>
         <translation>Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>R (read)</source>
         <translation>R (lesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="69"/>
         <source>W (write)</source>
         <translation>W (schreiben)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="70"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="71"/>
         <source>Command</source>
         <translation>Befehl</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="80"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="81"/>
         <source>Data field</source>
         <translation>Datenfeld</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="84"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
         <source>&amp;Send frame</source>
         <translation>Telegramm &amp;senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
         <source>Send frame</source>
         <translation>Telegramm senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
         <source>Frame to be sent</source>
         <translation>Zu sendendes Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="91"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
         <source>Catalog check</source>
         <translation>Katalogprüfung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
         <source>Raw bytes in hex</source>
         <translation>Rohbytes hexadezimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Send ra&amp;w hex</source>
         <translation>Roh-He&amp;x senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
         <source>Send raw hex</source>
         <translation>Roh-Hex senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="104"/>
         <source>Raw bytes check</source>
         <translation>Prüfung der Rohbytes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="105"/>
         <source>Nothing sent yet.</source>
         <translation>Noch nichts gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="103"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
         <source>Outcome of the last send</source>
         <translation>Ergebnis des letzten Sendens</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="115"/>
         <source>&amp;Device</source>
         <translation>Ger&amp;ät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="117"/>
         <source>&amp;Header</source>
         <translation>&amp;Kopf</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>C&amp;ommand</source>
         <translation>Befeh&amp;l</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="118"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>D&amp;ata</source>
         <translation>Date&amp;n</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
         <source>Frame</source>
         <translation>Telegramm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="127"/>
         <source>&amp;Raw hex</source>
         <translation>&amp;Roh-Hex</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="128"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="131"/>
         <source>Last send</source>
         <translation>Letztes Senden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="237"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="240"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Diese Bytes genau wie eingegeben senden; die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="208"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
         <source>(nothing to send)</source>
         <translation>(nichts zu senden)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
         <source>none for reads</source>
-        <translation>keins bei Lesebefehlen</translation>
+        <translation>keine (Lesen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
         <source>e.g. 00350</source>
         <translation>z. B. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="224"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Dieses Telegramm einmal wie angezeigt senden (ohne Wiederholungen; Katalogwarnungen halten es nicht auf). Die Antwort erscheint in der Tabelle.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="259"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
         <source>Not sent: %1</source>
         <translation>Nicht gesendet: %1</translation>
     </message>
@@ -6697,117 +6741,117 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="97"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="98"/>
         <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
         <translation>Doppelklick auf eine Lötstelle oder Eingabetaste zeigt sie auf der Seite Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="137"/>
         <source>All devices</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="138"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
         <source>All ports</source>
         <translation>Alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="142"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
         <source>all tools</source>
         <translation>alle Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="146"/>
         <source>All verdicts</source>
         <translation>Alle Bewertungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last hour</source>
         <translation>Letzte Stunde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last 24 hours</source>
         <translation>Letzte 24 Stunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last 7 days</source>
         <translation>Letzte 7 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Last 30 days</source>
         <translation>Letzte 30 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>All times</source>
         <translation>Gesamte Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
         <source>all work orders</source>
         <translation>alle Aufträge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Reload</source>
         <translation>Neu laden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Read the journal again</source>
         <translation>Das Journal neu lesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
         <source>Export CSV…</source>
         <translation>CSV exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="160"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Die aufgeführten Lötstellen als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Verdict</source>
         <translation>Bewertung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
         <source>Work order</source>
         <translation>Auftrag</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="271"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n Lötstelle aufgeführt.</numerusform>
@@ -6815,22 +6859,22 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="272"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="273"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Nur die neuesten %1 aus dem Journal: schränken Sie den Filter ein, um ältere zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="276"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="277"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>Das Journal konnte nicht gelesen werden (%1): nur die Lötstellen dieser Sitzung sind aufgeführt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="280"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="281"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Noch kein Journal: nur die Lötstellen dieser Sitzung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="359"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="360"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n Lötstelle in %1 geschrieben.</numerusform>
@@ -6838,12 +6882,12 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="372"/>
         <source>Export joints</source>
         <translation>Lötstellen exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="372"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
@@ -6932,72 +6976,72 @@ Zurücksetzen?</translation>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="61"/>
+        <location filename="../app/gui/mainwindow.cpp" line="62"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="137"/>
+        <location filename="../app/gui/mainwindow.cpp" line="138"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="141"/>
+        <location filename="../app/gui/mainwindow.cpp" line="142"/>
         <source>Work &amp;context…</source>
         <translation>Arbeits&amp;kontext…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="145"/>
+        <location filename="../app/gui/mainwindow.cpp" line="146"/>
         <source>Write &amp;support report…</source>
         <translation>&amp;Supportbericht schreiben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="147"/>
+        <location filename="../app/gui/mainwindow.cpp" line="148"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="148"/>
+        <location filename="../app/gui/mainwindow.cpp" line="149"/>
         <source>&amp;Tools</source>
         <translation>&amp;Extras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="149"/>
+        <location filename="../app/gui/mainwindow.cpp" line="150"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Optionen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="157"/>
+        <location filename="../app/gui/mainwindow.cpp" line="158"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Lötstellen-Grenzwerte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="158"/>
+        <location filename="../app/gui/mainwindow.cpp" line="159"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="159"/>
+        <location filename="../app/gui/mainwindow.cpp" line="160"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="161"/>
+        <location filename="../app/gui/mainwindow.cpp" line="162"/>
         <source>About TipScope</source>
         <translation>Über TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="162"/>
+        <location filename="../app/gui/mainwindow.cpp" line="163"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Konfiguriert und überwacht JBC-Lötsteuergeräte (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) und den SFR-Lotdrahtvorschub über ihr RS-232-Roboterprotokoll.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="288"/>
+        <location filename="../app/gui/mainwindow.cpp" line="289"/>
         <source>new workspace</source>
         <translation>neuer Arbeitsbereich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="290"/>
+        <location filename="../app/gui/mainwindow.cpp" line="291"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n Linie)</numerusform>
@@ -7005,17 +7049,17 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="293"/>
+        <location filename="../app/gui/mainwindow.cpp" line="294"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="298"/>
+        <location filename="../app/gui/mainwindow.cpp" line="299"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="303"/>
+        <location filename="../app/gui/mainwindow.cpp" line="304"/>
         <source>Folder for the support report</source>
         <translation>Ordner für den Supportbericht</translation>
     </message>
@@ -7047,44 +7091,44 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>%1; die Standard-Grenzwerte bewerten die Lötstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="30"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="31"/>
         <source>&amp;Open workspace…</source>
         <translation>Arbeitsbereich ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="32"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="33"/>
         <source>&amp;Save workspace</source>
         <translation>Arbeitsbereich &amp;speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="34"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="35"/>
         <source>Save workspace &amp;as…</source>
         <translation>Arbeitsbereich speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="36"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="37"/>
         <source>&amp;Add this line to the workspace…</source>
         <translation>Diese Linie zum Arbeitsbereich &amp;hinzufügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="38"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="40"/>
         <source>C&amp;lose workspace</source>
         <translation>Arbeitsbereich s&amp;chließen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="45"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="57"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="104"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="61"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="73"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="121"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="87"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="103"/>
         <source>The last workspace was not reopened: %1</source>
         <translation>Der letzte Arbeitsbereich wurde nicht wieder geöffnet: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="106"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="123"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Arbeitsbereich: %1 von %n Linie verbunden</numerusform>
@@ -7092,7 +7136,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="116"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="133"/>
         <source>the workspace&apos;s %n line(s) are in the tree</source>
         <translation>
             <numerusform>die %n Linie des Arbeitsbereichs steht im Baum</numerusform>
@@ -7100,46 +7144,46 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="135"/>
         <source>the plant&apos;s devices are on the fleet overview</source>
         <translation>die Geräte der Anlage sind in der Flottenübersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="125"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="142"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="147"/>
         <source>Open workspace</source>
         <translation>Arbeitsbereich öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="126"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="143"/>
         <source>TipScope workspaces (*.json);;All files (*)</source>
         <translation>TipScope-Arbeitsbereiche (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="137"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="145"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="160"/>
         <source>Save workspace</source>
         <translation>Arbeitsbereich speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="141"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="156"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>TipScope-Arbeitsbereiche (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="159"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="168"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="169"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="174"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="183"/>
         <source>Add this line to the workspace</source>
         <translation>Diese Linie zum Arbeitsbereich hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="159"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="174"/>
         <source>Name of the line (cell, station):</source>
         <translation>Name der Linie (Zelle, Station):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="160"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="175"/>
         <source>line-%1</source>
         <translation>linie-%1</translation>
     </message>
@@ -7265,62 +7309,67 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="72"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="73"/>
         <source>Allowed: %1</source>
         <translation>Zulässig: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="73"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="74"/>
         <source>Command: %1</source>
         <translation>Befehl: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="94"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="98"/>
         <source>%1 disabled</source>
         <translation>%1 deaktiviert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="175"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="178"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="187"/>
         <source>reading…</source>
         <translation>wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
-        <source>not saved</source>
-        <translation>nicht gesichert</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="190"/>
         <source>✓ in sync</source>
         <translation>✓ synchron</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="188"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="194"/>
+        <source>✓ in sync, not yet saved</source>
+        <translation>✓ synchron, noch nicht gesichert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="196"/>
+        <source>Written and read back. The station forgets it when it restarts, unless it is saved to station memory.</source>
+        <translation>Geschrieben und zurückgelesen. Die Station vergisst den Wert beim Neustart, wenn er nicht im Stationsspeicher gesichert wird.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="204"/>
         <source>edited</source>
         <translation>geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="192"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="208"/>
         <source>writing…</source>
         <translation>wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="195"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="211"/>
         <source>✗ failed</source>
         <translation>✗ fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="200"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="216"/>
         <source>✗ refused</source>
         <translation>✗ abgelehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="200"/>
         <source>last read %1</source>
         <translation>zuletzt gelesen %1</translation>
     </message>
@@ -7381,128 +7430,128 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="63"/>
         <source>Tip temperature, port %1</source>
         <translation>Spitzentemperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="63"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="69"/>
         <source>Power, port %1</source>
         <translation>Leistung, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="91"/>
         <source>Work</source>
         <translation>Arbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="86"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="92"/>
         <source>Stand</source>
         <translation>Ablage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="87"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="93"/>
         <source>Cool</source>
         <translation>Abkühlen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="88"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="94"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: auf die eingestellte Temperatur heizen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="95"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: Ablage; Ruhemodus und Tiefschlaf folgen nach ihren Verzögerungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="91"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="97"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: Abkühlen (Absaugung in Bereitschaft)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="95"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="101"/>
         <source>New selected temperature, port %1</source>
         <translation>Neue eingestellte Temperatur, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="102"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="195"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="207"/>
         <source>no recovery</source>
         <translation>keine Erholung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="197"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="209"/>
         <source>last joint %1, %2</source>
         <translation>letzte Lötstelle %1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="224"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="236"/>
         <source>Port %1 — %2</source>
         <translation>Port %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="225"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="237"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="226"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="238"/>
         <source>set %1</source>
         <translation>Soll %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="240"/>
         <source>power %1</source>
         <translation>Leistung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="254"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
         <source>status unknown</source>
         <translation>Status unbekannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="232"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
         <source>transistor %1</source>
         <translation>Transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="234"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
         <source>%1 until the next mode</source>
         <translation>%1 bis zum nächsten Modus</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
-        <location filename="../app/gui/pages/portcard.cpp" line="269"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="278"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="281"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Fehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="274"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="286"/>
         <source>status: %1</source>
         <translation>Zustand: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="276"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="288"/>
         <source>alarm: %1</source>
         <translation>Alarm: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="256"/>
         <source>Not connected: last read %1</source>
         <translation>Nicht verbunden: zuletzt gelesen %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="258"/>
         <source>Not connected: not read yet</source>
         <translation>Nicht verbunden: noch nicht gelesen</translation>
     </message>
@@ -7960,7 +8009,7 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="233"/>
         <source>&amp;Apply</source>
         <translation>&amp;Anwenden</translation>
     </message>
@@ -8005,67 +8054,67 @@ Hängen Sie beide Dateien an das Support-Ticket an.</translation>
         <translation>Port:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Verbinden Sie sich und wählen Sie ein Gerät, um seine Einstellungen zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
         <source>Port %1 (%2)</source>
         <translation>Port %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="160"/>
         <source>Station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="165"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="167"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="166"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
         <source>Alarms, port %1</source>
         <translation>Alarme, Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
         <source>Tool %1, port %2</source>
         <translation>Werkzeug %1, Port %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="172"/>
         <source> (connected)</source>
         <translation> (angeschlossen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="174"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="176"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dosierung (Drahtvorschub der ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="182"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
         <source>Feeding</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="233"/>
         <source>&amp;Apply (%1)</source>
         <translation>&amp;Anwenden (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="278"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="300"/>
         <source>Save to station memory</source>
         <translation>Im Stationsspeicher sichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="289"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Neue Adresse (1-99) oder 0 für Telegramme ohne Adressen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="296"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="319"/>
         <source>%1
 
 %2
@@ -8078,27 +8127,27 @@ Do you want to continue?</source>
 Möchten Sie fortfahren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="311"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="317"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="323"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="329"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="334"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="352"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="335"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Einige Einstellungen wurden noch nicht gelesen (%1). Aktualisieren Sie und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="350"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="376"/>
         <source>TipScope profiles (*.json)</source>
         <translation>TipScope-Profile (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="349"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="375"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="381"/>
         <source>Open profile</source>
         <translation>Profil öffnen</translation>
     </message>
@@ -8108,27 +8157,27 @@ Möchten Sie fortfahren?</translation>
         <translation>Einstellungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="242"/>
         <source>⚠ Not connected: the greyed values are as last read (the time is beside each). Apply, Save to station memory, Station actions and Profiles wait for the line.</source>
         <translation>⚠ Nicht verbunden: die grauen Werte sind wie zuletzt gelesen (die Zeit steht daneben). Anwenden, Im Stationsspeicher sichern, Stationsaktionen und Profile warten auf die Leitung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="236"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="246"/>
         <source>Monitor-only mode is on: Apply, Save to station memory and Station actions are off, nothing is written.</source>
         <translation>Nur-Beobachten ist an: Anwenden, Im Stationsspeicher sichern und Stationsaktionen sind aus, nichts wird geschrieben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="324"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="347"/>
         <source>A comment for the profile (optional), e.g. what it is for or who set it:</source>
         <translation>Ein Kommentar zum Profil (optional), z. B. wofür es ist oder wer es eingestellt hat:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="335"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="358"/>
         <source>no device is selected</source>
         <translation>kein Gerät ausgewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="363"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profil gespeichert: %n Einstellung von %1 in %2</numerusform>

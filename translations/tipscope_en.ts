@@ -119,7 +119,7 @@
 <context>
     <name>ProfileApplier</name>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="60"/>
+        <location filename="../lib/model/profileapplier.cpp" line="61"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -171,7 +171,7 @@
 <context>
     <name>tipscope::gui::ChartsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="154"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="158"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Replay: %1 (%Ln row)</numerusform>
@@ -182,7 +182,7 @@
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>paused: %n held</numerusform>
@@ -193,7 +193,7 @@
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="270"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="298"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>%n older event was dropped</numerusform>
@@ -204,7 +204,7 @@
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="271"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n joint listed.</numerusform>
@@ -212,7 +212,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="359"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="360"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n joint written to %1.</numerusform>
@@ -223,7 +223,7 @@
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="290"/>
+        <location filename="../app/gui/mainwindow.cpp" line="291"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n line)</numerusform>
@@ -231,7 +231,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="106"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="123"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Workspace: %1 of %n line connected</numerusform>
@@ -239,7 +239,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="116"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="133"/>
         <source>the workspace&apos;s %n line(s) are in the tree</source>
         <translation>
             <numerusform>the workspace&apos;s %n line is in the tree</numerusform>
@@ -296,7 +296,7 @@
 <context>
     <name>tipscope::gui::SettingsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="363"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Profile saved: %n setting of %1 in %2</numerusform>

@@ -1917,7 +1917,7 @@
     </message>
     <message>
         <location filename="../app/cli/climonitor.cpp" line="229"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="25"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
@@ -3729,8 +3729,18 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>Motor atrás</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="105"/>
-        <location filename="../lib/model/portmodel.cpp" line="120"/>
+        <location filename="../lib/model/portmodel.cpp" line="71"/>
+        <source>the tip went above the high alarm limit: if the selected temperature was just lowered, wait for the tip to cool; check that the tip suits the tool and the high alarm limit (Settings, Alarms)</source>
+        <translation>la punta superó el límite de alarma alto: si se acaba de bajar la temperatura seleccionada, espere a que la punta se enfríe; compruebe que la punta corresponde a la herramienta y el límite de alarma alto (Ajustes, Alarmas)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="76"/>
+        <source>the tip fell below the low alarm limit: the joint may draw more heat than the tip gives (a larger tip), the tip may be worn or not tinned; check the low alarm limit (Settings, Alarms)</source>
+        <translation>la punta bajó del límite de alarma bajo: la soldadura puede pedir más calor del que da la punta (una punta mayor), o la punta puede estar gastada o sin estañar; compruebe el límite de alarma bajo (Ajustes, Alarmas)</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/portmodel.cpp" line="122"/>
+        <location filename="../lib/model/portmodel.cpp" line="137"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -3750,7 +3760,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>Ninguna</translation>
     </message>
     <message>
-        <location filename="../lib/model/portmodel.cpp" line="181"/>
+        <location filename="../lib/model/portmodel.cpp" line="198"/>
         <source>this port has no %1 command</source>
         <translation>este puerto no tiene el comando %1</translation>
     </message>
@@ -3917,7 +3927,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>cancelado: los valores restantes no se escribieron</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/profileapplier.cpp" line="60"/>
+        <location filename="../lib/model/profileapplier.cpp" line="61"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n diferencia</numerusform>
@@ -3925,54 +3935,59 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="61"/>
+        <location filename="../lib/model/profileapplier.cpp" line="62"/>
+        <source>%1 would change, %2 already right</source>
+        <translation>%1 cambiarían, %2 ya correctos</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/profileapplier.cpp" line="65"/>
         <source>%1 changed, %2 already right, %3 failed</source>
         <translation>%1 cambiados, %2 ya correctos, %3 fallidos</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="109"/>
+        <location filename="../lib/model/profileapplier.cpp" line="113"/>
         <source>the profile is for a %1, this device is a %2 (force to apply the settings they share)</source>
         <translation>el perfil es para %1 y este equipo es %2 (fuerce la aplicación para escribir los ajustes que comparten)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="114"/>
+        <location filename="../lib/model/profileapplier.cpp" line="118"/>
         <source>monitor-only mode is on</source>
         <translation>el modo solo supervisión está activado</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="175"/>
+        <location filename="../lib/model/profileapplier.cpp" line="179"/>
         <source>reading the device</source>
         <translation>leyendo el equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="237"/>
+        <location filename="../lib/model/profileapplier.cpp" line="241"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="240"/>
+        <location filename="../lib/model/profileapplier.cpp" line="244"/>
         <source>unreadable value</source>
         <translation>valor ilegible</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="299"/>
+        <location filename="../lib/model/profileapplier.cpp" line="303"/>
         <source>profile %1 applied: %2 changed, %3 failed, %4 already right%5</source>
         <translation>perfil %1 aplicado: %2 cambiados, %3 fallidos, %4 ya correctos%5</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="304"/>
+        <location filename="../lib/model/profileapplier.cpp" line="308"/>
         <source> (cancelled)</source>
         <translation> (cancelado)</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="81"/>
+        <location filename="../lib/model/profileapplier.cpp" line="85"/>
         <source>the profile would break the limits that bound its settings (MIT ≤ MAT, MIT ≤ selected temperature ≤ MAT):
 %1</source>
         <translation>el perfil rompería los límites de sus ajustes (MIT ≤ MAT, MIT ≤ temperatura seleccionada ≤ MAT):
 %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="102"/>
+        <location filename="../lib/model/profileapplier.cpp" line="106"/>
         <source>none of the profile&apos;s settings exists on this %1 (skipped: %2)</source>
         <translation>ninguno de los ajustes del perfil existe en este %1 (omitidos: %2)</translation>
     </message>
@@ -3985,7 +4000,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/profileapplier.cpp" line="130"/>
+        <location filename="../lib/model/profileapplier.cpp" line="134"/>
         <source>this %1 has no such setting</source>
         <translation>este %1 no tiene ese ajuste</translation>
     </message>
@@ -4599,28 +4614,28 @@ Hágalo permanente con esta regla de udev:
         <translation>%1: el nombre ya es de otra línea; cada línea necesita el suyo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="103"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="98"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="102"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>no se puede leer el espacio de trabajo %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
         <source>there is no such file</source>
         <translation>no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="104"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>el espacio de trabajo %1 es demasiado grande para ser uno</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>el espacio de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="110"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -4877,142 +4892,142 @@ Hágalo permanente con esta regla de udev:
         <translation>%1 · %2 · %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="63"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="64"/>
         <source>&amp;Window</source>
         <translation>&amp;Ventana</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="68"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="69"/>
         <source>Time window</source>
         <translation>Ventana de tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="71"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="75"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>1 h</source>
         <translation>1 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="72"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="76"/>
         <source>4 h</source>
         <translation>4 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
         <source>12 h</source>
         <translation>12 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="73"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="77"/>
         <source>24 h</source>
         <translation>24 h</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="80"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="84"/>
         <source>&amp;Follow</source>
         <translation>Segu&amp;ir</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="83"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="87"/>
         <source>Keep the newest data at the right edge; uncheck to pause</source>
         <translation>Mantener los datos más recientes en el borde derecho; desmarque para pausar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="86"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="90"/>
         <source>&amp;Reset view</source>
         <translation>&amp;Restablecer vista</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="90"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="94"/>
         <source>Pane layout</source>
         <translation>Disposición de los paneles</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="91"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="95"/>
         <source>Ports overlaid</source>
         <translation>Puertos superpuestos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="92"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="96"/>
         <source>One pane per port</source>
         <translation>Un panel por puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="96"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="100"/>
         <source>Trans&amp;istor, transformer</source>
         <translation>Trans&amp;istor, transformador</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="98"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
         <source>Also draw each port&apos;s transistor temperature and the station&apos;s transformer temperature (read every few seconds)</source>
         <translation>Dibujar también la temperatura del transistor de cada puerto y la del transformador de la estación (leídas cada pocos segundos)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="102"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
         <source>&amp;Export</source>
         <translation>E&amp;xportar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="105"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="109"/>
         <source>Visible window as &amp;PNG…</source>
         <translation>Ventana visible como &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="106"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
         <source>Visible window as &amp;CSV…</source>
         <translation>Ventana visible como &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="108"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="112"/>
         <source>Re&amp;cord…</source>
         <translation>&amp;Grabar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="110"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="114"/>
         <source>Write every new sample and event to a CSV file until unchecked</source>
         <translation>Escribir cada nueva muestra y evento en un archivo CSV hasta desmarcarlo</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="112"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="116"/>
         <source>&amp;Open recording…</source>
         <translation>Abrir grabació&amp;n…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="114"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="118"/>
         <source>Back to &amp;live</source>
         <translation>Volver a &amp;tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="119"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
         <source>Data shown</source>
         <translation>Datos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="122"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="126"/>
         <source>Recording stopped</source>
         <translation>Grabación detenida</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="123"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="127"/>
         <source>Writing %1 failed: %2</source>
         <translation>Falló la escritura de %1: %2</translation>
     </message>
@@ -5032,7 +5047,7 @@ Hágalo permanente con esta regla de udev:
         <translation>Alarma baja</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="154"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="158"/>
         <source>Replay: %1 (%Ln row(s))</source>
         <translation>
             <numerusform>Reproducción: %1 (%Ln fila)</numerusform>
@@ -5040,12 +5055,12 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="156"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="160"/>
         <source>Live</source>
         <translation>Tiempo real</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="172"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="176"/>
         <source> · recording to %1</source>
         <translation> · grabando en %1</translation>
     </message>
@@ -5101,7 +5116,7 @@ Hágalo permanente con esta regla de udev:
         <translation>El archivo contiene cada muestra a partir de %1. El historial más antiguo del gráfico solo se guarda como mínimo y máximo cada pocos segundos, y eso no cabe en un archivo de muestras.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="203"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="207"/>
         <location filename="../app/gui/charts/chartspageexport.cpp" line="153"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
@@ -5118,57 +5133,57 @@ Hágalo permanente con esta regla de udev:
         <translation>Falló la exportación: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="202"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
         <source>Record to CSV file</source>
         <translation>Grabar en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Record</source>
         <translation>Grabar</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspageactions.cpp" line="206"/>
+        <location filename="../app/gui/charts/chartspageactions.cpp" line="210"/>
         <source>Cannot record: %1</source>
         <translation>No se puede grabar: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="53"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="54"/>
         <source>Open recording</source>
         <translation>Abrir grabación</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="63"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="64"/>
         <source>Reading %1: %2 MB</source>
         <translation>Leyendo %1: %2 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="70"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="71"/>
         <source>Reading %1…</source>
         <translation>Leyendo %1…</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="117"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="118"/>
         <source>The charts hold no readings of %1 at %2: only this session&apos;s readings are kept.</source>
         <translation>Los gráficos no tienen lecturas de %1 a las %2: solo se guardan las lecturas de esta sesión.</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="127"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="128"/>
         <source>Open a chart recording</source>
         <translation>Abrir una grabación de gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="129"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="128"/>
         <source>CSV file (*.csv);;All files (*)</source>
         <translation>Archivo CSV (*.csv);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="135"/>
         <source>Replay</source>
         <translation>Reproducción</translation>
     </message>
     <message>
-        <location filename="../app/gui/charts/chartspagereplay.cpp" line="136"/>
+        <location filename="../app/gui/charts/chartspagereplay.cpp" line="135"/>
         <source>Cannot replay %1</source>
         <translation>No se puede reproducir %1</translation>
     </message>
@@ -5342,186 +5357,186 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ConsolePage</name>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="87"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="89"/>
         <source>Console tools</source>
         <translation>Herramientas de la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="96"/>
-        <source>While paused, new rows are held; they appear on resume.</source>
-        <translation>En pausa, las filas nuevas se retienen; aparecen al reanudar.</translation>
+        <location filename="../app/gui/pages/consolepage.cpp" line="98"/>
+        <source>Older rows go as new ones come; Save… writes the rows kept to a file. While paused, new rows are held; they appear on resume.</source>
+        <translation>Las filas antiguas se descartan a medida que llegan otras nuevas; Guardar… escribe en un archivo las filas conservadas. En pausa, las filas nuevas se retienen; aparecen al reanudar.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="136"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="139"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="341"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="141"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="144"/>
         <source>Hold new rows (Ctrl+P); nothing is lost, they appear on resume</source>
         <translation>Retener las filas nuevas (Ctrl+P); no se pierde nada, aparecen al reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="145"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
         <source>Relative time</source>
         <translation>Tiempo relativo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="148"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="151"/>
         <source>Show seconds since the first row instead of the clock time</source>
         <translation>Mostrar los segundos desde la primera fila en lugar de la hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="163"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="166"/>
         <source>Show:</source>
         <translation>Mostrar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="164"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
         <source>Show bytes sent</source>
         <translation>Mostrar los bytes enviados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="167"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="170"/>
         <source>RX chunks</source>
         <translation>Bloques RX</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="168"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
         <source>Show bytes as the driver delivered them, chunk by chunk (every received byte is also in a frame or error row)</source>
         <translation>Mostrar los bytes tal como los entregó el controlador, bloque a bloque (cada byte recibido también está en una fila de trama o de error)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Frames</source>
         <translation>Tramas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="171"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
         <source>Show received frames, decoded</source>
         <translation>Mostrar las tramas recibidas, decodificadas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="173"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="176"/>
         <source>Show decode errors (BCC, format, garbage)</source>
         <translation>Mostrar los errores de decodificación (BCC, formato, basura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="174"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
         <source>Show line notes (timeouts, line state)</source>
         <translation>Mostrar las notas de la línea (tiempos agotados, estado de la línea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="177"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
         <source>De&amp;vice:</source>
         <translation>Equi&amp;po:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="180"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="183"/>
         <source>Device address filter</source>
         <translation>Filtro de dirección de equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="181"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="184"/>
         <source>Only frames from or to this address; type any address 00-99</source>
         <translation>Solo tramas desde o hacia esta dirección; escriba cualquier dirección 00-99</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="190"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
         <source>Co&amp;mmand:</source>
         <translation>Co&amp;mando:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="193"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="196"/>
         <source>Command filter</source>
         <translation>Filtro de comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="194"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="197"/>
         <source>e.g. ST1</source>
         <translation>p. ej. ST1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="203"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="207"/>
         <source>Clear</source>
         <translation>Borrar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="205"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="209"/>
         <source>Remove every row, held ones included</source>
         <translation>Quitar todas las filas, incluidas las retenidas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="206"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="210"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="208"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="212"/>
         <source>Save every row (not only the shown ones) to a text file</source>
         <translation>Guardar todas las filas (no solo las mostradas) en un archivo de texto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="214"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="218"/>
         <source>Traffic on the line</source>
         <translation>Tráfico en la línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="260"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="264"/>
         <source>bad</source>
         <translation>erróneo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="274"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="278"/>
         <source>Copy rows</source>
         <translation>Copiar filas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="288"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="298"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="316"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="292"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="302"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="320"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="337"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="341"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="350"/>
-        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="354"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="359"/>
         <source>Save console</source>
         <translation>Guardar la consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="351"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="355"/>
         <source>Text files (*.txt);;All files (*)</source>
         <translation>Archivos de texto (*.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="373"/>
-        <source>%1 of %2 rows shown</source>
-        <translation>%1 de %2 filas mostradas</translation>
+        <location filename="../app/gui/pages/consolepage.cpp" line="378"/>
+        <source>%1 of %2 rows shown; the newest %3 are kept</source>
+        <translation>%1 de %2 filas mostradas; se conservan las %3 más recientes</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/consolepage.cpp" line="375"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="383"/>
         <source>paused: %n held</source>
         <translation>
             <numerusform>en pausa: %n retenida</numerusform>
@@ -5534,7 +5549,7 @@ Hágalo permanente con esta regla de udev:
         <translation>Consola</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/consolepage.cpp" line="356"/>
+        <location filename="../app/gui/pages/consolepage.cpp" line="360"/>
         <source>The console could not be saved:
 %1</source>
         <translation>No se pudo guardar la consola:
@@ -5544,194 +5559,194 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::CountersPage</name>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="72"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="73"/>
         <source>When the counters were read</source>
         <translation>Cuándo se leyeron los contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="74"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="75"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="76"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
         <source>Re&amp;fresh</source>
         <translation>Ac&amp;tualizar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="77"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="78"/>
         <source>Read every counter of every device now (they are otherwise read once a minute)</source>
         <translation>Leer ahora todos los contadores de todos los equipos (si no, se leen una vez por minuto)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="79"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="80"/>
         <source>Refresh counters</source>
         <translation>Actualizar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="81"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
         <source>&amp;Export CSV…</source>
         <translation>E&amp;xportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="82"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
         <source>Save every counter of every device as a CSV file</source>
         <translation>Guardar todos los contadores de todos los equipos en un archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="83"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="84"/>
         <source>Export counters as CSV</source>
         <translation>Exportar contadores como CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="93"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="94"/>
         <source>No device is connected. Connect to a line to read its counters.</source>
         <translation>No hay ningún equipo conectado. Conéctese a una línea para leer sus contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="146"/>
         <source>Reading the counters…</source>
         <translation>Leyendo los contadores…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="148"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="149"/>
         <source>Last reading at %1</source>
         <translation>Última lectura a las %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="151"/>
         <source>Waiting for the first reading…</source>
         <translation>Esperando la primera lectura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="210"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="211"/>
         <source>Station %1</source>
         <translation>Estación %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="212"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="243"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="213"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="244"/>
         <source>Counters of %1</source>
         <translation>Contadores de %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="228"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="229"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="241"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="242"/>
         <source>Solder feeder %1</source>
         <translation>Alimentador de estaño %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="248"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="247"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="248"/>
         <source>Partial</source>
         <translation>Parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="289"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="290"/>
         <source>%1 (R-%2)</source>
         <translation>%1 (R-%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="291"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="292"/>
         <source>Last read failed: %1</source>
         <translation>Falló la última lectura: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="294"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="295"/>
         <source>Read at %1</source>
         <translation>Leído: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="297"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="298"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="323"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="324"/>
         <source>%1 Monitor-only mode is on: nothing is reset.</source>
         <translation>%1 El modo solo supervisión está activado: no se pone nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="326"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
         <source>Reset partial counter</source>
         <translation>Poner a cero el contador parcial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="327"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="328"/>
         <source>Reset “%1” on %2?</source>
         <translation>¿Poner a cero «%1» en %2?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="329"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="330"/>
         <source>It now reads %1.</source>
         <translation>Ahora marca %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="331"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
         <source>The total counter is not affected.</source>
         <translation>El contador total no se ve afectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="332"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="333"/>
         <source>Reset counter</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="337"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="338"/>
         <source>%1 Nothing was reset.</source>
         <translation>%1 No se puso nada a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="343"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="344"/>
         <source>%1 Not reset: %2</source>
         <translation>%1 No se puso a cero: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="347"/>
         <source>%1 Resetting %2…</source>
         <translation>%1 Poniendo a cero %2…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="352"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
         <source>%1 %2 reset.</source>
         <translation>%1 %2 puesto a cero.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="353"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="354"/>
         <source>%1 %2 was not reset: %3</source>
         <translation>%1 %2 no se puso a cero: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="366"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="367"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset counters.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para poner a cero los contadores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
-        <location filename="../app/gui/pages/counterspage.cpp" line="392"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
         <source>Export counters</source>
         <translation>Exportar contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="386"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="387"/>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="390"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="391"/>
         <source>%1 Counters saved to %2</source>
         <translation>%1 Contadores guardados en %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/counterspage.cpp" line="393"/>
+        <location filename="../app/gui/pages/counterspage.cpp" line="394"/>
         <source>The counters could not be saved: %1</source>
         <translation>No se pudieron guardar los contadores: %1</translation>
     </message>
@@ -5865,128 +5880,133 @@ Continue?</source>
 <context>
     <name>tipscope::gui::ErrorStatePanel</name>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="60"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="62"/>
         <source>%1, port %2</source>
         <translation>%1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="78"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="80"/>
         <source>Current state</source>
         <translation>Estado actual</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="82"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
         <source>Current errors and alarms</source>
         <translation>Errores y alarmas actuales</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Where</source>
         <translation>Dónde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Severity</source>
         <translation>Gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="84"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="86"/>
         <source>Temperature alarm</source>
         <translation>Alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
         <source>&amp;Reset feeder error</source>
         <translation>&amp;Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
         <source>Reset feeder error</source>
         <translation>Borrar error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="101"/>
         <source>Result of the last action</source>
         <translation>Resultado de la última acción</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="149"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="160"/>
         <source>No device is connected.</source>
         <translation>No hay ningún equipo conectado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="180"/>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="185"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
         <source>Not read yet</source>
         <translation>Aún no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="182"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="193"/>
         <source>Error code %1: %2</source>
         <translation>Código de error %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="196"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="207"/>
         <source>This device has no temperature alarm</source>
         <translation>Este equipo no tiene alarma de temperatura</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="227"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
+        <source>%1, %2 alarm: %3</source>
+        <translation>%1, alarma «%2»: %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="243"/>
         <source>Not reset: %1</source>
         <translation>No se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="230"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="246"/>
         <source>Resetting the feeder error…</source>
         <translation>Borrando el error del alimentador…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="237"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="253"/>
         <source>Feeder error reset.</source>
         <translation>Error del alimentador borrado.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="238"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
         <source>The feeder error was not reset: %1</source>
         <translation>El error del alimentador no se borró: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="251"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="267"/>
         <source>Monitor-only mode is on: TipScope writes nothing to the devices. Turn it off to reset the feeder error.</source>
         <translation>El modo solo supervisión está activado: TipScope no escribe nada en los equipos. Desactívelo para borrar el error del alimentador.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="254"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="270"/>
         <source>No feeder is connected</source>
         <translation>No hay ningún alimentador conectado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="257"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="273"/>
         <source>Clears the feeder&apos;s error code (W-ECV); the feeder does not feed while an error is set</source>
         <translation>Borra el código de error del alimentador (W-ECV); el alimentador no alimenta mientras haya un error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="106"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="108"/>
         <source>What to check</source>
         <translation>Qué comprobar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="201"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="213"/>
         <source>%1, %2: %3</source>
         <translation>%1, %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/errorstatepanel.cpp" line="216"/>
+        <location filename="../app/gui/pages/errorstatepanel.cpp" line="232"/>
         <source>What to check:</source>
         <translation>Qué comprobar:</translation>
     </message>
@@ -6002,199 +6022,199 @@ Continue?</source>
 <context>
     <name>tipscope::gui::EventHistoryPanel</name>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="46"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="48"/>
         <source>History</source>
         <translation>Historial</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="87"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
         <source>Show events of kind</source>
         <translation>Mostrar eventos del tipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="88"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="90"/>
         <source>All kinds</source>
         <translation>Todos los tipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="89"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
         <source>Errors and alarms</source>
         <translation>Errores y alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="91"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
         <source>Station errors</source>
         <translation>Errores de estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="92"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
         <source>Port errors</source>
         <translation>Errores de puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="93"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
         <source>Feeder errors</source>
         <translation>Errores del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="94"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
         <source>Alarms</source>
         <translation>Alarmas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="95"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
         <source>Status changes</source>
         <translation>Cambios de estado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="96"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
         <source>Writes</source>
         <translation>Escrituras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="97"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
         <source>Communication</source>
         <translation>Comunicación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="98"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="99"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
         <source>Tool changes</source>
         <translation>Cambios de herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="100"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="102"/>
         <source>Joints</source>
         <translation>Soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="101"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="103"/>
         <source>Profile applies</source>
         <translation>Aplicaciones de perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="106"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="108"/>
         <source>Show events of device</source>
         <translation>Mostrar eventos del equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="107"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="109"/>
         <source>Every device</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="113"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
         <source>Show events of severity</source>
         <translation>Mostrar eventos de la gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="114"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
         <source>Any severity</source>
         <translation>Cualquier gravedad</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="115"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="117"/>
         <source>Warnings and errors</source>
         <translation>Advertencias y errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="116"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="118"/>
         <source>Errors only</source>
         <translation>Solo errores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="119"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="121"/>
         <source>Show events containing</source>
         <translation>Mostrar eventos que contengan</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="120"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
         <source>Text in any column</source>
         <translation>Texto en cualquier columna</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="122"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
         <source>&amp;Device:</source>
         <translation>&amp;Equipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="124"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="126"/>
         <source>&amp;Kind:</source>
         <translation>&amp;Tipo:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="126"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
         <source>Se&amp;verity:</source>
         <translation>&amp;Gravedad:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="128"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="130"/>
         <source>&amp;Search:</source>
         <translation>B&amp;uscar:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="160"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="164"/>
         <source>Event history</source>
         <translation>Historial de eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="182"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
         <source>Copy</source>
         <translation>Copiar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="188"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="194"/>
         <source>Events shown</source>
         <translation>Eventos mostrados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="189"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
         <source>&amp;Copy</source>
         <translation>Co&amp;piar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="191"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="197"/>
         <source>Copy the selected events to the clipboard (Ctrl+C)</source>
         <translation>Copiar los eventos seleccionados al portapapeles (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="192"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
         <source>Copy selected events</source>
         <translation>Copiar eventos seleccionados</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="193"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="199"/>
         <source>E&amp;xport…</source>
         <translation>E&amp;xportar…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="195"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="201"/>
         <source>Save the events shown as a tab-separated text file</source>
         <translation>Guardar los eventos mostrados como archivo de texto separado por tabulaciones</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="196"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="316"/>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="322"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="202"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="345"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="351"/>
         <source>Export events</source>
         <translation>Exportar eventos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="198"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="204"/>
         <source>Result of the last export</source>
         <translation>Resultado de la última exportación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="268"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="296"/>
         <source>%1 of %2 events shown</source>
         <translation>%1 de %2 eventos mostrados</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="270"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="298"/>
         <source>%n older events were dropped</source>
         <translation>
             <numerusform>se descartó %n evento antiguo</numerusform>
@@ -6202,17 +6222,17 @@ Continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="316"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="345"/>
         <source>Text files (*.txt *.tsv)</source>
         <translation>Archivos de texto (*.txt *.tsv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="320"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="349"/>
         <source>Saved to %1</source>
         <translation>Guardado en %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="323"/>
+        <location filename="../app/gui/pages/eventhistorypanel.cpp" line="352"/>
         <source>The events could not be saved: %1</source>
         <translation>No se pudieron guardar los eventos: %1</translation>
     </message>
@@ -6220,145 +6240,167 @@ Continue?</source>
 <context>
     <name>tipscope::gui::FeederPage</name>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="45"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="47"/>
         <source>No feeder on this line.</source>
         <translation>No hay alimentador en esta línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
         <source>Feed &amp;forward</source>
         <translation>A&amp;vanzar hilo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="69"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
         <source>W-SFD 00001</source>
         <translation>W-SFD 00001</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
         <source>Feed &amp;backward</source>
         <translation>Re&amp;troceder hilo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="70"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
         <source>W-SFD 00000</source>
         <translation>W-SFD 00000</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="73"/>
         <source>&amp;Stop</source>
         <translation>&amp;Parar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="71"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="73"/>
         <source>W-SSD</source>
         <translation>W-SSD</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
         <source>Start &amp;loading</source>
         <translation>Iniciar car&amp;ga</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="72"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
         <source>W-SLD 00001: feed ignoring errors, for a new spool</source>
         <translation>W-SLD 00001: alimentar ignorando los errores, para una bobina nueva</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="76"/>
         <source>End loading</source>
         <translation>Terminar carga</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="74"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="76"/>
         <source>W-SLD 00000</source>
         <translation>W-SLD 00000</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="80"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="82"/>
         <source>&amp;Reset error</source>
         <translation>&amp;Borrar error</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="86"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="88"/>
         <source>Feeding settings</source>
         <translation>Ajustes de alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="94"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="99"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="176"/>
         <source>&amp;Apply</source>
         <translation>Ap&amp;licar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="95"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="100"/>
+        <source>Re&amp;vert</source>
+        <translation>&amp;Revertir</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="101"/>
+        <source>Discard the values typed here and show the feeder&apos;s own</source>
+        <translation>Descarta los valores escritos aquí y vuelve a mostrar los del alimentador</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="102"/>
         <source>Save to feeder memory</source>
         <translation>Guardar en la memoria del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="96"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="103"/>
         <source>W-NVS: mode, speed and length survive a restart</source>
         <translation>W-NVS: el modo, la velocidad y la longitud se conservan tras reiniciar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="108"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="117"/>
         <source>Counters</source>
         <translation>Contadores</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="116"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="125"/>
         <source>Reset</source>
         <translation>Poner a cero</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="150"/>
         <source>Feeding</source>
         <translation>Alimentando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="150"/>
         <source>Idle</source>
         <translation>En espera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="141"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="150"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="142"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="151"/>
         <source>%1 · fed %2</source>
         <translation>%1 · alimentado %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="153"/>
         <source>⚠ %1</source>
         <translation>⚠ %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="144"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="153"/>
         <source>No feeder error</source>
         <translation>Sin error del alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="154"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="163"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="178"/>
         <source>Monitor-only mode is on: nothing is written</source>
         <translation>El modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="167"/>
-        <location filename="../app/gui/pages/feederpage.cpp" line="173"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="176"/>
+        <source>&amp;Apply (%1)</source>
+        <translation>A&amp;plicar (%1)</translation>
+    </message>
+    <message>
         <location filename="../app/gui/pages/feederpage.cpp" line="179"/>
-        <location filename="../app/gui/pages/feederpage.cpp" line="185"/>
+        <source>A value typed is not allowed: correct it or Revert</source>
+        <translation>Un valor escrito no está permitido: corríjalo o use Revertir</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pages/feederpage.cpp" line="202"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="208"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="214"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="220"/>
         <source>no feeder</source>
         <translation>sin alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="194"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="229"/>
         <source>no such counter</source>
         <translation>no existe ese contador</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="197"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="232"/>
         <source>
 
 Reset it?</source>
@@ -6367,12 +6409,12 @@ Reset it?</source>
 ¿Ponerlo a cero?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.cpp" line="200"/>
+        <location filename="../app/gui/pages/feederpage.cpp" line="235"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/feederpage.h" line="23"/>
+        <location filename="../app/gui/pages/feederpage.h" line="25"/>
         <source>Feeder</source>
         <translation>Alimentador</translation>
     </message>
@@ -6451,152 +6493,154 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::FrameBuilder</name>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="34"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="35"/>
         <source>Send a frame</source>
         <translation>Enviar una trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="61"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="62"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="66"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
         <source>Header</source>
         <translation>Cabecera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="67"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
         <source>R (read)</source>
         <translation>R (lectura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="68"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="69"/>
         <source>W (write)</source>
         <translation>W (escritura)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="70"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="71"/>
         <source>Command</source>
         <translation>Comando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="80"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="81"/>
         <source>Data field</source>
         <translation>Campo de datos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="84"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
         <source>&amp;Send frame</source>
         <translation>&amp;Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="85"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="88"/>
         <source>Send frame</source>
         <translation>Enviar trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="87"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="90"/>
         <source>Frame to be sent</source>
         <translation>Trama que se enviará</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="91"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
         <source>Catalog check</source>
         <translation>Comprobación del catálogo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="94"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="97"/>
         <source>Raw bytes in hex</source>
         <translation>Bytes en bruto en hexadecimal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="98"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
         <source>Send ra&amp;w hex</source>
         <translation>Enviar he&amp;x en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="99"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
         <source>Send raw hex</source>
         <translation>Enviar hex en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="101"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="104"/>
         <source>Raw bytes check</source>
         <translation>Comprobación de los bytes en bruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="102"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="105"/>
         <source>Nothing sent yet.</source>
         <translation>Aún no se ha enviado nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="103"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="106"/>
         <source>Outcome of the last send</source>
         <translation>Resultado del último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="112"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="115"/>
         <source>&amp;Device</source>
         <translation>E&amp;quipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="114"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="117"/>
         <source>&amp;Header</source>
         <translation>Ca&amp;becera</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="116"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="119"/>
         <source>C&amp;ommand</source>
         <translation>C&amp;omando</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="118"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
         <source>D&amp;ata</source>
         <translation>Da&amp;tos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="121"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
         <source>Frame</source>
         <translation>Trama</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="124"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="127"/>
         <source>&amp;Raw hex</source>
         <translation>Hex en b&amp;ruto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="128"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="131"/>
         <source>Last send</source>
         <translation>Último envío</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="237"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="240"/>
         <source>Send these bytes exactly as typed; the answer appears in the table.</source>
         <translation>Enviar estos bytes exactamente como se han escrito; la respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="208"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="211"/>
         <source>(nothing to send)</source>
         <translation>(nada que enviar)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
         <source>none for reads</source>
-        <translation>ninguno en lecturas</translation>
+        <translation>nada al leer</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="212"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="86"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="215"/>
         <source>e.g. 00350</source>
         <translation>p. ej. 00350</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="224"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="227"/>
         <source>Send this frame once, as shown (no retries; catalog warnings do not stop it). Its answer appears in the table.</source>
         <translation>Enviar esta trama una vez, tal como se muestra (sin reintentos; los avisos del catálogo no la detienen). Su respuesta aparece en la tabla.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/framebuilder.cpp" line="259"/>
+        <location filename="../app/gui/pages/framebuilder.cpp" line="262"/>
         <source>Not sent: %1</source>
         <translation>No enviado: %1</translation>
     </message>
@@ -6697,117 +6741,117 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="97"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="98"/>
         <source>Double-click a joint, or press Enter, to see it on the Charts page</source>
         <translation>Doble clic en una soldadura, o Intro, para verla en la página Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="136"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="137"/>
         <source>All devices</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="138"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
         <source>All ports</source>
         <translation>Todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="142"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
         <source>all tools</source>
         <translation>todas las herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="145"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="146"/>
         <source>All verdicts</source>
         <translation>Todos los veredictos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last hour</source>
         <translation>Última hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last 24 hours</source>
         <translation>Últimas 24 horas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="149"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
         <source>Last 7 days</source>
         <translation>Últimos 7 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Last 30 days</source>
         <translation>Últimos 30 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>All times</source>
         <translation>Todo el tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="154"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
         <source>all work orders</source>
         <translation>todas las órdenes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
         <source>Reload</source>
         <translation>Recargar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Read the journal again</source>
         <translation>Volver a leer el registro</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
         <source>Export CSV…</source>
         <translation>Exportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="160"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Guardar las soldaduras de la lista como archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="162"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Verdict</source>
         <translation>Veredicto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
         <source>Work order</source>
         <translation>Orden de trabajo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="270"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="271"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n soldadura en la lista.</numerusform>
@@ -6815,22 +6859,22 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="272"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="273"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Solo las %1 más recientes del registro: acote el filtro para ver las anteriores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="276"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="277"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>No se pudo leer el registro (%1): solo se listan las soldaduras de esta sesión.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="280"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="281"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Aún no hay registro: solo las soldaduras de esta sesión.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="359"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="360"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n soldadura escrita en %1.</numerusform>
@@ -6838,12 +6882,12 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="372"/>
         <source>Export joints</source>
         <translation>Exportar soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="371"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="372"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
@@ -6932,72 +6976,72 @@ Reset it?</source>
 <context>
     <name>tipscope::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="61"/>
+        <location filename="../app/gui/mainwindow.cpp" line="62"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="137"/>
+        <location filename="../app/gui/mainwindow.cpp" line="138"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="141"/>
+        <location filename="../app/gui/mainwindow.cpp" line="142"/>
         <source>Work &amp;context…</source>
         <translation>&amp;Contexto de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="145"/>
+        <location filename="../app/gui/mainwindow.cpp" line="146"/>
         <source>Write &amp;support report…</source>
         <translation>Escribir &amp;informe de soporte…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="147"/>
+        <location filename="../app/gui/mainwindow.cpp" line="148"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="148"/>
+        <location filename="../app/gui/mainwindow.cpp" line="149"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="149"/>
+        <location filename="../app/gui/mainwindow.cpp" line="150"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencias…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="157"/>
+        <location filename="../app/gui/mainwindow.cpp" line="158"/>
         <source>&amp;Joint limits…</source>
         <translation>&amp;Límites de soldadura…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="158"/>
+        <location filename="../app/gui/mainwindow.cpp" line="159"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="159"/>
+        <location filename="../app/gui/mainwindow.cpp" line="160"/>
         <source>&amp;About TipScope</source>
         <translation>&amp;Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="161"/>
+        <location filename="../app/gui/mainwindow.cpp" line="162"/>
         <source>About TipScope</source>
         <translation>Acerca de TipScope</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="162"/>
+        <location filename="../app/gui/mainwindow.cpp" line="163"/>
         <source>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configures and monitors JBC soldering control units (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) and the SFR solder feeder over their RS-232 robot protocol.&lt;/p&gt;</source>
         <translation>&lt;b&gt;TipScope %1&lt;/b&gt;&lt;p&gt;Configura y supervisa unidades de control de soldadura JBC (UCR, ALE, NAE, DDE, DME, HDE, DDR, HDR) y el alimentador de estaño SFR mediante su protocolo de robot RS-232.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="288"/>
+        <location filename="../app/gui/mainwindow.cpp" line="289"/>
         <source>new workspace</source>
         <translation>espacio de trabajo nuevo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindow.cpp" line="290"/>
+        <location filename="../app/gui/mainwindow.cpp" line="291"/>
         <source>TipScope — %1 (%n line(s))</source>
         <translation>
             <numerusform>TipScope — %1 (%n línea)</numerusform>
@@ -7005,17 +7049,17 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="293"/>
+        <location filename="../app/gui/mainwindow.cpp" line="294"/>
         <source>not connected</source>
         <translation>sin conexión</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="298"/>
+        <location filename="../app/gui/mainwindow.cpp" line="299"/>
         <source>TipScope — %1</source>
         <translation>TipScope — %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="303"/>
+        <location filename="../app/gui/mainwindow.cpp" line="304"/>
         <source>Folder for the support report</source>
         <translation>Carpeta para el informe de soporte</translation>
     </message>
@@ -7047,44 +7091,44 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>%1; los límites por defecto juzgan las soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="30"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="31"/>
         <source>&amp;Open workspace…</source>
         <translation>&amp;Abrir espacio de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="32"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="33"/>
         <source>&amp;Save workspace</source>
         <translation>&amp;Guardar espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="34"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="35"/>
         <source>Save workspace &amp;as…</source>
         <translation>Guardar espacio de trabajo &amp;como…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="36"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="37"/>
         <source>&amp;Add this line to the workspace…</source>
         <translation>Añadir esta &amp;línea al espacio de trabajo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="38"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="40"/>
         <source>C&amp;lose workspace</source>
         <translation>Ce&amp;rrar espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="45"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="57"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="104"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="61"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="73"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="121"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="87"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="103"/>
         <source>The last workspace was not reopened: %1</source>
         <translation>El último espacio de trabajo no se volvió a abrir: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="106"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="123"/>
         <source>Workspace: %1 of %n line(s) connected</source>
         <translation>
             <numerusform>Espacio de trabajo: %1 de %n línea conectada</numerusform>
@@ -7092,7 +7136,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="116"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="133"/>
         <source>the workspace&apos;s %n line(s) are in the tree</source>
         <translation>
             <numerusform>la %n línea del espacio de trabajo está en el árbol</numerusform>
@@ -7100,46 +7144,46 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="118"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="135"/>
         <source>the plant&apos;s devices are on the fleet overview</source>
         <translation>los equipos de la planta están en la vista de flota</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="125"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="130"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="142"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="147"/>
         <source>Open workspace</source>
         <translation>Abrir espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="126"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="143"/>
         <source>TipScope workspaces (*.json);;All files (*)</source>
         <translation>Espacios de trabajo de TipScope (*.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="137"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="145"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="160"/>
         <source>Save workspace</source>
         <translation>Guardar espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="141"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="156"/>
         <source>TipScope workspaces (*.json)</source>
         <translation>Espacios de trabajo de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="154"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="159"/>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="168"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="169"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="174"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="183"/>
         <source>Add this line to the workspace</source>
         <translation>Añadir esta línea al espacio de trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="159"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="174"/>
         <source>Name of the line (cell, station):</source>
         <translation>Nombre de la línea (celda, estación):</translation>
     </message>
     <message>
-        <location filename="../app/gui/mainwindowworkspace.cpp" line="160"/>
+        <location filename="../app/gui/mainwindowworkspace.cpp" line="175"/>
         <source>line-%1</source>
         <translation>linea-%1</translation>
     </message>
@@ -7265,62 +7309,67 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::ParameterEditor</name>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="72"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="73"/>
         <source>Allowed: %1</source>
         <translation>Permitido: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="73"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="74"/>
         <source>Command: %1</source>
         <translation>Comando: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="94"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="98"/>
         <source>%1 disabled</source>
         <translation>%1 desactivado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="175"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
         <source>not read</source>
         <translation>no leído</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="178"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="187"/>
         <source>reading…</source>
         <translation>leyendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
-        <source>not saved</source>
-        <translation>no guardado</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="181"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="190"/>
         <source>✓ in sync</source>
         <translation>✓ sincronizado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="188"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="194"/>
+        <source>✓ in sync, not yet saved</source>
+        <translation>✓ sincronizado, aún sin guardar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="196"/>
+        <source>Written and read back. The station forgets it when it restarts, unless it is saved to station memory.</source>
+        <translation>Escrito y releído. La estación lo olvida al reiniciarse, salvo que se guarde en la memoria de la estación.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="204"/>
         <source>edited</source>
         <translation>editado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="192"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="208"/>
         <source>writing…</source>
         <translation>escribiendo…</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="195"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="211"/>
         <source>✗ failed</source>
         <translation>✗ falló</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="200"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="216"/>
         <source>✗ refused</source>
         <translation>✗ rechazado</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/parametereditor.cpp" line="184"/>
+        <location filename="../app/gui/widgets/parametereditor.cpp" line="200"/>
         <source>last read %1</source>
         <translation>última lectura %1</translation>
     </message>
@@ -7381,128 +7430,128 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
 <context>
     <name>tipscope::gui::PortCard</name>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="48"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="49"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="57"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="63"/>
         <source>Tip temperature, port %1</source>
         <translation>Temperatura de la punta, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="63"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="69"/>
         <source>Power, port %1</source>
         <translation>Potencia, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="85"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="91"/>
         <source>Work</source>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="86"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="92"/>
         <source>Stand</source>
         <translation>Soporte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="87"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="93"/>
         <source>Cool</source>
         <translation>Enfriar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="88"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="94"/>
         <source>W-PS%1 00000: heat to the selected temperature</source>
         <translation>W-PS%1 00000: calentar a la temperatura seleccionada</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="89"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="95"/>
         <source>W-PS%1 00001: stand; sleep and hibernation follow after their delays</source>
         <translation>W-PS%1 00001: soporte; el reposo y la hibernación siguen tras sus retardos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="91"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="97"/>
         <source>W-PS%1 00010: cooling (extractor stand-by)</source>
         <translation>W-PS%1 00010: enfriamiento (extractor en espera)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="95"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="101"/>
         <source>New selected temperature, port %1</source>
         <translation>Nueva temperatura seleccionada, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="96"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="102"/>
         <source>Set</source>
         <translation>Fijar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="195"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="207"/>
         <source>no recovery</source>
         <translation>sin recuperación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="197"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="209"/>
         <source>last joint %1, %2</source>
         <translation>última soldadura %1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="224"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="236"/>
         <source>Port %1 — %2</source>
         <translation>Puerto %1 — %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="225"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="237"/>
         <source>— °</source>
         <translation>— °</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="226"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="238"/>
         <source>set %1</source>
         <translation>consigna %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="228"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="240"/>
         <source>power %1</source>
         <translation>potencia %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="254"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
         <source>status unknown</source>
         <translation>estado desconocido</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="232"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
         <source>transistor %1</source>
         <translation>transistor %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="234"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
         <source>%1 until the next mode</source>
         <translation>%1 hasta el siguiente modo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="266"/>
-        <location filename="../app/gui/pages/portcard.cpp" line="269"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="278"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="281"/>
         <source>⚠ Error: %1</source>
         <translation>⚠ Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="274"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="286"/>
         <source>status: %1</source>
         <translation>estado: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="276"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="288"/>
         <source>alarm: %1</source>
         <translation>alarma: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="244"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="256"/>
         <source>Not connected: last read %1</source>
         <translation>No conectado: última lectura %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/portcard.cpp" line="246"/>
+        <location filename="../app/gui/pages/portcard.cpp" line="258"/>
         <source>Not connected: not read yet</source>
         <translation>No conectado: aún sin leer</translation>
     </message>
@@ -7960,7 +8009,7 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
     </message>
     <message>
         <location filename="../app/gui/pages/settingspage.cpp" line="38"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="233"/>
         <source>&amp;Apply</source>
         <translation>A&amp;plicar</translation>
     </message>
@@ -8005,67 +8054,67 @@ Adjunte ambos archivos a la solicitud de soporte.</translation>
         <translation>Puerto:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="145"/>
         <source>Connect and select a device to see its settings.</source>
         <translation>Conéctese y seleccione un equipo para ver sus ajustes.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="146"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="148"/>
         <source>Port %1 (%2)</source>
         <translation>Puerto %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="160"/>
         <source>Station</source>
         <translation>Estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="165"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="167"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="166"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
         <source>Alarms, port %1</source>
         <translation>Alarmas, puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="168"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
         <source>Tool %1, port %2</source>
         <translation>Herramienta %1, puerto %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="170"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="172"/>
         <source> (connected)</source>
         <translation> (conectada)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="174"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="176"/>
         <source>Dispensing (ALE wire feed)</source>
         <translation>Dispensado (alimentación de hilo de la ALE)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="182"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="184"/>
         <source>Feeding</source>
         <translation>Alimentación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="223"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="233"/>
         <source>&amp;Apply (%1)</source>
         <translation>A&amp;plicar (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="278"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="300"/>
         <source>Save to station memory</source>
         <translation>Guardar en la memoria de la estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="289"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
         <source>New address (1-99), or 0 for frames without addresses:</source>
         <translation>Nueva dirección (1-99), o 0 para tramas sin direcciones:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="296"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="319"/>
         <source>%1
 
 %2
@@ -8078,27 +8127,27 @@ Do you want to continue?</source>
 ¿Desea continuar?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="311"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="317"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="323"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="329"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="334"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="346"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="352"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="312"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="335"/>
         <source>Some settings have not been read yet (%1). Refresh and try again.</source>
         <translation>Algunos ajustes aún no se han leído (%1). Actualice y vuelva a intentarlo.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="318"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="350"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="341"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="376"/>
         <source>TipScope profiles (*.json)</source>
         <translation>Perfiles de TipScope (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="349"/>
-        <location filename="../app/gui/pages/settingspage.cpp" line="355"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="375"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="381"/>
         <source>Open profile</source>
         <translation>Abrir perfil</translation>
     </message>
@@ -8108,27 +8157,27 @@ Do you want to continue?</source>
         <translation>Ajustes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="232"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="242"/>
         <source>⚠ Not connected: the greyed values are as last read (the time is beside each). Apply, Save to station memory, Station actions and Profiles wait for the line.</source>
         <translation>⚠ No conectado: los valores en gris son los de la última lectura (la hora está al lado). Aplicar, Guardar en la memoria de la estación, Acciones de la estación y Perfiles esperan a la línea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="236"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="246"/>
         <source>Monitor-only mode is on: Apply, Save to station memory and Station actions are off, nothing is written.</source>
         <translation>El modo solo monitorización está activo: Aplicar, Guardar en la memoria de la estación y Acciones de la estación están desactivados, no se escribe nada.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="324"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="347"/>
         <source>A comment for the profile (optional), e.g. what it is for or who set it:</source>
         <translation>Un comentario para el perfil (opcional), p. ej. para qué es o quién lo configuró:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/settingspage.cpp" line="335"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="358"/>
         <source>no device is selected</source>
         <translation>no hay ningún equipo seleccionado</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/settingspage.cpp" line="340"/>
+        <location filename="../app/gui/pages/settingspage.cpp" line="363"/>
         <source>✓ Profile saved: %n setting(s) of %1 in %2</source>
         <translation>
             <numerusform>✓ Perfil guardado: %n ajuste de %1 en %2</numerusform>

@@ -18,6 +18,8 @@
 #include "model/joints/jointlimitsfile.h"
 #include "model/supportreport.h"
 
+#include "widgets/startfolder.h"
+
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDesktopServices>
@@ -29,7 +31,6 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUrl>
@@ -299,9 +300,8 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::writeSupportReport() {
-    const QString folder = QFileDialog::getExistingDirectory(
-        this, tr("Folder for the support report"),
-        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+    const QString folder =
+        QFileDialog::getExistingDirectory(this, tr("Folder for the support report"), startFolder());
     if (folder.isEmpty())
         return;
     QList<ReportedLine> lines;

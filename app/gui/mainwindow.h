@@ -69,6 +69,9 @@ public:
     QString openWorkspace(const QString &path);
     QString saveWorkspace(const QString &path);
     void closeWorkspace();
+    // File › Save workspace, Save workspace as… and Close workspace, by their text as shown
+    // ("Close workspace"), for tests.
+    [[nodiscard]] QAction *workspaceAction(const QString &name) const;
     // Reopens the workspace open when TipScope last closed, if there was one.
     void reopenLastWorkspace();
     void writeSupportReport();
@@ -95,6 +98,7 @@ private:
     void showFleet();
     void updateTitle();
     void updateWorkspaceStatus();
+    void updateWorkspaceActions();
     void updateBarNote();
     [[nodiscard]] QString workOrderOf(int line) const;
     void loadJointLimits();
@@ -133,6 +137,7 @@ private:
     RemoteDevicePage *m_remotePage;
     QLabel *m_plantLabel;
     QAction *m_stopWatchingPlant = nullptr;
+    QList<QAction *> m_workspaceOnlyActions; // Save, Save as, Close: off with no workspace open
 };
 
 } // namespace tipscope::gui

@@ -6,6 +6,8 @@
 #include "devicetree.h"
 #include "linepages.h"
 
+#include "widgets/startfolder.h"
+
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -16,7 +18,6 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStackedWidget>
-#include <QStandardPaths>
 
 namespace tipscope::gui {
 
@@ -29,14 +30,29 @@ const QString kLastWorkspaceKey = QStringLiteral("workspace/last");
 void MainWindow::buildWorkspaceMenu(QMenu &file) {
     file.addAction(tr("&Open workspace…"), QKeySequence::Open, this,
                    &MainWindow::askToOpenWorkspace);
-    file.addAction(tr("&Save workspace"), QKeySequence::Save, this,
-                   [this] { askToSaveWorkspace(false); });
-    file.addAction(tr("Save workspace &as…"), QKeySequence::SaveAs, this,
-                   [this] { askToSaveWorkspace(true); });
+    m_workspaceOnlyActions = {file.addAction(tr("&Save workspace"), QKeySequence::Save, this,
+                                             [this] { askToSaveWorkspace(false); }),
+                              file.addAction(tr("Save workspace &as…"), QKeySequence::SaveAs, this,
+                                             [this] { askToSaveWorkspace(true); })};
     file.addAction(tr("&Add this line to the workspace…"), this,
                    &MainWindow::addBarLineToWorkspace);
-    file.addAction(tr("C&lose workspace"), this, &MainWindow::closeWorkspace);
+    m_workspaceOnlyActions.append(
+        file.addAction(tr("C&lose workspace"), this, &MainWindow::closeWorkspace));
     file.addSeparator();
+    updateWorkspaceActions();
+}
+
+// Saving or closing no workspace would write an empty file or do nothing at all.
+void MainWindow::updateWorkspaceActions() {
+    for (QAction *a : std::as_const(m_workspaceOnlyActions))
+        a->setEnabled(m_workspace.count() > 0);
+}
+
+QAction *MainWindow::workspaceAction(const QString &name) const {
+    for (QAction *a : m_workspaceOnlyActions)
+        if (QString(a->text()).remove(QLatin1Char('&')) == name)
+            return a;
+    return nullptr;
 }
 
 QString MainWindow::openWorkspace(const QString &path) {
@@ -96,6 +112,7 @@ void MainWindow::onWorkspaceLines() {
 }
 
 void MainWindow::updateWorkspaceStatus() {
+    updateWorkspaceActions();
     const int lines = m_workspace.count();
     m_workspaceLabel->setVisible(lines > 0);
     QStringList down;
@@ -135,9 +152,7 @@ void MainWindow::askToSaveWorkspace(bool choosePath) {
     if (choosePath || path.isEmpty())
         path = QFileDialog::getSaveFileName(
             this, tr("Save workspace"),
-            path.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) +
-                                 QStringLiteral("/workspace.json")
-                           : path,
+            path.isEmpty() ? startFolder() + QStringLiteral("/workspace.json") : path,
             tr("TipScope workspaces (*.json)"));
     if (path.isEmpty())
         return;

@@ -75,6 +75,8 @@ public:
     [[nodiscard]] bool isPaused() const { return m_paused; }
     // Rows that arrived while paused and appear on resume; heldCountChanged() says each change.
     [[nodiscard]] int heldCount() const { return int(m_held.size()); }
+    // How many rows are kept: older ones go as new ones come (a busy line fills it in minutes).
+    [[nodiscard]] int capacity() const { return m_capacity; }
     void setRelativeTime(bool relative);
     // The families of the devices on the line by address (-1: the device of a line without
     // addresses), so a code that families share is named as the device in the frame knows it:

@@ -145,4 +145,8 @@ bool EventHistoryFilter::filterAcceptsRow(int row, const QModelIndex &) const {
     return false;
 }
 
+bool EventHistoryFilter::lessThan(const QModelIndex &left, const QModelIndex &right) const {
+    return left.row() < right.row();
+}
+
 } // namespace tipscope::model

@@ -1,6 +1,7 @@
 // The session's EventLog as a table (EventHistoryModel), one row per entry, oldest first and
 // bounded like the log, and a filter over it (EventHistoryFilter) by a set of kinds, a minimum
-// severity, one device and free text in any column. Any front end can show it: each cell has its
+// severity, one device and free text in any column, which sorts by arrival (descending: the
+// newest first). Any front end can show it: each cell has its
 // text and the event's Level (LevelRole); how a level looks (icon, tint) is the front end's
 // business. A collapsed flood (EventLog::repeated) is one row whose text says how often and until
 // when.
@@ -67,6 +68,9 @@ public:
 
 protected:
     bool filterAcceptsRow(int row, const QModelIndex &parent) const override;
+    // By arrival (the table's own order), whatever the column: sorted descending, the newest
+    // event comes first.
+    bool lessThan(const QModelIndex &left, const QModelIndex &right) const override;
 
 private:
     quint32 m_kinds = kAllEventKinds;

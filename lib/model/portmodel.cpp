@@ -63,6 +63,23 @@ QString TemperatureAlarm::text() const {
     return parts.isEmpty() ? PortModelTr::tr("None") : parts.join(QLatin1String(", "));
 }
 
+// The station raises an alarm when the tip leaves the band its alarm settings put around the
+// selected temperature: what a technician can look at, in the order worth looking.
+QString TemperatureAlarm::advice() const {
+    QStringList parts;
+    if (high)
+        parts.append(PortModelTr::tr(
+            "the tip went above the high alarm limit: if the selected temperature was just "
+            "lowered, wait for the tip to cool; check that the tip suits the tool and the high "
+            "alarm limit (Settings, Alarms)"));
+    if (low)
+        parts.append(PortModelTr::tr(
+            "the tip fell below the low alarm limit: the joint may draw more heat than the tip "
+            "gives (a larger tip), the tip may be worn or not tinned; check the low alarm limit "
+            "(Settings, Alarms)"));
+    return parts.join(QLatin1String("; "));
+}
+
 PortModel::PortModel(StationModel &station, int port, QObject *parent)
     : QObject(parent)
     , m_station(station)

@@ -41,6 +41,8 @@ struct TemperatureAlarm {
     [[nodiscard]] bool any() const { return high || low; }
     // "High temperature, Low temperature", or "None".
     [[nodiscard]] QString text() const;
+    // What to check for the alarm, in words, as the error tables have; empty without an alarm.
+    [[nodiscard]] QString advice() const;
     [[nodiscard]] Level level() const { return any() ? Level::Warning : Level::Ok; }
     friend bool operator==(const TemperatureAlarm &a, const TemperatureAlarm &b) {
         return a.high == b.high && a.low == b.low;

@@ -56,12 +56,16 @@ QString ApplyReport::text() const {
             lines.append(skips);
         return lines.join(QLatin1Char('\n'));
     }
+    // A dry run writes nothing: counting what it wrote said "0 changed" for every profile.
     QString total = diffOnly
                         ? ProfileApplierTr::tr("%n difference(s)", nullptr, int(differences.size()))
-                        : ProfileApplierTr::tr("%1 changed, %2 already right, %3 failed")
-                              .arg(written.size() - failedCount())
-                              .arg(unchanged)
-                              .arg(failedCount());
+                    : dryRun ? ProfileApplierTr::tr("%1 would change, %2 already right")
+                                   .arg(frames.size())
+                                   .arg(unchanged)
+                             : ProfileApplierTr::tr("%1 changed, %2 already right, %3 failed")
+                                   .arg(written.size() - failedCount())
+                                   .arg(unchanged)
+                                   .arg(failedCount());
     if (!skips.isEmpty())
         total += QStringLiteral(", ") + skips;
     lines.append(total);

@@ -14,6 +14,7 @@
 #include "sim/simstation.h"
 
 #include <QApplication>
+#include <QComboBox>
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
@@ -21,6 +22,7 @@
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QStyleOptionComboBox>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
@@ -58,6 +60,7 @@ private Q_SLOTS:
     void recordingWritesTheNewSamplesToTheFile();
     void pngExportRendersTheChartsAtTheChosenSize();
     void onePanePerPortOnRequest();
+    void theWindowBoxShowsAZoomedLengthWhole();
     void hardwareTemperaturesAreDrawnOnRequest();
     void theFeedersSeriesStartAtTheirFirstReadings();
     void theDemoAtWorkShowsAJointsRecoveryAndTheFeederFeeding();
@@ -346,6 +349,30 @@ void TestChartsPage::pngExportRendersTheChartsAtTheChosenSize() {
     const QString error = m_page->exportPng(QStringLiteral("/no/such/folder/chart.png"));
     QVERIFY2(error.startsWith(QStringLiteral("cannot write")), qPrintable(error));
     QCOMPARE(QImage(path).size(), byDefault);
+}
+
+// A zoom shows its own length in the window box ("3 min 12 s"), whole, not "3 min 1".
+void TestChartsPage::theWindowBoxShowsAZoomedLengthWhole() {
+    waitForSamples(10);
+    auto *box = m_page->findChild<QComboBox *>(QStringLiteral("windowCombo"));
+    QVERIFY(box);
+    m_page->viewport().setFollowing(false);
+    m_page->viewport().setWindowLength(qint64(ChartViewport::kDefaultWindowMs * 0.64));
+    m_page->redrawNow();
+    QCOMPARE(box->currentData().toLongLong(), qint64(ChartViewport::kDefaultWindowMs * 0.64));
+    QStyleOptionComboBox option;
+    option.initFrom(box);
+    auto room = [box, &option] {
+        option.rect = box->rect();
+        return box->style()
+            ->subControlRect(QStyle::CC_ComboBox, &option, QStyle::SC_ComboBoxEditField, box)
+            .width();
+    };
+    const int text = box->fontMetrics().horizontalAdvance(box->currentText());
+    QTRY_VERIFY2(room() >= text, qPrintable(QStringLiteral("\"%1\" needs %2 px, has %3")
+                                                .arg(box->currentText())
+                                                .arg(text)
+                                                .arg(room())));
 }
 
 void TestChartsPage::onePanePerPortOnRequest() {

@@ -50,6 +50,7 @@ private Q_SLOTS:
     void saveWritesEveryRowToTheFile();
     void saveToAnUnwritablePathReportsTheError();
     void pageFollowsTheNewLineAfterReconnecting();
+    void theRowCountSaysHowManyRowsAreKept();
 
 private:
     template <class T> T *child(const char *name) const {
@@ -382,6 +383,16 @@ void TestConsolePage::pageFollowsTheNewLineAfterReconnecting() {
         return n;
     };
     QVERIFY(discoveryRows() > 0);
+}
+
+// A busy line fills the console in a few minutes; the oldest rows going is said, not found out.
+void TestConsolePage::theRowCountSaysHowManyRowsAreKept() {
+    auto *count = child<QLabel>("rowCountLabel");
+    QTRY_VERIFY(m_page->visibleRows()->rowCount() > 0);
+    QTRY_VERIFY2(count->text().endsWith(
+                     QStringLiteral("; the newest %1 are kept").arg(QLocale().toString(20000))),
+                 qPrintable(count->text()));
+    QVERIFY(count->width() >= count->fontMetrics().horizontalAdvance(count->text()));
 }
 
 QTEST_MAIN(TestConsolePage)

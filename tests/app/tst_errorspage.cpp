@@ -4,10 +4,12 @@
 
 #include "demosession.h"
 #include "sim/simline.h"
+#include "sim/simstation.h"
 
 #include <QApplication>
 #include <QClipboard>
 #include <QComboBox>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -70,10 +72,12 @@ private Q_SLOTS:
     void monitorOnlyBlocksTheFeederReset();
     void rowsFollowDevicesAsTheyComeAndGo();
     void historyFiltersByKindSeverityAndText();
-    void newestEventStaysVisibleUnlessTheReaderScrolledUp();
+    void newestEventComesFirstAndStaysInViewUnlessTheReaderScrolledDown();
     void copyPutsTheSelectedRowsOnTheClipboard();
     void exportTextWritesTheShownRowsTabSeparated();
     void aFloodOfOneWarningIsOneRowWithItsCountAndSpan();
+    void aLongSourceIsShownWhole();
+    void whatToCheckLeavesTheHistoryItsRows();
 
 private:
     void connectDemo();
@@ -175,6 +179,13 @@ void TestErrorsPage::latchedAlarmShowsAsWarningOnItsPort() {
         stateText(state(), portName(3), Alarm).contains(QLatin1String("High temperature")),
         kReadMs);
     QCOMPARE(stateText(state(), portName(3), Severity), QStringLiteral("Warning"));
+    // An alarm has what to check in words too, as an error has.
+    auto *advice = m_page->findChild<QLabel *>(QStringLiteral("errorAdvice"));
+    QVERIFY(advice);
+    QTRY_VERIFY(advice->isVisibleTo(m_page.get()));
+    QVERIFY2(advice->text().contains(portName(3) + QStringLiteral(", High temperature alarm: ")) &&
+                 advice->text().contains(QStringLiteral("high alarm limit")),
+             qPrintable(advice->text()));
     // The station row has no alarm column of its own.
     QCOMPARE(stateText(state(), m_session->station()->displayName(), Alarm), QString());
 }
@@ -286,25 +297,27 @@ void TestErrorsPage::historyFiltersByKindSeverityAndText() {
     QTRY_COMPARE(m->rowCount(), 2);
 }
 
-void TestErrorsPage::newestEventStaysVisibleUnlessTheReaderScrolledUp() {
+void TestErrorsPage::newestEventComesFirstAndStaysInViewUnlessTheReaderScrolledDown() {
     QTableView *view = history();
     addEvents(300, QStringLiteral("event %1"));
     QTRY_COMPARE(view->model()->rowCount(), 300);
-    auto lastRowVisible = [view] {
-        const QModelIndex last = view->model()->index(view->model()->rowCount() - 1, 0);
-        return view->viewport()->rect().contains(view->visualRect(last));
-    };
+    const QAbstractItemModel *m = view->model();
+    auto topRowText = [view, m] { return m->index(view->rowAt(0), Text).data().toString(); };
     QVERIFY(view->verticalScrollBar()->maximum() > 0); // there is something to scroll
-    QTRY_VERIFY(lastRowVisible());
+    QCOMPARE(m->index(0, Text).data().toString(), QStringLiteral("event 299"));
+    QTRY_COMPARE(topRowText(), QStringLiteral("event 299"));
     addEvents(5, QStringLiteral("more %1"));
-    QTRY_COMPARE(view->model()->rowCount(), 305);
-    QTRY_VERIFY(lastRowVisible());
+    QTRY_COMPARE(m->rowCount(), 305);
+    QCOMPARE(m->index(0, Text).data().toString(), QStringLiteral("more 4"));
+    QTRY_COMPARE(topRowText(), QStringLiteral("more 4"));
 
-    // Someone reading back through the history is not yanked to the bottom.
-    view->verticalScrollBar()->setValue(0);
+    // Someone reading back through the history keeps the rows they read in front of them.
+    view->verticalScrollBar()->setValue(100);
+    const QString reading = topRowText();
     addEvents(5, QStringLiteral("later %1"));
-    QTRY_COMPARE(view->model()->rowCount(), 310);
-    QCOMPARE(view->verticalScrollBar()->value(), 0);
+    QTRY_COMPARE(m->rowCount(), 310);
+    QCOMPARE(topRowText(), reading);
+    QCOMPARE(m->index(0, Text).data().toString(), QStringLiteral("later 4"));
 }
 
 void TestErrorsPage::copyPutsTheSelectedRowsOnTheClipboard() {
@@ -375,10 +388,48 @@ void TestErrorsPage::aFloodOfOneWarningIsOneRowWithItsCountAndSpan() {
                                   QStringLiteral("DME-2C at 01"),
                                   QStringLiteral("not sent: the line is not connected"));
     QTRY_COMPARE(history()->model()->rowCount(), before + 1);
-    const QString text = history()->model()->index(before, Text).data().toString();
+    const QString text = history()->model()->index(0, Text).data().toString(); // the newest
     QVERIFY2(
         text.startsWith(QStringLiteral("not sent: the line is not connected (75 times, until ")),
         qPrintable(text));
+}
+
+// A device named by its workspace line, in German: "DME-2C, Adresse 01, Port 4" was cut before
+// its port in a column sized for the English "DME-2C at 01, port 4".
+void TestErrorsPage::aLongSourceIsShownWhole() {
+    const QString source = QStringLiteral("Rework station B, Adresse 01, Port 4");
+    m_session->eventLog().add(Event::Kind::PortError, Event::Severity::Error, source,
+                              QStringLiteral("Short circuit"));
+    QTableView *view = history();
+    QTRY_COMPARE(view->model()->rowCount(), 1);
+    QCOMPARE(view->model()->index(0, Source).data().toString(), source);
+    const QRect cell = view->visualRect(view->model()->index(0, Source));
+    QVERIFY2(cell.width() > view->fontMetrics().horizontalAdvance(source) + 8,
+             qPrintable(QStringLiteral("%1 px for %2 px of text")
+                            .arg(cell.width())
+                            .arg(view->fontMetrics().horizontalAdvance(source))));
+    QVERIFY(cell.right() < view->viewport()->width()); // what happened still has its room
+}
+
+// At 1280x720 the page is about 1040x590. Three ports in error and one in alarm have much to
+// check; the history still shows five rows, not two or three.
+void TestErrorsPage::whatToCheckLeavesTheHistoryItsRows() {
+    m_page->resize(1040, 590);
+    connectDemo();
+    sim::SimStation *station = m_session->demoLine()->station();
+    station->setPortError(1, 1);
+    station->setPortError(2, 1);
+    station->setPortError(4, 1);
+    station->latchAlarm(3, 1);
+    auto *advice = m_page->findChild<QLabel *>(QStringLiteral("errorAdvice"));
+    QVERIFY(advice);
+    QTRY_VERIFY_WITH_TIMEOUT(advice->text().count(QStringLiteral("• ")) == 4, kReadMs);
+    QTRY_VERIFY(advice->isVisibleTo(m_page.get()));
+    QTableView *view = history();
+    const int rowHeight = view->verticalHeader()->defaultSectionSize();
+    QTRY_VERIFY2(view->viewport()->height() >= 5 * rowHeight,
+                 qPrintable(QStringLiteral("%1 rows of history shown")
+                                .arg(view->viewport()->height() / rowHeight)));
 }
 
 QTEST_MAIN(TestErrorsPage)

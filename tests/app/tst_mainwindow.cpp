@@ -7,6 +7,7 @@
 #include "pages/portcard.h"
 #include "pages/settingspage.h"
 #include "widgets/parametereditor.h"
+#include "widgets/startfolder.h"
 
 #include "i18n/translations.h"
 #include "link/simtransport.h"
@@ -15,6 +16,7 @@
 #include <QSettings>
 #include <QStyle>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QTranslator>
 #include <QTreeWidgetItemIterator>
 #include <QtTest>
@@ -36,6 +38,7 @@ private Q_SLOTS:
     void badConnectionSettingsAreRefusedWithAReason();
     void germanDeviceTreeLabelsAreShownWholeAt1280();
     void theJointsPageReadsTheWindowsJournalAndFollowsItsWorkOrder();
+    void fileDialogsOfferAFolderThatExistsOnAFreshAccount();
 
 private:
     void connectDemo(MainWindow &w);
@@ -209,6 +212,28 @@ void TestMainWindow::germanDeviceTreeLabelsAreShownWholeAt1280() {
             QCOMPARE((*it)->toolTip(0), (*it)->text(0));
     }
     qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
+}
+
+// A fresh account has no Documents folder yet: the support report's folder dialog (and every
+// export) starts in the home folder then, not in a folder that is not there.
+void TestMainWindow::fileDialogsOfferAFolderThatExistsOnAFreshAccount() {
+    QTemporaryDir home;
+    QVERIFY(home.isValid());
+    const QByteArray oldHome = qgetenv("HOME");
+    const QByteArray oldConfig = qgetenv("XDG_CONFIG_HOME");
+    qputenv("HOME", QFile::encodeName(home.path()));
+    qputenv("XDG_CONFIG_HOME", QFile::encodeName(home.filePath(QStringLiteral(".config"))));
+    const QString fresh = startFolder();
+    QVERIFY(QDir(home.path()).mkdir(QStringLiteral("Documents")));
+    const QString withDocuments = startFolder();
+    qputenv("HOME", oldHome);
+    if (oldConfig.isNull())
+        qunsetenv("XDG_CONFIG_HOME");
+    else
+        qputenv("XDG_CONFIG_HOME", oldConfig);
+    QCOMPARE(QDir(fresh).canonicalPath(), QDir(home.path()).canonicalPath());
+    QCOMPARE(QDir(withDocuments).canonicalPath(),
+             QDir(home.filePath(QStringLiteral("Documents"))).canonicalPath());
 }
 
 QTEST_MAIN(TestMainWindow)

@@ -193,9 +193,19 @@ void TestMainWindowWorkspace::aWorkspaceThatCannotBeReadIsRefusedAndTheOpenOneSt
 
 void TestMainWindowWorkspace::theSavedWorkspaceReopensAtTheNextStartUntilItIsClosed() {
     const QString copy = m_dir.filePath(QStringLiteral("copy.json"));
+    const QStringList workspaceOnly{QStringLiteral("Save workspace"),
+                                    QStringLiteral("Save workspace as…"),
+                                    QStringLiteral("Close workspace")};
     {
         MainWindow w;
+        // Nothing to save or close yet: the menu says so before anyone tries.
+        for (const QString &name : workspaceOnly) {
+            QVERIFY2(w.workspaceAction(name), qPrintable(name));
+            QVERIFY2(!w.workspaceAction(name)->isEnabled(), qPrintable(name));
+        }
         QCOMPARE(w.openWorkspace(m_path), QString());
+        for (const QString &name : workspaceOnly)
+            QVERIFY2(w.workspaceAction(name)->isEnabled(), qPrintable(name));
         QCOMPARE(w.saveWorkspace(copy), QString());
         const auto saved = WorkspaceFile::load(copy);
         QVERIFY2(saved.ok(), qPrintable(saved.error()));
@@ -209,6 +219,8 @@ void TestMainWindowWorkspace::theSavedWorkspaceReopensAtTheNextStartUntilItIsClo
         QCOMPARE(w.workspace().count(), 2);
         w.closeWorkspace();
         QCOMPARE(w.workspace().count(), 0);
+        for (const QString &name : workspaceOnly)
+            QVERIFY2(!w.workspaceAction(name)->isEnabled(), qPrintable(name));
     }
     MainWindow w;
     w.reopenLastWorkspace();

@@ -3,11 +3,14 @@
 // last reading, the controls are off and the page says why; after the reconnect a control that
 // failed for the lost line is no error any more; the cards share the page's height, and their
 // sparklines draw the last minute; a setpoint out of range is refused, not clamped.
+#include "devicetree.h"
+#include "mainwindow.h"
 #include "pages/overviewpage.h"
 #include "pages/portcard.h"
 #include "widgets/sparkline.h"
 
 #include "link/simtransport.h"
+#include "model/joints/jointrecord.h"
 #include "sim/demoactivity.h"
 #include "sim/simline.h"
 
@@ -20,11 +23,14 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSettings>
 #include <QTcpServer>
 #include <QtTest>
 
 using namespace tipscope;
 using namespace tipscope::model;
+using tipscope::gui::DeviceTree;
+using tipscope::gui::MainWindow;
 using tipscope::gui::OverviewPage;
 using tipscope::gui::PortCard;
 using tipscope::gui::Sparkline;
@@ -36,6 +42,7 @@ constexpr int kConnectMs = 60000;
 class TestOverviewPage : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void initTestCase();
     void init();
     void cleanup();
     void aPortInErrorIsUnmistakableOnItsCard();
@@ -48,6 +55,8 @@ private Q_SLOTS:
     void theTransformerTemperatureFollowsTheTemperatureUnit();
     void eachCardShowsItsPortsLastJointAndStillFits();
     void aLineWithoutAStationSaysWhatItIsDoing();
+    void noSideScrollingAtTheWindowsDefaultSizeWithAJointAndAnError_data();
+    void noSideScrollingAtTheWindowsDefaultSizeWithAJointAndAnError();
 
 private:
     void connectDemo();
@@ -112,6 +121,68 @@ void TestOverviewPage::aLineWithoutAStationSaysWhatItIsDoing() {
                                   "<i>No station on this line.</i>Cannot open tcp")) &&
                                   m_page->stationText().endsWith(QStringLiteral("refused")),
                               qPrintable(m_page->stationText()), kConnectMs);
+}
+
+void TestOverviewPage::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("TipScopeTests"));
+    QSettings().clear();
+}
+
+void TestOverviewPage::noSideScrollingAtTheWindowsDefaultSizeWithAJointAndAnError_data() {
+    QTest::addColumn<QSize>("window");
+    QTest::newRow("1147x692, the default on a 1280x720 screen") << QSize(1147, 692);
+    QTest::newRow("1280x720") << QSize(1280, 720);
+}
+
+// Port 2's tool has the longest name; with its last joint beside it and a port in error, no
+// side scroll bar hides the setpoint, power and Set button of the right-hand cards.
+void TestOverviewPage::noSideScrollingAtTheWindowsDefaultSizeWithAJointAndAnError() {
+    QFETCH(QSize, window);
+    m_page.reset(); // the window's own page
+    MainWindow w;
+    w.resize(window);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    AppSettings demo;
+    demo.kind = AppSettings::Kind::Demo;
+    w.connectWith(demo);
+    QTRY_VERIFY_WITH_TIMEOUT(w.session().station(), kConnectMs);
+    StationModel *station = w.session().station();
+    QVERIFY(w.deviceTree().select(DeviceTree::kBarLine, station));
+    auto *page = qobject_cast<OverviewPage *>(w.page(QStringLiteral("Overview")));
+    QVERIFY(page);
+    w.pages().setCurrentWidget(page);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        page->card(2) && page->card(2)->tipText().contains(QStringLiteral("°C")), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(page->card(2)->statusText().contains(QStringLiteral("Working")) ||
+                                 page->card(2)->statusText().contains(QStringLiteral("Stand")),
+                             kConnectMs);
+    JointRecord joint;
+    joint.device = station->identity();
+    joint.port = 2;
+    joint.recoveryMs = 1640;
+    joint.verdict = JointVerdict::SlowRecovery;
+    page->card(2)->showJoint(joint);
+    w.session().demoLine()->station()->setPortError(2, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(page->card(2)->look() == Level::Error, kConnectMs);
+    auto *scroll = page->findChild<QScrollArea *>();
+    QVERIFY(scroll);
+    QTRY_COMPARE(scroll->horizontalScrollBar()->maximum(), 0);
+    // The joint is read at a glance: on one line, the title wrapping if one must.
+    auto *jointLine = page->card(2)->findChild<QLabel *>(QStringLiteral("lastJoint"));
+    QVERIFY(jointLine);
+    QVERIFY2(jointLine->height() < 2 * jointLine->fontMetrics().lineSpacing(),
+             qPrintable(QString::number(jointLine->height())));
+    for (int port : {2, 4}) {
+        PortCard *card = page->card(port);
+        const QRect shown(card->mapTo(scroll->viewport(), QPoint(0, 0)), card->size());
+        QVERIFY2(scroll->viewport()->rect().contains(shown.topRight()),
+                 qPrintable(QStringLiteral("port %1's card ends at %2, the page at %3")
+                                .arg(port)
+                                .arg(shown.right())
+                                .arg(scroll->viewport()->width())));
+    }
 }
 
 void TestOverviewPage::init() {

@@ -14,6 +14,8 @@
 #include <QDoubleSpinBox>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLabel>
+#include <QLineEdit>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -37,6 +39,9 @@ private Q_SLOTS:
     void revertAndRefreshDiscardARefusedValue();
     void aSavedProfileSaysWhereItWentAndCarriesTheComment();
     void thePortBoxShowsItsWholeText();
+    void anEditCountsWhileItIsTyped();
+    void aVerifiedWriteNotSavedToMemorySaysItIsInSync();
+    void theSavedProfileMessageGoesWithTheNextAction();
 
 private:
     void connectDemo();
@@ -187,6 +192,78 @@ void TestSettingsPage::thePortBoxShowsItsWholeText() {
         QVERIFY2(box->sizeHint().width() > box->fontMetrics().horizontalAdvance(box->itemText(i)),
                  qPrintable(box->itemText(i)));
     QVERIFY(box->width() >= box->sizeHint().width());
+}
+
+// Typing a value is an edit before the field is left: the field is highlighted and Apply is on
+// at once; a value on its way through numbers not allowed ("4", "43") neither counts nor is
+// refused until the typing ends.
+void TestSettingsPage::anEditCountsWhileItIsTyped() {
+    connectDemo();
+    ParameterEditor *mat = readEditor("MAT");
+    QVERIFY(mat);
+    auto *spin = mat->findChild<QDoubleSpinBox *>();
+    QTRY_VERIFY(spin->isVisible()); // a box shown later takes its value again
+    testing::typeInto(*spin, QStringLiteral("4"), false);
+    QVERIFY(!mat->hasRefusal());
+    QCOMPARE(m_page->editedCount(), 0);
+    QTest::keyClicks(spin->findChild<QLineEdit *>(), QStringLiteral("35"));
+    QVERIFY(spin->hasFocus()); // still typing
+    QTRY_COMPARE(mat->stateText(), QStringLiteral("edited"));
+    QCOMPARE(m_page->editedCount(), 1);
+    QTRY_VERIFY(m_page->button(QStringLiteral("apply"))->isEnabled());
+    QVERIFY(spin->findChild<QLineEdit *>()->styleSheet().contains(QStringLiteral("background")));
+    QCOMPARE(spin->findChild<QLineEdit *>()->text(), QStringLiteral("435 °C")); // as typed
+
+    // Back through a number not allowed: the earlier edit is not left to be applied instead.
+    QTest::keyClick(spin->findChild<QLineEdit *>(), Qt::Key_Backspace);
+    QTRY_COMPARE(m_page->editedCount(), 0);
+    QVERIFY(!mat->hasRefusal());
+    QTRY_VERIFY(!m_page->button(QStringLiteral("apply"))->isEnabled());
+    QTest::keyClick(spin->findChild<QLineEdit *>(), Qt::Key_Return);
+    QVERIFY(mat->hasRefusal()); // said once the typing ends
+}
+
+// The selected temperature is volatile: written and read back, it is in sync, and not yet in
+// the station's memory. A grey "not saved" alone read as a failed write.
+void TestSettingsPage::aVerifiedWriteNotSavedToMemorySaysItIsInSync() {
+    connectDemo();
+    Parameter *st1 = m_session->station()->parameter("ST1");
+    ParameterEditor *editor = readEditor("ST1");
+    QVERIFY(editor);
+    const qint64 next = st1->number().value_or(350) == 300 ? 310 : 300;
+    QCOMPARE(editor->enterText(QString::number(next)), QString());
+    m_page->applyEdits();
+    QTRY_COMPARE_WITH_TIMEOUT(st1->state(), Parameter::State::InSync, kConnectMs);
+    QVERIFY(!st1->isSavedToMemory());
+    QTRY_COMPARE(editor->stateText(), QStringLiteral("✓ in sync, not yet saved"));
+    auto *state = editor->findChild<QLabel *>();
+    for (QLabel *label : editor->findChildren<QLabel *>())
+        if (label->text() == editor->stateText())
+            state = label;
+    QVERIFY2(state->toolTip().contains(QStringLiteral("station memory")),
+             qPrintable(state->toolTip()));
+    QVERIFY(!state->styleSheet().contains(QStringLiteral("palette(mid)"))); // not greyed
+    QVERIFY(state->width() >= state->fontMetrics().horizontalAdvance(state->text()));
+}
+
+// "✓ Profile saved" is about that save: the next action has its own result, and the old
+// message stays on screen no longer.
+void TestSettingsPage::theSavedProfileMessageGoesWithTheNextAction() {
+    connectDemo();
+    m_session->station()->refreshAll(link::Priority::UserRead);
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->line()->queue().pendingCount() == 0, kConnectMs);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("line.json"));
+    QVERIFY(m_page->saveProfileTo(path, {}));
+    QVERIFY(m_page->noticeText().contains(path));
+    QTest::mouseClick(m_page->button(QStringLiteral("refresh")), Qt::LeftButton);
+    QVERIFY2(!m_page->noticeText().contains(path), qPrintable(m_page->noticeText()));
+
+    QVERIFY(m_page->saveProfileTo(path, {}));
+    ParameterEditor *mat = readEditor("MAT");
+    QVERIFY(mat);
+    testing::typeInto(*mat->findChild<QDoubleSpinBox *>(), QStringLiteral("420"));
+    QTRY_VERIFY2(!m_page->noticeText().contains(path), qPrintable(m_page->noticeText()));
 }
 
 QTEST_MAIN(TestSettingsPage)

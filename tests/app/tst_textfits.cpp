@@ -7,16 +7,25 @@
 #include "devicetree.h"
 #include "i18n/translations.h"
 #include "mainwindow.h"
+#include "pages/feederpage.h"
+#include "pages/settingspage.h"
 #include "widgets/elidedlabel.h"
+#include "widgets/parametereditor.h"
+
+#include "support/typing.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QGroupBox>
 #include <QLabel>
+#include <QLineEdit>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStyleOptionComboBox>
 #include <QTabBar>
 #include <QTabWidget>
+#include <QToolButton>
 #include <QTranslator>
 #include <QtTest>
 
@@ -77,6 +86,31 @@ QString clipped(QWidget *w) {
                                                         .arg(button->width())
                                                   : QString();
     }
+    if (auto *edit = qobject_cast<QLineEdit *>(w)) {
+        // The example in an empty field says what to type: cut, it says nothing. Its room ends
+        // where the field's own buttons (clear, or a combo box's arrow outside it) begin.
+        if (!edit->text().isEmpty() || edit->placeholderText().isEmpty())
+            return {};
+        QStyleOptionFrame option;
+        option.initFrom(edit);
+        option.rect = edit->rect();
+        option.lineWidth =
+            edit->hasFrame()
+                ? edit->style()->pixelMetric(QStyle::PM_DefaultFrameWidth, &option, edit)
+                : 0;
+        QRect room = edit->style()
+                         ->subElementRect(QStyle::SE_LineEditContents, &option, edit)
+                         .marginsRemoved(edit->textMargins());
+        for (const QToolButton *b : edit->findChildren<QToolButton *>())
+            if (b->isVisibleTo(edit))
+                room.setRight(qMin(room.right(), b->x() - 1));
+        const int width = edit->fontMetrics().horizontalAdvance(edit->placeholderText());
+        return width > room.width() - 4 ? QStringLiteral("placeholder \"%1\" needs %2 px, has %3")
+                                              .arg(edit->placeholderText())
+                                              .arg(width)
+                                              .arg(room.width() - 4)
+                                        : QString();
+    }
     if (auto *combo = qobject_cast<QComboBox *>(w)) {
         if (combo->currentText().isEmpty())
             return {};
@@ -118,6 +152,54 @@ QString clipped(QWidget *w) {
     }
     return {};
 }
+// The window at the smallest screen size it is made for, on the demo line.
+void showOnTheDemoLine(MainWindow &window) {
+    window.resize(1280, 720);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    AppSettings demo;
+    demo.kind = AppSettings::Kind::Demo;
+    window.connectWith(demo);
+    QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), Session::State::Connected, kConnectMs);
+}
+
+// Types `text` into the editor's box; why its refusal is not shown whole under the field, or
+// empty when it is (with the allowed range).
+QString refusalCut(ParameterEditor &editor, const QString &text) {
+    auto *box = editor.findChild<QDoubleSpinBox *>();
+    if (!box)
+        return QStringLiteral("no number box");
+    testing::typeInto(*box, text);
+    const QString why = editor.messageText();
+    if (!editor.hasRefusal() || why.isEmpty())
+        return QStringLiteral("%1 was not refused").arg(text);
+    const QString allowed = editor.parameter()->allowedText();
+    if (!why.contains(allowed))
+        return QStringLiteral("\"%1\" does not say what is allowed (%2)").arg(why, allowed);
+    QLabel *message = nullptr;
+    for (QLabel *label : editor.findChildren<QLabel *>())
+        if (label->isVisible() && label->text() == why)
+            message = label;
+    if (!message)
+        return QStringLiteral("\"%1\" is not shown under the field").arg(why);
+    for (QWidget *w = &editor; w; w = w->parentWidget())
+        if (auto *scroll = qobject_cast<QScrollArea *>(w)) {
+            scroll->ensureWidgetVisible(message);
+            break;
+        }
+    QCoreApplication::processEvents();
+    // Room of its own, and not cut by the field, the form or the page around it.
+    const int needed = message->heightForWidth(message->width());
+    const QRect seen = message->visibleRegion().boundingRect();
+    if (seen.height() + 1 < needed || seen.width() + 1 < message->width())
+        return QStringLiteral("\"%1\" needs %2×%3 px, %4×%5 are seen")
+            .arg(why)
+            .arg(message->width())
+            .arg(needed)
+            .arg(seen.width())
+            .arg(seen.height());
+    return {};
+}
 } // namespace
 
 class TestTextFits : public QObject {
@@ -126,6 +208,8 @@ private Q_SLOTS:
     void initTestCase();
     void everyTextOnEveryPageFitsAt1280x720_data();
     void everyTextOnEveryPageFitsAt1280x720();
+    void aRefusalShowsItsWholeReasonUnderTheFieldAt1280x720_data();
+    void aRefusalShowsItsWholeReasonUnderTheFieldAt1280x720();
 };
 
 void TestTextFits::initTestCase() {
@@ -146,19 +230,22 @@ void TestTextFits::everyTextOnEveryPageFitsAt1280x720() {
     QStringList problems;
     {
         MainWindow window;
-        window.resize(1280, 720);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        AppSettings demo;
-        demo.kind = AppSettings::Kind::Demo;
-        window.connectWith(demo);
-        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), Session::State::Connected, kConnectMs);
+        showOnTheDemoLine(window);
+        if (QTest::currentTestFailed())
+            return;
         // Every port's tool and every setting read, so the texts are the real ones.
         QTest::qWait(3000);
         QTabWidget &pages = window.pages();
         for (int i = 0; i < pages.count(); ++i) {
             pages.setCurrentIndex(i);
             QTest::qWait(300);
+            // A page that needs more than the screen widens the window past its edge and takes
+            // the device tree's width as it comes and goes.
+            if (const int needed = window.minimumSizeHint().width(); needed > 1280)
+                problems.append(QStringLiteral("%1: the window needs %2 px of width, the screen "
+                                               "has 1280")
+                                    .arg(pages.tabText(i))
+                                    .arg(needed));
             for (QWidget *w : window.findChildren<QWidget *>()) {
                 if (!w->isVisible() || w->visibleRegion().isEmpty())
                     continue;
@@ -171,6 +258,52 @@ void TestTextFits::everyTextOnEveryPageFitsAt1280x720() {
     qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
     problems.removeDuplicates();
     // One line each: QVERIFY2 cuts a long message short.
+    for (const QString &p : std::as_const(problems))
+        qWarning("%s", qPrintable(p));
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+}
+
+void TestTextFits::aRefusalShowsItsWholeReasonUnderTheFieldAt1280x720_data() {
+    everyTextOnEveryPageFitsAt1280x720_data();
+}
+
+// 600 °C on Settings and 999 mm/s on the Feeder page are refused; the reason and the range
+// allowed are read whole under the field, in every language, at the smallest screen size.
+void TestTextFits::aRefusalShowsItsWholeReasonUnderTheFieldAt1280x720() {
+    QFETCH(QString, language);
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), language), language);
+    QStringList problems;
+    {
+        MainWindow window;
+        showOnTheDemoLine(window);
+        if (QTest::currentTestFailed())
+            return;
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().station() && window.session().feeder(),
+                                 kConnectMs);
+        StationModel *station = window.session().station();
+        FeederModel *feeder = window.session().feeder();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            station->parameter("MAT")->value() && feeder->parameter("SPD")->value(), kConnectMs);
+
+        QVERIFY(window.deviceTree().select(DeviceTree::kBarLine, station, 1));
+        auto *settings = window.findChild<SettingsPage *>();
+        QVERIFY(settings);
+        window.pages().setCurrentWidget(settings);
+        QTRY_VERIFY(settings->editorFor("MAT") && settings->editorFor("MAT")->isVisible());
+        if (const QString why = refusalCut(*settings->editorFor("MAT"), QStringLiteral("600"));
+            !why.isEmpty())
+            problems.append(QStringLiteral("Settings: ") + why);
+
+        QVERIFY(window.deviceTree().select(DeviceTree::kBarLine, feeder));
+        auto *feederPage = window.findChild<FeederPage *>();
+        QVERIFY(feederPage);
+        window.pages().setCurrentWidget(feederPage);
+        QTRY_VERIFY(feederPage->editorFor("SPD") && feederPage->editorFor("SPD")->isVisible());
+        if (const QString why = refusalCut(*feederPage->editorFor("SPD"), QStringLiteral("999"));
+            !why.isEmpty())
+            problems.append(QStringLiteral("Feeder: ") + why);
+    }
+    qDeleteAll(QCoreApplication::instance()->findChildren<QTranslator *>());
     for (const QString &p : std::as_const(problems))
         qWarning("%s", qPrintable(p));
     QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));

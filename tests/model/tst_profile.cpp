@@ -290,6 +290,9 @@ void TestProfile::dryRunListsTheFramesAndWritesNothing() {
     QVERIFY2(dry.frames.first().contains(QStringLiteral("00→01 W ST1 00300")),
              qPrintable(dry.frames.first()));
     QVERIFY(dry.frames.first().startsWith(QStringLiteral("02 30 30 30 31 57")));
+    // The count says what the run would do, not what it wrote (nothing).
+    QVERIFY2(dry.text().endsWith(QStringLiteral("\n1 would change, 1 already right")),
+             qPrintable(dry.text()));
     f.settle();
     QCOMPARE(f.simLine->stats().writeRequests, 0);
 }

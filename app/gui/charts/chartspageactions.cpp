@@ -10,6 +10,8 @@
 #include "widgets/elidedlabel.h"
 #include "widgets/flowlayout.h"
 
+#include "widgets/startfolder.h"
+
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDateTime>
@@ -20,7 +22,6 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
-#include <QStandardPaths>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -34,7 +35,7 @@ QString ChartsPage::softwareVersion() {
 }
 
 QString ChartsPage::suggestedPath(const QString &suffix) {
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString folder = startFolder();
     return folder + QStringLiteral("/tipscope-") +
            QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")) + suffix;
 }
@@ -66,6 +67,9 @@ void ChartsPage::buildToolbar(QVBoxLayout *layout) {
     pairLayout->addWidget(m_window);
     m_window->setObjectName(QStringLiteral("windowCombo"));
     m_window->setAccessibleName(tr("Time window"));
+    // A zoom adds its own length ("1 min 36 s"), longer than the lengths offered: sized once,
+    // the box cut it to "1 min 3".
+    m_window->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     windowLabel->setBuddy(m_window);
     const std::pair<QString, qint64> windows[] = {
         {tr("30 s"), 30'000},        {tr("1 min"), 60'000},        {tr("5 min"), 300'000},

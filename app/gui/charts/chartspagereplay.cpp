@@ -8,11 +8,12 @@
 #include "model/recording/recordingloader.h"
 #include "model/timetext.h"
 
+#include "widgets/startfolder.h"
+
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QProgressDialog>
-#include <QStandardPaths>
 #include <QTimer>
 #include <algorithm>
 
@@ -124,9 +125,7 @@ QString ChartsPage::showMoment(const DeviceIdentity &device, qint64 fromMs, qint
 
 void ChartsPage::chooseReplay() {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open a chart recording"),
-        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation),
-        tr("CSV file (*.csv);;All files (*)"));
+        this, tr("Open a chart recording"), startFolder(), tr("CSV file (*.csv);;All files (*)"));
     if (path.isEmpty())
         return;
     connect(

@@ -4,6 +4,7 @@
 
 #include "protocol/catalogtext.h"
 #include "protocol/hexbytes.h"
+#include "widgets/placeholderfit.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -16,6 +17,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QMessageBox>
 #include <QRegularExpression>
 #include <QScrollBar>
@@ -93,7 +95,8 @@ ConsolePage::ConsolePage(model::Session &session, QWidget *parent)
     // the page folds its last items away, and the count of held rows must stay in sight.
     m_count = new QLabel(this);
     m_count->setObjectName(QStringLiteral("rowCountLabel"));
-    m_count->setToolTip(tr("While paused, new rows are held; they appear on resume."));
+    m_count->setToolTip(tr("Older rows go as new ones come; Save… writes the rows kept to a "
+                           "file. While paused, new rows are held; they appear on resume."));
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(bar);
     layout->addWidget(m_table, 1);
@@ -194,6 +197,7 @@ void ConsolePage::buildToolBar(QToolBar *bar) {
     m_command->setPlaceholderText(tr("e.g. ST1"));
     m_command->setClearButtonEnabled(true);
     m_command->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('W')) * 10);
+    fitPlaceholders(*m_command, {m_command->placeholderText()});
     commandLabel->setBuddy(m_command);
     bar->addWidget(commandLabel);
     bar->addWidget(m_command);
@@ -370,7 +374,11 @@ void ConsolePage::copySelection() {
 }
 
 void ConsolePage::updateCount() {
-    QString text = tr("%1 of %2 rows shown").arg(m_proxy->rowCount()).arg(m_model->rowCount());
+    // A busy line fills the console in minutes: people should know the oldest rows go.
+    QString text = tr("%1 of %2 rows shown; the newest %3 are kept")
+                       .arg(m_proxy->rowCount())
+                       .arg(m_model->rowCount())
+                       .arg(QLocale().toString(m_model->capacity()));
     if (m_model->isPaused())
         text += QStringLiteral(" · ") + tr("paused: %n held", "", m_model->heldCount());
     m_count->setText(text);

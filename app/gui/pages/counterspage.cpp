@@ -5,6 +5,8 @@
 #include "model/io/csv.h"
 #include "widgets/deferredrefresh.h"
 
+#include "widgets/startfolder.h"
+
 #include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
@@ -15,7 +17,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -381,7 +382,7 @@ void CountersPage::chooseExportFile() {
     const QString name =
         QStringLiteral("tipscope-counters-%1.csv")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmm")));
-    const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString dir = startFolder();
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Export counters"), QDir(dir).filePath(name), tr("CSV files (*.csv)"));
     if (path.isEmpty())

@@ -9,6 +9,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -20,6 +21,7 @@ using protocol::Role;
 namespace {
 
 constexpr int kMaxRowsShown = 10;
+constexpr int kAdviceLinesShown = 4; // more scroll
 
 void setCell(QTableWidget *table, int row, int column, const QString &text, Level tintLevel,
              const QString &tip = {}, const QIcon &icon = {}) {
@@ -107,11 +109,20 @@ ErrorStatePanel::ErrorStatePanel(Session &session, QWidget *parent)
     m_advice->setWordWrap(true);
     m_advice->setTextFormat(Qt::PlainText);
     m_advice->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_advice->hide();
+    // Several ports in error have much to check: their advice scrolls in a few lines of its own
+    // rather than leave the history below two or three rows.
+    m_adviceBox = new QScrollArea(this);
+    m_adviceBox->setWidget(m_advice);
+    m_adviceBox->setWidgetResizable(true);
+    m_adviceBox->setFrameShape(QFrame::NoFrame);
+    m_adviceBox->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_adviceBox->setMaximumHeight(fontMetrics().lineSpacing() * kAdviceLinesShown +
+                                  2 * m_advice->margin());
+    m_adviceBox->hide();
 
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_table);
-    layout->addWidget(m_advice);
+    layout->addWidget(m_adviceBox);
     layout->addLayout(row);
     connect(m_resetFeeder, &QPushButton::clicked, this, &ErrorStatePanel::resetFeederError);
     connect(&m_session, &Session::devicesChanged, this, &ErrorStatePanel::rebuild);
@@ -197,8 +208,13 @@ void ErrorStatePanel::updateRow(int row) {
     // "No tool" on an empty port is information, not a fault to chase.
     const QString advice =
         s.errorLevel >= Level::Warning ? device->errorAdvice(m_rows.at(row).port) : QString();
-    const QString said =
-        advice.isEmpty() ? QString() : tr("%1, %2: %3").arg(s.where, s.explanation, advice);
+    QStringList saidParts;
+    if (!advice.isEmpty())
+        saidParts.append(tr("%1, %2: %3").arg(s.where, s.explanation, advice));
+    // An alarm is no error code, but the technician has as much to look at.
+    if (s.alarm && s.alarm->any())
+        saidParts.append(tr("%1, %2 alarm: %3").arg(s.where, s.alarm->text(), s.alarm->advice()));
+    const QString said = saidParts.join(QStringLiteral("\n• "));
     if (said != m_rowAdvice.value(row)) {
         if (said.isEmpty())
             m_rowAdvice.remove(row);
@@ -215,7 +231,7 @@ void ErrorStatePanel::updateAdvice() {
     m_advice->setText(lines.isEmpty() ? QString()
                                       : tr("What to check:") + QLatin1Char('\n') +
                                             lines.join(QLatin1Char('\n')));
-    m_advice->setVisible(!lines.isEmpty());
+    m_adviceBox->setVisible(!lines.isEmpty());
 }
 
 void ErrorStatePanel::resetFeederError() {

@@ -19,6 +19,7 @@
 
 class QLabel;
 class QPushButton;
+class QScrollArea;
 class QTableWidget;
 
 namespace tipscope::gui {
@@ -52,6 +53,7 @@ private:
     QPushButton *m_resetFeeder = nullptr;
     QLabel *m_status = nullptr;
     QLabel *m_advice = nullptr;
+    QScrollArea *m_adviceBox = nullptr; // holds m_advice
     QList<StateRow> m_rows;
     QMap<int, QString> m_rowAdvice; // row -> "where: what to check", for rows in error
     // Parent of every connection to a device's parameters; replaced on each rebuild so that no

@@ -4,6 +4,8 @@
 
 #include "model/io/atomicsave.h"
 
+#include "widgets/startfolder.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QClipboard>
@@ -18,12 +20,12 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollBar>
-#include <QStandardPaths>
 #include <QStyle>
 #include <QTableView>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <functional>
 
 namespace tipscope::gui {
 
@@ -77,7 +79,7 @@ EventHistoryPanel::EventHistoryPanel(Session &session, QWidget *parent)
     m_events->reset(m_session.eventLog().events());
     addDevices(m_session.eventLog().events());
     fitTimeColumn();
-    m_history->scrollToBottom();
+    fitSourceColumn(m_session.eventLog().events());
     updateCount();
 }
 
@@ -152,6 +154,8 @@ void EventHistoryPanel::buildView(QVBoxLayout &layout) {
     m_events = new EventHistoryModel(this);
     m_filter = new EventHistoryFilter(this);
     m_filter->setSourceModel(m_events);
+    // The newest first, where the eye starts: at the bottom of ten thousand rows it was missed.
+    m_filter->sort(0, Qt::DescendingOrder);
     auto *styled =
         new LevelStyleProxy(EventHistoryModel::LevelRole, EventHistoryModel::Severity, this);
     styled->setSourceModel(m_filter);
@@ -164,6 +168,8 @@ void EventHistoryPanel::buildView(QVBoxLayout &layout) {
     m_history->setTabKeyNavigation(false);
     m_history->setWordWrap(false);
     m_history->setAlternatingRowColors(true);
+    // Whole rows: keeping a reader's rows in place as new ones arrive above counts rows.
+    m_history->setVerticalScrollMode(QAbstractItemView::ScrollPerItem);
     m_history->verticalHeader()->hide();
     // Fixed row heights and column widths: measuring 10 000 rows on every insert would not be.
     m_history->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
@@ -218,15 +224,20 @@ void EventHistoryPanel::flushEvents() {
     }
     if (m_pending.isEmpty())
         return;
-    // Follow the newest event only while the reader is at the bottom, not while reading back.
-    const QScrollBar *bar = m_history->verticalScrollBar();
-    const bool follow = bar->value() >= bar->maximum();
+    // Follow the newest event (at the top) only while the reader is there; someone reading
+    // back keeps the rows they read in place while new ones arrive above.
+    QScrollBar *bar = m_history->verticalScrollBar();
+    const bool follow = bar->value() <= bar->minimum();
+    const int before = m_filter->rowCount();
     m_events->append(m_pending);
     addDevices(m_pending);
+    fitSourceColumn(m_pending);
     m_pending.clear();
     fitTimeColumn();
     if (follow)
-        m_history->scrollToBottom();
+        m_history->scrollToTop();
+    else
+        bar->setValue(bar->value() + qMax(0, m_filter->rowCount() - before));
     updateCount();
 }
 
@@ -239,6 +250,23 @@ void EventHistoryPanel::fitTimeColumn() {
     const int pad = 24 + style()->pixelMetric(QStyle::PM_SmallIconSize);
     m_history->horizontalHeader()->resizeSection(EventHistoryModel::Time,
                                                  fontMetrics().horizontalAdvance(widest) + pad);
+}
+
+// A source names its device and port in the interface language ("DME-2C, Adresse 01, Port 4"),
+// and a workspace line may give the device a long name: the column grows to the widest source
+// shown, never narrower than it was, and leaves the text of what happened at least half.
+void EventHistoryPanel::fitSourceColumn(const QList<Event> &events) {
+    constexpr int kPad = 24;
+    for (const Event &e : events)
+        m_widestSource =
+            qMax(m_widestSource, fontMetrics().horizontalAdvance(
+                                     EventHistoryModel::text(e, EventHistoryModel::Source, false)) +
+                                     kPad);
+    QHeaderView *header = m_history->horizontalHeader();
+    const int shown = header->sectionSize(EventHistoryModel::Source);
+    const int wanted = qMin(m_widestSource, qMax(shown, m_history->viewport()->width() / 3));
+    if (wanted > shown)
+        header->resizeSection(EventHistoryModel::Source, wanted);
 }
 
 void EventHistoryPanel::addDevices(const QList<Event> &events) {
@@ -260,7 +288,7 @@ void EventHistoryPanel::applyFilters() {
     m_filter->setFilter(m_kindFilter->currentData().toUInt(),
                         Event::Severity(m_severityFilter->currentData().toInt()),
                         m_textFilter->text());
-    m_history->scrollToBottom();
+    m_history->scrollToTop();
     updateCount();
 }
 
@@ -290,7 +318,8 @@ void EventHistoryPanel::copySelection() const {
         rows.append(index.row());
     if (rows.isEmpty())
         return;
-    std::sort(rows.begin(), rows.end()); // in time order, whatever order they were picked in
+    // In time order (the view shows the newest first), whatever order they were picked in.
+    std::sort(rows.begin(), rows.end(), std::greater<>());
     QStringList lines;
     for (int row : std::as_const(rows))
         lines.append(rowText(row));
@@ -302,7 +331,7 @@ protocol::Outcome<void> EventHistoryPanel::exportText(const QString &path) const
     for (int c = 0; c < EventHistoryModel::ColumnCount; ++c)
         header.append(EventHistoryModel::columnName(c));
     QString text = header.join(QLatin1Char('\t')) + QLatin1Char('\n');
-    for (int row = 0; row < m_filter->rowCount(); ++row)
+    for (int row = m_filter->rowCount() - 1; row >= 0; --row) // in time order, as logs are read
         text += rowText(row) + QLatin1Char('\n');
     return model::io::saveAtomically(path, text.toUtf8());
 }
@@ -311,7 +340,7 @@ void EventHistoryPanel::chooseExportFile() {
     const QString name =
         QStringLiteral("tipscope-events-%1.txt")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmm")));
-    const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString dir = startFolder();
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Export events"), QDir(dir).filePath(name), tr("Text files (*.txt *.tsv)"));
     if (path.isEmpty())

@@ -2,9 +2,10 @@
 // changes, writes, communication errors, connection) with time, severity, kind, source and text,
 // filtered by kind, severity and free text. New events arrive through EventLog::appended (and
 // new counts of a collapsed flood through EventLog::repeated), are shown in batches at most ten
-// times a second, and keep the newest row in view unless the reader
-// has scrolled up. Copy puts the selected rows on the clipboard; exportText() writes the rows
-// shown, tab-separated. The table is model::EventHistoryModel, which any front end can use.
+// times a second, the newest first, and keep the newest row in view unless the reader has
+// scrolled down to read. Copy puts the selected rows on the clipboard; exportText() writes the
+// rows shown, tab-separated; both in time order, as logs are read. The table is
+// model::EventHistoryModel, which any front end can use.
 #pragma once
 
 #include "model/eventhistorymodel.h"
@@ -41,6 +42,7 @@ private:
     void buildView(QVBoxLayout &layout);
     void flushEvents();
     void fitTimeColumn();
+    void fitSourceColumn(const QList<model::Event> &events);
     void applyFilters();
     void updateCount();
     void updateButtons();
@@ -64,6 +66,7 @@ private:
     QList<model::Event> m_pending;
     QHash<quint64, model::Event> m_repeats; // by id: rows whose count grew since the last flush
     QTimer m_flush;
+    int m_widestSource = 0; // the room the widest source seen needs
 };
 
 } // namespace tipscope::gui

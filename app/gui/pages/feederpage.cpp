@@ -37,6 +37,8 @@ void FeederPage::rebuild() {
     delete m_body;
     m_editors.clear();
     m_writeButtons.clear();
+    m_apply = nullptr;
+    m_revert = nullptr;
     m_body = new QWidget(this);
     m_layout->addWidget(m_body);
     auto *layout = new QVBoxLayout(m_body);
@@ -85,22 +87,29 @@ void FeederPage::rebuild() {
 
     auto *settings = new QGroupBox(tr("Feeding settings"), m_body);
     auto *form = new QFormLayout(settings);
-    form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
+    // The editors take the width: the reason under a refused value wraps at the width shown.
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     for (Parameter *p : f->settings()) {
         auto *e = new ParameterEditor(p, settings);
         m_editors.append(e);
         form->addRow(ParameterEditor::labelFor(*p), e);
+        connect(p, &Parameter::stateChanged, this, &FeederPage::updateEnabled);
+        connect(e, &ParameterEditor::refusalChanged, this, &FeederPage::updateEnabled);
     }
-    auto *apply = new QPushButton(tr("&Apply"), settings);
+    m_apply = new QPushButton(tr("&Apply"), settings);
+    m_revert = new QPushButton(tr("Re&vert"), settings);
+    m_revert->setToolTip(tr("Discard the values typed here and show the feeder's own"));
     auto *save = new QPushButton(tr("Save to feeder memory"), settings);
     save->setToolTip(tr("W-NVS: mode, speed and length survive a restart"));
-    connect(apply, &QPushButton::clicked, this, &FeederPage::applyEdits);
+    connect(m_apply, &QPushButton::clicked, this, &FeederPage::applyEdits);
+    connect(m_revert, &QPushButton::clicked, this, &FeederPage::revertEdits);
     connect(save, &QPushButton::clicked, this,
             [this] { report(feeder() ? feeder()->saveToMemory() : QString()); });
-    m_writeButtons << apply << save;
+    m_writeButtons << save;
     auto *buttons = new QHBoxLayout;
     buttons->addStretch(1);
-    buttons->addWidget(apply);
+    buttons->addWidget(m_revert);
+    buttons->addWidget(m_apply);
     buttons->addWidget(save);
     form->addRow(buttons);
     layout->addWidget(settings);
@@ -153,6 +162,32 @@ void FeederPage::updateEnabled() {
         if (!allowed)
             b->setToolTip(tr("Monitor-only mode is on: nothing is written"));
     }
+    if (!m_apply)
+        return;
+    // As on the Settings page: Apply only when there is something to write and nothing typed
+    // is refused (it would write the others and say nothing of the refused one).
+    int edited = 0;
+    bool refused = false;
+    for (const ParameterEditor *e : std::as_const(m_editors)) {
+        refused = refused || e->hasRefusal();
+        if (e->parameter() && e->parameter()->edit())
+            ++edited;
+    }
+    m_apply->setText(edited ? tr("&Apply (%1)").arg(edited) : tr("&Apply"));
+    m_apply->setEnabled(allowed && edited > 0 && !refused);
+    m_apply->setToolTip(!allowed  ? tr("Monitor-only mode is on: nothing is written")
+                        : refused ? tr("A value typed is not allowed: correct it or Revert")
+                                  : QString());
+    m_revert->setEnabled(edited > 0 || refused);
+}
+
+void FeederPage::revertEdits() {
+    for (ParameterEditor *e : std::as_const(m_editors)) {
+        e->discardRefusal();
+        if (e->parameter())
+            e->parameter()->revert();
+    }
+    updateEnabled();
 }
 
 void FeederPage::report(const QString &error) {
@@ -208,6 +243,12 @@ void FeederPage::applyEdits() {
     for (ParameterEditor *e : std::as_const(m_editors))
         if (e->parameter() && e->parameter()->edit())
             e->parameter()->apply();
+}
+
+QPushButton *FeederPage::button(const QString &name) const {
+    return name == QLatin1String("apply")    ? m_apply
+           : name == QLatin1String("revert") ? m_revert
+                                             : nullptr;
 }
 
 ParameterEditor *FeederPage::editorFor(const QByteArray &code) const {

@@ -1,7 +1,9 @@
 // FeederPage: the SFR solder feeder: feeding settings (mode, speed, length, wire thickness,
 // switch input) with Apply / Revert / save to memory; start forward or backward, stop, and
 // loading; the live feeding status and fed length; the error code with its explanation and reset;
-// and the total and partial counters with their (confirmed) partial resets.
+// and the total and partial counters with their (confirmed) partial resets. As on the Settings
+// page, Apply is on only with something to write and nothing refused, and Revert discards what
+// was typed, refused or not.
 #pragma once
 
 #include "page.h"
@@ -31,6 +33,10 @@ public:
     QString resetError();
     QString resetCounter(const QByteArray &code, bool confirmed);
     void applyEdits();
+    // Discards what was typed, refused or not, and shows the feeder's values again.
+    void revertEdits();
+    // The settings' buttons, for tests: "apply" or "revert".
+    [[nodiscard]] QPushButton *button(const QString &name) const;
     [[nodiscard]] ParameterEditor *editorFor(const QByteArray &code) const;
     [[nodiscard]] QString liveText() const;
 
@@ -47,7 +53,9 @@ private:
     QLabel *m_error = nullptr;
     QLabel *m_feedback = nullptr;
     QList<ParameterEditor *> m_editors;
-    QList<QPushButton *> m_writeButtons;
+    QList<QPushButton *> m_writeButtons; // off in monitor-only mode
+    QPushButton *m_apply = nullptr;      // on with an edit and no refusal
+    QPushButton *m_revert = nullptr;     // on with an edit or a refusal
 };
 
 } // namespace tipscope::gui

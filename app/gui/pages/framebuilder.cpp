@@ -1,6 +1,7 @@
 #include "framebuilder.h"
 
 #include "protocol/hexbytes.h"
+#include "widgets/placeholderfit.h"
 
 #include <QComboBox>
 #include <QCompleter>
@@ -81,6 +82,8 @@ void FrameBuilder::buildLayout() {
     m_data->setFont(mono);
     m_data->setMaxLength(40);
     m_data->setMinimumWidth(QFontMetrics(mono).horizontalAdvance(QLatin1Char('0')) * 16);
+    // Both examples, so the field does not change width with the header.
+    fitPlaceholders(*m_data, {tr("none for reads"), tr("e.g. 00350")});
     m_sendFrame = new QPushButton(tr("&Send frame"), this);
     named(m_sendFrame, "sendFrameButton", tr("Send frame"));
     m_preview = new QLabel(this);

@@ -10,6 +10,8 @@
 #include "journal/journalreader.h"
 #include "model/io/atomicsave.h"
 
+#include "widgets/startfolder.h"
+
 #include <QComboBox>
 #include <QDateTime>
 #include <QDir>
@@ -21,7 +23,6 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSplitter>
-#include <QStandardPaths>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -363,7 +364,7 @@ QString JointsPage::exportCsv(const QString &path) {
 }
 
 void JointsPage::chooseAndExport() {
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString folder = startFolder();
     const QString name =
         QStringLiteral("joints-%1.csv")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));

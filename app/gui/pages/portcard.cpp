@@ -12,6 +12,7 @@
 #include <QLocale>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QStyle>
 #include <QVBoxLayout>
 
 namespace tipscope::gui {
@@ -49,8 +50,13 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
     m_values = new QWidget(this);
     m_title = new QLabel(m_values);
     m_title->setFont(scaled(m_title->font(), 1.2, true));
+    // The title and the last joint share a line; the title wraps rather than widen the card (a
+    // long tool name beside a joint pushed the right-hand cards under a side scroll bar). The
+    // joint keeps one line: wrapping too, it took two where the title had room to give.
+    m_title->setWordWrap(true);
     m_joint = new QLabel(m_values);
     m_joint->setObjectName(QStringLiteral("lastJoint"));
+    m_joint->setAlignment(Qt::AlignRight | Qt::AlignBottom);
     m_joint->hide();
     m_tip = new QLabel(m_values);
     m_tip->setFont(scaled(m_tip->font(), 3.2, true));
@@ -124,6 +130,12 @@ PortCard::PortCard(PortModel &port, Telemetry &telemetry, const QString &telemet
     values->addLayout(state);
     values->addWidget(m_problem);
     values->addWidget(m_sparkline, 1);
+    // The style gives every button at least 80 px; four of them and the setpoint box made the
+    // card wider than half the page at the window's default size. They may shrink to their
+    // words when room is short.
+    for (QPushButton *b : {m_work, m_stand, m_cool, m_set})
+        b->setMinimumWidth(b->fontMetrics().horizontalAdvance(b->text()) +
+                           4 * style()->pixelMetric(QStyle::PM_ButtonMargin, nullptr, b));
     auto *controls = new QHBoxLayout;
     controls->addWidget(m_work);
     controls->addWidget(m_stand);

@@ -71,6 +71,7 @@ SettingsPage::SettingsPage(Session &session, QWidget *parent)
     layout->addWidget(m_scroll, 1);
     connect(m_portBox, &QComboBox::activated, this, [this] {
         m_port = m_portBox->currentData().toInt();
+        m_saved.clear();
         rebuild();
     });
     connect(m_apply, &QPushButton::clicked, this, &SettingsPage::applyEdits);
@@ -109,7 +110,8 @@ void SettingsPage::addGroup(const QString &title, const QList<Parameter *> &para
         return;
     auto *box = new QGroupBox(title, m_form);
     auto *form = new QFormLayout(box);
-    form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
+    // The editors take the width: the reason under a refused value wraps at the width shown.
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     for (Parameter *p : params) {
         auto *editor = new ParameterEditor(p, box);
         m_editors.append(editor);
@@ -214,10 +216,18 @@ int SettingsPage::editedCount() const {
     return n;
 }
 
+bool SettingsPage::anyRefusal() const {
+    return std::any_of(m_editors.begin(), m_editors.end(),
+                       [](const ParameterEditor *e) { return e->hasRefusal(); });
+}
+
 void SettingsPage::updateButtons() {
     const int edited = editedCount();
-    const bool refused = std::any_of(m_editors.begin(), m_editors.end(),
-                                     [](const ParameterEditor *e) { return e->hasRefusal(); });
+    const bool refused = anyRefusal();
+    // An edit after the save is a new action: the confirmation of the old one would read as
+    // being about it.
+    if (edited != m_editsAtSave || refused != m_refusedAtSave)
+        m_saved.clear();
     const bool lineUp = m_device && m_device->isLineUp();
     const bool writable = m_device && m_device->writesUnavailableReason().isEmpty();
     m_apply->setText(edited ? tr("&Apply (%1)").arg(edited) : tr("&Apply"));
@@ -246,6 +256,7 @@ void SettingsPage::updateButtons() {
 }
 
 void SettingsPage::refreshValues() {
+    forgetSavedProfile();
     for (ParameterEditor *e : std::as_const(m_editors))
         e->discardRefusal();
     for (Parameter *p : shownParameters())
@@ -254,6 +265,7 @@ void SettingsPage::refreshValues() {
 }
 
 void SettingsPage::applyEdits() {
+    forgetSavedProfile();
     for (Parameter *p : shownParameters())
         if (p->edit() &&
             (p->state() == Parameter::State::Edited || p->state() == Parameter::State::Failed))
@@ -261,6 +273,7 @@ void SettingsPage::applyEdits() {
 }
 
 void SettingsPage::revertEdits() {
+    forgetSavedProfile();
     for (ParameterEditor *e : std::as_const(m_editors))
         e->discardRefusal();
     for (Parameter *p : shownParameters())
@@ -268,7 +281,16 @@ void SettingsPage::revertEdits() {
     updateButtons();
 }
 
+// "✓ Profile saved" is about the save just done; the next action has a result of its own.
+void SettingsPage::forgetSavedProfile() {
+    if (m_saved.isEmpty())
+        return;
+    m_saved.clear();
+    updateButtons();
+}
+
 void SettingsPage::saveToMemory() {
+    forgetSavedProfile();
     QString why;
     if (auto *st = qobject_cast<StationModel *>(m_device.data()))
         why = st->saveToMemory();
@@ -282,6 +304,7 @@ void SettingsPage::runDangerous(const QByteArray &code) {
     Action *a = m_device ? m_device->action(code) : nullptr;
     if (!a)
         return;
+    forgetSavedProfile();
     qint64 argument = 0;
     if (a->command().spec->role == Role::SetAddress) {
         bool ok = false;
@@ -339,11 +362,14 @@ protocol::Outcome<QString> SettingsPage::saveProfileTo(const QString &path,
         return protocol::failure(saved.error());
     m_saved = tr("✓ Profile saved: %n setting(s) of %1 in %2", nullptr, int(p.values.size()))
                   .arg(m_device->displayName(), QDir::toNativeSeparators(path));
+    m_editsAtSave = editedCount();
+    m_refusedAtSave = anyRefusal();
     updateButtons();
     return m_saved;
 }
 
 void SettingsPage::openProfile() {
+    forgetSavedProfile();
     if (!m_device)
         return;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open profile"), QString(),

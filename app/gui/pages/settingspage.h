@@ -7,7 +7,7 @@
 // Apply, Save to station memory and Station actions; a line that is down turns off Profiles too,
 // and the values are shown greyed with the time they were last read. Revert and Refresh also
 // discard values that were typed and refused. A saved profile asks for an optional comment and
-// says where it went.
+// says where it went, until the next action (an edit, Apply, Revert, Refresh, another port).
 #pragma once
 
 #include "page.h"
@@ -54,11 +54,13 @@ private:
     void rebuild();
     void addGroup(const QString &title, const QList<model::Parameter *> &params);
     void updateButtons();
+    void forgetSavedProfile();
     void saveToMemory();
     void runDangerous(const QByteArray &code);
     void saveProfile();
     void openProfile();
     [[nodiscard]] QList<model::Parameter *> shownParameters() const;
+    [[nodiscard]] bool anyRefusal() const;
 
     QComboBox *m_portBox;
     QPushButton *m_apply;
@@ -68,7 +70,9 @@ private:
     QToolButton *m_actions;
     QToolButton *m_profiles;
     QLabel *m_notice;
-    QString m_saved; // the last profile saved, said until the selection changes
+    QString m_saved;       // the last profile saved, said until the next action
+    int m_editsAtSave = 0; // the edits and refusal shown when it was saved: a change is an action
+    bool m_refusedAtSave = false;
     QScrollArea *m_scroll;
     QWidget *m_form = nullptr;
     QVBoxLayout *m_groups = nullptr;

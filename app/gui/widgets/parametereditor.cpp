@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -87,7 +88,10 @@ void ParameterEditor::build() {
         m_spin->setKeyboardTracking(false);
         m_spin->setMinimumWidth(120);
         connect(m_spin, &QDoubleSpinBox::valueChanged, this, &ParameterEditor::commitSpin);
-        row->addWidget(m_spin, 1);
+        if (auto *line = m_spin->findChild<QLineEdit *>())
+            connect(line, &QLineEdit::textEdited, this, &ParameterEditor::followTyping);
+        connect(m_spin, &QAbstractSpinBox::editingFinished, this, [this] { m_typing = false; });
+        row->addWidget(m_spin);
         if (p.meta().special.contains(kDisabledKey)) {
             m_disabled =
                 new QCheckBox(protocol::catalogText(p.meta().special.value(kDisabledKey)), this);
@@ -101,11 +105,15 @@ void ParameterEditor::build() {
         for (auto it = p.spec().values.begin(); it != p.spec().values.end(); ++it)
             m_combo->addItem(protocol::catalogText(it.value()), it.key());
         connect(m_combo, &QComboBox::activated, this, &ParameterEditor::commitCombo);
-        row->addWidget(m_combo, 1);
+        row->addWidget(m_combo);
     }
     m_state = new QLabel(this);
     m_state->setMinimumWidth(90);
     row->addWidget(m_state);
+    // The field keeps its size; the editor takes the form's width so that the reason under it
+    // is laid out at the width it is shown at (a form sizing the field to its hint measured
+    // the wrapped reason at another width, and cut it to its first line).
+    row->addStretch(1);
     // Why a value was refused or a write failed, where the eye is: not only in a tooltip.
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
@@ -128,8 +136,9 @@ void ParameterEditor::refreshFromParameter() {
     if (m_spin)
         m_spin->setAllowedRange(toDisplay(p.spec(), p.minimum(), t),
                                 toDisplay(p.spec(), p.maximum(), t));
-    // A refused value stays in the box beside its reason until it is replaced or discarded.
-    const bool keepTyped = !m_refusal.isEmpty();
+    // A refused value stays in the box beside its reason until it is replaced or discarded;
+    // what is being typed stays as typed.
+    const bool keepTyped = !m_refusal.isEmpty() || m_typing;
     const bool special = shown && p.meta().special.contains(int(*shown));
     if (m_spin && shown && !keepTyped) {
         if (m_disabled)
@@ -169,7 +178,7 @@ void ParameterEditor::refreshState() {
     if (!m_parameter || !m_state)
         return;
     const Parameter &p = *m_parameter;
-    QString text, style;
+    QString text, style, tip;
     switch (p.state()) {
     case Parameter::State::Unknown:
         text = tr("not read");
@@ -178,8 +187,15 @@ void ParameterEditor::refreshState() {
         text = tr("reading…");
         break;
     case Parameter::State::InSync:
-        text = p.meta().isVolatile && !p.isSavedToMemory() ? tr("not saved") : tr("✓ in sync");
+        text = tr("✓ in sync");
         style = QStringLiteral("color: palette(mid);");
+        // Written and proved, but volatile: a grey "not saved" alone read as a failed write.
+        if (p.meta().isVolatile && !p.isSavedToMemory()) {
+            text = tr("✓ in sync, not yet saved");
+            style.clear();
+            tip = tr("Written and read back. The station forgets it when it restarts, unless "
+                     "it is saved to station memory.");
+        }
         if (!p.isCurrent())
             text = tr("last read %1")
                        .arg(QLocale().toString(p.lastUpdate().time(), QStringLiteral("HH:mm:ss")));
@@ -205,12 +221,14 @@ void ParameterEditor::refreshState() {
     const QString why = !m_refusal.isEmpty()                    ? m_refusal
                         : p.state() == Parameter::State::Failed ? p.failure()
                                                                 : QString();
-    m_state->setToolTip(why);
+    m_state->setToolTip(why.isEmpty() ? tip : why);
     m_message->setText(why);
     m_message->setVisible(!why.isEmpty());
     const QString sheet = editorStyle();
-    for (QWidget *w : {static_cast<QWidget *>(m_spin), static_cast<QWidget *>(m_combo),
-                       static_cast<QWidget *>(m_value)})
+    // A number box's look goes on its text field: restyling the box itself puts its last value
+    // back in the field, over what is being typed.
+    QWidget *spinField = m_spin ? m_spin->findChild<QLineEdit *>() : nullptr;
+    for (QWidget *w : {spinField, static_cast<QWidget *>(m_combo), static_cast<QWidget *>(m_value)})
         if (w)
             setStyleSheetIfChanged(w, sheet);
 }
@@ -224,6 +242,7 @@ QString ParameterEditor::messageText() const {
 }
 
 void ParameterEditor::discardRefusal() {
+    m_typing = false; // what was typed goes with the refusal (Revert, Refresh)
     if (m_refusal.isEmpty())
         return;
     m_refusal.clear();
@@ -234,6 +253,7 @@ void ParameterEditor::discardRefusal() {
 void ParameterEditor::commitSpin() {
     if (m_updating || !m_parameter)
         return;
+    m_typing = false;
     qint64 wire = 0;
     if (m_disabled && m_disabled->isChecked()) {
         wire = kDisabledKey;
@@ -248,6 +268,28 @@ void ParameterEditor::commitSpin() {
     }
     m_spin->setEnabled(!(m_disabled && m_disabled->isChecked()));
     setRefusal(m_parameter->setEdit(wire));
+}
+
+// An edit counts while it is typed: a keystroke that makes an allowed value makes it the edit
+// (highlighted, Apply on). A value not allowed is said when the typing ends (Enter, or leaving
+// the field), not at each keystroke of "350" on its way through "3" and "35"; meanwhile no
+// earlier edit stays behind to be applied in its place.
+void ParameterEditor::followTyping() {
+    if (m_updating || !m_parameter || (m_disabled && m_disabled->isChecked()))
+        return;
+    m_typing = true;
+    bool isNumber = false;
+    const double typed = m_spin->locale().toDouble(m_spin->cleanText(), &isNumber);
+    const qint64 wire =
+        isNumber ? fromDisplay(m_parameter->spec(), typed, m_parameter->device().temperatureUnit())
+                 : 0;
+    const bool allowed =
+        isNumber && !m_parameter->device().writesBlocked() && m_parameter->validate(wire).isEmpty();
+    setRefusal({});
+    if (allowed)
+        (void)m_parameter->setEdit(wire);
+    else
+        m_parameter->revert();
 }
 
 void ParameterEditor::commitCombo() {

@@ -5,12 +5,13 @@
 // "disabled" box where the catalog has that special value); enums get a combo box; read-only
 // values a label. The editor shows the parameter's state: an edited value is highlighted, a
 // write in progress says so, a failure shows the reason under the field. Edits go to
-// Parameter::setEdit(); a number box never clamps what was typed (ValueSpinBox), so a value out
-// of range is refused by the model, stays in the box in red, and the reason with what is allowed
-// is written under it; nothing is written until the page applies, and discardRefusal() (Revert,
-// Refresh) puts the parameter's value back. A value reported by the device updates the editor
-// without being sent back. While the line is down the value is greyed and the state says when
-// it was last read.
+// Parameter::setEdit() as they are typed (an allowed value counts at once; one not allowed is
+// refused when the typing ends); a number box never clamps what was typed (ValueSpinBox), so a
+// value out of range is refused by the model, stays in the box in red, and the whole reason with
+// what is allowed is written under it; nothing is written until the page applies, and
+// discardRefusal() (Revert, Refresh) puts the parameter's value back. A value reported by the
+// device updates the editor without being sent back. While the line is down the value is greyed and
+// the state says when it was last read.
 #pragma once
 
 #include "model/parameter.h"
@@ -52,6 +53,7 @@ private:
     void refreshFromParameter();
     void refreshState();
     void commitSpin();
+    void followTyping();
     void commitCombo();
     [[nodiscard]] QString editorStyle() const;
 
@@ -63,6 +65,7 @@ private:
     QLabel *m_state = nullptr;
     QLabel *m_message = nullptr;
     bool m_updating = false;
+    bool m_typing = false; // from a keystroke in the number box to Enter or leaving the field
     QString m_refusal;
 };
 
