@@ -1917,7 +1917,7 @@
     </message>
     <message>
         <location filename="../app/cli/climonitor.cpp" line="229"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="25"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -4614,28 +4614,28 @@ Dauerhaft mit dieser udev-Regel:
         <translation>%1: der Name gehört schon einer anderen Leitung; jede Leitung braucht einen eigenen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="98"/>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="102"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="103"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>der Arbeitsbereich %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
         <source>there is no such file</source>
         <translation>diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="104"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>der Arbeitsbereich %1 ist zu groß, um einer zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>der Arbeitsbereich %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="110"/>
         <source>it is a list</source>
         <translation>er ist eine Liste</translation>
     </message>

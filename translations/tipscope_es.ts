@@ -1917,7 +1917,7 @@
     </message>
     <message>
         <location filename="../app/cli/climonitor.cpp" line="229"/>
-        <location filename="../app/cli/climonitorcsv.cpp" line="23"/>
+        <location filename="../app/cli/climonitorcsv.cpp" line="25"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
@@ -4614,28 +4614,28 @@ Hágalo permanente con esta regla de udev:
         <translation>%1: el nombre ya es de otra línea; cada línea necesita el suyo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="98"/>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="102"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="100"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="103"/>
         <source>cannot read the workspace %1: %2</source>
         <translation>no se puede leer el espacio de trabajo %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="99"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="101"/>
         <source>there is no such file</source>
         <translation>no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="104"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
         <source>the workspace %1 is too big to be one</source>
         <translation>el espacio de trabajo %1 es demasiado grande para ser uno</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="106"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
         <source>the workspace %1 is not a JSON object: %2</source>
         <translation>el espacio de trabajo %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacefile.cpp" line="108"/>
+        <location filename="../lib/model/workspace/workspacefile.cpp" line="110"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
