@@ -296,7 +296,8 @@ void TestCli::profileSavesDiffsAndAppliesWithReadBack() {
     QCOMPARE(diff.exitCode, 0);
     QVERIFY2(diff.out.contains(QStringLiteral("2 differences")), qPrintable(diff.out));
     const Run dry = runCli({"--port", port, "profile", "apply", "--dry-run", file});
-    QVERIFY(dry.out.contains(QStringLiteral("would send 02 57 50 4C 4D 30 31 30 30 30")));
+    QVERIFY2(dry.out.contains(QStringLiteral("would send 02 57 50 4C 4D 30 31 30 30 30")),
+             qPrintable(dry.out + dry.err));
     const Run applied = runCli({"--port", port, "profile", "apply", file});
     QCOMPARE(applied.exitCode, 0);
     QVERIFY2(applied.out.contains(QStringLiteral("2 changed")), qPrintable(applied.out));
