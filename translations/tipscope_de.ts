@@ -2321,37 +2321,22 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>tipscope-cli: %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134"/>
-        <source>tipscope-cli: the catalog names no command that identifies a device</source>
-        <translation>tipscope-cli: der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
+        <location filename="../app/cli/clisession.cpp" line="132"/>
+        <source>tipscope-cli: %1</source>
+        <translation>tipscope-cli: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="143"/>
-        <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
-        <translation>tipscope-cli: das Gerät %1 hat sich nicht identifiziert (R-SMN): %2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clisession.cpp" line="144"/>
-        <source>without addresses</source>
-        <translation>ohne Adressen</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clisession.cpp" line="138"/>
-        <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
-        <translation>tipscope-cli: unbekanntes Gerätemodell &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clisession.cpp" line="166"/>
+        <location filename="../app/cli/clisession.cpp" line="155"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: die Leitung ist verloren gegangen: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="172"/>
+        <location filename="../app/cli/clisession.cpp" line="161"/>
         <source>tipscope-cli: no device could be identified on %1 (checked addresses 01, 10, 20 and frames without addresses); what came back: %2. Check the baud rate, the addressing, and that robot mode is on.</source>
         <translation>tipscope-cli: an %1 ließ sich kein Gerät erkennen (geprüft: Adressen 01, 10, 20 und Rahmen ohne Adressen); zurück kam: %2. Prüfen Sie die Baudrate, die Adressierung und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="181"/>
+        <location filename="../app/cli/clisession.cpp" line="170"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: kein Gerät hat an %1 geantwortet (geprüft wurden die Adressen 01, 10, 20 und Telegramme ohne Adressen). Prüfen Sie das Kabel, die Baudrate und ob der Robotermodus eingeschaltet ist.</translation>
     </message>
@@ -4186,46 +4171,46 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="49"/>
-        <location filename="../lib/model/session.cpp" line="136"/>
-        <location filename="../lib/model/session.cpp" line="139"/>
+        <location filename="../lib/model/session.cpp" line="29"/>
+        <location filename="../lib/model/session.cpp" line="116"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="135"/>
-        <location filename="../lib/model/session.cpp" line="148"/>
-        <location filename="../lib/model/session.cpp" line="156"/>
+        <location filename="../lib/model/session.cpp" line="115"/>
+        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="136"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="172"/>
+        <location filename="../lib/model/session.cpp" line="152"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="223"/>
+        <location filename="../lib/model/session.cpp" line="203"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="224"/>
+        <location filename="../lib/model/session.cpp" line="204"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="235"/>
+        <location filename="../lib/model/session.cpp" line="215"/>
         <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät ließ sich erkennen; zurück kam: %2 (Robotermodus aus? falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="240"/>
+        <location filename="../lib/model/session.cpp" line="220"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="248"/>
+        <location filename="../lib/model/session.cpp" line="228"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -4233,27 +4218,7 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="22"/>
-        <source>the catalog names no command that identifies a device</source>
-        <translation>der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/session.cpp" line="24"/>
-        <source>the device reports the model &apos;%1&apos;, which TipScope does not know</source>
-        <translation>das Gerät meldet das Modell &apos;%1&apos;, das TipScope nicht kennt</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/session.cpp" line="30"/>
-        <source>the device without addresses did not identify itself: %1</source>
-        <translation>das Gerät ohne Adressen hat sich nicht identifiziert: %1</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/session.cpp" line="32"/>
-        <source>the device at address %1 did not identify itself: %2</source>
-        <translation>das Gerät an Adresse %1 hat sich nicht identifiziert: %2</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/session.cpp" line="230"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>connected to %1, but %2</source>
         <translation>mit %1 verbunden, aber %2</translation>
     </message>
@@ -8269,8 +8234,28 @@ Möchten Sie fortfahren?</translation>
 </context>
 <context>
     <name>tipscope::link::Discovery</name>
+    <message>
+        <location filename="../lib/link/discovery.cpp" line="29"/>
+        <source>the catalog names no command that identifies a device</source>
+        <translation>der Katalog nennt keinen Befehl, mit dem sich ein Gerät ausweist</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/discovery.cpp" line="31"/>
+        <source>the device reports the model &apos;%1&apos;, which TipScope does not know</source>
+        <translation>das Gerät meldet das Modell &apos;%1&apos;, das TipScope nicht kennt</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/discovery.cpp" line="38"/>
+        <source>the device without addresses did not identify itself (%1): %2</source>
+        <translation>das Gerät ohne Adressen hat sich nicht identifiziert (%1): %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/discovery.cpp" line="40"/>
+        <source>the device at address %1 did not identify itself (%2): %3</source>
+        <translation>das Gerät an Adresse %1 hat sich nicht identifiziert (%2): %3</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="78"/>
+        <location filename="../lib/link/discovery.cpp" line="98"/>
         <source>%n NAK(s) %1 (%2)</source>
         <translation>
             <numerusform>%n NAK %1 (%2)</numerusform>
@@ -8278,7 +8263,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="82"/>
+        <location filename="../lib/link/discovery.cpp" line="102"/>
         <source>%n answer(s) with a bad block check or format</source>
         <translation>
             <numerusform>%n Antwort mit falscher Prüfsumme oder falschem Format</numerusform>
@@ -8286,7 +8271,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="84"/>
+        <location filename="../lib/link/discovery.cpp" line="104"/>
         <source>%n frame(s) from an address not asked</source>
         <translation>
             <numerusform>%n Rahmen von einer nicht gefragten Adresse</numerusform>
@@ -8294,7 +8279,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="86"/>
+        <location filename="../lib/link/discovery.cpp" line="106"/>
         <source>%n byte(s) that were no frame</source>
         <translation>
             <numerusform>%n Byte, das kein Rahmen war</numerusform>

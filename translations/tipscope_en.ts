@@ -149,7 +149,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="248"/>
+        <location filename="../lib/model/session.cpp" line="228"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>
@@ -307,7 +307,7 @@
 <context>
     <name>tipscope::link::Discovery</name>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="78"/>
+        <location filename="../lib/link/discovery.cpp" line="98"/>
         <source>%n NAK(s) %1 (%2)</source>
         <translation>
             <numerusform>%n NAK %1 (%2)</numerusform>
@@ -315,7 +315,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="82"/>
+        <location filename="../lib/link/discovery.cpp" line="102"/>
         <source>%n answer(s) with a bad block check or format</source>
         <translation>
             <numerusform>%n answer with a bad block check or format</numerusform>
@@ -323,7 +323,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="84"/>
+        <location filename="../lib/link/discovery.cpp" line="104"/>
         <source>%n frame(s) from an address not asked</source>
         <translation>
             <numerusform>%n frame from an address not asked</numerusform>
@@ -331,7 +331,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="86"/>
+        <location filename="../lib/link/discovery.cpp" line="106"/>
         <source>%n byte(s) that were no frame</source>
         <translation>
             <numerusform>%n byte that was no frame</numerusform>

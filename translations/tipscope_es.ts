@@ -2321,37 +2321,22 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>tipscope-cli: no se puede abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="134"/>
-        <source>tipscope-cli: the catalog names no command that identifies a device</source>
-        <translation>tipscope-cli: el catálogo no indica ningún comando que identifique un equipo</translation>
+        <location filename="../app/cli/clisession.cpp" line="132"/>
+        <source>tipscope-cli: %1</source>
+        <translation>tipscope-cli: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="143"/>
-        <source>tipscope-cli: the device %1 did not identify itself (R-SMN): %2</source>
-        <translation>tipscope-cli: el equipo %1 no se identificó (R-SMN): %2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clisession.cpp" line="144"/>
-        <source>without addresses</source>
-        <translation>sin direcciones</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clisession.cpp" line="138"/>
-        <source>tipscope-cli: unknown device model &apos;%1&apos;</source>
-        <translation>tipscope-cli: modelo de equipo desconocido &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clisession.cpp" line="166"/>
+        <location filename="../app/cli/clisession.cpp" line="155"/>
         <source>tipscope-cli: the line was lost: %1</source>
         <translation>tipscope-cli: se perdió la línea: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="172"/>
+        <location filename="../app/cli/clisession.cpp" line="161"/>
         <source>tipscope-cli: no device could be identified on %1 (checked addresses 01, 10, 20 and frames without addresses); what came back: %2. Check the baud rate, the addressing, and that robot mode is on.</source>
         <translation>tipscope-cli: no se pudo identificar ningún equipo en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones); lo que volvió: %2. Compruebe la velocidad en baudios, el direccionamiento y que el modo robot esté activado.</translation>
     </message>
     <message>
-        <location filename="../app/cli/clisession.cpp" line="181"/>
+        <location filename="../app/cli/clisession.cpp" line="170"/>
         <source>tipscope-cli: no device answered on %1 (checked addresses 01, 10, 20 and frames without addresses). Check the cable, the baud rate, and that robot mode is on.</source>
         <translation>tipscope-cli: ningún equipo respondió en %1 (se comprobaron las direcciones 01, 10, 20 y las tramas sin direcciones). Compruebe el cable, la velocidad en baudios y que el modo robot esté activado.</translation>
     </message>
@@ -4186,46 +4171,46 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="49"/>
-        <location filename="../lib/model/session.cpp" line="136"/>
-        <location filename="../lib/model/session.cpp" line="139"/>
+        <location filename="../lib/model/session.cpp" line="29"/>
+        <location filename="../lib/model/session.cpp" line="116"/>
+        <location filename="../lib/model/session.cpp" line="119"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="135"/>
-        <location filename="../lib/model/session.cpp" line="148"/>
-        <location filename="../lib/model/session.cpp" line="156"/>
+        <location filename="../lib/model/session.cpp" line="115"/>
+        <location filename="../lib/model/session.cpp" line="128"/>
+        <location filename="../lib/model/session.cpp" line="136"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="172"/>
+        <location filename="../lib/model/session.cpp" line="152"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="223"/>
+        <location filename="../lib/model/session.cpp" line="203"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="224"/>
+        <location filename="../lib/model/session.cpp" line="204"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="235"/>
+        <location filename="../lib/model/session.cpp" line="215"/>
         <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero no se pudo identificar ningún equipo; lo que volvió: %2 (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="240"/>
+        <location filename="../lib/model/session.cpp" line="220"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="248"/>
+        <location filename="../lib/model/session.cpp" line="228"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -4233,27 +4218,7 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="22"/>
-        <source>the catalog names no command that identifies a device</source>
-        <translation>el catálogo no indica ningún comando que identifique un equipo</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/session.cpp" line="24"/>
-        <source>the device reports the model &apos;%1&apos;, which TipScope does not know</source>
-        <translation>el equipo informa del modelo &apos;%1&apos;, que TipScope no conoce</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/session.cpp" line="30"/>
-        <source>the device without addresses did not identify itself: %1</source>
-        <translation>el equipo sin direcciones no se identificó: %1</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/session.cpp" line="32"/>
-        <source>the device at address %1 did not identify itself: %2</source>
-        <translation>el equipo en la dirección %1 no se identificó: %2</translation>
-    </message>
-    <message>
-        <location filename="../lib/model/session.cpp" line="230"/>
+        <location filename="../lib/model/session.cpp" line="210"/>
         <source>connected to %1, but %2</source>
         <translation>conectado a %1, pero %2</translation>
     </message>
@@ -8269,8 +8234,28 @@ Do you want to continue?</source>
 </context>
 <context>
     <name>tipscope::link::Discovery</name>
+    <message>
+        <location filename="../lib/link/discovery.cpp" line="29"/>
+        <source>the catalog names no command that identifies a device</source>
+        <translation>el catálogo no indica ningún comando que identifique un equipo</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/discovery.cpp" line="31"/>
+        <source>the device reports the model &apos;%1&apos;, which TipScope does not know</source>
+        <translation>el equipo informa del modelo &apos;%1&apos;, que TipScope no conoce</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/discovery.cpp" line="38"/>
+        <source>the device without addresses did not identify itself (%1): %2</source>
+        <translation>el equipo sin direcciones no se identificó (%1): %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/link/discovery.cpp" line="40"/>
+        <source>the device at address %1 did not identify itself (%2): %3</source>
+        <translation>el equipo en la dirección %1 no se identificó (%2): %3</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="78"/>
+        <location filename="../lib/link/discovery.cpp" line="98"/>
         <source>%n NAK(s) %1 (%2)</source>
         <translation>
             <numerusform>%n NAK %1 (%2)</numerusform>
@@ -8278,7 +8263,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="82"/>
+        <location filename="../lib/link/discovery.cpp" line="102"/>
         <source>%n answer(s) with a bad block check or format</source>
         <translation>
             <numerusform>%n respuesta con una suma de control o un formato incorrectos</numerusform>
@@ -8286,7 +8271,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="84"/>
+        <location filename="../lib/link/discovery.cpp" line="104"/>
         <source>%n frame(s) from an address not asked</source>
         <translation>
             <numerusform>%n trama de una dirección no consultada</numerusform>
@@ -8294,7 +8279,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="86"/>
+        <location filename="../lib/link/discovery.cpp" line="106"/>
         <source>%n byte(s) that were no frame</source>
         <translation>
             <numerusform>%n byte que no era una trama</numerusform>

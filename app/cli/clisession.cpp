@@ -129,20 +129,9 @@ int CliSession::identify(std::optional<int> address) {
         return kOk;
     }
     const IdentifyFailure &why = found.error();
-    switch (why.kind) {
-    case IdentifyFailure::Kind::NoModelNameCommand:
-        m_err << tr("tipscope-cli: the catalog names no command that identifies a device")
-              << Qt::endl;
+    m_err << tr("tipscope-cli: %1").arg(why.text(address)) << Qt::endl;
+    if (why.kind != IdentifyFailure::Kind::Unanswered)
         return kNoAnswer;
-    case IdentifyFailure::Kind::UnknownModel:
-        m_err << tr("tipscope-cli: unknown device model '%1'").arg(why.model) << Qt::endl;
-        return kNoAnswer;
-    case IdentifyFailure::Kind::Unanswered:
-        break;
-    }
-    m_err << tr("tipscope-cli: the device %1 did not identify itself (R-SMN): %2")
-                 .arg(address ? QString::number(*address) : tr("without addresses"), why.reason)
-          << Qt::endl;
     const int code = exitCodeFor(why.replyError);
     return code == kOk ? kNoAnswer : code;
 }

@@ -4,6 +4,7 @@
 
 #include "protocol/catalog.h"
 #include "protocol/datafield.h"
+#include "protocol/elide.h"
 
 #include <climits>
 
@@ -20,6 +21,25 @@ QString DeviceInfo::summary() const {
     return QStringLiteral("%1 %2 %3 %4")
         .arg(addressText(), model, family.isEmpty() ? QStringLiteral("unknown") : family,
              softwareVersion.isEmpty() ? QStringLiteral("-") : softwareVersion);
+}
+
+QString IdentifyFailure::text(std::optional<int> address) const {
+    switch (kind) {
+    case Kind::NoModelNameCommand:
+        return Discovery::tr("the catalog names no command that identifies a device");
+    case Kind::UnknownModel:
+        return Discovery::tr("the device reports the model '%1', which TipScope does not know")
+            .arg(elided(model));
+    case Kind::Unanswered:
+        break;
+    }
+    const QString asked = QString::fromLatin1(command.isEmpty() ? QByteArray("?") : command);
+    if (!address)
+        return Discovery::tr("the device without addresses did not identify itself (%1): %2")
+            .arg(asked, reason);
+    return Discovery::tr("the device at address %1 did not identify itself (%2): %3")
+        .arg(*address, 2, 10, QLatin1Char('0'))
+        .arg(asked, reason);
 }
 
 Discovery::Discovery(RequestQueue &queue, QObject *parent)
@@ -91,10 +111,11 @@ void Discovery::probe(std::optional<int> address, int slot) {
     // Identification comes before the family is known: the first model-name command of any.
     const CommandSpec *modelName = Catalog::builtin().command(Role::ModelName);
     if (!modelName) {
-        m_failure = IdentifyFailure{IdentifyFailure::Kind::NoModelNameCommand, {}, {}, {}};
+        m_failure = IdentifyFailure{IdentifyFailure::Kind::NoModelNameCommand, {}, {}, {}, {}};
         return;
     }
     Request r = Request::read(address, modelName->pattern.toLatin1(), Priority::UserRead);
+    m_asked = "R-" + r.command;
     if (m_named) {
         r.minTurnaroundMs = kNamedDeviceTurnaroundMs;
     } else {
@@ -115,7 +136,7 @@ void Discovery::probe(std::optional<int> address, int slot) {
 void Discovery::take(const Reply &reply, std::optional<int> address, int slot) {
     if (!reply.ok() && (m_named || reply.error() != ReplyError::Nak)) {
         m_failure = IdentifyFailure{
-            IdentifyFailure::Kind::Unanswered, reply.error(), reply.errorString(), {}};
+            IdentifyFailure::Kind::Unanswered, reply.error(), reply.errorString(), {}, m_asked};
         return;
     }
     // In a search a NAK is an answer too: something lives at this address.
@@ -163,7 +184,7 @@ Identification Discovery::identificationOf(const std::optional<DeviceInfo> &foun
         return protocol::failure(*m_failure);
     if (found->family.isEmpty())
         return protocol::failure(
-            IdentifyFailure{IdentifyFailure::Kind::UnknownModel, {}, {}, found->model});
+            IdentifyFailure{IdentifyFailure::Kind::UnknownModel, {}, {}, found->model, m_asked});
     return *found;
 }
 

@@ -53,6 +53,11 @@ struct IdentifyFailure {
     ReplyError replyError = ReplyError::None; // for Unanswered: Timeout, Nak, Corrupted, ...
     QString reason;                           // for Unanswered: the reply's error text
     QString model;                            // for UnknownModel: the name it gave
+    QByteArray command;                       // the model-name command asked (R-SMN)
+
+    // Why the device at `address` (none: the device without addresses) is not identified, in
+    // the user's language: the one wording the window, the command line and the agent show.
+    [[nodiscard]] QString text(std::optional<int> address) const;
 };
 
 using Identification = protocol::Outcome<DeviceInfo, IdentifyFailure>;
@@ -105,6 +110,7 @@ private:
     int m_total = 0;
     bool m_named = false; // identify(): one device was named, its failure is reported
     std::optional<IdentifyFailure> m_failure;
+    QByteArray m_asked; // the model-name request, "R-SMN", for the failure's words
     std::optional<Identification> m_identification;
     LinkStats m_statsAtBegin; // the queue's, to tell what this search brought back
 };

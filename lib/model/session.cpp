@@ -13,26 +13,6 @@ namespace {
 struct SessionTr {
     Q_DECLARE_TR_FUNCTIONS(Session)
 };
-
-// Why the device at `address` (none: the device without addresses) is not identified, after
-// "connected to LINE, but".
-QString unidentifiedText(const IdentifyFailure &why, std::optional<int> address) {
-    switch (why.kind) {
-    case IdentifyFailure::Kind::NoModelNameCommand:
-        return SessionTr::tr("the catalog names no command that identifies a device");
-    case IdentifyFailure::Kind::UnknownModel:
-        return SessionTr::tr("the device reports the model '%1', which TipScope does not know")
-            .arg(why.model);
-    case IdentifyFailure::Kind::Unanswered:
-        break;
-    }
-    if (!address)
-        return SessionTr::tr("the device without addresses did not identify itself: %1")
-            .arg(why.reason);
-    return SessionTr::tr("the device at address %1 did not identify itself: %2")
-        .arg(address.value(), 2, 10, QLatin1Char('0'))
-        .arg(why.reason);
-}
 } // namespace
 
 Session::Session(QObject *parent)
@@ -191,7 +171,7 @@ void Session::identify(std::optional<int> address) {
     connect(m_discovery.get(), &Discovery::finished, this, [this, address] {
         const auto &found = m_discovery->identification();
         adoptDevices(m_discovery->devices(),
-                     found && !found->ok() ? unidentifiedText(found->error(), address) : QString());
+                     found && !found->ok() ? found->error().text(address) : QString());
     });
     m_discovery->identify(address);
 }
