@@ -109,12 +109,6 @@ QString Parameter::displayText() const {
     return formatValue(spec(), *m_value, m_device.temperatureUnit());
 }
 
-QString Parameter::displayEditText() const {
-    if (!m_edit)
-        return displayText();
-    return formatValue(spec(), Value::ofNumber(*m_edit), m_device.temperatureUnit());
-}
-
 QString Parameter::setEdit(qint64 wire) {
     if (m_device.writesBlocked())
         return ParameterTr::tr("monitor-only mode is on: nothing is written");

@@ -73,10 +73,9 @@ public:
     [[nodiscard]] QString validate(qint64 wire) const;
     [[nodiscard]] QString allowedText() const;
 
-    [[nodiscard]] QString displayText() const;     // the value as people read it
-    [[nodiscard]] QString displayEditText() const; // the pending edit, or the value
-    QString setEdit(qint64 wire);                  // error text, or empty when accepted
-    QString setEditText(const QString &text);      // the same from what a person typed
+    [[nodiscard]] QString displayText() const; // the value as people read it
+    QString setEdit(qint64 wire);              // error text, or empty when accepted
+    QString setEditText(const QString &text);  // the same from what a person typed
     void revert();
 
     // Reads the value now. The returned reply is owned by the parameter.

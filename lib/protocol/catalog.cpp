@@ -10,26 +10,6 @@ static void initCatalogResources() {
 
 namespace tipscope::protocol {
 
-QString valueKindName(ValueKind kind) {
-    switch (kind) {
-    case ValueKind::Number:
-        return QStringLiteral("number");
-    case ValueKind::Delay:
-        return QStringLiteral("delay");
-    case ValueKind::Hex:
-        return QStringLiteral("hex");
-    case ValueKind::Text:
-        return QStringLiteral("text");
-    case ValueKind::Enum:
-        return QStringLiteral("enum");
-    case ValueKind::Flags:
-        return QStringLiteral("flags");
-    case ValueKind::Action:
-        return QStringLiteral("action");
-    }
-    return {};
-}
-
 static QByteArray readResource(const QString &path) {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))

@@ -26,8 +26,6 @@ namespace tipscope::protocol {
 enum class Direction { Read, Write };
 enum class ValueKind { Number, Delay, Hex, Text, Enum, Flags, Action };
 
-[[nodiscard]] QString valueKindName(ValueKind kind);
-
 struct Unit {
     QString key;      // "degC", "permille", ...
     QString symbol;   // wire unit as written in the guides

@@ -50,8 +50,8 @@ public:
     // shares it) of the session's feeder, as its Reset button does.
     void resetPartial(const QByteArray &code);
     // Every counter of every device as CSV (UTF-8, header row "device,port,counter,value,unit",
-    // values in display units with a '.' decimal point). Returns false and sets *error (if
-    // given) when the file cannot be written.
+    // values in display units with a '.' decimal point); fails, saying why, when the file cannot
+    // be written.
     [[nodiscard]] protocol::Outcome<void> exportCsv(const QString &path) const;
 
 private:

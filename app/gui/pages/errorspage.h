@@ -24,8 +24,8 @@ public:
     void resetFeederError();
     // Copies the selected history rows to the clipboard, tab-separated, one event a line.
     void copySelection() const;
-    // Writes the history rows that pass the filters, with a header line, tab-separated, UTF-8.
-    // Returns false and sets *error (if given) when the file cannot be written.
+    // Writes the history rows that pass the filters, with a header line, tab-separated, UTF-8;
+    // fails, saying why, when the file cannot be written.
     [[nodiscard]] protocol::Outcome<void> exportText(const QString &path) const;
 
 private:

@@ -33,8 +33,8 @@ public:
 
     // Copies the selected rows to the clipboard, tab-separated, one event a line.
     void copySelection() const;
-    // Writes the rows that pass the filters, with a header line, tab-separated, UTF-8. Returns
-    // false and sets *error (if given) when the file cannot be written.
+    // Writes the rows that pass the filters, with a header line, tab-separated, UTF-8; fails,
+    // saying why, when the file cannot be written.
     [[nodiscard]] protocol::Outcome<void> exportText(const QString &path) const;
 
 private:

@@ -23,10 +23,11 @@
 
 namespace tipscope::model {
 
-// What a history is kept under: today the device's address and the port, "01/port2" or
-// "10/feeder" (Session::telemetryKey()); a replay uses the recording's channel ids. Code that
-// stores or passes a key names this type, so that keying histories differently (by the device's
-// identity) changes this definition and what builds keys, not every reader.
+// What a history is kept under: the device's identity (DeviceIdentity::key(): line, address,
+// model and software) and the channel, "cell-1|01|DME-2C|9996780|port2" or "...|feeder"
+// (TelemetryRecorder::keyOf()), so one device's history never mixes with another's; a replay
+// uses the recording's channel ids. Code that stores or passes a key names this type, so that
+// keying histories differently changes this definition and what builds keys, not every reader.
 using TelemetryKey = QString;
 
 class Telemetry : public QObject {
