@@ -229,6 +229,9 @@ void RequestQueue::onStray(const DecodeEvent &ev) {
     if (!m_late.absorb(ev.frame, m_settings.robotAddress))
         return;
     ++m_stats.lateAnswers;
+    // A late answer proves the cable and the device are there, only slow: a device that answers
+    // every request late must not have its line closed as if it were unplugged.
+    m_timeoutRun = 0;
     if (m_state == State::Idle)
         sendNext(); // what the late answers held back may go now
 }

@@ -123,7 +123,8 @@ public:
     [[nodiscard]] int answerBudgetMs(int requestBytes, int minTurnaroundMs = 0) const;
 
 Q_SIGNALS:
-    // Consecutive requests that got no answer at all: a hint that the cable is gone.
+    // Consecutive requests that got no answer at all: a hint that the cable is gone. An answer
+    // of any kind ends the run, also a garbled one or one that came after its request timed out.
     void timeoutStreak(int count);
     void statsChanged();
 

@@ -583,7 +583,9 @@ void TestBadCli::aLineDroppedDuringAnApplySaysWhyOnce() {
     cli.start(binaryPath(QStringLiteral("tipscope-cli")),
               {QStringLiteral("--port"), QString::fromLocal8Bit(m_port), QStringLiteral("--addr"),
                QStringLiteral("00:01"), QStringLiteral("--timeout"), QStringLiteral("300"),
-               QStringLiteral("--retries"), QStringLiteral("0"), QStringLiteral("profile"),
+               // Retries let a read that a loaded machine answered late be asked again, so
+               // that the apply gets to its first write.
+               QStringLiteral("--retries"), QStringLiteral("2"), QStringLiteral("profile"),
                QStringLiteral("apply"), file});
     // The station stops answering once the first write went through.
     QVERIFY(QTest::qWaitFor([&] { return wire().writes > before.writes; }, 20000));

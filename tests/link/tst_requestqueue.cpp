@@ -141,6 +141,7 @@ private Q_SLOTS:
     void tapShowsTxRxAndDecodedFrames();
     void timeoutStreakReportsTheRunLength();
     void timeoutStreakCountsRequestsNotRetries();
+    void aLateAnswerEndsTheTimeoutStreak();
     void probeSilenceDoesNotLengthenTheTimeoutStreak();
     void corruptedAnswerEndsTheTimeoutStreak();
     void aReplyThatDeletesItselfIsGoneAfterItsFinishedEvenWhenItsOwnerWentFirst();
@@ -913,6 +914,24 @@ void TestRequestQueue::timeoutStreakCountsRequestsNotRetries() {
     for (const QList<QVariant> &args : std::as_const(streak))
         longest = qMax(longest, args.at(0).toInt());
     QCOMPARE(longest, 2); // two requests, whatever their retries
+}
+
+// A slow device answers every request after its budget: each answer arrives late, and each
+// proves the device is there. The line must not be closed as if the cable were out.
+void TestRequestQueue::aLateAnswerEndsTheTimeoutStreak() {
+    Bench b(holdUntilTheLateAnswer(0));
+    QSignalSpy streak(&b.queue, &RequestQueue::timeoutStreak);
+    QVERIFY(streak.isValid());
+    for (const QByteArray &command : {QByteArray("ST1"), QByteArray("ST2"), QByteArray("ST3")}) {
+        Reply *slow = b.read(command);
+        QTRY_VERIFY_WITH_TIMEOUT(slow->isFinished(), kNoAnswerWaitMs);
+        QCOMPARE(slow->error(), ReplyError::Timeout);
+        b.transport.answer(answerTo(slow->request(), "00350").encode());
+        QTRY_COMPARE_WITH_TIMEOUT(b.queue.stats().lateAnswers, streak.size(), kNoAnswerWaitMs);
+    }
+    QCOMPARE(streak.size(), 3);
+    for (const QList<QVariant> &args : std::as_const(streak))
+        QCOMPARE(args.at(0).toInt(), 1);
 }
 
 void TestRequestQueue::probeSilenceDoesNotLengthenTheTimeoutStreak() {
