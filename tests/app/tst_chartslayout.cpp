@@ -12,6 +12,7 @@
 #include <QPlainTextEdit>
 #include <QScrollBar>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QTabWidget>
 #include <QToolButton>
 #include <QTranslator>
@@ -42,6 +43,8 @@ private Q_SLOTS:
     void hoveringNeverMovesThePlots();
     void theMeasurementsFoldAwayAndKeepTheirScrollPosition();
     void theFirstMinutesFillTheViewAndAZoomNamesItsSpan();
+    void aPanePerPortSettlesWithinThePage_data();
+    void aPanePerPortSettlesWithinThePage();
 
 private:
     // The main window at `size`, connected to the demo, its charts page shown.
@@ -225,6 +228,55 @@ void TestChartsLayout::theFirstMinutesFillTheViewAndAZoomNamesItsSpan() {
     page->redrawNow();
     QCOMPARE(window->currentText(), QStringLiteral("5 min"));
     QCOMPARE(window->findText(QStringLiteral("3 min 12 s")), -1);
+}
+
+void TestChartsLayout::aPanePerPortSettlesWithinThePage_data() {
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QSize>("window");
+    for (const char *language : {"en", "de", "es"}) {
+        QTest::addRow("%s, the window's own default on a 1280x720 screen", language)
+            << QString::fromLatin1(language) << QSize(1147, 692);
+        QTest::addRow("%s, 1280x720", language)
+            << QString::fromLatin1(language) << QSize(1280, 720);
+        QTest::addRow("%s, 1920x1080", language)
+            << QString::fromLatin1(language) << QSize(1900, 1040);
+    }
+}
+
+// Issue 39: the panes, made while the page was shown, padded each other's plots to line them
+// up, and each padding widened the panes, which asked for more padding: the window spent a core
+// laying out charts millions of pixels wide, drew no curve, and starved the line.
+void TestChartsLayout::aPanePerPortSettlesWithinThePage() {
+    QFETCH(QString, language);
+    QFETCH(QSize, window);
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), language), language);
+    ChartsPage *page = showCharts(window);
+    QVERIFY(page);
+    QTRY_VERIFY_WITH_TIMEOUT(page->panes().size() == 2, kConnectMs);
+    page->setPaneLayout(ChartsPage::Layout::PerPort);
+    page->redrawNow();
+    const QList<ChartWidget *> panes = page->panes();
+    QCOMPARE(panes.size(), 5);
+    QSignalSpy resized(panes.first(), &ChartWidget::plotResized);
+    // Laid out, the plots stay as they are: no pane asks the next one for more room.
+    QTRY_VERIFY_WITH_TIMEOUT(
+        [&] {
+            const qsizetype seen = resized.size();
+            QTest::qWait(300);
+            return resized.size() == seen;
+        }(),
+        kConnectMs);
+    for (ChartWidget *pane : panes) {
+        const QString where = QStringLiteral("pane %1 px wide, plot %2 px from %3, page %4 px")
+                                  .arg(pane->width())
+                                  .arg(pane->plotArea().width())
+                                  .arg(pane->plotArea().left())
+                                  .arg(page->width());
+        QVERIFY2(pane->width() <= page->width(), qPrintable(where));
+        QVERIFY2(pane->plotArea().width() >= 0.6 * pane->width() &&
+                     pane->plotArea().right() < pane->width(),
+                 qPrintable(where));
+    }
 }
 
 QTEST_MAIN(TestChartsLayout)

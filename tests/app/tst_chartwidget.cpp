@@ -7,6 +7,7 @@
 #include <QScreen>
 #include <QTest>
 #include <cmath>
+#include <tuple>
 
 using namespace tipscope;
 using namespace tipscope::gui;
@@ -49,6 +50,7 @@ private Q_SLOTS:
     void aSparseCurveIsALineThroughItsPoints();
     void aFollowingChartRepaintsOnlyPartsAndLeavesNothingStale();
     void aShortPaneLabelsFewerValuesSoTheyDoNotCrowd();
+    void aPanePerPortLabelsEveryValueItShowsInFull();
     void anAlarmLabelNeverCoversACurve();
 
 private:
@@ -194,6 +196,30 @@ void TestChartWidget::aShortPaneLabelsFewerValuesSoTheyDoNotCrowd() {
     // Tall again, the steps come back.
     m_chart->resize(1200, 600);
     QTRY_COMPARE(m_chart->valueTickStep(ChartAxis::Left), 5.0);
+}
+
+// Issue 39: a pane per port is 170 px tall; at least four labels asked for steps of 20 on
+// 240-360 °C and 0-100 %, seven labels too close together, each of which Qt Charts showed as "…".
+void TestChartWidget::aPanePerPortLabelsEveryValueItShowsInFull() {
+    const double labelHeight = QFontMetricsF(m_chart->valueLabelFont()).height();
+    m_chart->setCompact(true); // as the page makes it: the legend beside the plot
+    m_chart->resize(900, 170);
+    m_chart->showData(ChartData{kT0, kT0 + 60'000, 240, 360, 0, 100, {}});
+    QTRY_VERIFY(m_chart->plotArea().height() < 120);
+    QCoreApplication::processEvents();
+    const double height = m_chart->plotArea().height();
+    for (const auto &[axis, min, max] :
+         {std::tuple{ChartAxis::Left, 240.0, 360.0}, std::tuple{ChartAxis::Right, 0.0, 100.0}}) {
+        const double step = m_chart->valueTickStep(axis);
+        const double count = std::floor(max / step + 1e-9) - std::ceil(min / step - 1e-9) + 1;
+        const double spacing = step / (max - min) * height;
+        const QString what = QStringLiteral("%1 labels %2 px apart in a %3 px plot, %4 px each")
+                                 .arg(count)
+                                 .arg(spacing)
+                                 .arg(height)
+                                 .arg(labelHeight);
+        QVERIFY2(count >= 3 && spacing >= 1.3 * labelHeight, qPrintable(what));
+    }
 }
 
 void TestChartWidget::anAlarmLabelNeverCoversACurve() {

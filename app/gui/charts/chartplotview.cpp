@@ -6,6 +6,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPolygonF>
+#include <QResizeEvent>
 #include <QRubberBand>
 #include <QToolTip>
 #include <QVarLengthArray>
@@ -45,6 +46,20 @@ ChartPlotView::ChartPlotView(QChart *chart, ChartWidget &owner)
     setAccessibleDescription(tr("Time chart. Wheel or plus and minus keys zoom, drag or arrow "
                                 "keys pan, Shift+drag selects a range, double-click or Home "
                                 "resets."));
+}
+
+// QChartView raises its own minimum size to the chart's at every resize and never lowers it. A
+// chart whose margins were once wide (panes lining up while they were still being laid out) then
+// held its pane that wide for good, and the wider pane asked for wider margins again: a layout
+// that never settled. The page decides a pane's size; the chart follows it.
+void ChartPlotView::resizeEvent(QResizeEvent *event) {
+    QChartView::resizeEvent(event);
+    setMinimumSize(0, 0);
+}
+
+void ChartPlotView::fitChart() {
+    QResizeEvent again(size(), size());
+    resizeEvent(&again);
 }
 
 double ChartPlotView::msPerPixel() const {

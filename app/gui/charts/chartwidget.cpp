@@ -16,6 +16,7 @@ constexpr double kMarkerHitPx = 5;
 
 constexpr int kMaxValueSteps = 5;
 constexpr int kMinValueLabels = 4;
+constexpr double kLabelRoom = 1.3; // label heights from one value label to the next, at least
 
 // 1, 2 or 5 times a power of ten, at least `span / steps`: ticks on round values. A step wider
 // than the span would label one value at most, so the next smaller round step is taken then.
@@ -31,11 +32,11 @@ double valueStep(double span, int steps) {
     return magnitude * kRound[magnitude * kRound[k] > span ? k - 1 : k];
 }
 
-// The next round step below `step` (5 → 2 → 1 → 0.5 times a power of ten).
+// The next round step below `step` (5 → 2.5 → 2 → 1 → 0.5 times a power of ten).
 double smallerStep(double step) {
     const double magnitude = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
     const double lead = step / magnitude;
-    return magnitude * (lead > 4.5 ? 2 : lead > 1.5 ? 1 : 0.5);
+    return magnitude * (lead > 4.5 ? 2.5 : lead > 2.25 ? 2 : lead > 1.5 ? 1 : 0.5);
 }
 
 // How many multiples of `step` lie in [min, max]: the labels the axis will show.
@@ -102,6 +103,8 @@ ChartWidgetPrivate::ChartWidgetPrivate(ChartWidget &owner) {
 
 void ChartWidgetPrivate::applyMargins() {
     chart->setMargins(QMargins(4 + padLeft, 4, 4 + padRight, 4 + timeLabelStrip()));
+    if (view) // none yet while the chart is being made
+        view->fitChart();
 }
 
 // Only the plot: Qt Charts repaints the axis labels and the legend itself when they change, and
@@ -218,13 +221,17 @@ void ChartWidgetPrivate::updateValueTicks() {
     // At least four labelled values where the pane has room for them: two labels say little
     // about the scale of a curve between them.
     const int wanted = steps + 1 >= kMinValueLabels ? kMinValueLabels : 1;
+    // Never more labels than fit a little apart: Qt Charts shows a label taller than the room
+    // between it and the next as "…" (a pane per port is short).
+    const int fit = height > 0 ? int(height / (kLabelRoom * labelHeight)) + 1 : kMaxValueSteps + 1;
     for (int i = 0; i < 2; ++i) {
         const double span = ranges[i][1] - ranges[i][0];
         if (!(span > 0))
             continue;
         QValueAxis *axis = i == 0 ? leftAxis : rightAxis;
         double step = valueStep(span, steps);
-        while (labelsWithin(ranges[i][0], ranges[i][1], step) < wanted && step > span * 1e-6)
+        while (labelsWithin(ranges[i][0], ranges[i][1], step) < wanted && step > span * 1e-6 &&
+               labelsWithin(ranges[i][0], ranges[i][1], smallerStep(step)) <= fit)
             step = smallerStep(step);
         if (axis->tickInterval() != step)
             axis->setTickInterval(step);
@@ -239,6 +246,11 @@ ChartWidget::ChartWidget(QWidget *parent)
     layout->addWidget(d->view);
     setFocusProxy(d->view);
     connect(d->chart, &QChart::plotAreaChanged, this, [this] {
+        d->laidOutPadLeft = d->padLeft;
+        d->laidOutPadRight = d->padRight;
+        // The plot moved: a redraw's partial updates would leave the time labels drawn where it
+        // was, so the whole chart is painted again (this happens on a layout, not on a redraw).
+        d->view->viewport()->update();
         d->updateValueTicks();
         d->placeOverlays();
         d->updateTimeTicks();
@@ -272,14 +284,23 @@ void ChartWidgetPrivate::showTitle() {
 QPair<int, int> ChartWidget::naturalPlotInsets() const {
     const QRectF p = d->plot();
     const double width = d->chart->size().width();
-    return {int(std::lround(p.left())) - d->padLeft,
-            int(std::lround(width - p.right())) - d->padRight};
+    return {int(std::lround(p.left())) - d->laidOutPadLeft,
+            int(std::lround(width - p.right())) - d->laidOutPadRight};
+}
+
+bool ChartWidget::hasRoom() const {
+    return d->plot().width() >= kMinAlignedPlotPx;
 }
 
 void ChartWidget::alignPlot(int left, int right) {
     const auto [naturalLeft, naturalRight] = naturalPlotInsets();
-    const int padLeft = qMax(0, left - naturalLeft);
-    const int padRight = qMax(0, right - naturalRight);
+    int padLeft = qMax(0, left - naturalLeft);
+    int padRight = qMax(0, right - naturalRight);
+    // Padding past the chart's own width would squeeze its plot below any use: the chart keeps
+    // its natural room until it has enough to line up with the others.
+    const double spare = d->chart->size().width() - naturalLeft - naturalRight - kMinAlignedPlotPx;
+    if (padLeft + padRight > spare)
+        padLeft = padRight = 0;
     if (padLeft == d->padLeft && padRight == d->padRight)
         return;
     d->padLeft = padLeft;
@@ -291,6 +312,8 @@ void alignPlots(const QList<ChartWidget *> &charts) {
     int left = 0;
     int right = 0;
     for (const ChartWidget *c : charts) {
+        if (!c->hasRoom())
+            continue;
         const auto [l, r] = c->naturalPlotInsets();
         left = qMax(left, l);
         right = qMax(right, r);

@@ -128,6 +128,11 @@ public:
     // (never less than its natural room). See alignPlots().
     [[nodiscard]] QPair<int, int> naturalPlotInsets() const;
     void alignPlot(int left, int right);
+    // Whether the chart has been given room enough for a plot: until then (a pane just made, not
+    // yet laid out, whose plot Qt Charts squeezed to its minimum) its insets say nothing about
+    // its axes, and padding it or from it would feed the layout back into itself.
+    [[nodiscard]] bool hasRoom() const;
+    static constexpr int kMinAlignedPlotPx = 100;
 
 Q_SIGNALS:
     void hovered(qint64 timeMs);

@@ -23,8 +23,11 @@ class ChartPlotView : public QChartView {
     Q_OBJECT
 public:
     ChartPlotView(QChart *chart, ChartWidget &owner);
+    // After the chart's margins changed: the chart takes the view's size again.
+    void fitChart();
 
 protected:
+    void resizeEvent(QResizeEvent *event) override;
     void drawForeground(QPainter *painter, const QRectF &rect) override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
@@ -90,7 +93,7 @@ public:
     [[nodiscard]] QList<TimeLabel> timeLabels(const QRectF &plot) const;
 
     QChart *chart;
-    ChartPlotView *view;
+    ChartPlotView *view = nullptr;
     QValueAxis *timeAxis = nullptr;
     QValueAxis *leftAxis = nullptr;
     QValueAxis *rightAxis = nullptr;
@@ -106,6 +109,11 @@ public:
     // the same x (see alignPlots()).
     int padLeft = 0;
     int padRight = 0;
+    // The padding the plot area was last laid out with. Qt Charts lays out in a posted event,
+    // so between new margins and that layout the plot area is the old one: its natural insets
+    // are the old plot less the old padding, never less the new.
+    int laidOutPadLeft = 0;
+    int laidOutPadRight = 0;
     // Where the alarm bands' labels were drawn in the last paint (tests).
     mutable QList<QRectF> bandLabels;
     qint64 t0 = 0;
