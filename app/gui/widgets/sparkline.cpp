@@ -61,9 +61,13 @@ Sparkline::Sparkline(Telemetry &telemetry, const QString &key, QWidget *parent)
     , m_temperatureText([](qint32 c) { return QStringLiteral("%1 °C").arg(c); }) {
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     setAccessibleName(tr("Last minute of tip temperature and power"));
+    m_repaint.setSingleShot(true);
+    connect(&m_repaint, &QTimer::timeout, this, qOverload<>(&QWidget::update));
     connect(&telemetry, &Telemetry::samplesAdded, this, [this](const QStringList &keys) {
-        if (keys.contains(m_key))
-            update();
+        if (!keys.contains(m_key) || m_repaint.isActive() || !isVisible())
+            return;
+        const qint64 columnMs = kWindowMs / qMax(1, width() - 2);
+        m_repaint.start(int(qBound(qint64(1000 / kMaxRepaintsPerSecond), columnMs, qint64(1000))));
     });
 }
 

@@ -5,8 +5,13 @@
 // the left. It draws only what was recorded: no line before the first sample, a gap where none
 // came. Disabled (the line is down), it is drawn in the disabled palette, ending at the last
 // sample it has.
+//
+// A line makes some seventy samples a second, while a minute across a card's width moves by a
+// pixel column about every 150 ms: repaints follow the samples no more often than that (and at
+// most kMaxRepaintsPerSecond), so four cards cost the window little and never the wire.
 #pragma once
 
+#include <QTimer>
 #include <QWidget>
 #include <functional>
 
@@ -23,6 +28,7 @@ class Sparkline : public QWidget {
     Q_OBJECT
 public:
     static constexpr qint64 kWindowMs = 60000;
+    static constexpr int kMaxRepaintsPerSecond = 10;
 
     Sparkline(model::Telemetry &telemetry, const QString &key, QWidget *parent = nullptr);
 
@@ -44,6 +50,7 @@ private:
     model::Telemetry &m_telemetry;
     QString m_key;
     std::function<QString(qint32)> m_temperatureText;
+    QTimer m_repaint;
 };
 
 } // namespace tipscope::gui
