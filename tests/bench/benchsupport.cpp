@@ -198,4 +198,8 @@ double quantile(QList<double> values, double p) {
     return values[std::clamp<qsizetype>(rank - 1, 0, values.size() - 1)];
 }
 
+double pacedWireLimitTxPerS(qint64 answered, qint64 bytes) {
+    return answered > 0 && bytes > 0 ? kWireBytesPerSecond * double(answered) / double(bytes) : 0;
+}
+
 } // namespace tipscope::bench

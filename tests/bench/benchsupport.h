@@ -52,6 +52,13 @@ void waitMs(int ms);
 void stopOnSignals();
 [[nodiscard]] bool interrupted();
 
+// The benches' simulated wires are paced like a 19200-baud line, 8N1: ten bits a byte.
+inline constexpr int kPaceBaud = 19200;
+inline constexpr double kWireBytesPerSecond = kPaceBaud / 10.0;
+// What such a wire carries, in transactions a second, at the frame sizes a line used: `answered`
+// transactions took `bytes` sent and received. 0 when nothing was answered.
+[[nodiscard]] double pacedWireLimitTxPerS(qint64 answered, qint64 bytes);
+
 // The p-quantile (0..1) of `values` by the nearest rank; 0 for an empty list.
 [[nodiscard]] double quantile(QList<double> values, double p);
 

@@ -19,8 +19,6 @@ namespace tipscope::bench {
 
 namespace {
 
-constexpr int kPaceBaud = 19200;
-constexpr double kWireBytesPerSecond = kPaceBaud / 10.0; // 8N1: ten bits per byte
 constexpr int kConnectMs = 120000;
 // Discovery, the first reading of every setting and the tips heating up stay out of the figures.
 constexpr int kWarmupMs = 10000;
@@ -98,9 +96,7 @@ double printRates(const model::Workspace &workspace, const Snapshot &before, con
         const qint64 answered = after.lines[size_t(i)].answered - before.lines[size_t(i)].answered;
         const qint64 bytes = after.lines[size_t(i)].bytes - before.lines[size_t(i)].bytes;
         const double rate = double(answered) / seconds;
-        // The paced wire's bytes a second over this line's own bytes per transaction.
-        const double limit =
-            answered > 0 && bytes > 0 ? kWireBytesPerSecond * double(answered) / double(bytes) : 0;
+        const double limit = pacedWireLimitTxPerS(answered, bytes);
         const QString line = workspace.line(i).name;
         printFigure(QStringLiteral("fleet.%1_tx_per_s").arg(line), rate, QStringLiteral("tx/s"));
         printFigure(QStringLiteral("fleet.%1_wire_limit_tx_per_s").arg(line), limit,

@@ -20,8 +20,6 @@ namespace {
 
 constexpr int kDefaultSeconds = 3;
 constexpr int kDefaultTurnaroundMs = 100;
-constexpr int kPaceBaud = 19200;
-constexpr double kWireBytesPerSecond = kPaceBaud / 10.0; // 8N1: ten bits per byte
 constexpr int kStation = 1;
 constexpr int kPolledPorts = 4;
 constexpr int kWriteIntervalMs = 150;

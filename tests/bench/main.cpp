@@ -8,6 +8,7 @@
 #include "chartbench.h"
 #include "fleetbench.h"
 #include "fleetlivebench.h"
+#include "guibench.h"
 #include "jointbench.h"
 #include "journalbench.h"
 #include "linkbench.h"
@@ -38,6 +39,10 @@ const Subcommand kSubcommands[] = {
      tipscope::bench::runSoakBench},
     {"chart", "chart redraw over a day of 4 ports, naive chart, memory, GUI CPU (--seconds N)",
      tipscope::bench::runChartBench, true},
+    {"gui",
+     "each view of the window on a paced line making joints: transactions against the wire "
+     "limit, CPU (--seconds N)",
+     tipscope::bench::runGuiBench, true},
     {"journal", "journal inserts under polling, a year's file: size and queries (--rows N)",
      tipscope::bench::runJournalBench},
     {"joints",
