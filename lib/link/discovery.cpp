@@ -64,6 +64,7 @@ void Discovery::start() {
         probes.append(std::nullopt);
     m_named = false;
     begin(int(probes.size()));
+    m_tap = connect(&m_queue.tap(), &FrameTap::event, this, &Discovery::onTap);
     for (int i = 0; i < probes.size(); ++i)
         probe(probes[i], i);
     if (m_outstanding == 0) // no command to probe with
@@ -88,6 +89,10 @@ void Discovery::begin(int probes) {
     m_failure.reset();
     m_identification.reset();
     m_statsAtBegin = m_queue.stats();
+    m_unanswered.clear();
+    m_heardLate.clear();
+    m_askedAgain.clear();
+    disconnect(m_tap);
 }
 
 QString Discovery::whatCameBack() const {
@@ -129,6 +134,40 @@ void Discovery::probe(std::optional<int> address, int slot) {
         ++m_done;
         Q_EMIT progress(m_done, m_total);
         take(*reply, address, slot);
+        if (!m_named && address && reply->error() == ReplyError::Timeout) {
+            m_unanswered.insert(*address, slot);
+            if (m_heardLate.contains(*address))
+                askAgain(*address);
+        }
+        settle();
+    });
+}
+
+void Discovery::onTap(const TapEvent &event) {
+    if (event.kind != TapEvent::Kind::Decoded || !event.stray || m_outstanding == 0)
+        return;
+    const protocol::Frame &frame = event.decoded.frame;
+    if (!frame.source || "R-" + frame.command != m_asked ||
+        (frame.header != Header::Answer && frame.header != Header::Nak))
+        return;
+    m_heardLate.insert(*frame.source);
+    if (m_unanswered.contains(*frame.source))
+        askAgain(*frame.source);
+}
+
+void Discovery::askAgain(int address) {
+    if (m_askedAgain.contains(address))
+        return;
+    m_askedAgain.insert(address);
+    const int slot = m_unanswered.value(address);
+    const CommandSpec *modelName = Catalog::builtin().command(Role::ModelName);
+    Request r = Request::read(address, modelName->pattern.toLatin1(), Priority::UserRead);
+    r.minTurnaroundMs = kNamedDeviceTurnaroundMs;
+    Reply *reply = m_queue.enqueue(r, this);
+    ++m_outstanding;
+    connect(reply, &Reply::finished, this, [this, reply, address, slot] {
+        reply->deleteLater();
+        take(*reply, address, slot);
         settle();
     });
 }
@@ -156,7 +195,8 @@ void Discovery::take(const Reply &reply, std::optional<int> address, int slot) {
 
 void Discovery::askVersion(int slot, const protocol::ResolvedCommand &version) {
     Request r = Request::read(m_found[slot]->address, version);
-    if (m_named)
+    const std::optional<int> address = m_found[slot]->address;
+    if (m_named || (address && m_askedAgain.contains(*address)))
         r.minTurnaroundMs = kNamedDeviceTurnaroundMs;
     Reply *reply = m_queue.enqueue(r, this);
     ++m_outstanding;
@@ -171,6 +211,7 @@ void Discovery::askVersion(int slot, const protocol::ResolvedCommand &version) {
 void Discovery::settle() {
     if (--m_outstanding > 0)
         return;
+    disconnect(m_tap);
     if (m_named)
         m_identification = identificationOf(m_found.value(0));
     for (const auto &d : m_found)

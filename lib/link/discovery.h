@@ -9,18 +9,23 @@
 // has that command. A search probe is tried twice and its silence is normal; identify() asks as
 // firmly as any read (the queue's retries), since the device was named, and gives each attempt
 // at least kNamedDeviceTurnaroundMs: a device that answers late (a loaded PC, a converter that
-// wakes up with the line) is still found, an absent one costs a second more. Requests go through
+// wakes up with the line) is still found, an absent one costs a second more. A search probe
+// whose answers all came after it gave up (they arrive as frames nobody asked, from its address)
+// has found a device all the same: it is asked again with the same patience. Requests go through
 // the request queue like everything else, so discovery runs beside other traffic and is cancelled
 // by deleting it. finished() is emitted once per start() or identify().
 #pragma once
 
+#include "frametap.h"
 #include "linkstats.h"
 #include "reply.h"
 
 #include "protocol/outcome.h"
 
+#include <QHash>
 #include <QList>
 #include <QObject>
+#include <QSet>
 #include <optional>
 
 namespace tipscope::protocol {
@@ -100,6 +105,9 @@ private:
     void askVersion(int slot, const protocol::ResolvedCommand &version);
     void settle();
     [[nodiscard]] Identification identificationOf(const std::optional<DeviceInfo> &found) const;
+    // A frame nobody asked for during a search: a probe's late answer names a device there.
+    void onTap(const TapEvent &event);
+    void askAgain(int address);
 
     RequestQueue &m_queue;
     Mode m_mode = Mode::Auto;
@@ -112,7 +120,11 @@ private:
     std::optional<IdentifyFailure> m_failure;
     QByteArray m_asked; // the model-name request, "R-SMN", for the failure's words
     std::optional<Identification> m_identification;
-    LinkStats m_statsAtBegin; // the queue's, to tell what this search brought back
+    LinkStats m_statsAtBegin;     // the queue's, to tell what this search brought back
+    QHash<int, int> m_unanswered; // a search's probes that got no answer: address → slot
+    QSet<int> m_heardLate;        // addresses whose model name came after their probe gave up
+    QSet<int> m_askedAgain;
+    QMetaObject::Connection m_tap;
 };
 
 } // namespace tipscope::link

@@ -70,6 +70,7 @@ class TestDiscovery : public QObject {
 private Q_SLOTS:
     void demoLineIsTwoIdentifiedDevicesInProbeOrder();
     void ddrLineIsOneDeviceWithoutAddress();
+    void aSearchFindsTheDevicesWhoseAnswersCameLate();
     void modeDecidesWhichDevicesAreFound_data();
     void modeDecidesWhichDevicesAreFound();
     void identifyNamesTheDeviceAtAnyAddress_data();
@@ -107,6 +108,30 @@ void TestDiscovery::demoLineIsTwoIdentifiedDevicesInProbeOrder() {
     QCOMPARE(found.count(), 2);
     QCOMPARE(found.at(0).at(0).value<DeviceInfo>().model, QStringLiteral("DME-2C"));
     QCOMPARE(found.at(1).at(0).value<DeviceInfo>().model, QStringLiteral("SFR-A"));
+    QCOMPARE(finished.count(), 1);
+}
+
+// A loaded PC: every answer comes after the probe's two attempts gave up (the queue's
+// turnaround here is 20 ms), so each arrives as a frame nobody asked for, during the next probe.
+// It names a device at its address all the same; the search asks it again, patiently.
+void TestDiscovery::aSearchFindsTheDevicesWhoseAnswersCameLate() {
+    Bench b(Wiring::Demo);
+    tipscope::sim::SimFaults faults;
+    faults.latencyMs = 120;
+    b.sim->setFaults(faults);
+    b.line->open();
+    QTRY_COMPARE_WITH_TIMEOUT(b.line->state(), Line::State::Open, kWaitMs);
+    Discovery discovery(b.line->queue());
+    discovery.setMode(Discovery::Mode::Addressed);
+    QSignalSpy finished(&discovery, &Discovery::finished);
+    QVERIFY(finished.isValid());
+
+    discovery.start();
+    QVERIFY(finished.wait(kWaitMs));
+    QVERIFY2(b.line->queue().stats().stray > 0, "no answer came late: the test proves nothing");
+    QCOMPARE(addressesText(discovery.devices()), QStringLiteral("01 10"));
+    QCOMPARE(discovery.devices().at(0).summary(), QStringLiteral("01 DME-2C DME 9996780"));
+    QCOMPARE(discovery.devices().at(1).model, QStringLiteral("SFR-A"));
     QCOMPARE(finished.count(), 1);
 }
 
