@@ -119,6 +119,7 @@ JointsPage::JointsPage(Session &session, QWidget *parent)
     layout->addWidget(split, 1);
 
     m_chartsRefresh = new DeferredRefresh(*this, [this] { refreshCharts(); });
+    m_widthsRefresh = new DeferredRefresh(*this, [this] { m_view->resizeColumnsToContents(); });
     connect(m_view, &QTableView::activated, this,
             [this](const QModelIndex &index) { openJoint(index.row()); });
     connect(&session.joints(), &JointWatcher::jointEnded, this, &JointsPage::onJointEnded);
@@ -291,8 +292,9 @@ void JointsPage::onJointEnded(const JointRecord &joint) {
         return;
     if (m_deviceBox->findData(joint.device.key()) < 0)
         fillDevices({joint.device});
-    // The first rows decide the widths; a joint a few times a minute costs little to measure.
-    m_view->resizeColumnsToContents();
+    // The first rows decide the widths, measured when the page is seen: a line whose ports each
+    // make a joint every few seconds kept a hidden table measuring its rows for every one.
+    m_widthsRefresh->request();
     m_chartsRefresh->request();
     // A failed export or chart stays in sight until the next reload; else the count follows.
     if (!m_otherProblem)

@@ -115,6 +115,7 @@ private:
     RecoveryHistogramView *m_histogram = nullptr;
     RecoveryTrendView *m_trend = nullptr;
     DeferredRefresh *m_chartsRefresh = nullptr;
+    DeferredRefresh *m_widthsRefresh = nullptr;
     QPointer<ChartsPage> m_charts;
 };
 
