@@ -4,14 +4,14 @@
 // setting gets one clear problem while the sender keeps trying.
 #include "cfx/amqpsender.h"
 #include "cfx/cfxmessages.h"
-#include "cfxconsumer.h"
-#include "rabbitmqbroker.h"
+#include "cfxtesting.h"
 
 #include <QJsonArray>
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTest>
 
+using namespace tipscope;
 using namespace tipscope::cfx;
 using tipscope::testing::CfxConsumer;
 using tipscope::testing::RabbitMqBroker;
@@ -20,18 +20,6 @@ class TstAmqpSender : public QObject {
     Q_OBJECT
 
     std::unique_ptr<RabbitMqBroker> m_broker;
-
-    AmqpSender::Settings settings(const QString &address) const {
-        AmqpSender::Settings s;
-        s.host = QStringLiteral("127.0.0.1");
-        s.port = m_broker->port();
-        s.user = QStringLiteral("guest");
-        s.password = "guest";
-        s.address = address;
-        s.retryMinMs = 100;
-        s.retryMaxMs = 400;
-        return s;
-    }
 
     static Envelope envelopeOf(const Message &message, const QString &handle) {
         Envelope envelope;
@@ -50,9 +38,7 @@ class TstAmqpSender : public QObject {
 
 private Q_SLOTS:
     void initTestCase() {
-        if (const QString why = RabbitMqBroker::skipReason(); !why.isEmpty())
-            QSKIP(qPrintable(why));
-        if (const QString why = CfxConsumer::skipReason(); !why.isEmpty())
+        if (const QString why = testing::cfxBrokerSkipReason(); !why.isEmpty())
             QSKIP(qPrintable(why));
         m_broker = std::make_unique<RabbitMqBroker>();
         QString error;
@@ -67,7 +53,8 @@ private Q_SLOTS:
         AmqpSender sender;
         QSignalSpy accepted(&sender, &AmqpSender::accepted);
         QVERIFY(accepted.isValid());
-        sender.start(settings(QStringLiteral("/exchange/amq.topic")));
+        sender.start(
+            testing::quickSenderSettings(*m_broker, QStringLiteral("/exchange/amq.topic")));
         QVERIFY(connect(sender));
         const QString handle =
             endpointHandle(QStringLiteral("JBC"), QStringLiteral("DDE"), QStringLiteral("L1-1"));
@@ -131,7 +118,8 @@ private Q_SLOTS:
         AmqpSender sender;
         QSignalSpy problems(&sender, &AmqpSender::problem);
         QVERIFY(problems.isValid());
-        AmqpSender::Settings s = settings(address);
+        AmqpSender::Settings s = testing::quickSenderSettings(*m_broker, address);
+        s.user = QStringLiteral("guest");
         s.password = password;
         if (noBroker) {
             QTcpServer closed; // a port that was free a moment ago
@@ -151,7 +139,8 @@ private Q_SLOTS:
         AmqpSender sender;
         QSignalSpy lost(&sender, &AmqpSender::disconnected);
         QSignalSpy accepted(&sender, &AmqpSender::accepted);
-        sender.start(settings(QStringLiteral("/exchange/amq.topic")));
+        sender.start(
+            testing::quickSenderSettings(*m_broker, QStringLiteral("/exchange/amq.topic")));
         QVERIFY(connect(sender));
         QString error;
         QVERIFY2(m_broker->pause(&error), qPrintable(error));
