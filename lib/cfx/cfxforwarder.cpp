@@ -96,13 +96,8 @@ std::optional<Envelope> CfxForwarder::envelopeOf(const journal::StoredEvent &sto
             return std::nullopt; // its error was never a CFX fault (before CFX was on)
         message = faultCleared(occurrence);
     }
-    Envelope envelope;
-    envelope.messageName = message.name;
-    envelope.body = message.body;
-    envelope.uniqueId = stored.uid;
-    envelope.timeStamp = QDateTime::fromMSecsSinceEpoch(event.timeMs, Qt::UTC);
-    envelope.source = m_handleOf(event.device);
-    return envelope;
+    return cfx::envelopeOf(message, m_handleOf(event.device), stored.uid,
+                           QDateTime::fromMSecsSinceEpoch(event.timeMs, Qt::UTC));
 }
 
 QUuid CfxForwarder::raisingOccurrence(const journal::StoredEvent &cleared) {

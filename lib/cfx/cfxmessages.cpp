@@ -40,6 +40,17 @@ QJsonObject requestResult(const QString &result, const QString &message) {
 
 } // namespace
 
+Envelope envelopeOf(const Message &message, const QString &source, const QUuid &uniqueId,
+                    const QDateTime &time) {
+    Envelope envelope;
+    envelope.messageName = message.name;
+    envelope.body = message.body;
+    envelope.source = source;
+    envelope.uniqueId = uniqueId;
+    envelope.timeStamp = time;
+    return envelope;
+}
+
 const E10Mapping kE10Mapping[6] = {
     {StationCondition::Error, E10State::UnscheduledDowntime,
      "a station, port or feeder error stops the work until someone mends it"},
@@ -93,7 +104,7 @@ Message endpointConnected(const QString &handle, const QString &requestUri,
              {QStringLiteral("RequestTargetAddress"), nullable(requestAddress)}}};
 }
 
-Message heartbeat(const QString &handle, qint64 periodMs, const QJsonArray &activeFaults) {
+Message heartbeat(const QString &handle, qint64 periodMs, const QJsonValue &activeFaults) {
     return {QStringLiteral("CFX.Heartbeat"),
             {{QStringLiteral("CFXHandle"), handle},
              {QStringLiteral("HeartbeatFrequency"), cfxTimeSpan(periodMs)},

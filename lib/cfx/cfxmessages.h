@@ -27,6 +27,11 @@ struct Message {
     QJsonObject body;
 };
 
+// `message` in its envelope, sent by `source`: a new id and the present time unless given.
+[[nodiscard]] Envelope envelopeOf(const Message &message, const QString &source,
+                                  const QUuid &uniqueId = QUuid::createUuid(),
+                                  const QDateTime &time = QDateTime::currentDateTimeUtc());
+
 // What TipScope knows of a station at a time, from the most to the least telling.
 enum class StationCondition { Error, LinkLost, Working, InStand, Sleep, Hibernation };
 
@@ -56,9 +61,10 @@ extern const E10Mapping kE10Mapping[6];
 
 [[nodiscard]] Message endpointConnected(const QString &handle, const QString &requestUri,
                                         const QString &requestAddress);
-// `activeFaults` empty says, as the SDK documents, that no fault is active.
+// `activeFaults`: an empty list says no fault is active, null that they are not known (the SDK's
+// Heartbeat.ActiveFaults).
 [[nodiscard]] Message heartbeat(const QString &handle, qint64 periodMs,
-                                const QJsonArray &activeFaults);
+                                const QJsonValue &activeFaults);
 [[nodiscard]] Message endpointShuttingDown(const QString &handle);
 // `oldDurationMs` empty: unknown (the endpoint did not see the old state begin).
 [[nodiscard]] Message stationStateChanged(StationCondition before,

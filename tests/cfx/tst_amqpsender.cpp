@@ -21,16 +21,6 @@ class TstAmqpSender : public QObject {
 
     std::unique_ptr<RabbitMqBroker> m_broker;
 
-    static Envelope envelopeOf(const Message &message, const QString &handle) {
-        Envelope envelope;
-        envelope.messageName = message.name;
-        envelope.body = message.body;
-        envelope.source = handle;
-        envelope.timeStamp = QDateTime::currentDateTimeUtc();
-        envelope.uniqueId = QUuid::createUuid();
-        return envelope;
-    }
-
     static bool connect(AmqpSender &sender) {
         return QTest::qWaitFor([&] { return sender.state() == AmqpSender::State::Connected; },
                                20000);
