@@ -25,6 +25,7 @@
 #include <atomic>
 #include <cstring>
 #include <deque>
+#include <mutex>
 #include <thread>
 
 Q_LOGGING_CATEGORY(lcAmqp, "tipscope.cfx.amqp")
@@ -77,14 +78,13 @@ proton::message protonMessage(const AmqpMessage &from) {
 } // namespace
 
 // Everything below runs on the Proton thread, except the constructor, the destructor and
-// enqueue(), which only touch the thread-safe work queue and container.
+// enqueue(), which only touch the container and, under its mutex, the connection's work queue.
 class AmqpSender::Engine : public proton::messaging_handler {
 public:
     Engine(AmqpSender &owner, const Settings &settings)
         : m_owner(&owner)
         , m_settings(settings)
-        , m_container(*this)
-        , m_work(m_container) {
+        , m_container(*this) {
         m_container.auto_stop(false);
         m_delayMs = settings.retryMinMs;
         m_thread = std::thread([this] {
@@ -102,7 +102,12 @@ public:
     }
 
     void enqueue(int generation, quint64 tag, proton::message message) {
-        m_work.add([this, generation, tag, message = std::move(message)]() mutable {
+        // The connection's own queue: it wakes an idle container, which the container's queue
+        // did not always do. Without a connection the message would be dropped there anyway.
+        const std::lock_guard<std::mutex> lock(m_workMutex);
+        if (!m_work)
+            return;
+        m_work->add([this, generation, tag, message = std::move(message)]() mutable {
             if (generation != m_generation || !m_sender)
                 return; // handed over under a connection that is gone: the caller sends again
             m_outbox.push_back({tag, std::move(message)});
@@ -113,6 +118,10 @@ public:
     void on_container_start(proton::container &) override { connect(); }
 
     void on_connection_open(proton::connection &connection) override {
+        {
+            const std::lock_guard<std::mutex> lock(m_workMutex);
+            m_work = &connection.work_queue();
+        }
         proton::sender_options options;
         options.delivery_mode(proton::delivery_mode::AT_LEAST_ONCE);
         connection.open_sender(utf8(m_settings.address), options);
@@ -156,6 +165,10 @@ public:
     void on_error(const proton::error_condition &error) override { remember(error); }
 
     void on_transport_close(proton::transport &) override {
+        {
+            const std::lock_guard<std::mutex> lock(m_workMutex);
+            m_work = nullptr; // goes with the connection
+        }
         m_sender = proton::sender();
         m_outbox.clear();
         const int generation = m_generation;
@@ -249,7 +262,8 @@ private:
     AmqpSender *m_owner;
     Settings m_settings;
     proton::container m_container;
-    proton::work_queue m_work;
+    std::mutex m_workMutex;
+    proton::work_queue *m_work = nullptr; // the open connection's, guarded by m_workMutex
     std::thread m_thread;
     proton::sender m_sender;
     std::deque<Pending> m_outbox;

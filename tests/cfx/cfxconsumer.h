@@ -41,6 +41,12 @@ public:
         return QTest::qWaitFor([this] { return read(), m_ready; }, 30000);
     }
 
+    // Waits (with the event loop) until `count` messages arrived.
+    bool waitForMessages(int count, int timeoutMs = 30000) {
+        return QTest::qWaitFor([this, count] { return read(), m_messages.size() >= count; },
+                               timeoutMs);
+    }
+
     // Waits for the consumer to end on its own (all messages received, or its timeout).
     bool finish() {
         // Waiting with the event loop: the code under test keeps sending meanwhile.
