@@ -60,13 +60,7 @@ class TstCfxForwarder : public QObject {
     }
 
 private Q_SLOTS:
-    void initTestCase() {
-        if (const QString why = testing::cfxBrokerSkipReason(); !why.isEmpty())
-            QSKIP(qPrintable(why));
-        m_broker = std::make_unique<RabbitMqBroker>();
-        QString error;
-        QVERIFY2(m_broker->start(&error), qPrintable(error));
-    }
+    void initTestCase() { testing::startCfxBroker(m_broker); }
     void cleanupTestCase() { m_broker.reset(); }
 
     void faultsArriveInOrderTiedToTheirClearing() {
