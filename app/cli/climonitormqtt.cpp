@@ -2,7 +2,9 @@
 // The line the command line names (or every line of --workspace) runs in a PlantAgent, the same
 // as tipscope-agent's, so the topics and payloads are the agent's (docs/mqtt.md). Every interval
 // a line says where it stands: the broker, the devices, what was published and forwarded. The
-// password comes from the environment (TIPSCOPE_MQTT_PASSWORD), never from an argument.
+// password comes from the environment (TIPSCOPE_MQTT_PASSWORD), never from an argument. With
+// --cfx the agent also makes every station an IPC-CFX endpoint (docs/cfx.md), its password from
+// TIPSCOPE_CFX_PASSWORD.
 #include "clicommands.h"
 
 #include "link/tcptransport.h"
@@ -17,6 +19,7 @@
 #include <QLoggingCategory>
 #include <QSysInfo>
 #include <QTimer>
+#include <QUrl>
 #include <cmath>
 
 namespace tipscope::cli {
@@ -28,6 +31,39 @@ struct CliMonitorMqttTr {
 };
 
 const char kPasswordVariable[] = "TIPSCOPE_MQTT_PASSWORD";
+const char kCfxPasswordVariable[] = "TIPSCOPE_CFX_PASSWORD";
+
+// --cfx amqp://HOST:PORT or amqps://HOST:PORT (TLS with the system's CAs), with its user and
+// address; the agent configuration's "cfx" section has the rest (docs/cfx.md).
+protocol::Outcome<cfx::CfxSettings> cfxOf(const CliOptions &o) {
+    const QUrl url(o.values.value(QStringLiteral("cfx")), QUrl::StrictMode);
+    const bool tls = url.scheme() == QLatin1String("amqps");
+    if (!url.isValid() || (!tls && url.scheme() != QLatin1String("amqp")) || url.host().isEmpty() ||
+        !url.userInfo().isEmpty() || (!url.path().isEmpty() && url.path() != QLatin1String("/")))
+        return protocol::failure(
+            CliMonitorMqttTr::tr("--cfx takes the AMQP broker as amqp://HOST:PORT or "
+                                 "amqps://HOST:PORT (the user with --cfx-user, the password "
+                                 "from %1)")
+                .arg(QLatin1String(kCfxPasswordVariable)));
+    cfx::CfxSettings s;
+    s.host = url.host();
+    s.tls = tls;
+    s.port = url.port(tls ? 5671 : 5672);
+    s.caFile = tls ? QStringLiteral("/etc/ssl/certs/ca-certificates.crt") : QString();
+    s.username = o.values.value(QStringLiteral("cfx-user"));
+    s.address = o.values.value(QStringLiteral("cfx-address"), s.address);
+    if (!s.address.startsWith(QLatin1Char('/')))
+        return protocol::failure(CliMonitorMqttTr::tr(
+            "--cfx-address takes RabbitMQ's form: /exchange/NAME, /exchange/NAME/KEY or "
+            "/queue/NAME"));
+    if (!s.username.isEmpty() && qEnvironmentVariableIsSet(kCfxPasswordVariable)) {
+        auto password = mqtt::readSecretEnvironment(QLatin1String(kCfxPasswordVariable));
+        if (!password)
+            return protocol::failure(password.error());
+        s.password = password.value();
+    }
+    return s;
+}
 
 protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
     plant::AgentConfig c;
@@ -54,6 +90,12 @@ protocol::Outcome<plant::AgentConfig> configOf(const CliOptions &o) {
         return protocol::failure(
             CliMonitorMqttTr::tr("--interval takes milliseconds from 100 to 3600000"));
     c.journalPath = o.values.value(QStringLiteral("journal"));
+    if (o.values.contains(QStringLiteral("cfx"))) {
+        auto cfx = cfxOf(o);
+        if (!cfx)
+            return protocol::failure(cfx.error());
+        c.cfx = cfx.value();
+    }
     // Not the agent's own id, so a trial beside a running agent does not take its session over.
     c.broker.clientId = QStringLiteral("tipscope-cli-%1-%2")
                             .arg(QSysInfo::machineHostName(), mqtt::sanitizeTopicLevel(c.site));

@@ -130,9 +130,9 @@ void Journal::markJointsSent(const QList<qint64> &ids) {
         (void)post(*m_shared, m_writer, SentMarks{Table::Joints, ids});
 }
 
-void Journal::markEventsSent(const QList<qint64> &ids) {
+void Journal::markEventsSent(const QList<qint64> &ids, SentChannel channel) {
     if (!ids.isEmpty())
-        (void)post(*m_shared, m_writer, SentMarks{Table::Events, ids});
+        (void)post(*m_shared, m_writer, SentMarks{Table::Events, ids, channel});
 }
 
 void Journal::setContext(const model::WorkContext &context) {

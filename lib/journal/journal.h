@@ -59,7 +59,7 @@ public:
     QUuid append(const model::JointRecord &joint, const model::WorkContext &context);
     QUuid append(JournalEvent event, const model::WorkContext &context);
     void markJointsSent(const QList<qint64> &ids);
-    void markEventsSent(const QList<qint64> &ids);
+    void markEventsSent(const QList<qint64> &ids, SentChannel channel = SentChannel::Mqtt);
 
     void setContext(const model::WorkContext &context);
     [[nodiscard]] model::WorkContext context() const;

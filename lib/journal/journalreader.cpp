@@ -77,6 +77,12 @@ void JournalReader::close() {
     m_open = false;
 }
 
+Outcome<void> JournalReader::keepOpen(const QString &path) {
+    if (m_open)
+        return {};
+    return open(path);
+}
+
 Outcome<void> JournalReader::open(const QString &path) {
     close();
     m_path = path;
@@ -191,8 +197,10 @@ Outcome<QList<StoredJoint>> JournalReader::unsentJoints(qint64 afterId, int limi
     return collect<StoredJoint>(m_connection, selectUnsentJoints(afterId, limit), readJoint);
 }
 
-Outcome<QList<StoredEvent>> JournalReader::unsentEvents(qint64 afterId, int limit) const {
-    return collect<StoredEvent>(m_connection, selectUnsentEvents(afterId, limit), readEvent);
+Outcome<QList<StoredEvent>> JournalReader::unsentEvents(qint64 afterId, int limit,
+                                                        SentChannel channel) const {
+    return collect<StoredEvent>(m_connection, selectUnsentEvents(afterId, limit, channel),
+                                readEvent);
 }
 
 Outcome<QList<model::DeviceIdentity>> JournalReader::devices() const {

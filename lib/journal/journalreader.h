@@ -28,6 +28,8 @@ public:
     JournalReader &operator=(const JournalReader &) = delete;
 
     [[nodiscard]] protocol::Outcome<void> open(const QString &path);
+    // open() unless already open: for a forwarder that reads on, and opens again after failing.
+    [[nodiscard]] protocol::Outcome<void> keepOpen(const QString &path);
     [[nodiscard]] bool isOpen() const { return m_open; }
     // SQLite's quick_check over the whole file: a journal that opens may still be damaged inside.
     // It reads every page, so it is for commands that report on the journal, not the poll path.
@@ -49,8 +51,8 @@ public:
     // Store-and-forward: the oldest unsent records with a row id above `afterId`, in order.
     [[nodiscard]] protocol::Outcome<QList<StoredJoint>> unsentJoints(qint64 afterId,
                                                                      int limit) const;
-    [[nodiscard]] protocol::Outcome<QList<StoredEvent>> unsentEvents(qint64 afterId,
-                                                                     int limit) const;
+    [[nodiscard]] protocol::Outcome<QList<StoredEvent>>
+    unsentEvents(qint64 afterId, int limit, SentChannel channel = SentChannel::Mqtt) const;
     [[nodiscard]] protocol::Outcome<JournalSummary> summary() const;
     // The retention stored in the file (journalsettings.h), without counting anything.
     [[nodiscard]] protocol::Outcome<int> retentionDays() const;

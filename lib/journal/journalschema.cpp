@@ -61,6 +61,12 @@ const Migration kMigrations[] = {
       "ALTER TABLE joints ADD COLUMN dip_uncertainty_k REAL NOT NULL DEFAULT 0",
       "ALTER TABLE joints ADD COLUMN recovery_uncertainty_ms INTEGER NOT NULL DEFAULT 0",
       "ALTER TABLE joints ADD COLUMN recovery_bounded INTEGER NOT NULL DEFAULT 0"}},
+    // IPC-CFX store-and-forward, a mark of its own beside MQTT's, so each broker takes every
+    // event once. Events older than the migration are not a CFX endpoint's to send.
+    {5,
+     {"ALTER TABLE events ADD COLUMN cfx_sent INTEGER NOT NULL DEFAULT 0",
+      "UPDATE events SET cfx_sent = 1",
+      "CREATE INDEX events_cfx_unsent ON events (id) WHERE cfx_sent = 0"}},
 };
 
 // A failure with its kind, so that a front end can tell waiting from a person's work.

@@ -3,7 +3,8 @@
 //
 // Version 1: devices, work contexts, joints and events, with the indexes the time-range queries
 // use. Version 2: store-and-forward, a `sent` mark per joint and event and an index of the unsent
-// ones. Version 3: settings every program that opens the file shares (the retention). A new file
+// ones. Version 3: settings every program that opens the file shares (the retention). Version 4:
+// how sure each joint's figures are. Version 5: a CFX `cfx_sent` mark per event. A new file
 // runs every migration in order, so a new file and a migrated one are alike. Migrations run in one
 // IMMEDIATE transaction that re-reads the version first, so two programs opening an old file
 // together migrate it once. A file written by a newer TipScope (a higher version) or by another
@@ -19,7 +20,7 @@
 
 namespace tipscope::journal {
 
-inline constexpr int kJournalSchemaVersion = 4;
+inline constexpr int kJournalSchemaVersion = 5;
 inline constexpr int kJournalApplicationId = 0x54695053; // "TiPS"
 
 // A fresh connection to the file at `path` named `connectionName`, open, in WAL mode with full

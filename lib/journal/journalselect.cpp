@@ -126,9 +126,11 @@ Select selectUnsentJoints(qint64 afterId, int limit) {
             {afterId, limit}};
 }
 
-Select selectUnsentEvents(qint64 afterId, int limit) {
-    return {QString::fromLatin1(kEventColumns) +
-                QStringLiteral(" WHERE e.sent = 0 AND e.id > ? ORDER BY e.id LIMIT ?"),
+Select selectUnsentEvents(qint64 afterId, int limit, SentChannel channel) {
+    const QString mark =
+        channel == SentChannel::Cfx ? QStringLiteral("e.cfx_sent") : QStringLiteral("e.sent");
+    return {QString::fromLatin1(kEventColumns) + QStringLiteral(" WHERE ") + mark +
+                QStringLiteral(" = 0 AND e.id > ? ORDER BY e.id LIMIT ?"),
             {afterId, limit}};
 }
 

@@ -23,7 +23,7 @@ struct Select {
 [[nodiscard]] Select jointsWhere(const JointFilter &filter);
 // The oldest unsent records after row `afterId`.
 [[nodiscard]] Select selectUnsentJoints(qint64 afterId, int limit);
-[[nodiscard]] Select selectUnsentEvents(qint64 afterId, int limit);
+[[nodiscard]] Select selectUnsentEvents(qint64 afterId, int limit, SentChannel channel);
 
 // The line, address, model and software columns from `first` on.
 [[nodiscard]] model::DeviceIdentity readDevice(const QSqlQuery &query, int first);

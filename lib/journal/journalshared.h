@@ -30,6 +30,7 @@ enum class Table { Joints, Events };
 struct SentMarks {
     Table table = Table::Joints;
     QList<qint64> ids;
+    SentChannel channel = SentChannel::Mqtt;
 };
 
 using Request = std::variant<PendingJoint, PendingEvent, SentMarks>;

@@ -24,6 +24,7 @@ const char kInsertContext[] =
     "INSERT INTO contexts (work_order, board_serial, operator) VALUES (?, ?, ?)";
 const char kMarkJoint[] = "UPDATE joints SET sent = 1 WHERE id = ?";
 const char kMarkEvent[] = "UPDATE events SET sent = 1 WHERE id = ?";
+const char kMarkEventCfx[] = "UPDATE events SET cfx_sent = 1 WHERE id = ?";
 const char kPruneJoints[] = "DELETE FROM joints WHERE id IN (SELECT id FROM joints WHERE "
                             "start_ms < ? ORDER BY start_ms LIMIT ?)";
 const char kPruneEvents[] = "DELETE FROM events WHERE id IN (SELECT id FROM events WHERE "
@@ -58,16 +59,18 @@ JournalStatements::JournalStatements(const QSqlDatabase &db)
     , m_insertContext(db)
     , m_markJoint(db)
     , m_markEvent(db)
+    , m_markEventCfx(db)
     , m_pruneJoints(db)
     , m_pruneEvents(db) {}
 
 bool JournalStatements::prepare(QSqlError *error) {
     const std::pair<QSqlQuery *, const char *> statements[] = {
-        {&m_insertJoint, kInsertJoint}, {&m_insertEvent, kInsertEvent},
-        {&m_findDevice, kFindDevice},   {&m_insertDevice, kInsertDevice},
-        {&m_findContext, kFindContext}, {&m_insertContext, kInsertContext},
-        {&m_markJoint, kMarkJoint},     {&m_markEvent, kMarkEvent},
-        {&m_pruneJoints, kPruneJoints}, {&m_pruneEvents, kPruneEvents}};
+        {&m_insertJoint, kInsertJoint},   {&m_insertEvent, kInsertEvent},
+        {&m_findDevice, kFindDevice},     {&m_insertDevice, kInsertDevice},
+        {&m_findContext, kFindContext},   {&m_insertContext, kInsertContext},
+        {&m_markJoint, kMarkJoint},       {&m_markEvent, kMarkEvent},
+        {&m_markEventCfx, kMarkEventCfx}, {&m_pruneJoints, kPruneJoints},
+        {&m_pruneEvents, kPruneEvents}};
     for (const auto &[query, sql] : statements) {
         if (!query->prepare(QString::fromLatin1(sql))) {
             *error = query->lastError();
@@ -156,7 +159,9 @@ std::optional<qint64> JournalStatements::insert(const PendingEvent &pending, QSq
 }
 
 bool JournalStatements::markSent(const SentMarks &marks, QSqlError *error) {
-    QSqlQuery &query = marks.table == Table::Joints ? m_markJoint : m_markEvent;
+    QSqlQuery &query = marks.table == Table::Joints        ? m_markJoint
+                       : marks.channel == SentChannel::Cfx ? m_markEventCfx
+                                                           : m_markEvent;
     for (const qint64 id : marks.ids) {
         query.bindValue(0, id);
         if (!run(query, error))

@@ -52,6 +52,7 @@ private:
     QSqlQuery m_insertContext;
     QSqlQuery m_markJoint;
     QSqlQuery m_markEvent;
+    QSqlQuery m_markEventCfx;
     QSqlQuery m_pruneJoints;
     QSqlQuery m_pruneEvents;
     QHash<QString, qint64> m_deviceIds;  // by DeviceIdentity::key()

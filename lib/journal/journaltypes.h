@@ -43,6 +43,9 @@ struct Committed {
 
 enum class Order { OldestFirst, NewestFirst };
 
+// Who forwards a record: each keeps its own sent mark (CFX marks events only).
+enum class SentChannel { Mqtt, Cfx };
+
 // Joints whose start lies in [sinceMs, untilMs), of every device, port, ... unless narrowed.
 struct JointFilter {
     std::optional<qint64> sinceMs;

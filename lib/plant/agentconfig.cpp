@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <algorithm>
 
 namespace tipscope::plant {
@@ -133,21 +134,77 @@ void readBroker(Reader &top, AgentConfig &c, const QString &folder, QString *pro
             AgentConfigTr::tr("broker.password_file and broker.password_env: give one of them"));
 }
 
-Outcome<void> readPassword(AgentConfig &c, const QString &file, const QString &env) {
-    if (!file.isEmpty()) {
-        auto secret = mqtt::readSecretFile(file);
+// Where a password is kept: a file or an environment variable, as the configuration names them.
+struct SecretPlace {
+    QString file;
+    QString env;
+};
+
+Outcome<void> readPassword(const SecretPlace &place, QByteArray &password, QString &source) {
+    if (!place.file.isEmpty()) {
+        auto secret = mqtt::readSecretFile(place.file);
         if (!secret)
             return failure(secret.error());
-        c.broker.password = secret.value();
-        c.passwordSource = AgentConfigTr::tr("file %1").arg(file);
-    } else if (!env.isEmpty()) {
-        auto secret = mqtt::readSecretEnvironment(env);
+        password = secret.value();
+        source = AgentConfigTr::tr("file %1").arg(place.file);
+    } else if (!place.env.isEmpty()) {
+        auto secret = mqtt::readSecretEnvironment(place.env);
         if (!secret)
             return failure(secret.error());
-        c.broker.password = secret.value();
-        c.passwordSource = AgentConfigTr::tr("environment variable %1").arg(env);
+        password = secret.value();
+        source = AgentConfigTr::tr("environment variable %1").arg(place.env);
     }
     return {};
+}
+
+// RabbitMQ's AMQP 1.0 addresses: /exchange/NAME, /exchange/NAME/KEY, /queue/NAME.
+bool isBrokerAddress(const QString &address) {
+    static const QRegularExpression kForm(
+        QStringLiteral("^/(exchange/[^/\\s]+(/[^/\\s]+)?|queue/[^/\\s]+|topic/[^/\\s]+)$"));
+    return kForm.match(address).hasMatch();
+}
+
+std::optional<cfx::CfxSettings> readCfx(Reader &top, const QString &folder, QString *problem,
+                                        SecretPlace &secret) {
+    const QJsonObject section = top.object("cfx");
+    if (section.isEmpty())
+        return std::nullopt;
+    Reader r(section, QStringLiteral("cfx."), problem);
+    cfx::CfxSettings s;
+    r.text("host", s.host);
+    r.number("port", s.port, 1, 65535);
+    r.text("address", s.address);
+    r.text("username", s.username);
+    r.text("password_file", secret.file);
+    r.text("password_env", secret.env);
+    r.text("vendor", s.vendor);
+    bool gzip = s.codec == cfx::Codec::Gzip;
+    r.flag("gzip", gzip);
+    s.codec = gzip ? cfx::Codec::Gzip : cfx::Codec::Raw;
+    r.number("heartbeat_s", s.heartbeatS, 1, 300); // CFX: at least every 5 minutes
+    r.number("retry_max_s", s.retryMaxS, 1, 600);
+    Reader tls(r.object("tls"), QStringLiteral("cfx.tls."), problem);
+    tls.flag("enabled", s.tls);
+    tls.text("ca_file", s.caFile);
+    tls.text("cert_file", s.certFile);
+    tls.text("key_file", s.keyFile);
+    s.caFile = resolved(folder, s.caFile);
+    s.certFile = resolved(folder, s.certFile);
+    s.keyFile = resolved(folder, s.keyFile);
+    if (s.host.isEmpty())
+        r.fail(AgentConfigTr::tr("cfx.host must name the AMQP broker"));
+    if (!isBrokerAddress(s.address))
+        r.fail(AgentConfigTr::tr("cfx.address must be /exchange/NAME, /exchange/NAME/KEY or "
+                                 "/queue/NAME, not \"%1\"")
+                   .arg(s.address.left(80)));
+    if (s.vendor.trimmed().isEmpty() || s.vendor.size() > AgentConfig::kMaxSiteChars)
+        r.fail(AgentConfigTr::tr("cfx.vendor must be a name of at most %1 characters")
+                   .arg(AgentConfig::kMaxSiteChars));
+    if (s.certFile.isEmpty() != s.keyFile.isEmpty())
+        r.fail(AgentConfigTr::tr("cfx.tls.cert_file and cfx.tls.key_file: give both or neither"));
+    if (!secret.file.isEmpty() && !secret.env.isEmpty())
+        r.fail(AgentConfigTr::tr("cfx.password_file and cfx.password_env: give one of them"));
+    return s;
 }
 
 } // namespace
@@ -168,6 +225,8 @@ Outcome<AgentConfig> AgentConfig::fromJson(const QJsonObject &json, const QStrin
     live.number("batch_ms", c.live.batchMs, 0, 600000);
     QString passwordFile, passwordEnv;
     readBroker(top, c, folder, &problem, passwordFile, passwordEnv);
+    SecretPlace cfxSecret;
+    c.cfx = readCfx(top, folder, &problem, cfxSecret);
     if (c.site.trimmed().isEmpty())
         top.fail(AgentConfigTr::tr("site must name the site"));
     else if (c.site.size() > AgentConfig::kMaxSiteChars)
@@ -187,8 +246,16 @@ Outcome<AgentConfig> AgentConfig::fromJson(const QJsonObject &json, const QStrin
     if (!workspace)
         return failure(workspace.error());
     c.workspace = workspace.value();
-    if (auto password = readPassword(c, resolved(folder, passwordFile), passwordEnv); !password)
+    if (auto password = readPassword({resolved(folder, passwordFile), passwordEnv},
+                                     c.broker.password, c.passwordSource);
+        !password)
         return failure(password.error());
+    if (c.cfx) {
+        cfxSecret.file = resolved(folder, cfxSecret.file);
+        if (auto password = readPassword(cfxSecret, c.cfx->password, c.cfxPasswordSource);
+            !password)
+            return failure(password.error());
+    }
     return c;
 }
 

@@ -3,8 +3,10 @@
 //     {"format": "tipscope-agent", "version": 1, "site": "plant-a", "workspace": "lines.json",
 //      "journal": "/var/lib/tipscope/journal.sqlite", "broker": {"host": "mqtt.plant", ...},
 //      "live": {"interval_ms": 1000, "batch_ms": 0}, "counters_interval_s": 600,
-//      "remote_apply": false}
+//      "remote_apply": false, "cfx": {"host": "mes.plant", "address": "/exchange/cfx", ...}}
 //
+// The optional "cfx" section publishes IPC-CFX over AMQP 1.0 besides MQTT (docs/cfx.md); its
+// password comes from a file or an environment variable the same way.
 // load() refuses a file that is not an agent configuration, one of a later version, a field of
 // the wrong kind or out of range (naming the field), a workspace that cannot be read, and a
 // password that cannot be read: everything is checked before anything connects, so SIGHUP with
@@ -12,10 +14,13 @@
 // variable the configuration names, never from the file itself or a command line.
 #pragma once
 
+#include "cfx/cfxsettings.h"
 #include "model/workspace/workspacefile.h"
 #include "mqtt/mqttsettings.h"
 
 #include "protocol/outcome.h"
+
+#include <optional>
 
 namespace tipscope::plant {
 
@@ -40,6 +45,8 @@ struct AgentConfig {
     LiveSettings live;
     int countersIntervalS = 600;
     bool remoteApply = false;
+    std::optional<cfx::CfxSettings> cfx; // none: no CFX
+    QString cfxPasswordSource;
 
     [[nodiscard]] static protocol::Outcome<AgentConfig> fromJson(const QJsonObject &json,
                                                                  const QString &folder);

@@ -63,19 +63,11 @@ void JournalForwarder::pumpSoon() {
         m_pumpTimer.start();
 }
 
-bool JournalForwarder::openReader() {
-    if (m_reader.isOpen())
-        return true;
-    if (const auto opened = m_reader.open(m_journal.path()); !opened) {
-        setProblem(opened.error());
-        return false;
-    }
-    return true;
-}
-
 void JournalForwarder::pump() {
-    if (m_client.state() != mqtt::MqttClient::State::Connected || !openReader())
+    if (m_client.state() != mqtt::MqttClient::State::Connected)
         return;
+    if (const auto opened = m_reader.keepOpen(m_journal.path()); !opened)
+        return setProblem(opened.error());
     while (m_inFlight.size() < kWindow) {
         const int room = qMin(kBatch, kWindow - int(m_inFlight.size()));
         const auto joints = m_reader.unsentJoints(m_jointCursor, room);

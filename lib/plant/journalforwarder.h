@@ -69,7 +69,6 @@ private:
 
     void pumpSoon();
     void pump();
-    [[nodiscard]] bool openReader();
     bool publish(const QString &topic, const QJsonObject &payload, InFlight item);
     void onPublished(int messageId);
     void flushMarks();

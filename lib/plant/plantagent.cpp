@@ -1,6 +1,10 @@
 #include "plantagent.h"
 
 #include "mqtt/mqttclient.h"
+#ifdef TIPSCOPE_WITH_CFX
+#include "cfx/cfxmessages.h"
+#include "cfx/cfxpublisher.h"
+#endif
 
 #include <QLoggingCategory>
 
@@ -26,6 +30,7 @@ PlantAgent::PlantAgent(Publisher who, QObject *parent)
 }
 
 PlantAgent::~PlantAgent() {
+    m_cfx.reset();
     m_publisher.reset();
     m_lines.closeLines();
 }
@@ -54,16 +59,91 @@ void PlantAgent::start(const AgentConfig &config) {
             });
     m_publisher = std::make_unique<PlantPublisher>(m_lines.workspace(), journal);
     connect(m_publisher.get(), &PlantPublisher::stopped, this, [this] {
-        if (!m_stopping)
-            return;
-        if (!m_lines.finish(10000))
-            qCCritical(lcAgent, "the journal could not write everything before stopping");
-        Q_EMIT finished();
+        m_mqttStopped = true;
+        finishIfStopped();
     });
     openLines();
     m_publisher->start(m_config, m_who);
     watchClient();
+    startCfx();
 }
+
+void PlantAgent::finishIfStopped() {
+    if (!m_stopping || !m_mqttStopped || m_cfx)
+        return;
+    if (!m_lines.finish(10000))
+        qCCritical(lcAgent, "the journal could not write everything before stopping");
+    Q_EMIT finished();
+}
+
+#ifdef TIPSCOPE_WITH_CFX
+void PlantAgent::startCfx() {
+    m_cfx.reset();
+    if (!m_config.cfx)
+        return;
+    m_cfx = std::make_unique<cfx::CfxPublisher>(
+        m_lines.journal(), *m_config.cfx,
+        [this](const model::DeviceIdentity &device) { return cfxHandleOf(device); },
+        [this] { return cfxHandles(); });
+    connect(m_cfx.get(), &cfx::CfxPublisher::stopped, this, [this] {
+        m_cfx.release()->deleteLater(); // its own signal is still being emitted
+        finishIfStopped();
+    });
+    watchCfx();
+    connect(&m_lines.workspace(), &model::Workspace::lineDevicesChanged, m_cfx.get(),
+            &cfx::CfxPublisher::stationsChanged);
+    m_cfx->start();
+}
+
+void PlantAgent::watchCfx() {
+    cfx::AmqpSender &sender = m_cfx->sender();
+    connect(&sender, &cfx::AmqpSender::connected, this, [this, &sender] {
+        m_cfxTrouble = false;
+        qCInfo(lcAgent, "CFX: connected to %s", qPrintable(sender.where()));
+    });
+    // Each failed attempt says the same: said once, until it connects again.
+    connect(&sender, &cfx::AmqpSender::problem, this, [this, &sender](const QString &text) {
+        if (!std::exchange(m_cfxTrouble, true))
+            qCWarning(lcAgent,
+                      "CFX: %s: %s; the lines are polled and journaled meanwhile, and faults "
+                      "are sent once the broker takes them",
+                      qPrintable(sender.where()), qPrintable(text));
+    });
+    connect(&m_cfx->forwarder(), &cfx::CfxForwarder::problemChanged, this,
+            [](const QString &problem) {
+                if (!problem.isEmpty())
+                    qCWarning(lcAgent, "CFX: cannot read the journal to forward it: %s",
+                              qPrintable(problem));
+            });
+}
+
+QString PlantAgent::cfxHandleOf(const model::DeviceIdentity &device) {
+    // The workspace line's name where the device is reached, else how it is reached.
+    QString line = device.line;
+    model::Workspace &workspace = m_lines.workspace();
+    for (int i = 0; i < workspace.count(); ++i)
+        for (const model::DeviceModel *found : workspace.session(i)->devices())
+            if (found->identity().line == device.line)
+                line = workspace.line(i).name;
+    return cfx::endpointHandle(m_config.cfx->vendor, device.model,
+                               QStringLiteral("%1-%2").arg(line).arg(device.address.value_or(0)));
+}
+
+QStringList PlantAgent::cfxHandles() {
+    QStringList handles;
+    model::Workspace &workspace = m_lines.workspace();
+    for (int i = 0; i < workspace.count(); ++i)
+        for (const model::DeviceModel *device : workspace.session(i)->devices())
+            handles.append(cfxHandleOf(device->identity()));
+    return handles;
+}
+#else
+void PlantAgent::startCfx() {
+    if (m_config.cfx)
+        qCWarning(lcAgent, "this TipScope was built without Qpid Proton: the \"cfx\" section "
+                           "is not published");
+}
+#endif
 
 void PlantAgent::reload(const AgentConfig &config) {
     if (config.journalPath != m_config.journalPath)
@@ -78,6 +158,7 @@ void PlantAgent::reload(const AgentConfig &config) {
         openLines();
     m_publisher->start(m_config, m_who);
     watchClient();
+    startCfx();
     qCInfo(lcAgent, "configuration %s applied%s", qPrintable(config.path),
            linesChanged ? ", lines opened again" : "");
 }
@@ -99,6 +180,10 @@ void PlantAgent::stop() {
     m_stopping = true;
     qCInfo(lcAgent, "stopping: every device goes offline");
     m_publisher->stop();
+#ifdef TIPSCOPE_WITH_CFX
+    if (m_cfx)
+        m_cfx->stop();
+#endif
 }
 
 void PlantAgent::openLines() {

@@ -2,7 +2,8 @@
 // monitor --mqtt`. It opens the configuration's workspace through the LineService (every line
 // polled live, each with its own request queue and reconnection, its joints and events kept in
 // the journal and judged by the shared joint limits, as in every front end) and publishes the
-// lines to the broker (PlantPublisher) with store and forward from the journal.
+// lines to the broker (PlantPublisher) with store and forward from the journal. With a "cfx"
+// section it also makes every station an IPC-CFX endpoint (cfx/cfxpublisher.h, docs/cfx.md).
 // The demo line of a workspace solders and rests, so the agent can be tried without a station.
 //
 // reload() applies a new configuration: the lines are opened again only when the workspace
@@ -25,6 +26,10 @@
 
 #include <QObject>
 #include <memory>
+
+namespace tipscope::cfx {
+class CfxPublisher;
+}
 #include <vector>
 
 namespace tipscope::plant {
@@ -58,11 +63,21 @@ private:
     void watchClient();
     void onLineState(int index, model::Session::State state, const QString &text);
     void failJournal(const QString &why);
+    void startCfx();
+    void watchCfx();
+    // A station's CFX handle: vendor, model, and the workspace line's name with its address
+    // (TipScope does not read a station's serial number today).
+    [[nodiscard]] QString cfxHandleOf(const model::DeviceIdentity &device);
+    [[nodiscard]] QStringList cfxHandles();
+    void finishIfStopped();
 
     Publisher m_who;
     AgentConfig m_config;
     service::LineService m_lines;
     std::unique_ptr<PlantPublisher> m_publisher;
+    std::unique_ptr<cfx::CfxPublisher> m_cfx;
+    bool m_mqttStopped = false;
+    bool m_cfxTrouble = false;
     bool m_stopping = false;
     bool m_brokerTrouble = false;
     QString m_failure;

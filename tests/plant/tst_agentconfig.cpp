@@ -84,6 +84,31 @@ private Q_SLOTS:
         QVERIFY(c->remoteApply);
     }
 
+    void theCfxSectionIsReadWithItsOwnPassword() {
+        const auto c = load(R"({"format": "tipscope-agent", "version": 1,
+            "workspace": "lines.json",
+            "cfx": {"host": "mes.plant", "port": 5671, "address": "/exchange/cfx/line7",
+                    "username": "cfx", "password_file": "secret", "gzip": false,
+                    "heartbeat_s": 30, "retry_max_s": 20, "vendor": "JBC",
+                    "tls": {"enabled": true, "ca_file": "ca.pem"}}})");
+        QVERIFY2(c, qPrintable(c.error()));
+        QVERIFY(c->cfx.has_value());
+        QCOMPARE(c->cfx->host, QStringLiteral("mes.plant"));
+        QCOMPARE(c->cfx->port, 5671);
+        QCOMPARE(c->cfx->address, QStringLiteral("/exchange/cfx/line7"));
+        QCOMPARE(c->cfx->password, QByteArray("s3cret"));
+        QVERIFY(!c->cfxPasswordSource.contains(QLatin1String("s3cret")));
+        QVERIFY(c->cfx->codec == tipscope::cfx::Codec::Raw);
+        QCOMPARE(c->cfx->heartbeatS, 30);
+        QCOMPARE(c->cfx->retryMaxS, 20);
+        QVERIFY(c->cfx->tls);
+        QCOMPARE(c->cfx->caFile, path(QStringLiteral("ca.pem")));
+        const auto none = load(R"({"format": "tipscope-agent", "version": 1,
+                                   "workspace": "lines.json"})");
+        QVERIFY2(none, qPrintable(none.error()));
+        QVERIFY(!none->cfx.has_value());
+    }
+
     void thePasswordMayComeFromTheEnvironment() {
         qputenv("TIPSCOPE_TEST_BROKER_PASSWORD", "from-env");
         const auto c = load(R"({"format": "tipscope-agent", "version": 1,
@@ -138,6 +163,24 @@ private Q_SLOTS:
                               "remote_apply": "yes"})")
             << "remote_apply";
         QTest::newRow("a list") << QByteArray("[1, 2]") << "list";
+        const QByteArray cfx =
+            R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json", "cfx": )";
+        QTest::newRow("cfx without a host") << cfx + R"({"port": 5672}})"
+                                            << "cfx.host";
+        QTest::newRow("cfx address without its slash")
+            << cfx + R"({"host": "h", "address": "exchange/cfx"}})"
+            << "cfx.address";
+        QTest::newRow("cfx heartbeat beyond five minutes")
+            << cfx + R"({"host": "h", "heartbeat_s": 301}})"
+            << "cfx.heartbeat_s";
+        QTest::newRow("cfx certificate without its key")
+            << cfx + R"({"host": "h", "tls": {"cert_file": "c.pem"}}})"
+            << "cfx.tls.cert_file";
+        QTest::newRow("cfx not an object") << cfx + R"("amqp://h"})"
+                                           << "cfx must be an object";
+        QTest::newRow("cfx password missing")
+            << cfx + R"({"host": "h", "password_env": "TIPSCOPE_TEST_NO_SUCH_VARIABLE"}})"
+            << "TIPSCOPE_TEST_NO_SUCH_VARIABLE";
         const QByteArray head =
             R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json", "site": )";
         QTest::newRow("a site of 100,000 characters")

@@ -78,6 +78,30 @@ private Q_SLOTS:
         QCOMPARE(cli.exitCode(), 1);
         QVERIFY(QString::fromUtf8(cli.readAllStandardError()).contains(QLatin1String("--mqtt")));
     }
+
+    void aBadCfxBrokerIsAUsageError_data() {
+        QTest::addColumn<QStringList>("cfx");
+        QTest::newRow("not an AMQP URL")
+            << QStringList{QStringLiteral("--cfx"), QStringLiteral("mes:5672")};
+        QTest::newRow("a password in the URL")
+            << QStringList{QStringLiteral("--cfx"), QStringLiteral("amqp://u:secret@mes:5672")};
+        QTest::newRow("an address without its slash")
+            << QStringList{QStringLiteral("--cfx"), QStringLiteral("amqp://mes:5672"),
+                           QStringLiteral("--cfx-address"), QStringLiteral("exchange/cfx")};
+    }
+    void aBadCfxBrokerIsAUsageError() {
+        QFETCH(QStringList, cfx);
+        QProcess cli;
+        cli.start(binaryPath(QStringLiteral("tipscope-cli")),
+                  QStringList{QStringLiteral("--demo"), QStringLiteral("monitor"),
+                              QStringLiteral("--mqtt"), QStringLiteral("127.0.0.1:1")} +
+                      cfx);
+        QVERIFY(cli.waitForFinished(30000));
+        QCOMPARE(cli.exitCode(), 1);
+        const QString said = QString::fromUtf8(cli.readAllStandardError());
+        QVERIFY2(said.contains(QLatin1String("--cfx")), qPrintable(said));
+        QVERIFY2(!said.contains(QLatin1String("secret")), qPrintable(said));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCliMonitorMqtt)

@@ -1,0 +1,85 @@
+#include "cfxpublisher.h"
+
+#include <QJsonValue>
+
+namespace tipscope::cfx {
+
+CfxPublisher::CfxPublisher(journal::Journal &journal, const CfxSettings &settings,
+                           CfxForwarder::HandleOf handleOf, Handles handles, QObject *parent)
+    : QObject(parent)
+    , m_settings(settings)
+    , m_handles(std::move(handles))
+    , m_forwarder(journal, m_sender, std::move(handleOf), settings.codec) {
+    m_heartbeat.setInterval(settings.heartbeatS * 1000);
+    connect(&m_heartbeat, &QTimer::timeout, this, [this] {
+        const qint64 periodMs = m_settings.heartbeatS * 1000LL;
+        // Which faults are active is the forwarder's to say, through the spool: unknown here.
+        sendToEach([periodMs](const QString &handle) {
+            return heartbeat(handle, periodMs, QJsonValue(QJsonValue::Null));
+        });
+    });
+    connect(&m_sender, &AmqpSender::connected, this, &CfxPublisher::stationsChanged);
+    connect(&m_sender, &AmqpSender::disconnected, this, [this] { m_announced.clear(); });
+    connect(&m_sender, &AmqpSender::accepted, this, [this](quint64 tag) {
+        if (m_goodbyes.remove(tag) && m_goodbyes.isEmpty() && m_stopping)
+            finishStop();
+    });
+    m_stopTimer.setSingleShot(true);
+    connect(&m_stopTimer, &QTimer::timeout, this, &CfxPublisher::finishStop);
+}
+
+void CfxPublisher::start() {
+    AmqpSender::Settings s;
+    s.host = m_settings.host;
+    s.port = m_settings.port;
+    s.tls = m_settings.tls;
+    s.caFile = m_settings.caFile;
+    s.certFile = m_settings.certFile;
+    s.keyFile = m_settings.keyFile;
+    s.user = m_settings.username;
+    s.password = m_settings.password;
+    s.address = m_settings.address;
+    s.retryMaxMs = m_settings.retryMaxS * 1000;
+    m_sender.start(s);
+    m_heartbeat.start();
+}
+
+void CfxPublisher::stop(int timeoutMs) {
+    if (m_stopping)
+        return;
+    m_stopping = true;
+    m_heartbeat.stop();
+    for (const QString &handle : m_handles())
+        if (const quint64 tag = sendNow(handle, endpointShuttingDown(handle)))
+            m_goodbyes.insert(tag);
+    if (m_goodbyes.isEmpty())
+        return finishStop();
+    m_stopTimer.start(timeoutMs);
+}
+
+void CfxPublisher::stationsChanged() {
+    if (m_sender.state() != AmqpSender::State::Connected || m_stopping)
+        return;
+    for (const QString &handle : m_handles())
+        if (!m_announced.contains(handle) &&
+            sendNow(handle, endpointConnected(handle, QString(), QString())) != 0)
+            m_announced.insert(handle);
+}
+
+void CfxPublisher::finishStop() {
+    m_stopTimer.stop();
+    m_goodbyes.clear();
+    m_sender.stop();
+    Q_EMIT stopped();
+}
+
+void CfxPublisher::sendToEach(const std::function<Message(const QString &handle)> &make) {
+    for (const QString &handle : m_handles())
+        (void)sendNow(handle, make(handle));
+}
+
+quint64 CfxPublisher::sendNow(const QString &handle, const Message &message) {
+    return m_sender.send(toAmqpMessage(envelopeOf(message, handle), m_settings.codec));
+}
+
+} // namespace tipscope::cfx

@@ -1,0 +1,61 @@
+// CfxPublisher: a workspace's stations as IPC-CFX endpoints on one AMQP connection, the sibling
+// of plant/plantpublisher.h for MQTT. It owns the sender and the journal's forwarder
+// (cfxforwarder.h: faults, store and forward) and adds what describes the present and so is not
+// spooled: EndpointConnected for every station once per broker connection (when the connection
+// opens, or when the station is found: stationsChanged()), a Heartbeat per station every
+// heartbeatS, and EndpointShuttingDown on stop().
+//
+// The stations are named by handles() (asked anew each time, so stations found later are
+// included) and the journal's records by handleOf(); both come from the front end, which knows
+// the workspace. stop() sends the goodbyes, waits for the broker to accept them (at most
+// `timeoutMs`) and emits stopped(). The journal must outlive the publisher.
+#pragma once
+
+#include "amqpsender.h"
+#include "cfxforwarder.h"
+#include "cfxmessages.h"
+#include "cfxsettings.h"
+
+#include <QObject>
+#include <QSet>
+#include <QTimer>
+#include <functional>
+
+namespace tipscope::cfx {
+
+class CfxPublisher : public QObject {
+    Q_OBJECT
+public:
+    using Handles = std::function<QStringList()>;
+
+    CfxPublisher(journal::Journal &journal, const CfxSettings &settings,
+                 CfxForwarder::HandleOf handleOf, Handles handles, QObject *parent = nullptr);
+
+    void start();
+    void stop(int timeoutMs = 3000);
+    // Stations were found or lost: the new ones say they are connected.
+    void stationsChanged();
+
+    [[nodiscard]] AmqpSender &sender() { return m_sender; }
+    [[nodiscard]] CfxForwarder &forwarder() { return m_forwarder; }
+
+Q_SIGNALS:
+    void stopped();
+
+private:
+    void sendToEach(const std::function<Message(const QString &handle)> &make);
+    [[nodiscard]] quint64 sendNow(const QString &handle, const Message &message);
+    void finishStop();
+
+    CfxSettings m_settings;
+    Handles m_handles;
+    AmqpSender m_sender;
+    CfxForwarder m_forwarder;
+    QTimer m_heartbeat;
+    QTimer m_stopTimer;
+    QSet<quint64> m_goodbyes;  // waiting for the broker before stopped()
+    QSet<QString> m_announced; // on this connection
+    bool m_stopping = false;
+};
+
+} // namespace tipscope::cfx

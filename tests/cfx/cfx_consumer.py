@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+"""An independent CFX consumer for the tests: Qpid Proton's Python binding, knowing only the
+CFX SDK's names and docs/cfx.md. It receives from an AMQP 1.0 source, unpacks gzip bodies,
+checks each envelope and its AMQP properties as the SDK's AmqpUtilities sets them, and prints
+one JSON line per message ("BAD: ..." lines for what does not fit), "READY" once it listens.
+It stops after --count messages, or fails after --timeout seconds."""
+
+import argparse
+import gzip
+import json
+import sys
+import uuid
+
+from proton.handlers import MessagingHandler
+from proton.reactor import Container
+
+ENVELOPE = ["MessageName", "Version", "TimeStamp", "UniqueID", "Source", "Target",
+            "RequestID", "MessageBody"]
+
+
+def check(message, envelope):
+    """What in one message does not fit CFX, as a list of sentences."""
+    bad = []
+    missing = [k for k in ENVELOPE if k not in envelope]
+    if missing:
+        return ["envelope without " + ", ".join(missing)]
+    name = envelope["MessageName"]
+    body = envelope["MessageBody"]
+    if envelope["Version"] != "2.1":
+        bad.append("Version " + str(envelope["Version"]))
+    if body.get("$type") != name + ", CFX":
+        bad.append("$type " + str(body.get("$type")))
+    try:
+        uuid.UUID(envelope["UniqueID"])
+    except ValueError:
+        bad.append("UniqueID " + envelope["UniqueID"])
+    if str(message.id) != envelope["UniqueID"]:
+        bad.append("message-id " + str(message.id))
+    if message.subject != "%s.%s" % (envelope["Source"], name):
+        bad.append("subject " + str(message.subject))
+    if message.reply_to != envelope["Source"]:
+        bad.append("reply-to " + str(message.reply_to))
+    if message.content_type != 'application/json; charset="utf-8"':
+        bad.append("content-type " + str(message.content_type))
+    props = message.properties or {}
+    expected = {"cfx-topic": name.rsplit(".", 1)[0], "cfx-message": name,
+                "cfx-handle": envelope["Source"], "cfx-target": envelope["Target"]}
+    for key, value in expected.items():
+        if key not in props or props[key] != value:
+            bad.append("%s %r" % (key, props.get(key, "(absent)")))
+    return bad
+
+
+class Consumer(MessagingHandler):
+    def __init__(self, url, source, count, timeout):
+        super().__init__()
+        self.url, self.source, self.count, self.timeout = url, source, count, timeout
+        self.received = 0
+        self.failed = False
+
+    def on_start(self, event):
+        connection = event.container.connect(self.url, allowed_mechs="ANONYMOUS PLAIN",
+                                             user="guest", password="guest",
+                                             allow_insecure_mechs=True)
+        event.container.create_receiver(connection, self.source)
+        self.timer = event.container.schedule(self.timeout, self)
+
+    def on_link_opened(self, event):
+        if event.receiver:
+            print("READY", flush=True)
+
+    def on_timer_task(self, event):
+        print("BAD: timeout after %d messages" % self.received, flush=True)
+        self.failed = True
+        event.container.stop()
+
+    def on_message(self, event):
+        message = event.message
+        raw = message.body
+        if isinstance(raw, memoryview):
+            raw = raw.tobytes()
+        if message.content_encoding == "gzip":
+            raw = gzip.decompress(raw)
+        envelope = json.loads(raw.decode("utf-8"))
+        for sentence in check(message, envelope):
+            print("BAD: %s: %s" % (envelope.get("MessageName"), sentence), flush=True)
+        print(json.dumps({"subject": message.subject, "encoding": message.content_encoding,
+                          "envelope": envelope}), flush=True)
+        self.received += 1
+        if self.received >= self.count:
+            # Closed, not stopped: the container ends once the broker confirmed the close.
+            self.timer.cancel()
+            event.receiver.close()
+            event.connection.close()
+
+    def on_transport_error(self, event):
+        print("BAD: transport %s" % event.transport.condition, flush=True)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--url", required=True)
+    parser.add_argument("--source", required=True)
+    parser.add_argument("--count", type=int, required=True)
+    parser.add_argument("--timeout", type=float, default=60)
+    args = parser.parse_args()
+    consumer = Consumer(args.url, args.source, args.count, args.timeout)
+    try:
+        Container(consumer).run()
+    except Exception as error:  # said as a complaint, so the test shows it
+        print("BAD: the consumer failed: %r" % error, flush=True)
+        return 3
+    return 2 if consumer.failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

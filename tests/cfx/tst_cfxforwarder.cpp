@@ -1,0 +1,159 @@
+// The journal's station, port and feeder errors forwarded as CFX faults to a real RabbitMQ and
+// read by the independent Python consumer: in the journal's order, each message's UniqueID its
+// event's id, a clearing tied to its error, every event marked sent only once accepted, and
+// nothing lost or sent under two ids across a broker outage.
+#include "cfx/amqpsender.h"
+#include "cfx/cfxforwarder.h"
+#include "cfx/cfxmessages.h"
+#include "cfxtesting.h"
+#include "journalfixture.h"
+
+#include "journal/journalreader.h"
+
+#include <QSet>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace tipscope;
+using namespace tipscope::cfx;
+using journal::JournalEvent;
+using testing::CfxConsumer;
+using testing::RabbitMqBroker;
+
+class TstCfxForwarder : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<RabbitMqBroker> m_broker;
+
+    static JournalEvent portEvent(JournalEvent::Kind kind, JournalEvent::Severity severity,
+                                  int port, qint64 timeMs) {
+        JournalEvent event;
+        event.kind = kind;
+        event.severity = severity;
+        event.device = testing::sampleDevice(0);
+        event.port = port;
+        event.timeMs = timeMs;
+        event.text = severity == JournalEvent::Severity::Info ? QStringLiteral("error cleared")
+                                                              : QStringLiteral("Short circuit");
+        return event;
+    }
+
+    static QString handleOf(const model::DeviceIdentity &device) {
+        return endpointHandle(QStringLiteral("JBC"), device.model,
+                              QString::number(device.address.value_or(0)));
+    }
+
+    static qint64 unsentCount(const QString &path) {
+        journal::JournalReader reader;
+        if (!reader.open(path))
+            return -1;
+        const auto events = reader.unsentEvents(0, 1000, journal::SentChannel::Cfx);
+        return events ? events->size() : -1;
+    }
+
+    static QJsonObject envelopeAt(const CfxConsumer &consumer, int i) {
+        return consumer.messages().at(i).value(QStringLiteral("envelope")).toObject();
+    }
+    static QString bodyField(const QJsonObject &envelope, const QString &name) {
+        return envelope.value(QStringLiteral("MessageBody")).toObject().value(name).toString();
+    }
+
+private Q_SLOTS:
+    void initTestCase() { testing::startCfxBroker(m_broker); }
+    void cleanupTestCase() { m_broker.reset(); }
+
+    void faultsArriveInOrderTiedToTheirClearing() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+        journal::Journal journal(path, testing::quickOptions());
+        QVERIFY(testing::waitOpened(journal));
+        const QUuid raised = journal.append(portEvent(
+            JournalEvent::Kind::PortError, JournalEvent::Severity::Error, 2, testing::kT0));
+        JournalEvent status = portEvent(JournalEvent::Kind::Status, JournalEvent::Severity::Info, 2,
+                                        testing::kT0 + 10);
+        journal.append(status);
+        const QUuid cleared = journal.append(portEvent(
+            JournalEvent::Kind::PortError, JournalEvent::Severity::Info, 2, testing::kT0 + 20));
+        CfxConsumer consumer;
+        QVERIFY2(consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), 2),
+                 qPrintable(consumer.output()));
+        AmqpSender sender;
+        CfxForwarder forwarder(journal, sender, handleOf, Codec::Gzip);
+        sender.start(
+            testing::quickSenderSettings(*m_broker, QStringLiteral("/exchange/amq.topic")));
+        QVERIFY2(consumer.finish(), qPrintable(consumer.output()));
+        QVERIFY2(consumer.complaints().isEmpty(), qPrintable(consumer.complaints().join('\n')));
+        QCOMPARE(consumer.messages().size(), 2);
+        const QJsonObject first = envelopeAt(consumer, 0), second = envelopeAt(consumer, 1);
+        QCOMPARE(first.value(QStringLiteral("MessageName")).toString(),
+                 QStringLiteral("CFX.ResourcePerformance.FaultOccurred"));
+        QCOMPARE(first.value(QStringLiteral("UniqueID")).toString(),
+                 raised.toString(QUuid::WithoutBraces));
+        QCOMPARE(first.value(QStringLiteral("Source")).toString(), handleOf(status.device));
+        QCOMPARE(second.value(QStringLiteral("MessageName")).toString(),
+                 QStringLiteral("CFX.ResourcePerformance.FaultCleared"));
+        QCOMPARE(second.value(QStringLiteral("UniqueID")).toString(),
+                 cleared.toString(QUuid::WithoutBraces));
+        QCOMPARE(bodyField(second, QStringLiteral("FaultOccurrenceId")),
+                 raised.toString(QUuid::WithoutBraces));
+        // The status change has no CFX fault: marked at once, with the two accepted ones.
+        QTRY_COMPARE_WITH_TIMEOUT(unsentCount(path), qint64(0), 20000);
+        QCOMPARE(forwarder.acceptedCount(), qint64(2));
+    }
+
+    void anOutageLosesNothingAndSendsEachOnce() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+        journal::Journal journal(path, testing::quickOptions());
+        QVERIFY(testing::waitOpened(journal));
+        // A queue of its own keeps what arrives while nobody reads it, across the outage.
+        const QString queue = QStringLiteral("/queue/tipscope-cfx-outage");
+        AmqpSender sender;
+        CfxForwarder forwarder(journal, sender, handleOf, Codec::Raw);
+        QSignalSpy lost(&sender, &AmqpSender::disconnected);
+        sender.start(testing::quickSenderSettings(*m_broker, queue));
+        QTRY_VERIFY_WITH_TIMEOUT(sender.state() == AmqpSender::State::Connected, 20000);
+        QSet<QString> journaled;
+        const auto appendPair = [&](int i) {
+            const qint64 t = testing::kT0 + 1000 * i;
+            journaled << journal
+                             .append(portEvent(JournalEvent::Kind::PortError,
+                                               JournalEvent::Severity::Error, 1, t))
+                             .toString(QUuid::WithoutBraces)
+                      << journal
+                             .append(portEvent(JournalEvent::Kind::PortError,
+                                               JournalEvent::Severity::Info, 1, t + 500))
+                             .toString(QUuid::WithoutBraces);
+        };
+        for (int i = 0; i < 10; ++i)
+            appendPair(i);
+        QString error;
+        QVERIFY2(m_broker->pause(&error), qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(lost.size(), 1, 20000);
+        for (int i = 10; i < 30; ++i) // journaled while the broker is away
+            appendPair(i);
+        QVERIFY2(m_broker->resume(&error), qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(unsentCount(path), qint64(0), 60000);
+
+        CfxConsumer consumer;
+        QVERIFY2(consumer.start(m_broker->url(), queue, 60), qPrintable(consumer.output()));
+        QVERIFY2(consumer.finish(), qPrintable(consumer.output()));
+        QVERIFY2(consumer.complaints().isEmpty(), qPrintable(consumer.complaints().join('\n')));
+        QSet<QString> received;
+        QString previous;
+        for (int i = 0; i < consumer.messages().size(); ++i) {
+            const QJsonObject envelope = envelopeAt(consumer, i);
+            received << envelope.value(QStringLiteral("UniqueID")).toString();
+            // In order: each clearing follows the error it clears.
+            if (i % 2 == 1)
+                QCOMPARE(bodyField(envelope, QStringLiteral("FaultOccurrenceId")), previous);
+            previous = envelope.value(QStringLiteral("UniqueID")).toString();
+        }
+        QCOMPARE(received.size(), 60); // no UniqueID twice: each message arrived once
+        QCOMPARE(received, journaled);
+    }
+};
+
+QTEST_GUILESS_MAIN(TstCfxForwarder)
+#include "tst_cfxforwarder.moc"
