@@ -27,107 +27,132 @@
 <context>
     <name>AgentConfig</name>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="38"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="39"/>
         <source>%1 must be text</source>
         <translation>%1 muss ein Text sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="48"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 muss eine ganze Zahl von %2 bis %3 sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="58"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="59"/>
         <source>%1 must be true or false</source>
         <translation>%1 muss true oder false sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="64"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="65"/>
         <source>%1 must be an object</source>
         <translation>%1 muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="82"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="83"/>
         <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>keine Konfiguration des TipScope-Agenten (&quot;format&quot; ist nicht &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="87"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="88"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; muss eine ganze Zahl ab 1 sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="90"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="91"/>
         <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
         <translation>für ein neueres TipScope geschrieben (Version %1); dieses liest Version %2 und ältere</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="118"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="119"/>
         <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
         <translation>broker.protocol muss &quot;3.1.1&quot; oder &quot;5&quot; sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="130"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="131"/>
         <source>broker.host must name the broker</source>
         <translation>broker.host muss den Broker nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="133"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="134"/>
         <source>broker.password_file and broker.password_env: give one of them</source>
         <translation>broker.password_file und broker.password_env: nur eines von beiden angeben</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="142"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="149"/>
         <source>file %1</source>
         <translation>Datei %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="148"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="155"/>
         <source>environment variable %1</source>
         <translation>Umgebungsvariable %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="172"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="195"/>
+        <source>cfx.host must name the AMQP broker</source>
+        <translation>cfx.host muss den AMQP-Broker nennen</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <source>cfx.address must be /exchange/NAME, /exchange/NAME/KEY or /queue/NAME, not &quot;%1&quot;</source>
+        <translation>cfx.address muss /exchange/NAME, /exchange/NAME/KEY oder /queue/NAME sein, nicht „%1“</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="201"/>
+        <source>cfx.vendor must be a name of at most %1 characters</source>
+        <translation>cfx.vendor muss ein Name mit höchstens %1 Zeichen sein</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="204"/>
+        <source>cfx.tls.cert_file and cfx.tls.key_file: give both or neither</source>
+        <translation>cfx.tls.cert_file und cfx.tls.key_file: beide oder keines angeben</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="206"/>
+        <source>cfx.password_file and cfx.password_env: give one of them</source>
+        <translation>cfx.password_file und cfx.password_env: nur eines von beiden angeben</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="231"/>
         <source>site must name the site</source>
         <translation>site muss den Standort nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="174"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="233"/>
         <source>site must be at most %1 characters long, not %2</source>
         <translation>site darf höchstens %1 Zeichen lang sein, nicht %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="179"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="238"/>
         <source>site must not hold control characters</source>
         <translation>site darf keine Steuerzeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="181"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace muss die Arbeitsbereichsdatei der zu betreibenden Linien nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="202"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="269"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="205"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="272"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="209"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="276"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>die Konfiguration %1 ist zu groß, um eine zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="211"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>die Konfiguration %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="213"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="280"/>
         <source>it is a list</source>
         <translation>es ist eine Liste</translation>
     </message>
@@ -224,6 +249,54 @@
     </message>
 </context>
 <context>
+    <name>AmqpProblem</name>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="20"/>
+        <source>The broker refused the login: check the user and the password (file or environment variable).</source>
+        <translation>Der Broker hat die Anmeldung abgelehnt: Benutzer und Passwort (Datei oder Umgebungsvariable) prüfen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="23"/>
+        <source>The broker does not speak AMQP 1.0: enable its plugin (rabbitmq-plugins enable rabbitmq_amqp1_0).</source>
+        <translation>Der Broker spricht kein AMQP 1.0: sein Plugin aktivieren (rabbitmq-plugins enable rabbitmq_amqp1_0).</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="26"/>
+        <source>The broker does not know the address %1: RabbitMQ wants /exchange/NAME, /exchange/NAME/KEY or /queue/NAME.</source>
+        <translation>Der Broker kennt die Adresse %1 nicht: RabbitMQ erwartet /exchange/NAME, /exchange/NAME/KEY oder /queue/NAME.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="30"/>
+        <source>The exchange or queue of %1 does not exist on the broker: declare it there, or fix the address.</source>
+        <translation>Den Exchange oder die Queue von %1 gibt es auf dem Broker nicht: dort anlegen oder die Adresse korrigieren.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="34"/>
+        <source>TLS failed: check the CA file, the client certificate and that the host name matches the broker&apos;s certificate.</source>
+        <translation>TLS ist fehlgeschlagen: CA-Datei und Client-Zertifikat prüfen, und ob der Hostname zum Zertifikat des Brokers passt.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="37"/>
+        <source>Nothing accepts connections there: check the host and port, and that the broker runs.</source>
+        <translation>Dort nimmt nichts Verbindungen an: Host und Port prüfen, und ob der Broker läuft.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="41"/>
+        <source>The broker&apos;s host name cannot be found: check it.</source>
+        <translation>Der Hostname des Brokers ist nicht auffindbar: bitte prüfen.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="51"/>
+        <source>The broker said: %1.</source>
+        <translation>Der Broker meldete: %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="52"/>
+        <source>%1 (The broker said: %2)</source>
+        <translation>%1 (Der Broker meldete: %2)</translation>
+    </message>
+</context>
+<context>
     <name>AppSettings</name>
     <message>
         <location filename="../lib/model/appsettings.cpp" line="116"/>
@@ -247,17 +320,17 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <location filename="../lib/protocol/catalog.cpp" line="195"/>
         <source>Unknown NAK code %1</source>
         <translation>Unbekannter NAK-Code %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="220"/>
+        <location filename="../lib/protocol/catalog.cpp" line="200"/>
         <source>Unknown station error %1</source>
         <translation>Unbekannter Stationsfehler %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="229"/>
+        <location filename="../lib/protocol/catalog.cpp" line="209"/>
         <source>Unknown port error %1</source>
         <translation>Unbekannter Portfehler %1</translation>
     </message>
@@ -1292,7 +1365,7 @@
         <translation>Teilzähler vorgeschobene Länge zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="234"/>
+        <location filename="../lib/protocol/catalog.cpp" line="214"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Vorschubfehler %1 (nicht in der SFR-Anleitung aufgeführt)</translation>
     </message>
@@ -1385,6 +1458,64 @@
         <location filename="../lib/protocol/catalogstrings.cpp" line="229"/>
         <source>The SFR guide does not say what the feeder&apos;s error codes mean. Check that the solder wire is loaded and runs freely from the reel to the tool (no knot, no jam, the reel not empty) and that the wire thickness setting matches the wire; then reset the error. If it comes back at once, note the code and see the SFR manual.</source>
         <translation>Die SFR-Anleitung sagt nicht, was die Fehlercodes des Vorschubs bedeuten. Prüfen Sie, ob Lötdraht eingelegt ist und frei von der Rolle zum Werkzeug läuft (kein Knoten, kein Stau, die Rolle nicht leer) und ob die eingestellte Drahtstärke zum Draht passt; dann den Fehler zurücksetzen. Kommt er sofort wieder, den Code notieren und im SFR-Handbuch nachsehen.</translation>
+    </message>
+</context>
+<context>
+    <name>Cfx</name>
+    <message>
+        <location filename="../lib/cfx/amqpsender.cpp" line="145"/>
+        <source>rejected by the broker</source>
+        <translation>vom Broker abgelehnt</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpsender.cpp" line="148"/>
+        <source>released by the broker</source>
+        <translation>vom Broker freigegeben</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpsender.cpp" line="176"/>
+        <source>the connection closed</source>
+        <translation>die Verbindung wurde geschlossen</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="30"/>
+        <source>The CFX envelope&apos;s %1 is not a text.</source>
+        <translation>%1 im CFX-Umschlag ist kein Text.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="82"/>
+        <source>A CFX message of %1 bytes is larger than the %2 accepted.</source>
+        <translation>Eine CFX-Nachricht mit %1 Bytes ist größer als die zulässigen %2.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="88"/>
+        <source>A CFX message is not a JSON object: %1.</source>
+        <translation>Eine CFX-Nachricht ist kein JSON-Objekt: %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="89"/>
+        <source>not an object</source>
+        <translation>kein Objekt</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="104"/>
+        <source>A CFX message has no MessageName.</source>
+        <translation>Einer CFX-Nachricht fehlt MessageName.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="115"/>
+        <source>The CFX envelope&apos;s MessageBody is not an object.</source>
+        <translation>MessageBody im CFX-Umschlag ist kein Objekt.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="170"/>
+        <source>Cannot unpack a gzip CFX message.</source>
+        <translation>Eine gzip-komprimierte CFX-Nachricht lässt sich nicht entpacken.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="187"/>
+        <source>A gzip CFX message is damaged or larger than %1 bytes.</source>
+        <translation>Eine gzip-komprimierte CFX-Nachricht ist beschädigt oder größer als %1 Bytes.</translation>
     </message>
 </context>
 <context>
@@ -1965,37 +2096,47 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="37"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="44"/>
+        <source>--cfx takes the AMQP broker as amqp://HOST:PORT or amqps://HOST:PORT (the user with --cfx-user, the password from %1)</source>
+        <translation>--cfx erwartet den AMQP-Broker als amqp://HOST:PORT oder amqps://HOST:PORT (den Benutzer mit --cfx-user, das Passwort aus %1)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="56"/>
+        <source>--cfx-address takes RabbitMQ&apos;s form: /exchange/NAME, /exchange/NAME/KEY or /queue/NAME</source>
+        <translation>--cfx-address erwartet die Form von RabbitMQ: /exchange/NAME, /exchange/NAME/KEY oder /queue/NAME</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
         <source>--mqtt takes the broker as HOST:PORT</source>
         <translation>--mqtt erwartet den Broker als HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="49"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="85"/>
         <source>--site takes the site&apos;s name</source>
         <translation>--site erwartet den Namen des Standorts</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="55"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="91"/>
         <source>--interval takes milliseconds from 100 to 3600000</source>
         <translation>--interval erwartet Millisekunden von 100 bis 3600000</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="80"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="122"/>
         <source>Broker connected.</source>
         <translation>Broker verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="82"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="124"/>
         <source>Broker disconnected.</source>
         <translation>Broker getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="84"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="126"/>
         <source>Connecting to the broker.</source>
         <translation>Verbindung zum Broker wird aufgebaut.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="86"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="128"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n Gerät, %1 Live-Nachrichten, %2 Lötstellen und Ereignisse weitergeleitet, %3 wartend. %4</numerusform>
@@ -2003,12 +2144,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="104"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="146"/>
         <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
         <translation>tipscope-cli: %1 ist nicht gesetzt: Verbindung als %2 ohne Passwort</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="112"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="154"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
@@ -2016,7 +2157,67 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="77"/>
+        <location filename="../app/cli/clioptions.cpp" line="152"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="196"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="202"/>
+        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
+        <translation>--workspace erwartet eine Datei, und nur eines von --port, --tcp, --demo, --workspace</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="209"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="217"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="222"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud erwartet eine Baudrate wie 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="229"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity erwartet none, even oder odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="233"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits erwartet 1 oder 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="242"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="250"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="253"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="181"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 braucht einen Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="79"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity |
                      --workspace FILE] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -2036,6 +2237,9 @@ Commands:
   monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]
                             publish the lines to an MQTT broker as tipscope-agent does
                             (docs/mqtt.md); the password from TIPSCOPE_MQTT_PASSWORD
+          [--cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADDRESS]]
+                            and every station as an IPC-CFX endpoint (docs/cfx.md);
+                            the password from TIPSCOPE_CFX_PASSWORD
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
   profile save FILE         every writable setting of the device to a JSON profile
@@ -2092,6 +2296,9 @@ Befehle:
   monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]
                             veröffentlicht die Linien an einen MQTT-Broker wie
                             tipscope-agent (docs/mqtt.md); Passwort aus TIPSCOPE_MQTT_PASSWORD
+          [--cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADRESSE]]
+                            und jede Station als IPC-CFX-Endpunkt (docs/cfx.md);
+                            Passwort aus TIPSCOPE_CFX_PASSWORD
   dump [--json]             alle lesbaren Parameter, Zähler und Fehler
   commands [--family F]     der Befehlskatalog
   profile save DATEI        alle beschreibbaren Einstellungen des Geräts in ein JSON-Profil
@@ -2133,97 +2340,37 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="147"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>unbekannter Befehl &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="191"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>geben Sie nur eine der Optionen --port, --tcp und --demo an</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="197"/>
-        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
-        <translation>--workspace erwartet eine Datei, und nur eines von --port, --tcp, --demo, --workspace</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="204"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port erwartet ein Gerät, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="212"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp erwartet HOST:PORT, und nur eine der Optionen --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="217"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud erwartet eine Baudrate wie 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="224"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity erwartet none, even oder odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="228"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits erwartet 1 oder 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="237"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr erwartet QUELLE:ZIEL, zwei Adressen von 00 bis 99 (z. B. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="245"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout erwartet Millisekunden von 1 bis 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="248"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries erwartet eine Zahl von 0 bis 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="176"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 braucht einen Wert</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="180"/>
+        <location filename="../app/cli/clioptions.cpp" line="185"/>
         <source>--%1 takes no value</source>
         <translation>--%1 nimmt keinen Wert an</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="252"/>
+        <location filename="../app/cli/clioptions.cpp" line="257"/>
         <source>unknown option --%1</source>
         <translation>unbekannte Option --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="253"/>
+        <location filename="../app/cli/clioptions.cpp" line="258"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; hat keine Option --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="259"/>
+        <location filename="../app/cli/clioptions.cpp" line="264"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="262"/>
+        <location filename="../app/cli/clioptions.cpp" line="267"/>
         <source>--workspace runs detect, monitor, dump or joints, not %1</source>
         <translation>--workspace führt detect, monitor, dump oder joints aus, nicht %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="265"/>
+        <location filename="../app/cli/clioptions.cpp" line="270"/>
         <source>--csv-one-file goes with --workspace and --csv FILE</source>
         <translation>--csv-one-file gehört zu --workspace und --csv DATEI</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="268"/>
+        <location filename="../app/cli/clioptions.cpp" line="273"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>geben Sie an, wo das Gerät ist: --port GERÄT, --tcp HOST:PORT oder --demo</translation>
     </message>
@@ -3109,17 +3256,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="32"/>
-        <location filename="../lib/journal/journalreader.cpp" line="241"/>
+        <location filename="../lib/journal/journalreader.cpp" line="249"/>
         <source>No journal is open.</source>
         <translation>Kein Journal ist geöffnet.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="85"/>
+        <location filename="../lib/journal/journalreader.cpp" line="91"/>
         <source>There is no journal at %1.</source>
         <translation>Unter %1 gibt es kein Journal.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/journal/journalreader.cpp" line="116"/>
+        <location filename="../lib/journal/journalreader.cpp" line="122"/>
         <source>The journal %1 is damaged (%n finding(s), the first: %2).</source>
         <translation>
             <numerusform>Das Journal %1 ist beschädigt (%n Befund, der erste: %2).</numerusform>
@@ -3127,17 +3274,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         </translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="102"/>
+        <location filename="../lib/journal/journalschema.cpp" line="108"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>Das Journal %1 wurde von einem neueren TipScope geschrieben (Schema %2; dieses kennt bis %3). Es wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="117"/>
+        <location filename="../lib/journal/journalschema.cpp" line="123"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>Die Datei %1 ist kein TipScope-Journal. Sie wurde nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="226"/>
+        <location filename="../lib/journal/journalschema.cpp" line="232"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>Der Ordner %1 für das Journal kann nicht angelegt werden.</translation>
     </message>
@@ -3537,7 +3684,7 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="93"/>
-        <location filename="../lib/model/parameter.cpp" line="135"/>
+        <location filename="../lib/model/parameter.cpp" line="129"/>
         <source>%1 cannot be written</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
@@ -3552,58 +3699,58 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="120"/>
-        <location filename="../lib/model/parameter.cpp" line="247"/>
+        <location filename="../lib/model/parameter.cpp" line="114"/>
+        <location filename="../lib/model/parameter.cpp" line="241"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>der Modus „Nur beobachten“ ist aktiv: es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="138"/>
+        <location filename="../lib/model/parameter.cpp" line="132"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; zulässig ist %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="198"/>
+        <location filename="../lib/model/parameter.cpp" line="192"/>
         <source>reading %1 (%2)</source>
         <translation>%1 wird gelesen (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="210"/>
+        <location filename="../lib/model/parameter.cpp" line="204"/>
         <source>reading %1</source>
         <translation>%1 wird gelesen</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="211"/>
+        <location filename="../lib/model/parameter.cpp" line="205"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>unlesbares Datenfeld &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="269"/>
+        <location filename="../lib/model/parameter.cpp" line="263"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="272"/>
+        <location filename="../lib/model/parameter.cpp" line="266"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>vielleicht nicht geschrieben, die Antwort ging verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="295"/>
+        <location filename="../lib/model/parameter.cpp" line="289"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Zurücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="310"/>
+        <location filename="../lib/model/parameter.cpp" line="304"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>das Gerät meldet %1, nachdem %2 geschrieben wurde</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="323"/>
+        <location filename="../lib/model/parameter.cpp" line="317"/>
         <source>%1 set to %2</source>
         <translation>%1 auf %2 gesetzt</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="341"/>
+        <location filename="../lib/model/parameter.cpp" line="335"/>
         <source>writing %1</source>
         <translation>%1 wird geschrieben</translation>
     </message>
@@ -4736,7 +4883,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="45"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="46"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Zeitdiagramm. Mausrad oder Plus- und Minustaste zoomen, Ziehen oder Pfeiltasten verschieben, Umschalt+Ziehen wählt einen Bereich, Doppelklick oder Pos1 setzt zurück.</translation>
     </message>
@@ -4744,7 +4891,7 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="479"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="502"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… und %n weitere</numerusform>
@@ -6711,112 +6858,112 @@ Zurücksetzen?</translation>
         <translation>Doppelklick auf eine Lötstelle oder Eingabetaste zeigt sie auf der Seite Diagramme</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="137"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="138"/>
         <source>All devices</source>
         <translation>Alle Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
         <source>All ports</source>
         <translation>Alle Ports</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="142"/>
         <source>Port %1</source>
         <translation>Port %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
         <source>all tools</source>
         <translation>alle Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="146"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="147"/>
         <source>All verdicts</source>
         <translation>Alle Bewertungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Last hour</source>
         <translation>Letzte Stunde</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Last 24 hours</source>
         <translation>Letzte 24 Stunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Last 7 days</source>
         <translation>Letzte 7 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
         <source>Last 30 days</source>
         <translation>Letzte 30 Tage</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
         <source>All times</source>
         <translation>Gesamte Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>all work orders</source>
         <translation>alle Aufträge</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Reload</source>
         <translation>Neu laden</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
         <source>Read the journal again</source>
         <translation>Das Journal neu lesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="160"/>
         <source>Export CSV…</source>
         <translation>CSV exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="161"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Die aufgeführten Lötstellen als CSV-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Port</source>
         <translation>Port</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
         <source>Tool</source>
         <translation>Werkzeug</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
         <source>Verdict</source>
         <translation>Bewertung</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="166"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="166"/>
         <source>Work order</source>
         <translation>Auftrag</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="271"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="272"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n Lötstelle aufgeführt.</numerusform>
@@ -6824,22 +6971,22 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="273"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="274"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Nur die neuesten %1 aus dem Journal: schränken Sie den Filter ein, um ältere zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="277"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="278"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>Das Journal konnte nicht gelesen werden (%1): nur die Lötstellen dieser Sitzung sind aufgeführt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="282"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Noch kein Journal: nur die Lötstellen dieser Sitzung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="360"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="362"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n Lötstelle in %1 geschrieben.</numerusform>
@@ -6847,12 +6994,12 @@ Zurücksetzen?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="372"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="374"/>
         <source>Export joints</source>
         <translation>Lötstellen exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="372"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="374"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV-Datei (*.csv)</translation>
     </message>
@@ -8158,23 +8305,23 @@ Möchten Sie fortfahren?</translation>
         <translation>Letzte Minute von Spitzentemperatur und Leistung</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="83"/>
         <location filename="../app/gui/widgets/sparkline.cpp" line="87"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="91"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="88"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="92"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="100"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="104"/>
         <source>no samples yet</source>
         <translation>noch keine Messwerte</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="162"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
@@ -8255,7 +8402,7 @@ Möchten Sie fortfahren?</translation>
         <translation>das Gerät an Adresse %1 hat sich nicht identifiziert (%2): %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="98"/>
+        <location filename="../lib/link/discovery.cpp" line="103"/>
         <source>%n NAK(s) %1 (%2)</source>
         <translation>
             <numerusform>%n NAK %1 (%2)</numerusform>
@@ -8263,7 +8410,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="102"/>
+        <location filename="../lib/link/discovery.cpp" line="107"/>
         <source>%n answer(s) with a bad block check or format</source>
         <translation>
             <numerusform>%n Antwort mit falscher Prüfsumme oder falschem Format</numerusform>
@@ -8271,7 +8418,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="104"/>
+        <location filename="../lib/link/discovery.cpp" line="109"/>
         <source>%n frame(s) from an address not asked</source>
         <translation>
             <numerusform>%n Rahmen von einer nicht gefragten Adresse</numerusform>
@@ -8279,7 +8426,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="106"/>
+        <location filename="../lib/link/discovery.cpp" line="111"/>
         <source>%n byte(s) that were no frame</source>
         <translation>
             <numerusform>%n Byte, das kein Rahmen war</numerusform>
@@ -8396,32 +8543,32 @@ Möchten Sie fortfahren?</translation>
         <translation>die Antwort war beschädigt (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="248"/>
+        <location filename="../lib/link/requestqueue.cpp" line="251"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>unlesbares Datenfeld &apos;%1&apos; in der Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="257"/>
+        <location filename="../lib/link/requestqueue.cpp" line="260"/>
         <source>the request could not be written</source>
         <translation>die Anfrage konnte nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="261"/>
+        <location filename="../lib/link/requestqueue.cpp" line="264"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="279"/>
+        <location filename="../lib/link/requestqueue.cpp" line="282"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="300"/>
+        <location filename="../lib/link/requestqueue.cpp" line="303"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (Versuch %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="318"/>
+        <location filename="../lib/link/requestqueue.cpp" line="321"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 nach %n Versuch</numerusform>
@@ -8429,7 +8576,7 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="321"/>
+        <location filename="../lib/link/requestqueue.cpp" line="324"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>stattdessen kam %n Byte Datenmüll</numerusform>
@@ -8437,17 +8584,17 @@ Möchten Sie fortfahren?</translation>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="324"/>
+        <location filename="../lib/link/requestqueue.cpp" line="327"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; das Gerät hat den Befehl möglicherweise ausgeführt: vor einer Wiederholung prüfen</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="395"/>
+        <location filename="../lib/link/requestqueue.cpp" line="398"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="397"/>
+        <location filename="../lib/link/requestqueue.cpp" line="400"/>
         <source>the line was lost: %1</source>
         <translation>die Leitung ist verloren gegangen: %1</translation>
     </message>

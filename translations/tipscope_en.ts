@@ -26,7 +26,7 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="86"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="128"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n device, %1 live messages, %2 joints and events forwarded, %3 waiting. %4</numerusform>
@@ -89,7 +89,7 @@
 <context>
     <name>Journal</name>
     <message numerus="yes">
-        <location filename="../lib/journal/journalreader.cpp" line="116"/>
+        <location filename="../lib/journal/journalreader.cpp" line="122"/>
         <source>The journal %1 is damaged (%n finding(s), the first: %2).</source>
         <translation>
             <numerusform>The journal %1 is damaged (%n finding, the first: %2).</numerusform>
@@ -160,7 +160,7 @@
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="479"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="502"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… and %n more</numerusform>
@@ -204,7 +204,7 @@
 <context>
     <name>tipscope::gui::JointsPage</name>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="271"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="272"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n joint listed.</numerusform>
@@ -212,7 +212,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="360"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="362"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n joint written to %1.</numerusform>
@@ -307,7 +307,7 @@
 <context>
     <name>tipscope::link::Discovery</name>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="98"/>
+        <location filename="../lib/link/discovery.cpp" line="103"/>
         <source>%n NAK(s) %1 (%2)</source>
         <translation>
             <numerusform>%n NAK %1 (%2)</numerusform>
@@ -315,7 +315,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="102"/>
+        <location filename="../lib/link/discovery.cpp" line="107"/>
         <source>%n answer(s) with a bad block check or format</source>
         <translation>
             <numerusform>%n answer with a bad block check or format</numerusform>
@@ -323,7 +323,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="104"/>
+        <location filename="../lib/link/discovery.cpp" line="109"/>
         <source>%n frame(s) from an address not asked</source>
         <translation>
             <numerusform>%n frame from an address not asked</numerusform>
@@ -331,7 +331,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="106"/>
+        <location filename="../lib/link/discovery.cpp" line="111"/>
         <source>%n byte(s) that were no frame</source>
         <translation>
             <numerusform>%n byte that was no frame</numerusform>
@@ -342,7 +342,7 @@
 <context>
     <name>tipscope::link::RequestQueue</name>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="318"/>
+        <location filename="../lib/link/requestqueue.cpp" line="321"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 after %n attempt</numerusform>
@@ -350,7 +350,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="321"/>
+        <location filename="../lib/link/requestqueue.cpp" line="324"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>%n byte of garbage came instead</numerusform>

@@ -27,107 +27,132 @@
 <context>
     <name>AgentConfig</name>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="38"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="39"/>
         <source>%1 must be text</source>
         <translation>%1 debe ser un texto</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="47"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="48"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 debe ser un número entero de %2 a %3</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="58"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="59"/>
         <source>%1 must be true or false</source>
         <translation>%1 debe ser true o false</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="64"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="65"/>
         <source>%1 must be an object</source>
         <translation>%1 debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="82"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="83"/>
         <source>not a TipScope agent configuration (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>no es una configuración del agente de TipScope (&quot;format&quot; no es &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="87"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="88"/>
         <source>&quot;version&quot; must be a whole number from 1</source>
         <translation>&quot;version&quot; debe ser un número entero desde 1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="90"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="91"/>
         <source>written for a later TipScope (version %1); this one reads version %2 and older</source>
         <translation>escrita para un TipScope más reciente (versión %1); este lee la versión %2 y anteriores</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="118"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="119"/>
         <source>broker.protocol must be &quot;3.1.1&quot; or &quot;5&quot;</source>
         <translation>broker.protocol debe ser &quot;3.1.1&quot; o &quot;5&quot;</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="130"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="131"/>
         <source>broker.host must name the broker</source>
         <translation>broker.host debe indicar el broker</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="133"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="134"/>
         <source>broker.password_file and broker.password_env: give one of them</source>
         <translation>broker.password_file y broker.password_env: indique solo uno de los dos</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="142"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="149"/>
         <source>file %1</source>
         <translation>archivo %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="148"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="155"/>
         <source>environment variable %1</source>
         <translation>variable de entorno %1</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="172"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="195"/>
+        <source>cfx.host must name the AMQP broker</source>
+        <translation>cfx.host debe nombrar el broker AMQP</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="197"/>
+        <source>cfx.address must be /exchange/NAME, /exchange/NAME/KEY or /queue/NAME, not &quot;%1&quot;</source>
+        <translation>cfx.address debe ser /exchange/NOMBRE, /exchange/NOMBRE/CLAVE o /queue/NOMBRE, no «%1»</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="201"/>
+        <source>cfx.vendor must be a name of at most %1 characters</source>
+        <translation>cfx.vendor debe ser un nombre de %1 caracteres como máximo</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="204"/>
+        <source>cfx.tls.cert_file and cfx.tls.key_file: give both or neither</source>
+        <translation>cfx.tls.cert_file y cfx.tls.key_file: indique los dos o ninguno</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="206"/>
+        <source>cfx.password_file and cfx.password_env: give one of them</source>
+        <translation>cfx.password_file y cfx.password_env: indique solo uno de ellos</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="231"/>
         <source>site must name the site</source>
         <translation>site debe indicar la planta</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="174"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="233"/>
         <source>site must be at most %1 characters long, not %2</source>
         <translation>site admite como máximo %1 caracteres, no %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="179"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="238"/>
         <source>site must not hold control characters</source>
         <translation>site no puede contener caracteres de control</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="181"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace debe indicar el archivo de espacio de trabajo de las líneas que se ejecutan</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="202"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="269"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>no se puede leer la configuración %1: no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="205"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="272"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>no se puede leer la configuración %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="209"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="276"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>la configuración %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="211"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>la configuración %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="213"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="280"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -224,6 +249,54 @@
     </message>
 </context>
 <context>
+    <name>AmqpProblem</name>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="20"/>
+        <source>The broker refused the login: check the user and the password (file or environment variable).</source>
+        <translation>El broker rechazó el inicio de sesión: compruebe el usuario y la contraseña (archivo o variable de entorno).</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="23"/>
+        <source>The broker does not speak AMQP 1.0: enable its plugin (rabbitmq-plugins enable rabbitmq_amqp1_0).</source>
+        <translation>El broker no habla AMQP 1.0: active su plugin (rabbitmq-plugins enable rabbitmq_amqp1_0).</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="26"/>
+        <source>The broker does not know the address %1: RabbitMQ wants /exchange/NAME, /exchange/NAME/KEY or /queue/NAME.</source>
+        <translation>El broker no conoce la dirección %1: RabbitMQ espera /exchange/NOMBRE, /exchange/NOMBRE/CLAVE o /queue/NOMBRE.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="30"/>
+        <source>The exchange or queue of %1 does not exist on the broker: declare it there, or fix the address.</source>
+        <translation>El exchange o la cola de %1 no existe en el broker: declárelo allí o corrija la dirección.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="34"/>
+        <source>TLS failed: check the CA file, the client certificate and that the host name matches the broker&apos;s certificate.</source>
+        <translation>TLS falló: compruebe el archivo de la CA, el certificado de cliente y que el nombre de host coincide con el certificado del broker.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="37"/>
+        <source>Nothing accepts connections there: check the host and port, and that the broker runs.</source>
+        <translation>Nada acepta conexiones ahí: compruebe el host y el puerto, y que el broker esté en marcha.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="41"/>
+        <source>The broker&apos;s host name cannot be found: check it.</source>
+        <translation>No se encuentra el nombre de host del broker: compruébelo.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="51"/>
+        <source>The broker said: %1.</source>
+        <translation>El broker respondió: %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpproblem.cpp" line="52"/>
+        <source>%1 (The broker said: %2)</source>
+        <translation>%1 (El broker respondió: %2)</translation>
+    </message>
+</context>
+<context>
     <name>AppSettings</name>
     <message>
         <location filename="../lib/model/appsettings.cpp" line="116"/>
@@ -247,17 +320,17 @@
 <context>
     <name>Catalog</name>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="215"/>
+        <location filename="../lib/protocol/catalog.cpp" line="195"/>
         <source>Unknown NAK code %1</source>
         <translation>Código NAK desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="220"/>
+        <location filename="../lib/protocol/catalog.cpp" line="200"/>
         <source>Unknown station error %1</source>
         <translation>Error de estación desconocido %1</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="229"/>
+        <location filename="../lib/protocol/catalog.cpp" line="209"/>
         <source>Unknown port error %1</source>
         <translation>Error de puerto desconocido %1</translation>
     </message>
@@ -1292,7 +1365,7 @@
         <translation>Poner a cero la longitud alimentada parcial</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/catalog.cpp" line="234"/>
+        <location filename="../lib/protocol/catalog.cpp" line="214"/>
         <source>Feeder error %1 (not listed in the SFR guide)</source>
         <translation>Error del alimentador %1 (no figura en la guía del SFR)</translation>
     </message>
@@ -1385,6 +1458,64 @@
         <location filename="../lib/protocol/catalogstrings.cpp" line="229"/>
         <source>The SFR guide does not say what the feeder&apos;s error codes mean. Check that the solder wire is loaded and runs freely from the reel to the tool (no knot, no jam, the reel not empty) and that the wire thickness setting matches the wire; then reset the error. If it comes back at once, note the code and see the SFR manual.</source>
         <translation>La guía del SFR no dice qué significan los códigos de error del alimentador. Compruebe que el hilo de soldadura está cargado y corre libremente del carrete a la herramienta (sin nudos, sin atascos, el carrete no vacío) y que el grosor de hilo ajustado coincide con el hilo; luego restablezca el error. Si vuelve enseguida, anote el código y consulte el manual del SFR.</translation>
+    </message>
+</context>
+<context>
+    <name>Cfx</name>
+    <message>
+        <location filename="../lib/cfx/amqpsender.cpp" line="145"/>
+        <source>rejected by the broker</source>
+        <translation>rechazado por el broker</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpsender.cpp" line="148"/>
+        <source>released by the broker</source>
+        <translation>liberado por el broker</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/amqpsender.cpp" line="176"/>
+        <source>the connection closed</source>
+        <translation>la conexión se cerró</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="30"/>
+        <source>The CFX envelope&apos;s %1 is not a text.</source>
+        <translation>%1 del sobre CFX no es un texto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="82"/>
+        <source>A CFX message of %1 bytes is larger than the %2 accepted.</source>
+        <translation>Un mensaje CFX de %1 bytes supera los %2 admitidos.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="88"/>
+        <source>A CFX message is not a JSON object: %1.</source>
+        <translation>Un mensaje CFX no es un objeto JSON: %1.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="89"/>
+        <source>not an object</source>
+        <translation>no es un objeto</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="104"/>
+        <source>A CFX message has no MessageName.</source>
+        <translation>A un mensaje CFX le falta MessageName.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="115"/>
+        <source>The CFX envelope&apos;s MessageBody is not an object.</source>
+        <translation>MessageBody del sobre CFX no es un objeto.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="170"/>
+        <source>Cannot unpack a gzip CFX message.</source>
+        <translation>No se puede descomprimir un mensaje CFX con gzip.</translation>
+    </message>
+    <message>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="187"/>
+        <source>A gzip CFX message is damaged or larger than %1 bytes.</source>
+        <translation>Un mensaje CFX con gzip está dañado o supera los %1 bytes.</translation>
     </message>
 </context>
 <context>
@@ -1965,37 +2096,47 @@
 <context>
     <name>CliMonitorMqtt</name>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="37"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="44"/>
+        <source>--cfx takes the AMQP broker as amqp://HOST:PORT or amqps://HOST:PORT (the user with --cfx-user, the password from %1)</source>
+        <translation>--cfx espera el broker AMQP como amqp://HOST:PUERTO o amqps://HOST:PUERTO (el usuario con --cfx-user, la contraseña de %1)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="56"/>
+        <source>--cfx-address takes RabbitMQ&apos;s form: /exchange/NAME, /exchange/NAME/KEY or /queue/NAME</source>
+        <translation>--cfx-address espera la forma de RabbitMQ: /exchange/NOMBRE, /exchange/NOMBRE/CLAVE o /queue/NOMBRE</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/climonitormqtt.cpp" line="73"/>
         <source>--mqtt takes the broker as HOST:PORT</source>
         <translation>--mqtt espera el broker como HOST:PUERTO</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="49"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="85"/>
         <source>--site takes the site&apos;s name</source>
         <translation>--site espera el nombre de la planta</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="55"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="91"/>
         <source>--interval takes milliseconds from 100 to 3600000</source>
         <translation>--interval espera milisegundos de 100 a 3600000</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="80"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="122"/>
         <source>Broker connected.</source>
         <translation>Broker conectado.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="82"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="124"/>
         <source>Broker disconnected.</source>
         <translation>Broker desconectado.</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="84"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="126"/>
         <source>Connecting to the broker.</source>
         <translation>Conectando con el broker.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/climonitormqtt.cpp" line="86"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="128"/>
         <source>%n device(s), %1 live messages, %2 joints and events forwarded, %3 waiting. %4</source>
         <translation>
             <numerusform>%n dispositivo, %1 mensajes en vivo, %2 soldaduras y eventos reenviados, %3 en espera. %4</numerusform>
@@ -2003,12 +2144,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="104"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="146"/>
         <source>tipscope-cli: %1 is not set: connecting as %2 without a password</source>
         <translation>tipscope-cli: %1 no está definida: se conecta como %2 sin contraseña</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitormqtt.cpp" line="112"/>
+        <location filename="../app/cli/climonitormqtt.cpp" line="154"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration espera segundos</translation>
     </message>
@@ -2016,7 +2157,67 @@
 <context>
     <name>CliParser</name>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="77"/>
+        <location filename="../app/cli/clioptions.cpp" line="152"/>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="196"/>
+        <source>give only one of --port, --tcp and --demo</source>
+        <translation>indique solo una de --port, --tcp y --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="202"/>
+        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
+        <translation>--workspace requiere un archivo, y solo uno de --port, --tcp, --demo, --workspace</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="209"/>
+        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
+        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="217"/>
+        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
+        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="222"/>
+        <source>--baud takes a rate such as 19200</source>
+        <translation>--baud requiere una velocidad como 19200</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="229"/>
+        <source>--parity takes none, even or odd</source>
+        <translation>--parity admite none, even u odd</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="233"/>
+        <source>--stop-bits takes 1 or 2</source>
+        <translation>--stop-bits admite 1 o 2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="242"/>
+        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
+        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="250"/>
+        <source>--timeout takes milliseconds from 1 to 60000</source>
+        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="253"/>
+        <source>--retries takes a number from 0 to 10</source>
+        <translation>--retries requiere un número de 0 a 10</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="181"/>
+        <source>--%1 needs a value</source>
+        <translation>--%1 necesita un valor</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/clioptions.cpp" line="79"/>
         <source>Usage: tipscope-cli [--port DEVICE | --tcp HOST:PORT | --demo | --demo-activity |
                      --workspace FILE] [--baud N]
                     [--parity none|even|odd] [--stop-bits 1|2] [--addr SRC:TGT | --no-addr]
@@ -2036,6 +2237,9 @@ Commands:
   monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]
                             publish the lines to an MQTT broker as tipscope-agent does
                             (docs/mqtt.md); the password from TIPSCOPE_MQTT_PASSWORD
+          [--cfx amqp[s]://HOST:PORT [--cfx-user U] [--cfx-address ADDRESS]]
+                            and every station as an IPC-CFX endpoint (docs/cfx.md);
+                            the password from TIPSCOPE_CFX_PASSWORD
   dump [--json]             every readable parameter, counter and error
   commands [--family F]     the command catalog
   profile save FILE         every writable setting of the device to a JSON profile
@@ -2092,6 +2296,9 @@ Comandos:
   monitor --mqtt HOST:PORT [--mqtt-user U] [--site S] [--interval MS] [--duration S]
                             publica las líneas en un broker MQTT como tipscope-agent
                             (docs/mqtt.md); la contraseña, de TIPSCOPE_MQTT_PASSWORD
+          [--cfx amqp[s]://HOST:PUERTO [--cfx-user U] [--cfx-address DIRECCIÓN]]
+                            y cada estación como punto final IPC-CFX (docs/cfx.md);
+                            la contraseña, de TIPSCOPE_CFX_PASSWORD
   dump [--json]             todos los parámetros legibles, contadores y errores
   commands [--family F]     el catálogo de comandos
   profile save ARCHIVO      todos los ajustes escribibles del equipo en un perfil JSON
@@ -2133,97 +2340,37 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
 </translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="147"/>
-        <source>unknown command &apos;%1&apos;</source>
-        <translation>comando desconocido &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="191"/>
-        <source>give only one of --port, --tcp and --demo</source>
-        <translation>indique solo una de --port, --tcp y --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="197"/>
-        <source>--workspace takes a file, and only one of --port, --tcp, --demo, --workspace</source>
-        <translation>--workspace requiere un archivo, y solo uno de --port, --tcp, --demo, --workspace</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="204"/>
-        <source>--port takes a device, and only one of --port, --tcp, --demo</source>
-        <translation>--port requiere un dispositivo, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="212"/>
-        <source>--tcp takes HOST:PORT, and only one of --port, --tcp, --demo</source>
-        <translation>--tcp requiere HOST:PUERTO, y solo una de --port, --tcp, --demo</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="217"/>
-        <source>--baud takes a rate such as 19200</source>
-        <translation>--baud requiere una velocidad como 19200</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="224"/>
-        <source>--parity takes none, even or odd</source>
-        <translation>--parity admite none, even u odd</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="228"/>
-        <source>--stop-bits takes 1 or 2</source>
-        <translation>--stop-bits admite 1 o 2</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="237"/>
-        <source>--addr takes SRC:TGT, two addresses from 00 to 99 (e.g. 00:01)</source>
-        <translation>--addr requiere ORIG:DEST, dos direcciones de 00 a 99 (p. ej. 00:01)</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="245"/>
-        <source>--timeout takes milliseconds from 1 to 60000</source>
-        <translation>--timeout requiere milisegundos de 1 a 60000</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="248"/>
-        <source>--retries takes a number from 0 to 10</source>
-        <translation>--retries requiere un número de 0 a 10</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="176"/>
-        <source>--%1 needs a value</source>
-        <translation>--%1 necesita un valor</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/clioptions.cpp" line="180"/>
+        <location filename="../app/cli/clioptions.cpp" line="185"/>
         <source>--%1 takes no value</source>
         <translation>--%1 no admite ningún valor</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="252"/>
+        <location filename="../app/cli/clioptions.cpp" line="257"/>
         <source>unknown option --%1</source>
         <translation>opción desconocida --%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="253"/>
+        <location filename="../app/cli/clioptions.cpp" line="258"/>
         <source>&apos;%1&apos; has no option --%2</source>
         <translation>&apos;%1&apos; no tiene la opción --%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="259"/>
+        <location filename="../app/cli/clioptions.cpp" line="264"/>
         <source>no command given</source>
         <translation>no se indicó ningún comando</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="262"/>
+        <location filename="../app/cli/clioptions.cpp" line="267"/>
         <source>--workspace runs detect, monitor, dump or joints, not %1</source>
         <translation>--workspace ejecuta detect, monitor, dump o joints, no %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="265"/>
+        <location filename="../app/cli/clioptions.cpp" line="270"/>
         <source>--csv-one-file goes with --workspace and --csv FILE</source>
         <translation>--csv-one-file va con --workspace y --csv ARCHIVO</translation>
     </message>
     <message>
-        <location filename="../app/cli/clioptions.cpp" line="268"/>
+        <location filename="../app/cli/clioptions.cpp" line="273"/>
         <source>say where the device is: --port DEVICE, --tcp HOST:PORT or --demo</source>
         <translation>indique dónde está el equipo: --port DISPOSITIVO, --tcp HOST:PUERTO o --demo</translation>
     </message>
@@ -3109,17 +3256,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
     <name>Journal</name>
     <message>
         <location filename="../lib/journal/journalreader.cpp" line="32"/>
-        <location filename="../lib/journal/journalreader.cpp" line="241"/>
+        <location filename="../lib/journal/journalreader.cpp" line="249"/>
         <source>No journal is open.</source>
         <translation>No hay ningún diario abierto.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalreader.cpp" line="85"/>
+        <location filename="../lib/journal/journalreader.cpp" line="91"/>
         <source>There is no journal at %1.</source>
         <translation>No hay ningún diario en %1.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/journal/journalreader.cpp" line="116"/>
+        <location filename="../lib/journal/journalreader.cpp" line="122"/>
         <source>The journal %1 is damaged (%n finding(s), the first: %2).</source>
         <translation>
             <numerusform>El diario %1 está dañado (%n hallazgo, el primero: %2).</numerusform>
@@ -3127,17 +3274,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         </translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="102"/>
+        <location filename="../lib/journal/journalschema.cpp" line="108"/>
         <source>The journal %1 was written by a newer TipScope (schema %2; this one knows up to %3). It was left untouched.</source>
         <translation>El diario %1 lo escribió un TipScope más reciente (esquema %2; este conoce hasta el %3). No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="117"/>
+        <location filename="../lib/journal/journalschema.cpp" line="123"/>
         <source>The file %1 is not a TipScope journal. It was left untouched.</source>
         <translation>El archivo %1 no es un diario de TipScope. No se ha modificado.</translation>
     </message>
     <message>
-        <location filename="../lib/journal/journalschema.cpp" line="226"/>
+        <location filename="../lib/journal/journalschema.cpp" line="232"/>
         <source>Cannot create the folder %1 for the journal.</source>
         <translation>No se puede crear la carpeta %1 para el diario.</translation>
     </message>
@@ -3537,7 +3684,7 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
     </message>
     <message>
         <location filename="../lib/model/parameter.cpp" line="93"/>
-        <location filename="../lib/model/parameter.cpp" line="135"/>
+        <location filename="../lib/model/parameter.cpp" line="129"/>
         <source>%1 cannot be written</source>
         <translation>%1 no se puede escribir</translation>
     </message>
@@ -3552,58 +3699,58 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="120"/>
-        <location filename="../lib/model/parameter.cpp" line="247"/>
+        <location filename="../lib/model/parameter.cpp" line="114"/>
+        <location filename="../lib/model/parameter.cpp" line="241"/>
         <source>monitor-only mode is on: nothing is written</source>
         <translation>el modo solo supervisión está activado: no se escribe nada</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="138"/>
+        <location filename="../lib/model/parameter.cpp" line="132"/>
         <source>%1: %2; allowed is %3</source>
         <translation>%1: %2; se permite %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="198"/>
+        <location filename="../lib/model/parameter.cpp" line="192"/>
         <source>reading %1 (%2)</source>
         <translation>leyendo %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="210"/>
+        <location filename="../lib/model/parameter.cpp" line="204"/>
         <source>reading %1</source>
         <translation>leyendo %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="211"/>
+        <location filename="../lib/model/parameter.cpp" line="205"/>
         <source>unreadable data field &apos;%1&apos;</source>
         <translation>campo de datos ilegible &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="269"/>
+        <location filename="../lib/model/parameter.cpp" line="263"/>
         <source>not written: %1</source>
         <translation>no escrito: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="272"/>
+        <location filename="../lib/model/parameter.cpp" line="266"/>
         <source>perhaps not written, the answer was lost: %1</source>
         <translation>quizá no escrito, se perdió la respuesta: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="295"/>
+        <location filename="../lib/model/parameter.cpp" line="289"/>
         <source>written, but the read-back failed: %1</source>
         <translation>escrito, pero la relectura falló: %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="310"/>
+        <location filename="../lib/model/parameter.cpp" line="304"/>
         <source>the device reports %1 after %2 was written</source>
         <translation>el equipo indica %1 tras escribir %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="323"/>
+        <location filename="../lib/model/parameter.cpp" line="317"/>
         <source>%1 set to %2</source>
         <translation>%1 ajustado a %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/parameter.cpp" line="341"/>
+        <location filename="../lib/model/parameter.cpp" line="335"/>
         <source>writing %1</source>
         <translation>escribiendo %1</translation>
     </message>
@@ -4736,7 +4883,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartPlotView</name>
     <message>
-        <location filename="../app/gui/charts/chartplotview.cpp" line="45"/>
+        <location filename="../app/gui/charts/chartplotview.cpp" line="46"/>
         <source>Time chart. Wheel or plus and minus keys zoom, drag or arrow keys pan, Shift+drag selects a range, double-click or Home resets.</source>
         <translation>Gráfico temporal. La rueda o las teclas más y menos hacen zoom, arrastrar o las flechas desplazan, Mayús+arrastrar selecciona un intervalo, doble clic o Inicio restablece.</translation>
     </message>
@@ -4744,7 +4891,7 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::ChartWidget</name>
     <message numerus="yes">
-        <location filename="../app/gui/charts/chartwidget.cpp" line="479"/>
+        <location filename="../app/gui/charts/chartwidget.cpp" line="502"/>
         <source>… and %n more</source>
         <translation>
             <numerusform>… y %n más</numerusform>
@@ -6711,112 +6858,112 @@ Reset it?</source>
         <translation>Doble clic en una soldadura, o Intro, para verla en la página Gráficos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="137"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="138"/>
         <source>All devices</source>
         <translation>Todos los equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="139"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="140"/>
         <source>All ports</source>
         <translation>Todos los puertos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="141"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="142"/>
         <source>Port %1</source>
         <translation>Puerto %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="143"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="144"/>
         <source>all tools</source>
         <translation>todas las herramientas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="146"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="147"/>
         <source>All verdicts</source>
         <translation>Todos los veredictos</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Last hour</source>
         <translation>Última hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Last 24 hours</source>
         <translation>Últimas 24 horas</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="150"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
         <source>Last 7 days</source>
         <translation>Últimos 7 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
         <source>Last 30 days</source>
         <translation>Últimos 30 días</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="151"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="152"/>
         <source>All times</source>
         <translation>Todo el tiempo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="155"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="156"/>
         <source>all work orders</source>
         <translation>todas las órdenes</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="157"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
         <source>Reload</source>
         <translation>Recargar</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="158"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
         <source>Read the journal again</source>
         <translation>Volver a leer el registro</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="159"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="160"/>
         <source>Export CSV…</source>
         <translation>Exportar CSV…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="160"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="161"/>
         <source>Save the listed joints as a CSV file</source>
         <translation>Guardar las soldaduras de la lista como archivo CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Device</source>
         <translation>Equipo</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="163"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
         <source>Port</source>
         <translation>Puerto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
         <source>Tool</source>
         <translation>Herramienta</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="164"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
         <source>Verdict</source>
         <translation>Veredicto</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="166"/>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="165"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="166"/>
         <source>Work order</source>
         <translation>Orden de trabajo</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="271"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="272"/>
         <source>%n joint(s) listed.</source>
         <translation>
             <numerusform>%n soldadura en la lista.</numerusform>
@@ -6824,22 +6971,22 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="273"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="274"/>
         <source>Only the newest %1 from the journal: narrow the filter to see older ones.</source>
         <translation>Solo las %1 más recientes del registro: acote el filtro para ver las anteriores.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="277"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="278"/>
         <source>The journal could not be read (%1): only this session&apos;s joints are listed.</source>
         <translation>No se pudo leer el registro (%1): solo se listan las soldaduras de esta sesión.</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="281"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="282"/>
         <source>No journal yet: this session&apos;s joints only.</source>
         <translation>Aún no hay registro: solo las soldaduras de esta sesión.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pages/jointspage.cpp" line="360"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="362"/>
         <source>%n joint(s) written to %1.</source>
         <translation>
             <numerusform>%n soldadura escrita en %1.</numerusform>
@@ -6847,12 +6994,12 @@ Reset it?</source>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="372"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="374"/>
         <source>Export joints</source>
         <translation>Exportar soldaduras</translation>
     </message>
     <message>
-        <location filename="../app/gui/pages/jointspage.cpp" line="372"/>
+        <location filename="../app/gui/pages/jointspage.cpp" line="374"/>
         <source>CSV file (*.csv)</source>
         <translation>Archivo CSV (*.csv)</translation>
     </message>
@@ -8158,23 +8305,23 @@ Do you want to continue?</source>
         <translation>Último minuto de temperatura de punta y potencia</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="83"/>
         <location filename="../app/gui/widgets/sparkline.cpp" line="87"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="91"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="88"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="92"/>
         <source>%1 to %2</source>
         <translation>de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="100"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="104"/>
         <source>no samples yet</source>
         <translation>aún no hay muestras</translation>
     </message>
     <message>
-        <location filename="../app/gui/widgets/sparkline.cpp" line="151"/>
+        <location filename="../app/gui/widgets/sparkline.cpp" line="162"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
@@ -8255,7 +8402,7 @@ Do you want to continue?</source>
         <translation>el equipo en la dirección %1 no se identificó (%2): %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="98"/>
+        <location filename="../lib/link/discovery.cpp" line="103"/>
         <source>%n NAK(s) %1 (%2)</source>
         <translation>
             <numerusform>%n NAK %1 (%2)</numerusform>
@@ -8263,7 +8410,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="102"/>
+        <location filename="../lib/link/discovery.cpp" line="107"/>
         <source>%n answer(s) with a bad block check or format</source>
         <translation>
             <numerusform>%n respuesta con una suma de control o un formato incorrectos</numerusform>
@@ -8271,7 +8418,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="104"/>
+        <location filename="../lib/link/discovery.cpp" line="109"/>
         <source>%n frame(s) from an address not asked</source>
         <translation>
             <numerusform>%n trama de una dirección no consultada</numerusform>
@@ -8279,7 +8426,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/discovery.cpp" line="106"/>
+        <location filename="../lib/link/discovery.cpp" line="111"/>
         <source>%n byte(s) that were no frame</source>
         <translation>
             <numerusform>%n byte que no era una trama</numerusform>
@@ -8396,32 +8543,32 @@ Do you want to continue?</source>
         <translation>la respuesta llegó dañada (%1)</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="248"/>
+        <location filename="../lib/link/requestqueue.cpp" line="251"/>
         <source>unreadable data field &apos;%1&apos; in the answer</source>
         <translation>campo de datos ilegible &apos;%1&apos; en la respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="257"/>
+        <location filename="../lib/link/requestqueue.cpp" line="260"/>
         <source>the request could not be written</source>
         <translation>no se pudo escribir la petición</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="261"/>
+        <location filename="../lib/link/requestqueue.cpp" line="264"/>
         <source>no answer</source>
         <translation>sin respuesta</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="279"/>
+        <location filename="../lib/link/requestqueue.cpp" line="282"/>
         <source>NAK %1: %2</source>
         <translation>NAK %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="300"/>
+        <location filename="../lib/link/requestqueue.cpp" line="303"/>
         <source>%1: %2 (attempt %3)</source>
         <translation>%1: %2 (intento %3)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="318"/>
+        <location filename="../lib/link/requestqueue.cpp" line="321"/>
         <source>%1 after %n attempt(s)</source>
         <translation>
             <numerusform>%1 tras %n intento</numerusform>
@@ -8429,7 +8576,7 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/link/requestqueue.cpp" line="321"/>
+        <location filename="../lib/link/requestqueue.cpp" line="324"/>
         <source>%n byte(s) of garbage came instead</source>
         <translation>
             <numerusform>en su lugar llegó %n byte de basura</numerusform>
@@ -8437,17 +8584,17 @@ Do you want to continue?</source>
         </translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="324"/>
+        <location filename="../lib/link/requestqueue.cpp" line="327"/>
         <source>; the device may have carried it out: check before repeating</source>
         <translation>; puede que el equipo la haya ejecutado: compruébelo antes de repetir</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="395"/>
+        <location filename="../lib/link/requestqueue.cpp" line="398"/>
         <source>line lost: %1</source>
         <translation>línea perdida: %1</translation>
     </message>
     <message>
-        <location filename="../lib/link/requestqueue.cpp" line="397"/>
+        <location filename="../lib/link/requestqueue.cpp" line="400"/>
         <source>the line was lost: %1</source>
         <translation>se perdió la línea: %1</translation>
     </message>
