@@ -17,10 +17,6 @@ struct CfxTr {
 
 const QString kType = QStringLiteral("$type");
 
-QJsonValue nullable(const QString &text) {
-    return text.isEmpty() ? QJsonValue(QJsonValue::Null) : QJsonValue(text);
-}
-
 // A field that is absent or null reads as empty; one of another kind is refused.
 Outcome<QString> optionalText(const QJsonObject &json, const QString &name) {
     const QJsonValue value = json.value(name);
@@ -45,6 +41,10 @@ QString cfxDateTime(const QDateTime &time) {
     return time.toUTC().toString(Qt::ISODateWithMs);
 }
 
+QJsonValue cfxText(const QString &text) {
+    return text.isEmpty() ? QJsonValue(QJsonValue::Null) : QJsonValue(text);
+}
+
 QString cfxTimeSpan(qint64 ms) {
     const qint64 days = ms / 86400000;
     const qint64 hours = ms / 3600000 % 24, minutes = ms / 60000 % 60, seconds = ms / 1000 % 60;
@@ -67,9 +67,9 @@ QJsonObject Envelope::toJson() const {
             {QStringLiteral("Version"), QString::fromLatin1(kCfxVersion)},
             {QStringLiteral("TimeStamp"), cfxDateTime(timeStamp)},
             {QStringLiteral("UniqueID"), uniqueId.toString(QUuid::WithoutBraces)},
-            {QStringLiteral("Source"), nullable(source)},
-            {QStringLiteral("Target"), nullable(target)},
-            {QStringLiteral("RequestID"), nullable(requestId)},
+            {QStringLiteral("Source"), cfxText(source)},
+            {QStringLiteral("Target"), cfxText(target)},
+            {QStringLiteral("RequestID"), cfxText(requestId)},
             {QStringLiteral("MessageBody"), typed}};
 }
 

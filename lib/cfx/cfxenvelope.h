@@ -15,6 +15,7 @@
 #include <QByteArray>
 #include <QDateTime>
 #include <QJsonObject>
+#include <QJsonValue>
 #include <QMap>
 #include <QString>
 #include <QUuid>
@@ -75,6 +76,8 @@ struct AmqpMessage {
 [[nodiscard]] QString cfxDateTime(const QDateTime &time);
 // A duration as .NET's TimeSpan text: "00:01:00", "00:00:25.1230000", "1.02:03:04".
 [[nodiscard]] QString cfxTimeSpan(qint64 ms);
+// A text as the SDK writes it: null when empty.
+[[nodiscard]] QJsonValue cfxText(const QString &text);
 
 // gzip (RFC 1952) as the SDK's GZipStream writes and reads it.
 [[nodiscard]] QByteArray gzip(const QByteArray &data);

@@ -9,10 +9,6 @@ namespace {
 using Kind = journal::JournalEvent::Kind;
 using Severity = journal::JournalEvent::Severity;
 
-QJsonValue nullable(const QString &text) {
-    return text.isEmpty() ? QJsonValue(QJsonValue::Null) : QJsonValue(text);
-}
-
 QString handlePart(const QString &part) {
     static const QRegularExpression kOther(QStringLiteral("[^A-Za-z0-9_-]+"));
     QString cleaned = part.trimmed();
@@ -35,7 +31,7 @@ QString causeOf(Kind kind) {
 QJsonObject requestResult(const QString &result, const QString &message) {
     return {{QStringLiteral("Result"), result},
             {QStringLiteral("ResultCode"), 0},
-            {QStringLiteral("Message"), nullable(message)}};
+            {QStringLiteral("Message"), cfxText(message)}};
 }
 
 } // namespace
@@ -100,8 +96,8 @@ Message endpointConnected(const QString &handle, const QString &requestUri,
                           const QString &requestAddress) {
     return {QStringLiteral("CFX.EndpointConnected"),
             {{QStringLiteral("CFXHandle"), handle},
-             {QStringLiteral("RequestNetworkUri"), nullable(requestUri)},
-             {QStringLiteral("RequestTargetAddress"), nullable(requestAddress)}}};
+             {QStringLiteral("RequestNetworkUri"), cfxText(requestUri)},
+             {QStringLiteral("RequestTargetAddress"), cfxText(requestAddress)}}};
 }
 
 Message heartbeat(const QString &handle, qint64 periodMs, const QJsonValue &activeFaults) {
@@ -179,8 +175,8 @@ Message areYouThereResponse(const QString &handle, const QString &requestUri,
     return {QStringLiteral("CFX.AreYouThereResponse"),
             {{QStringLiteral("Result"), requestResult(QStringLiteral("Success"), QString())},
              {QStringLiteral("CFXHandle"), handle},
-             {QStringLiteral("RequestNetworkUri"), nullable(requestUri)},
-             {QStringLiteral("RequestTargetAddress"), nullable(requestAddress)}}};
+             {QStringLiteral("RequestNetworkUri"), cfxText(requestUri)},
+             {QStringLiteral("RequestTargetAddress"), cfxText(requestAddress)}}};
 }
 
 Message notSupportedResponse(const QString &request) {
