@@ -1478,7 +1478,7 @@
         <translation>die Verbindung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/cfxenvelope.cpp" line="30"/>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="26"/>
         <source>The CFX envelope&apos;s %1 is not a text.</source>
         <translation>%1 im CFX-Umschlag ist kein Text.</translation>
     </message>
@@ -2032,63 +2032,63 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="178"/>
+        <location filename="../app/cli/climonitor.cpp" line="186"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval erwartet Millisekunden (0: so schnell, wie die Leitung erlaubt)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="300"/>
+        <location filename="../app/cli/climonitor.cpp" line="312"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration erwartet Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="271"/>
+        <location filename="../app/cli/climonitor.cpp" line="279"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor braucht eine Station; keine gefunden</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="229"/>
+        <location filename="../app/cli/climonitor.cpp" line="237"/>
         <location filename="../app/cli/climonitorcsv.cpp" line="25"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="77"/>
+        <location filename="../app/cli/climonitor.cpp" line="78"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="101"/>
+        <location filename="../app/cli/climonitor.cpp" line="102"/>
         <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
         <translation>tipscope-cli: %1 zu schreiben ist fehlgeschlagen: %2; die Überwachung geht ohne die Datei weiter</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="161"/>
+        <location filename="../app/cli/climonitor.cpp" line="169"/>
         <source>reconnected to %1</source>
         <translation>wieder verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="195"/>
+        <location filename="../app/cli/climonitor.cpp" line="203"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: der Arbeitsbereich %1 hat keine Linien</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="230"/>
+        <location filename="../app/cli/climonitor.cpp" line="238"/>
         <source>permission denied</source>
         <translation>keine Berechtigung</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="231"/>
+        <location filename="../app/cli/climonitor.cpp" line="239"/>
         <source>no such folder</source>
         <translation>diesen Ordner gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="238"/>
+        <location filename="../app/cli/climonitor.cpp" line="246"/>
         <source>tipscope-cli: lines %1 and %2 would both write %3; rename one</source>
         <translation>tipscope-cli: die Leitungen %1 und %2 würden beide %3 schreiben; benennen Sie eine um</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="385"/>
+        <location filename="../app/cli/climonitor.cpp" line="411"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 Einträge konnten nicht im Journal %2 gespeichert werden: %3</translation>
     </message>
@@ -3237,17 +3237,17 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
 <context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="109"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="114"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>Lötstelle zu tief: die Lötspitze fiel %1 K unter den Sollwert (Grenze %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="115"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="120"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>Lötstelle langsam erholt: %1 s (Grenze %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="117"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="122"/>
         <source>joint did not recover within %1 s</source>
         <translation>Lötstelle hat sich in %1 s nicht erholt</translation>
     </message>
@@ -4194,6 +4194,32 @@ Exit-Codes: 0 OK; 1 Aufruffehler; 2 Wert vor dem Senden abgelehnt (nichts geschr
     </message>
 </context>
 <context>
+    <name>RecordingPlayback</name>
+    <message>
+        <location filename="../lib/model/recording/recordingplayback.cpp" line="38"/>
+        <source>the recording %1 cannot be played: %2</source>
+        <translation>die Aufzeichnung %1 kann nicht abgespielt werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/recordingplayback.cpp" line="60"/>
+        <source>the recording %1 holds no station port to play</source>
+        <translation>die Aufzeichnung %1 enthält keinen Stationsport zum Abspielen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/recordingplayback.cpp" line="67"/>
+        <source>playing the recording %1</source>
+        <translation>Aufzeichnung %1 wird abgespielt</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/recording/recordingplayback.cpp" line="105"/>
+        <source>the recording %1 played: %n sample(s)</source>
+        <translation>
+            <numerusform>die Aufzeichnung %1 ist abgespielt: %n Messwert</numerusform>
+            <numerusform>die Aufzeichnung %1 ist abgespielt: %n Messwerte</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>RemoteApply</name>
     <message>
         <location filename="../lib/plant/remoteapply.cpp" line="76"/>
@@ -4318,46 +4344,51 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="29"/>
-        <location filename="../lib/model/session.cpp" line="116"/>
-        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="30"/>
+        <location filename="../lib/model/session.cpp" line="131"/>
+        <location filename="../lib/model/session.cpp" line="134"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="115"/>
-        <location filename="../lib/model/session.cpp" line="128"/>
-        <location filename="../lib/model/session.cpp" line="136"/>
+        <location filename="../lib/model/session.cpp" line="90"/>
+        <source>reading the recording %1</source>
+        <translation>Aufzeichnung %1 wird gelesen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="130"/>
+        <location filename="../lib/model/session.cpp" line="143"/>
+        <location filename="../lib/model/session.cpp" line="151"/>
         <source>line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="152"/>
+        <location filename="../lib/model/session.cpp" line="167"/>
         <source>looking for devices on %1</source>
         <translation>Geräte an %1 werden gesucht</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="203"/>
+        <location filename="../lib/model/session.cpp" line="218"/>
         <source>found %1, software %2</source>
         <translation>%1 gefunden, Software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="204"/>
+        <location filename="../lib/model/session.cpp" line="219"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="215"/>
+        <location filename="../lib/model/session.cpp" line="230"/>
         <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät ließ sich erkennen; zurück kam: %2 (Robotermodus aus? falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="220"/>
+        <location filename="../lib/model/session.cpp" line="235"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>mit %1 verbunden, aber kein Gerät hat geantwortet (Robotermodus aus? Falsche Adressierung oder Baudrate?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="228"/>
+        <location filename="../lib/model/session.cpp" line="243"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n Gerät</numerusform>
@@ -4365,7 +4396,7 @@ Dauerhaft mit dieser udev-Regel:
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>connected to %1, but %2</source>
         <translation>mit %1 verbunden, aber %2</translation>
     </message>
@@ -4752,72 +4783,77 @@ Dauerhaft mit dieser udev-Regel:
         <translation>er ist eine Liste</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="47"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="49"/>
         <source>%1 must be text</source>
         <translation>%1 muss Text sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="55"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="57"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 muss eine ganze Zahl von %2 bis %3 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="63"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="65"/>
         <source>%1 must be true or false</source>
         <translation>%1 muss true oder false sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="72"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="74"/>
         <source>%1 must be one of %2</source>
         <translation>%1 muss eines von %2 sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="78"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="80"/>
         <source>%1 must be an object</source>
         <translation>%1 muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="101"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="103"/>
+        <source>%1 must name the recording file</source>
+        <translation>%1 muss die Aufzeichnungsdatei nennen</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="112"/>
         <source>%1 must name the serial port</source>
         <translation>%1 muss den seriellen Port nennen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="114"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="125"/>
         <source>%1 must be HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>%1 muss HOST:PORT sein (zum Beispiel 192.168.1.20:4001)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="146"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="157"/>
         <source>devices must be a list</source>
         <translation>devices muss eine Liste sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="152"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="163"/>
         <source>devices[%1] must be an object</source>
         <translation>devices[%1] muss ein Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="156"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="167"/>
         <source>%1 must be an address from 0 to 99, or null for the device without addresses</source>
         <translation>%1 muss eine Adresse von 0 bis 99 sein, oder null für das Gerät ohne Adressen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="164"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="175"/>
         <source>%1 must not be empty</source>
         <translation>%1 darf nicht leer sein</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="169"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="180"/>
         <source>devices[%1] names a device named before</source>
         <translation>devices[%1] benennt ein schon benanntes Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="228"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="243"/>
         <source>every line needs a name</source>
         <translation>jede Leitung braucht einen Namen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="235"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="250"/>
         <source>connection is missing</source>
         <translation>connection fehlt</translation>
     </message>
@@ -5871,47 +5907,52 @@ Dauerhaft mit dieser udev-Regel:
 <context>
     <name>tipscope::gui::DeviceTree</name>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="23"/>
+        <location filename="../app/gui/devicetree.cpp" line="24"/>
         <source>Devices</source>
         <translation>Geräte</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="120"/>
+        <location filename="../app/gui/devicetree.cpp" line="121"/>
         <source>Fleet overview</source>
         <translation>Geräteübersicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="184"/>
+        <location filename="../app/gui/devicetree.cpp" line="187"/>
+        <source>recording %1</source>
+        <translation>Aufzeichnung %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="188"/>
         <source>No line</source>
         <translation>Keine Leitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="190"/>
+        <location filename="../app/gui/devicetree.cpp" line="194"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="191"/>
+        <location filename="../app/gui/devicetree.cpp" line="195"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="199"/>
+        <location filename="../app/gui/devicetree.cpp" line="203"/>
         <source>feeder</source>
         <translation>Lotdrahtvorschub</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="199"/>
+        <location filename="../app/gui/devicetree.cpp" line="203"/>
         <source>station</source>
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="205"/>
+        <location filename="../app/gui/devicetree.cpp" line="209"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="210"/>
+        <location filename="../app/gui/devicetree.cpp" line="214"/>
         <source>Port %1: %2</source>
         <translation>Port %1: %2</translation>
     </message>
@@ -8771,17 +8812,17 @@ Möchten Sie fortfahren?</translation>
         <translation>Kein Gerät</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="58"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="63"/>
         <source>No device answered</source>
         <translation>Kein Gerät hat geantwortet</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="59"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="64"/>
         <source>Connecting</source>
         <translation>Verbindung wird aufgebaut</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="60"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="65"/>
         <source>Looking for devices</source>
         <translation>Suche nach Geräten</translation>
     </message>
@@ -8789,12 +8830,12 @@ Möchten Sie fortfahren?</translation>
 <context>
     <name>tipscope::model::Workspace</name>
     <message>
-        <location filename="../lib/model/workspace/workspace.cpp" line="26"/>
+        <location filename="../lib/model/workspace/workspace.cpp" line="28"/>
         <source>a line needs a name</source>
         <translation>eine Linie braucht einen Namen</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspace.cpp" line="29"/>
+        <location filename="../lib/model/workspace/workspace.cpp" line="31"/>
         <source>the workspace already has a line named &quot;%1&quot;</source>
         <translation>der Arbeitsbereich hat schon eine Linie namens „%1“</translation>
     </message>

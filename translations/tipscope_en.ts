@@ -136,6 +136,17 @@
     </message>
 </context>
 <context>
+    <name>RecordingPlayback</name>
+    <message numerus="yes">
+        <location filename="../lib/model/recording/recordingplayback.cpp" line="105"/>
+        <source>the recording %1 played: %n sample(s)</source>
+        <translation>
+            <numerusform>the recording %1 played: %n sample</numerusform>
+            <numerusform>the recording %1 played: %n samples</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>RemoteApply</name>
     <message numerus="yes">
         <location filename="../lib/plant/remoteapply.cpp" line="125"/>
@@ -149,7 +160,7 @@
 <context>
     <name>Session</name>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="228"/>
+        <location filename="../lib/model/session.cpp" line="243"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n device</numerusform>

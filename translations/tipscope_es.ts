@@ -1478,7 +1478,7 @@
         <translation>la conexión se cerró</translation>
     </message>
     <message>
-        <location filename="../lib/cfx/cfxenvelope.cpp" line="30"/>
+        <location filename="../lib/cfx/cfxenvelope.cpp" line="26"/>
         <source>The CFX envelope&apos;s %1 is not a text.</source>
         <translation>%1 del sobre CFX no es un texto.</translation>
     </message>
@@ -2032,63 +2032,63 @@
 <context>
     <name>CliMonitor</name>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="178"/>
+        <location filename="../app/cli/climonitor.cpp" line="186"/>
         <source>tipscope-cli: --interval takes milliseconds (0: as fast as the line allows)</source>
         <translation>tipscope-cli: --interval requiere milisegundos (0: tan rápido como permita la línea)</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="300"/>
+        <location filename="../app/cli/climonitor.cpp" line="312"/>
         <source>tipscope-cli: --duration takes seconds</source>
         <translation>tipscope-cli: --duration requiere segundos</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="271"/>
+        <location filename="../app/cli/climonitor.cpp" line="279"/>
         <source>tipscope-cli: monitor needs a station; none was found</source>
         <translation>tipscope-cli: monitor necesita una estación; no se encontró ninguna</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="229"/>
+        <location filename="../app/cli/climonitor.cpp" line="237"/>
         <location filename="../app/cli/climonitorcsv.cpp" line="25"/>
         <source>tipscope-cli: cannot write %1: %2</source>
         <translation>tipscope-cli: no se puede escribir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="77"/>
+        <location filename="../app/cli/climonitor.cpp" line="78"/>
         <source>P%1 --</source>
         <translation>P%1 --</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="101"/>
+        <location filename="../app/cli/climonitor.cpp" line="102"/>
         <source>tipscope-cli: writing %1 failed: %2; monitoring goes on without it</source>
         <translation>tipscope-cli: no se pudo escribir %1: %2; la monitorización sigue sin el archivo</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="161"/>
+        <location filename="../app/cli/climonitor.cpp" line="169"/>
         <source>reconnected to %1</source>
         <translation>reconectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="195"/>
+        <location filename="../app/cli/climonitor.cpp" line="203"/>
         <source>tipscope-cli: the workspace %1 has no lines</source>
         <translation>tipscope-cli: el espacio de trabajo %1 no tiene líneas</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="230"/>
+        <location filename="../app/cli/climonitor.cpp" line="238"/>
         <source>permission denied</source>
         <translation>permiso denegado</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="231"/>
+        <location filename="../app/cli/climonitor.cpp" line="239"/>
         <source>no such folder</source>
         <translation>no existe esa carpeta</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="238"/>
+        <location filename="../app/cli/climonitor.cpp" line="246"/>
         <source>tipscope-cli: lines %1 and %2 would both write %3; rename one</source>
         <translation>tipscope-cli: las líneas %1 y %2 escribirían ambas %3; cambie el nombre de una</translation>
     </message>
     <message>
-        <location filename="../app/cli/climonitor.cpp" line="385"/>
+        <location filename="../app/cli/climonitor.cpp" line="411"/>
         <source>%1 records could not be kept in the journal %2: %3</source>
         <translation>%1 registros no se pudieron guardar en el diario %2: %3</translation>
     </message>
@@ -3237,17 +3237,17 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
 <context>
     <name>JointWatcher</name>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="109"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="114"/>
         <source>joint too deep: the tip fell %1 K below the setpoint (limit %2 K)</source>
         <translation>soldadura demasiado profunda: la punta bajó %1 K por debajo de la consigna (límite %2 K)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="115"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="120"/>
         <source>joint recovered slowly: %1 s (limit %2 s)</source>
         <translation>soldadura con recuperación lenta: %1 s (límite %2 s)</translation>
     </message>
     <message>
-        <location filename="../lib/model/joints/jointwatcher.cpp" line="117"/>
+        <location filename="../lib/model/joints/jointwatcher.cpp" line="122"/>
         <source>joint did not recover within %1 s</source>
         <translation>la soldadura no se recuperó en %1 s</translation>
     </message>
@@ -4194,6 +4194,32 @@ perfil; 4 ninguna respuesta válida; 5 error de transporte; el diario (joints, j
     </message>
 </context>
 <context>
+    <name>RecordingPlayback</name>
+    <message>
+        <location filename="../lib/model/recording/recordingplayback.cpp" line="38"/>
+        <source>the recording %1 cannot be played: %2</source>
+        <translation>la grabación %1 no se puede reproducir: %2</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/recordingplayback.cpp" line="60"/>
+        <source>the recording %1 holds no station port to play</source>
+        <translation>la grabación %1 no contiene ningún puerto de estación que reproducir</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/recording/recordingplayback.cpp" line="67"/>
+        <source>playing the recording %1</source>
+        <translation>reproduciendo la grabación %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../lib/model/recording/recordingplayback.cpp" line="105"/>
+        <source>the recording %1 played: %n sample(s)</source>
+        <translation>
+            <numerusform>la grabación %1 se ha reproducido: %n muestra</numerusform>
+            <numerusform>la grabación %1 se ha reproducido: %n muestras</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>RemoteApply</name>
     <message>
         <location filename="../lib/plant/remoteapply.cpp" line="76"/>
@@ -4318,46 +4344,51 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>Session</name>
     <message>
-        <location filename="../lib/model/session.cpp" line="29"/>
-        <location filename="../lib/model/session.cpp" line="116"/>
-        <location filename="../lib/model/session.cpp" line="119"/>
+        <location filename="../lib/model/session.cpp" line="30"/>
+        <location filename="../lib/model/session.cpp" line="131"/>
+        <location filename="../lib/model/session.cpp" line="134"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="115"/>
-        <location filename="../lib/model/session.cpp" line="128"/>
-        <location filename="../lib/model/session.cpp" line="136"/>
+        <location filename="../lib/model/session.cpp" line="90"/>
+        <source>reading the recording %1</source>
+        <translation>leyendo la grabación %1</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/session.cpp" line="130"/>
+        <location filename="../lib/model/session.cpp" line="143"/>
+        <location filename="../lib/model/session.cpp" line="151"/>
         <source>line</source>
         <translation>línea</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="152"/>
+        <location filename="../lib/model/session.cpp" line="167"/>
         <source>looking for devices on %1</source>
         <translation>buscando equipos en %1</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="203"/>
+        <location filename="../lib/model/session.cpp" line="218"/>
         <source>found %1, software %2</source>
         <translation>se encontró %1, software %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="204"/>
+        <location filename="../lib/model/session.cpp" line="219"/>
         <source>unknown</source>
         <translation>desconocido</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="215"/>
+        <location filename="../lib/model/session.cpp" line="230"/>
         <source>connected to %1, but no device could be identified; what came back: %2 (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero no se pudo identificar ningún equipo; lo que volvió: %2 (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="220"/>
+        <location filename="../lib/model/session.cpp" line="235"/>
         <source>connected to %1, but no device answered (robot mode off? wrong addressing or baud rate?)</source>
         <translation>conectado a %1, pero ningún equipo respondió (¿modo robot desactivado? ¿direccionamiento o velocidad en baudios incorrectos?)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../lib/model/session.cpp" line="228"/>
+        <location filename="../lib/model/session.cpp" line="243"/>
         <source>%1, %n device(s)</source>
         <translation>
             <numerusform>%1, %n equipo</numerusform>
@@ -4365,7 +4396,7 @@ Hágalo permanente con esta regla de udev:
         </translation>
     </message>
     <message>
-        <location filename="../lib/model/session.cpp" line="210"/>
+        <location filename="../lib/model/session.cpp" line="225"/>
         <source>connected to %1, but %2</source>
         <translation>conectado a %1, pero %2</translation>
     </message>
@@ -4752,72 +4783,77 @@ Hágalo permanente con esta regla de udev:
         <translation>es una lista</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="47"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="49"/>
         <source>%1 must be text</source>
         <translation>%1 debe ser texto</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="55"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="57"/>
         <source>%1 must be a whole number from %2 to %3</source>
         <translation>%1 debe ser un número entero de %2 a %3</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="63"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="65"/>
         <source>%1 must be true or false</source>
         <translation>%1 debe ser true o false</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="72"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="74"/>
         <source>%1 must be one of %2</source>
         <translation>%1 debe ser uno de %2</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="78"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="80"/>
         <source>%1 must be an object</source>
         <translation>%1 debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="101"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="103"/>
+        <source>%1 must name the recording file</source>
+        <translation>%1 debe indicar el archivo de la grabación</translation>
+    </message>
+    <message>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="112"/>
         <source>%1 must name the serial port</source>
         <translation>%1 debe nombrar el puerto serie</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="114"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="125"/>
         <source>%1 must be HOST:PORT (for example 192.168.1.20:4001)</source>
         <translation>%1 debe ser HOST:PUERTO (por ejemplo 192.168.1.20:4001)</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="146"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="157"/>
         <source>devices must be a list</source>
         <translation>devices debe ser una lista</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="152"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="163"/>
         <source>devices[%1] must be an object</source>
         <translation>devices[%1] debe ser un objeto</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="156"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="167"/>
         <source>%1 must be an address from 0 to 99, or null for the device without addresses</source>
         <translation>%1 debe ser una dirección de 0 a 99, o null para el dispositivo sin direcciones</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="164"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="175"/>
         <source>%1 must not be empty</source>
         <translation>%1 no debe estar vacío</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="169"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="180"/>
         <source>devices[%1] names a device named before</source>
         <translation>devices[%1] nombra un dispositivo ya nombrado</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="228"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="243"/>
         <source>every line needs a name</source>
         <translation>cada línea necesita un nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="235"/>
+        <location filename="../lib/model/workspace/workspacelinejson.cpp" line="250"/>
         <source>connection is missing</source>
         <translation>falta connection</translation>
     </message>
@@ -5871,47 +5907,52 @@ Hágalo permanente con esta regla de udev:
 <context>
     <name>tipscope::gui::DeviceTree</name>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="23"/>
+        <location filename="../app/gui/devicetree.cpp" line="24"/>
         <source>Devices</source>
         <translation>Equipos</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="120"/>
+        <location filename="../app/gui/devicetree.cpp" line="121"/>
         <source>Fleet overview</source>
         <translation>Vista de la flota</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="184"/>
+        <location filename="../app/gui/devicetree.cpp" line="187"/>
+        <source>recording %1</source>
+        <translation>grabación %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/devicetree.cpp" line="188"/>
         <source>No line</source>
         <translation>Sin línea</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="190"/>
+        <location filename="../app/gui/devicetree.cpp" line="194"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="191"/>
+        <location filename="../app/gui/devicetree.cpp" line="195"/>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="199"/>
+        <location filename="../app/gui/devicetree.cpp" line="203"/>
         <source>feeder</source>
         <translation>alimentador</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="199"/>
+        <location filename="../app/gui/devicetree.cpp" line="203"/>
         <source>station</source>
         <translation>estación</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="205"/>
+        <location filename="../app/gui/devicetree.cpp" line="209"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/devicetree.cpp" line="210"/>
+        <location filename="../app/gui/devicetree.cpp" line="214"/>
         <source>Port %1: %2</source>
         <translation>Puerto %1: %2</translation>
     </message>
@@ -8771,17 +8812,17 @@ Do you want to continue?</source>
         <translation>Ningún equipo</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="58"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="63"/>
         <source>No device answered</source>
         <translation>Ningún equipo ha respondido</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="59"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="64"/>
         <source>Connecting</source>
         <translation>Conectando</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/linetile.cpp" line="60"/>
+        <location filename="../lib/model/workspace/linetile.cpp" line="65"/>
         <source>Looking for devices</source>
         <translation>Buscando equipos</translation>
     </message>
@@ -8789,12 +8830,12 @@ Do you want to continue?</source>
 <context>
     <name>tipscope::model::Workspace</name>
     <message>
-        <location filename="../lib/model/workspace/workspace.cpp" line="26"/>
+        <location filename="../lib/model/workspace/workspace.cpp" line="28"/>
         <source>a line needs a name</source>
         <translation>una línea necesita un nombre</translation>
     </message>
     <message>
-        <location filename="../lib/model/workspace/workspace.cpp" line="29"/>
+        <location filename="../lib/model/workspace/workspace.cpp" line="31"/>
         <source>the workspace already has a line named &quot;%1&quot;</source>
         <translation>el espacio de trabajo ya tiene una línea llamada «%1»</translation>
     </message>

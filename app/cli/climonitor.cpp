@@ -5,7 +5,8 @@
 // prints what the models hold: every --interval each port's latest tip temperature, setpoint,
 // power and status ("P1 --" while they are not current), a line per joint as it ends, and the
 // rows of --csv. The interval decides what is printed and written, never what is read or how
-// often. A lost line is said once and reconnects by itself.
+// often. A lost line is said once and reconnects by itself. A workspace line that is a recording
+// is played through the same path, and a monitor of recordings only ends once each is played.
 #include "clicommands.h"
 
 #include "climonitorcsv.h"
@@ -155,6 +156,13 @@ void followLine(MonitoredLine &line, QTextStream &err) {
     QObject::connect(
         line.session, &Session::stateChanged, line.session,
         [&line, &err](Session::State state, const QString &text) {
+            if (line.session->isPlayback()) {
+                // A recording is played once: said when it is over, or why it cannot be.
+                line.everConnected = line.everConnected || state == Session::State::Connected;
+                if (state == Session::State::Disconnected || state == Session::State::Failed)
+                    err << line.prefix << "# " << text << Qt::endl;
+                return;
+            }
             if (state == Session::State::Connected) {
                 if (line.lost)
                     err << line.prefix << "# "
@@ -278,6 +286,10 @@ int firstContact(MonitoredLine &line, QTextStream &err) {
 // At the end, per line: a line that never came up, or is down, failed; one without a station
 // was never monitored.
 int outcomeOf(const MonitoredLine &line) {
+    if (line.session->isPlayback())
+        return line.everConnected && line.session->state() == Session::State::Disconnected
+                   ? kOk
+                   : kRefused;
     if (!line.everConnected || line.session->state() != Session::State::Connected)
         return kTransport;
     if (!line.session->station())
@@ -370,9 +382,23 @@ int runMonitor(const CliOptions &o, QTextStream &out, QTextStream &err) {
     }
     if (durationS > 0)
         QTimer::singleShot(qint64(durationS * 1000), &loop, &QEventLoop::quit);
+    // Lines that are all recordings are over once each is played (or refused).
+    const auto played = [&lines] {
+        return std::all_of(lines.begin(), lines.end(), [](const MonitoredLine &line) {
+            const Session::State state = line.session->state();
+            return line.session->isPlayback() &&
+                   (state == Session::State::Disconnected || state == Session::State::Failed);
+        });
+    };
+    for (MonitoredLine &line : lines)
+        QObject::connect(line.session, &Session::stateChanged, &loop, [&loop, played] {
+            if (played())
+                loop.quit();
+        });
     catchStopSignals();
     quitLoopOnStop(loop);
-    loop.exec();
+    if (!played())
+        loop.exec();
 
     int worst = kOk;
     for (const MonitoredLine &line : lines)

@@ -1,5 +1,6 @@
 #include "devicetree.h"
 
+#include <QFileInfo>
 #include <QHeaderView>
 #include <QPointer>
 #include <QStyle>
@@ -181,7 +182,10 @@ void DeviceTree::relabelLine(QTreeWidgetItem *line) {
     const int lineIndex = line->data(0, kLineRole).toInt();
     Session *session = sessionOf(lineIndex);
     const QString where =
-        session->line() ? session->line()->transport().description() : tr("No line");
+        session->line() ? session->line()->transport().description()
+        : session->isPlayback()
+            ? tr("recording %1").arg(QFileInfo(session->settings().recordingPath).fileName())
+            : tr("No line");
     if (lineIndex == kBarLine) {
         line->setText(0, where);
     } else {

@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QFileInfo>
 
 namespace tipscope::model {
 
@@ -85,6 +86,11 @@ void Session::clearDevices() {
 void Session::connectTo(const Settings &settings) {
     disconnectFromLine();
     m_settings = settings;
+    if (isPlayback()) {
+        setState(State::Connecting, SessionTr::tr("reading the recording %1")
+                                        .arg(QFileInfo(settings.recordingPath).fileName()));
+        return;
+    }
     if (settings.line.kind == LineSettings::Kind::Demo) {
         m_demo = sim::SimLine::demo();
         if (settings.demoPaced) {
@@ -101,6 +107,15 @@ void Session::connectTo(const Settings &settings) {
     connect(m_line.get(), &Line::stateChanged, this, &Session::onLineState);
     setState(State::Connecting, m_line->stateText());
     m_line->open();
+}
+
+QString Session::playbackLine() const {
+    return QStringLiteral("recording ") + QFileInfo(m_settings.recordingPath).absoluteFilePath();
+}
+
+void Session::setPlaybackState(State state, const QString &text) {
+    if (isPlayback())
+        setState(state, text);
 }
 
 void Session::disconnectFromLine() {

@@ -48,6 +48,10 @@ public:
         // The demo line answers as a real station on a 19200-baud wire through a USB adapter
         // would; off, it answers at once (tests that do not measure the wire).
         bool demoPaced = true;
+        // A chart recording played as the line's samples instead of a wire (RecordingPlayback,
+        // which a workspace starts for such a line): no devices, nothing polled; the recorded
+        // tip curves reach the joint watcher and the journal as a wire's would.
+        QString recordingPath;
     };
 
     explicit Session(QObject *parent = nullptr);
@@ -56,6 +60,12 @@ public:
 
     void connectTo(const Settings &settings);
     void disconnectFromLine();
+    // A line played from a recording (Settings::recordingPath): the playback says how it goes
+    // (Connected while it plays, Disconnected once played, Failed when the file is refused).
+    [[nodiscard]] bool isPlayback() const { return !m_settings.recordingPath.isEmpty(); }
+    // The line as the identities of a playback's devices name it: "recording <absolute path>".
+    [[nodiscard]] QString playbackLine() const;
+    void setPlaybackState(State state, const QString &text);
 
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] QString stateText() const { return m_stateText; }

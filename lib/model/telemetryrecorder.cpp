@@ -34,9 +34,13 @@ TelemetryRecorder::TelemetryRecorder(Telemetry &telemetry, Clock clock, QObject 
     , m_clock(std::move(clock)) {}
 
 TelemetryKey TelemetryRecorder::keyOf(const DeviceModel &device, int port) {
+    return keyOf(device.identity(), port);
+}
+
+TelemetryKey TelemetryRecorder::keyOf(const DeviceIdentity &device, int port) {
     const QString channel =
         port > 0 ? QStringLiteral("port%1").arg(port) : QStringLiteral("feeder");
-    return device.identity().key() + QLatin1Char('|') + channel;
+    return device.key() + QLatin1Char('|') + channel;
 }
 
 void TelemetryRecorder::watch(DeviceModel *device) {

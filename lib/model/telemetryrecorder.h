@@ -30,6 +30,7 @@ public:
     // The key of a port's history (`port` > 0) or a feeder's (0): the device's identity and the
     // channel, "<identity key>|port2" or "<identity key>|feeder".
     [[nodiscard]] static TelemetryKey keyOf(const DeviceModel &device, int port);
+    [[nodiscard]] static TelemetryKey keyOf(const DeviceIdentity &device, int port);
 
     // Starts sampling the device's ports (a station) or its feed (a feeder).
     void watch(DeviceModel *device);

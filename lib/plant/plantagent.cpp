@@ -119,12 +119,9 @@ void PlantAgent::watchCfx() {
 
 QString PlantAgent::cfxHandleOf(const model::DeviceIdentity &device) {
     // The workspace line's name where the device is reached, else how it is reached.
-    QString line = device.line;
-    model::Workspace &workspace = m_lines.workspace();
-    for (int i = 0; i < workspace.count(); ++i)
-        for (const model::DeviceModel *found : workspace.session(i)->devices())
-            if (found->identity().line == device.line)
-                line = workspace.line(i).name;
+    const model::Workspace &workspace = m_lines.workspace();
+    const int index = workspace.lineOf(device);
+    const QString line = index >= 0 ? workspace.line(index).name : device.line;
     return cfx::endpointHandle(m_config.cfx->vendor, device.model,
                                QStringLiteral("%1-%2").arg(line).arg(device.address.value_or(0)));
 }

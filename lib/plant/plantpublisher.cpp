@@ -164,12 +164,10 @@ JournalForwarder::Place PlantPublisher::placeOf(const model::DeviceIdentity &ide
     // A device this run has not found (yet): its line is the one reached the same way.
     QString line = identity.line;
     QString name;
-    for (int i = 0; i < m_workspace.count(); ++i)
-        for (const model::DeviceModel *device : m_workspace.session(i)->devices())
-            if (device->identity().line == identity.line) {
-                line = m_workspace.line(i).name;
-                name = m_workspace.line(i).deviceName(identity.address);
-            }
+    if (const int i = m_workspace.lineOf(identity); i >= 0) {
+        line = m_workspace.line(i).name;
+        name = m_workspace.line(i).deviceName(identity.address);
+    }
     const QString family = protocol::Catalog::builtin().familyForModel(identity.model);
     return {deviceRoot(m_config.site, line, deviceLevel(name, identity.address, family)), line};
 }

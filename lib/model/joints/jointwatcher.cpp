@@ -24,18 +24,26 @@ JointWatcher::JointWatcher(Telemetry &telemetry, QObject *parent)
 void JointWatcher::watch(StationModel *station,
                          const std::function<TelemetryKey(int port)> &keyOf) {
     for (PortModel *port : station->ports()) {
-        const TelemetryKey key = keyOf(port->number());
-        const TelemetryBuffer *buffer = m_telemetry.buffer(key);
-        const qint64 from = buffer && !buffer->isEmpty() ? buffer->lastTime() + 1 : 0;
-        m_watched.insert_or_assign(key, Watched{station, port,
-                                                JointDetector(station->identity(), port->number()),
-                                                from, port->toolName()});
+        const Parameter *power = port->parameter(protocol::Role::Power);
+        Channel channel{station->identity(), port->number(), [port] { return port->toolName(); },
+                        power ? displayFormat(power->spec(), TemperatureUnit::Celsius).scale
+                              : Channel().powerScale};
+        watch(station, keyOf(port->number()), std::move(channel));
     }
 }
 
-void JointWatcher::unwatch(DeviceModel *device) {
+void JointWatcher::watch(QObject *owner, const TelemetryKey &key, Channel channel) {
+    const TelemetryBuffer *buffer = m_telemetry.buffer(key);
+    const qint64 from = buffer && !buffer->isEmpty() ? buffer->lastTime() + 1 : 0;
+    JointDetector detector(channel.device, channel.port);
+    QString tool = channel.tool ? channel.tool() : QString();
+    m_watched.insert_or_assign(
+        key, Watched{owner, std::move(channel), std::move(detector), from, std::move(tool)});
+}
+
+void JointWatcher::unwatch(QObject *owner) {
     for (auto it = m_watched.begin(); it != m_watched.end();) {
-        if (it->second.station != device && it->second.station) {
+        if (it->second.owner != owner && it->second.owner) {
             ++it;
             continue;
         }
@@ -47,7 +55,7 @@ void JointWatcher::unwatch(DeviceModel *device) {
 void JointWatcher::onSamplesAdded(const QList<TelemetryKey> &keys) {
     for (const TelemetryKey &key : keys) {
         const auto it = m_watched.find(key);
-        if (it == m_watched.end() || !it->second.station)
+        if (it == m_watched.end() || !it->second.owner)
             continue;
         if (const TelemetryBuffer *buffer = m_telemetry.buffer(key))
             feed(it->second, *buffer);
@@ -67,16 +75,13 @@ void JointWatcher::feed(Watched &w, const TelemetryBuffer &buffer) {
     const auto setpoints = series("setpoint");
     const auto powers = series("power");
     const auto statuses = series("status");
-    const Parameter *power = w.port->parameter(protocol::Role::Power);
-    const double powerScale =
-        power ? displayFormat(power->spec(), TemperatureUnit::Celsius).scale : 0.1;
     QList<TelemetryGap> gaps = buffer.gaps().within(from, to);
     qsizetype nextGap = 0;
-    const QString tool = w.port->toolName();
+    const QString tool = w.channel.tool ? w.channel.tool() : QString();
     if (tool != w.tool)
-        m_wear.toolChanged(w.port->station().identity(), w.port->number());
+        m_wear.toolChanged(w.channel.device, w.channel.port);
     w.tool = tool;
-    w.detector.setLimits(m_rules.limitsFor(w.port->number(), tool));
+    w.detector.setLimits(m_rules.limitsFor(w.channel.port, tool));
     for (qsizetype i = 0; i < tips.size(); ++i) {
         const qint64 t = tips.at(i).timeMs;
         while (nextGap < gaps.size() && gaps.at(nextGap).startMs <= t)
@@ -85,7 +90,7 @@ void JointWatcher::feed(Watched &w, const TelemetryBuffer &buffer) {
         r.timeMs = t;
         r.tip = tips.at(i).value;
         r.setpoint = setpoints.value(i).value;
-        r.powerPct = powers.value(i).value * powerScale;
+        r.powerPct = powers.value(i).value * w.channel.powerScale;
         r.working =
             PortStatus::fromNumber(statuses.value(i).value).mode == PortStatus::Mode::Working;
         r.tool = tool;

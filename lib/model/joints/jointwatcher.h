@@ -29,9 +29,21 @@ class JointWatcher : public QObject {
 public:
     explicit JointWatcher(Telemetry &telemetry, QObject *parent = nullptr);
 
+    // One port's history as the watcher reads it: whose it is, the tool on it (asked at each
+    // feed, so a tool change starts the tip's wear afresh), and the scale of its power series.
+    struct Channel {
+        DeviceIdentity device;
+        int port = 0;
+        std::function<QString()> tool;
+        double powerScale = 0.1; // wire units to %
+    };
+
     // Watches every port of `station`, whose histories are under `keyOf(station, port)`.
     void watch(StationModel *station, const std::function<TelemetryKey(int port)> &keyOf);
-    void unwatch(DeviceModel *device);
+    // Watches the history under `key` for `owner`, which need not be a device model (a
+    // recording played as a line has none); watching ends when the owner is gone or unwatched.
+    void watch(QObject *owner, const TelemetryKey &key, Channel channel);
+    void unwatch(QObject *owner);
     void setRules(const JointLimitRules &rules) { m_rules = rules; }
     [[nodiscard]] const JointLimitRules &rules() const { return m_rules; }
 
@@ -45,8 +57,8 @@ Q_SIGNALS:
 
 private:
     struct Watched {
-        QPointer<StationModel> station;
-        PortModel *port = nullptr;
+        QPointer<QObject> owner;
+        Channel channel;
         JointDetector detector;
         qint64 fedUntilMs = 0; // samples up to here are fed
         QString tool;          // the port's tool when it was last fed

@@ -89,6 +89,11 @@ void Telemetry::setMaxSignalsPerSecond(int rate) {
     m_coalesceTimer.setInterval((1000 + m_maxSignalsPerSecond - 1) / m_maxSignalsPerSecond);
 }
 
+void Telemetry::notifyNow() {
+    m_coalesceTimer.stop();
+    emitSamplesAdded();
+}
+
 void Telemetry::emitSamplesAdded() {
     QList<TelemetryKey> changed;
     for (auto &[key, entry] : m_entries) {

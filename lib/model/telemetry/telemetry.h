@@ -68,6 +68,11 @@ public:
     // (TelemetryBuffer::markGap); views are told as for samples. False for an unknown key.
     bool markGap(const TelemetryKey &key, qint64 timeMs, TelemetryGap::Cause cause);
 
+    // samplesAdded() now for what was appended since the last one, rather than at the timer: a
+    // playback appends a recording's hours in a few turns of the event loop, and its readers
+    // must see each stretch before the full-rate tier folds it.
+    void notifyNow();
+
     // Clamped to 1..1000.
     void setMaxSignalsPerSecond(int rate);
     [[nodiscard]] int maxSignalsPerSecond() const { return m_maxSignalsPerSecond; }

@@ -47,7 +47,12 @@ FleetTileState LineTile::state() const {
     // Up means a device could be reached; until one answers, nothing on this line is known.
     s.lineUp = false;
     s.lineOnly = true;
-    if (isDown(session.state())) {
+    if (session.isPlayback()) {
+        // A recording has no device to reach: how its playback goes, a problem only if refused.
+        s.lineText = session.stateText();
+        s.problems.append({session.state() == Session::State::Failed ? Level::Error : Level::Info,
+                           asSentence(session.stateText())});
+    } else if (isDown(session.state())) {
         s.downSinceMs = m_downSinceMs;
         s.lineText = FleetTile::downText(m_downSinceMs, m_clock());
         const QString why = session.line() ? session.line()->lastError() : QString();

@@ -1,5 +1,7 @@
 #include "model/workspace/workspace.h"
 
+#include "model/recording/recordingplayback.h"
+
 namespace tipscope::model {
 
 Workspace::Workspace(QObject *parent)
@@ -18,7 +20,7 @@ void Workspace::open(const WorkspaceFile &file) {
     Q_EMIT linesChanged();
     // Connected after every session exists, so a line's signals find all the others in place.
     for (int i = 0; i < count(); ++i)
-        m_sessions.at(size_t(i))->connectTo(m_file.lines.at(i).session);
+        connectLine(i);
 }
 
 protocol::Outcome<void> Workspace::addLine(const WorkspaceLine &line) {
@@ -31,8 +33,15 @@ protocol::Outcome<void> Workspace::addLine(const WorkspaceLine &line) {
     const int index = count();
     startSession(index);
     Q_EMIT linesChanged();
-    m_sessions.back()->connectTo(line.session);
+    connectLine(index);
     return {};
+}
+
+void Workspace::connectLine(int i) {
+    Session &session = *m_sessions.at(size_t(i));
+    session.connectTo(m_file.lines.at(i).session);
+    if (session.isPlayback())
+        RecordingPlayback::start(session);
 }
 
 void Workspace::startSession(int i) {
@@ -69,6 +78,18 @@ int Workspace::indexOf(const QString &name) const {
     for (int i = 0; i < count(); ++i)
         if (m_file.lines.at(i).name == name)
             return i;
+    return -1;
+}
+
+int Workspace::lineOf(const DeviceIdentity &device) const {
+    for (int i = 0; i < count(); ++i) {
+        const Session &s = *m_sessions.at(size_t(i));
+        if (s.isPlayback() && s.playbackLine() == device.line)
+            return i;
+        for (const DeviceModel *found : s.devices())
+            if (found->identity().line == device.line)
+                return i;
+    }
     return -1;
 }
 

@@ -39,6 +39,9 @@ public:
     [[nodiscard]] Session *session(int index) const { return m_sessions.at(size_t(index)).get(); }
     // The index of the line named `name`, or -1.
     [[nodiscard]] int indexOf(const QString &name) const;
+    // The index of the line that reaches `device` (a device found on it, or the recording it
+    // plays), or -1 for a device none of the lines has found.
+    [[nodiscard]] int lineOf(const DeviceIdentity &device) const;
     // What people call `device`: the name its line gives its address, else its model.
     [[nodiscard]] QString deviceName(int index, const DeviceModel &device) const;
 
@@ -53,6 +56,8 @@ Q_SIGNALS:
 
 private:
     void startSession(int index);
+    // Connects the line's session as the file says, and plays it when it is a recording.
+    void connectLine(int index);
 
     WorkspaceFile m_file;
     JointLimitRules m_shared;

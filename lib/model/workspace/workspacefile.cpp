@@ -111,9 +111,15 @@ Outcome<WorkspaceFile> WorkspaceFile::load(const QString &path) {
                                                : problem->detail));
         }
     }
-    const auto file = fromJson(std::get<QJsonObject>(read));
-    if (!file)
-        return failure(QStringLiteral("%1: %2").arg(shown, file.error()));
+    const auto parsed = fromJson(std::get<QJsonObject>(read));
+    if (!parsed)
+        return failure(QStringLiteral("%1: %2").arg(shown, parsed.error()));
+    WorkspaceFile file = parsed.value();
+    // A recording named relative to the workspace is found beside it, from any working folder.
+    const QDir folder = QFileInfo(path).absoluteDir();
+    for (WorkspaceLine &line : file.lines)
+        if (!line.session.recordingPath.isEmpty())
+            line.session.recordingPath = folder.absoluteFilePath(line.session.recordingPath);
     return file;
 }
 

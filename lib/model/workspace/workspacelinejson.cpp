@@ -21,8 +21,10 @@ struct WorkspaceLineJsonTr {
 using protocol::failure;
 using protocol::Outcome;
 
-const QStringList kKinds = {QStringLiteral("serial"), QStringLiteral("tcp"),
-                            QStringLiteral("demo")};
+// The line kinds in link::LineSettings::Kind's order, then a recording played as a line.
+const QStringList kKinds = {QStringLiteral("serial"), QStringLiteral("tcp"), QStringLiteral("demo"),
+                            QStringLiteral("recording")};
+const int kRecordingKind = 3;
 const QStringList kModes = {QStringLiteral("auto"), QStringLiteral("with"),
                             QStringLiteral("without")};
 const QStringList kParities = {QStringLiteral("none"), QStringLiteral("even"),
@@ -91,9 +93,18 @@ private:
         return failure(var##_.error());                                                            \
     const auto &var = var##_.value()
 
-Outcome<void> readConnection(const QJsonObject &json, link::LineSettings &line) {
+Outcome<void> readConnection(const QJsonObject &json, Session::Settings &session) {
     const Fields f(json, QStringLiteral("connection."));
     TAKE(kind, f.oneOf(QStringLiteral("kind"), kKinds, 0));
+    link::LineSettings &line = session.line;
+    if (kind == kRecordingKind) {
+        TAKE(path, f.text(QStringLiteral("path")));
+        if (path.isEmpty())
+            return failure(WorkspaceLineJsonTr::tr("%1 must name the recording file")
+                               .arg(f.name(QStringLiteral("path"))));
+        session.recordingPath = path;
+        return {};
+    }
     line.kind = link::LineSettings::Kind(kind);
     if (line.kind == link::LineSettings::Kind::Serial) {
         TAKE(port, f.text(QStringLiteral("port")));
@@ -172,7 +183,11 @@ Outcome<QMap<int, QString>> readDeviceNames(const QJsonValue &value) {
     return names;
 }
 
-QJsonObject connectionJson(const link::LineSettings &line) {
+QJsonObject connectionJson(const Session::Settings &session) {
+    if (!session.recordingPath.isEmpty())
+        return {{QStringLiteral("kind"), kKinds.at(kRecordingKind)},
+                {QStringLiteral("path"), session.recordingPath}};
+    const link::LineSettings &line = session.line;
     QJsonObject o{{QStringLiteral("kind"), kKinds.value(int(line.kind))}};
     if (line.kind == link::LineSettings::Kind::Serial) {
         o.insert(QStringLiteral("port"), line.serial.portName);
@@ -203,7 +218,7 @@ QJsonObject workspaceLineToJson(const WorkspaceLine &line) {
     QJsonObject o{{QStringLiteral("name"), line.name},
                   {QStringLiteral("cell"), line.cell},
                   {QStringLiteral("location"), line.location},
-                  {QStringLiteral("connection"), connectionJson(s.line)},
+                  {QStringLiteral("connection"), connectionJson(s)},
                   {QStringLiteral("link"),
                    QJsonObject{{QStringLiteral("robot_address"), s.line.queue.robotAddress},
                                {QStringLiteral("turnaround_ms"), s.line.queue.turnaroundMs},
@@ -237,7 +252,7 @@ Outcome<WorkspaceLine> workspaceLineFromJson(const QJsonObject &json) {
     TAKE(linkJson, f.object(QStringLiteral("link")));
     TAKE(addressing, f.object(QStringLiteral("addressing")));
     for (const Outcome<void> &read :
-         {readConnection(connection, line.session.line), readLink(linkJson, line.session.line),
+         {readConnection(connection, line.session), readLink(linkJson, line.session.line),
           readAddressing(addressing, line.session)})
         if (!read)
             return failure(read.error());
