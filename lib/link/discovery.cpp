@@ -112,18 +112,26 @@ QString Discovery::whatCameBack() const {
     return heard.join(QLatin1String("; "));
 }
 
-void Discovery::probe(std::optional<int> address, int slot) {
+std::optional<Request> Discovery::modelNameRequest(std::optional<int> address, bool patient) {
     // Identification comes before the family is known: the first model-name command of any.
     const CommandSpec *modelName = Catalog::builtin().command(Role::ModelName);
-    if (!modelName) {
+    if (!modelName)
+        return std::nullopt;
+    Request r = Request::read(address, modelName->pattern.toLatin1(), Priority::UserRead);
+    if (patient)
+        r.minTurnaroundMs = kNamedDeviceTurnaroundMs;
+    return r;
+}
+
+void Discovery::probe(std::optional<int> address, int slot) {
+    std::optional<Request> asked = modelNameRequest(address, m_named);
+    if (!asked) {
         m_failure = IdentifyFailure{IdentifyFailure::Kind::NoModelNameCommand, {}, {}, {}, {}};
         return;
     }
-    Request r = Request::read(address, modelName->pattern.toLatin1(), Priority::UserRead);
+    Request &r = *asked;
     m_asked = "R-" + r.command;
-    if (m_named) {
-        r.minTurnaroundMs = kNamedDeviceTurnaroundMs;
-    } else {
+    if (!m_named) {
         r.retries = 1; // an absent device costs one timeout more, a noisy line still finds it
         r.probe = true;
     }
@@ -160,10 +168,11 @@ void Discovery::askAgain(int address) {
         return;
     m_askedAgain.insert(address);
     const int slot = m_unanswered.value(address);
-    const CommandSpec *modelName = Catalog::builtin().command(Role::ModelName);
-    Request r = Request::read(address, modelName->pattern.toLatin1(), Priority::UserRead);
-    r.minTurnaroundMs = kNamedDeviceTurnaroundMs;
-    Reply *reply = m_queue.enqueue(r, this);
+    // As patient as with a named device: this one is there, but slower than a search waits.
+    const std::optional<Request> r = modelNameRequest(address, true);
+    if (!r)
+        return;
+    Reply *reply = m_queue.enqueue(*r, this);
     ++m_outstanding;
     connect(reply, &Reply::finished, this, [this, reply, address, slot] {
         reply->deleteLater();

@@ -19,6 +19,7 @@
 #include "frametap.h"
 #include "linkstats.h"
 #include "reply.h"
+#include "requestqueue.h"
 
 #include "protocol/outcome.h"
 
@@ -34,7 +35,6 @@ struct ResolvedCommand;
 
 namespace tipscope::link {
 
-class RequestQueue;
 class Reply;
 
 struct DeviceInfo {
@@ -107,6 +107,10 @@ private:
     [[nodiscard]] Identification identificationOf(const std::optional<DeviceInfo> &found) const;
     // A frame nobody asked for during a search: a probe's late answer names a device there.
     void onTap(const TapEvent &event);
+    // The model-name read every probe sends; `patient` waits as long as for a named device.
+    // None when the catalog has no model-name command.
+    [[nodiscard]] static std::optional<Request> modelNameRequest(std::optional<int> address,
+                                                                 bool patient);
     void askAgain(int address);
 
     RequestQueue &m_queue;
