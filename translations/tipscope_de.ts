@@ -112,47 +112,52 @@
         <translation>cfx.password_file und cfx.password_env: nur eines von beiden angeben</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="231"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="234"/>
+        <source>broker is false: then a cfx section must say where the lines are published</source>
+        <translation>broker ist false: dann muss ein cfx-Abschnitt sagen, wohin die Linien veröffentlicht werden</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="237"/>
         <source>site must name the site</source>
         <translation>site muss den Standort nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="233"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="239"/>
         <source>site must be at most %1 characters long, not %2</source>
         <translation>site darf höchstens %1 Zeichen lang sein, nicht %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="238"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="244"/>
         <source>site must not hold control characters</source>
         <translation>site darf keine Steuerzeichen enthalten</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="246"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace muss die Arbeitsbereichsdatei der zu betreibenden Linien nennen</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="269"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="275"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: diese Datei gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="272"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>die Konfiguration %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="276"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="282"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>die Konfiguration %1 ist zu groß, um eine zu sein</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="284"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>die Konfiguration %1 ist kein JSON-Objekt: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="280"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="286"/>
         <source>it is a list</source>
         <translation>es ist eine Liste</translation>
     </message>
@@ -175,7 +180,15 @@
         <translation>als %1, Passwort aus %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="40"/>
+        <location filename="../app/agent/main.cpp" line="41"/>
+        <source>site %1, %n line(s) (%2), no MQTT broker: CFX only</source>
+        <translation>
+            <numerusform>Standort %1, %n Linie (%2), kein MQTT-Broker: nur CFX</numerusform>
+            <numerusform>Standort %1, %n Linien (%2), kein MQTT-Broker: nur CFX</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/agent/main.cpp" line="44"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>Standort %1, %n Linie (%2), Broker %3:%4%5 %6</numerusform>
@@ -183,67 +196,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="44"/>
+        <location filename="../app/agent/main.cpp" line="48"/>
         <source> with TLS</source>
         <translation> mit TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="56"/>
+        <location filename="../app/agent/main.cpp" line="60"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Betreibt die Linien eines Arbeitsbereichs ohne Bildschirm, hält ihre Lötstellen und Ereignisse im Journal fest und veröffentlicht sie an einen MQTT-Broker.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="63"/>
+        <location filename="../app/agent/main.cpp" line="67"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>Die Konfiguration des Agenten (Vorgabe %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="64"/>
+        <location filename="../app/agent/main.cpp" line="68"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="67"/>
+        <location filename="../app/agent/main.cpp" line="71"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Liest die Konfiguration und ihren Arbeitsbereich, meldet Fehler und beendet sich.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="74"/>
+        <location filename="../app/agent/main.cpp" line="78"/>
         <source>unexpected argument %1</source>
         <translation>unerwartetes Argument %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="90"/>
+        <location filename="../app/agent/main.cpp" line="94"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="94"/>
+        <location filename="../app/agent/main.cpp" line="98"/>
         <source>%1 is good: %2</source>
         <translation>%1 ist in Ordnung: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="106"/>
+        <location filename="../app/agent/main.cpp" line="110"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>Konfiguration abgelehnt, die laufende bleibt: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="110"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
         <source>reloading: %1</source>
         <translation>neu laden: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="114"/>
+        <location filename="../app/agent/main.cpp" line="118"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 startet: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="119"/>
+        <location filename="../app/agent/main.cpp" line="123"/>
         <source>stopped: %1</source>
         <translation>beendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="122"/>
+        <location filename="../app/agent/main.cpp" line="126"/>
         <source>stopped</source>
         <translation>beendet</translation>
     </message>

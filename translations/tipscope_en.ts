@@ -4,7 +4,15 @@
 <context>
     <name>AgentMain</name>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="40"/>
+        <location filename="../app/agent/main.cpp" line="41"/>
+        <source>site %1, %n line(s) (%2), no MQTT broker: CFX only</source>
+        <translation>
+            <numerusform>site %1, %n line (%2), no MQTT broker: CFX only</numerusform>
+            <numerusform>site %1, %n lines (%2), no MQTT broker: CFX only</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/agent/main.cpp" line="44"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>site %1, %n line (%2), broker %3:%4%5 %6</numerusform>

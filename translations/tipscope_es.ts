@@ -112,47 +112,52 @@
         <translation>cfx.password_file y cfx.password_env: indique solo uno de ellos</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="231"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="234"/>
+        <source>broker is false: then a cfx section must say where the lines are published</source>
+        <translation>broker es false: entonces una sección cfx debe indicar dónde se publican las líneas</translation>
+    </message>
+    <message>
+        <location filename="../lib/plant/agentconfig.cpp" line="237"/>
         <source>site must name the site</source>
         <translation>site debe indicar la planta</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="233"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="239"/>
         <source>site must be at most %1 characters long, not %2</source>
         <translation>site admite como máximo %1 caracteres, no %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="238"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="244"/>
         <source>site must not hold control characters</source>
         <translation>site no puede contener caracteres de control</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="240"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="246"/>
         <source>workspace must name the workspace file of the lines to run</source>
         <translation>workspace debe indicar el archivo de espacio de trabajo de las líneas que se ejecutan</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="269"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="275"/>
         <source>cannot read the configuration %1: there is no such file</source>
         <translation>no se puede leer la configuración %1: no existe ese archivo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="272"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
         <source>cannot read the configuration %1: %2</source>
         <translation>no se puede leer la configuración %1: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="276"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="282"/>
         <source>the configuration %1 is too big to be one</source>
         <translation>la configuración %1 es demasiado grande para serlo</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="278"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="284"/>
         <source>the configuration %1 is not a JSON object: %2</source>
         <translation>la configuración %1 no es un objeto JSON: %2</translation>
     </message>
     <message>
-        <location filename="../lib/plant/agentconfig.cpp" line="280"/>
+        <location filename="../lib/plant/agentconfig.cpp" line="286"/>
         <source>it is a list</source>
         <translation>es una lista</translation>
     </message>
@@ -175,7 +180,15 @@
         <translation>como %1, contraseña de %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/agent/main.cpp" line="40"/>
+        <location filename="../app/agent/main.cpp" line="41"/>
+        <source>site %1, %n line(s) (%2), no MQTT broker: CFX only</source>
+        <translation>
+            <numerusform>planta %1, %n línea (%2), sin broker MQTT: solo CFX</numerusform>
+            <numerusform>planta %1, %n líneas (%2), sin broker MQTT: solo CFX</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/agent/main.cpp" line="44"/>
         <source>site %1, %n line(s) (%2), broker %3:%4%5 %6</source>
         <translation>
             <numerusform>planta %1, %n línea (%2), broker %3:%4%5 %6</numerusform>
@@ -183,67 +196,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="44"/>
+        <location filename="../app/agent/main.cpp" line="48"/>
         <source> with TLS</source>
         <translation> con TLS</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="56"/>
+        <location filename="../app/agent/main.cpp" line="60"/>
         <source>Runs the lines of a workspace without a screen, keeps their joints and events in the journal and publishes them to an MQTT broker.</source>
         <translation>Ejecuta las líneas de un espacio de trabajo sin pantalla, guarda sus soldaduras y eventos en el diario y los publica en un broker MQTT.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="63"/>
+        <location filename="../app/agent/main.cpp" line="67"/>
         <source>The agent&apos;s configuration (default %1).</source>
         <translation>La configuración del agente (por omisión %1).</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="64"/>
+        <location filename="../app/agent/main.cpp" line="68"/>
         <source>file</source>
         <translation>archivo</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="67"/>
+        <location filename="../app/agent/main.cpp" line="71"/>
         <source>Reads the configuration and its workspace, says what is wrong, and exits.</source>
         <translation>Lee la configuración y su espacio de trabajo, indica lo que está mal y termina.</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="74"/>
+        <location filename="../app/agent/main.cpp" line="78"/>
         <source>unexpected argument %1</source>
         <translation>argumento inesperado %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="90"/>
+        <location filename="../app/agent/main.cpp" line="94"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="94"/>
+        <location filename="../app/agent/main.cpp" line="98"/>
         <source>%1 is good: %2</source>
         <translation>%1 es correcta: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="106"/>
+        <location filename="../app/agent/main.cpp" line="110"/>
         <source>configuration refused, the running one stays: %1</source>
         <translation>configuración rechazada, se mantiene la actual: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="110"/>
+        <location filename="../app/agent/main.cpp" line="114"/>
         <source>reloading: %1</source>
         <translation>recargando: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="114"/>
+        <location filename="../app/agent/main.cpp" line="118"/>
         <source>tipscope-agent %1 starting: %2</source>
         <translation>tipscope-agent %1 arrancando: %2</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="119"/>
+        <location filename="../app/agent/main.cpp" line="123"/>
         <source>stopped: %1</source>
         <translation>detenido: %1</translation>
     </message>
     <message>
-        <location filename="../app/agent/main.cpp" line="122"/>
+        <location filename="../app/agent/main.cpp" line="126"/>
         <source>stopped</source>
         <translation>detenido</translation>
     </message>

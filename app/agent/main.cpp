@@ -37,6 +37,10 @@ QString summary(const plant::AgentConfig &c) {
     QStringList lines;
     for (const model::WorkspaceLine &line : c.workspace.lines)
         lines << line.name;
+    if (!c.mqtt)
+        return AgentMainTr::tr("site %1, %n line(s) (%2), no MQTT broker: CFX only", nullptr,
+                               int(lines.size()))
+            .arg(c.site, lines.join(QStringLiteral(", ")));
     return AgentMainTr::tr("site %1, %n line(s) (%2), broker %3:%4%5 %6", nullptr,
                            int(lines.size()))
         .arg(c.site, lines.join(QStringLiteral(", ")), c.broker.host)

@@ -224,9 +224,15 @@ Outcome<AgentConfig> AgentConfig::fromJson(const QJsonObject &json, const QStrin
     live.number("interval_ms", c.live.intervalMs, 100, 3600000);
     live.number("batch_ms", c.live.batchMs, 0, 600000);
     QString passwordFile, passwordEnv;
-    readBroker(top, c, folder, &problem, passwordFile, passwordEnv);
+    // "broker": false publishes no MQTT (CFX only); a missing section is the local broker.
+    c.mqtt = json.value(QStringLiteral("broker")) != QJsonValue(false);
+    if (c.mqtt)
+        readBroker(top, c, folder, &problem, passwordFile, passwordEnv);
     SecretPlace cfxSecret;
     c.cfx = readCfx(top, folder, &problem, cfxSecret);
+    if (!c.mqtt && !c.cfx)
+        top.fail(AgentConfigTr::tr("broker is false: then a cfx section must say where the "
+                                   "lines are published"));
     if (c.site.trimmed().isEmpty())
         top.fail(AgentConfigTr::tr("site must name the site"));
     else if (c.site.size() > AgentConfig::kMaxSiteChars)

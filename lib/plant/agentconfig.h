@@ -40,6 +40,9 @@ struct AgentConfig {
     QString workspacePath;
     model::WorkspaceFile workspace;
     QString journalPath; // empty: the journal every TipScope program shares
+    // The lines are published over MQTT ("broker", the local broker when left out); with
+    // "broker": false they are not, and a "cfx" section must publish them. Journaled either way.
+    bool mqtt = true;
     mqtt::MqttSettings broker;
     QString passwordSource; // "file /etc/tipscope/broker-password", for logs (never the value)
     LiveSettings live;

@@ -57,19 +57,29 @@ void PlantAgent::start(const AgentConfig &config) {
             [](qint64 total, const QString &reason) {
                 qCCritical(lcAgent, "%lld records lost: %s", total, qPrintable(reason));
             });
-    m_publisher = std::make_unique<PlantPublisher>(m_lines.workspace(), journal);
-    connect(m_publisher.get(), &PlantPublisher::stopped, this, [this] {
-        m_mqttStopped = true;
-        finishIfStopped();
-    });
     openLines();
-    m_publisher->start(m_config, m_who);
-    watchClient();
+    startMqtt();
     startCfx();
 }
 
+void PlantAgent::startMqtt() {
+    if (!m_config.mqtt) {
+        m_publisher.reset();
+        return;
+    }
+    if (!m_publisher) {
+        m_publisher = std::make_unique<PlantPublisher>(m_lines.workspace(), m_lines.journal());
+        connect(m_publisher.get(), &PlantPublisher::stopped, this, [this] {
+            m_mqttStopped = true;
+            finishIfStopped();
+        });
+    }
+    m_publisher->start(m_config, m_who);
+    watchClient();
+}
+
 void PlantAgent::finishIfStopped() {
-    if (!m_stopping || !m_mqttStopped || m_cfx)
+    if (!m_stopping || !m_mqttStopped || m_cfx || std::exchange(m_finished, true))
         return;
     if (!m_lines.finish(10000))
         qCCritical(lcAgent, "the journal could not write everything before stopping");
@@ -153,8 +163,7 @@ void PlantAgent::reload(const AgentConfig &config) {
     m_config.journalPath = journalPath;
     if (linesChanged)
         openLines();
-    m_publisher->start(m_config, m_who);
-    watchClient();
+    startMqtt();
     startCfx();
     qCInfo(lcAgent, "configuration %s applied%s", qPrintable(config.path),
            linesChanged ? ", lines opened again" : "");
@@ -176,11 +185,15 @@ void PlantAgent::stop() {
         return;
     m_stopping = true;
     qCInfo(lcAgent, "stopping: every device goes offline");
-    m_publisher->stop();
 #ifdef TIPSCOPE_WITH_CFX
     if (m_cfx)
         m_cfx->stop();
 #endif
+    if (m_publisher)
+        m_publisher->stop();
+    else
+        m_mqttStopped = true;
+    finishIfStopped();
 }
 
 void PlantAgent::openLines() {

@@ -2,8 +2,9 @@
 // monitor --mqtt`. It opens the configuration's workspace through the LineService (every line
 // polled live, each with its own request queue and reconnection, its joints and events kept in
 // the journal and judged by the shared joint limits, as in every front end) and publishes the
-// lines to the broker (PlantPublisher) with store and forward from the journal. With a "cfx"
-// section it also makes every station an IPC-CFX endpoint (cfx/cfxpublisher.h, docs/cfx.md).
+// lines to the MQTT broker (PlantPublisher) with store and forward from the journal. With a "cfx"
+// section it also makes every station an IPC-CFX endpoint (cfx/cfxpublisher.h, docs/cfx.md);
+// with "broker": false that is all it publishes.
 // The demo line of a workspace solders and rests, so the agent can be tried without a station.
 //
 // reload() applies a new configuration: the lines are opened again only when the workspace
@@ -59,6 +60,8 @@ Q_SIGNALS:
     void finished();
 
 private:
+    // Publishes over MQTT as the configuration says, or stops publishing there (CFX only).
+    void startMqtt();
     void openLines();
     void watchClient();
     void onLineState(int index, model::Session::State state, const QString &text);
@@ -77,6 +80,7 @@ private:
     std::unique_ptr<PlantPublisher> m_publisher;
     std::unique_ptr<cfx::CfxPublisher> m_cfx;
     bool m_mqttStopped = false;
+    bool m_finished = false; // finished() was emitted
     bool m_cfxTrouble = false;
     bool m_stopping = false;
     bool m_brokerTrouble = false;

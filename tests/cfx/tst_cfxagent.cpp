@@ -1,7 +1,8 @@
 // tipscope-agent with a "cfx" section, as a plant runs it: against the test's own RabbitMQ, read
 // by the independent Python consumer. Every station of the demo line says it is connected once
 // the broker takes it, and says goodbye when the agent is stopped cleanly; its MQTT broker being
-// absent changes nothing for CFX.
+// absent changes nothing for CFX, and an agent that publishes CFX only ("broker": false) does the
+// same without ever trying MQTT.
 #include "agentprocess.h"
 #include "cfxtesting.h"
 
@@ -32,7 +33,14 @@ private Q_SLOTS:
     void initTestCase() { testing::startCfxBroker(m_broker); }
     void cleanupTestCase() { m_broker.reset(); }
 
+    void stationsSayHelloAndGoodbye_data() {
+        QTest::addColumn<bool>("mqtt");
+        QTest::newRow("beside an absent MQTT broker") << true;
+        QTest::newRow("CFX only") << false;
+    }
+
     void stationsSayHelloAndGoodbye() {
+        QFETCH(bool, mqtt);
         CfxConsumer consumer;
         QVERIFY2(consumer.start(m_broker->url(), QStringLiteral("/exchange/amq.topic/#"), 4),
                  qPrintable(consumer.output()));
@@ -42,7 +50,10 @@ private Q_SLOTS:
                               {QStringLiteral("port"), m_broker->port()},
                               {QStringLiteral("address"), QStringLiteral("/exchange/amq.topic")},
                               {QStringLiteral("heartbeat_s"), 300}};
-        agent.configure(QStringLiteral("demo"), 1, {}, {{QStringLiteral("cfx"), cfx}});
+        QJsonObject extra{{QStringLiteral("cfx"), cfx}};
+        if (!mqtt)
+            extra.insert(QStringLiteral("broker"), false);
+        agent.configure(QStringLiteral("demo"), 1, {}, extra);
         QString error;
         QVERIFY2(agent.start(&error), qPrintable(error));
         QVERIFY2(consumer.waitForMessages(2), qPrintable(agent.log()));
@@ -63,6 +74,9 @@ private Q_SLOTS:
         QCOMPARE(handles.at(0), handles.at(2));
         QVERIFY2(handles.at(0).startsWith(QLatin1String("JBC.")), qPrintable(handles.at(0)));
         QVERIFY2(handles.at(0).contains(QLatin1String("cell-1")), qPrintable(handles.at(0)));
+        // The absent MQTT broker is tried (and said) only when there is one to try.
+        QCOMPARE(agent.log().contains(QLatin1String("broker 127.0.0.1:1 ")), mqtt);
+        QVERIFY2(mqtt || agent.log().contains(QLatin1String("CFX only")), qPrintable(agent.log()));
     }
 };
 

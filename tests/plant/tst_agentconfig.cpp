@@ -107,6 +107,14 @@ private Q_SLOTS:
                                    "workspace": "lines.json"})");
         QVERIFY2(none, qPrintable(none.error()));
         QVERIFY(!none->cfx.has_value());
+        QVERIFY(none->mqtt);
+        // CFX alone: no MQTT broker, none of its fields checked.
+        const auto cfxOnly = load(R"({"format": "tipscope-agent", "version": 1,
+                                      "workspace": "lines.json", "broker": false,
+                                      "cfx": {"host": "mes.plant"}})");
+        QVERIFY2(cfxOnly, qPrintable(cfxOnly.error()));
+        QVERIFY(!cfxOnly->mqtt);
+        QCOMPARE(cfxOnly->cfx->host, QStringLiteral("mes.plant"));
     }
 
     void thePasswordMayComeFromTheEnvironment() {
@@ -163,6 +171,10 @@ private Q_SLOTS:
                               "remote_apply": "yes"})")
             << "remote_apply";
         QTest::newRow("a list") << QByteArray("[1, 2]") << "list";
+        QTest::newRow("published nowhere")
+            << QByteArray(R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json",
+                              "broker": false})")
+            << "a cfx section must say";
         const QByteArray cfx =
             R"({"format": "tipscope-agent", "version": 1, "workspace": "lines.json", "cfx": )";
         QTest::newRow("cfx without a host") << cfx + R"({"port": 5672}})"
