@@ -57,6 +57,7 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
     // matched against every joint made, counted or not: one that matches a joint left out is
     // left out too, and one that matches none is a false one if it began within the run.
     const qint64 cutoff = untilMs - kMatchMs;
+    constexpr qsizetype kWorstShown = 5;
     const QList<sim::SimJoint> &all = truth.joints();
     const auto counted = [&](const sim::SimJoint &t) {
         return t.startMs >= fromMs && t.startMs + t.recoveryMs < cutoff;
@@ -66,6 +67,13 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
     double signedSum = 0; // measured minus true: a bias shows here
     int matched = 0, bounded = 0, holding = 0, seen = 0;
     QList<model::JointRecord> unmade; // found, but matching no joint made
+    // The recoveries measured furthest off, for whoever looks into the p95.
+    struct Miss {
+        double errorMs;
+        sim::SimJoint made;
+        model::JointRecord found;
+    };
+    QList<Miss> worst;
     for (const model::JointRecord &j : found) {
         qsizetype match = -1;
         for (qsizetype k = 0; k < all.size() && match < 0; ++k)
@@ -97,8 +105,23 @@ QList<JointFigure> scoreJoints(const JointTruth &truth, const QList<model::Joint
         } else if (j.recoveryMs) {
             recoveryErrors.append(double(qAbs(*j.recoveryMs - t.recoveryMs)));
             signedSum += double(*j.recoveryMs - t.recoveryMs);
+            worst.append({double(*j.recoveryMs - t.recoveryMs), t, j});
         }
     }
+    std::sort(worst.begin(), worst.end(),
+              [](const Miss &a, const Miss &b) { return qAbs(a.errorMs) > qAbs(b.errorMs); });
+    for (const Miss &m : worst.mid(0, kWorstShown))
+        printNote(QStringLiteral("%1 recovery off by %2 ms (±%3 said): port %4, %5 K, recovery "
+                                 "%6 ms, drop %7 ms, %8, overshoot %9 K")
+                      .arg(label)
+                      .arg(m.errorMs)
+                      .arg(m.found.recoveryUncertaintyMs)
+                      .arg(m.made.port)
+                      .arg(m.made.depthK)
+                      .arg(m.made.recoveryMs)
+                      .arg(qRound(m.made.dropMs))
+                      .arg(sim::recoveryFormName(m.made.form))
+                      .arg(m.made.overshootK, 0, 'f', 1));
     int made = 0;
     for (const sim::SimJoint &t : all)
         made += counted(t);
