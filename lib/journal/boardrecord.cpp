@@ -15,8 +15,6 @@ using protocol::Outcome;
 
 namespace {
 
-using Kind = JournalEvent::Kind;
-
 BoardResult boardResultOf(const QMap<model::JointVerdict, int> &verdicts) {
     if (verdicts.isEmpty())
         return BoardResult::NoJoints;
@@ -67,7 +65,7 @@ Outcome<void> replayWear(const JournalReader &reader, BoardTip &tip, qint64 from
     EventFilter changes;
     changes.deviceKey = tip.device.key();
     changes.port = tip.port;
-    changes.kinds = {Kind::ToolChange};
+    changes.kinds = {JournalEvent::Kind::ToolChange};
     changes.untilMs = fromMs + 1;
     changes.limit = 1;
     const auto change = reader.events(changes);
@@ -142,7 +140,7 @@ Outcome<QList<StoredEvent>> profilesBeforeOf(const JournalReader &reader,
         seen.append(tip.device.key());
         EventFilter last;
         last.deviceKey = tip.device.key();
-        last.kinds = {Kind::ProfileApply};
+        last.kinds = {JournalEvent::Kind::ProfileApply};
         last.untilMs = record.firstMs;
         last.limit = 1;
         const auto found = reader.events(last);
