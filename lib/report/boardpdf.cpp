@@ -41,14 +41,16 @@ QString localTime(qint64 ms) {
     return QDateTime::fromMSecsSinceEpoch(ms).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
 }
 
-// A header cell keeps its words on one line; a figure's cell may wrap.
+// Every cell keeps its words on one line but the last, the row's text (what happened, the wear,
+// the verdict), which takes the width left.
 QString row(const QStringList &cells, bool header = false) {
-    const QString open =
-        header ? QStringLiteral("<th style=\"white-space: nowrap\">") : QStringLiteral("<td>");
-    const QString close = header ? QStringLiteral("</th>") : QStringLiteral("</td>");
+    const QString tag = header ? QStringLiteral("th") : QStringLiteral("td");
     QString html = QStringLiteral("<tr>");
-    for (const QString &cell : cells)
-        html += open + cell + close;
+    for (qsizetype i = 0; i < cells.size(); ++i) {
+        const QString style =
+            i + 1 < cells.size() ? QStringLiteral(" style=\"white-space: nowrap\"") : QString();
+        html += QStringLiteral("<%1%2>%3</%1>").arg(tag, style, cells.at(i));
+    }
     return html + QStringLiteral("</tr>");
 }
 
@@ -85,6 +87,14 @@ QString resultColour(BoardResult result) {
     return QStringLiteral("#8a6d00");
 }
 
+// The time of day, with the date only when it is not the board's first day.
+QString timeOnBoard(qint64 ms, const BoardRecord &record) {
+    const QDateTime time = QDateTime::fromMSecsSinceEpoch(ms);
+    return time.date() == QDateTime::fromMSecsSinceEpoch(record.firstMs).date()
+               ? time.toString(QStringLiteral("HH:mm:ss"))
+               : localTime(ms);
+}
+
 QString cell(const StoredJoint &stored, int column) {
     return esc(JointTableModel::text({stored.record, stored.context.workOrder}, column,
                                      model::TemperatureUnit::Celsius));
@@ -108,10 +118,10 @@ QString sureRecovery(const StoredJoint &stored) {
         .arg(j.recoveryUncertaintyMs);
 }
 
-QString jointRow(const StoredJoint &stored, int number) {
+QString jointRow(const StoredJoint &stored, int number, const BoardRecord &record) {
     const QString verdict = cell(stored, JointTableModel::Verdict);
     const bool ok = stored.record.verdict == model::JointVerdict::Ok;
-    return row({QString::number(number), cell(stored, JointTableModel::Time),
+    return row({QString::number(number), timeOnBoard(stored.record.startMs, record),
                 cell(stored, JointTableModel::Device), cell(stored, JointTableModel::Port),
                 cell(stored, JointTableModel::Tool), esc(stored.context.operatorName),
                 esc(stored.context.workOrder), cell(stored, JointTableModel::Setpoint),
@@ -150,7 +160,7 @@ QString header(const BoardRecord &record) {
 QString jointsSection(const BoardRecord &record) {
     QStringList rows;
     for (int i = 0; i < record.joints.size(); ++i)
-        rows.append(jointRow(record.joints.at(i), i + 1));
+        rows.append(jointRow(record.joints.at(i), i + 1, record));
     const QStringList head{QStringLiteral("#"),
                            JointTableModel::columnName(JointTableModel::Time),
                            BoardPdfTr::tr("Station"),

@@ -1,12 +1,15 @@
 // The board record as a document to sign: its text holds the board, the result, every joint
 // with how sure it is, the worst joints listed (no curve drawn: the journal has no readings),
 // what the journal does not hold, the software and lines to sign; the PDF of a small board is one
-// page, that of a large one runs on; a file that cannot be written is refused whole.
+// page, that of a large one runs on; a file that cannot be written is refused whole; the document
+// speaks the user interface language.
 #include "journalfixture.h"
 
+#include "i18n/translations.h"
 #include "report/boardpdf.h"
 
 #include <QFile>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -35,6 +38,7 @@ private Q_SLOTS:
     void aSmallBoardIsOnePage();
     void aLargeBoardRunsOnOverPages();
     void aFileThatCannotBeWrittenIsRefused();
+    void theDocumentIsInTheInterfaceLanguage(); // last: it leaves German installed
 
 private:
     QTemporaryDir m_dir;
@@ -57,7 +61,8 @@ void TestBoardPdf::theDocumentHoldsTheBoardItsResultAndEveryJoint() {
     QVERIFY(html.contains(QStringLiteral("Work order: WO-7")));
     // One numbered row per joint, each with its dip's uncertainty.
     for (int i = 1; i <= m_record.joints.size(); ++i)
-        QVERIFY2(html.contains(QStringLiteral("<tr><td>%1</td>").arg(i)), qPrintable(html));
+        QVERIFY2(html.contains(QRegularExpression(QStringLiteral("<tr><td[^>]*>%1</td>").arg(i))),
+                 qPrintable(html));
     QCOMPARE(html.count(QStringLiteral("± 0.5")),
              m_record.joints.size() + 3); // the table and the three worst
     QVERIFY(html.contains(QStringLiteral("(bounded)")));
@@ -103,6 +108,20 @@ void TestBoardPdf::aFileThatCannotBeWrittenIsRefused() {
     QVERIFY(!written);
     QVERIFY2(written.error().contains(QStringLiteral("cannot write")), qPrintable(written.error()));
     QVERIFY(!QFile::exists(path));
+}
+
+void TestBoardPdf::theDocumentIsInTheInterfaceLanguage() {
+    QVERIFY(report::boardHtml(m_record, m_info).contains(QStringLiteral("slow recovery")));
+    QCOMPARE(i18n::installTranslators(*QCoreApplication::instance(), QStringLiteral("de")),
+             QStringLiteral("de"));
+    const QString german = report::boardHtml(m_record, m_info);
+    // The joint table's words, as the Joints page says them.
+    QVERIFY2(german.contains(QStringLiteral("langsame Erholung")), qPrintable(german));
+    QVERIFY(german.contains(QStringLiteral(">Bewertung</th>")));
+    const QString pdf = m_dir.filePath(QStringLiteral("de.pdf"));
+    const auto written = report::writeBoardPdf(m_record, m_info, pdf);
+    QVERIFY2(written, qPrintable(written.error()));
+    QCOMPARE(pdfPages(pdf), 1);
 }
 
 QTEST_MAIN(TestBoardPdf)
