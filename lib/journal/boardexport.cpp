@@ -74,7 +74,8 @@ QString verdictsWords(const BoardRecord &record) {
 
 QString tipWearWords(const BoardTip &tip) {
     if (!tip.baselineMs)
-        return QStringLiteral("wear: not yet known (%1 of the first %2 joints with this tip)")
+        return QStringLiteral("wear: not yet known (%1 joints with this tip; its first %2 "
+                              "recovered ones are the baseline)")
             .arg(tip.historyJoints)
             .arg(model::TipWear::kWindow);
     if (!tip.recentMs)

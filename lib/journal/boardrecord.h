@@ -42,9 +42,9 @@ struct BoardTip {
     int joints = 0;                   // on this board
     QList<int> setpoints;             // °C, ascending, each once
     qint64 sinceMs = 0;               // the tool change that began this tip; 0: none in the journal
-    int historyJoints = 0;            // the tip's joints in the journal up to the board's end
+    int historyJoints = 0;            // the tip's joints in the journal up to then, any verdict
     std::optional<qint64> baselineMs; // median recovery of the tip's first TipWear::kWindow
-    std::optional<qint64> recentMs;   // of its last ones up to the board's end
+    std::optional<qint64> recentMs;   // of its last ones, up to its last joint on the board
 };
 
 struct BoardRecord {

@@ -198,7 +198,8 @@ QString worstSection(const BoardRecord &record) {
 QString wearText(const BoardTip &tip) {
     const auto seconds = [](qint64 ms) { return model::secondsText(ms); };
     if (!tip.baselineMs)
-        return BoardPdfTr::tr("not yet known: %1 of the first %2 joints of this tip")
+        return BoardPdfTr::tr("not yet known: %1 joints of this tip; its first %2 recovered "
+                              "ones are the baseline")
             .arg(tip.historyJoints)
             .arg(model::TipWear::kWindow);
     if (!tip.recentMs)
