@@ -38,6 +38,8 @@ int runRecord(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runMeasure(const CliOptions &o, QTextStream &out, QTextStream &err);
 // The journal and the files beside it: no device.
 int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err);
+// board SERIAL: one board's record, as text, --json, --csv or --pdf FILE.
+int runBoard(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runContext(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runLimits(const CliOptions &o, QTextStream &out, QTextStream &err);
 int runJournal(const CliOptions &o, QTextStream &out, QTextStream &err);

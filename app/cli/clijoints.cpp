@@ -111,27 +111,6 @@ protocol::Outcome<JointFilter> filterOf(const CliOptions &o, const JournalReader
     return f;
 }
 
-// "2026-12-02T09:41:03.120Z  DME-2C 01 P1 C245  350 °C  lowest 318 °C  dip 32 K  recovery
-// 1.84 s  ok  WO-7"
-QString textLine(const StoredJoint &stored) {
-    const model::JointRecord &j = stored.record;
-    const QString address =
-        j.device.address ? QStringLiteral("%1").arg(*j.device.address, 2, 10, QLatin1Char('0'))
-                         : QStringLiteral("--");
-    QString line =
-        QStringLiteral("%1  %2 %3 P%4 %5  %6 °C  lowest %7 °C  dip %8 K  recovery %9")
-            .arg(utcText(j.startMs), j.device.model, address)
-            .arg(j.port)
-            .arg(j.tool.isEmpty() ? QStringLiteral("-") : j.tool)
-            .arg(j.setpoint)
-            .arg(QString::number(j.lowestTip, 'f', 1), QString::number(j.dipDepth, 'f', 1))
-            .arg(model::recoveryWords(j));
-    line += QStringLiteral("  ") + model::jointVerdictName(j.verdict);
-    if (!stored.context.workOrder.isEmpty())
-        line += QStringLiteral("  ") + stored.context.workOrder;
-    return line;
-}
-
 } // namespace
 
 QString journalPathOf(const CliOptions &o) {
@@ -206,7 +185,7 @@ int runJoints(const CliOptions &o, QTextStream &out, QTextStream &err) {
             out << jointCsvRow(j) << '\n';
     } else {
         for (const StoredJoint &j : shown)
-            out << textLine(j) << '\n';
+            out << jointTextLine(j) << '\n';
     }
     out.flush();
     return kOk;

@@ -13,11 +13,12 @@ const QStringList kCommands = {
     QStringLiteral("send"),     QStringLiteral("monitor"), QStringLiteral("dump"),
     QStringLiteral("commands"), QStringLiteral("profile"), QStringLiteral("record"),
     QStringLiteral("measure"),  QStringLiteral("joints"),  QStringLiteral("context"),
-    QStringLiteral("limits"),   QStringLiteral("journal")};
+    QStringLiteral("limits"),   QStringLiteral("journal"), QStringLiteral("board")};
 // Commands that read or write files only, and need no device.
 const QStringList kOffline = {QStringLiteral("commands"), QStringLiteral("measure"),
                               QStringLiteral("joints"),   QStringLiteral("context"),
-                              QStringLiteral("limits"),   QStringLiteral("journal")};
+                              QStringLiteral("limits"),   QStringLiteral("journal"),
+                              QStringLiteral("board")};
 // Command options that take a value; all others are flags.
 const QStringList kValueOptions = {
     QStringLiteral("interval"), QStringLiteral("duration"),   QStringLiteral("csv"),
@@ -26,12 +27,13 @@ const QStringList kValueOptions = {
     QStringLiteral("tool"),     QStringLiteral("work-order"), QStringLiteral("serial"),
     QStringLiteral("operator"), QStringLiteral("journal"),    QStringLiteral("limit"),
     QStringLiteral("mqtt"),     QStringLiteral("mqtt-user"),  QStringLiteral("site"),
-    QStringLiteral("cfx"),      QStringLiteral("cfx-user"),   QStringLiteral("cfx-address")};
+    QStringLiteral("cfx"),      QStringLiteral("cfx-user"),   QStringLiteral("cfx-address"),
+    QStringLiteral("pdf")};
 
-// `monitor --csv FILE` names a file; `joints --csv` a format.
+// `monitor --csv FILE` names a file; `joints --csv` and `board --csv` a format.
 bool takesValue(const QString &command, const QString &option) {
-    return kValueOptions.contains(option) &&
-           !(command == QLatin1String("joints") && option == QLatin1String("csv"));
+    const bool csvFormat = command == QLatin1String("joints") || command == QLatin1String("board");
+    return kValueOptions.contains(option) && !(csvFormat && option == QLatin1String("csv"));
 }
 const QMap<QString, QStringList> kCommandOptions = {
     {QStringLiteral("detect"), {QStringLiteral("json"), QStringLiteral("scan")}},
@@ -58,6 +60,9 @@ const QMap<QString, QStringList> kCommandOptions = {
       QStringLiteral("stdin"), QStringLiteral("journal")}},
     {QStringLiteral("limits"), {}},
     {QStringLiteral("journal"), {QStringLiteral("json"), QStringLiteral("journal")}},
+    {QStringLiteral("board"),
+     {QStringLiteral("json"), QStringLiteral("csv"), QStringLiteral("pdf"),
+      QStringLiteral("journal")}},
 };
 
 // What runs on every line of a workspace.
@@ -125,6 +130,10 @@ QString CliParser::usage() {
         "  journal [show [--json] | retention DAYS] [--journal FILE]\n"
         "                            what the journal holds, and how many days it keeps\n"
         "                            records (0: all); every TipScope program shares it\n"
+        "  board SERIAL [--json | --csv | --pdf FILE] [--journal FILE]\n"
+        "                            one board's record: every joint stamped with the board\n"
+        "                            serial, its tools' wear, the events while it was made;\n"
+        "                            --csv its joints as joints --csv; --pdf a document to sign\n"
         "\n"
         "Without --addr or --no-addr the device is found automatically. --demo talks to the\n"
         "built-in simulated DME station (address 01) and SFR feeder (address 10);\n"
@@ -133,10 +142,11 @@ QString CliParser::usage() {
         "--workspace runs the command on every line of a workspace file at once, each output\n"
         "line prefixed with the line's name; monitor --csv writes a file per line.\n"
         "\n"
-        "Exit codes: 0 ok; 1 usage; 2 value refused before sending (nothing was written);\n"
-        "3 the device answered NAK, or a read-back or profile check failed;\n"
-        "4 no valid answer; 5 transport error; the journal (joints, journal show): 6 missing,\n"
-        "7 damaged, 8 newer, 9 locked, 10 not accessible, 11 disk full or failing.\n");
+        "Exit codes: 0 ok; 1 usage, or a board serial the journal does not hold; 2 value\n"
+        "refused before sending (nothing was written); 3 the device answered NAK, or a\n"
+        "read-back or profile check failed; 4 no valid answer; 5 transport error; the journal\n"
+        "(joints, board, journal show): 6 missing, 7 damaged, 8 newer, 9 locked, 10 not\n"
+        "accessible, 11 disk full or failing.\n");
 }
 
 protocol::Outcome<CliOptions> CliParser::parse(const QStringList &arguments) {

@@ -4,12 +4,38 @@
 #include "cliworkspace.h"
 #include "i18n/translations.h"
 
-#include <QCoreApplication>
+#include <QGuiApplication>
+#include <cstring>
+#include <memory>
 
 using namespace tipscope::cli;
 
+namespace {
+// `board ... --pdf FILE`: the only command that lays text out.
+bool wantsPdf(int argc, char *argv[]) {
+    bool board = false;
+    bool pdf = false;
+    for (int i = 1; i < argc; ++i) {
+        board = board || std::strcmp(argv[i], "board") == 0;
+        pdf = pdf || std::strncmp(argv[i], "--pdf", 5) == 0;
+    }
+    return board && pdf;
+}
+
+// A PDF needs fonts, and Qt gives fonts only to a QGuiApplication. The offscreen platform needs
+// no display (a cron job, an SSH session) and the command shows no window, so it is forced; every
+// other command keeps the plain QCoreApplication, which loads no platform plugin at all.
+std::unique_ptr<QCoreApplication> makeApplication(int &argc, char *argv[]) {
+    if (!wantsPdf(argc, argv))
+        return std::make_unique<QCoreApplication>(argc, argv);
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    return std::make_unique<QGuiApplication>(argc, argv);
+}
+} // namespace
+
 int main(int argc, char *argv[]) {
-    QCoreApplication app(argc, argv);
+    const std::unique_ptr<QCoreApplication> application = makeApplication(argc, argv);
+    QCoreApplication &app = *application;
     QCoreApplication::setApplicationName(QStringLiteral("tipscope-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(TIPSCOPE_VERSION));
     // Messages follow the system's language (LANGUAGE, LC_ALL, LC_MESSAGES, LANG); what the
@@ -45,6 +71,8 @@ int main(int argc, char *argv[]) {
         return runRecord(*options, out, err);
     if (options->command == QLatin1String("joints"))
         return runJoints(*options, out, err);
+    if (options->command == QLatin1String("board"))
+        return runBoard(*options, out, err);
     if (options->command == QLatin1String("context"))
         return runContext(*options, out, err);
     if (options->command == QLatin1String("limits"))

@@ -2,6 +2,7 @@
 
 #include "connectionbar.h"
 #include "devicetree.h"
+#include "dialogs/boardreportdialog.h"
 #include "dialogs/jointlimitsdialog.h"
 #include "dialogs/preferencesdialog.h"
 #include "dialogs/workcontextdialog.h"
@@ -144,6 +145,13 @@ void MainWindow::buildMenus() {
         dialog.exec();
     });
     file->addAction(tr("Write &support report…"), this, &MainWindow::writeSupportReport);
+    file->addAction(tr("&Board report…"), this, [this] {
+        (void)m_journal.flush(2000); // the board's last joints count too
+        const auto context = journal::readWorkContext(m_context.path());
+        BoardReportDialog dialog(m_journal.path(), context ? context->boardSerial : QString(),
+                                 this);
+        dialog.exec();
+    });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     QMenu *tools = menuBar()->addMenu(tr("&Tools"));

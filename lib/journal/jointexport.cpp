@@ -38,6 +38,10 @@ double tenths(double value) {
     return std::round(value * 10) / 10;
 }
 
+QJsonValue addressJson(const model::DeviceIdentity &device) {
+    return device.address ? QJsonValue(addressText(device)) : QJsonValue();
+}
+
 QString csvField(const QJsonValue &value) {
     QString text;
     if (value.isDouble())
@@ -54,6 +58,11 @@ QString csvField(const QJsonValue &value) {
 }
 } // namespace
 
+QString addressText(const model::DeviceIdentity &device) {
+    return device.address ? QStringLiteral("%1").arg(*device.address, 2, 10, QLatin1Char('0'))
+                          : QStringLiteral("--");
+}
+
 QString utcText(qint64 msSinceEpoch) {
     return QDateTime::fromMSecsSinceEpoch(msSinceEpoch, Qt::UTC).toString(Qt::ISODateWithMs);
 }
@@ -66,9 +75,7 @@ QJsonObject jointJson(const StoredJoint &stored) {
             {kFields[2], stored.uid.toString(QUuid::WithoutBraces)},
             {kFields[3], j.device.key()},
             {kFields[4], j.device.line},
-            {kFields[5], j.device.address ? QJsonValue(QStringLiteral("%1").arg(
-                                                *j.device.address, 2, 10, QLatin1Char('0')))
-                                          : QJsonValue()},
+            {kFields[5], addressJson(j.device)},
             {kFields[6], j.device.model},
             {kFields[7], j.device.softwareVersion},
             {kFields[8], j.port},
@@ -100,6 +107,39 @@ QString jointCsvRow(const StoredJoint &joint) {
     for (const QString &field : kFields)
         cells.append(csvField(o.value(field)));
     return cells.join(QLatin1Char(','));
+}
+
+QString jointTextLine(const StoredJoint &stored) {
+    const model::JointRecord &j = stored.record;
+    QString line =
+        QStringLiteral("%1  %2 %3 P%4 %5  %6 °C  lowest %7 °C  dip %8 K  recovery %9")
+            .arg(utcText(j.startMs), j.device.model, addressText(j.device))
+            .arg(j.port)
+            .arg(j.tool.isEmpty() ? QStringLiteral("-") : j.tool)
+            .arg(j.setpoint)
+            .arg(QString::number(j.lowestTip, 'f', 1), QString::number(j.dipDepth, 'f', 1))
+            .arg(model::recoveryWords(j));
+    line += QStringLiteral("  ") + model::jointVerdictName(j.verdict);
+    if (!stored.context.workOrder.isEmpty())
+        line += QStringLiteral("  ") + stored.context.workOrder;
+    return line;
+}
+
+QJsonObject eventJson(const StoredEvent &stored) {
+    const JournalEvent &e = stored.record;
+    return {{QStringLiteral("ts"), utcText(e.timeMs)},
+            {QStringLiteral("id"), stored.uid.toString(QUuid::WithoutBraces)},
+            {QStringLiteral("kind"), JournalEvent::kindName(e.kind)},
+            {QStringLiteral("severity"), JournalEvent::severityName(e.severity)},
+            {QStringLiteral("device"), e.device.isEmpty() ? QJsonValue() : e.device.key()},
+            {QStringLiteral("address"), addressJson(e.device)},
+            {QStringLiteral("model"), e.device.model},
+            {QStringLiteral("port"), e.port ? QJsonValue(*e.port) : QJsonValue()},
+            {QStringLiteral("text"), e.text},
+            {QStringLiteral("details"), e.details},
+            {QStringLiteral("work_order"), stored.context.workOrder},
+            {QStringLiteral("board_serial"), stored.context.boardSerial},
+            {QStringLiteral("operator"), stored.context.operatorName}};
 }
 
 } // namespace tipscope::journal

@@ -48,6 +48,7 @@ Conditions jointConditions(const JointFilter &f) {
     if (f.verdict)
         c.add("j.verdict = ?", std::optional(model::jointVerdictName(*f.verdict)));
     c.add("j.context_id IN (SELECT id FROM contexts WHERE work_order = ?)", f.workOrder);
+    c.add("j.context_id IN (SELECT id FROM contexts WHERE board_serial = ?)", f.boardSerial);
     return c;
 }
 
@@ -66,6 +67,7 @@ Conditions eventConditions(const EventFilter &f) {
         c.terms.append(QStringLiteral("e.kind IN (%1)").arg(marks.join(QLatin1Char(','))));
     }
     c.add("e.context_id IN (SELECT id FROM contexts WHERE work_order = ?)", f.workOrder);
+    c.add("e.context_id IN (SELECT id FROM contexts WHERE board_serial = ?)", f.boardSerial);
     return c;
 }
 

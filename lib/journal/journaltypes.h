@@ -55,7 +55,8 @@ struct JointFilter {
     std::optional<QString> tool;
     std::optional<model::JointVerdict> verdict;
     std::optional<QString> workOrder;
-    int limit = 0; // 0: all
+    std::optional<QString> boardSerial; // the work context's
+    int limit = 0;                      // 0: all
     Order order = Order::NewestFirst;
 };
 
@@ -67,6 +68,7 @@ struct EventFilter {
     std::optional<int> port;
     QList<JournalEvent::Kind> kinds; // empty: every kind
     std::optional<QString> workOrder;
+    std::optional<QString> boardSerial;
     int limit = 0;
     Order order = Order::NewestFirst;
 };

@@ -197,20 +197,7 @@ QJsonObject alarmsPayload(const QJsonArray &alarms, qint64 nowMs) {
 }
 
 QJsonObject eventPayload(const journal::StoredEvent &stored) {
-    const journal::JournalEvent &e = stored.record;
-    return {{QStringLiteral("ts"), utcText(e.timeMs)},
-            {QStringLiteral("id"), stored.uid.toString(QUuid::WithoutBraces)},
-            {QStringLiteral("kind"), journal::JournalEvent::kindName(e.kind)},
-            {QStringLiteral("severity"), journal::JournalEvent::severityName(e.severity)},
-            {QStringLiteral("device"), e.device.isEmpty() ? QJsonValue() : e.device.key()},
-            {QStringLiteral("address"), addressValue(e.device.address)},
-            {QStringLiteral("model"), e.device.model},
-            {QStringLiteral("port"), e.port ? QJsonValue(*e.port) : QJsonValue()},
-            {QStringLiteral("text"), e.text},
-            {QStringLiteral("details"), e.details},
-            {QStringLiteral("work_order"), stored.context.workOrder},
-            {QStringLiteral("board_serial"), stored.context.boardSerial},
-            {QStringLiteral("operator"), stored.context.operatorName}};
+    return journal::eventJson(stored);
 }
 
 } // namespace tipscope::plant

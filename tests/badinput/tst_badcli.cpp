@@ -384,6 +384,7 @@ void TestBadCli::quotedInputIsCutWhereverItComesFrom_data() {
         << QByteArrayList{"joints", "--device", h, "--journal", "@JOURNAL"} << 1;
     QTest::newRow("joints --since")
         << QByteArrayList{"joints", "--since", h, "--journal", "@JOURNAL"} << 1;
+    QTest::newRow("board SERIAL") << QByteArrayList{"board", h, "--journal", "@JOURNAL"} << 1;
     QTest::newRow("a bad CSV cell") << QByteArrayList{"measure", "@BADCELL"} << 2;
     QTest::newRow("a context field")
         << QByteArrayList{"context", "set", "--journal", "@JOURNAL", "--operator", h} << 2;

@@ -1,5 +1,8 @@
 #include "journalfixture.h"
 
+#include "journal/journalreader.h"
+#include "model/joints/tipwear.h"
+
 #include <QSignalSpy>
 #include <QSqlError>
 #include <QSqlQuery>
@@ -43,6 +46,102 @@ journal::JournalEvent sampleEvent(int i, qint64 timeMs, int port) {
                  {QStringLiteral("value"), QStringLiteral("%1").arg(300 + i, 5, 10, QChar('0'))},
                  {QStringLiteral("read_back"), QStringLiteral("match")}};
     return e;
+}
+
+namespace {
+journal::JournalEvent boardEvent(journal::JournalEvent::Kind kind, int deviceNo,
+                                 std::optional<int> port, qint64 timeMs, const QString &text) {
+    journal::JournalEvent e;
+    e.kind = kind;
+    e.severity = kind == journal::JournalEvent::Kind::Status
+                     ? journal::JournalEvent::Severity::Info
+                     : journal::JournalEvent::Severity::Error;
+    e.device = sampleDevice(deviceNo);
+    e.port = port;
+    e.timeMs = timeMs;
+    e.text = text;
+    return e;
+}
+
+model::JointRecord boardJoint(int i, qint64 startMs, qint64 recoveryMs,
+                              model::JointVerdict verdict) {
+    model::JointRecord j = sampleJoint(i, startMs);
+    j.tool = QStringLiteral("C245");
+    j.setpoint = 350;
+    j.lowestTip = 310;
+    j.dipDepth = 40;
+    j.recoveryMs = recoveryMs;
+    j.verdict = verdict;
+    j.startUncertaintyMs = 40;
+    j.dipUncertaintyK = 0.5;
+    j.recoveryUncertaintyMs = 60;
+    return j;
+}
+} // namespace
+
+SampleBoard writeSampleBoard(const QString &path) {
+    using Kind = journal::JournalEvent::Kind;
+    using model::JointVerdict;
+    const model::WorkContext before{QStringLiteral("WO-7"), QStringLiteral("SN-41"),
+                                    QStringLiteral("bo")};
+    const model::WorkContext board{QStringLiteral("WO-7"), QStringLiteral("SN-42"),
+                                   QStringLiteral("ana")};
+    const model::WorkContext otherLine{QStringLiteral("WO-9"), QStringLiteral("SN-99"),
+                                       QStringLiteral("eve")};
+    const model::WorkContext after{QStringLiteral("WO-7"), QStringLiteral("SN-43"),
+                                   QStringLiteral("ana")};
+    SampleBoard sample;
+    journal::Journal journal(path, quickOptions());
+    journal.append(boardEvent(Kind::ToolChange, 0, 1, kT0, QStringLiteral("tool C245 plugged")),
+                   before);
+    sample.tipJointsBefore = model::TipWear::kWindow + 2;
+    for (int i = 0; i < sample.tipJointsBefore; ++i)
+        journal.append(boardJoint(i, kT0 + 1000 + i * 10'000, 1000, JointVerdict::Ok), before);
+    sample.profileBefore = boardEvent(Kind::ProfileApply, 0, std::nullopt, kT0 + 200'000,
+                                      QStringLiteral("profile 0123456789ab applied"));
+    sample.profileBefore.severity = journal::JournalEvent::Severity::Info;
+    sample.profileBefore.details = {{QStringLiteral("profileSha256"), QStringLiteral("0123")}};
+    journal.append(sample.profileBefore, before);
+
+    const qint64 t = kT0 + 300'000;
+    for (int i = 0; i < 6; ++i)
+        sample.joints.append(boardJoint(100 + i, t + i * 5000, 1300, JointVerdict::Ok));
+    sample.joints[3].recoveryMs = 6000;
+    sample.joints[3].verdict = JointVerdict::SlowRecovery;
+    sample.joints[4].recoveryBounded = true;
+    sample.joints[4].recoveryUncertaintyMs = 500;
+    sample.joints[4].verdict = JointVerdict::Incomplete;
+    sample.joints[5].port = 2;
+    sample.joints[5].tool = QStringLiteral("C210");
+    sample.joints[5].dipDepth = 95;
+    sample.joints[5].lowestTip = 255;
+    sample.joints[5].verdict = JointVerdict::TooDeep;
+    for (const model::JointRecord &j : std::as_const(sample.joints))
+        journal.append(j, board);
+    sample.events = {
+        boardEvent(Kind::PortError, 0, 1, t + 7000, QStringLiteral("E-PT1: tip sensor open")),
+        boardEvent(Kind::Status, 0, 2, t + 12'000, QStringLiteral("port 2 in the stand")),
+        boardEvent(Kind::JointWarning, 0, 2, t + 26'600,
+                   QStringLiteral("joint too deep: the tip fell 95.0 K below the setpoint "
+                                  "(limit 80 K)"))};
+    journal.append(sample.events[0], board);
+    journal.append(sample.events[1], otherLine);
+    journal.append(sample.events[2], board);
+    journal.append(boardEvent(Kind::Status, 1, 1, t + 12'000, QStringLiteral("not the board's")),
+                   otherLine);
+    journal.append(boardJoint(200, t + 60'000, 1300, JointVerdict::Ok), after);
+    sample.written = journal.flush();
+    journal.close();
+    return sample;
+}
+
+protocol::Outcome<journal::BoardRecord> writeAndReadSampleBoard(const QString &path) {
+    if (!writeSampleBoard(path).written)
+        return protocol::failure(QStringLiteral("the sample board was not written"));
+    journal::JournalReader reader;
+    if (const auto opened = reader.open(path); !opened)
+        return protocol::failure(opened.error());
+    return journal::buildBoardRecord(reader, QStringLiteral("SN-42"));
 }
 
 journal::JournalOptions quickOptions() {

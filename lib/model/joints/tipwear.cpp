@@ -59,6 +59,13 @@ std::optional<qint64> TipWear::baselineMs(const DeviceIdentity &device, int port
     return median(it->first);
 }
 
+std::optional<qint64> TipWear::recentMs(const DeviceIdentity &device, int port) const {
+    const auto it = m_tips.constFind(tipKey(device, port));
+    if (it == m_tips.cend() || it->recent.empty())
+        return std::nullopt;
+    return median(it->recent);
+}
+
 QString TipWear::noticeText(const Notice &notice) {
     return TipWearTr::tr(
                "tip wearing: %1 recovers in %2 s (median of the last %3 joints), %4 s when "

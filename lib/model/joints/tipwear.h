@@ -31,6 +31,9 @@ public:
     void toolChanged(const DeviceIdentity &device, int port);
     // The baseline of a port's tip, once its first kWindow joints are in.
     [[nodiscard]] std::optional<qint64> baselineMs(const DeviceIdentity &device, int port) const;
+    // The median of its last (up to kWindow) recoveries after the baseline's: what the baseline
+    // is compared with. Empty until one came.
+    [[nodiscard]] std::optional<qint64> recentMs(const DeviceIdentity &device, int port) const;
     // "tip wearing: C245 recovers in 2.6 s (median of the last 10 joints), 1.8 s when new"
     [[nodiscard]] static QString noticeText(const Notice &notice);
 

@@ -39,6 +39,7 @@ private Q_SLOTS:
     void aNewToolStartsAfresh();
     void jointsThatNeverRecoveredDoNotCount();
     void portsAreKeptApart();
+    void theRecentMedianIsWhatTheBaselineIsComparedWith();
 };
 
 void TestTipWear::aTipThatSlowsBeyondTheShareIsNoticedOnce() {
@@ -96,6 +97,18 @@ void TestTipWear::portsAreKeptApart() {
         QVERIFY(!wear.add(joint(5000, QStringLiteral("C245"), 2), 0.3));
     QCOMPARE(wear.baselineMs(kDme, 2), 5000);
     QCOMPARE(wear.baselineMs(kDme, 1), 1000);
+}
+
+void TestTipWear::theRecentMedianIsWhatTheBaselineIsComparedWith() {
+    TipWear wear;
+    feed(wear, TipWear::kWindow, 1000);
+    QVERIFY(!wear.recentMs(kDme, 1));
+    feed(wear, 3, 1200);
+    QCOMPARE(wear.recentMs(kDme, 1), 1200);
+    // Only the last kWindow count.
+    feed(wear, TipWear::kWindow, 1400);
+    QCOMPARE(wear.recentMs(kDme, 1), 1400);
+    QVERIFY(!wear.recentMs(kDme, 2));
 }
 
 QTEST_GUILESS_MAIN(TestTipWear)
