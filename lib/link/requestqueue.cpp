@@ -226,12 +226,13 @@ void RequestQueue::onReceived(const QByteArray &bytes) {
 void RequestQueue::onStray(const DecodeEvent &ev) {
     ++m_stats.stray;
     m_tap.decoded(ev, true);
+    // A whole frame proves the cable is there, and a late answer that the device is too, only
+    // slow: a line that carries frames must not be closed as if it were unplugged, even when an
+    // answer came so late that nothing waits for it any more.
+    m_timeoutRun = 0;
     if (!m_late.absorb(ev.frame, m_settings.robotAddress))
         return;
     ++m_stats.lateAnswers;
-    // A late answer proves the cable and the device are there, only slow: a device that answers
-    // every request late must not have its line closed as if it were unplugged.
-    m_timeoutRun = 0;
     if (m_state == State::Idle)
         sendNext(); // what the late answers held back may go now
 }

@@ -142,6 +142,7 @@ private Q_SLOTS:
     void timeoutStreakReportsTheRunLength();
     void timeoutStreakCountsRequestsNotRetries();
     void aLateAnswerEndsTheTimeoutStreak();
+    void anAnswerNothingWaitsForEndsTheTimeoutStreakToo();
     void probeSilenceDoesNotLengthenTheTimeoutStreak();
     void corruptedAnswerEndsTheTimeoutStreak();
     void aReplyThatDeletesItselfIsGoneAfterItsFinishedEvenWhenItsOwnerWentFirst();
@@ -928,6 +929,25 @@ void TestRequestQueue::aLateAnswerEndsTheTimeoutStreak() {
         QCOMPARE(slow->error(), ReplyError::Timeout);
         b.transport.answer(answerTo(slow->request(), "00350").encode());
         QTRY_COMPARE_WITH_TIMEOUT(b.queue.stats().lateAnswers, streak.size(), kNoAnswerWaitMs);
+    }
+    QCOMPARE(streak.size(), 3);
+    for (const QList<QVariant> &args : std::as_const(streak))
+        QCOMPARE(args.at(0).toInt(), 1);
+}
+
+// An answer so late that its request's hold is over, or one nobody asked for: still a frame on
+// the wire, so the cable is there and closing the line would not help.
+void TestRequestQueue::anAnswerNothingWaitsForEndsTheTimeoutStreakToo() {
+    Bench b(quickSettings(0));
+    QSignalSpy streak(&b.queue, &RequestQueue::timeoutStreak);
+    QVERIFY(streak.isValid());
+    for (const QByteArray &command : {QByteArray("ST1"), QByteArray("ST2"), QByteArray("ST3")}) {
+        Reply *slow = b.read(command);
+        QTRY_VERIFY_WITH_TIMEOUT(slow->isFinished(), kNoAnswerWaitMs);
+        QCOMPARE(slow->error(), ReplyError::Timeout);
+        const qint64 strayBefore = b.queue.stats().stray;
+        b.transport.answer(makeFrame(Header::Answer, "ST9", 1, 0, "00350").encode());
+        QTRY_COMPARE_WITH_TIMEOUT(b.queue.stats().stray, strayBefore + 1, kNoAnswerWaitMs);
     }
     QCOMPARE(streak.size(), 3);
     for (const QList<QVariant> &args : std::as_const(streak))
