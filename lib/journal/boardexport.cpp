@@ -180,12 +180,16 @@ QString boardText(const BoardRecord &record, const QString &software) {
     lines.append(QStringLiteral("tips:"));
     for (const BoardTip &tip : record.tips)
         lines.append(tipLine(tip));
-    lines.append(QStringLiteral("last profile applied before the board:"));
-    for (const StoredEvent &e : record.profilesBefore)
-        lines.append(eventLine(e));
-    lines.append(QStringLiteral("events:"));
-    for (const StoredEvent &e : record.events)
-        lines.append(eventLine(e));
+    // An empty list says so, rather than a heading with nothing under it.
+    const auto listOf = [&lines](const QString &heading, const QList<StoredEvent> &events) {
+        lines.append(heading);
+        for (const StoredEvent &e : events)
+            lines.append(eventLine(e));
+        if (events.isEmpty())
+            lines.append(QStringLiteral("  none in the journal"));
+    };
+    listOf(QStringLiteral("last profile applied before the board:"), record.profilesBefore);
+    listOf(QStringLiteral("events:"), record.events);
     lines.append(QStringLiteral("not in the journal:"));
     lines.append(QStringLiteral("  limits: ") + QString::fromLatin1(kNoLimits));
     lines.append(QStringLiteral("  settings: ") + QString::fromLatin1(kNoSettings));
